@@ -1,0 +1,30 @@
+#pragma once
+// The flavours of Easycomm that Slew speaks. docs/protocol.md has the table of
+// every command and its wire form per dialect, and why each choice was made.
+
+#include "message.h"
+
+#include <QString>
+
+#include <optional>
+
+namespace slew::protocol {
+
+enum class Dialect : std::uint8_t {
+    Easycomm1, // one line: AZ EL UP mode DN mode; no feedback (Hamlib model 201)
+    Easycomm2, // two-letter commands, one decimal, ML/MR/MU/MD (Hamlib model 202)
+    Easycomm3, // the seeds/000 derivative: two decimals, VL..VD, CR/CW, GS per axis, \?ENC
+    SatNogs,   // SatNOGS firmware: `CR n` answered `n,value`, VE, IP0..8 (Hamlib model 204)
+};
+
+QString dialectName(Dialect d);                              // "easycomm2"
+std::optional<Dialect> dialectFromName(QStringView name);   // accepts the names above
+
+// Whether a dialect has a command at all. The session uses this to refuse
+// (with a message) what the device cannot do, and the UI to grey it out.
+bool dialectSupports(Dialect d, Op op);
+
+// How many decimals the dialect writes for an angle.
+int angleDecimals(Dialect d);
+
+} // namespace slew::protocol

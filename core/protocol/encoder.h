@@ -1,0 +1,34 @@
+#pragma once
+// Turning messages into wire bytes, per dialect. Pure functions: no I/O.
+
+#include "dialect.h"
+#include "message.h"
+
+#include <QByteArray>
+
+#include <initializer_list>
+
+namespace slew::protocol {
+
+// One token without separator, e.g. `AZ123.4`, `CW1,0.5`, `CR 1` (SatNOGS).
+// Returns an empty array when the dialect has no such command.
+QByteArray encodeToken(const Message &m, Dialect d);
+
+// Tokens joined by single spaces and ended with `\n`, the terminator every
+// peer in PROTOCOL-NOTES accepts. Empty when any token is unsupported.
+QByteArray encodeLine(std::initializer_list<Message> tokens, Dialect d);
+
+// The commands the session sends, in each dialect's own form.
+QByteArray encodeSetPosition(double az, double el, Dialect d); // Easycomm I: full line
+QByteArray encodeQueryPosition(Dialect d);                     // `AZ EL\n`; empty for Easycomm I
+QByteArray encodeStop(bool azimuth, bool elevation, Dialect d); // `SA SE\n`
+
+// Easycomm I's single line, as Hamlib model 201 writes it.
+QByteArray encodeEasycomm1Line(double az, double el, quint64 up = 0, QByteArrayView upMode = "XXX",
+                               quint64 down = 0, QByteArrayView downMode = "XXX");
+
+// Formats a number the way the wire wants it: fixed decimals, '.' always,
+// never an exponent. Used by the simulator for its replies too.
+QByteArray formatNumber(double value, int decimals);
+
+} // namespace slew::protocol

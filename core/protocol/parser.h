@@ -1,0 +1,81 @@
+#pragma once
+// Incremental Easycomm reader: bytes in, messages out.
+//
+// Tokens are separated by space, CR, LF (any mix, so CRLF works) and by ';',
+// which Hamlib's get_conf leaves on the wire (`GS\n;`). The parser keeps only a
+// fixed buffer: a token longer than InlineText::Capacity is dropped up to the
+// next separator and reported once as an Invalid message, after which the
+// parser is in sync again. Nothing here throws or allocates.
+//
+// Feeding the same bytes one at a time, all at once or in random chunks gives
+// the same messages, because the state moves one byte at a time.
+//
+// A token ended by a space is handed out when the next non-space byte arrives
+// (then Message::lineEnd tells whether its line ended). Every real peer ends
+// its lines with CR or LF, so nothing waits for long; flush() ends a line by hand.
+
+#include "dialect.h"
+#include "message.h"
+
+#include <QByteArrayView>
+
+#include <array>
+
+namespace slew::protocol {
+
+class Parser {
+public:
+    explicit Parser(Dialect dialect = Dialect::Easycomm3) : m_dialect(dialect) {}
+
+    Dialect dialect() const { return m_dialect; }
+    void setDialect(Dialect d) { m_dialect = d; }
+
+    // Calls sink(const Message &) for every message the bytes complete.
+    template <typename Sink>
+    void feed(QByteArrayView bytes, Sink &&sink)
+    {
+        for (char c : bytes) {
+            const int n = push(c);
+            for (int i = 0; i < n; ++i)
+                sink(static_cast<const Message &>(m_ready[i]));
+        }
+    }
+
+    // Ends the current token as if a line end had arrived (for a link that
+    // closes without a final newline).
+    template <typename Sink>
+    void flush(Sink &&sink)
+    {
+        const int n = push('\n');
+        for (int i = 0; i < n; ++i)
+            sink(static_cast<const Message &>(m_ready[i]));
+    }
+
+    void reset();
+
+    // Parses one token on its own, with no line context (tests, the console).
+    static Message parseToken(QByteArrayView token, Dialect d);
+
+private:
+    int push(char c); // returns how many messages are ready in m_ready
+    void finishToken(bool lineEnd);
+    void emitPending(bool lineEnd);
+    void deliver(const Message &m, bool lineEnd);
+    Message classify(QByteArrayView token) const;
+
+    Dialect m_dialect;
+    std::array<char, InlineText::Capacity> m_token{};
+    int m_length = 0;
+    bool m_overflow = false;
+    // A token ended by a space waits here until the next byte tells whether
+    // its line ended, so that `AZ EL \n` is known to be one line.
+    Message m_pending;
+    bool m_hasPending = false;
+    // Line context: the mode word after UPnnn / DNnnn (Easycomm I).
+    Op m_previousOnLine = Op::Invalid;
+    bool m_previousHadValue = false;
+    std::array<Message, 2> m_ready;
+    int m_readyCount = 0;
+};
+
+} // namespace slew::protocol

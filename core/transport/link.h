@@ -1,0 +1,43 @@
+#pragma once
+// A byte link to a rotator controller: serial port, TCP socket, the built-in
+// simulator or a rotctld adaptor. The session talks to every one of them the
+// same way and never asks which it has (the way QGroundControl keeps its mock
+// link behind the same interface as a serial link).
+//
+// Opening is asynchronous: open() returns at once and the link later emits
+// opened() or failed(). Once open, device() is readable and writable and a
+// loss is reported by lost(). Nothing here blocks.
+
+#include <QObject>
+#include <QString>
+
+class QIODevice;
+
+namespace slew::transport {
+
+class Link : public QObject {
+    Q_OBJECT
+public:
+    explicit Link(QString uri, QObject *parent = nullptr) : QObject(parent), m_uri(std::move(uri)) {}
+
+    // The URI this link was made from, for messages and settings.
+    QString uri() const { return m_uri; }
+
+    // The byte stream; valid for the link's lifetime, open between opened()
+    // and lost() / close().
+    virtual QIODevice *device() = 0;
+
+    virtual void open() = 0;
+    virtual void close() = 0;
+    virtual bool isOpen() const = 0;
+
+signals:
+    void opened();
+    void failed(const QString &reason); // open() did not succeed
+    void lost(const QString &reason);   // an open link went away
+
+private:
+    QString m_uri;
+};
+
+} // namespace slew::transport
