@@ -1,0 +1,306 @@
+#include "axismodel.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace slew::sim {
+
+namespace {
+
+// The speed loop used by VL..VD and by homing: a stiff PI on speed whose
+// integral is the distance lagging behind the commanded motion, so a zero
+// speed command holds its place against a push (VL0 in seeds/000).
+constexpr double kVelocityGain = 10.0;    // deg/s^2 per deg/s
+constexpr double kHoldStiffness = 40.0;   // deg/s^2 per degree behind
+constexpr double kVelocityFilter = 0.02;  // s, smoothing of the encoder's derivative
+constexpr double kStallSpeed = 0.1;       // deg/s: slower than this while pushing is a stall
+constexpr double kStallEffort = 0.5;      // share of the torque limit that counts as pushing
+constexpr double kFrozenSpeed = 1.0;      // deg/s: moving this fast must change the reading
+constexpr double kFrozenSeconds = 0.5;
+constexpr double kRestSpeed = 1e-4;       // deg/s, below which friction holds the axis
+
+double sign(double v)
+{
+    return v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0);
+}
+
+} // namespace
+
+AxisModel::AxisModel(const AxisPlant &plant, const PidGains &gains, std::uint32_t seed)
+    : m_plant(plant), m_gains(gains), m_rng(seed)
+{
+    m_reading = sampleEncoder();
+    m_target = m_reading;
+}
+
+void AxisModel::setPlant(const AxisPlant &plant)
+{
+    m_plant = plant;
+    m_reading = sampleEncoder();
+}
+
+void AxisModel::setFaults(const AxisFaults &faults)
+{
+    m_faults = faults;
+    m_stallSeconds = 0.0;
+    m_frozenSeconds = 0.0;
+}
+
+void AxisModel::placeAt(double degrees)
+{
+    m_motor = m_antenna = degrees + m_encoderOffset;
+    m_velocity = m_acceleration = m_measuredVelocity = 0.0;
+    m_reading = sampleEncoder();
+    m_target = m_reading;
+}
+
+void AxisModel::commandPosition(double degrees)
+{
+    if (m_mode != DriveMode::Position)
+        m_integral = 0.0;
+    m_mode = DriveMode::Position;
+    m_target = degrees;
+}
+
+void AxisModel::commandVelocity(double degreesPerSecond)
+{
+    if (m_mode != DriveMode::Velocity)
+        m_holdError = 0.0;
+    m_mode = DriveMode::Velocity;
+    m_velocityTarget = std::clamp(degreesPerSecond, -m_plant.maxSpeed, m_plant.maxSpeed);
+}
+
+void AxisModel::release()
+{
+    m_mode = DriveMode::Released;
+    m_velocityTarget = 0.0;
+}
+
+void AxisModel::home()
+{
+    // RESET starts from a clean slate: a failed homing can be retried.
+    m_errors = 0;
+    m_mode = DriveMode::Homing;
+    m_holdError = 0.0;
+    m_homingTravel = 0.0;
+    m_stallSeconds = 0.0;
+    m_frozenSeconds = 0.0;
+}
+
+std::int64_t AxisModel::encoderVelocityTicks() const
+{
+    return std::llround(m_measuredVelocity * m_plant.ticksPerDegree);
+}
+
+bool AxisModel::isSettled() const
+{
+    return m_mode == DriveMode::Position && std::fabs(m_target - m_reading) <= settleTolerance
+        && std::fabs(m_measuredVelocity) < 0.5;
+}
+
+bool AxisModel::isMoving() const
+{
+    if (m_mode == DriveMode::Position)
+        return !isSettled();
+    return std::fabs(m_velocity) > 0.01 || m_mode == DriveMode::Homing;
+}
+
+int AxisModel::limitSwitches() const
+{
+    int bits = 0;
+    if (!m_faults.missingEndStop && m_antenna <= m_plant.minDegrees)
+        bits |= LimitSwitch::Lower;
+    if (m_antenna >= m_plant.maxDegrees)
+        bits |= LimitSwitch::Upper;
+    return bits;
+}
+
+double AxisModel::load() const
+{
+    return 100.0 * std::fabs(m_effort) / m_plant.torqueLimit;
+}
+
+double AxisModel::sampleEncoder()
+{
+    double raw = m_antenna - m_encoderOffset;
+    if (m_faults.encoderNoise > 0.0) {
+        std::uniform_real_distribution<double> noise(-m_faults.encoderNoise, m_faults.encoderNoise);
+        raw += noise(m_rng);
+    }
+    m_readingTicks = std::llround(raw * m_plant.ticksPerDegree);
+    return double(m_readingTicks) / m_plant.ticksPerDegree;
+}
+
+void AxisModel::step(double dt)
+{
+    if (dt <= 0.0)
+        return;
+
+    const double previousReading = m_reading;
+    if (!m_faults.encoderFreeze)
+        m_reading = sampleEncoder();
+    m_measuredVelocity += (dt / kVelocityFilter) * ((m_reading - previousReading) / dt - m_measuredVelocity);
+
+    double drive = 0.0;
+    if (m_errors == 0) {
+        switch (m_mode) {
+        case DriveMode::Released: break;
+        case DriveMode::Position: drive = positionDrive(dt); break;
+        case DriveMode::Velocity: drive = velocityDrive(m_velocityTarget, dt); break;
+        case DriveMode::Homing: drive = velocityDrive(-m_plant.homingSpeed, dt); break;
+        }
+    }
+
+    // The limit switches are wired into the driver: it will not push further
+    // into a switch that has tripped, whatever the loop asks for.
+    const int switches = limitSwitches();
+    if ((switches & LimitSwitch::Lower) && drive < 0.0)
+        drive = 0.0;
+    if ((switches & LimitSwitch::Upper) && drive > 0.0)
+        drive = 0.0;
+    m_effort = drive;
+
+    detectFaults(drive, previousReading, dt);
+    integrate(drive, dt);
+
+    if (m_mode == DriveMode::Homing && m_errors == 0) {
+        m_homingTravel += std::fabs(m_velocity) * dt;
+        if (limitSwitches() & LimitSwitch::Lower) {
+            // Found home: from now on the switch's angle reads as the minimum.
+            m_encoderOffset = m_antenna - m_plant.minDegrees;
+            m_reading = sampleEncoder();
+            m_measuredVelocity = m_velocity;
+            commandPosition(m_plant.minDegrees);
+        } else if (m_homingTravel > (m_plant.maxDegrees - m_plant.minDegrees) + 2 * m_plant.hardStopMargin + 10.0) {
+            fail(AxisError::Homing);
+        }
+    }
+}
+
+double AxisModel::positionDrive(double dt)
+{
+    const double error = m_target - m_reading;
+    const double unclamped = m_gains.kp * error + m_gains.ki * m_integral - m_gains.kd * m_measuredVelocity;
+    const double drive = std::clamp(unclamped, -m_plant.torqueLimit, m_plant.torqueLimit);
+    // Anti-windup: integrate only while the output is free, or when the
+    // error would pull a saturated output back; and never store more than
+    // the motor could ever deliver.
+    if (drive == unclamped || sign(error) != sign(unclamped))
+        m_integral += error * dt;
+    if (m_gains.ki > 0.0) {
+        const double cap = m_plant.torqueLimit / m_gains.ki;
+        m_integral = std::clamp(m_integral, -cap, cap);
+    } else {
+        m_integral = 0.0;
+    }
+    return drive;
+}
+
+double AxisModel::velocityDrive(double target, double dt)
+{
+    m_holdError += (target - m_measuredVelocity) * dt;
+    const double holdCap = m_plant.torqueLimit / kHoldStiffness;
+    m_holdError = std::clamp(m_holdError, -holdCap, holdCap);
+    // Feed forward the friction the commanded speed will meet, so the loop
+    // only corrects the difference.
+    const double feedForward = m_plant.viscousFriction * target + m_plant.coulombFriction * sign(target);
+    const double drive = feedForward + kVelocityGain * (target - m_measuredVelocity) + kHoldStiffness * m_holdError;
+    return std::clamp(drive, -m_plant.torqueLimit, m_plant.torqueLimit);
+}
+
+void AxisModel::integrate(double drive, double dt)
+{
+    const double before = m_velocity;
+    if (m_faults.jam) {
+        m_velocity = 0.0;
+        m_acceleration = 0.0;
+        return;
+    }
+
+    double accel = 0.0;
+    if (std::fabs(m_velocity) > kRestSpeed) {
+        accel = (drive - m_plant.viscousFriction * m_velocity - m_plant.coulombFriction * sign(m_velocity))
+            / m_plant.inertia;
+    } else if (std::fabs(drive) > m_plant.coulombFriction) {
+        accel = (drive - m_plant.coulombFriction * sign(drive)) / m_plant.inertia;
+    } else {
+        m_velocity = 0.0; // static friction holds it
+    }
+    accel = std::clamp(accel, -m_plant.maxAcceleration, m_plant.maxAcceleration);
+
+    double velocity = m_velocity + accel * dt;
+    // Friction brings a coasting axis to rest; it never drives it backwards.
+    if (sign(velocity) != sign(m_velocity) && m_velocity != 0.0 && std::fabs(drive) <= m_plant.coulombFriction)
+        velocity = 0.0;
+    velocity = std::clamp(velocity, -m_plant.maxSpeed, m_plant.maxSpeed);
+    m_velocity = velocity;
+    m_motor += m_velocity * dt;
+
+    // Gear play: the antenna follows the motor only once the slack is taken up.
+    const double halfPlay = m_faults.backlash / 2.0;
+    if (m_motor - m_antenna > halfPlay)
+        m_antenna = m_motor - halfPlay;
+    else if (m_antenna - m_motor > halfPlay)
+        m_antenna = m_motor + halfPlay;
+
+    // The hard stops: nothing passes them.
+    const double low = m_plant.minDegrees - m_plant.hardStopMargin;
+    const double high = m_plant.maxDegrees + m_plant.hardStopMargin;
+    if (m_antenna < low || m_antenna > high) {
+        const double stop = m_antenna < low ? low : high;
+        m_motor += stop - m_antenna;
+        m_antenna = stop;
+        m_velocity = 0.0;
+    }
+    m_acceleration = (m_velocity - before) / dt;
+}
+
+void AxisModel::detectFaults(double drive, double previousReading, double dt)
+{
+    if (m_errors != 0)
+        return;
+
+    // A reading that jumps further than the axis can move is a broken sensor.
+    const double plausibleStep = 2.0 * m_plant.maxSpeed * dt + 3.0 / m_plant.ticksPerDegree;
+    if (std::fabs(m_reading - previousReading) > plausibleStep) {
+        fail(AxisError::Sensor);
+        return;
+    }
+
+    // The motor turns (back-EMF says so) but the reading stands still.
+    if (std::fabs(m_velocity) > kFrozenSpeed && m_reading == previousReading) {
+        m_frozenSeconds += dt;
+        // A coarse encoder changes rarely at low speed; give it three ticks' time.
+        const double limit = std::max(kFrozenSeconds, 3.0 / (m_plant.ticksPerDegree * kFrozenSpeed));
+        if (m_frozenSeconds >= limit) {
+            fail(AxisError::Sensor);
+            return;
+        }
+    } else if (m_reading != previousReading) {
+        m_frozenSeconds = 0.0;
+    }
+
+    // Pushing hard without moving: jammed, or homing against a hard stop
+    // because the switch never tripped.
+    const bool pushing = std::fabs(drive) >= kStallEffort * m_plant.torqueLimit;
+    if (pushing && std::fabs(m_velocity) < kStallSpeed) {
+        m_stallSeconds += dt;
+        if (m_stallSeconds >= m_faults.stallSeconds)
+            fail(m_mode == DriveMode::Homing ? AxisError::Homing : AxisError::Motor);
+    } else {
+        m_stallSeconds = 0.0;
+    }
+}
+
+void AxisModel::fail(int errorBit)
+{
+    // The board cuts the drive on any error; RESET clears it.
+    m_errors |= errorBit;
+    m_mode = DriveMode::Released;
+    m_velocityTarget = 0.0;
+    m_effort = 0.0;
+    m_stallSeconds = 0.0;
+    m_frozenSeconds = 0.0;
+}
+
+} // namespace slew::sim

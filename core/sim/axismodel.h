@@ -1,0 +1,126 @@
+#pragma once
+// One motorised axis: motor and load with inertia and friction, a gearbox
+// with optional play, limit switches, hard stops, an encoder, and the servo
+// loops of the controller board that drives it.
+//
+// No I/O and no clock of its own: step(dt) advances it, so a test can run it
+// exactly and a server can drive it from wall-clock time.
+
+#include "axisparameters.h"
+
+#include <cstdint>
+#include <random>
+
+namespace slew::sim {
+
+enum class DriveMode : std::uint8_t {
+    Released, // no drive: the axis coasts to rest against friction (SA / SE)
+    Position, // PID on the encoder reading (AZ / EL / PARK)
+    Velocity, // speed loop that also holds its place (VL..VD, VL0 holds)
+    Homing,   // RESET: creep towards the lower switch, then zero there
+};
+
+// Error bits as GE reports them (SatNOGS numbering). 1 "no error" is added by
+// whoever formats the register.
+namespace AxisError {
+constexpr int Sensor = 2;
+constexpr int Homing = 4;
+constexpr int Motor = 8;
+} // namespace AxisError
+
+// Limit switch bits as IP1 / IP2 report them (seeds/000).
+namespace LimitSwitch {
+constexpr int Lower = 1; // CCW for azimuth, down for elevation
+constexpr int Upper = 2; // CW for azimuth, up for elevation
+} // namespace LimitSwitch
+
+class AxisModel {
+public:
+    explicit AxisModel(const AxisPlant &plant = {}, const PidGains &gains = {}, std::uint32_t seed = 1);
+
+    // Advances the axis by dt seconds. Call with small steps (1 ms): the
+    // integration is explicit.
+    void step(double dt);
+
+    // Puts the axis at rest at an angle, as if it had been left there.
+    void placeAt(double degrees);
+
+    // Commands, in the encoder's frame (what the host reads back).
+    void commandPosition(double degrees);
+    void commandVelocity(double degreesPerSecond); // sign gives the direction
+    void release();
+    void home();
+    void clearErrors() { m_errors = 0; }
+
+    const AxisPlant &plant() const { return m_plant; }
+    void setPlant(const AxisPlant &plant);
+    const PidGains &gains() const { return m_gains; }
+    void setGains(const PidGains &gains) { m_gains = gains; }
+    const AxisFaults &faults() const { return m_faults; }
+    void setFaults(const AxisFaults &faults);
+
+    // What the controller knows: the encoder reading and what it derives.
+    double position() const { return m_reading; }
+    double measuredVelocity() const { return m_measuredVelocity; }
+    std::int64_t encoderTicks() const { return m_readingTicks; }
+    std::int64_t encoderVelocityTicks() const;
+
+    // What the physics knows (tests and the plot of the truth).
+    double antennaPosition() const { return m_antenna; }
+    double motorPosition() const { return m_motor; }
+    double velocity() const { return m_velocity; }
+    double acceleration() const { return m_acceleration; }
+
+    DriveMode mode() const { return m_mode; }
+    double targetPosition() const { return m_target; }
+    double targetVelocity() const { return m_velocityTarget; }
+    bool isSettled() const;      // position mode and within tolerance, at rest
+    bool isMoving() const;       // anything but settled or at rest
+    int limitSwitches() const;   // LimitSwitch bits
+    int errors() const { return m_errors; }
+    double load() const;         // drive effort in percent of the torque limit
+    double effort() const { return m_effort; }
+
+    static constexpr double settleTolerance = 0.1; // degrees
+
+private:
+    double sampleEncoder();
+    double positionDrive(double dt);
+    double velocityDrive(double target, double dt);
+    void integrate(double drive, double dt);
+    void detectFaults(double drive, double previousReading, double dt);
+    void fail(int errorBit);
+
+    AxisPlant m_plant;
+    PidGains m_gains;
+    AxisFaults m_faults;
+    std::mt19937 m_rng;
+
+    // Physics.
+    double m_motor = 0.0;
+    double m_antenna = 0.0;
+    double m_velocity = 0.0;
+    double m_acceleration = 0.0;
+
+    // Encoder and the controller's view of it.
+    double m_encoderOffset = 0.0; // antenna angle that reads as zero
+    double m_reading = 0.0;
+    std::int64_t m_readingTicks = 0;
+    double m_measuredVelocity = 0.0;
+
+    // Servo.
+    DriveMode m_mode = DriveMode::Released;
+    double m_target = 0.0;
+    double m_velocityTarget = 0.0;
+    double m_integral = 0.0;      // position loop: degree-seconds of error
+    double m_holdError = 0.0;     // velocity loop: degrees behind the commanded motion
+    double m_effort = 0.0;
+
+    // Fault detection.
+    int m_errors = 0;
+    double m_stallSeconds = 0.0;
+    double m_frozenSeconds = 0.0;
+    double m_homingTravel = 0.0;
+};
+
+} // namespace slew::sim

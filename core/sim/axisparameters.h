@@ -1,0 +1,47 @@
+#pragma once
+// The numbers that describe one simulated axis: its mechanics, its servo
+// gains and the faults switched on for it. Plain values, so options parsing,
+// the rotator and the tests can pass them around freely.
+
+namespace slew::sim {
+
+// Mechanics of one axis, in degrees and seconds. The motor torque is written
+// as the angular acceleration it gives the load (deg/s^2 for inertia 1), so
+// the gains below read as "deg/s^2 of drive per degree of error".
+struct AxisPlant {
+    double minDegrees = 0.0;      // lower (CCW / down) limit switch
+    double maxDegrees = 360.0;    // upper (CW / up) limit switch
+    double hardStopMargin = 0.5;  // mechanical stop this far beyond each switch
+    double inertia = 1.0;         // relative to the nominal load
+    double viscousFriction = 0.5; // deg/s^2 of drag per deg/s
+    double coulombFriction = 0.5; // deg/s^2, also the breakaway (stiction) level
+    double torqueLimit = 40.0;    // deg/s^2, the most the motor can deliver
+    double maxSpeed = 30.0;       // deg/s, the driver's cap (seeds/000)
+    double maxAcceleration = 30.0; // deg/s^2, the driver's ramp (seeds/000)
+    double ticksPerDegree = 100.0; // encoder resolution, reported by \?ENC
+    double homingSpeed = 10.0;    // deg/s while RESET looks for the switch
+    double manualSpeed = 10.0;    // deg/s for ML/MR/MU/MD (Easycomm II has no speed)
+};
+
+// Position servo gains, as CW1..CW3 (azimuth) and CW4..CW6 (elevation) set
+// them. The defaults settle a 10 degree step in about 1.5 s with a few
+// hundredths of a degree of overshoot; kp 40 with kd 0 overshoots by ~90 %.
+struct PidGains {
+    double kp = 20.0; // deg/s^2 per degree of error
+    double ki = 0.5;  // deg/s^2 per degree-second
+    double kd = 8.0;  // deg/s^2 per deg/s (on the measured speed, so a new target gives no kick)
+};
+
+// Faults of one axis that a test or an operator switches on and off.
+struct AxisFaults {
+    bool jam = false;             // the axis is stuck; a motor error follows after stallSeconds
+    bool encoderFreeze = false;   // the reading stops changing; a sensor error follows when it moves
+    double encoderNoise = 0.0;    // degrees of uniform noise on every reading; large jumps are a sensor error
+    bool missingEndStop = false;  // the lower switch never trips: homing fails
+    double backlash = 0.0;        // degrees of play between motor and antenna
+    double stallSeconds = 1.0;    // how long a driven, unmoving axis takes to become a motor error
+
+    friend bool operator==(const AxisFaults &, const AxisFaults &) = default;
+};
+
+} // namespace slew::sim

@@ -1,0 +1,232 @@
+// The physics of one axis on an exactly stepped clock: settling, limits,
+// gains that matter, coasting, holding, homing, and each axis fault.
+#include "sim/axismodel.h"
+
+#include <QTest>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace slew::sim;
+
+namespace {
+
+constexpr double kDt = 0.001;
+
+struct Trace {
+    double peak = -1e9;
+    double lowest = 1e9;
+    double maxSpeed = 0.0;
+    double maxAccel = 0.0;
+};
+
+Trace run(AxisModel &axis, double seconds)
+{
+    Trace t;
+    const int steps = int(std::lround(seconds / kDt));
+    for (int i = 0; i < steps; ++i) {
+        axis.step(kDt);
+        t.peak = std::max(t.peak, axis.antennaPosition());
+        t.lowest = std::min(t.lowest, axis.antennaPosition());
+        t.maxSpeed = std::max(t.maxSpeed, std::fabs(axis.velocity()));
+        t.maxAccel = std::max(t.maxAccel, std::fabs(axis.acceleration()));
+    }
+    return t;
+}
+
+// Seconds until the reading stays within tolerance of the target for good
+// (checked over the whole window), or -1.
+double settlingTime(AxisModel &axis, double target, double seconds, double tolerance = 0.1)
+{
+    double settledSince = -1;
+    const int steps = int(std::lround(seconds / kDt));
+    for (int i = 0; i < steps; ++i) {
+        axis.step(kDt);
+        const bool inside = std::fabs(axis.position() - target) <= tolerance;
+        if (inside && settledSince < 0)
+            settledSince = i * kDt;
+        else if (!inside)
+            settledSince = -1;
+    }
+    return settledSince;
+}
+
+AxisPlant azimuthPlant()
+{
+    AxisPlant p;
+    p.maxDegrees = 360.0;
+    return p;
+}
+
+} // namespace
+
+class TestAxisModel : public QObject {
+    Q_OBJECT
+private slots:
+    void defaultGainsSettleATenDegreeStep()
+    {
+        AxisModel axis(azimuthPlant());
+        axis.placeAt(100.0);
+        axis.commandPosition(110.0);
+        AxisModel copy = axis;
+        const Trace t = run(copy, 6.0);
+        QVERIFY2(t.peak - 110.0 < 0.2, qPrintable(QString("overshoot %1").arg(t.peak - 110.0)));
+        const double settled = settlingTime(axis, 110.0, 6.0);
+        QVERIFY2(settled >= 0 && settled < 2.0, qPrintable(QString("settled at %1 s").arg(settled)));
+        QVERIFY(std::fabs(axis.position() - 110.0) <= 0.1);
+        QVERIFY(axis.isSettled());
+    }
+
+    void mistunedGainsOvershootByMoreThanTwentyPercent()
+    {
+        AxisModel axis(azimuthPlant(), PidGains{40.0, 0.0, 0.0});
+        axis.placeAt(100.0);
+        axis.commandPosition(110.0);
+        const Trace t = run(axis, 6.0);
+        QVERIFY2(t.peak - 110.0 > 2.0, qPrintable(QString("overshoot %1").arg(t.peak - 110.0)));
+    }
+
+    void weakGainsCrawl()
+    {
+        AxisModel axis(azimuthPlant(), PidGains{0.5, 0.0, 2.0});
+        axis.placeAt(100.0);
+        axis.commandPosition(110.0);
+        run(axis, 3.0);
+        QVERIFY(std::fabs(axis.position() - 110.0) > 1.0);
+    }
+
+    void speedAndAccelerationLimitsHold()
+    {
+        AxisModel axis(azimuthPlant(), PidGains{200.0, 0.0, 20.0});
+        axis.placeAt(10.0);
+        axis.commandPosition(300.0);
+        const Trace t = run(axis, 20.0);
+        QVERIFY(t.maxSpeed <= 30.0 + 1e-9);
+        QVERIFY(t.maxAccel <= 30.0 + 1e-6);
+        QVERIFY(t.maxSpeed > 29.0); // and a long move does reach the cap
+    }
+
+    void stepsNearTheEndsNeverPassTheStops()
+    {
+        AxisModel axis(azimuthPlant(), PidGains{40.0, 0.0, 0.0});
+        axis.placeAt(10.0);
+        axis.commandPosition(0.0);
+        const Trace low = run(axis, 8.0);
+        QVERIFY(low.lowest >= -0.5);
+        axis.commandPosition(360.0);
+        const Trace high = run(axis, 30.0);
+        QVERIFY(high.peak <= 360.5);
+    }
+
+    void releasedAxisCoastsToRestButVelocityZeroHolds()
+    {
+        AxisModel axis(azimuthPlant());
+        axis.placeAt(100.0);
+        axis.commandVelocity(20.0);
+        run(axis, 2.0);
+        QVERIFY(std::fabs(axis.velocity() - 20.0) < 0.5);
+        axis.release();
+        const double before = axis.position();
+        run(axis, 0.2);
+        QVERIFY(axis.velocity() > 5.0); // still coasting: no brake
+        run(axis, 10.0);
+        QCOMPARE(axis.velocity(), 0.0);
+        QVERIFY(axis.position() > before + 5.0);
+
+        axis.commandVelocity(20.0);
+        run(axis, 2.0);
+        axis.commandVelocity(0.0);
+        const double stopAt = axis.position();
+        run(axis, 3.0);
+        QCOMPARE(axis.velocity(), 0.0);
+        QVERIFY(std::fabs(axis.position() - stopAt) < 10.0); // braked actively, far shorter than coasting
+        QCOMPARE(axis.mode(), DriveMode::Velocity);
+    }
+
+    void homingTakesTimeAndEndsAtZero()
+    {
+        AxisModel axis(azimuthPlant());
+        axis.placeAt(50.0);
+        axis.home();
+        run(axis, 2.0);
+        QCOMPARE(axis.mode(), DriveMode::Homing);
+        QVERIFY(axis.position() > 20.0);
+        run(axis, 10.0);
+        QCOMPARE(axis.mode(), DriveMode::Position);
+        QVERIFY(std::fabs(axis.position()) <= 0.05);
+        QCOMPARE(axis.errors(), 0);
+    }
+
+    void missingEndStopIsAHomingError()
+    {
+        AxisModel axis(azimuthPlant());
+        AxisFaults f;
+        f.missingEndStop = true;
+        axis.setFaults(f);
+        axis.placeAt(20.0);
+        axis.home();
+        run(axis, 10.0);
+        QCOMPARE(axis.errors(), AxisError::Homing);
+        QCOMPARE(axis.mode(), DriveMode::Released);
+        QVERIFY(axis.antennaPosition() >= -0.5);
+    }
+
+    void jamIsAMotorErrorAfterTheStallTime()
+    {
+        AxisModel axis(azimuthPlant());
+        AxisFaults f;
+        f.jam = true;
+        f.stallSeconds = 1.0;
+        axis.setFaults(f);
+        axis.placeAt(20.0);
+        axis.commandPosition(40.0);
+        run(axis, 0.8);
+        QCOMPARE(axis.errors(), 0);
+        run(axis, 0.4);
+        QCOMPARE(axis.errors(), AxisError::Motor);
+        QCOMPARE(axis.antennaPosition(), 20.0);
+    }
+
+    void frozenEncoderIsASensorError()
+    {
+        AxisModel axis(azimuthPlant());
+        axis.placeAt(20.0);
+        AxisFaults f;
+        f.encoderFreeze = true;
+        axis.setFaults(f);
+        axis.commandPosition(40.0);
+        run(axis, 2.0);
+        QCOMPARE(axis.errors(), AxisError::Sensor);
+        QCOMPARE(axis.position(), 20.0);
+    }
+
+    void noisyEncoderIsASensorError()
+    {
+        AxisModel axis(azimuthPlant());
+        axis.placeAt(20.0);
+        AxisFaults f;
+        f.encoderNoise = 1.0;
+        axis.setFaults(f);
+        run(axis, 0.1);
+        QCOMPARE(axis.errors(), AxisError::Sensor);
+    }
+
+    void backlashDelaysTheAntennaOnReversal()
+    {
+        AxisModel axis(azimuthPlant());
+        AxisFaults f;
+        f.backlash = 2.0;
+        axis.setFaults(f);
+        axis.placeAt(100.0);
+        axis.commandVelocity(5.0);
+        run(axis, 2.0);
+        const double gap = axis.motorPosition() - axis.antennaPosition();
+        QVERIFY(std::fabs(gap - 1.0) < 1e-6);
+        axis.commandVelocity(-5.0);
+        run(axis, 3.0);
+        QVERIFY(std::fabs(axis.motorPosition() - axis.antennaPosition() + 1.0) < 1e-6);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestAxisModel)
+#include "tst_axismodel.moc"
