@@ -1,0 +1,165 @@
+#include "rotatorprofile.h"
+
+#include <QFile>
+#include <QJsonDocument>
+#include <QObject>
+#include <QSaveFile>
+
+#include <cmath>
+
+namespace slew::model {
+
+namespace {
+
+QJsonObject gainsToJson(const PidGains &g)
+{
+    return {{"kp", g.kp}, {"ki", g.ki}, {"kd", g.kd}};
+}
+
+bool readNumber(const QJsonObject &o, const char *key, double *out, QString *error)
+{
+    const QJsonValue v = o.value(QLatin1String(key));
+    if (v.isUndefined())
+        return true;
+    if (!v.isDouble() || !std::isfinite(v.toDouble())) {
+        *error = QObject::tr("'%1' must be a number").arg(QLatin1String(key));
+        return false;
+    }
+    *out = v.toDouble();
+    return true;
+}
+
+bool readGains(const QJsonObject &o, const char *key, std::optional<PidGains> *out, QString *error)
+{
+    const QJsonValue v = o.value(QLatin1String(key));
+    if (v.isUndefined() || v.isNull())
+        return true;
+    if (!v.isObject()) {
+        *error = QObject::tr("'%1' must be an object with kp, ki, kd").arg(QLatin1String(key));
+        return false;
+    }
+    PidGains g;
+    const QJsonObject go = v.toObject();
+    if (!readNumber(go, "kp", &g.kp, error) || !readNumber(go, "ki", &g.ki, error)
+        || !readNumber(go, "kd", &g.kd, error))
+        return false;
+    *out = g;
+    return true;
+}
+
+} // namespace
+
+QString RotatorProfile::validate() const
+{
+    if (QString e = limits.validate(); !e.isEmpty())
+        return e;
+    if (!checkElevation(limits, parkEl).isEmpty() || !chooseAzimuth(limits, parkAz, std::nullopt).azimuth)
+        return QObject::tr("park position %1°, %2° is outside the limits").arg(parkAz).arg(parkEl);
+    if (!(deadbandDeg >= 0.0 && deadbandDeg <= 10.0))
+        return QObject::tr("deadband must be 0° to 10°");
+    if (pollHz < 1 || pollHz > 50)
+        return QObject::tr("poll rate must be 1 to 50 Hz");
+    return {};
+}
+
+QJsonObject RotatorProfile::toJson() const
+{
+    QJsonObject o{
+        {"format", "slew-profile-1"},
+        {"name", name},
+        {"uri", uri},
+        {"dialect", protocol::dialectName(dialect)},
+        {"limits", QJsonObject{{"azMin", limits.azMin}, {"azMax", limits.azMax},
+                               {"elMin", limits.elMin}, {"elMax", limits.elMax}}},
+        {"park", QJsonObject{{"az", parkAz}, {"el", parkEl}}},
+        {"southStop", southStop},
+        {"deadbandDeg", deadbandDeg},
+        {"pollHz", pollHz},
+    };
+    if (azGains)
+        o.insert("azGains", gainsToJson(*azGains));
+    if (elGains)
+        o.insert("elGains", gainsToJson(*elGains));
+    return o;
+}
+
+std::optional<RotatorProfile> RotatorProfile::fromJson(const QJsonObject &o, QString *error)
+{
+    QString ignored;
+    QString &err = error ? *error : ignored;
+    RotatorProfile p;
+    if (o.contains("name"))
+        p.name = o.value("name").toString(p.name);
+    if (o.contains("uri"))
+        p.uri = o.value("uri").toString(p.uri);
+    if (o.contains("dialect")) {
+        const auto d = protocol::dialectFromName(o.value("dialect").toString());
+        if (!d) {
+            err = QObject::tr("unknown dialect '%1'").arg(o.value("dialect").toString());
+            return std::nullopt;
+        }
+        p.dialect = *d;
+    }
+    const QJsonObject lim = o.value("limits").toObject();
+    const QJsonObject park = o.value("park").toObject();
+    double poll = p.pollHz;
+    if (!readNumber(lim, "azMin", &p.limits.azMin, &err) || !readNumber(lim, "azMax", &p.limits.azMax, &err)
+        || !readNumber(lim, "elMin", &p.limits.elMin, &err) || !readNumber(lim, "elMax", &p.limits.elMax, &err)
+        || !readNumber(park, "az", &p.parkAz, &err) || !readNumber(park, "el", &p.parkEl, &err)
+        || !readNumber(o, "deadbandDeg", &p.deadbandDeg, &err) || !readNumber(o, "pollHz", &poll, &err)
+        || !readGains(o, "azGains", &p.azGains, &err) || !readGains(o, "elGains", &p.elGains, &err))
+        return std::nullopt;
+    p.pollHz = int(poll);
+    p.southStop = o.value("southStop").toBool(false);
+    if (QString e = p.validate(); !e.isEmpty()) {
+        err = e;
+        return std::nullopt;
+    }
+    return p;
+}
+
+bool RotatorProfile::save(const QString &path, QString *error) const
+{
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly)) {
+        if (error)
+            *error = QObject::tr("%1: %2").arg(path, file.errorString());
+        return false;
+    }
+    file.write(QJsonDocument(toJson()).toJson(QJsonDocument::Indented));
+    if (!file.commit()) {
+        if (error)
+            *error = QObject::tr("%1: %2").arg(path, file.errorString());
+        return false;
+    }
+    return true;
+}
+
+std::optional<RotatorProfile> RotatorProfile::load(const QString &path, QString *error)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        if (error)
+            *error = QObject::tr("%1: %2").arg(path, file.errorString());
+        return std::nullopt;
+    }
+    if (file.size() > 1024 * 1024) {
+        if (error)
+            *error = QObject::tr("%1: too large for a rotator profile").arg(path);
+        return std::nullopt;
+    }
+    QJsonParseError parseError;
+    const QJsonDocument doc = QJsonDocument::fromJson(file.readAll(), &parseError);
+    if (!doc.isObject()) {
+        if (error)
+            *error = QObject::tr("%1: not a profile: %2").arg(path, parseError.errorString());
+        return std::nullopt;
+    }
+    QString why;
+    auto profile = fromJson(doc.object(), &why);
+    if (!profile && error)
+        *error = QObject::tr("%1: %2").arg(path, why);
+    return profile;
+}
+
+} // namespace slew::model

@@ -1,0 +1,50 @@
+#pragma once
+// Everything Slew knows about one rotator: how to reach it, which dialect it
+// speaks, how far it may turn, where it parks and its tuned gains. Saved as
+// JSON (atomically) by the operator window and the setup wizard.
+
+#include "rotatorlimits.h"
+#include "protocol/dialect.h"
+
+#include <QJsonObject>
+#include <QString>
+
+#include <array>
+#include <optional>
+
+namespace slew::model {
+
+struct PidGains {
+    double kp = 0.0;
+    double ki = 0.0;
+    double kd = 0.0;
+    friend bool operator==(const PidGains &, const PidGains &) = default;
+};
+
+struct RotatorProfile {
+    QString name = QStringLiteral("Simulator");
+    QString uri = QStringLiteral("sim:");
+    protocol::Dialect dialect = protocol::Dialect::Easycomm3;
+    RotatorLimits limits;
+    double parkAz = 0.0;
+    double parkEl = 90.0;
+    bool southStop = false;          // the azimuth stop is at south (seeds/003 set-up)
+    std::optional<PidGains> azGains; // as last written with CW1..CW3
+    std::optional<PidGains> elGains; // CW4..CW6
+    double deadbandDeg = 0.5;        // a remote target this close to the last one is not re-sent
+    int pollHz = 10;
+
+    // Empty when usable, else why not.
+    QString validate() const;
+
+    QJsonObject toJson() const;
+    // Reads what toJson() wrote; unknown keys are ignored, missing ones keep
+    // their defaults, bad values give an error and no profile.
+    static std::optional<RotatorProfile> fromJson(const QJsonObject &json, QString *error);
+
+    // Atomic save (QSaveFile) and load; errors name the file and the cause.
+    bool save(const QString &path, QString *error) const;
+    static std::optional<RotatorProfile> load(const QString &path, QString *error);
+};
+
+} // namespace slew::model

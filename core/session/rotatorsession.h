@@ -1,0 +1,183 @@
+#pragma once
+// RotatorSession: one conversation with one rotator controller.
+//
+// It owns the link (serial, TCP, simulator, rotctld — it never asks which),
+// queues queries and matches their replies, polls position and telemetry,
+// probes what the controller can do, and turns operator intent (go to, jog,
+// stop, park, home, config) into the dialect's bytes after checking the
+// profile's limits. Everything is driven by signals; nothing here waits.
+
+#include "model/rotatorprofile.h"
+#include "protocol/parser.h"
+#include "requestqueue.h"
+#include "rotatorstate.h"
+
+#include <QElapsedTimer>
+#include <QHash>
+#include <QObject>
+#include <QTimer>
+
+#include <array>
+#include <memory>
+
+namespace slew::transport {
+class Link;
+}
+
+namespace slew::session {
+
+class RotatorSession : public QObject {
+    Q_OBJECT
+public:
+    enum class State { Disconnected, Connecting, Connected, Reconnecting };
+    Q_ENUM(State)
+
+    struct Options {
+        int replyTimeoutMs = 500;
+        int retries = 2;            // resends of an unanswered query
+        int telemetryEvery = 10;    // telemetry once per this many position polls
+        bool autoReconnect = false; // retry a lost link with backoff
+        int maxQueue = 64;
+    };
+
+    explicit RotatorSession(QObject *parent = nullptr);
+    ~RotatorSession() override;
+
+    void setProfile(const model::RotatorProfile &profile);
+    const model::RotatorProfile &profile() const { return m_profile; }
+    void setOptions(const Options &options);
+    const Options &options() const { return m_options; }
+
+    State state() const { return m_state; }
+    bool isConnected() const { return m_state == State::Connected; }
+    QString uri() const { return m_uri; }
+    const Capabilities &capabilities() const { return m_caps; }
+
+    bool hasPosition() const { return !std::isnan(m_az) && !std::isnan(m_el); }
+    double azimuth() const { return m_az; }
+    double elevation() const { return m_el; }
+    bool positionStale() const { return m_stale; }
+    double targetAzimuth() const { return m_targetAz; }
+    double targetElevation() const { return m_targetEl; }
+    StatusWord status() const { return m_status; }
+    int errorFlags() const { return m_errorFlags; }
+    const Telemetry &telemetry() const { return m_telemetry; }
+    QString version() const { return m_version; }
+    int queuedRequests() const { return m_queue.size(); }
+    int echoesIgnored() const { return m_echoesIgnored; }
+
+    bool isPolling() const { return m_pollingEnabled; }
+    void setPolling(bool enabled);
+
+public slots:
+    void connectTo(const QString &uri);
+    void disconnectFromRotator();
+
+    // Each returns false (and emits commandRefused with the reason) when the
+    // move is outside the limits, the controller lacks the command, or there
+    // is no link; in that case nothing is sent.
+    bool gotoPosition(double az, double el);
+    bool moveAxis(slew::session::Axis axis, double degreesPerSecond); // + is right (CW) / up
+    bool stop(slew::session::Axes axes = slew::session::Axes::Both);
+    bool park();
+    bool home();
+    bool readConfig(int reg);
+    bool writeConfig(int reg, const QString &value);
+    bool sendRaw(const QString &line);
+
+signals:
+    void stateChanged(slew::session::RotatorSession::State state, const QString &detail);
+    void positionChanged(double az, double el, bool stale);
+    void targetChanged(double az, double el);
+    void commandedChanged(double az, double el); // CR10 / CR11 read back
+    void statusChanged(slew::session::StatusWord status);
+    void errorFlagsChanged(int flags);
+    void telemetryChanged(const slew::session::Telemetry &telemetry);
+    void encodersChanged(double az, double el, double azVelocity, double elVelocity);
+    void configValueReceived(int reg, const QString &value);
+    void versionChanged(const QString &version);
+    void capabilitiesChanged(const slew::session::Capabilities &capabilities);
+    void bytesSent(const QByteArray &bytes);
+    void bytesReceived(const QByteArray &bytes);
+    void alarmReceived(const QString &text);
+    void commandRefused(const QString &reason);
+    void requestFailed(const QString &request, const QString &reason);
+    void errorOccurred(const QString &message);
+
+private:
+    void setState(State s, const QString &detail = {});
+    void openLink();
+    void onLinkOpened();
+    void onLinkFailed(const QString &reason);
+    void onLinkLost(const QString &reason);
+    void dropLink(const QString &reason = {});
+    void scheduleReconnect(const QString &reason);
+    void onReadyRead();
+    void apply(const protocol::Message &m);
+    void applyPosition();
+    void applyInput(int index, double value);
+    void applyConfig(int reg, const QString &text, bool numeric, double value);
+    bool isEcho(const protocol::Message &m) const;
+
+    bool refuse(const QString &reason);
+    bool requireLink();
+    void write(const QByteArray &line);
+    void rememberSent(const protocol::Message &m);
+    bool enqueue(Request r);
+    void sendNext();
+    void onReplyTimeout();
+    void finishFront(bool ok, const QString &reason);
+
+    void startProbe();
+    void poll();
+    void checkSoftLimits();
+    void onStale();
+
+    model::RotatorProfile m_profile;
+    Options m_options;
+    protocol::Parser m_parser;
+
+    QString m_uri;
+    std::unique_ptr<transport::Link> m_link;
+    State m_state = State::Disconnected;
+    bool m_wantConnected = false;
+    int m_reconnectAttempt = 0;
+    QTimer m_reconnectTimer;
+
+    RequestQueue m_queue;
+    bool m_onWire = false;
+    QTimer m_replyTimer;
+
+    QTimer m_pollTimer;
+    bool m_pollingEnabled = true;
+    int m_pollCount = 0;
+    int m_failedPolls = 0;
+    QTimer m_staleTimer;
+
+    Capabilities m_caps;
+    int m_probesOutstanding = 0;
+    QHash<QByteArray, int> m_telemetryFailures; // consecutive misses per telemetry query
+
+    double m_az = kUnknown, m_el = kUnknown;
+    bool m_azFresh = false, m_elFresh = false;
+    bool m_stale = true;
+    double m_targetAz = kUnknown, m_targetEl = kUnknown;
+    double m_commandedAz = kUnknown, m_commandedEl = kUnknown;
+    std::array<double, 2> m_jogSpeed{0.0, 0.0}; // °/s of a running velocity move, per axis
+    StatusWord m_status;
+    int m_errorFlags = -1;
+    Telemetry m_telemetry;
+    QString m_version;
+
+    // Recently sent set-commands, to recognise a controller that echoes them.
+    struct Sent {
+        protocol::Message message;
+        qint64 atMs;
+    };
+    std::array<Sent, 8> m_sent{};
+    int m_sentNext = 0;
+    QElapsedTimer m_clock;
+    int m_echoesIgnored = 0;
+};
+
+} // namespace slew::session

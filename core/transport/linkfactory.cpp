@@ -1,0 +1,129 @@
+#include "linkfactory.h"
+
+#include "seriallink.h"
+#include "tcplink.h"
+
+#include <QHash>
+#include <QUrlQuery>
+
+namespace slew::transport {
+
+namespace {
+
+QHash<QString, LinkMaker> &registry()
+{
+    static QHash<QString, LinkMaker> makers;
+    return makers;
+}
+
+LinkResult fail(const QString &uri, const QString &why)
+{
+    return {nullptr, QObject::tr("%1: %2").arg(uri, why)};
+}
+
+LinkResult makeSerial(const QUrl &url, const QString &uri)
+{
+    SerialSettings s;
+    s.portName = url.path();
+    if (s.portName.isEmpty())
+        return fail(uri, QObject::tr("no serial port named (expected serial:/dev/ttyUSB0)"));
+
+    const QUrlQuery query(url);
+    for (const auto &[key, value] : query.queryItems()) {
+        bool ok = false;
+        if (key == QLatin1String("baud")) {
+            s.baud = value.toInt(&ok);
+            if (!ok || s.baud < 50 || s.baud > 4000000)
+                return fail(uri, QObject::tr("baud rate '%1' is not a rate").arg(value));
+        } else if (key == QLatin1String("data")) {
+            const int bits = value.toInt(&ok);
+            if (!ok || bits < 5 || bits > 8)
+                return fail(uri, QObject::tr("data bits must be 5 to 8, not '%1'").arg(value));
+            s.dataBits = QSerialPort::DataBits(bits);
+        } else if (key == QLatin1String("parity")) {
+            static const QHash<QString, QSerialPort::Parity> parities{
+                {"none", QSerialPort::NoParity}, {"even", QSerialPort::EvenParity}, {"odd", QSerialPort::OddParity},
+                {"mark", QSerialPort::MarkParity}, {"space", QSerialPort::SpaceParity}};
+            if (!parities.contains(value))
+                return fail(uri, QObject::tr("parity must be none, even, odd, mark or space, not '%1'").arg(value));
+            s.parity = parities.value(value);
+        } else if (key == QLatin1String("stop")) {
+            if (value == QLatin1String("1"))
+                s.stopBits = QSerialPort::OneStop;
+            else if (value == QLatin1String("1.5"))
+                s.stopBits = QSerialPort::OneAndHalfStop;
+            else if (value == QLatin1String("2"))
+                s.stopBits = QSerialPort::TwoStop;
+            else
+                return fail(uri, QObject::tr("stop bits must be 1, 1.5 or 2, not '%1'").arg(value));
+        } else if (key == QLatin1String("flow")) {
+            if (value == QLatin1String("none"))
+                s.flow = QSerialPort::NoFlowControl;
+            else if (value == QLatin1String("rtscts") || value == QLatin1String("hardware"))
+                s.flow = QSerialPort::HardwareControl;
+            else if (value == QLatin1String("xonxoff") || value == QLatin1String("software"))
+                s.flow = QSerialPort::SoftwareControl;
+            else
+                return fail(uri, QObject::tr("flow must be none, rtscts or xonxoff, not '%1'").arg(value));
+        } else {
+            return fail(uri, QObject::tr("unknown serial option '%1'").arg(key));
+        }
+    }
+    return {std::make_unique<SerialLink>(uri, s), {}};
+}
+
+LinkResult makeTcp(const QUrl &url, const QString &uri)
+{
+    if (url.host().isEmpty())
+        return fail(uri, QObject::tr("no host named (expected tcp://host:port)"));
+    if (url.port() <= 0)
+        return fail(uri, QObject::tr("no port named (expected tcp://host:port)"));
+    return {std::make_unique<TcpLink>(uri, url.host(), quint16(url.port())), {}};
+}
+
+void registerBuiltIns()
+{
+    static bool done = false;
+    if (done)
+        return;
+    done = true;
+    registry().insert(QStringLiteral("serial"), makeSerial);
+    registry().insert(QStringLiteral("tcp"), makeTcp);
+}
+
+} // namespace
+
+void registerLinkScheme(const QString &scheme, LinkMaker maker)
+{
+    registerBuiltIns();
+    registry().insert(scheme.toLower(), std::move(maker));
+}
+
+bool isSchemeRegistered(const QString &scheme)
+{
+    registerBuiltIns();
+    return registry().contains(scheme.toLower());
+}
+
+LinkResult createLink(const QString &uri)
+{
+    registerBuiltIns();
+    const QString trimmed = uri.trimmed();
+    if (trimmed.isEmpty())
+        return {nullptr, QObject::tr("no link given (expected serial:, tcp:// or sim:)")};
+    const QUrl url(trimmed, QUrl::StrictMode);
+    if (!url.isValid())
+        return fail(trimmed, QObject::tr("not a valid URI: %1").arg(url.errorString()));
+    const QString scheme = url.scheme().toLower();
+    if (scheme.isEmpty())
+        return fail(trimmed, QObject::tr("no scheme (expected serial:, tcp:// or sim:)"));
+    const auto maker = registry().constFind(scheme);
+    if (maker == registry().constEnd()) {
+        QStringList known = registry().keys();
+        known.sort();
+        return fail(trimmed, QObject::tr("unknown link kind '%1' (known: %2)").arg(scheme, known.join(", ")));
+    }
+    return (*maker)(url, trimmed);
+}
+
+} // namespace slew::transport

@@ -1,0 +1,419 @@
+// RotatorSession against a scripted controller over a real local socket:
+// matching, timeout and retry, unsolicited values, echo, limit refusal, link
+// loss and reconnection. No fixed waits: every wait is on a signal.
+
+#include "fakedevice.h"
+#include "session/rotatorsession.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+using namespace slew;
+using session::RotatorSession;
+
+class RotatorSessionTest : public QObject {
+    Q_OBJECT
+private slots:
+    void init();
+    void cleanup();
+
+    void connectsProbesAndPolls();
+    void oneLineAndTwoLinePositionReplies();
+    void capabilitiesReflectWhatTheDeviceAnswers();
+    void satnogsConfigAnswerWithoutPrefix();
+    void configReadEasycomm3Form();
+    void unansweredQueryIsRetriedThenFails();
+    void unsolicitedValuesAreApplied();
+    void echoedCommandsAreIgnored();
+    void outOfRangeMovesSendNothing();
+    void overlapTakesTheShortestLegalPath();
+    void stopGoesOutEvenWhenTheQueueIsStuck();
+    void rawLinesAreLimitChecked();
+    void positionGoesStaleWhenRepliesStop();
+    void linkLossFailsWaitingRequestsAndReconnects();
+    void badUriAndRefusedConnectionAreClearMessages();
+    void alarmFailsTheRequestInFlight();
+    void telemetryAndStatusSignals();
+    void velocityJogAndSoftLimitStop();
+
+private:
+    bool connectSession(RotatorSession &s, FakeDevice &d, protocol::Dialect dialect = protocol::Dialect::SatNogs);
+    FakeDevice *device = nullptr;
+    RotatorSession *session = nullptr;
+};
+
+void RotatorSessionTest::init()
+{
+    device = new FakeDevice;
+    session = new RotatorSession;
+    RotatorSession::Options o;
+    o.replyTimeoutMs = 150;
+    o.retries = 2;
+    o.telemetryEvery = 2;
+    session->setOptions(o);
+}
+
+void RotatorSessionTest::cleanup()
+{
+    delete session;
+    delete device;
+}
+
+bool RotatorSessionTest::connectSession(RotatorSession &s, FakeDevice &d, protocol::Dialect dialect)
+{
+    model::RotatorProfile p;
+    p.dialect = dialect;
+    p.pollHz = 20;
+    s.setProfile(p);
+    QSignalSpy caps(&s, &RotatorSession::capabilitiesChanged);
+    s.connectTo(d.uri());
+    return QTest::qWaitFor([&] { return s.capabilities().probed && s.isConnected(); }, 10000);
+}
+
+void RotatorSessionTest::connectsProbesAndPolls()
+{
+    QSignalSpy states(session, &RotatorSession::stateChanged);
+    QSignalSpy positions(session, &RotatorSession::positionChanged);
+    QVERIFY(connectSession(*session, *device));
+    QCOMPARE(states.first().at(0).value<RotatorSession::State>(), RotatorSession::State::Connecting);
+    QTRY_VERIFY(positions.count() >= 3);
+    QCOMPARE(positions.last().at(0).toDouble(), 10.0);
+    QCOMPARE(positions.last().at(1).toDouble(), 20.0);
+    QCOMPARE(positions.last().at(2).toBool(), false);
+    QCOMPARE(session->version(), QStringLiteral("Fake-1.0"));
+    // The probe asked each optional command once.
+    QVERIFY(device->received.contains("VE"));
+    QVERIFY(device->received.contains("GS"));
+    QVERIFY(device->received.contains("CR 1"));
+}
+
+void RotatorSessionTest::oneLineAndTwoLinePositionReplies()
+{
+    device->oneLinePosition = false;
+    QSignalSpy positions(session, &RotatorSession::positionChanged);
+    QVERIFY(connectSession(*session, *device));
+    device->az = 123.4;
+    QTRY_COMPARE(session->azimuth(), 123.4);
+    device->oneLinePosition = true;
+    device->el = 56.7;
+    QTRY_COMPARE(session->elevation(), 56.7);
+    // Each reply, in either form, gives one position update, not two.
+    positions.clear();
+    QTRY_VERIFY(positions.count() >= 4);
+    for (const auto &args : positions)
+        QCOMPARE(args.at(1).toDouble(), 56.7);
+}
+
+void RotatorSessionTest::capabilitiesReflectWhatTheDeviceAnswers()
+{
+    device->script = [](const QByteArray &line) -> QByteArray {
+        if (line == "GS" || line == "GE" || line.startsWith("IP") || line.startsWith("CR"))
+            return "\n"; // answers nothing useful
+        return {};
+    };
+    QVERIFY(connectSession(*session, *device, protocol::Dialect::SatNogs));
+    const auto caps = session->capabilities();
+    QVERIFY(caps.positionFeedback);
+    QVERIFY(caps.version);
+    QVERIFY(!caps.status);
+    QVERIFY(!caps.errors);
+    QVERIFY(!caps.inputs);
+    QVERIFY(!caps.config);
+    QVERIFY(!caps.encoders); // SatNOGS has no \?ENC: not even asked
+    QVERIFY(!device->received.contains("\\?ENC"));
+    QVERIFY(caps.velocity && caps.park && caps.reset);
+    // What it lacks is not polled.
+    device->received.clear();
+    QTRY_VERIFY(device->count("AZ EL") >= 5);
+    QCOMPARE(device->count("GS"), 0);
+}
+
+void RotatorSessionTest::satnogsConfigAnswerWithoutPrefix()
+{
+    QVERIFY(connectSession(*session, *device, protocol::Dialect::SatNogs));
+    QSignalSpy values(session, &RotatorSession::configValueReceived);
+    session->setPolling(false); // polls read CR10/CR11 too
+    QTRY_COMPARE(session->queuedRequests(), 0);
+    values.clear();
+    QVERIFY(session->readConfig(3));
+    QTRY_VERIFY(!values.isEmpty());
+    QCOMPARE(values.first().at(0).toInt(), 3);
+    QCOMPARE(values.first().at(1).toString(), QStringLiteral("0.80"));
+    QVERIFY(device->received.contains("CR 3"));
+}
+
+void RotatorSessionTest::configReadEasycomm3Form()
+{
+    QVERIFY(connectSession(*session, *device, protocol::Dialect::Easycomm3));
+    session->setPolling(false);
+    QTRY_COMPARE(session->queuedRequests(), 0);
+    QSignalSpy values(session, &RotatorSession::configValueReceived);
+    QVERIFY(session->writeConfig(1, "2.5"));
+    QVERIFY(session->readConfig(1));
+    QTRY_VERIFY(!values.isEmpty());
+    QCOMPARE(values.first().at(0).toInt(), 1);
+    QVERIFY(device->received.contains("CW1,2.5"));
+    QVERIFY(device->received.contains("CR1"));
+    // Bad values are refused before anything is sent.
+    QSignalSpy refused(session, &RotatorSession::commandRefused);
+    QVERIFY(!session->writeConfig(1, "a b"));
+    QVERIFY(!session->writeConfig(1, ""));
+    QVERIFY(!session->writeConfig(7, "999")); // park outside the azimuth range
+    QCOMPARE(refused.count(), 3);
+    QVERIFY(!device->received.contains("CW7,999"));
+}
+
+void RotatorSessionTest::unansweredQueryIsRetriedThenFails()
+{
+    QVERIFY(connectSession(*session, *device));
+    session->setPolling(false);
+    QTRY_COMPARE(session->queuedRequests(), 0);
+
+    // Two lost answers, then an answer: the retry gets it.
+    device->received.clear();
+    device->ignoreNext = 2;
+    QSignalSpy values(session, &RotatorSession::configValueReceived);
+    QVERIFY(session->readConfig(2));
+    QTRY_COMPARE(values.count(), 1);
+    QCOMPARE(device->count("CR 2"), 3);
+
+    // Never answered: fails after 1 + retries attempts, with the reason.
+    device->received.clear();
+    device->silent = true;
+    QSignalSpy failed(session, &RotatorSession::requestFailed);
+    QVERIFY(session->readConfig(4));
+    QVERIFY(failed.wait(3000));
+    QCOMPARE(device->count("CR 4"), 3);
+    QCOMPARE(failed.first().at(0).toString(), QStringLiteral("CR 4"));
+    QVERIFY(failed.first().at(1).toString().contains("no answer"));
+}
+
+void RotatorSessionTest::unsolicitedValuesAreApplied()
+{
+    QVERIFY(connectSession(*session, *device, protocol::Dialect::Easycomm3));
+    session->setPolling(false);
+    QTRY_COMPARE(session->queuedRequests(), 0);
+    QSignalSpy positions(session, &RotatorSession::positionChanged);
+    QSignalSpy status(session, &RotatorSession::statusChanged);
+    QSignalSpy commanded(session, &RotatorSession::commandedChanged);
+    device->push("AZ33.25\nEL44.50\nGS1030\nCR10,33.25\n");
+    QTRY_COMPARE(session->azimuth(), 33.25);
+    QTRY_COMPARE(session->elevation(), 44.5);
+    QTRY_VERIFY(!status.isEmpty());
+    QCOMPARE(session->status().azimuth(), quint8(6));
+    QCOMPARE(session->status().elevation(), quint8(4));
+    QTRY_VERIFY(!commanded.isEmpty());
+    QCOMPARE(commanded.last().at(0).toDouble(), 33.25);
+}
+
+void RotatorSessionTest::echoedCommandsAreIgnored()
+{
+    device->echo = true;
+    QVERIFY(connectSession(*session, *device));
+    QTRY_COMPARE(session->azimuth(), 10.0);
+    const int echoesBefore = session->echoesIgnored();
+    QVERIFY(echoesBefore > 0); // every query came back before its answer
+    device->silent = true; // only the echo comes back now
+    QSignalSpy positions(session, &RotatorSession::positionChanged);
+    QVERIFY(session->gotoPosition(50, 10));
+    QTRY_VERIFY(device->received.contains("AZ50.0 EL10.0"));
+    QTRY_VERIFY(session->echoesIgnored() > echoesBefore);
+    // The echoed set command did not pass for a position report.
+    for (const auto &args : positions)
+        QCOMPARE(args.at(0).toDouble(), 10.0);
+    QCOMPARE(session->azimuth(), 10.0);
+}
+
+void RotatorSessionTest::outOfRangeMovesSendNothing()
+{
+    QVERIFY(connectSession(*session, *device));
+    QSignalSpy refused(session, &RotatorSession::commandRefused);
+    QSignalSpy sent(session, &RotatorSession::bytesSent);
+    session->setPolling(false);
+    QTRY_COMPARE(session->queuedRequests(), 0);
+    sent.clear();
+    QVERIFY(!session->gotoPosition(400, 10)); // 0..360
+    QVERIFY(!session->gotoPosition(10, 95));  // 0..90
+    QVERIFY(!session->gotoPosition(10, -1));
+    QVERIFY(!session->gotoPosition(qQNaN(), 10));
+    QCOMPARE(refused.count(), 4);
+    QVERIFY(refused.first().at(0).toString().contains("outside"));
+    QCOMPARE(sent.count(), 0);
+    QVERIFY(session->gotoPosition(359.9, 89.9));
+    QCOMPARE(sent.count(), 1);
+    QCOMPARE(sent.first().at(0).toByteArray(), QByteArray("AZ359.9 EL89.9\n"));
+}
+
+void RotatorSessionTest::overlapTakesTheShortestLegalPath()
+{
+    model::RotatorProfile p;
+    p.dialect = protocol::Dialect::SatNogs;
+    p.limits.azMax = 450;
+    p.limits.elMax = 180;
+    session->setProfile(p);
+    device->az = 350;
+    session->connectTo(device->uri());
+    QTRY_COMPARE(session->azimuth(), 350.0);
+    QSignalSpy targets(session, &RotatorSession::targetChanged);
+    QVERIFY(session->gotoPosition(10, 30)); // 20° on through the overlap, not 340° back
+    QCOMPARE(targets.last().at(0).toDouble(), 370.0);
+    QTRY_VERIFY(device->received.contains("AZ370.0 EL30.0"));
+    QTRY_COMPARE(session->azimuth(), 370.0);
+    QVERIFY(session->gotoPosition(200, 30)); // only one legal position
+    QCOMPARE(targets.last().at(0).toDouble(), 200.0);
+    QVERIFY(session->gotoPosition(100, 170)); // el up to 180 in this profile
+}
+
+void RotatorSessionTest::stopGoesOutEvenWhenTheQueueIsStuck()
+{
+    QVERIFY(connectSession(*session, *device));
+    device->silent = true;
+    QVERIFY(session->readConfig(1));
+    QVERIFY(session->readConfig(2));
+    QVERIFY(session->queuedRequests() >= 2);
+    QVERIFY(session->stop());
+    QTRY_VERIFY(device->received.contains("SA SE"));
+    QVERIFY(session->queuedRequests() >= 1); // it did not wait for them
+    QVERIFY(session->stop(session::Axes::Azimuth));
+    QTRY_VERIFY(device->received.contains("SA"));
+}
+
+void RotatorSessionTest::rawLinesAreLimitChecked()
+{
+    QVERIFY(connectSession(*session, *device));
+    QSignalSpy refused(session, &RotatorSession::commandRefused);
+    QVERIFY(!session->sendRaw("AZ400.0 EL10.0"));
+    QVERIFY(!session->sendRaw("EL99"));
+    QVERIFY(!session->sendRaw(QString(300, 'A')));
+    QVERIFY(!session->sendRaw("   "));
+    QCOMPARE(refused.count(), 4);
+    QVERIFY(session->sendRaw("VE"));
+    QTRY_COMPARE(device->count("VE"), 2); // the probe's and ours
+    QVERIFY(!device->received.contains("AZ400.0 EL10.0"));
+}
+
+void RotatorSessionTest::positionGoesStaleWhenRepliesStop()
+{
+    QVERIFY(connectSession(*session, *device));
+    QTRY_VERIFY(session->hasPosition());
+    QVERIFY(!session->positionStale());
+    QSignalSpy positions(session, &RotatorSession::positionChanged);
+    device->silent = true;
+    QTRY_VERIFY_WITH_TIMEOUT(!positions.isEmpty() && positions.last().at(2).toBool(), 5000);
+    QVERIFY(session->positionStale());
+    device->silent = false;
+    QTRY_VERIFY_WITH_TIMEOUT(!session->positionStale(), 5000);
+}
+
+void RotatorSessionTest::linkLossFailsWaitingRequestsAndReconnects()
+{
+    auto o = session->options();
+    o.autoReconnect = true;
+    session->setOptions(o);
+    QVERIFY(connectSession(*session, *device));
+    device->silent = true;
+    QVERIFY(session->readConfig(5));
+    QSignalSpy failed(session, &RotatorSession::requestFailed);
+    QSignalSpy states(session, &RotatorSession::stateChanged);
+    QSignalSpy positions(session, &RotatorSession::positionChanged);
+    device->dropClient();
+    QTRY_COMPARE(session->state(), RotatorSession::State::Reconnecting);
+    // The waiting read failed with the reason, not silently.
+    QTRY_VERIFY(!failed.isEmpty());
+    QVERIFY(failed.first().at(1).toString().contains("closed"));
+    QVERIFY(!positions.isEmpty() && positions.last().at(2).toBool()); // stale
+    device->silent = false;
+    QTRY_VERIFY_WITH_TIMEOUT(session->isConnected(), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(!session->positionStale(), 5000);
+}
+
+void RotatorSessionTest::badUriAndRefusedConnectionAreClearMessages()
+{
+    QSignalSpy errors(session, &RotatorSession::errorOccurred);
+    session->connectTo("bogus://x");
+    QCOMPARE(session->state(), RotatorSession::State::Disconnected);
+    QVERIFY(errors.last().at(0).toString().contains("bogus://x"));
+    QVERIFY(errors.last().at(0).toString().contains("unknown link kind"));
+
+    session->connectTo("tcp://127.0.0.1");
+    QVERIFY(errors.last().at(0).toString().contains("no port"));
+    session->connectTo("serial:?baud=fast");
+    QVERIFY(errors.last().at(0).toString().contains("no serial port"));
+    session->connectTo("serial:/dev/ttyS0?baud=fast");
+    QVERIFY(errors.last().at(0).toString().contains("baud rate 'fast'"));
+
+    const quint16 port = device->port();
+    device->stopListening();
+    errors.clear();
+    const QString uri = QStringLiteral("tcp://127.0.0.1:%1").arg(port);
+    session->connectTo(uri);
+    QTRY_COMPARE(session->state(), RotatorSession::State::Disconnected);
+    QVERIFY(!errors.isEmpty());
+    QVERIFY(errors.last().at(0).toString().contains(uri));
+    QVERIFY(errors.last().at(0).toString().contains("refused", Qt::CaseInsensitive));
+}
+
+void RotatorSessionTest::alarmFailsTheRequestInFlight()
+{
+    device->script = [](const QByteArray &line) -> QByteArray {
+        return line == "CR 9" ? QByteArray("ALUNKNOWN_REGISTER_9\n") : QByteArray();
+    };
+    QVERIFY(connectSession(*session, *device));
+    QSignalSpy alarms(session, &RotatorSession::alarmReceived);
+    QSignalSpy failed(session, &RotatorSession::requestFailed);
+    QVERIFY(session->readConfig(9));
+    QTRY_COMPARE(alarms.count(), 1);
+    QCOMPARE(alarms.first().at(0).toString(), QStringLiteral("UNKNOWN_REGISTER_9"));
+    QTRY_COMPARE(failed.count(), 1);
+    QCOMPARE(device->count("CR 9"), 1); // an alarm is an answer: no retry
+}
+
+void RotatorSessionTest::telemetryAndStatusSignals()
+{
+    device->script = [](const QByteArray &line) -> QByteArray {
+        if (line == "GE")
+            return "GE10\n"; // sensor | motor
+        if (line == "IP7")
+            return "IP7,-2.5\n";
+        return {};
+    };
+    QVERIFY(connectSession(*session, *device));
+    QSignalSpy telemetry(session, &RotatorSession::telemetryChanged);
+    QTRY_COMPARE(session->errorFlags(), 10);
+    QCOMPARE(session::describeErrorFlags(10), QStringLiteral("sensor error, motor error"));
+    QTRY_COMPARE(session->telemetry().azVelocity, -2.5);
+    QTRY_COMPARE(session->telemetry().temperature, 1.5);
+    QVERIFY(!telemetry.isEmpty());
+}
+
+void RotatorSessionTest::velocityJogAndSoftLimitStop()
+{
+    model::RotatorProfile p;
+    p.dialect = protocol::Dialect::SatNogs;
+    p.limits.azMax = 180; // tighter than the controller's own
+    session->setProfile(p);
+    device->az = 170;
+    session->connectTo(device->uri());
+    QTRY_COMPARE(session->azimuth(), 170.0);
+    QSignalSpy errors(session, &RotatorSession::errorOccurred);
+    QVERIFY(session->moveAxis(session::Axis::Azimuth, 5.0));
+    QTRY_VERIFY(device->received.contains("VR5000"));
+    QVERIFY(session->moveAxis(session::Axis::Elevation, -1.5));
+    QTRY_VERIFY(device->received.contains("VD1500"));
+    // The axis runs past the profile's limit: the session stops it.
+    device->az = 180.5;
+    QTRY_VERIFY(device->received.contains("SA"));
+    QVERIFY(!errors.isEmpty());
+    // At the limit, a further move that way is refused; the other way is fine.
+    QVERIFY(!session->moveAxis(session::Axis::Azimuth, 1.0));
+    QVERIFY(session->moveAxis(session::Axis::Azimuth, -1.0));
+    QTRY_VERIFY(device->received.contains("VL1000"));
+    // Easycomm II has no velocity: ML/MR instead.
+    p.dialect = protocol::Dialect::Easycomm2;
+    session->setProfile(p);
+    QVERIFY(session->moveAxis(session::Axis::Azimuth, -3.0));
+    QTRY_VERIFY(device->received.contains("ML"));
+}
+
+QTEST_GUILESS_MAIN(RotatorSessionTest)
+#include "tst_rotatorsession.moc"
