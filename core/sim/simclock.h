@@ -1,0 +1,43 @@
+#pragma once
+// Simulated time. In Manual mode time moves only when someone calls
+// advance(), so a test decides exactly how much happens between two checks
+// and never sleeps. In WallClock mode it follows a monotonic clock and ticks
+// on its own every tickMilliseconds, which is what the servers use.
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QTimer>
+
+namespace slew::sim {
+
+class SimClock : public QObject {
+    Q_OBJECT
+public:
+    enum class Mode { Manual, WallClock };
+
+    // seeds/000's simulator steps every 25 ms; the physics below substeps at 1 ms.
+    static constexpr int tickMilliseconds = 25;
+
+    explicit SimClock(Mode mode, QObject *parent = nullptr);
+
+    Mode mode() const { return m_mode; }
+    bool isManual() const { return m_mode == Mode::Manual; }
+
+    // Seconds since the clock started.
+    double now() const;
+
+    // Manual mode: moves time on and emits advanced(). Ignored on a wall clock.
+    void advance(double seconds);
+
+signals:
+    // Time moved on: the rotator catches up, connections release what is due.
+    void advanced(double now);
+
+private:
+    Mode m_mode;
+    double m_manualNow = 0.0;
+    QElapsedTimer m_elapsed;
+    QTimer m_tick;
+};
+
+} // namespace slew::sim

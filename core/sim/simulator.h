@@ -1,0 +1,58 @@
+#pragma once
+// One simulated device as every endpoint shares it: the clock, the rotator,
+// the line conditions and the settings the firmware answers with. A TCP
+// server with three clients, a pseudo-terminal and an in-process link all
+// talk to the same Simulator when they serve the same rotator.
+
+#include "firmwarecounters.h"
+#include "linkfaults.h"
+#include "simclock.h"
+#include "simulatedrotator.h"
+#include "simulatoroptions.h"
+
+#include <QObject>
+
+namespace slew::sim {
+
+class Simulator : public QObject {
+    Q_OBJECT
+public:
+    explicit Simulator(const SimulatorOptions &options, QObject *parent = nullptr);
+
+    SimClock &clock() { return m_clock; }
+    SimulatedRotator &rotator() { return m_rotator; }
+    const SimulatedRotator &rotator() const { return m_rotator; }
+    const SimulatorOptions &options() const { return m_options; }
+
+    // Brings the physics up to the clock's present; the firmware calls it
+    // before it answers so a reply is never a tick old.
+    void syncToNow();
+
+    // Manual clock: advance time (and the rotator) by this much.
+    void advance(double seconds) { m_clock.advance(seconds); }
+
+    void setAxisFaults(Axis axis, const AxisFaults &faults);
+    LinkFaults linkFaults() const { return m_linkFaults; }
+    void setLinkFaults(const LinkFaults &faults);
+
+    // Cuts every open connection now, as if the cable were pulled.
+    void dropConnections() { emit connectionsDropped(); }
+
+    // Shared by every connection's firmware.
+    FirmwareCounters &counters() { return m_counters; }
+    const FirmwareCounters &counters() const { return m_counters; }
+
+signals:
+    void ticked();                // the rotator advanced; push and release what is due
+    void linkFaultsChanged();
+    void connectionsDropped();
+
+private:
+    SimulatorOptions m_options;
+    SimClock m_clock;
+    SimulatedRotator m_rotator;
+    LinkFaults m_linkFaults;
+    FirmwareCounters m_counters;
+};
+
+} // namespace slew::sim

@@ -1,0 +1,216 @@
+#include "simulatorconnection.h"
+
+#include "simulator.h"
+
+#include <QIODevice>
+
+#include <algorithm>
+#include <cmath>
+
+namespace slew::sim {
+
+namespace {
+
+// A host that sends faster than the paced line carries overruns the UART,
+// and one that never reads stops getting answers: both buffers are capped.
+constexpr qsizetype kMaxInbound = 64 * 1024;
+constexpr qsizetype kMaxOutbound = 256 * 1024;
+constexpr qsizetype kReadChunk = 16 * 1024;
+// How long a command ended by a space alone waits for the rest of its line.
+constexpr double kIdleLineEnd = 0.1;
+
+} // namespace
+
+SimulatorConnection::SimulatorConnection(Simulator &simulator, QIODevice *device,
+                                         const ConnectionSettings &settings, QObject *parent)
+    : QObject(parent),
+      m_simulator(simulator),
+      m_device(device),
+      m_settings(settings),
+      m_firmware(simulator.rotator(), simulator.counters(), settings.dialect),
+      m_log(settings.log),
+      m_rng(simulator.options().rotator.seed + 7u)
+{
+    m_openedAt = m_simulator.clock().now();
+    m_timer.setSingleShot(true);
+    m_timer.setTimerType(Qt::PreciseTimer);
+    connect(&m_timer, &QTimer::timeout, this, &SimulatorConnection::service);
+    connect(&m_simulator, &Simulator::ticked, this, &SimulatorConnection::onTick);
+    connect(&m_simulator, &Simulator::connectionsDropped, this, [this] {
+        if (!m_dropped) {
+            m_dropped = true;
+            emit dropRequested();
+        }
+    });
+    if (m_device) {
+        connect(m_device, &QIODevice::readyRead, this, &SimulatorConnection::readDevice);
+        if (m_device->bytesAvailable() > 0)
+            QMetaObject::invokeMethod(this, &SimulatorConnection::readDevice, Qt::QueuedConnection);
+    }
+    schedule();
+}
+
+double SimulatorConnection::byteSeconds() const
+{
+    return m_settings.baud > 0 ? 10.0 / m_settings.baud : 0.0; // 8N1: ten bit times a byte
+}
+
+void SimulatorConnection::readDevice()
+{
+    if (!m_device)
+        return;
+    // Read in bounded pieces; whatever is left raises readyRead again.
+    char buffer[kReadChunk];
+    for (int round = 0; round < 16 && m_device->bytesAvailable() > 0; ++round) {
+        const qint64 n = m_device->read(buffer, sizeof buffer);
+        if (n <= 0)
+            break;
+        receive(QByteArrayView(buffer, n));
+    }
+}
+
+void SimulatorConnection::receive(QByteArrayView bytes)
+{
+    if (bytes.isEmpty() || m_dropped)
+        return;
+    const double perByte = byteSeconds();
+    if (perByte <= 0.0) {
+        process(bytes);
+        return;
+    }
+    // On a paced line the bytes arrive one character time after another.
+    if (m_inboundBytes + bytes.size() > kMaxInbound)
+        bytes = bytes.first(std::max<qsizetype>(0, kMaxInbound - m_inboundBytes));
+    if (bytes.isEmpty())
+        return;
+    const double now = m_simulator.clock().now();
+    m_inboundFreeAt = std::max(now, m_inboundFreeAt) + perByte * double(bytes.size());
+    m_inbound.push_back({m_inboundFreeAt, bytes.toByteArray()});
+    m_inboundBytes += bytes.size();
+    schedule();
+}
+
+void SimulatorConnection::process(QByteArrayView bytes)
+{
+    m_log.add(bytes);
+    m_simulator.syncToNow();
+    QByteArray out = m_firmware.receive(bytes);
+    m_idleFlushAt = m_firmware.awaitingLineEnd() ? m_simulator.clock().now() + kIdleLineEnd : -1.0;
+    if (!out.isEmpty())
+        send(std::move(out));
+    schedule();
+}
+
+void SimulatorConnection::send(QByteArray bytes)
+{
+    const LinkFaults faults = m_simulator.linkFaults();
+    if (faults.dropRate > 0.0 || faults.garbageRate > 0.0) {
+        std::uniform_real_distribution<double> chance(0.0, 1.0);
+        std::uniform_int_distribution<int> anyByte(0, 255);
+        QByteArray damaged;
+        damaged.reserve(bytes.size());
+        for (char c : bytes) {
+            if (chance(m_rng) >= faults.dropRate)
+                damaged += c;
+            if (faults.garbageRate > 0.0 && chance(m_rng) < faults.garbageRate)
+                damaged += char(anyByte(m_rng));
+        }
+        bytes = std::move(damaged);
+    }
+    if (bytes.isEmpty() || !m_device)
+        return;
+
+    const double now = m_simulator.clock().now();
+    const double perByte = byteSeconds();
+    if (faults.latency <= 0.0 && perByte <= 0.0 && m_outbound.empty()) {
+        if (m_device->bytesToWrite() < kMaxOutbound)
+            m_device->write(bytes);
+        return;
+    }
+    if (m_outboundBytes + bytes.size() > kMaxOutbound)
+        return;
+    // A reply leaves after the latency, once the line is free, and arrives
+    // when its last character has crossed.
+    m_outboundFreeAt = std::max(now + faults.latency, m_outboundFreeAt) + perByte * double(bytes.size());
+    m_outboundBytes += bytes.size();
+    m_outbound.push_back({m_outboundFreeAt, std::move(bytes)});
+    schedule();
+}
+
+void SimulatorConnection::service()
+{
+    if (m_dropped)
+        return;
+    const double now = m_simulator.clock().now();
+    const LinkFaults faults = m_simulator.linkFaults();
+    if (faults.dropAfter > 0.0 && now - m_openedAt >= faults.dropAfter) {
+        m_dropped = true;
+        m_inbound.clear();
+        m_outbound.clear();
+        emit dropRequested();
+        return;
+    }
+    while (!m_inbound.empty() && m_inbound.front().due <= now) {
+        const QByteArray bytes = std::move(m_inbound.front().bytes);
+        m_inbound.pop_front();
+        m_inboundBytes -= bytes.size();
+        process(bytes);
+    }
+    if (m_idleFlushAt >= 0.0 && m_idleFlushAt <= now) {
+        m_idleFlushAt = -1.0;
+        m_simulator.syncToNow();
+        if (QByteArray out = m_firmware.endLine(); !out.isEmpty())
+            send(std::move(out));
+    }
+    QByteArray ready;
+    while (!m_outbound.empty() && m_outbound.front().due <= now) {
+        ready += m_outbound.front().bytes;
+        m_outboundBytes -= m_outbound.front().bytes.size();
+        m_outbound.pop_front();
+    }
+    if (!ready.isEmpty() && m_device && m_device->bytesToWrite() < kMaxOutbound)
+        m_device->write(ready);
+    schedule();
+}
+
+void SimulatorConnection::schedule()
+{
+    double next = -1.0;
+    auto consider = [&](double t) {
+        if (t >= 0.0 && (next < 0.0 || t < next))
+            next = t;
+    };
+    if (!m_inbound.empty())
+        consider(m_inbound.front().due);
+    if (!m_outbound.empty())
+        consider(m_outbound.front().due);
+    consider(m_idleFlushAt);
+    const double dropAfter = m_simulator.linkFaults().dropAfter;
+    if (dropAfter > 0.0)
+        consider(m_openedAt + dropAfter);
+    if (next < 0.0 || m_dropped) {
+        m_timer.stop();
+        return;
+    }
+    const double wait = next - m_simulator.clock().now();
+    if (wait <= 0.0) {
+        m_timer.start(0);
+    } else if (!m_simulator.clock().isManual()) {
+        m_timer.start(int(std::ceil(wait * 1000.0)));
+    } else {
+        m_timer.stop(); // a manual clock releases it from onTick()
+    }
+}
+
+void SimulatorConnection::onTick()
+{
+    if (m_dropped)
+        return;
+    if (m_settings.unsolicited) {
+        if (QByteArray out = m_firmware.unsolicitedChanges(); !out.isEmpty())
+            send(std::move(out));
+    }
+    service();
+}
+
+} // namespace slew::sim

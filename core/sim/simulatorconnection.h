@@ -1,0 +1,88 @@
+#pragma once
+// One host's connection to the simulator, over any QIODevice (a TCP socket,
+// the in-process pipe, the pseudo-terminal). It feeds the firmware, and puts
+// the line between them: serial pacing at a baud rate, reply latency, lost
+// and garbage bytes, pushes of changed fields, and cutting the connection.
+//
+// Everything happens from the event loop and on the simulator's clock, so on
+// a manual clock a delayed reply leaves exactly when a test advances past it.
+
+#include "receivedlog.h"
+#include "simulatorfirmware.h"
+
+#include "protocol/dialect.h"
+
+#include <QObject>
+#include <QPointer>
+#include <QTimer>
+
+#include <deque>
+#include <random>
+
+class QIODevice;
+
+namespace slew::sim {
+
+class Simulator;
+
+struct ConnectionSettings {
+    protocol::Dialect dialect = protocol::Dialect::Easycomm3;
+    bool unsolicited = false;
+    int baud = 0;                 // 0: unpaced
+    ReceivedLog *log = nullptr;   // optional record of received lines
+};
+
+class SimulatorConnection : public QObject {
+    Q_OBJECT
+public:
+    SimulatorConnection(Simulator &simulator, QIODevice *device, const ConnectionSettings &settings,
+                        QObject *parent = nullptr);
+
+    SimulatorFirmware &firmware() { return m_firmware; }
+    QIODevice *device() const { return m_device; }
+
+    // Takes bytes the host sent (endpoints whose device does not signal
+    // readyRead call this themselves).
+    void receive(QByteArrayView bytes);
+
+    // Bytes waiting to leave (pacing, latency); tests and benchmarks look.
+    qsizetype pendingOutput() const { return m_outboundBytes; }
+
+signals:
+    // The line went away (fault or drop_after): the endpoint closes the device.
+    void dropRequested();
+
+private:
+    struct Timed {
+        double due;
+        QByteArray bytes;
+    };
+
+    void readDevice();
+    void process(QByteArrayView bytes);
+    void send(QByteArray bytes);
+    void service();
+    void schedule();
+    void onTick();
+    double byteSeconds() const;
+
+    Simulator &m_simulator;
+    QPointer<QIODevice> m_device;
+    ConnectionSettings m_settings;
+    SimulatorFirmware m_firmware;
+    LineCollector m_log;
+    std::mt19937 m_rng;
+
+    std::deque<Timed> m_inbound;
+    std::deque<Timed> m_outbound;
+    qsizetype m_inboundBytes = 0;
+    qsizetype m_outboundBytes = 0;
+    double m_inboundFreeAt = 0.0;  // the paced line is busy until then
+    double m_outboundFreeAt = 0.0;
+    double m_idleFlushAt = -1.0;
+    double m_openedAt = 0.0;
+    bool m_dropped = false;
+    QTimer m_timer;
+};
+
+} // namespace slew::sim

@@ -1,0 +1,76 @@
+#pragma once
+// The controller board's command interpreter: Easycomm bytes in, answers
+// out, acting on a SimulatedRotator. One per connection (each host has its
+// own parser state and its own view of what was pushed to it); the rotator
+// and the counters are shared.
+//
+// Answers to the queries of one input line leave as one output line, joined
+// by spaces: Hamlib 4.5 and SatNOGS send `AZ EL` and read `AZ10.0 EL20.0`
+// back on a single line, Hamlib 4.6 sends `AZ` and `EL` on lines of their own
+// and so gets two. No I/O here: the caller moves the bytes.
+
+#include "firmwarecounters.h"
+#include "simulatedrotator.h"
+
+#include "protocol/dialect.h"
+#include "protocol/message.h"
+#include "protocol/parser.h"
+
+#include <QByteArray>
+#include <QHash>
+
+namespace slew::sim {
+
+class SimulatorFirmware {
+public:
+    SimulatorFirmware(SimulatedRotator &rotator, FirmwareCounters &counters, protocol::Dialect dialect);
+
+    protocol::Dialect dialect() const { return m_dialect; }
+
+    // Feeds bytes from the host; returns what the device answers to them
+    // (possibly nothing, possibly several lines).
+    QByteArray receive(QByteArrayView bytes);
+
+    // True when the input so far ended in a space: seeds/000 lets a command
+    // end on a space alone, so the caller gives it a moment and then calls
+    // endLine() rather than wait for a line end that may never come.
+    bool awaitingLineEnd() const { return m_awaitingLineEnd; }
+    QByteArray endLine();
+
+    // seeds/000's unsolicited reports: every field whose text differs from
+    // what this host was last sent, one per line. The first call sends all.
+    QByteArray unsolicitedChanges();
+
+    // The version string VE reports in this dialect.
+    QByteArray version() const;
+
+private:
+    void handle(const protocol::Message &m, QByteArray &out);
+    void answer(const QByteArray &token);
+    void alarm(const char *kind, QByteArrayView what, QByteArray &out);
+    void refuse(const protocol::Message &m, QByteArray &out);
+    void finishLine(QByteArray &out);
+    bool answersAtAll() const { return m_dialect != protocol::Dialect::Easycomm1; }
+    bool sendsAlarms() const;
+
+    QByteArray angle(protocol::Op op, double degrees) const;
+    QByteArray inputReply(int index, double value) const;
+    QByteArray registerReply(int index, double value) const;
+    QByteArray velocityReply(protocol::Op op) const;
+
+    SimulatedRotator &m_rotator;
+    FirmwareCounters &m_counters;
+    protocol::Dialect m_dialect;
+    protocol::Parser m_parser;
+    QByteArray m_lineAnswers;
+    bool m_awaitingLineEnd = false;
+
+    // Radio fields of Easycomm I/II: kept and read back, used for nothing.
+    QHash<int, QByteArray> m_radio;
+    QHash<int, int> m_outputs;
+    QByteArray m_time;
+
+    QHash<QByteArray, QByteArray> m_pushed; // field -> last text pushed
+};
+
+} // namespace slew::sim

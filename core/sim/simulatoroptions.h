@@ -1,0 +1,44 @@
+#pragma once
+// Everything that can be set when a simulator starts: the plant, the gains,
+// the faults, the dialect and the line. The same names serve the `sim:` URI
+// query items (`sim:?kp=30&az_max=450&jam=az`) and slew-sim's flags
+// (`--kp 30 --az-max 450 --jam az`), so one parser handles both.
+
+#include "axisparameters.h"
+#include "linkfaults.h"
+#include "simulatedrotator.h"
+
+#include "protocol/dialect.h"
+
+#include <QString>
+#include <QStringView>
+
+#include <vector>
+
+namespace slew::sim {
+
+struct SimulatorOptions {
+    RotatorConfig rotator;
+    AxisFaults azimuthFaults;
+    AxisFaults elevationFaults;
+    LinkFaults link;
+    protocol::Dialect dialect = protocol::Dialect::Easycomm3;
+    bool unsolicited = false; // push changed fields as seeds/000's controller does
+    int baud = 0;             // 0: bytes move as fast as the link carries them
+    bool manualClock = false; // time moves only when advanced (tests)
+};
+
+struct SimulatorOptionInfo {
+    const char *name;        // URI item; the flag is the same with '-' for '_'
+    const char *valueName;   // empty: a switch (`--unsolicited`, `unsolicited=1`)
+    const char *description;
+};
+
+// Every option, for --help and for the URI documentation.
+const std::vector<SimulatorOptionInfo> &simulatorOptionList();
+
+// Applies one option. Accepts '-' or '_' in the name. Returns an empty
+// string on success, else a message naming the option and what is wrong.
+QString applySimulatorOption(SimulatorOptions &options, QStringView name, QStringView value);
+
+} // namespace slew::sim
