@@ -1,0 +1,175 @@
+// Limits (including the 450° overlap and a south stop) and rotator profiles
+// (JSON round trip, atomic save, refusing bad files).
+
+#include "model/rotatorlimits.h"
+#include "model/rotatorprofile.h"
+
+#include <QFile>
+#include <QJsonDocument>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace slew::model;
+
+class ModelTest : public QObject {
+    Q_OBJECT
+private slots:
+    void chooseAzimuth_data();
+    void chooseAzimuth();
+    void elevationLimits();
+    void limitsValidation();
+    void profileRoundTrip();
+    void profileRefusesBadValues_data();
+    void profileRefusesBadValues();
+    void profileSaveAndLoad();
+};
+
+void ModelTest::chooseAzimuth_data()
+{
+    QTest::addColumn<double>("azMin");
+    QTest::addColumn<double>("azMax");
+    QTest::addColumn<double>("target");
+    QTest::addColumn<double>("current"); // NaN: unknown
+    QTest::addColumn<double>("expected"); // NaN: refused
+    const double none = qQNaN();
+    QTest::newRow("plain") << 0.0 << 360.0 << 123.0 << 10.0 << 123.0;
+    QTest::newRow("360 from 350") << 0.0 << 360.0 << 360.0 << 350.0 << 360.0;
+    QTest::newRow("360 from 10 is 0") << 0.0 << 360.0 << 360.0 << 10.0 << 0.0;
+    QTest::newRow("beyond 360 refused") << 0.0 << 360.0 << 400.0 << 10.0 << none;
+    QTest::newRow("negative refused") << 0.0 << 360.0 << -10.0 << 10.0 << none;
+    QTest::newRow("overlap from 350 to 10 goes on") << 0.0 << 450.0 << 10.0 << 350.0 << 370.0;
+    QTest::newRow("overlap from 20 to 10 stays") << 0.0 << 450.0 << 10.0 << 20.0 << 10.0;
+    QTest::newRow("overlap 200 single") << 0.0 << 450.0 << 200.0 << 400.0 << 200.0;
+    QTest::newRow("overlap unknown prefers base") << 0.0 << 450.0 << 50.0 << none << 50.0;
+    QTest::newRow("overlap explicit 420") << 0.0 << 450.0 << 420.0 << 0.0 << 420.0;
+    QTest::newRow("south stop -180..180: 350 is -10") << -180.0 << 180.0 << 350.0 << 0.0 << -10.0;
+    QTest::newRow("south stop 90 stays") << -180.0 << 180.0 << 90.0 << 0.0 << 90.0;
+    QTest::newRow("nan refused") << 0.0 << 360.0 << none << 0.0 << none;
+}
+
+void ModelTest::chooseAzimuth()
+{
+    QFETCH(double, azMin);
+    QFETCH(double, azMax);
+    QFETCH(double, target);
+    QFETCH(double, current);
+    QFETCH(double, expected);
+    RotatorLimits lim;
+    lim.azMin = azMin;
+    lim.azMax = azMax;
+    const auto choice =
+        slew::model::chooseAzimuth(lim, target, std::isnan(current) ? std::nullopt : std::optional<double>(current));
+    if (std::isnan(expected)) {
+        QVERIFY(!choice.azimuth);
+        QVERIFY(!choice.error.isEmpty());
+    } else {
+        QVERIFY2(choice.azimuth, qPrintable(choice.error));
+        QCOMPARE(*choice.azimuth, expected);
+    }
+}
+
+void ModelTest::elevationLimits()
+{
+    RotatorLimits lim;
+    QVERIFY(checkElevation(lim, 0).isEmpty());
+    QVERIFY(checkElevation(lim, 90).isEmpty());
+    QVERIFY(checkElevation(lim, 90.0000001).isEmpty()); // rounding noise
+    QVERIFY(checkElevation(lim, 90.1).contains("outside"));
+    QVERIFY(!checkElevation(lim, -0.1).isEmpty());
+    QVERIFY(!checkElevation(lim, qInf()).isEmpty());
+    lim.elMax = 180;
+    QVERIFY(checkElevation(lim, 179).isEmpty());
+}
+
+void ModelTest::limitsValidation()
+{
+    RotatorLimits lim;
+    QVERIFY(lim.validate().isEmpty());
+    lim.azMax = 460;
+    QVERIFY(!lim.validate().isEmpty());
+    lim.azMax = 450;
+    QVERIFY(lim.validate().isEmpty());
+    QVERIFY(lim.hasOverlap());
+    lim.elMax = 200;
+    QVERIFY(!lim.validate().isEmpty());
+}
+
+void ModelTest::profileRoundTrip()
+{
+    RotatorProfile p;
+    p.name = "Roof G-5500";
+    p.uri = "serial:/dev/ttyUSB0?baud=9600";
+    p.dialect = slew::protocol::Dialect::SatNogs;
+    p.limits.azMax = 450;
+    p.limits.elMax = 180;
+    p.parkAz = 180;
+    p.parkEl = 45;
+    p.southStop = true;
+    p.azGains = PidGains{1.5, 0.1, 0.05};
+    p.deadbandDeg = 1.0;
+    p.pollHz = 5;
+    QString error;
+    const auto back = RotatorProfile::fromJson(p.toJson(), &error);
+    QVERIFY2(back, qPrintable(error));
+    QCOMPARE(back->name, p.name);
+    QCOMPARE(back->uri, p.uri);
+    QCOMPARE(back->dialect, p.dialect);
+    QCOMPARE(back->limits.azMax, 450.0);
+    QCOMPARE(back->limits.elMax, 180.0);
+    QCOMPARE(back->parkAz, 180.0);
+    QCOMPARE(back->parkEl, 45.0);
+    QCOMPARE(back->southStop, true);
+    QVERIFY(back->azGains && *back->azGains == *p.azGains);
+    QVERIFY(!back->elGains);
+    QCOMPARE(back->deadbandDeg, 1.0);
+    QCOMPARE(back->pollHz, 5);
+}
+
+void ModelTest::profileRefusesBadValues_data()
+{
+    QTest::addColumn<QByteArray>("json");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("dialect") << QByteArray(R"({"dialect":"gs232"})") << "unknown dialect";
+    QTest::newRow("az max") << QByteArray(R"({"limits":{"azMax":720}})") << "more than 450";
+    QTest::newRow("string number") << QByteArray(R"({"limits":{"azMax":"360"}})") << "must be a number";
+    QTest::newRow("park outside") << QByteArray(R"({"park":{"az":10,"el":120}})") << "park position";
+    QTest::newRow("gains") << QByteArray(R"({"azGains":[1,2,3]})") << "kp, ki, kd";
+    QTest::newRow("poll") << QByteArray(R"({"pollHz":500})") << "poll rate";
+}
+
+void ModelTest::profileRefusesBadValues()
+{
+    QFETCH(QByteArray, json);
+    QFETCH(QString, message);
+    QString error;
+    QVERIFY(!RotatorProfile::fromJson(QJsonDocument::fromJson(json).object(), &error));
+    QVERIFY2(error.contains(message), qPrintable(error));
+}
+
+void ModelTest::profileSaveAndLoad()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath("rotator.json");
+    RotatorProfile p;
+    p.name = "Test";
+    QString error;
+    QVERIFY2(p.save(path, &error), qPrintable(error));
+    const auto loaded = RotatorProfile::load(path, &error);
+    QVERIFY2(loaded, qPrintable(error));
+    QCOMPARE(loaded->name, QStringLiteral("Test"));
+
+    // A corrupt file is refused with the path in the message; the old file
+    // is untouched by a failed save into a directory that does not exist.
+    QFile bad(dir.filePath("bad.json"));
+    QVERIFY(bad.open(QIODevice::WriteOnly));
+    bad.write("{ not json");
+    bad.close();
+    QVERIFY(!RotatorProfile::load(bad.fileName(), &error));
+    QVERIFY(error.contains("bad.json"));
+    QVERIFY(!RotatorProfile::load(dir.filePath("missing.json"), &error));
+    QVERIFY(!p.save(dir.filePath("no/such/dir/x.json"), &error));
+    QVERIFY(RotatorProfile::load(path, &error));
+}
+
+QTEST_GUILESS_MAIN(ModelTest)
+#include "tst_model.moc"
