@@ -13,10 +13,12 @@ namespace {
 constexpr double kVelocityGain = 10.0;    // deg/s^2 per deg/s
 constexpr double kHoldStiffness = 40.0;   // deg/s^2 per degree behind
 constexpr double kVelocityFilter = 0.02;  // s, smoothing of the encoder's derivative
+constexpr double kReportFilter = 0.1;     // s, further smoothing for IP7/IP8 and \?ENC
 constexpr double kStallSpeed = 0.1;       // deg/s: slower than this while pushing is a stall
 constexpr double kStallEffort = 0.5;      // share of the torque limit that counts as pushing
 constexpr double kFrozenSpeed = 1.0;      // deg/s: moving this fast must change the reading
 constexpr double kFrozenSeconds = 0.5;
+constexpr double kIntegralZone = 2.0;     // degrees from the target where the I term works
 constexpr double kRestSpeed = 1e-4;       // deg/s, below which friction holds the axis
 
 double sign(double v)
@@ -49,7 +51,7 @@ void AxisModel::setFaults(const AxisFaults &faults)
 void AxisModel::placeAt(double degrees)
 {
     m_motor = m_antenna = degrees + m_encoderOffset;
-    m_velocity = m_acceleration = m_measuredVelocity = 0.0;
+    m_velocity = m_acceleration = m_measuredVelocity = m_reportedVelocity = 0.0;
     m_reading = sampleEncoder();
     m_target = m_reading;
 }
@@ -89,7 +91,7 @@ void AxisModel::home()
 
 std::int64_t AxisModel::encoderVelocityTicks() const
 {
-    return std::llround(m_measuredVelocity * m_plant.ticksPerDegree);
+    return std::llround(m_reportedVelocity * m_plant.ticksPerDegree);
 }
 
 bool AxisModel::isSettled() const
@@ -140,6 +142,7 @@ void AxisModel::step(double dt)
     if (!m_faults.encoderFreeze)
         m_reading = sampleEncoder();
     m_measuredVelocity += (dt / kVelocityFilter) * ((m_reading - previousReading) / dt - m_measuredVelocity);
+    m_reportedVelocity += (dt / kReportFilter) * (m_measuredVelocity - m_reportedVelocity);
 
     double drive = 0.0;
     if (m_errors == 0) {
@@ -182,10 +185,12 @@ double AxisModel::positionDrive(double dt)
     const double error = m_target - m_reading;
     const double unclamped = m_gains.kp * error + m_gains.ki * m_integral - m_gains.kd * m_measuredVelocity;
     const double drive = std::clamp(unclamped, -m_plant.torqueLimit, m_plant.torqueLimit);
-    // Anti-windup: integrate only while the output is free, or when the
-    // error would pull a saturated output back; and never store more than
-    // the motor could ever deliver.
-    if (drive == unclamped || sign(error) != sign(unclamped))
+    // Anti-windup: the integral is for the last stretch (friction, a steady
+    // push), so it only runs near the target and while the output is not
+    // saturated; and it never stores more than the motor could deliver.
+    // Integrating during the braking of a long move would leave a charge
+    // that holds the axis off target against its own friction.
+    if (drive == unclamped && std::fabs(error) < kIntegralZone)
         m_integral += error * dt;
     if (m_gains.ki > 0.0) {
         const double cap = m_plant.torqueLimit / m_gains.ki;

@@ -61,7 +61,8 @@ public:
 
     // What the controller knows: the encoder reading and what it derives.
     double position() const { return m_reading; }
-    double measuredVelocity() const { return m_measuredVelocity; }
+    double measuredVelocity() const { return m_measuredVelocity; } // what the loops use
+    double reportedVelocity() const { return m_reportedVelocity; } // smoothed for IP7/IP8, \?ENC
     std::int64_t encoderTicks() const { return m_readingTicks; }
     std::int64_t encoderVelocityTicks() const;
 
@@ -107,6 +108,7 @@ private:
     double m_reading = 0.0;
     std::int64_t m_readingTicks = 0;
     double m_measuredVelocity = 0.0;
+    double m_reportedVelocity = 0.0;
 
     // Servo.
     DriveMode m_mode = DriveMode::Released;

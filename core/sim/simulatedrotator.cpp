@@ -193,8 +193,8 @@ std::optional<double> SimulatedRotator::readInput(int index) const
     case 4: return m_elevation.position();
     case 5: return std::round(m_azimuth.load());
     case 6: return std::round(m_elevation.load());
-    case 7: return m_azimuth.measuredVelocity();
-    case 8: return m_elevation.measuredVelocity();
+    case 7: return m_azimuth.reportedVelocity();
+    case 8: return m_elevation.reportedVelocity();
     default: return std::nullopt;
     }
 }

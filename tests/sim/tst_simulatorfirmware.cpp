@@ -1,0 +1,183 @@
+// The firmware alone: bytes in, bytes out, per dialect. Time is stepped on
+// the rotator directly, so nothing here waits.
+#include "sim/simulatedrotator.h"
+#include "sim/simulatorfirmware.h"
+
+#include <QRandomGenerator>
+#include <QTest>
+
+using namespace slew::sim;
+using slew::protocol::Dialect;
+
+class TestSimulatorFirmware : public QObject {
+    Q_OBJECT
+
+    struct Bench {
+        explicit Bench(Dialect d, RotatorConfig config = {}) : rotator(config), firmware(rotator, counters, d) {}
+        SimulatedRotator rotator;
+        FirmwareCounters counters;
+        SimulatorFirmware firmware;
+        QByteArray send(QByteArrayView bytes) { return firmware.receive(bytes); }
+    };
+
+private slots:
+    void hamlib45QueryIsAnsweredOnOneLine_data()
+    {
+        QTest::addColumn<int>("dialect");
+        QTest::addColumn<QByteArray>("expected");
+        QTest::newRow("easycomm2") << int(Dialect::Easycomm2) << QByteArray("AZ0.0 EL0.0\n");
+        QTest::newRow("satnogs") << int(Dialect::SatNogs) << QByteArray("AZ0.0 EL0.0\n");
+        QTest::newRow("easycomm3") << int(Dialect::Easycomm3) << QByteArray("AZ0.00 EL0.00\n");
+    }
+    void hamlib45QueryIsAnsweredOnOneLine()
+    {
+        QFETCH(int, dialect);
+        QFETCH(QByteArray, expected);
+        Bench b{Dialect(dialect)};
+        QCOMPARE(b.send("AZ EL \n"), expected);
+    }
+
+    void hamlib46QueriesAreAnsweredSeparately()
+    {
+        Bench b(Dialect::Easycomm2);
+        b.rotator.pointAzimuth(10.0);
+        b.rotator.pointElevation(20.0);
+        b.rotator.advanceBy(10.0);
+        QCOMPARE(b.send("AZ\n"), QByteArray("AZ10.0\n"));
+        QCOMPARE(b.send("EL\n"), QByteArray("EL20.0\n"));
+        // Split anywhere, the answer is the same.
+        QCOMPARE(b.send("A"), QByteArray());
+        QCOMPARE(b.send("Z E"), QByteArray());
+        QCOMPARE(b.send("L\r\n"), QByteArray("AZ10.0 EL20.0\n"));
+    }
+
+    void satnogsConfigReadHasNoPrefixAndStraySemicolonsAreHarmless()
+    {
+        Bench b(Dialect::SatNogs);
+        QCOMPARE(b.send("CR 1\n;"), QByteArray("1,20.000\n"));
+        QCOMPARE(b.send("CR 7\n;"), QByteArray("7,0.00\n"));
+        QCOMPARE(b.send("GS\n;"), QByteArray("GS1\n"));
+        QCOMPARE(b.send("GE\n;"), QByteArray("GE1\n"));
+        QVERIFY(b.send("VE\n;").startsWith("VESatNOGS-v2.2"));
+        QCOMPARE(b.send("CW1,35\n;"), QByteArray());
+        QCOMPARE(b.send("CR 1\n"), QByteArray("1,35.000\n"));
+        QCOMPARE(b.counters.rejected(), 0u);
+    }
+
+    void easycomm3AnswersWithTwoDecimalsAndPrefixes()
+    {
+        Bench b(Dialect::Easycomm3);
+        b.rotator.pointAzimuth(123.45);
+        b.rotator.advanceBy(15.0);
+        QCOMPARE(b.send("AZ\n"), QByteArray("AZ123.45\n"));
+        QCOMPARE(b.send("CR10\n"), QByteArray("CR10,123.45\n"));
+        QCOMPARE(b.send("IP3\n"), QByteArray("IP3,123.45\n"));
+        QCOMPARE(b.send("IP1\n"), QByteArray("IP1,0\n"));
+        QCOMPARE(b.send("IP2\n"), QByteArray("IP2,1\n")); // elevation rests on its lower switch
+        QCOMPARE(b.send("GS\n"), QByteArray("GS260\n")); // az pointing (4), el idle (1 << 8)
+        QCOMPARE(b.send("\\?ENC\n"), QByteArray("\\?ENC12345,0,0,0\n"));
+    }
+
+    void velocityCommandsAreMillidegreesPerSecond()
+    {
+        Bench b(Dialect::Easycomm3);
+        b.rotator.pointAzimuth(100.0);
+        b.rotator.advanceBy(10.0);
+        QCOMPARE(b.send("VR4900\n"), QByteArray());
+        b.rotator.advanceBy(3.0);
+        const QByteArray speed = b.send("IP7\n");
+        QVERIFY(speed.startsWith("IP7,"));
+        QVERIFY2(qAbs(speed.mid(4).trimmed().toDouble() - 4.9) < 0.05, speed.constData());
+        QCOMPARE(b.send("CR12\n"), QByteArray("CR12,4900.00\n"));
+        QCOMPARE(b.send("VR\n"), QByteArray("VR4900\n"));
+        QCOMPARE(b.send("GS\n"), QByteArray("GS258\n")); // az velocity servo (2), el idle
+        QCOMPARE(b.send("VL2000\n"), QByteArray());
+        QCOMPARE(b.send("CR12\n"), QByteArray("CR12,-2000.00\n"));
+        QCOMPARE(b.send("VL\n"), QByteArray("VL2000\n"));
+    }
+
+    void refusedInputMovesNothingIsCountedAndRaisesAnAlarm_data()
+    {
+        QTest::addColumn<QByteArray>("input");
+        QTest::addColumn<QByteArray>("alarm");
+        QTest::newRow("unknown") << QByteArray("XY12\n") << QByteArray("ALunknown:XY12\n");
+        QTest::newRow("malformed") << QByteArray("AZ12x\n") << QByteArray("ALmalformed:AZ12x\n");
+        QTest::newRow("over the limit") << QByteArray("AZ500\n") << QByteArray("ALlimit:AZ500.00\n");
+        QTest::newRow("negative") << QByteArray("EL-5\n") << QByteArray("ALlimit:EL-5.00\n");
+        QTest::newRow("no such register") << QByteArray("CW44,1\n") << QByteArray("ALlimit:CW44,1\n");
+        QTest::newRow("overlong") << QByteArray(300, 'A') + '\n' << QByteArray("ALoverlong:") + QByteArray(32, 'A') + '\n';
+    }
+    void refusedInputMovesNothingIsCountedAndRaisesAnAlarm()
+    {
+        QFETCH(QByteArray, input);
+        QFETCH(QByteArray, alarm);
+        Bench b(Dialect::Easycomm3);
+        QCOMPARE(b.send(input), alarm);
+        QCOMPARE(b.counters.rejected(), 1u);
+        b.rotator.advanceBy(2.0);
+        QCOMPARE(b.rotator.axis(Axis::Azimuth).position(), 0.0);
+        QCOMPARE(b.rotator.axis(Axis::Elevation).position(), 0.0);
+        QCOMPARE(b.rotator.axis(Axis::Azimuth).mode(), DriveMode::Released);
+    }
+
+    void satnogsRefusesSilently()
+    {
+        Bench b(Dialect::SatNogs);
+        QCOMPARE(b.send("AZ500 FOO\n"), QByteArray());
+        QCOMPARE(b.counters.outOfLimits, 1u);
+        QCOMPARE(b.counters.unknown, 1u);
+    }
+
+    void easycomm1LineMovesWithoutAnswering()
+    {
+        Bench b(Dialect::Easycomm1);
+        QCOMPARE(b.send("AZ10.0 EL20.0 UP000 XXX DN000 XXX\n"), QByteArray());
+        QCOMPARE(b.rotator.readRegister(10).value(), 10.0);
+        QCOMPARE(b.rotator.readRegister(11).value(), 20.0);
+        QCOMPARE(b.counters.rejected(), 0u);
+    }
+
+    void spaceTerminatedCommandWaitsForTheLineEnd()
+    {
+        Bench b(Dialect::Easycomm3);
+        QCOMPARE(b.send("GS "), QByteArray());
+        QVERIFY(b.firmware.awaitingLineEnd());
+        QCOMPARE(b.firmware.endLine(), QByteArray("GS257\n"));
+    }
+
+    void unsolicitedPushesOnlyWhatChanged()
+    {
+        Bench b(Dialect::Easycomm3);
+        const QByteArray first = b.firmware.unsolicitedChanges();
+        QVERIFY(first.startsWith("AZ0.00\nEL0.00\nIP0,25.00\n"));
+        QVERIFY(first.contains("\nGS257\nGE1\nVESlewSim-1.0\n"));
+        QCOMPARE(b.firmware.unsolicitedChanges(), QByteArray());
+        b.send("AZ5\n");
+        b.rotator.advanceBy(0.5);
+        const QByteArray moving = b.firmware.unsolicitedChanges();
+        QVERIFY(moving.startsWith("AZ"));
+        QVERIFY(moving.contains("CR10,5.00\n"));
+        QVERIFY(moving.contains("GS262\n"));
+        QVERIFY(!moving.contains("EL"));
+        QVERIFY(!moving.contains("VE"));
+    }
+
+    void garbageBarrageNeverBreaksAValidQuery()
+    {
+        Bench b(Dialect::Easycomm3);
+        QRandomGenerator rng(42);
+        for (int round = 0; round < 200; ++round) {
+            QByteArray junk(int(rng.bounded(1, 4096)), '\0');
+            for (char &c : junk)
+                c = char(rng.bounded(256));
+            b.send(junk);
+        }
+        QVERIFY(b.counters.rejected() > 100u);
+        b.send("\n");
+        QCOMPARE(b.send("GE\n"), QByteArray("GE1\n"));
+        QCOMPARE(b.send("AZ EL\n").left(2), QByteArray("AZ"));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestSimulatorFirmware)
+#include "tst_simulatorfirmware.moc"
