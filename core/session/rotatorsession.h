@@ -51,6 +51,9 @@ public:
     State state() const { return m_state; }
     bool isConnected() const { return m_state == State::Connected; }
     QString uri() const { return m_uri; }
+    // The open link, for tests and diagnostics (e.g. the simulator behind a
+    // sim: link); null when there is none. The session keeps ownership.
+    transport::Link *link() const { return m_link.get(); }
     const Capabilities &capabilities() const { return m_caps; }
 
     bool hasPosition() const { return !std::isnan(m_az) && !std::isnan(m_el); }
