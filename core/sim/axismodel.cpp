@@ -19,6 +19,7 @@ constexpr double kStallEffort = 0.5;      // share of the torque limit that coun
 constexpr double kFrozenSpeed = 1.0;      // deg/s: moving this fast must change the reading
 constexpr double kFrozenSeconds = 0.5;
 constexpr double kIntegralZone = 2.0;     // degrees from the target where the I term works
+constexpr double kHomeClearance = 0.1;    // degrees between the lower switch edge and zero
 constexpr double kRestSpeed = 1e-4;       // deg/s, below which friction holds the axis
 
 double sign(double v)
@@ -169,8 +170,10 @@ void AxisModel::step(double dt)
     if (m_mode == DriveMode::Homing && m_errors == 0) {
         m_homingTravel += std::fabs(m_velocity) * dt;
         if (limitSwitches() & LimitSwitch::Lower) {
-            // Found home: from now on the switch's angle reads as the minimum.
-            m_encoderOffset = m_antenna - m_plant.minDegrees;
+            // Found home. The switch edge reads a little below the minimum,
+            // so that the minimum itself lies clear of the switch and the
+            // loop can hold it without pushing into a switch that cuts it.
+            m_encoderOffset = m_antenna - (m_plant.minDegrees - kHomeClearance);
             m_reading = sampleEncoder();
             m_measuredVelocity = m_velocity;
             commandPosition(m_plant.minDegrees);

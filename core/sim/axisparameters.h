@@ -11,7 +11,7 @@ namespace slew::sim {
 struct AxisPlant {
     double minDegrees = 0.0;      // lower (CCW / down) limit switch
     double maxDegrees = 360.0;    // upper (CW / up) limit switch
-    double hardStopMargin = 0.5;  // mechanical stop this far beyond each switch
+    double hardStopMargin = 1.0;  // mechanical stop this far beyond each switch
     double inertia = 1.0;         // relative to the nominal load
     double viscousFriction = 0.5; // deg/s^2 of drag per deg/s
     double coulombFriction = 0.5; // deg/s^2, also the breakaway (stiction) level
@@ -19,17 +19,20 @@ struct AxisPlant {
     double maxSpeed = 30.0;       // deg/s, the driver's cap (seeds/000)
     double maxAcceleration = 30.0; // deg/s^2, the driver's ramp (seeds/000)
     double ticksPerDegree = 100.0; // encoder resolution, reported by \?ENC
-    double homingSpeed = 10.0;    // deg/s while RESET looks for the switch
+    double homingSpeed = 5.0;     // deg/s while RESET looks for the switch: slow enough to
+                                  // brake before the hard stop once it trips
     double manualSpeed = 10.0;    // deg/s for ML/MR/MU/MD (Easycomm II has no speed)
 };
 
 // Position servo gains, as CW1..CW3 (azimuth) and CW4..CW6 (elevation) set
-// them. The defaults settle a 10 degree step in about 1.5 s with a few
-// hundredths of a degree of overshoot; kp 40 with kd 0 overshoots by ~90 %.
+// them. The defaults settle a 10 degree step in about 2.5 s with hundredths
+// of a degree of overshoot, and start braking early enough that a long slew
+// at the speed cap does not overshoot either. kp 40 with kd 0 (no damping)
+// overshoots a 10 degree step by ~90 %: something for a tuner to fix.
 struct PidGains {
-    double kp = 20.0; // deg/s^2 per degree of error
-    double ki = 0.5;  // deg/s^2 per degree-second
-    double kd = 8.0;  // deg/s^2 per deg/s (on the measured speed, so a new target gives no kick)
+    double kp = 40.0; // deg/s^2 per degree of error
+    double ki = 2.0;  // deg/s^2 per degree-second
+    double kd = 20.0; // deg/s^2 per deg/s (on the measured speed, so a new target gives no kick)
 };
 
 // Faults of one axis that a test or an operator switches on and off.

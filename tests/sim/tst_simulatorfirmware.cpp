@@ -54,7 +54,7 @@ private slots:
     void satnogsConfigReadHasNoPrefixAndStraySemicolonsAreHarmless()
     {
         Bench b(Dialect::SatNogs);
-        QCOMPARE(b.send("CR 1\n;"), QByteArray("1,20.000\n"));
+        QCOMPARE(b.send("CR 1\n;"), QByteArray("1,40.000\n"));
         QCOMPARE(b.send("CR 7\n;"), QByteArray("7,0.00\n"));
         QCOMPARE(b.send("GS\n;"), QByteArray("GS1\n"));
         QCOMPARE(b.send("GE\n;"), QByteArray("GE1\n"));
