@@ -75,7 +75,7 @@ void SimulatorConnection::receive(QByteArrayView bytes)
         return;
     const double perByte = byteSeconds();
     if (perByte <= 0.0) {
-        process(bytes);
+        process(bytes, m_simulator.clock().now());
         return;
     }
     // On a paced line the bytes arrive one character time after another.
@@ -90,18 +90,18 @@ void SimulatorConnection::receive(QByteArrayView bytes)
     schedule();
 }
 
-void SimulatorConnection::process(QByteArrayView bytes)
+void SimulatorConnection::process(QByteArrayView bytes, double arrivedAt)
 {
     m_log.add(bytes);
     m_simulator.syncToNow();
     QByteArray out = m_firmware.receive(bytes);
     m_idleFlushAt = m_firmware.awaitingLineEnd() ? m_simulator.clock().now() + kIdleLineEnd : -1.0;
     if (!out.isEmpty())
-        send(std::move(out));
+        send(std::move(out), arrivedAt);
     schedule();
 }
 
-void SimulatorConnection::send(QByteArray bytes)
+void SimulatorConnection::send(QByteArray bytes, double at)
 {
     const LinkFaults faults = m_simulator.linkFaults();
     if (faults.dropRate > 0.0 || faults.garbageRate > 0.0) {
@@ -120,7 +120,6 @@ void SimulatorConnection::send(QByteArray bytes)
     if (bytes.isEmpty() || !m_device)
         return;
 
-    const double now = m_simulator.clock().now();
     const double perByte = byteSeconds();
     if (faults.latency <= 0.0 && perByte <= 0.0 && m_outbound.empty()) {
         if (m_device->bytesToWrite() < kMaxOutbound)
@@ -131,7 +130,7 @@ void SimulatorConnection::send(QByteArray bytes)
         return;
     // A reply leaves after the latency, once the line is free, and arrives
     // when its last character has crossed.
-    m_outboundFreeAt = std::max(now + faults.latency, m_outboundFreeAt) + perByte * double(bytes.size());
+    m_outboundFreeAt = std::max(at + faults.latency, m_outboundFreeAt) + perByte * double(bytes.size());
     m_outboundBytes += bytes.size();
     m_outbound.push_back({m_outboundFreeAt, std::move(bytes)});
     schedule();
@@ -152,15 +151,16 @@ void SimulatorConnection::service()
     }
     while (!m_inbound.empty() && m_inbound.front().due <= now) {
         const QByteArray bytes = std::move(m_inbound.front().bytes);
+        const double arrivedAt = m_inbound.front().due;
         m_inbound.pop_front();
         m_inboundBytes -= bytes.size();
-        process(bytes);
+        process(bytes, arrivedAt);
     }
     if (m_idleFlushAt >= 0.0 && m_idleFlushAt <= now) {
         m_idleFlushAt = -1.0;
         m_simulator.syncToNow();
         if (QByteArray out = m_firmware.endLine(); !out.isEmpty())
-            send(std::move(out));
+            send(std::move(out), now);
     }
     QByteArray ready;
     while (!m_outbound.empty() && m_outbound.front().due <= now) {
@@ -208,7 +208,7 @@ void SimulatorConnection::onTick()
         return;
     if (m_settings.unsolicited) {
         if (QByteArray out = m_firmware.unsolicitedChanges(); !out.isEmpty())
-            send(std::move(out));
+            send(std::move(out), m_simulator.clock().now());
     }
     service();
 }

@@ -59,8 +59,10 @@ private:
     };
 
     void readDevice();
-    void process(QByteArrayView bytes);
-    void send(QByteArray bytes);
+    // `at` is when the bytes arrived or the reply was made, which on a
+    // manual clock can be earlier than the tick that handles them.
+    void process(QByteArrayView bytes, double arrivedAt);
+    void send(QByteArray bytes, double at);
     void service();
     void schedule();
     void onTick();

@@ -1,0 +1,262 @@
+// The `sim:` link: made from a URI, opened and used like any other link,
+// with its clock stepped by the test.
+#include "sim/simulator.h"
+#include "sim/simulatorconnection.h"
+#include "sim/simulatorlink.h"
+#include "sim/simulatorscheme.h"
+
+#include "transport/linkfactory.h"
+
+#include <QIODevice>
+#include <QSignalSpy>
+#include <QTest>
+
+using namespace slew::sim;
+using slew::transport::createLink;
+using slew::transport::Link;
+
+class TestSimulatorLink : public QObject {
+    Q_OBJECT
+
+    std::unique_ptr<Link> openLink(const QString &uri)
+    {
+        auto result = createLink(uri);
+        if (!result.link)
+            qWarning() << result.error;
+        Link *link = result.link.get();
+        if (!link)
+            return {};
+        QSignalSpy opened(link, &Link::opened);
+        link->open();
+        if (!link->isOpen() && !opened.wait(2000))
+            return {};
+        return std::move(result.link);
+    }
+
+    // Writes a command and returns the reply line that follows.
+    static QByteArray ask(Link *link, const QByteArray &line)
+    {
+        QIODevice *d = link->device();
+        d->write(line);
+        QByteArray reply;
+        QSignalSpy ready(d, &QIODevice::readyRead);
+        while (!reply.endsWith('\n')) {
+            if (d->bytesAvailable() == 0 && !ready.wait(2000))
+                break;
+            reply += d->readAll();
+        }
+        return reply;
+    }
+
+private slots:
+    void initTestCase() { registerSimulatorScheme(); }
+
+    void queryItemsSetThePlant()
+    {
+        auto link = openLink("sim:?clock=manual&kp=30&ki=0&kd=5&az_max=450&el_max=90&ticks_per_deg=1000"
+                             "&dialect=satnogs&park_az=90");
+        QVERIFY(link);
+        Simulator *sim = simulatorBehind(link.get());
+        QVERIFY(sim);
+        QVERIFY(sim->clock().isManual());
+        const SimulatedRotator &r = sim->rotator();
+        QCOMPARE(r.axis(Axis::Azimuth).gains().kp, 30.0);
+        QCOMPARE(r.axis(Axis::Elevation).gains().kd, 5.0);
+        QCOMPARE(r.axis(Axis::Azimuth).plant().maxDegrees, 450.0);
+        QCOMPARE(r.axis(Axis::Elevation).plant().maxDegrees, 90.0);
+        QCOMPARE(r.axis(Axis::Azimuth).plant().ticksPerDegree, 1000.0);
+        QCOMPARE(sim->options().dialect, slew::protocol::Dialect::SatNogs);
+        QCOMPARE(ask(link.get(), "CR 7\n"), QByteArray("7,90.00\n"));
+    }
+
+    void badQueryItemsNameTheUri_data()
+    {
+        QTest::addColumn<QString>("uri");
+        QTest::addColumn<QString>("item");
+        QTest::newRow("az_max") << "sim:?az_max=500" << "az_max";
+        QTest::newRow("el_max") << "sim:?el_max=100" << "el_max";
+        QTest::newRow("kp") << "sim:?kp=fast" << "kp";
+        QTest::newRow("dialect") << "sim:?dialect=gs232" << "dialect";
+        QTest::newRow("unknown") << "sim:?warp=9" << "warp";
+        QTest::newRow("jam") << "sim:?jam=roll" << "jam";
+    }
+    void badQueryItemsNameTheUri()
+    {
+        QFETCH(QString, uri);
+        QFETCH(QString, item);
+        const auto result = createLink(uri);
+        QVERIFY(!result.link);
+        QVERIFY2(result.error.contains(uri), qPrintable(result.error));
+        QVERIFY2(result.error.contains(item), qPrintable(result.error));
+    }
+
+    void repliesArriveFromTheEventLoopNotInsideWrite()
+    {
+        auto link = openLink("sim:?clock=manual");
+        QVERIFY(link);
+        QIODevice *d = link->device();
+        QSignalSpy ready(d, &QIODevice::readyRead);
+        d->write("AZ EL\n");
+        QCOMPARE(d->bytesAvailable(), 0);
+        QCOMPARE(ready.count(), 0);
+        QVERIFY(ready.wait(2000));
+        QCOMPARE(d->readAll(), QByteArray("AZ0.00 EL0.00\n"));
+    }
+
+    void steppedClockMovesTheRotatorExactly()
+    {
+        auto link = openLink("sim:?clock=manual&start_az=100");
+        QVERIFY(link);
+        Simulator *sim = simulatorBehind(link.get());
+        // The GS answer proves the set before it was taken.
+        QCOMPARE(ask(link.get(), "AZ110 EL10\nGS\n"), QByteArray("GS1542\n")); // both axes 6: servo, moving
+        for (int i = 0; i < 160; ++i)
+            sim->advance(0.025);
+        QCOMPARE(sim->clock().now(), 4.0);
+        QCOMPARE(sim->rotator().time(), 4.0);
+        QCOMPARE(ask(link.get(), "GS\n"), QByteArray("GS1028\n"));
+        const QList<QByteArray> position = ask(link.get(), "AZ EL\n").trimmed().split(' ');
+        QCOMPARE(position.size(), 2);
+        QVERIFY(qAbs(position[0].mid(2).toDouble() - 110.0) <= 0.1);
+        QVERIFY(qAbs(position[1].mid(2).toDouble() - 10.0) <= 0.1);
+    }
+
+    void rejectedInputIsCountedAndAlarmed()
+    {
+        auto link = openLink("sim:?clock=manual");
+        QVERIFY(link);
+        Simulator *sim = simulatorBehind(link.get());
+        QCOMPARE(ask(link.get(), "FOO\n"), QByteArray("ALunknown:FOO\n"));
+        QCOMPARE(ask(link.get(), "EL200\n"), QByteArray("ALlimit:EL200.00\n"));
+        QCOMPARE(sim->counters().unknown, 1u);
+        QCOMPARE(sim->counters().outOfLimits, 1u);
+        QCOMPARE(sim->counters().rejected(), 2u);
+    }
+
+    void latencyHoldsRepliesUntilTheClockPassesIt()
+    {
+        auto link = openLink("sim:?clock=manual&latency_ms=500");
+        QVERIFY(link);
+        Simulator *sim = simulatorBehind(link.get());
+        QIODevice *d = link->device();
+        QSignalSpy ready(d, &QIODevice::readyRead);
+        d->write("GE\n");
+        for (int i = 0; i < 5; ++i)
+            QCoreApplication::processEvents();
+        sim->advance(0.45);
+        for (int i = 0; i < 5; ++i)
+            QCoreApplication::processEvents();
+        QCOMPARE(d->bytesAvailable(), 0);
+        sim->advance(0.1);
+        QVERIFY(ready.wait(2000));
+        QCOMPARE(d->readAll(), QByteArray("GE1\n"));
+    }
+
+    void baudPacingTakesTheLineTime()
+    {
+        // 1200 baud: 120 characters a second; `GE\n` in, `GE1\n` out is 7.
+        auto link = openLink("sim:?clock=manual&baud=1200");
+        QVERIFY(link);
+        Simulator *sim = simulatorBehind(link.get());
+        QIODevice *d = link->device();
+        QSignalSpy ready(d, &QIODevice::readyRead);
+        d->write("GE\n");
+        for (int i = 0; i < 5; ++i)
+            QCoreApplication::processEvents();
+        sim->advance(0.055);
+        for (int i = 0; i < 5; ++i)
+            QCoreApplication::processEvents();
+        QCOMPARE(d->bytesAvailable(), 0);
+        sim->advance(0.005);
+        QVERIFY(ready.wait(2000));
+        QCOMPARE(d->readAll(), QByteArray("GE1\n"));
+    }
+
+    void lossyLinkLosesEveryByteAtRateOne()
+    {
+        auto link = openLink("sim:?clock=manual&drop_rate=1");
+        QVERIFY(link);
+        Simulator *sim = simulatorBehind(link.get());
+        link->device()->write("GE\nAZ\n");
+        for (int i = 0; i < 10; ++i)
+            QCoreApplication::processEvents();
+        sim->advance(1.0);
+        for (int i = 0; i < 10; ++i)
+            QCoreApplication::processEvents();
+        QCOMPARE(link->device()->bytesAvailable(), 0);
+        QCOMPARE(sim->counters().commands, 2u); // heard, answered, lost on the way
+        // Switched off at run time, the line works again.
+        sim->setLinkFaults({});
+        QCOMPARE(ask(link.get(), "GE\n"), QByteArray("GE1\n"));
+    }
+
+    void garbageBytesArriveAmongTheReplies()
+    {
+        auto link = openLink("sim:?clock=manual&garbage_rate=1&seed=3");
+        QVERIFY(link);
+        QIODevice *d = link->device();
+        QSignalSpy ready(d, &QIODevice::readyRead);
+        d->write("GE\n");
+        QVERIFY(ready.wait(2000));
+        const QByteArray got = d->readAll();
+        QCOMPARE(got.size(), 8); // every one of the 4 bytes followed by one of garbage
+        const QByteArray kept = QByteArray(1, got[0]) + got[2] + got[4] + got[6];
+        QCOMPARE(kept, QByteArray("GE1\n"));
+    }
+
+    void droppedConnectionIsReportedAsLost()
+    {
+        auto link = openLink("sim:?clock=manual");
+        QVERIFY(link);
+        QSignalSpy lost(link.get(), &Link::lost);
+        simulatorBehind(link.get())->dropConnections();
+        QVERIFY(lost.wait(2000));
+        QVERIFY(!link->isOpen());
+        QVERIFY(lost.first().first().toString().contains("sim:"));
+
+        auto timed = openLink("sim:?clock=manual&drop_after=2");
+        QVERIFY(timed);
+        QSignalSpy lostLater(timed.get(), &Link::lost);
+        simulatorBehind(timed.get())->advance(1.9);
+        QCoreApplication::processEvents();
+        QVERIFY(timed->isOpen());
+        simulatorBehind(timed.get())->advance(0.2);
+        QVERIFY(lostLater.wait(2000));
+    }
+
+    void unsolicitedPushesFollowTheClock()
+    {
+        auto link = openLink("sim:?clock=manual&unsolicited=1");
+        QVERIFY(link);
+        Simulator *sim = simulatorBehind(link.get());
+        QIODevice *d = link->device();
+        QSignalSpy ready(d, &QIODevice::readyRead);
+        sim->advance(0.025);
+        QVERIFY(ready.wait(2000));
+        const QByteArray first = d->readAll();
+        QVERIFY2(first.startsWith("AZ0.00\nEL0.00\nIP0,25.00\n"), first.constData());
+        d->write("VR10000\n");
+        QTRY_VERIFY(sim->rotator().axis(Axis::Azimuth).mode() == DriveMode::Velocity);
+        sim->advance(0.5);
+        QVERIFY(ready.wait(2000));
+        const QByteArray moving = d->readAll();
+        QVERIFY2(moving.contains("\nIP7,"), moving.constData());
+        QVERIFY2(moving.contains("CR12,10000.00\n"), moving.constData());
+        QVERIFY2(moving.contains("GS258\n"), moving.constData());
+    }
+
+    void faultsSwitchAtRunTime()
+    {
+        auto link = openLink("sim:?clock=manual&jam=az&jam_after=0.5");
+        QVERIFY(link);
+        Simulator *sim = simulatorBehind(link.get());
+        QCOMPARE(ask(link.get(), "AZ50\nGE\n"), QByteArray("GE1\n"));
+        sim->advance(1.0);
+        QCOMPARE(ask(link.get(), "GE\nGS\n"), QByteArray("GE8\nGS264\n"));
+        sim->setAxisFaults(Axis::Azimuth, {});
+        QCOMPARE(ask(link.get(), "RESET\nGE\n"), QByteArray("GE1\n"));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestSimulatorLink)
+#include "tst_simulatorlink.moc"
