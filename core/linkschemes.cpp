@@ -1,5 +1,6 @@
 #include "linkschemes.h"
 
+#include "bridge/rotctldlink.h"
 #include "sim/simulatorscheme.h"
 
 namespace slew {
@@ -7,6 +8,7 @@ namespace slew {
 void registerLinkSchemes()
 {
     sim::registerSimulatorScheme();
+    bridge::RotctldLink::registerScheme();
 }
 
 } // namespace slew

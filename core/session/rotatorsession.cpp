@@ -143,6 +143,11 @@ void RotatorSession::openLink()
     connect(m_link.get(), &transport::Link::failed, this, &RotatorSession::onLinkFailed);
     connect(m_link.get(), &transport::Link::lost, this, &RotatorSession::onLinkLost);
     connect(m_link->device(), &QIODevice::readyRead, this, &RotatorSession::onReadyRead);
+    connect(m_link.get(), &transport::Link::notice, this, &RotatorSession::errorOccurred);
+    connect(m_link.get(), &transport::Link::limitsReported, this,
+            [this](double azMin, double azMax, double elMin, double elMax) {
+                m_reportedLimits = model::RotatorLimits{azMin, azMax, elMin, elMax};
+            });
     setState(m_reconnectAttempt > 0 ? State::Reconnecting : State::Connecting, tr("opening %1").arg(m_uri));
     m_link->open();
 }
@@ -214,6 +219,7 @@ void RotatorSession::dropLink(const QString &reason)
     }
     m_stale = true;
     m_caps = Capabilities{};
+    m_reportedLimits.reset();
     emit capabilitiesChanged(m_caps);
 }
 
@@ -593,6 +599,16 @@ bool RotatorSession::gotoPosition(double az, double el)
     if (!choice.azimuth)
         return refuse(choice.error);
     const double targetAz = *choice.azimuth;
+    if (m_reportedLimits) {
+        const QString outside = tr("%1 (the limits the link reports)");
+        if (QString e = model::checkElevation(*m_reportedLimits, el); !e.isEmpty())
+            return refuse(outside.arg(e));
+        if (targetAz < m_reportedLimits->azMin - 1e-6 || targetAz > m_reportedLimits->azMax + 1e-6)
+            return refuse(outside.arg(tr("azimuth %1° is outside %2°..%3°")
+                                          .arg(targetAz, 0, 'f', 1)
+                                          .arg(m_reportedLimits->azMin, 0, 'f', 0)
+                                          .arg(m_reportedLimits->azMax, 0, 'f', 0)));
+    }
     const QByteArray line = protocol::encodeSetPosition(targetAz, el, m_profile.dialect);
     rememberSent(Message::number(Op::Azimuth, std::round(targetAz * 100) / 100));
     rememberSent(Message::number(Op::Elevation, std::round(el * 100) / 100));

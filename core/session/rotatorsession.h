@@ -19,6 +19,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 
 namespace slew::transport {
 class Link;
@@ -55,6 +56,9 @@ public:
     // sim: link); null when there is none. The session keeps ownership.
     transport::Link *link() const { return m_link.get(); }
     const Capabilities &capabilities() const { return m_caps; }
+    // Limits the link reported (rotctld's \dump_state), if any; moves must
+    // fit these as well as the profile's.
+    std::optional<model::RotatorLimits> reportedLimits() const { return m_reportedLimits; }
 
     bool hasPosition() const { return !std::isnan(m_az) && !std::isnan(m_el); }
     double azimuth() const { return m_az; }
@@ -157,6 +161,7 @@ private:
     int m_failedPolls = 0;
     QTimer m_staleTimer;
 
+    std::optional<model::RotatorLimits> m_reportedLimits; // from the link, if it knows them
     Capabilities m_caps;
     int m_probesOutstanding = 0;
     QHash<QByteArray, int> m_telemetryFailures; // consecutive misses per telemetry query

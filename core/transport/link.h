@@ -35,6 +35,12 @@ signals:
     void opened();
     void failed(const QString &reason); // open() did not succeed
     void lost(const QString &reason);   // an open link went away
+    // Something the link itself has to tell the operator, such as an error
+    // code a rotctld returned for a command.
+    void notice(const QString &message);
+    // Travel limits the far end reports (rotctld's \dump_state); moves
+    // outside them are refused as well as those outside the profile's.
+    void limitsReported(double azMin, double azMax, double elMin, double elMax);
 
 private:
     QString m_uri;

@@ -1,0 +1,300 @@
+#include "rotctldserver.h"
+
+#include "session/rotatorsession.h"
+
+#include <QTcpSocket>
+#include <QTimer>
+
+#include <cmath>
+
+namespace slew::bridge {
+
+using Kind = RotctldRequest::Kind;
+using session::Axis;
+using session::RotatorSession;
+
+namespace {
+
+constexpr qint64 kReadChunk = 16 * 1024; // per event, so a flood cannot starve the GUI
+
+QString peerName(const QTcpSocket *s)
+{
+    return QStringLiteral("%1:%2").arg(s->peerAddress().toString()).arg(s->peerPort());
+}
+
+double bearingDifference(double a, double b)
+{
+    const double d = std::fmod(std::abs(a - b), 360.0);
+    return std::min(d, 360.0 - d);
+}
+
+int hamlibModelFor(protocol::Dialect d)
+{
+    switch (d) {
+    case protocol::Dialect::Easycomm1: return 201;
+    case protocol::Dialect::Easycomm2: return 202;
+    case protocol::Dialect::Easycomm3:
+    case protocol::Dialect::SatNogs: return 204;
+    }
+    return 204;
+}
+
+} // namespace
+
+RotctldServer::RotctldServer(session::RotatorSession *session, QObject *parent)
+    : QObject(parent), m_session(session)
+{
+    connect(&m_server, &QTcpServer::newConnection, this, &RotctldServer::onNewConnection);
+}
+
+RotctldServer::~RotctldServer()
+{
+    close();
+}
+
+bool RotctldServer::listen(const QHostAddress &address, quint16 port, QString *error)
+{
+    close();
+    if (!m_server.listen(address, port)) {
+        if (error)
+            *error = tr("cannot listen on %1:%2: %3").arg(address.toString()).arg(port).arg(m_server.errorString());
+        return false;
+    }
+    emit logMessage(tr("rotctld server listening on %1:%2").arg(m_server.serverAddress().toString()).arg(m_server.serverPort()));
+    return true;
+}
+
+void RotctldServer::close()
+{
+    m_server.close();
+    const auto sockets = m_clients.keys();
+    for (QTcpSocket *s : sockets) {
+        s->disconnect(this);
+        s->abort();
+        s->deleteLater();
+    }
+    const bool had = !m_clients.isEmpty();
+    m_clients.clear();
+    if (had)
+        emit clientsChanged();
+}
+
+void RotctldServer::holdRemote()
+{
+    if (m_remoteHeld)
+        return;
+    m_remoteHeld = true;
+    emit remoteHeldChanged(true);
+    emit logMessage(tr("remote control held by the operator: remote moves are refused"));
+}
+
+void RotctldServer::releaseRemote()
+{
+    if (!m_remoteHeld)
+        return;
+    m_remoteHeld = false;
+    emit remoteHeldChanged(false);
+    emit logMessage(tr("remote control handed back"));
+}
+
+QList<RotctldServer::ClientInfo> RotctldServer::clients() const
+{
+    QList<ClientInfo> out;
+    for (const Client &c : m_clients)
+        out.append(c.info);
+    return out;
+}
+
+void RotctldServer::onNewConnection()
+{
+    while (QTcpSocket *s = m_server.nextPendingConnection()) {
+        if (!m_allowed.isEmpty() && !m_allowed.contains(s->peerAddress())) {
+            emit logMessage(tr("refused rotctld client %1: not in the allowed list").arg(peerName(s)));
+            s->abort();
+            s->deleteLater();
+            continue;
+        }
+        s->setSocketOption(QAbstractSocket::LowDelayOption, 1);
+        Client c;
+        c.socket = s;
+        c.info.peer = peerName(s);
+        c.info.lastSeen = QDateTime::currentDateTime();
+        m_clients.insert(s, c);
+        connect(s, &QTcpSocket::readyRead, this, [this, s] { onReadyRead(s); });
+        connect(s, &QTcpSocket::disconnected, this, [this, s] { onDisconnected(s); });
+        emit logMessage(tr("rotctld client %1 connected").arg(c.info.peer));
+        emit clientsChanged();
+    }
+}
+
+void RotctldServer::onDisconnected(QTcpSocket *s)
+{
+    const auto it = m_clients.find(s);
+    if (it == m_clients.end())
+        return;
+    emit logMessage(tr("rotctld client %1 left").arg(it->info.peer));
+    m_clients.erase(it);
+    s->deleteLater();
+    emit clientsChanged();
+}
+
+void RotctldServer::onReadyRead(QTcpSocket *s)
+{
+    auto it = m_clients.find(s);
+    if (it == m_clients.end())
+        return;
+    Client &c = *it;
+    const QByteArray bytes = s->read(kReadChunk);
+    QByteArray out;
+    for (char ch : bytes) {
+        if (ch == '\n' || ch == '\r') {
+            if (c.discarding) {
+                c.discarding = false;
+            } else if (!c.buffer.isEmpty()) {
+                const QByteArray line = c.buffer;
+                c.buffer.clear();
+                if (line.trimmed() == "q" || line.trimmed() == "Q" || line.trimmed() == "\\quit") {
+                    s->write(out);
+                    s->disconnectFromHost();
+                    return;
+                }
+                out += answer(c, line);
+            }
+            continue;
+        }
+        if (c.discarding)
+            continue;
+        if (c.buffer.size() >= kMaxLine) {
+            // Refused once, then everything up to the line end is dropped.
+            c.buffer.clear();
+            c.discarding = true;
+            out += "RPRT -1\n";
+            emit logMessage(tr("rotctld client %1 sent a line over %2 bytes; refused").arg(c.info.peer).arg(kMaxLine));
+            continue;
+        }
+        c.buffer += ch;
+    }
+    // Every answer of this read leaves in one write: Gpredict reads a `p`
+    // answer with a single recv.
+    if (!out.isEmpty())
+        s->write(out);
+    if (s->bytesToWrite() > kMaxUnsentAnswers) {
+        emit logMessage(tr("rotctld client %1 is not reading its answers; disconnected").arg(c.info.peer));
+        s->abort();
+        return;
+    }
+    if (s->bytesAvailable() > 0)
+        QTimer::singleShot(0, this, [this, s] {
+            if (m_clients.contains(s))
+                onReadyRead(s);
+        });
+}
+
+QByteArray RotctldServer::answer(Client &c, const QByteArray &line)
+{
+    c.info.lastCommand = QString::fromLatin1(line.left(80)).trimmed();
+    c.info.lastSeen = QDateTime::currentDateTime();
+    ++c.info.commands;
+    emit commandReceived(c.info.peer, c.info.lastCommand);
+
+    const RotctldRequest r = parseRotctldLine(line);
+    const auto &profile = m_session->profile();
+    switch (r.kind) {
+    case Kind::GetPosition: {
+        if (!m_session->isConnected() || !m_session->hasPosition())
+            return formatStatus(r, int(HamlibError::Io));
+        // Trackers speak 0..360: a position in the overlap is reported as its bearing.
+        double az = std::fmod(m_session->azimuth(), 360.0);
+        if (az < 0)
+            az += 360.0;
+        return formatPosition(r, az, m_session->elevation());
+    }
+    case Kind::SetPosition:
+        return formatStatus(r, setPosition(r));
+    case Kind::Stop:
+        return formatStatus(r, m_session->stop() ? 0 : int(HamlibError::Io));
+    case Kind::Park:
+        if (m_remoteHeld)
+            return formatStatus(r, int(HamlibError::Rejected));
+        if (!m_session->isConnected())
+            return formatStatus(r, int(HamlibError::Io));
+        return formatStatus(r, m_session->park() ? 0 : int(HamlibError::InvalidArgument));
+    case Kind::Reset:
+        if (m_remoteHeld)
+            return formatStatus(r, int(HamlibError::Rejected));
+        if (!m_session->isConnected())
+            return formatStatus(r, int(HamlibError::Io));
+        return formatStatus(r, m_session->home() ? 0 : int(HamlibError::InvalidArgument));
+    case Kind::Move:
+        return formatStatus(r, move(r));
+    case Kind::GetInfo: {
+        QString info = QStringLiteral("Slew rotator bridge");
+        if (!m_session->version().isEmpty())
+            info += QStringLiteral(" (%1)").arg(m_session->version());
+        return formatInfo(r, info);
+    }
+    case Kind::DumpState:
+        return formatDumpState({profile.limits.azMin, profile.limits.azMax, profile.limits.elMin, profile.limits.elMax,
+                                hamlibModelFor(profile.dialect)});
+    case Kind::Quit:
+        return {};
+    case Kind::Unknown:
+    case Kind::Malformed:
+        emit logMessage(tr("rotctld client %1: %2").arg(c.info.peer, r.error));
+        return formatStatus(r, int(HamlibError::InvalidArgument));
+    }
+    return formatStatus(r, int(HamlibError::InvalidArgument));
+}
+
+int RotctldServer::setPosition(const RotctldRequest &r)
+{
+    if (m_remoteHeld)
+        return int(HamlibError::Rejected);
+    if (!m_session->isConnected())
+        return int(HamlibError::Io);
+    const double lastAz = m_session->targetAzimuth();
+    const double lastEl = m_session->targetElevation();
+    if (!std::isnan(lastAz) && !std::isnan(lastEl) && bearingDifference(r.az, lastAz) < m_deadband
+        && std::abs(r.el - lastEl) < m_deadband) {
+        // Still checked: a target inside the deadband of a legal one can be illegal.
+        const auto &lim = m_session->profile().limits;
+        if (model::checkElevation(lim, r.el).isEmpty() && model::chooseAzimuth(lim, r.az, std::nullopt).azimuth) {
+            ++m_suppressed;
+            return 0;
+        }
+    }
+    // Hamlib 4.5 answers an out-of-range position with RPRT -1 (invalid argument).
+    return m_session->gotoPosition(r.az, r.el) ? 0 : int(HamlibError::InvalidArgument);
+}
+
+int RotctldServer::move(const RotctldRequest &r)
+{
+    if (m_remoteHeld)
+        return int(HamlibError::Rejected);
+    if (!m_session->isConnected())
+        return int(HamlibError::Io);
+    // Hamlib's speed is 1..100 (-1: unchanged); Slew maps it to 0.1..10 °/s,
+    // the range Hamlib's Easycomm III backend sends ((speed-1)*100 mdeg/s).
+    const int speed = r.speed < 0 ? 50 : std::clamp(r.speed, 1, 100);
+    const double degreesPerSecond = speed / 10.0;
+    bool ok = true;
+    bool any = false;
+    auto go = [&](Axis axis, double v) {
+        any = true;
+        ok = m_session->moveAxis(axis, v) && ok;
+    };
+    const int d = r.direction;
+    if (d & (2 | 32 | 64))
+        go(Axis::Elevation, degreesPerSecond); // up, up-left, up-right
+    if (d & (4 | 128 | 256))
+        go(Axis::Elevation, -degreesPerSecond); // down, down-left, down-right
+    if (d & (8 | 32 | 128))
+        go(Axis::Azimuth, -degreesPerSecond); // left / CCW
+    if (d & (16 | 64 | 256))
+        go(Axis::Azimuth, degreesPerSecond); // right / CW
+    if (!any)
+        return int(HamlibError::InvalidArgument);
+    return ok ? 0 : int(HamlibError::InvalidArgument);
+}
+
+} // namespace slew::bridge

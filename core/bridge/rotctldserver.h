@@ -1,0 +1,98 @@
+#pragma once
+// A server that speaks Hamlib's rotctld protocol, so Gpredict, the SatNOGS
+// client or `rotctl -m 2` can steer the rotator through Slew while the
+// operator watches and keeps the Stop button.
+//
+// It sits on a RotatorSession: every move goes through the session's limit
+// checks (and its overlap choice), nothing here talks to the rotator. Each
+// client is answered on its own connection; a client that floods, sends an
+// overlong line or vanishes disturbs no one else.
+
+#include "rotctldrequest.h"
+
+#include <QDateTime>
+#include <QHash>
+#include <QHostAddress>
+#include <QObject>
+#include <QTcpServer>
+
+class QTcpSocket;
+
+namespace slew::session {
+class RotatorSession;
+}
+
+namespace slew::bridge {
+
+class RotctldServer : public QObject {
+    Q_OBJECT
+public:
+    struct ClientInfo {
+        QString peer;         // "127.0.0.1:53422"
+        QString lastCommand;  // the last line received
+        QDateTime lastSeen;
+        int commands = 0;
+    };
+
+    static constexpr int kMaxLine = 1024;               // longer lines are refused
+    static constexpr qint64 kMaxUnsentAnswers = 1 << 20; // a client that never reads is cut off
+
+    explicit RotctldServer(session::RotatorSession *session, QObject *parent = nullptr);
+    ~RotctldServer() override;
+
+    // Binds to the address (127.0.0.1 unless the operator names another);
+    // port 0 picks a free one. False with a message that says why.
+    bool listen(const QHostAddress &address, quint16 port, QString *error);
+    void close();
+    bool isListening() const { return m_server.isListening(); }
+    QHostAddress address() const { return m_server.serverAddress(); }
+    quint16 port() const { return m_server.serverPort(); }
+
+    // Only these peers may connect; empty lets any in.
+    void setAllowedClients(const QList<QHostAddress> &peers) { m_allowed = peers; }
+    // A target within this many degrees of the one already commanded is
+    // answered RPRT 0 and not sent: trackers re-send P every cycle, and a
+    // relay rotator re-commanded for every 0.1° chatters.
+    void setDeadband(double degrees) { m_deadband = degrees; }
+    double deadband() const { return m_deadband; }
+
+    // The operator stays in charge: while held, remote moves are refused
+    // (RPRT -9); a remote stop is always obeyed.
+    bool isRemoteHeld() const { return m_remoteHeld; }
+    void holdRemote();
+    void releaseRemote();
+
+    QList<ClientInfo> clients() const;
+    int movesSuppressedByDeadband() const { return m_suppressed; }
+
+signals:
+    void clientsChanged();
+    void commandReceived(const QString &peer, const QString &line);
+    void remoteHeldChanged(bool held);
+    void logMessage(const QString &message);
+
+private:
+    struct Client {
+        QTcpSocket *socket = nullptr;
+        QByteArray buffer;
+        bool discarding = false; // inside an overlong line
+        ClientInfo info;
+    };
+
+    void onNewConnection();
+    void onReadyRead(QTcpSocket *socket);
+    void onDisconnected(QTcpSocket *socket);
+    QByteArray answer(Client &client, const QByteArray &line);
+    int setPosition(const RotctldRequest &r);
+    int move(const RotctldRequest &r);
+
+    session::RotatorSession *m_session;
+    QTcpServer m_server;
+    QHash<QTcpSocket *, Client> m_clients;
+    QList<QHostAddress> m_allowed;
+    double m_deadband = 0.5;
+    bool m_remoteHeld = false;
+    int m_suppressed = 0;
+};
+
+} // namespace slew::bridge
