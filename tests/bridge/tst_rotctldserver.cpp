@@ -1,0 +1,294 @@
+// Slew's rotctld-compatible server, on a session connected to the in-process
+// simulator, driven by Hamlib's real rotctl (model 2, netrotctl) and by raw
+// sockets: position, stop, park, reset, move, info, dump_state; one-write
+// answers; several clients; bad clients; deadband; overlap; operator hold.
+
+#include "bridge/rotctldserver.h"
+#include "hamlibprocess.h"
+#include "linkschemes.h"
+#include "session/rotatorsession.h"
+
+#include <QTcpSocket>
+#include <QTest>
+
+using namespace slew;
+
+class RotctldServerTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void init();
+    void cleanup();
+
+    void rotctlDrivesTheSimulator();
+    void rawSocketGetsBothLinesInOneRead();
+    void extendedAnswers();
+    void outOfRangeIsRefusedAndNothingSent();
+    void deadbandSuppressesRepeatedTargets();
+    void overlapPicksTheShortestLegalPath();
+    void operatorHoldRefusesRemoteMovesButNotStop();
+    void badClientsDoNotDisturbOthers();
+    void allowedClientList();
+
+private:
+    QByteArray ask(QTcpSocket &s, const QByteArray &line);
+    bool connectSession(const model::RotatorProfile &profile);
+    session::RotatorSession *session = nullptr;
+    bridge::RotctldServer *server = nullptr;
+};
+
+void RotctldServerTest::initTestCase()
+{
+    registerLinkSchemes();
+    QVERIFY2(!hamlibProgram("rotctl").isEmpty(), "rotctl is not installed: packaging/dev.sh installs libhamlib-utils");
+}
+
+void RotctldServerTest::init()
+{
+    session = new session::RotatorSession;
+    server = new bridge::RotctldServer(session);
+    model::RotatorProfile p;
+    p.uri = "sim:";
+    QVERIFY(connectSession(p));
+    QString error;
+    QVERIFY2(server->listen(QHostAddress::LocalHost, 0, &error), qPrintable(error));
+}
+
+void RotctldServerTest::cleanup()
+{
+    delete server;
+    delete session;
+}
+
+bool RotctldServerTest::connectSession(const model::RotatorProfile &profile)
+{
+    session->setProfile(profile);
+    session->connectTo(profile.uri);
+    return QTest::qWaitFor([&] { return session->isConnected() && session->hasPosition(); }, 10000);
+}
+
+QByteArray RotctldServerTest::ask(QTcpSocket &s, const QByteArray &line)
+{
+    QSignalSpy ready(&s, &QTcpSocket::readyRead);
+    s.write(line + '\n');
+    if (!ready.wait(5000))
+        return {};
+    return s.readAll();
+}
+
+void RotctldServerTest::rotctlDrivesTheSimulator()
+{
+    const QString where = QStringLiteral("127.0.0.1:%1").arg(server->port());
+    QSignalSpy sent(session, &session::RotatorSession::bytesSent);
+    // netrotctl opens with \dump_state, so each run exercises it too.
+    RotctlResult r = runRotctl({"-m", "2", "-r", where, "P", "30", "20"});
+    QVERIFY2(r.finished && r.exitCode == 0, r.err.constData());
+    bool sawGoto = false;
+    for (const auto &args : sent)
+        sawGoto = sawGoto || args.at(0).toByteArray() == "AZ30.00 EL20.00\n";
+    QVERIFY(sawGoto);
+
+    // get_pos until it arrives.
+    double az = -1, el = -1;
+    QVERIFY(QTest::qWaitFor(
+        [&] {
+            const RotctlResult p = runRotctl({"-m", "2", "-r", where, "p"});
+            const QList<QByteArray> lines = p.out.trimmed().split('\n');
+            if (lines.size() < 2)
+                return false;
+            az = lines[0].toDouble();
+            el = lines[1].toDouble();
+            return std::abs(az - 30) < 0.5 && std::abs(el - 20) < 0.5;
+        },
+        20000));
+
+    sent.clear();
+    r = runRotctl({"-m", "2", "-r", where, "S", "K", "R", "1", "M", "16", "50", "_"});
+    QVERIFY2(r.finished && r.exitCode == 0, r.err.constData());
+    QStringList wire;
+    for (const auto &args : sent)
+        wire << QString::fromLatin1(args.at(0).toByteArray()).trimmed();
+    QVERIFY2(wire.contains("SA SE"), qPrintable(wire.join('|')));
+    QVERIFY2(wire.contains("PARK"), qPrintable(wire.join('|')));
+    QVERIFY2(wire.contains("RESET"), qPrintable(wire.join('|')));
+    QVERIFY2(wire.contains("VR5000"), qPrintable(wire.join('|')));
+    QVERIFY2(r.out.contains("Slew rotator bridge"), r.out.constData());
+    // netrotctl read our \dump_state on open: its capabilities show our limits.
+    r = runRotctl({"-m", "2", "-r", where, "1"});
+    QVERIFY2(r.out.contains("Max Azimuth:\t\t360.00") && r.out.contains("Max Elevation:\t\t90.00"), r.out.constData());
+    session->stop();
+}
+
+void RotctldServerTest::rawSocketGetsBothLinesInOneRead()
+{
+    QTcpSocket s;
+    s.connectToHost(QHostAddress::LocalHost, server->port());
+    QTRY_COMPARE(s.state(), QAbstractSocket::ConnectedState);
+    for (int i = 0; i < 20; ++i) {
+        const QByteArray answer = ask(s, "p");
+        // Exactly two lines, both in the first read, as Gpredict reads them.
+        QCOMPARE(answer.count('\n'), 2);
+        const QList<QByteArray> lines = answer.trimmed().split('\n');
+        bool ok1 = false, ok2 = false;
+        lines[0].toDouble(&ok1);
+        lines[1].toDouble(&ok2);
+        QVERIFY(ok1 && ok2);
+    }
+    QCOMPARE(ask(s, "P 12.34 5.67"), QByteArray("RPRT 0\n"));
+    QCOMPARE(ask(s, "P 42,5 5,5"), QByteArray("RPRT 0\n")); // comma decimals
+    QCOMPARE(session->targetAzimuth(), 42.5);
+    QCOMPARE(ask(s, "S"), QByteArray("RPRT 0\n"));
+}
+
+void RotctldServerTest::extendedAnswers()
+{
+    QTcpSocket s;
+    s.connectToHost(QHostAddress::LocalHost, server->port());
+    QTRY_COMPARE(s.state(), QAbstractSocket::ConnectedState);
+    const QByteArray pos = ask(s, "+\\get_pos");
+    QVERIFY2(pos.startsWith("get_pos:\nAzimuth: ") && pos.endsWith("RPRT 0\n"), pos.constData());
+    const QByteArray semi = ask(s, ";\\get_pos");
+    QVERIFY2(semi.startsWith("get_pos:;Azimuth: ") && semi.endsWith(";RPRT 0\n") && semi.count('\n') == 1,
+             semi.constData());
+    QCOMPARE(ask(s, "+\\set_pos 40 10"), QByteArray("set_pos: 40 10\nRPRT 0\n"));
+    QCOMPARE(ask(s, "+\\stop"), QByteArray("stop:\nRPRT 0\n"));
+    QVERIFY(ask(s, "+\\get_info").startsWith("get_info:\nInfo: Slew rotator bridge"));
+    const QByteArray state = ask(s, "\\dump_state");
+    QVERIFY2(state.startsWith("1\n204\nmin_az=0.000000\nmax_az=360.000000\nmin_el=0.000000\nmax_el=90.000000\n"),
+             state.constData());
+    QCOMPARE(ask(s, "Z"), QByteArray("RPRT -1\n"));
+    QCOMPARE(ask(s, "P 10"), QByteArray("RPRT -1\n"));
+}
+
+void RotctldServerTest::outOfRangeIsRefusedAndNothingSent()
+{
+    QTcpSocket s;
+    s.connectToHost(QHostAddress::LocalHost, server->port());
+    QTRY_COMPARE(s.state(), QAbstractSocket::ConnectedState);
+    QSignalSpy sent(session, &session::RotatorSession::bytesSent);
+    QCOMPARE(ask(s, "P 500 20"), QByteArray("RPRT -1\n")); // Hamlib 4.5's answer
+    QCOMPARE(ask(s, "P 10 95"), QByteArray("RPRT -1\n"));
+    QCOMPARE(ask(s, "P 10 -5"), QByteArray("RPRT -1\n"));
+    for (const auto &args : sent)
+        QVERIFY2(!args.at(0).toByteArray().startsWith("AZ") || args.at(0).toByteArray() == "AZ EL\n",
+                 args.at(0).toByteArray().constData());
+}
+
+void RotctldServerTest::deadbandSuppressesRepeatedTargets()
+{
+    server->setDeadband(0.5);
+    QTcpSocket s;
+    s.connectToHost(QHostAddress::LocalHost, server->port());
+    QTRY_COMPARE(s.state(), QAbstractSocket::ConnectedState);
+    QSignalSpy sent(session, &session::RotatorSession::bytesSent);
+    auto gotoCount = [&] {
+        int n = 0;
+        for (const auto &args : sent)
+            n += args.at(0).toByteArray().startsWith("AZ") && args.at(0).toByteArray() != "AZ EL\n";
+        return n;
+    };
+    QCOMPARE(ask(s, "P 100.00 30.00"), QByteArray("RPRT 0\n"));
+    QCOMPARE(ask(s, "P 100.20 30.10"), QByteArray("RPRT 0\n")); // within 0.5°: not re-sent
+    QCOMPARE(ask(s, "P 100.30 29.80"), QByteArray("RPRT 0\n"));
+    QCOMPARE(gotoCount(), 1);
+    QCOMPARE(server->movesSuppressedByDeadband(), 2);
+    QCOMPARE(ask(s, "P 101.00 30.00"), QByteArray("RPRT 0\n")); // outside: sent
+    QCOMPARE(gotoCount(), 2);
+    // Across north the deadband is measured as a bearing.
+    QCOMPARE(ask(s, "P 359.90 30.00"), QByteArray("RPRT 0\n"));
+    QCOMPARE(ask(s, "P 0.10 30.00"), QByteArray("RPRT 0\n"));
+    QCOMPARE(gotoCount(), 3);
+}
+
+void RotctldServerTest::overlapPicksTheShortestLegalPath()
+{
+    model::RotatorProfile p;
+    p.uri = "sim:?az_max=450&el_max=180";
+    p.limits.azMax = 450;
+    p.limits.elMax = 180;
+    QVERIFY(connectSession(p));
+    QTcpSocket s;
+    s.connectToHost(QHostAddress::LocalHost, server->port());
+    QTRY_COMPARE(s.state(), QAbstractSocket::ConnectedState);
+    QCOMPARE(ask(s, "P 350 10"), QByteArray("RPRT 0\n"));
+    QTRY_VERIFY_WITH_TIMEOUT(std::abs(session->azimuth() - 350) < 0.5, 30000);
+    QSignalSpy sent(session, &session::RotatorSession::bytesSent);
+    QCOMPARE(ask(s, "P 10 10"), QByteArray("RPRT 0\n"));
+    bool through = false;
+    for (const auto &args : sent)
+        through = through || args.at(0).toByteArray() == "AZ370.00 EL10.00\n";
+    QVERIFY(through); // 20° on through the overlap, not 340° back
+    // Trackers see the bearing, not 370.
+    QTRY_VERIFY_WITH_TIMEOUT(std::abs(session->azimuth() - 370) < 0.5, 30000);
+    const QList<QByteArray> lines = ask(s, "p").trimmed().split('\n');
+    QVERIFY(std::abs(lines[0].toDouble() - 10) < 0.6);
+}
+
+void RotctldServerTest::operatorHoldRefusesRemoteMovesButNotStop()
+{
+    QTcpSocket s;
+    s.connectToHost(QHostAddress::LocalHost, server->port());
+    QTRY_COMPARE(s.state(), QAbstractSocket::ConnectedState);
+    QSignalSpy held(server, &bridge::RotctldServer::remoteHeldChanged);
+    server->holdRemote();
+    QCOMPARE(held.count(), 1);
+    QCOMPARE(ask(s, "P 50 20"), QByteArray("RPRT -9\n"));
+    QCOMPARE(ask(s, "M 16 50"), QByteArray("RPRT -9\n"));
+    QCOMPARE(ask(s, "K"), QByteArray("RPRT -9\n"));
+    QCOMPARE(ask(s, "R 1"), QByteArray("RPRT -9\n"));
+    QCOMPARE(ask(s, "S"), QByteArray("RPRT 0\n"));
+    QVERIFY(ask(s, "p").count('\n') == 2); // reading is always fine
+    server->releaseRemote();
+    QCOMPARE(ask(s, "P 50 20"), QByteArray("RPRT 0\n"));
+}
+
+void RotctldServerTest::badClientsDoNotDisturbOthers()
+{
+    QTcpSocket good, flood, longLine, vanish;
+    for (QTcpSocket *s : {&good, &flood, &longLine, &vanish})
+        s->connectToHost(QHostAddress::LocalHost, server->port());
+    QTRY_COMPARE(server->clients().size(), 4);
+
+    // A 10 kB line: refused once, the connection stays usable.
+    QSignalSpy longReady(&longLine, &QTcpSocket::readyRead);
+    longLine.write(QByteArray(10 * 1024, 'x') + '\n');
+    QVERIFY(longReady.wait(5000));
+    QCOMPARE(longLine.readAll(), QByteArray("RPRT -1\n"));
+    QCOMPARE(ask(longLine, "S"), QByteArray("RPRT 0\n"));
+
+    // A client that vanishes mid-command.
+    vanish.write("P 10");
+    vanish.abort();
+
+    // A flood of 5000 queries in one go.
+    QByteArray many;
+    for (int i = 0; i < 5000; ++i)
+        many += "p\n";
+    flood.write(many);
+
+    // The good client is answered meanwhile, and the flood is answered in full.
+    for (int i = 0; i < 5; ++i)
+        QCOMPARE(ask(good, "p").count('\n'), 2);
+    QByteArray floodAnswers;
+    QTRY_VERIFY_WITH_TIMEOUT((floodAnswers += flood.readAll()).count('\n') == 10000, 20000);
+    QTRY_COMPARE(server->clients().size(), 3);
+    QVERIFY(ask(good, "_").startsWith("Slew rotator bridge"));
+}
+
+void RotctldServerTest::allowedClientList()
+{
+    server->setAllowedClients({QHostAddress("192.0.2.1")});
+    QTcpSocket s;
+    QSignalSpy gone(&s, &QTcpSocket::disconnected);
+    s.connectToHost(QHostAddress::LocalHost, server->port());
+    QVERIFY(gone.wait(5000));
+    QCOMPARE(server->clients().size(), 0);
+    server->setAllowedClients({QHostAddress::LocalHost});
+    QTcpSocket t;
+    t.connectToHost(QHostAddress::LocalHost, server->port());
+    QTRY_COMPARE(t.state(), QAbstractSocket::ConnectedState);
+    QCOMPARE(ask(t, "S"), QByteArray("RPRT 0\n"));
+}
+
+QTEST_MAIN(RotctldServerTest)
+#include "tst_rotctldserver.moc"
