@@ -59,7 +59,9 @@ void SimulatorConnection::readDevice()
 {
     if (!m_device)
         return;
-    // Read in bounded pieces; whatever is left raises readyRead again.
+    // Read in bounded pieces so a flood cannot starve the event loop; a
+    // socket does not signal again for bytes already buffered, so what is
+    // left is picked up by a queued call.
     char buffer[kReadChunk];
     for (int round = 0; round < 16 && m_device->bytesAvailable() > 0; ++round) {
         const qint64 n = m_device->read(buffer, sizeof buffer);
@@ -67,6 +69,8 @@ void SimulatorConnection::readDevice()
             break;
         receive(QByteArrayView(buffer, n));
     }
+    if (m_device && m_device->bytesAvailable() > 0)
+        QMetaObject::invokeMethod(this, &SimulatorConnection::readDevice, Qt::QueuedConnection);
 }
 
 void SimulatorConnection::receive(QByteArrayView bytes)

@@ -20,6 +20,7 @@ namespace {
 // without bound: past this size the answers leave as a line of their own.
 constexpr qsizetype kMaxLineAnswers = 1024;
 constexpr qsizetype kMaxAlarmText = 32;
+constexpr int kMaxAlarmsPerChunk = 8;
 
 QByteArray printable(QByteArrayView raw)
 {
@@ -59,6 +60,8 @@ bool SimulatorFirmware::sendsAlarms() const
 QByteArray SimulatorFirmware::receive(QByteArrayView bytes)
 {
     QByteArray out;
+    m_alarmsThisChunk = 0;
+    m_suppressedAlarms = 0;
     m_parser.feed(bytes, [&](const Message &m) {
         handle(m, out);
         if (m.lineEnd)
@@ -68,6 +71,8 @@ QByteArray SimulatorFirmware::receive(QByteArrayView bytes)
         const char last = bytes.back();
         m_awaitingLineEnd = last == ' ' || last == '\t' || last == ';';
     }
+    if (m_suppressedAlarms > 0)
+        out += "ALsuppressed:" + QByteArray::number(m_suppressedAlarms) + '\n';
     return out;
 }
 
@@ -103,6 +108,12 @@ void SimulatorFirmware::alarm(const char *kind, QByteArrayView what, QByteArray 
 {
     if (!sendsAlarms())
         return;
+    // A barrage of garbage must not turn into a barrage of alarms that
+    // fills the line (and buries the answer to the next good query).
+    if (++m_alarmsThisChunk > kMaxAlarmsPerChunk) {
+        ++m_suppressedAlarms;
+        return;
+    }
     out += "AL";
     out += kind;
     out += ':';

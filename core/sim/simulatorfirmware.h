@@ -28,7 +28,8 @@ public:
     protocol::Dialect dialect() const { return m_dialect; }
 
     // Feeds bytes from the host; returns what the device answers to them
-    // (possibly nothing, possibly several lines).
+    // (possibly nothing, possibly several lines). At most a few alarms per
+    // call; the rest are counted and summarised as `ALsuppressed:n`.
     QByteArray receive(QByteArrayView bytes);
 
     // True when the input so far ended in a space: seeds/000 lets a command
@@ -64,6 +65,8 @@ private:
     protocol::Parser m_parser;
     QByteArray m_lineAnswers;
     bool m_awaitingLineEnd = false;
+    int m_alarmsThisChunk = 0;   // alarms raised by the bytes of one receive()
+    int m_suppressedAlarms = 0;  // past the cap, summarised in one line
 
     // Radio fields of Easycomm I/II: kept and read back, used for nothing.
     QHash<int, QByteArray> m_radio;

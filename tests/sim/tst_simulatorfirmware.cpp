@@ -162,6 +162,18 @@ private slots:
         QVERIFY(!moving.contains("VE"));
     }
 
+    void alarmFloodIsSummarised()
+    {
+        Bench b(Dialect::Easycomm3);
+        QByteArray input;
+        for (int i = 0; i < 20; ++i)
+            input += "QQ ";
+        const QByteArray out = b.send(input + "GE\n");
+        QCOMPARE(out.count("ALunknown:QQ\n"), 8);
+        QVERIFY2(out.endsWith("GE1\nALsuppressed:12\n"), out.constData());
+        QCOMPARE(b.counters.unknown, 20u);
+    }
+
     void garbageBarrageNeverBreaksAValidQuery()
     {
         Bench b(Dialect::Easycomm3);

@@ -1,0 +1,318 @@
+// slew-sim as a separate process over TCP: every command and status row of
+// seeds/000, several clients at once, faults from the command line, garbage,
+// and a clean stop on SIGINT / SIGTERM.
+#include "slewsimprocess.h"
+
+#include <QElapsedTimer>
+#include <QRandomGenerator>
+#include <QRegularExpression>
+#include <QTest>
+
+#include <csignal>
+
+namespace {
+
+double numberAfter(const QByteArray &reply, const QByteArray &prefix)
+{
+    const qsizetype at = reply.indexOf(prefix);
+    if (at < 0)
+        return qQNaN();
+    QByteArray rest = reply.mid(at + prefix.size());
+    for (char separator : {' ', '\n'}) {
+        if (const qsizetype end = rest.indexOf(separator); end >= 0)
+            rest.truncate(end);
+    }
+    return rest.trimmed().toDouble();
+}
+
+bool near(double value, double expected, double tolerance) { return qAbs(value - expected) <= tolerance; }
+
+} // namespace
+
+class TestSlewSimTcp : public QObject {
+    Q_OBJECT
+
+    SlewSimProcess m_sim;
+    SimClient m_client;
+
+    // Asks until the reply satisfies the check, or ten seconds pass.
+    template <typename Check>
+    bool eventually(const QByteArray &query, Check check, int lines = 1)
+    {
+        QElapsedTimer timer;
+        timer.start();
+        while (timer.elapsed() < 10000) {
+            if (check(m_client.ask(query, lines)))
+                return true;
+            QSignalSpy never(&m_client.socket(), &QTcpSocket::disconnected);
+            never.wait(50); // poll at ~20 Hz like a client would
+        }
+        return false;
+    }
+
+private slots:
+    void initTestCase()
+    {
+        QVERIFY2(m_sim.start({"--listen", "127.0.0.1:0", "--dialect", "easycomm3", "--max-speed", "30"}),
+                 qPrintable(m_sim.error()));
+        QVERIFY2(m_sim.readyLine().contains("tcp 127.0.0.1:"), qPrintable(m_sim.readyLine()));
+        QVERIFY(m_sim.port() != 0);
+        QVERIFY(m_client.connectTo(m_sim.port()));
+    }
+
+    void positionCommandsAndReports()
+    {
+        QCOMPARE(m_client.ask("AZ EL\n"), QByteArray("AZ0.00 EL0.00\n"));
+        m_client.socket().write("AZ12.5 EL7.25\n");
+        QCOMPARE(m_client.ask("CR10\nCR11\n", 2), QByteArray("CR10,12.50\nCR11,7.25\n"));
+        QVERIFY(eventually("AZ EL\n", [](const QByteArray &r) {
+            return near(numberAfter(r, "AZ"), 12.5, 0.05) && near(numberAfter(r, "EL"), 7.25, 0.05);
+        }));
+        QVERIFY(eventually("GS\n", [](const QByteArray &r) { return r == "GS1028\n"; }));
+        const QByteArray separate = m_client.ask("AZ\nEL\n", 2);
+        QVERIFY2(separate.startsWith("AZ12.") && separate.contains("\nEL7."), separate.constData());
+        QVERIFY(near(numberAfter(m_client.ask("IP3\n"), "IP3,"), 12.5, 0.05));
+        QVERIFY(near(numberAfter(m_client.ask("IP4\n"), "IP4,"), 7.25, 0.05));
+        // One decimal works as well as two.
+        m_client.socket().write("AZ13.0\n");
+        QVERIFY(eventually("AZ\n", [](const QByteArray &r) { return near(numberAfter(r, "AZ"), 13.0, 0.05); }));
+    }
+
+    void velocityCommandsStopsAndHold()
+    {
+        m_client.socket().write("VR5000\n");
+        QCOMPARE(m_client.ask("CR12\n"), QByteArray("CR12,5000.00\n"));
+        QVERIFY(eventually("IP7\n", [](const QByteArray &r) { return near(numberAfter(r, "IP7,"), 5.0, 0.1); }));
+        QCOMPARE(m_client.ask("GS\n").left(2), QByteArray("GS"));
+        QCOMPARE(int(numberAfter(m_client.ask("GS\n"), "GS")) & 0xff, 2);
+        QVERIFY(numberAfter(m_client.ask("IP5\n"), "IP5,") > 0);
+        // VL0 holds actively: still in velocity servo, at rest.
+        m_client.socket().write("VL0\n");
+        QVERIFY(eventually("IP7\n", [](const QByteArray &r) { return near(numberAfter(r, "IP7,"), 0.0, 0.02); }));
+        QCOMPARE(int(numberAfter(m_client.ask("GS\n"), "GS")) & 0xff, 2);
+        QCOMPARE(m_client.ask("CR9\n"), QByteArray("CR9,1.00\n"));
+        // SA releases: idle.
+        m_client.socket().write("SA\n");
+        QCOMPARE(int(numberAfter(m_client.ask("GS\n"), "GS")) & 0xff, 1);
+        QCOMPARE(m_client.ask("CR9\n"), QByteArray("CR9,2.00\n"));
+
+        m_client.socket().write("VU3000\n");
+        QCOMPARE(m_client.ask("CR13\n"), QByteArray("CR13,3000.00\n"));
+        QVERIFY(eventually("IP8\n", [](const QByteArray &r) { return near(numberAfter(r, "IP8,"), 3.0, 0.1); }));
+        QCOMPARE(int(numberAfter(m_client.ask("GS\n"), "GS")) >> 8, 2);
+        QVERIFY(numberAfter(m_client.ask("IP6\n"), "IP6,") > 0);
+        m_client.socket().write("VD3000\n");
+        QVERIFY(eventually("IP8\n", [](const QByteArray &r) { return near(numberAfter(r, "IP8,"), -3.0, 0.1); }));
+        QCOMPARE(m_client.ask("VD\n"), QByteArray("VD3000\n"));
+        m_client.socket().write("SE\n");
+        QCOMPARE(int(numberAfter(m_client.ask("GS\n"), "GS")) >> 8, 1);
+        QVERIFY(eventually("IP8\n", [](const QByteArray &r) { return near(numberAfter(r, "IP8,"), 0.0, 0.02); }));
+        m_client.socket().write("VL2000\n");
+        QCOMPARE(m_client.ask("VL\nCR12\n", 2), QByteArray("VL2000\nCR12,-2000.00\n"));
+        m_client.socket().write("SA\n");
+    }
+
+    void configRegistersReadBack()
+    {
+        const double values[] = {31.5, 1.25, 12.0, 28.0, 0.5, 9.75, 5.0, 4.0};
+        for (int n = 1; n <= 8; ++n)
+            m_client.socket().write("CW" + QByteArray::number(n) + ',' + QByteArray::number(values[n - 1]) + '\n');
+        for (int n = 1; n <= 8; ++n) {
+            const QByteArray reply = m_client.ask("CR" + QByteArray::number(n) + '\n');
+            QVERIFY2(reply.startsWith("CR" + QByteArray::number(n) + ','), reply.constData());
+            QCOMPARE(numberAfter(reply, ","), values[n - 1]);
+        }
+        QCOMPARE(m_client.ask("CW9,1\n"), QByteArray("ALlimit:CW9,1\n"));
+        QCOMPARE(m_client.ask("CW1,-3\n"), QByteArray("ALlimit:CW1,-3\n"));
+        QCOMPARE(m_client.ask("CR1\n"), QByteArray("CR1,31.500\n"));
+        // Back to the defaults, so that the moves below settle as well as they should.
+        m_client.socket().write("CW1,40\nCW2,2\nCW3,20\nCW4,40\nCW5,2\nCW6,20\n");
+        QCOMPARE(m_client.ask("CR6\n"), QByteArray("CR6,20.000\n"));
+    }
+
+    void statusInputsAndVersion()
+    {
+        const QByteArray all = m_client.ask("IP0\nIP1\nIP2\nIP5\nIP6\nVE\nGE\n\\?ENC\n", 8);
+        const QList<QByteArray> lines = all.split('\n');
+        QVERIFY2(QRegularExpression("^IP0,\\d+\\.\\d\\d$").match(QString(lines[0])).hasMatch(), lines[0].constData());
+        QVERIFY(numberAfter(lines[0], "IP0,") >= 25.0);
+        QVERIFY(QRegularExpression("^IP1,[0-3]$").match(QString(lines[1])).hasMatch());
+        QVERIFY(QRegularExpression("^IP2,[0-3]$").match(QString(lines[2])).hasMatch());
+        QVERIFY(QRegularExpression("^IP5,\\d+$").match(QString(lines[3])).hasMatch());
+        QVERIFY(QRegularExpression("^IP6,\\d+$").match(QString(lines[4])).hasMatch());
+        QCOMPARE(lines[5], QByteArray("VESlewSim-1.0"));
+        QCOMPARE(lines[6], QByteArray("GE1"));
+        QVERIFY2(QRegularExpression("^\\\\\\?ENC-?\\d+,-?\\d+,-?\\d+,-?\\d+$").match(QString(lines[7])).hasMatch(),
+                 lines[7].constData());
+    }
+
+    void parkAndReset()
+    {
+        m_client.socket().write("CW7,20\nCW8,3\nPARK\n");
+        QVERIFY(eventually("AZ EL\n", [](const QByteArray &r) {
+            return near(numberAfter(r, "AZ"), 20.0, 0.1) && near(numberAfter(r, "EL"), 3.0, 0.1);
+        }));
+        m_client.socket().write("RESET\n");
+        QCOMPARE(m_client.ask("GS\n"), QByteArray("GS514\n")); // both axes homing: 2 | 2 << 8
+        QVERIFY(eventually("AZ EL\n", [](const QByteArray &r) { return r == "AZ0.00 EL0.00\n"; }));
+        QVERIFY(eventually("GS\n", [](const QByteArray &r) { return r == "GS1028\n"; }));
+        QCOMPARE(m_client.ask("GE\n"), QByteArray("GE1\n"));
+    }
+
+    void refusedInputIsAlarmedAndMovesNothing()
+    {
+        QCOMPARE(m_client.ask("AZ361\n"), QByteArray("ALlimit:AZ361.00\n"));
+        QCOMPARE(m_client.ask("EL-1\n"), QByteArray("ALlimit:EL-1.00\n"));
+        QCOMPARE(m_client.ask("QQ\n"), QByteArray("ALunknown:QQ\n"));
+        QCOMPARE(m_client.ask("AZ1.2.3\n"), QByteArray("ALmalformed:AZ1.2.3\n"));
+        QCOMPARE(m_client.ask("CR10\n"), QByteArray("CR10,0.00\n"));
+    }
+
+    void severalClientsAtOnce()
+    {
+        SimClient a;
+        SimClient b;
+        QVERIFY(a.connectTo(m_sim.port()));
+        QVERIFY(b.connectTo(m_sim.port()));
+        a.socket().write("GE\n");
+        b.socket().write("VE\n");
+        QCOMPARE(b.readLines(1), QByteArray("VESlewSim-1.0\n"));
+        QCOMPARE(a.readLines(1), QByteArray("GE1\n"));
+        a.socket().write("CW7,33\n");
+        QCOMPARE(b.ask("CR7\n"), QByteArray("CR7,33.00\n")); // one rotator behind both
+        // A half line on one connection does not disturb the other.
+        a.socket().write("AZ");
+        QCOMPARE(b.ask("GE\n"), QByteArray("GE1\n"));
+        QCOMPARE(a.ask(" EL\n"), QByteArray("AZ0.00 EL0.00\n"));
+    }
+
+    void garbageBarrageThenAValidQuery()
+    {
+        SimClient c;
+        QVERIFY(c.connectTo(m_sim.port()));
+        QRandomGenerator rng(7);
+        QByteArray junk(512 * 1024, '\0');
+        for (char &ch : junk)
+            ch = char(rng.bounded(256));
+        c.socket().write(junk);
+        c.socket().write("\nGE\n");
+        // Alarms come first; the answer follows them.
+        QByteArray line;
+        for (int i = 0; i < 200000 && !line.startsWith("GE"); ++i) {
+            line = c.readLines(1);
+            if (line.isEmpty())
+                break;
+        }
+        QCOMPARE(line, QByteArray("GE1\n"));
+        QCOMPARE(m_client.ask("GE\n"), QByteArray("GE1\n"));
+    }
+
+    void cleanStopOnSigterm()
+    {
+        QCOMPARE(m_sim.stop(), 0);
+        QVERIFY(m_sim.standardError().contains("rejected"));
+    }
+
+    void cleanStopOnSigint()
+    {
+        SlewSimProcess sim;
+        QVERIFY2(sim.start({"--listen", "127.0.0.1:0"}), qPrintable(sim.error()));
+        QSignalSpy finished(sim.process(), &QProcess::finished);
+        ::kill(pid_t(sim.process()->processId()), SIGINT);
+        QVERIFY(finished.wait(5000));
+        QCOMPARE(sim.process()->exitStatus(), QProcess::NormalExit);
+        QCOMPARE(sim.process()->exitCode(), 0);
+    }
+
+    void badFlagIsAClearError()
+    {
+        SlewSimProcess sim;
+        QVERIFY(!sim.start({"--listen", "127.0.0.1:0", "--az-max", "500"}));
+        QVERIFY2(sim.error().contains("az_max"), qPrintable(sim.error()));
+    }
+
+    void unsolicitedPushes()
+    {
+        SlewSimProcess sim;
+        QVERIFY2(sim.start({"--listen", "127.0.0.1:0", "--unsolicited"}), qPrintable(sim.error()));
+        SimClient c;
+        QVERIFY(c.connectTo(sim.port()));
+        const QByteArray first = c.readLines(3);
+        QCOMPARE(first, QByteArray("AZ0.00\nEL0.00\nIP0,25.00\n"));
+        c.socket().write("AZ5\n");
+        QByteArray seen;
+        while (!seen.contains("GS262\n")) {
+            const QByteArray line = c.readLines(1);
+            QVERIFY(!line.isEmpty());
+            seen += line;
+        }
+        QVERIFY(seen.contains("CR10,5.00\n"));
+        QVERIFY(seen.contains("VESlewSim-1.0\n"));
+    }
+
+    void faultsFromTheCommandLine_data()
+    {
+        QTest::addColumn<QStringList>("flags");
+        QTest::addColumn<QByteArray>("command");
+        QTest::addColumn<QByteArray>("error");
+        QTest::addColumn<QByteArray>("status");
+        QTest::newRow("jam") << QStringList{"--jam", "az", "--jam-after", "0.3"} << QByteArray("AZ40\n")
+                             << QByteArray("GE8\n") << QByteArray("GS264\n");
+        QTest::newRow("frozen encoder") << QStringList{"--freeze", "el"} << QByteArray("EL30\n") << QByteArray("GE2\n")
+                                        << QByteArray("GS2049\n");
+        QTest::newRow("noisy encoder") << QStringList{"--noise-az", "0.5"} << QByteArray("GS\n") << QByteArray("GE2\n")
+                                       << QByteArray("GS264\n");
+        QTest::newRow("missing end stop") << QStringList{"--no-endstop", "az", "--start-el", "2"}
+                                          << QByteArray("RESET\n") << QByteArray("GE4\n") << QByteArray("GS1032\n");
+    }
+    void faultsFromTheCommandLine()
+    {
+        QFETCH(QStringList, flags);
+        QFETCH(QByteArray, command);
+        QFETCH(QByteArray, error);
+        QFETCH(QByteArray, status);
+        SlewSimProcess sim;
+        QVERIFY2(sim.start(QStringList{"--listen", "127.0.0.1:0"} + flags), qPrintable(sim.error()));
+        SimClient c;
+        QVERIFY(c.connectTo(sim.port()));
+        c.socket().write(command);
+        QElapsedTimer timer;
+        timer.start();
+        QByteArray got;
+        while (got != error && timer.elapsed() < 10000)
+            got = c.ask("GE\n");
+        QCOMPARE(got, error);
+        QVERIFY(eventuallyOn(c, "GS\n", status));
+    }
+
+    void latencyAndDroppedConnectionFromTheCommandLine()
+    {
+        SlewSimProcess sim;
+        QVERIFY2(sim.start({"--listen", "127.0.0.1:0", "--latency-ms", "200", "--drop-after", "1.5"}),
+                 qPrintable(sim.error()));
+        SimClient c;
+        QVERIFY(c.connectTo(sim.port()));
+        QElapsedTimer timer;
+        timer.start();
+        QCOMPARE(c.ask("GE\n"), QByteArray("GE1\n"));
+        QVERIFY(timer.elapsed() >= 190);
+        QSignalSpy gone(&c.socket(), &QTcpSocket::disconnected);
+        QVERIFY(gone.wait(5000));
+        QVERIFY(timer.elapsed() >= 1400);
+    }
+
+private:
+    static bool eventuallyOn(SimClient &c, const QByteArray &query, const QByteArray &expected)
+    {
+        QElapsedTimer timer;
+        timer.start();
+        while (timer.elapsed() < 10000) {
+            if (c.ask(query) == expected)
+                return true;
+        }
+        return false;
+    }
+};
+
+QTEST_GUILESS_MAIN(TestSlewSimTcp)
+#include "tst_slewsimtcp.moc"
