@@ -1,0 +1,126 @@
+// slew: the operator window. Argument parsing and wiring only; everything
+// else lives in slewui and slewcore.
+
+#include "mainwindow.h"
+#include "windowsnapshot.h"
+
+#include "connectionbar.h"
+#include "protocol/dialect.h"
+#include "session/rotatorsession.h"
+#include "sim/simulatorscheme.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+
+#include <cstdio>
+#include <cstring>
+
+namespace {
+
+struct Arguments {
+    QString connectUri;                        // empty: the remembered connection, else the simulator
+    std::optional<slew::protocol::Dialect> dialect;
+    std::optional<std::pair<double, double>> gotoAzEl;
+    QString screenshot;
+    int settleMs = 3000;
+};
+
+// Returns an error message, or empty when the arguments are usable.
+QString parse(QCommandLineParser &parser, const QStringList &argv, Arguments &out)
+{
+    const QCommandLineOption connect(QStringLiteral("connect"),
+                                     QStringLiteral("Connect to URI at start (serial:/dev/ttyUSB0?baud=19200, "
+                                                    "tcp://host:port, sim:?az_max=450)."),
+                                     QStringLiteral("URI"));
+    const QCommandLineOption dialect(QStringLiteral("dialect"),
+                                     QStringLiteral("Dialect: easycomm1, easycomm2, easycomm3, satnogs."),
+                                     QStringLiteral("name"));
+    const QCommandLineOption gotoOption(QStringLiteral("goto"),
+                                        QStringLiteral("Once connected, move to this position."),
+                                        QStringLiteral("az,el"));
+    const QCommandLineOption screenshot(QStringLiteral("screenshot"),
+                                        QStringLiteral("Render the window to a PNG after the settle time, then exit."),
+                                        QStringLiteral("FILE.png"));
+    const QCommandLineOption settle(QStringLiteral("settle-ms"),
+                                    QStringLiteral("How long to run before the screenshot (default 3000)."),
+                                    QStringLiteral("ms"));
+    parser.setApplicationDescription(QStringLiteral("Slew: controller for Easycomm az/el antenna rotators."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    parser.addOptions({connect, dialect, gotoOption, screenshot, settle});
+    parser.process(argv);
+
+    out.connectUri = parser.value(connect);
+    if (parser.isSet(dialect)) {
+        out.dialect = slew::protocol::dialectFromName(parser.value(dialect));
+        if (!out.dialect)
+            return QStringLiteral("unknown dialect '%1'").arg(parser.value(dialect));
+    }
+    if (parser.isSet(gotoOption)) {
+        const QStringList parts = parser.value(gotoOption).split(QLatin1Char(','));
+        bool okAz = false, okEl = false;
+        if (parts.size() == 2)
+            out.gotoAzEl = std::pair{parts[0].toDouble(&okAz), parts[1].toDouble(&okEl)};
+        if (!okAz || !okEl)
+            return QStringLiteral("--goto wants az,el (e.g. 210,35)");
+    }
+    out.screenshot = parser.value(screenshot);
+    if (parser.isSet(settle)) {
+        bool ok = false;
+        out.settleMs = parser.value(settle).toInt(&ok);
+        if (!ok || out.settleMs < 0)
+            return QStringLiteral("--settle-ms wants a number of milliseconds");
+    }
+    return {};
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    // A screenshot needs no display: choose the offscreen platform before
+    // the application object picks one.
+    for (int i = 1; i < argc; ++i) {
+        if (std::strncmp(argv[i], "--screenshot", 12) == 0 && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+            qputenv("QT_QPA_PLATFORM", "offscreen");
+    }
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName(QStringLiteral("Slew"));
+    QApplication::setApplicationName(QStringLiteral("slew"));
+    QApplication::setApplicationVersion(QStringLiteral("0.1.0"));
+    slew::sim::registerSimulatorScheme();
+
+    QCommandLineParser parser;
+    Arguments args;
+    if (const QString error = parse(parser, app.arguments(), args); !error.isEmpty()) {
+        std::fprintf(stderr, "slew: %s\n", qPrintable(error));
+        return 2;
+    }
+
+    slew::session::RotatorSession session;
+    slew::ui::MainWindow window(&session);
+    window.show();
+
+    QString uri = args.connectUri;
+    auto dialect = args.dialect;
+    if (uri.isEmpty()) {
+        uri = slew::ui::ConnectionBar::rememberedUri();
+        if (!dialect)
+            dialect = slew::ui::ConnectionBar::rememberedDialect();
+    }
+    if (uri.isEmpty())
+        uri = QStringLiteral("sim:");
+    if (args.gotoAzEl) {
+        QObject::connect(&session, &slew::session::RotatorSession::capabilitiesChanged, &session,
+                         [&session, target = *args.gotoAzEl, sent = false](const auto &caps) mutable {
+                             if (caps.probed && !sent) {
+                                 sent = true;
+                                 session.gotoPosition(target.first, target.second);
+                             }
+                         });
+    }
+    window.connectTo(uri, dialect);
+    if (!args.screenshot.isEmpty())
+        slew::ui::scheduleWindowSnapshot(&window, args.screenshot, args.settleMs);
+    return app.exec();
+}

@@ -1,0 +1,38 @@
+#include "alarmbanner.h"
+
+#include <QHBoxLayout>
+#include <QLabel>
+
+namespace slew::ui {
+
+AlarmBanner::AlarmBanner(QWidget *parent) : QWidget(parent)
+{
+    setObjectName(QStringLiteral("alarmBanner"));
+    setAttribute(Qt::WA_StyledBackground);
+    setStyleSheet(QStringLiteral("#alarmBanner{background:#b71c1c;} QLabel{color:white;font-weight:bold;}"));
+    m_text = new QLabel;
+    m_text->setObjectName(QStringLiteral("alarmText"));
+    m_text->setWordWrap(true);
+    auto *icon = new QLabel(QStringLiteral("⚠"));
+    QFont f = icon->font();
+    f.setPointSizeF(f.pointSizeF() * 1.5);
+    icon->setFont(f);
+    auto *layout = new QHBoxLayout(this);
+    layout->setContentsMargins(10, 6, 10, 6);
+    layout->addWidget(icon);
+    layout->addWidget(m_text, 1);
+    setVisible(false);
+}
+
+QString AlarmBanner::text() const
+{
+    return m_text->text();
+}
+
+void AlarmBanner::showAlarms(const QStringList &alarms)
+{
+    m_text->setText(alarms.join(QStringLiteral("   ·   ")));
+    setVisible(!alarms.isEmpty());
+}
+
+} // namespace slew::ui

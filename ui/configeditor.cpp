@@ -1,0 +1,312 @@
+#include "configeditor.h"
+
+#include "model/rotatorlimits.h"
+
+#include <QFileDialog>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QRegularExpression>
+#include <QScrollArea>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace slew::ui {
+
+using session::RotatorSession;
+
+namespace {
+
+constexpr int kFirstReadOnly = 9; // CR9 control mode, CR10..13 commanded values
+constexpr int kLastKnown = 13;
+constexpr double kReadBackTolerance = 0.006; // controllers answer with two decimals
+
+QString registerName(int reg)
+{
+    static const char *names[] = {"",        "Az P gain",    "Az I gain",    "Az D gain",    "El P gain",
+                                  "El I gain", "El D gain",    "Park az (°)",  "Park el (°)",  "Control mode",
+                                  "Commanded az", "Commanded el", "Commanded az speed", "Commanded el speed"};
+    return reg >= 1 && reg <= kLastKnown ? QObject::tr(names[reg]) : QObject::tr("Register %1").arg(reg);
+}
+
+bool sameValue(const QString &a, const QString &b)
+{
+    bool okA = false, okB = false;
+    const double x = a.trimmed().toDouble(&okA), y = b.trimmed().toDouble(&okB);
+    if (okA && okB)
+        return std::abs(x - y) <= kReadBackTolerance;
+    return a.trimmed() == b.trimmed();
+}
+
+} // namespace
+
+ConfigEditor::ConfigEditor(RotatorSession *session, QWidget *parent) : QWidget(parent), m_session(session)
+{
+    setObjectName(QStringLiteral("configEditor"));
+    auto *table = new QWidget;
+    m_grid = new QGridLayout(table);
+    m_grid->setColumnStretch(2, 1);
+    int col = 0;
+    for (const QString &h : {tr("Reg"), tr("Name"), tr("New value"), tr("Device"), tr("State")}) {
+        auto *l = new QLabel(QStringLiteral("<b>%1</b>").arg(h));
+        m_grid->addWidget(l, 0, col++);
+    }
+    for (int reg = 1; reg <= kLastKnown; ++reg)
+        rowFor(reg);
+    auto *scroll = new QScrollArea;
+    scroll->setWidget(table);
+    scroll->setWidgetResizable(true);
+
+    auto button = [this](const QString &text, const QString &name) {
+        auto *b = new QPushButton(text);
+        b->setObjectName(name);
+        b->setAutoDefault(false);
+        return b;
+    };
+    QPushButton *apply = button(tr("Apply changes"), QStringLiteral("configApply"));
+    QPushButton *read = button(tr("Read device"), QStringLiteral("configRead"));
+    QPushButton *readOne = button(tr("Read register"), QStringLiteral("configReadRegister"));
+    QPushButton *importButton = button(tr("Import profile…"), QStringLiteral("configImport"));
+    QPushButton *exportButton = button(tr("Export profile…"), QStringLiteral("configExport"));
+    m_extra = new QSpinBox;
+    m_extra->setObjectName(QStringLiteral("configRegister"));
+    m_extra->setRange(1, 99);
+    m_extra->setValue(14);
+    m_message = new QLabel;
+    m_message->setObjectName(QStringLiteral("configMessage"));
+    m_message->setWordWrap(true);
+
+    auto *buttons = new QHBoxLayout;
+    buttons->addWidget(apply);
+    buttons->addWidget(read);
+    buttons->addSpacing(12);
+    buttons->addWidget(m_extra);
+    buttons->addWidget(readOne);
+    buttons->addStretch(1);
+    buttons->addWidget(importButton);
+    buttons->addWidget(exportButton);
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addWidget(scroll, 1);
+    layout->addLayout(buttons);
+    layout->addWidget(m_message);
+
+    connect(apply, &QPushButton::clicked, this, &ConfigEditor::apply);
+    connect(read, &QPushButton::clicked, this, &ConfigEditor::readAll);
+    connect(readOne, &QPushButton::clicked, this, [this] { readRegister(m_extra->value()); });
+    connect(importButton, &QPushButton::clicked, this, [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Import profile"), {}, tr("Profiles (*.json)"));
+        QString error;
+        if (!path.isEmpty() && !importProfile(path, &error))
+            say(error, true);
+    });
+    connect(exportButton, &QPushButton::clicked, this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export profile"), QStringLiteral("rotator.json"),
+                                                          tr("Profiles (*.json)"));
+        QString error;
+        if (!path.isEmpty())
+            say(exportProfile(path, &error) ? tr("Profile written to %1.").arg(path) : error, !error.isEmpty());
+    });
+    connect(session, &RotatorSession::configValueReceived, this, &ConfigEditor::onValue);
+    connect(session, &RotatorSession::requestFailed, this, &ConfigEditor::onRequestFailed);
+    connect(session, &RotatorSession::capabilitiesChanged, this, [this](const session::Capabilities &caps) {
+        // A fresh connection: read it when the editor is on screen.
+        if (caps.probed && caps.config && isVisible())
+            readAll();
+        m_readOnShow = !isVisible();
+    });
+}
+
+ConfigEditor::Row &ConfigEditor::rowFor(int reg)
+{
+    auto it = m_rows.find(reg);
+    if (it != m_rows.end())
+        return *it;
+    Row row;
+    const int line = m_grid->rowCount();
+    row.device = new QLabel(QStringLiteral("—"));
+    row.device->setObjectName(QStringLiteral("configDevice%1").arg(reg));
+    row.state = new QLabel;
+    row.state->setObjectName(QStringLiteral("configState%1").arg(reg));
+    m_grid->addWidget(new QLabel(QString::number(reg)), line, 0);
+    m_grid->addWidget(new QLabel(registerName(reg)), line, 1);
+    if (reg < kFirstReadOnly || reg > kLastKnown) {
+        row.edit = new QLineEdit;
+        row.edit->setObjectName(QStringLiteral("configValue%1").arg(reg));
+        connect(row.edit, &QLineEdit::textEdited, this, [this, reg] { onEdited(reg); });
+        m_grid->addWidget(row.edit, line, 2);
+    } else {
+        m_grid->addWidget(new QLabel(tr("read only")), line, 2);
+    }
+    m_grid->addWidget(row.device, line, 3);
+    m_grid->addWidget(row.state, line, 4);
+    return *m_rows.insert(reg, row);
+}
+
+ConfigEditor::FieldState ConfigEditor::fieldState(int reg) const
+{
+    return m_rows.contains(reg) ? m_rows[reg].fieldState : FieldState::Unknown;
+}
+
+QString ConfigEditor::deviceValue(int reg) const
+{
+    return m_rows.contains(reg) ? m_rows[reg].deviceText : QString();
+}
+
+void ConfigEditor::setState(int reg, FieldState s, const QString &detail)
+{
+    Row &row = rowFor(reg);
+    row.fieldState = s;
+    struct Look {
+        const char *text;
+        const char *colour;
+    };
+    static const Look looks[] = {{"", ""},           {"", ""},          {"changed", "#f2c03c"},
+                                 {"invalid", "#e54848"}, {"verifying…", "#9aa5b4"}, {"confirmed", "#4cd964"},
+                                 {"mismatch", "#e54848"}, {"no answer", "#e54848"}};
+    const Look &look = looks[int(s)];
+    row.state->setText(detail.isEmpty() ? tr(look.text) : QStringLiteral("%1: %2").arg(tr(look.text), detail));
+    row.state->setStyleSheet(*look.colour ? QStringLiteral("color:%1;").arg(QLatin1String(look.colour)) : QString());
+    if (row.edit) {
+        const bool marked = s == FieldState::Changed || s == FieldState::Invalid;
+        row.edit->setStyleSheet(marked ? QStringLiteral("QLineEdit{border:2px solid %1;}").arg(QLatin1String(look.colour))
+                                       : QString());
+    }
+}
+
+QString ConfigEditor::validate(int reg, const QString &text) const
+{
+    bool ok = false;
+    const double v = text.trimmed().toDouble(&ok);
+    if (!ok || !std::isfinite(v))
+        return tr("not a number");
+    const auto &limits = m_session->profile().limits;
+    if (reg >= 1 && reg <= 6 && v < 0)
+        return tr("gains are not negative");
+    if (reg == 7)
+        return model::chooseAzimuth(limits, v, std::nullopt).error;
+    if (reg == 8)
+        return model::checkElevation(limits, v);
+    return {};
+}
+
+void ConfigEditor::onEdited(int reg)
+{
+    Row &row = rowFor(reg);
+    const QString text = row.edit->text();
+    if (text.trimmed().isEmpty() || (!row.deviceText.isEmpty() && sameValue(text, row.deviceText))) {
+        setState(reg, row.deviceText.isEmpty() ? FieldState::Unknown : FieldState::Same);
+        return;
+    }
+    const QString error = validate(reg, text);
+    setState(reg, error.isEmpty() ? FieldState::Changed : FieldState::Invalid, error);
+}
+
+void ConfigEditor::onValue(int reg, const QString &text)
+{
+    Row &row = rowFor(reg);
+    row.deviceText = text.trimmed();
+    row.device->setText(row.deviceText);
+    if (row.fieldState == FieldState::Verifying) {
+        const bool same = sameValue(row.written, row.deviceText);
+        if (same && row.edit)
+            row.edit->setText(row.deviceText);
+        setState(reg, same ? FieldState::Confirmed : FieldState::Mismatched,
+                 same ? QString() : tr("device has %1").arg(row.deviceText));
+        row.written.clear();
+        return;
+    }
+    if (!row.edit || row.fieldState == FieldState::Changed || row.fieldState == FieldState::Invalid)
+        return; // keep the operator's edit
+    if (row.fieldState == FieldState::Unknown || row.fieldState == FieldState::Same)
+        row.edit->setText(row.deviceText);
+    if (row.fieldState == FieldState::Unknown)
+        setState(reg, FieldState::Same);
+}
+
+void ConfigEditor::onRequestFailed(const QString &request, const QString &reason)
+{
+    static const QRegularExpression configRead(QStringLiteral("^CR\\s*(\\d+)$"));
+    const auto match = configRead.match(request);
+    if (!match.hasMatch())
+        return;
+    const int reg = match.captured(1).toInt();
+    if (m_rows.contains(reg) && m_rows[reg].fieldState == FieldState::Verifying)
+        setState(reg, FieldState::Failed, reason);
+}
+
+void ConfigEditor::readAll()
+{
+    if (!m_session->isConnected()) {
+        say(tr("Not connected."), true);
+        return;
+    }
+    for (int reg : m_rows.keys()) {
+        if (reg < 10 || reg > 11) // CR10/CR11 are polled anyway
+            m_session->readConfig(reg);
+    }
+    say(tr("Reading %1 registers…").arg(m_rows.size()), false);
+}
+
+void ConfigEditor::readRegister(int reg)
+{
+    rowFor(reg);
+    if (m_session->readConfig(reg))
+        say(tr("Reading register %1…").arg(reg), false);
+}
+
+int ConfigEditor::apply()
+{
+    QStringList problems;
+    QList<int> toWrite;
+    for (auto it = m_rows.begin(); it != m_rows.end(); ++it) {
+        if (it->fieldState == FieldState::Invalid)
+            problems << tr("%1: %2").arg(registerName(it.key()), it->state->text());
+        else if (it->fieldState == FieldState::Changed)
+            toWrite << it.key();
+    }
+    if (!problems.isEmpty()) {
+        say(tr("Nothing was written. Fix first: %1").arg(problems.join(QStringLiteral("; "))), true);
+        return 0;
+    }
+    if (toWrite.isEmpty()) {
+        say(tr("Nothing changed."), false);
+        return 0;
+    }
+    int written = 0;
+    for (int reg : toWrite) {
+        Row &row = m_rows[reg];
+        const QString value = row.edit->text().trimmed();
+        if (!m_session->writeConfig(reg, value)) {
+            setState(reg, FieldState::Failed, tr("refused"));
+            continue;
+        }
+        row.written = value;
+        setState(reg, FieldState::Verifying);
+        m_session->readConfig(reg);
+        ++written;
+    }
+    say(tr("Wrote %1 register(s); reading them back…").arg(written), written == 0);
+    return written;
+}
+
+void ConfigEditor::say(const QString &text, bool error)
+{
+    m_message->setText(text);
+    m_message->setStyleSheet(error ? QStringLiteral("color:#e54848;") : QString());
+}
+
+void ConfigEditor::showEvent(QShowEvent *event)
+{
+    QWidget::showEvent(event);
+    if (m_readOnShow && m_session->isConnected() && m_session->capabilities().config) {
+        m_readOnShow = false;
+        readAll();
+    }
+}
+
+} // namespace slew::ui

@@ -1,0 +1,47 @@
+#pragma once
+// Azimuth and elevation fields checked against the profile's limits while the
+// operator types. A position outside them is shown as such and the Go button
+// stays off, so nothing out of range is ever sent.
+
+#include "session/rotatorsession.h"
+
+#include <QWidget>
+
+#include <optional>
+
+class QLabel;
+class QLineEdit;
+class QPushButton;
+
+namespace slew::ui {
+
+class GotoPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit GotoPanel(session::RotatorSession *session, QWidget *parent = nullptr);
+
+    struct Checked {
+        std::optional<double> azimuth; // the position the rotator would be sent to
+        std::optional<double> elevation;
+        QString message; // what is wrong, or what will happen
+        bool azimuthBad = false;
+        bool elevationBad = false;
+    };
+    // Parses and checks the fields as they stand (accepts ',' as the decimal point).
+    Checked check() const;
+
+public slots:
+    void setFields(double az, double el);
+    bool go(); // false, with the reason shown, when the fields are not a legal position
+
+private:
+    void revalidate();
+
+    session::RotatorSession *m_session;
+    QLineEdit *m_az;
+    QLineEdit *m_el;
+    QPushButton *m_go;
+    QLabel *m_message;
+};
+
+} // namespace slew::ui

@@ -1,0 +1,103 @@
+#include "jogpad.h"
+
+#include <QDoubleSpinBox>
+#include <QGridLayout>
+#include <QLabel>
+#include <QPushButton>
+
+namespace slew::ui {
+
+using session::Axes;
+using session::Axis;
+
+namespace {
+
+Axis axisOf(JogPad::Direction d)
+{
+    return d == JogPad::Left || d == JogPad::Right ? Axis::Azimuth : Axis::Elevation;
+}
+
+double signOf(JogPad::Direction d)
+{
+    return d == JogPad::Right || d == JogPad::Up ? 1.0 : -1.0;
+}
+
+} // namespace
+
+JogPad::JogPad(session::RotatorSession *session, QWidget *parent) : QWidget(parent), m_session(session)
+{
+    setObjectName(QStringLiteral("jogPad"));
+    m_speed = new QDoubleSpinBox;
+    m_speed->setObjectName(QStringLiteral("jogSpeed"));
+    m_speed->setRange(0.1, 30.0);
+    m_speed->setDecimals(1);
+    m_speed->setSingleStep(0.5);
+    m_speed->setValue(5.0);
+    m_speed->setSuffix(QStringLiteral(" °/s"));
+    m_speed->setToolTip(tr("Jog speed (controllers without velocity commands use their own)"));
+
+    auto *grid = new QGridLayout(this);
+    grid->setContentsMargins(0, 0, 0, 0);
+    grid->setSpacing(4);
+    grid->addWidget(makeButton(Up, QStringLiteral("▲"), QStringLiteral("jogUp")), 0, 1);
+    grid->addWidget(makeButton(Left, QStringLiteral("◀"), QStringLiteral("jogLeft")), 1, 0);
+    grid->addWidget(m_speed, 1, 1);
+    grid->addWidget(makeButton(Right, QStringLiteral("▶"), QStringLiteral("jogRight")), 1, 2);
+    grid->addWidget(makeButton(Down, QStringLiteral("▼"), QStringLiteral("jogDown")), 2, 1);
+    auto *hint = new QLabel(tr("hold to move · arrow keys"));
+    hint->setAlignment(Qt::AlignCenter);
+    hint->setEnabled(false);
+    grid->addWidget(hint, 3, 0, 1, 3);
+}
+
+QPushButton *JogPad::makeButton(Direction d, const QString &text, const QString &name)
+{
+    auto *b = new QPushButton(text);
+    b->setObjectName(name);
+    b->setAutoDefault(false);
+    b->setFocusPolicy(Qt::NoFocus); // keys go to KeyboardControl, not to a focused button
+    b->setMinimumSize(52, 40);
+    static const char *tips[] = {"Azimuth counter-clockwise", "Azimuth clockwise", "Elevation up", "Elevation down"};
+    b->setToolTip(tr(tips[d]));
+    connect(b, &QPushButton::pressed, this, [this, d] { press(d); });
+    connect(b, &QPushButton::released, this, [this, d] { release(d); });
+    m_buttons[d] = b;
+    return b;
+}
+
+double JogPad::speed() const
+{
+    return m_speed->value();
+}
+
+void JogPad::press(Direction d)
+{
+    if (m_held[d])
+        return;
+    m_held[d] = true;
+    m_buttons[d]->setDown(true);
+    m_session->moveAxis(axisOf(d), signOf(d) * speed());
+}
+
+void JogPad::release(Direction d)
+{
+    if (!m_held[d])
+        return;
+    m_held[d] = false;
+    m_buttons[d]->setDown(false);
+    // The opposite direction on the same axis may still be held: resume it.
+    const Direction opposite = Direction(d ^ 1);
+    if (m_held[opposite]) {
+        m_session->moveAxis(axisOf(opposite), signOf(opposite) * speed());
+        return;
+    }
+    m_session->stop(axisOf(d) == Axis::Azimuth ? Axes::Azimuth : Axes::Elevation);
+}
+
+void JogPad::releaseAll()
+{
+    for (Direction d : {Left, Right, Up, Down})
+        release(d);
+}
+
+} // namespace slew::ui

@@ -1,0 +1,101 @@
+#include "keyboardcontrol.h"
+
+#include "jogpad.h"
+#include "presetpanel.h"
+#include "stopbutton.h"
+
+#include <QAbstractSpinBox>
+#include <QApplication>
+#include <QComboBox>
+#include <QKeyEvent>
+#include <QLineEdit>
+#include <QPlainTextEdit>
+#include <QTextEdit>
+
+namespace slew::ui {
+
+namespace {
+
+std::optional<JogPad::Direction> jogDirection(int key)
+{
+    switch (key) {
+    case Qt::Key_Left: return JogPad::Left;
+    case Qt::Key_Right: return JogPad::Right;
+    case Qt::Key_Up: return JogPad::Up;
+    case Qt::Key_Down: return JogPad::Down;
+    default: return std::nullopt;
+    }
+}
+
+} // namespace
+
+KeyboardControl::KeyboardControl(QWidget *window, StopButton *stop, JogPad *jog, PresetPanel *presets, QObject *parent)
+    : QObject(parent), m_window(window), m_stop(stop), m_jog(jog), m_presets(presets)
+{
+    qApp->installEventFilter(this);
+    // Keys released while another application has focus never arrive here:
+    // losing focus must not leave an axis running.
+    connect(qApp, &QApplication::applicationStateChanged, this, [this](Qt::ApplicationState s) {
+        if (s != Qt::ApplicationActive)
+            m_jog->releaseAll();
+    });
+}
+
+bool KeyboardControl::isTyping() const
+{
+    QWidget *w = QApplication::focusWidget();
+    if (!w)
+        return false;
+    if (auto *line = qobject_cast<QLineEdit *>(w))
+        return !line->isReadOnly();
+    if (auto *combo = qobject_cast<QComboBox *>(w))
+        return combo->isEditable();
+    if (auto *text = qobject_cast<QPlainTextEdit *>(w))
+        return !text->isReadOnly();
+    if (auto *text = qobject_cast<QTextEdit *>(w))
+        return !text->isReadOnly();
+    return qobject_cast<QAbstractSpinBox *>(w) != nullptr;
+}
+
+bool KeyboardControl::eventFilter(QObject *watched, QEvent *event)
+{
+    const QEvent::Type type = event->type();
+    if (type != QEvent::KeyPress && type != QEvent::KeyRelease && type != QEvent::ShortcutOverride)
+        return false;
+    auto *widget = qobject_cast<QWidget *>(watched);
+    if (!widget || widget->window() != m_window)
+        return false;
+    auto *key = static_cast<QKeyEvent *>(event);
+    if (key->modifiers() & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier))
+        return false;
+    const bool typing = isTyping();
+    const int k = key->key();
+
+    if (k == Qt::Key_Escape || (k == Qt::Key_Space && !typing)) {
+        if (type == QEvent::ShortcutOverride) {
+            event->accept(); // keep a shortcut from taking it
+            return false;
+        }
+        if (type == QEvent::KeyPress && !key->isAutoRepeat())
+            m_stop->stopAll();
+        return true;
+    }
+    if (typing || type == QEvent::ShortcutOverride)
+        return false;
+    if (const auto d = jogDirection(k)) {
+        if (!key->isAutoRepeat()) {
+            if (type == QEvent::KeyPress)
+                m_jog->press(*d);
+            else
+                m_jog->release(*d);
+        }
+        return true;
+    }
+    if (type == QEvent::KeyPress && k >= Qt::Key_1 && k <= Qt::Key_9 && !key->isAutoRepeat()) {
+        m_presets->recall(k - Qt::Key_1);
+        return true;
+    }
+    return false;
+}
+
+} // namespace slew::ui

@@ -1,0 +1,193 @@
+#include "mainwindow.h"
+
+#include "alarmbanner.h"
+#include "alarmmonitor.h"
+#include "configeditor.h"
+#include "connectionbar.h"
+#include "eventlog.h"
+#include "gotopanel.h"
+#include "jogpad.h"
+#include "keyboardcontrol.h"
+#include "parkhomepanel.h"
+#include "polarplotwidget.h"
+#include "positionreadout.h"
+#include "presetpanel.h"
+#include "stopbutton.h"
+#include "targetconfirmation.h"
+#include "telemetrycharts.h"
+#include "telemetryrecorder.h"
+#include "trafficconsole.h"
+
+#include <QGroupBox>
+#include <QLabel>
+#include <QSplitter>
+#include <QStatusBar>
+#include <QTabWidget>
+#include <QVBoxLayout>
+
+namespace slew::ui {
+
+using session::RotatorSession;
+
+namespace {
+
+QGroupBox *group(const QString &title, QWidget *content)
+{
+    auto *box = new QGroupBox(title);
+    auto *l = new QVBoxLayout(box);
+    l->setContentsMargins(8, 6, 8, 8);
+    l->addWidget(content);
+    return box;
+}
+
+} // namespace
+
+MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(parent), m_session(session)
+{
+    setObjectName(QStringLiteral("mainWindow"));
+    setWindowTitle(tr("Slew"));
+    m_connection = new ConnectionBar(session);
+    m_banner = new AlarmBanner;
+    m_alarms = new AlarmMonitor(session, this);
+    m_recorder = new TelemetryRecorder(session, this);
+    m_plot = new PolarPlotWidget;
+    m_confirm = new TargetConfirmation;
+    m_readout = new PositionReadout(session);
+    m_goto = new GotoPanel(session);
+    m_jog = new JogPad(session);
+    m_stop = new StopButton(session);
+    m_parkHome = new ParkHomePanel(session);
+    m_presets = new PresetPanel(session);
+    m_charts = new TelemetryCharts(m_recorder);
+    m_config = new ConfigEditor(session);
+    m_traffic = new TrafficConsole(session);
+    m_log = new EventLog;
+
+    m_tabs = new QTabWidget;
+    m_tabs->setObjectName(QStringLiteral("mainTabs"));
+    m_tabs->addTab(m_charts, tr("Telemetry"));
+    m_tabs->addTab(m_config, tr("Configuration"));
+    m_tabs->addTab(m_traffic, tr("Traffic"));
+    m_tabs->addTab(m_log, tr("Events"));
+
+    auto *plotColumn = new QWidget;
+    auto *plotLayout = new QVBoxLayout(plotColumn);
+    plotLayout->setContentsMargins(0, 0, 0, 0);
+    plotLayout->addWidget(m_plot, 1);
+    plotLayout->addWidget(m_confirm);
+
+    auto *splitter = new QSplitter(Qt::Horizontal);
+    splitter->setObjectName(QStringLiteral("mainSplitter"));
+    splitter->addWidget(plotColumn);
+    splitter->addWidget(buildControlColumn());
+    splitter->addWidget(m_tabs);
+    splitter->setStretchFactor(0, 5);
+    splitter->setStretchFactor(1, 0);
+    splitter->setStretchFactor(2, 6);
+    splitter->setChildrenCollapsible(false);
+
+    auto *central = new QWidget;
+    auto *layout = new QVBoxLayout(central);
+    layout->setContentsMargins(6, 0, 6, 6);
+    layout->setSpacing(4);
+    layout->addWidget(m_connection);
+    layout->addWidget(m_banner);
+    layout->addWidget(splitter, 1);
+    setCentralWidget(central);
+
+    connect(m_alarms, &AlarmMonitor::alarmsChanged, m_banner, &AlarmBanner::showAlarms);
+    connect(m_alarms, &AlarmMonitor::eventLogged, m_log, &EventLog::addEvent);
+    connect(m_alarms, &AlarmMonitor::eventLogged, this,
+            [this](const QDateTime &, AlarmMonitor::Severity, const QString &text) {
+                statusBar()->showMessage(text, 8000);
+            });
+    connect(m_stop, &StopButton::stopped, m_jog, &JogPad::releaseAll);
+    connect(m_stop, &StopButton::stopped, m_parkHome, &ParkHomePanel::abandonHoming);
+    connect(m_stop, &StopButton::stopped, m_confirm, &TargetConfirmation::cancel);
+    connect(session, &RotatorSession::stateChanged, this, [this](RotatorSession::State s) {
+        if (s == RotatorSession::State::Disconnected)
+            m_jog->releaseAll();
+        setWindowTitle(s == RotatorSession::State::Disconnected ? tr("Slew")
+                                                                : tr("Slew — %1").arg(m_session->uri()));
+    });
+    connect(m_config, &ConfigEditor::profileChanged, this, &MainWindow::showProfile);
+    wirePlot();
+    showProfile();
+    m_keys = new KeyboardControl(this, m_stop, m_jog, m_presets, this);
+    resize(1440, 900);
+}
+
+QWidget *MainWindow::buildControlColumn()
+{
+    auto *column = new QWidget;
+    column->setObjectName(QStringLiteral("controlColumn"));
+    column->setMinimumWidth(300);
+    column->setMaximumWidth(380);
+    auto *l = new QVBoxLayout(column);
+    l->setContentsMargins(4, 0, 4, 0);
+    l->addWidget(group(tr("Position"), m_readout));
+    l->addWidget(group(tr("Go to"), m_goto));
+    l->addWidget(group(tr("Jog"), m_jog));
+    l->addWidget(m_stop);
+    l->addWidget(m_parkHome);
+    l->addWidget(group(tr("Presets"), m_presets), 1);
+    return column;
+}
+
+void MainWindow::wirePlot()
+{
+    connect(m_session, &RotatorSession::positionChanged, m_plot, &PolarPlotWidget::setActual);
+    connect(m_session, &RotatorSession::targetChanged, m_plot, &PolarPlotWidget::setTarget);
+    connect(m_session, &RotatorSession::commandedChanged, m_plot, &PolarPlotWidget::setCommanded);
+    connect(m_session, &RotatorSession::stateChanged, m_plot, [this](RotatorSession::State s) {
+        if (s == RotatorSession::State::Connecting)
+            m_plot->clearPositions();
+    });
+    connect(m_session, &RotatorSession::configValueReceived, m_plot, [this](int reg, const QString &text) {
+        // The device's own park registers are the truth once read.
+        bool ok = false;
+        const double v = text.toDouble(&ok);
+        if (!ok || (reg != 7 && reg != 8))
+            return;
+        const auto &p = m_session->profile();
+        m_plot->setPark(reg == 7 ? v : p.parkAz, reg == 8 ? v : p.parkEl);
+    });
+    connect(m_plot, &PolarPlotWidget::targetPicked, this, &MainWindow::onTargetPicked);
+    connect(m_confirm, &TargetConfirmation::pendingChanged, m_plot, &PolarPlotWidget::setPendingTarget);
+    connect(m_confirm, &TargetConfirmation::accepted, m_session,
+            [this](double az, double el) { m_session->gotoPosition(az, el); });
+}
+
+void MainWindow::onTargetPicked(double az, double el)
+{
+    const auto &limits = m_session->profile().limits;
+    const auto current = m_session->hasPosition() ? std::optional<double>(m_session->azimuth()) : std::nullopt;
+    const auto choice = model::chooseAzimuth(limits, az, current);
+    const QString elError = model::checkElevation(limits, el);
+    if (!choice.azimuth || !elError.isEmpty()) {
+        m_confirm->showProblem(!choice.azimuth ? choice.error : elError);
+        return;
+    }
+    m_goto->setFields(az, el);
+    if (m_confirm->confirmationWanted())
+        m_confirm->ask(az, el);
+    else
+        m_session->gotoPosition(az, el);
+}
+
+void MainWindow::showProfile()
+{
+    const auto &p = m_session->profile();
+    m_plot->setLimits(p.limits);
+    m_plot->setPark(p.parkAz, p.parkEl);
+}
+
+void MainWindow::connectTo(const QString &uri, std::optional<protocol::Dialect> dialect)
+{
+    m_connection->setUri(uri);
+    if (dialect)
+        m_connection->setDialect(*dialect);
+    m_connection->connectToRotator();
+}
+
+} // namespace slew::ui

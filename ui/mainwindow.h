@@ -1,0 +1,86 @@
+#pragma once
+// The operator window: connection bar and alarm banner on top; the polar
+// plot; the control column (position, go-to, jog, Stop, Park/Home, presets);
+// and tabs with the live charts, the config editor, the traffic console and
+// the event log. It only wires widgets to the session; it holds no protocol
+// state of its own.
+
+#include "session/rotatorsession.h"
+
+#include <QMainWindow>
+
+class QTabWidget;
+
+namespace slew::ui {
+
+class AlarmBanner;
+class AlarmMonitor;
+class ConfigEditor;
+class ConnectionBar;
+class EventLog;
+class GotoPanel;
+class JogPad;
+class KeyboardControl;
+class ParkHomePanel;
+class PolarPlotWidget;
+class PositionReadout;
+class PresetPanel;
+class StopButton;
+class TargetConfirmation;
+class TelemetryCharts;
+class TelemetryRecorder;
+class TrafficConsole;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    explicit MainWindow(session::RotatorSession *session, QWidget *parent = nullptr);
+
+    ConnectionBar *connectionBar() const { return m_connection; }
+    PolarPlotWidget *polarPlot() const { return m_plot; }
+    TargetConfirmation *targetConfirmation() const { return m_confirm; }
+    GotoPanel *gotoPanel() const { return m_goto; }
+    JogPad *jogPad() const { return m_jog; }
+    StopButton *stopButton() const { return m_stop; }
+    ParkHomePanel *parkHomePanel() const { return m_parkHome; }
+    PresetPanel *presetPanel() const { return m_presets; }
+    TelemetryCharts *telemetryCharts() const { return m_charts; }
+    ConfigEditor *configEditor() const { return m_config; }
+    TrafficConsole *trafficConsole() const { return m_traffic; }
+    AlarmBanner *alarmBanner() const { return m_banner; }
+    AlarmMonitor *alarmMonitor() const { return m_alarms; }
+    EventLog *eventLog() const { return m_log; }
+    QTabWidget *tabs() const { return m_tabs; }
+
+public slots:
+    // Fills the connection bar with this URI (and dialect) and connects.
+    void connectTo(const QString &uri, std::optional<slew::protocol::Dialect> dialect = std::nullopt);
+
+private:
+    QWidget *buildControlColumn();
+    void wirePlot();
+    void onTargetPicked(double az, double el);
+    void showProfile();
+
+    session::RotatorSession *m_session;
+    ConnectionBar *m_connection;
+    AlarmBanner *m_banner;
+    AlarmMonitor *m_alarms;
+    TelemetryRecorder *m_recorder;
+    PolarPlotWidget *m_plot;
+    TargetConfirmation *m_confirm;
+    PositionReadout *m_readout;
+    GotoPanel *m_goto;
+    JogPad *m_jog;
+    StopButton *m_stop;
+    ParkHomePanel *m_parkHome;
+    PresetPanel *m_presets;
+    TelemetryCharts *m_charts;
+    ConfigEditor *m_config;
+    TrafficConsole *m_traffic;
+    EventLog *m_log;
+    QTabWidget *m_tabs;
+    KeyboardControl *m_keys;
+};
+
+} // namespace slew::ui

@@ -1,0 +1,141 @@
+#include "parkhomepanel.h"
+
+#include <QGridLayout>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+
+namespace slew::ui {
+
+using session::RotatorSession;
+
+ParkHomePanel::ParkHomePanel(RotatorSession *session, QWidget *parent) : QWidget(parent), m_session(session)
+{
+    setObjectName(QStringLiteral("parkHomePanel"));
+    m_park = new QPushButton(tr("Park"));
+    m_park->setObjectName(QStringLiteral("parkButton"));
+    m_park->setToolTip(tr("Move to the park position"));
+    m_home = new QPushButton(tr("Home"));
+    m_home->setObjectName(QStringLiteral("homeButton"));
+    m_home->setToolTip(tr("Find the end stops and re-zero (RESET)"));
+    m_cancel = new QPushButton(tr("Cancel"));
+    m_cancel->setObjectName(QStringLiteral("homeCancel"));
+    m_cancel->setVisible(false);
+    m_progress = new QProgressBar;
+    m_progress->setObjectName(QStringLiteral("homeProgress"));
+    m_progress->setRange(0, 0); // how long homing takes is unknown: a busy bar
+    m_progress->setTextVisible(false);
+    m_progress->setMaximumHeight(10);
+    m_progress->setVisible(false);
+    m_message = new QLabel;
+    m_message->setObjectName(QStringLiteral("homeMessage"));
+    m_message->setWordWrap(true);
+    for (QPushButton *b : {m_park, m_home, m_cancel}) {
+        b->setAutoDefault(false);
+        b->setFocusPolicy(Qt::NoFocus);
+    }
+
+    auto *grid = new QGridLayout(this);
+    grid->setContentsMargins(0, 0, 0, 0);
+    grid->addWidget(m_park, 0, 0);
+    grid->addWidget(m_home, 0, 1);
+    grid->addWidget(m_cancel, 0, 2);
+    grid->addWidget(m_progress, 1, 0, 1, 3);
+    grid->addWidget(m_message, 2, 0, 1, 3);
+
+    m_timeout.setSingleShot(true);
+    m_timeout.setInterval(kHomingTimeoutMs);
+    connect(&m_timeout, &QTimer::timeout, this,
+            [this] { finish(false, tr("Homing did not finish within %1 s.").arg(kHomingTimeoutMs / 1000)); });
+    connect(m_park, &QPushButton::clicked, this, &ParkHomePanel::park);
+    connect(m_home, &QPushButton::clicked, this, &ParkHomePanel::home);
+    connect(m_cancel, &QPushButton::clicked, this, &ParkHomePanel::cancelHoming);
+    connect(session, &RotatorSession::statusChanged, this, &ParkHomePanel::onStatus);
+    connect(session, &RotatorSession::errorFlagsChanged, this, [this](int ge) {
+        if (m_homing && ge > 1 && (ge & session::ErrorHoming))
+            finish(false, tr("Homing failed: %1.").arg(session::describeErrorFlags(ge)));
+    });
+    connect(session, &RotatorSession::stateChanged, this, [this](RotatorSession::State s) {
+        if (m_homing && s != RotatorSession::State::Connected)
+            finish(false, tr("Homing interrupted: the link went down."));
+        updateEnabled();
+    });
+    connect(session, &RotatorSession::capabilitiesChanged, this, &ParkHomePanel::updateEnabled);
+    updateEnabled();
+}
+
+void ParkHomePanel::updateEnabled()
+{
+    const bool connected = m_session->isConnected();
+    m_park->setEnabled(connected && !m_homing);
+    const auto &caps = m_session->capabilities();
+    m_home->setEnabled(connected && !m_homing && (!caps.probed || caps.reset));
+}
+
+bool ParkHomePanel::park()
+{
+    const bool ok = m_session->park();
+    m_message->setText(ok ? tr("Parking at %1°, %2°.")
+                                .arg(m_session->profile().parkAz, 0, 'f', 1)
+                                .arg(m_session->profile().parkEl, 0, 'f', 1)
+                          : QString());
+    return ok;
+}
+
+bool ParkHomePanel::home()
+{
+    if (m_homing || !m_session->home())
+        return false;
+    m_homing = true;
+    m_sawMoving = false;
+    m_timeout.start();
+    m_progress->setVisible(true);
+    m_cancel->setVisible(true);
+    m_message->setText(tr("Homing: looking for the end stops…"));
+    updateEnabled();
+    return true;
+}
+
+void ParkHomePanel::onStatus(session::StatusWord status)
+{
+    if (!m_homing || !status.valid)
+        return;
+    if (status.anyError()) {
+        finish(false, tr("Homing failed: the controller reports an axis error."));
+        return;
+    }
+    if (status.anyMoving())
+        m_sawMoving = true;
+    else if (m_sawMoving)
+        finish(true, tr("Homed."));
+}
+
+void ParkHomePanel::cancelHoming()
+{
+    if (!m_homing)
+        return;
+    m_session->stop(session::Axes::Both);
+    finish(false, tr("Homing cancelled; the rotator was stopped."));
+}
+
+void ParkHomePanel::abandonHoming()
+{
+    if (m_homing)
+        finish(false, tr("Homing stopped."));
+}
+
+void ParkHomePanel::finish(bool ok, const QString &message)
+{
+    if (!m_homing)
+        return;
+    m_homing = false;
+    m_timeout.stop();
+    m_progress->setVisible(false);
+    m_cancel->setVisible(false);
+    m_message->setText(message);
+    m_message->setStyleSheet(ok ? QString() : QStringLiteral("color:#e54848;"));
+    updateEnabled();
+    emit homingFinished(ok, message);
+}
+
+} // namespace slew::ui

@@ -1,0 +1,44 @@
+#pragma once
+// Named positions: stored from where the rotator is now, recalled with one
+// click or the number key shown beside each (KeyboardControl). Kept in
+// QSettings, so they survive a restart.
+
+#include "model/presets.h"
+#include "session/rotatorsession.h"
+
+#include <QWidget>
+
+class QLabel;
+class QLineEdit;
+class QListWidget;
+class QPushButton;
+
+namespace slew::ui {
+
+class PresetPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit PresetPanel(session::RotatorSession *session, QWidget *parent = nullptr);
+
+    const model::PresetList &presets() const { return m_presets; }
+
+public slots:
+    bool recall(int index); // 0-based; key 1 recalls index 0
+    bool storeCurrent(const QString &name);
+    bool removeSelected();
+
+private:
+    void refresh();
+    void save() const;
+    void say(const QString &text, bool error);
+
+    session::RotatorSession *m_session;
+    model::PresetList m_presets;
+    QListWidget *m_list;
+    QLineEdit *m_name;
+    QPushButton *m_store;
+    QPushButton *m_remove;
+    QLabel *m_message;
+};
+
+} // namespace slew::ui

@@ -1,0 +1,28 @@
+#include "stopbutton.h"
+
+namespace slew::ui {
+
+StopButton::StopButton(session::RotatorSession *session, QWidget *parent)
+    : QPushButton(tr("STOP"), parent), m_session(session)
+{
+    setObjectName(QStringLiteral("stopButton"));
+    setToolTip(tr("Stop both axes now (Space or Esc)"));
+    setAutoDefault(false);
+    setFocusPolicy(Qt::NoFocus);
+    setMinimumHeight(56);
+    QFont f = font();
+    f.setPointSizeF(f.pointSizeF() * 1.6);
+    f.setBold(true);
+    setFont(f);
+    setStyleSheet(QStringLiteral("QPushButton{background:#c62828;color:white;border:1px solid #8e1c1c;border-radius:6px;}"
+                                 "QPushButton:pressed{background:#8e1c1c;}"));
+    connect(this, &QPushButton::clicked, this, &StopButton::stopAll);
+}
+
+bool StopButton::stopAll()
+{
+    emit stopped(); // first: a running jog or homing must not restart the motion
+    return m_session->stop(session::Axes::Both);
+}
+
+} // namespace slew::ui

@@ -1,0 +1,93 @@
+#include "targetconfirmation.h"
+
+#include <QCheckBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QSettings>
+
+namespace slew::ui {
+
+namespace {
+const char *kAskKey = "plot/confirmTarget";
+}
+
+TargetConfirmation::TargetConfirmation(QWidget *parent) : QWidget(parent)
+{
+    setObjectName(QStringLiteral("targetConfirmation"));
+    m_question = new QLabel(tr("Click the plot to pick a target."));
+    m_question->setObjectName(QStringLiteral("targetQuestion"));
+    m_go = new QPushButton(tr("Go"));
+    m_go->setObjectName(QStringLiteral("targetGo"));
+    m_cancel = new QPushButton(tr("Cancel"));
+    m_cancel->setObjectName(QStringLiteral("targetCancel"));
+    m_ask = new QCheckBox(tr("Ask before moving"));
+    m_ask->setObjectName(QStringLiteral("targetAsk"));
+    m_ask->setChecked(QSettings().value(QLatin1String(kAskKey), true).toBool());
+    for (QPushButton *b : {m_go, m_cancel}) {
+        b->setAutoDefault(false);
+        b->setFocusPolicy(Qt::NoFocus);
+    }
+    auto *layout = new QHBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_question, 1);
+    layout->addWidget(m_go);
+    layout->addWidget(m_cancel);
+    layout->addWidget(m_ask);
+    connect(m_go, &QPushButton::clicked, this, &TargetConfirmation::accept);
+    connect(m_cancel, &QPushButton::clicked, this, &TargetConfirmation::cancel);
+    connect(m_ask, &QCheckBox::toggled, this,
+            [](bool on) { QSettings().setValue(QLatin1String(kAskKey), on); });
+    setPending(std::nullopt);
+}
+
+bool TargetConfirmation::confirmationWanted() const
+{
+    return m_ask->isChecked();
+}
+
+void TargetConfirmation::setConfirmationWanted(bool on)
+{
+    m_ask->setChecked(on);
+}
+
+void TargetConfirmation::setPending(std::optional<QPointF> azEl)
+{
+    m_pending = azEl;
+    m_go->setEnabled(azEl.has_value());
+    m_cancel->setEnabled(azEl.has_value());
+    emit pendingChanged(azEl);
+}
+
+void TargetConfirmation::ask(double az, double el)
+{
+    m_question->setStyleSheet(QString());
+    m_question->setText(tr("Go to az %1°, el %2°?").arg(az, 0, 'f', 1).arg(el, 0, 'f', 1));
+    setPending(QPointF(az, el));
+}
+
+void TargetConfirmation::showProblem(const QString &text)
+{
+    m_question->setStyleSheet(QStringLiteral("color:#e54848;"));
+    m_question->setText(text);
+    setPending(std::nullopt);
+}
+
+void TargetConfirmation::accept()
+{
+    if (!m_pending)
+        return;
+    const QPointF p = *m_pending;
+    m_question->setText(tr("Going to az %1°, el %2°.").arg(p.x(), 0, 'f', 1).arg(p.y(), 0, 'f', 1));
+    setPending(std::nullopt);
+    emit accepted(p.x(), p.y());
+}
+
+void TargetConfirmation::cancel()
+{
+    m_question->setStyleSheet(QString());
+    m_question->setText(tr("Click the plot to pick a target."));
+    setPending(std::nullopt);
+}
+
+} // namespace slew::ui

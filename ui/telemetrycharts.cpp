@@ -1,0 +1,259 @@
+#include "telemetrycharts.h"
+
+#include <QChart>
+#include <QChartView>
+#include <QComboBox>
+#include <QDateTime>
+#include <QDateTimeAxis>
+#include <QFileDialog>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineSeries>
+#include <QMetaEnum>
+#include <QPushButton>
+#include <QSaveFile>
+#include <QValueAxis>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+
+namespace slew::ui {
+
+using Series = TelemetryRecorder::Series;
+
+namespace {
+
+constexpr qint64 kMinute = 60 * 1000;
+constexpr qint64 kMinWindow = kMinute;
+constexpr qint64 kMaxWindow = 24 * 60 * kMinute;
+
+// A status register holds its value until the next change: draw it so.
+QList<QPointF> asSteps(const QList<QPointF> &points, qint64 to)
+{
+    QList<QPointF> out;
+    out.reserve(points.size() * 2 + 1);
+    for (qsizetype i = 0; i < points.size(); ++i) {
+        if (i > 0)
+            out.append(QPointF(points[i].x(), points[i - 1].y()));
+        out.append(points[i]);
+    }
+    if (!points.isEmpty())
+        out.append(QPointF(double(to), points.back().y()));
+    return out;
+}
+
+} // namespace
+
+TelemetryCharts::TelemetryCharts(const TelemetryRecorder *recorder, QWidget *parent)
+    : QWidget(parent), m_recorder(recorder)
+{
+    setObjectName(QStringLiteral("telemetryCharts"));
+    m_window = new QComboBox;
+    m_window->setObjectName(QStringLiteral("chartWindow"));
+    for (auto [label, minutes] : {std::pair{tr("1 min"), 1}, {tr("5 min"), 5}, {tr("15 min"), 15}, {tr("1 h"), 60},
+                                  {tr("6 h"), 360}, {tr("24 h"), 1440}})
+        m_window->addItem(label, qint64(minutes) * kMinute);
+    m_window->setCurrentIndex(1);
+    m_pause = new QPushButton(tr("Pause"));
+    m_pause->setObjectName(QStringLiteral("chartPause"));
+    m_pause->setCheckable(true);
+    m_export = new QPushButton(tr("Export CSV…"));
+    m_export->setObjectName(QStringLiteral("chartExport"));
+    m_message = new QLabel;
+    m_message->setObjectName(QStringLiteral("chartMessage"));
+    for (QPushButton *b : {m_pause, m_export}) {
+        b->setAutoDefault(false);
+        b->setFocusPolicy(Qt::NoFocus);
+    }
+
+    auto *controls = new QHBoxLayout;
+    controls->addWidget(new QLabel(tr("Window")));
+    controls->addWidget(m_window);
+    controls->addWidget(m_pause);
+    controls->addWidget(m_export);
+    controls->addWidget(m_message, 1);
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->setSpacing(2);
+    layout->addLayout(controls);
+
+    const QColor az(0x4c, 0xd9, 0x64), el(0x3c, 0xb4, 0xf2), azCmd(0xf2, 0xc0, 0x3c), elCmd(0xc0, 0x7c, 0xf2);
+    addPanel(tr("Position"), QStringLiteral("°"),
+             {{Series::AzActual, az}, {Series::ElActual, el}, {Series::AzCommanded, azCmd}, {Series::ElCommanded, elCmd}});
+    addPanel(tr("Speed"), QStringLiteral("°/s"), {{Series::AzVelocity, az}, {Series::ElVelocity, el}});
+    addPanel(tr("Load"), QString(), {{Series::AzLoad, az}, {Series::ElLoad, el}});
+    addPanel(tr("Temperature"), QStringLiteral("°C"), {{Series::Temperature, QColor(0xf2, 0x9a, 0x3c)}});
+    addPanel(tr("Status"), QString(),
+             {{Series::AzStatus, az}, {Series::ElStatus, el}, {Series::ErrorFlags, QColor(0xe5, 0x48, 0x48)}}, true);
+    for (Panel &p : m_panels)
+        layout->addWidget(p.view, 1);
+
+    connect(m_window, &QComboBox::currentIndexChanged, this,
+            [this] { setWindowMs(m_window->currentData().toLongLong()); });
+    connect(m_pause, &QPushButton::toggled, this, &TelemetryCharts::setPaused);
+    connect(m_export, &QPushButton::clicked, this, &TelemetryCharts::chooseExportFile);
+    connect(&m_timer, &QTimer::timeout, this, &TelemetryCharts::redraw);
+    setWindowMs(m_windowMs);
+}
+
+void TelemetryCharts::addPanel(const QString &title, const QString &unit,
+                               std::initializer_list<std::pair<Series, QColor>> series, bool step)
+{
+    Panel p;
+    p.chart = new QChart;
+    p.chart->setTheme(QChart::ChartThemeDark);
+    p.chart->setBackgroundRoundness(0);
+    p.chart->setMargins(QMargins(2, 2, 2, 2));
+    p.chart->legend()->setAlignment(Qt::AlignRight);
+    QFont small = p.chart->legend()->font();
+    small.setPointSizeF(small.pointSizeF() * 0.85);
+    p.chart->legend()->setFont(small);
+    p.time = new QDateTimeAxis;
+    p.time->setFormat(QStringLiteral("HH:mm:ss"));
+    p.time->setLabelsFont(small);
+    p.time->setTickCount(6);
+    p.value = new QValueAxis;
+    p.value->setLabelsFont(small);
+    p.value->setTitleText(unit.isEmpty() ? title : QStringLiteral("%1 (%2)").arg(title, unit));
+    QFont titleFont = small;
+    titleFont.setBold(true);
+    p.value->setTitleFont(titleFont);
+    p.chart->addAxis(p.time, Qt::AlignBottom);
+    p.chart->addAxis(p.value, Qt::AlignLeft);
+    const QMetaEnum names = QMetaEnum::fromType<Series>();
+    for (const auto &[id, colour] : series) {
+        auto *line = new QLineSeries;
+        line->setObjectName(QStringLiteral("series%1").arg(QLatin1String(names.valueToKey(id))));
+        line->setName(TelemetryRecorder::seriesLabel(id));
+        QPen pen(colour, 1.5);
+        if (id == Series::AzCommanded || id == Series::ElCommanded)
+            pen.setStyle(Qt::DashLine);
+        line->setPen(pen);
+        p.chart->addSeries(line);
+        line->attachAxis(p.time);
+        line->attachAxis(p.value);
+        p.plotted.push_back({id, line, step});
+    }
+    p.view = new QChartView(p.chart);
+    p.view->setObjectName(QStringLiteral("chart%1").arg(title));
+    p.view->setRenderHint(QPainter::Antialiasing);
+    p.view->setMinimumHeight(110);
+    m_panels.push_back(p);
+}
+
+QLineSeries *TelemetryCharts::series(Series s) const
+{
+    for (const Panel &p : m_panels)
+        for (const Plotted &pl : p.plotted)
+            if (pl.id == s)
+                return pl.line;
+    return nullptr;
+}
+
+void TelemetryCharts::setWindowMs(qint64 ms)
+{
+    m_windowMs = std::clamp(ms, kMinWindow, kMaxWindow);
+    const int index = m_window->findData(m_windowMs);
+    if (index >= 0 && index != m_window->currentIndex())
+        m_window->setCurrentIndex(index);
+    // About one redraw per pixel's worth of time, within 4 Hz .. 0.2 Hz.
+    m_timer.start(int(std::clamp<qint64>(m_windowMs / 600, 250, 5000)));
+    const QString format = m_windowMs > 6 * 60 * kMinute ? QStringLiteral("HH:mm") : QStringLiteral("HH:mm:ss");
+    for (Panel &p : m_panels)
+        p.time->setFormat(format);
+    redraw();
+}
+
+void TelemetryCharts::setPaused(bool paused)
+{
+    m_paused = paused;
+    m_frozenAt = QDateTime::currentMSecsSinceEpoch();
+    m_pause->setChecked(paused);
+    m_pause->setText(paused ? tr("Resume") : tr("Pause"));
+    m_message->setText(paused ? tr("Paused: still recording") : QString());
+    if (!paused)
+        redraw();
+}
+
+void TelemetryCharts::redraw()
+{
+    if (m_paused)
+        return;
+    const qint64 to = QDateTime::currentMSecsSinceEpoch();
+    const qint64 from = to - m_windowMs;
+    for (Panel &p : m_panels)
+        redrawPanel(p, from, to);
+    ++m_redraws;
+}
+
+void TelemetryCharts::redrawPanel(Panel &panel, qint64 from, qint64 to)
+{
+    const auto &history = m_recorder->history();
+    const int columns = std::max(100, int(panel.chart->plotArea().width()));
+    double lo = INFINITY, hi = -INFINITY;
+    for (Plotted &pl : panel.plotted) {
+        QList<QPointF> points = history.decimated(pl.id, from, to, columns);
+        if (pl.step) {
+            // The value in force when the window opens is the last one before it.
+            if (points.isEmpty() || points.front().x() > from) {
+                std::optional<QPointF> before;
+                history.forEachSample(pl.id, from - kMaxWindow, from, [&](qint64 t, double v) { before = QPointF(t, v); });
+                if (before)
+                    points.prepend(QPointF(double(from), before->y()));
+            }
+            points = asSteps(points, to);
+        }
+        for (const QPointF &pt : points) {
+            lo = std::min(lo, pt.y());
+            hi = std::max(hi, pt.y());
+        }
+        pl.line->replace(points);
+    }
+    if (!(lo <= hi)) {
+        lo = 0;
+        hi = 1;
+    }
+    const double pad = std::max(0.5, (hi - lo) * 0.08);
+    panel.value->setRange(lo - pad, hi + pad);
+    panel.time->setRange(QDateTime::fromMSecsSinceEpoch(from), QDateTime::fromMSecsSinceEpoch(to));
+}
+
+bool TelemetryCharts::exportCsv(const QString &path, QString *error) const
+{
+    const qint64 to = m_paused ? m_frozenAt : QDateTime::currentMSecsSinceEpoch();
+    const qint64 from = to - m_windowMs;
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Text)) {
+        if (error)
+            *error = tr("cannot write %1: %2").arg(path, file.errorString());
+        return false;
+    }
+    file.write("time_utc,unix_ms,series,value\n");
+    const auto &history = m_recorder->history();
+    for (int s = 0; s < TelemetryRecorder::SeriesCount; ++s) {
+        const QByteArray name = TelemetryRecorder::seriesLabel(Series(s)).toUtf8();
+        history.forEachSample(s, from, to, [&](qint64 t, double v) {
+            file.write(QDateTime::fromMSecsSinceEpoch(t, Qt::UTC).toString(Qt::ISODateWithMs).toLatin1() + ','
+                       + QByteArray::number(t) + ',' + name + ',' + QByteArray::number(v, 'g', 8) + '\n');
+        });
+    }
+    if (!file.commit()) {
+        if (error)
+            *error = tr("cannot write %1: %2").arg(path, file.errorString());
+        return false;
+    }
+    return true;
+}
+
+void TelemetryCharts::chooseExportFile()
+{
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export telemetry"), QStringLiteral("telemetry.csv"),
+                                                      tr("CSV files (*.csv)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    m_message->setText(exportCsv(path, &error) ? tr("Exported to %1").arg(path) : error);
+}
+
+} // namespace slew::ui

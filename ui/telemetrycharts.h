@@ -1,0 +1,76 @@
+#pragma once
+// Live charts of the recorded telemetry: position actual vs commanded, speed
+// (IP7/IP8), load (IP5/IP6), temperature (IP0), and GS/GE as step lines.
+// The window runs from one minute to 24 hours; each redraw asks the history
+// for at most two points per pixel column, so a day of 10 Hz samples costs
+// no more to draw than a minute. Pausing freezes the view, not the record.
+
+#include "telemetryrecorder.h"
+
+#include <QTimer>
+#include <QWidget>
+
+#include <vector>
+
+class QComboBox;
+class QLabel;
+class QLineSeries;
+class QPushButton;
+class QChart;
+class QChartView;
+class QDateTimeAxis;
+class QValueAxis;
+
+namespace slew::ui {
+
+class TelemetryCharts : public QWidget {
+    Q_OBJECT
+public:
+    explicit TelemetryCharts(const TelemetryRecorder *recorder, QWidget *parent = nullptr);
+
+    qint64 windowMs() const { return m_windowMs; }
+    void setWindowMs(qint64 ms); // clamped to 1 min .. 24 h
+    bool isPaused() const { return m_paused; }
+    QLineSeries *series(TelemetryRecorder::Series s) const;
+    int redrawCount() const { return m_redraws; }
+
+    // Writes every sample of the current window as CSV (one row per sample:
+    // UTC time, ms since the epoch, series, value), atomically.
+    bool exportCsv(const QString &path, QString *error) const;
+
+public slots:
+    void setPaused(bool paused);
+    void redraw();
+
+private:
+    struct Plotted {
+        TelemetryRecorder::Series id;
+        QLineSeries *line;
+        bool step;
+    };
+    struct Panel {
+        QChart *chart;
+        QChartView *view;
+        QDateTimeAxis *time;
+        QValueAxis *value;
+        std::vector<Plotted> plotted;
+    };
+    void addPanel(const QString &title, const QString &unit,
+                  std::initializer_list<std::pair<TelemetryRecorder::Series, QColor>> series, bool step = false);
+    void redrawPanel(Panel &panel, qint64 from, qint64 to);
+    void chooseExportFile();
+
+    const TelemetryRecorder *m_recorder;
+    std::vector<Panel> m_panels;
+    QComboBox *m_window;
+    QPushButton *m_pause;
+    QPushButton *m_export;
+    QLabel *m_message;
+    QTimer m_timer;
+    qint64 m_windowMs = 5 * 60 * 1000;
+    qint64 m_frozenAt = 0; // the view's right edge while paused
+    bool m_paused = false;
+    int m_redraws = 0;
+};
+
+} // namespace slew::ui

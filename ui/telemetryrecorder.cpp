@@ -1,0 +1,90 @@
+#include "telemetryrecorder.h"
+
+#include <QDateTime>
+
+#include <cmath>
+
+namespace slew::ui {
+
+using session::RotatorSession;
+
+TelemetryRecorder::TelemetryRecorder(RotatorSession *session, QObject *parent) : QObject(parent)
+{
+    for (int s = 0; s < SeriesCount; ++s)
+        m_history.addSeries(seriesLabel(Series(s)));
+    m_lastValue.fill(session::kUnknown);
+
+    connect(session, &RotatorSession::positionChanged, this, [this](double az, double el, bool stale) {
+        if (stale)
+            return; // a stale position is the old one again, not a new sample
+        const qint64 now = QDateTime::currentMSecsSinceEpoch();
+        record(AzActual, now, az, false);
+        record(ElActual, now, el, false);
+        emit recorded();
+    });
+    connect(session, &RotatorSession::commandedChanged, this, [this](double az, double el) {
+        const qint64 now = QDateTime::currentMSecsSinceEpoch();
+        record(AzCommanded, now, az, false);
+        record(ElCommanded, now, el, false);
+        emit recorded();
+    });
+    connect(session, &RotatorSession::telemetryChanged, this, &TelemetryRecorder::onTelemetry);
+    connect(session, &RotatorSession::statusChanged, this, [this](session::StatusWord s) {
+        if (!s.valid)
+            return;
+        const qint64 now = QDateTime::currentMSecsSinceEpoch();
+        record(AzStatus, now, s.azimuth(), true);
+        record(ElStatus, now, s.elevation(), true);
+        emit recorded();
+    });
+    connect(session, &RotatorSession::errorFlagsChanged, this, [this](int ge) {
+        record(ErrorFlags, QDateTime::currentMSecsSinceEpoch(), ge, true);
+        emit recorded();
+    });
+}
+
+QString TelemetryRecorder::seriesLabel(Series s)
+{
+    switch (s) {
+    case AzActual: return tr("Az");
+    case ElActual: return tr("El");
+    case AzCommanded: return tr("Az commanded");
+    case ElCommanded: return tr("El commanded");
+    case AzVelocity: return tr("Az speed");
+    case ElVelocity: return tr("El speed");
+    case AzLoad: return tr("Az load");
+    case ElLoad: return tr("El load");
+    case Temperature: return tr("Temperature");
+    case AzStatus: return tr("GS az");
+    case ElStatus: return tr("GS el");
+    case ErrorFlags: return tr("GE");
+    default: return {};
+    }
+}
+
+void TelemetryRecorder::record(Series s, qint64 now, double value, bool onlyOnChange)
+{
+    if (!std::isfinite(value))
+        return;
+    const bool same = m_lastValue[s] == value;
+    if (same && (onlyOnChange || now - m_lastTime[s] < kRepeatMs))
+        return;
+    m_lastValue[s] = value;
+    m_lastTime[s] = now;
+    m_history.append(s, now, value);
+}
+
+void TelemetryRecorder::onTelemetry(const session::Telemetry &t)
+{
+    // Each IP reply re-sends the whole set; only values that moved (or have
+    // not been written for a second) become samples.
+    const qint64 now = QDateTime::currentMSecsSinceEpoch();
+    record(AzVelocity, now, t.azVelocity, false);
+    record(ElVelocity, now, t.elVelocity, false);
+    record(AzLoad, now, t.azLoad, false);
+    record(ElLoad, now, t.elLoad, false);
+    record(Temperature, now, t.temperature, false);
+    emit recorded();
+}
+
+} // namespace slew::ui

@@ -1,0 +1,45 @@
+#pragma once
+// Writes what the session reports into a TelemetryHistory: position, the
+// commanded position (CR10/CR11), speed, load, temperature, and the status
+// and error registers. Recording goes on while the charts are paused.
+
+#include "model/telemetryhistory.h"
+#include "session/rotatorsession.h"
+
+#include <QObject>
+
+#include <array>
+
+namespace slew::ui {
+
+class TelemetryRecorder : public QObject {
+    Q_OBJECT
+public:
+    enum Series {
+        AzActual, ElActual, AzCommanded, ElCommanded, AzVelocity, ElVelocity,
+        AzLoad, ElLoad, Temperature, AzStatus, ElStatus, ErrorFlags, SeriesCount
+    };
+    Q_ENUM(Series)
+
+    // A telemetry value that does not change is still recorded this often,
+    // so a flat line reaches the present.
+    static constexpr qint64 kRepeatMs = 1000;
+
+    explicit TelemetryRecorder(session::RotatorSession *session, QObject *parent = nullptr);
+
+    const model::TelemetryHistory &history() const { return m_history; }
+    static QString seriesLabel(Series s);
+
+signals:
+    void recorded(); // something was added
+
+private:
+    void record(Series s, qint64 now, double value, bool onlyOnChange);
+    void onTelemetry(const session::Telemetry &t);
+
+    model::TelemetryHistory m_history;
+    std::array<double, SeriesCount> m_lastValue{};
+    std::array<qint64, SeriesCount> m_lastTime{};
+};
+
+} // namespace slew::ui
