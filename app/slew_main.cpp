@@ -2,12 +2,13 @@
 // else lives in slewui and slewcore.
 
 #include "mainwindow.h"
+#include "slew_headless.h"
 #include "windowsnapshot.h"
 
 #include "connectionbar.h"
 #include "protocol/dialect.h"
 #include "session/rotatorsession.h"
-#include "sim/simulatorscheme.h"
+#include "linkschemes.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -78,6 +79,10 @@ QString parse(QCommandLineParser &parser, const QStringList &argv, Arguments &ou
 
 int main(int argc, char *argv[])
 {
+    // The station service needs no display, so it branches off before any
+    // GUI object exists.
+    if (wantsHeadless(argc, argv))
+        return runHeadless(argc, argv);
     // A screenshot needs no display: choose the offscreen platform before
     // the application object picks one.
     for (int i = 1; i < argc; ++i) {
@@ -88,7 +93,7 @@ int main(int argc, char *argv[])
     QApplication::setOrganizationName(QStringLiteral("Slew"));
     QApplication::setApplicationName(QStringLiteral("slew"));
     QApplication::setApplicationVersion(QStringLiteral("0.1.0"));
-    slew::sim::registerSimulatorScheme();
+    slew::registerLinkSchemes();
 
     QCommandLineParser parser;
     Arguments args;

@@ -1,0 +1,122 @@
+// `slew --headless --connect URI --rotctld-listen ADDR:PORT`: argument parsing
+// and wiring for the station service; the work is in core/bridge.
+
+#include "slew_headless.h"
+
+#include "bridge/headlessstation.h"
+#include "linkschemes.h"
+#include "protocol/dialect.h"
+#include "sim/terminationsignalwatcher.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+
+#include <cstdio>
+#include <cstring>
+
+namespace {
+
+bool splitHostPort(const QString &text, QHostAddress *address, quint16 *port)
+{
+    const qsizetype colon = text.lastIndexOf(u':');
+    if (colon < 0)
+        return false;
+    QString host = text.left(colon);
+    if (host.startsWith(u'[') && host.endsWith(u']'))
+        host = host.mid(1, host.size() - 2);
+    bool ok = false;
+    const uint p = text.mid(colon + 1).toUInt(&ok);
+    if (!ok || p > 65535)
+        return false;
+    // Loopback unless the operator names another address.
+    *address = host.isEmpty() ? QHostAddress(QHostAddress::LocalHost) : QHostAddress(host);
+    *port = quint16(p);
+    return !address->isNull();
+}
+
+int fail(const QString &message)
+{
+    std::fprintf(stderr, "slew: %s\n", qPrintable(message));
+    return 2;
+}
+
+} // namespace
+
+bool wantsHeadless(int argc, char *argv[])
+{
+    for (int i = 1; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--headless") == 0)
+            return true;
+    }
+    return false;
+}
+
+int runHeadless(int argc, char *argv[])
+{
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setOrganizationName(QStringLiteral("Slew"));
+    QCoreApplication::setApplicationName(QStringLiteral("slew"));
+    QCoreApplication::setApplicationVersion(QStringLiteral("0.1.0"));
+    slew::registerLinkSchemes();
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral("Slew as a station service: no window, log on stdout."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    const QCommandLineOption headless(QStringLiteral("headless"), QStringLiteral("Run without a window."));
+    const QCommandLineOption connect(QStringLiteral("connect"), QStringLiteral("The rotator's link URI (default sim:)."),
+                                     QStringLiteral("URI"));
+    const QCommandLineOption dialect(QStringLiteral("dialect"),
+                                     QStringLiteral("easycomm1, easycomm2, easycomm3 or satnogs."), QStringLiteral("name"));
+    const QCommandLineOption profile(QStringLiteral("profile"), QStringLiteral("A rotator profile (JSON) to load."),
+                                     QStringLiteral("file"));
+    const QCommandLineOption listen(QStringLiteral("rotctld-listen"),
+                                    QStringLiteral("Serve rotctld on ADDRESS:PORT (127.0.0.1 unless named)."),
+                                    QStringLiteral("address:port"));
+    const QCommandLineOption allow(QStringLiteral("rotctld-allow"),
+                                   QStringLiteral("Comma-separated client addresses allowed (default: any)."),
+                                   QStringLiteral("addresses"));
+    parser.addOptions({headless, connect, dialect, profile, listen, allow});
+    parser.process(app);
+
+    slew::bridge::HeadlessConfig config;
+    if (parser.isSet(profile)) {
+        QString error;
+        auto loaded = slew::model::RotatorProfile::load(parser.value(profile), &error);
+        if (!loaded)
+            return fail(error);
+        config.profile = *loaded;
+    }
+    if (parser.isSet(connect))
+        config.profile.uri = parser.value(connect);
+    if (parser.isSet(dialect)) {
+        const auto d = slew::protocol::dialectFromName(parser.value(dialect));
+        if (!d)
+            return fail(QStringLiteral("unknown dialect '%1'").arg(parser.value(dialect)));
+        config.profile.dialect = *d;
+    }
+    if (parser.isSet(listen)) {
+        if (!splitHostPort(parser.value(listen), &config.rotctldAddress, &config.rotctldPort))
+            return fail(QStringLiteral("--rotctld-listen %1: expected ADDRESS:PORT").arg(parser.value(listen)));
+        config.rotctldEnabled = true;
+    }
+    if (parser.isSet(allow)) {
+        for (const QString &a : parser.value(allow).split(u',', Qt::SkipEmptyParts)) {
+            const QHostAddress address(a.trimmed());
+            if (address.isNull())
+                return fail(QStringLiteral("--rotctld-allow: '%1' is not an address").arg(a));
+            config.allowedClients.append(address);
+        }
+    }
+
+    slew::bridge::HeadlessStation station;
+    QString error;
+    if (!station.start(config, &error))
+        return fail(error);
+
+    slew::sim::TerminationSignalWatcher terminationSignals;
+    QObject::connect(&terminationSignals, &slew::sim::TerminationSignalWatcher::terminationRequested, &station,
+                     [&station](int number) { station.shutdown(QStringLiteral("signal %1").arg(number)); });
+    QObject::connect(&station, &slew::bridge::HeadlessStation::finished, &app, &QCoreApplication::quit);
+    return app.exec();
+}

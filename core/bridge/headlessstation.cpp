@@ -1,0 +1,110 @@
+#include "headlessstation.h"
+
+#include "rotctldserver.h"
+#include "session/rotatorsession.h"
+#include "transport/link.h"
+
+#include <QDateTime>
+#include <QIODevice>
+#include <QTimer>
+
+namespace slew::bridge {
+
+using session::RotatorSession;
+
+namespace {
+constexpr int kFlushGiveUpMs = 1000; // a link that cannot take 6 bytes in a second is gone anyway
+}
+
+HeadlessStation::HeadlessStation(std::FILE *logFile, QObject *parent)
+    : QObject(parent), m_log(logFile), m_session(std::make_unique<RotatorSession>())
+{
+    RotatorSession *s = m_session.get();
+    connect(s, &RotatorSession::stateChanged, this, [this](RotatorSession::State, const QString &detail) {
+        log(tr("link: %1").arg(detail));
+    });
+    connect(s, &RotatorSession::errorOccurred, this, [this](const QString &m) { log(tr("error: %1").arg(m)); });
+    connect(s, &RotatorSession::commandRefused, this, [this](const QString &m) { log(tr("refused: %1").arg(m)); });
+    connect(s, &RotatorSession::alarmReceived, this, [this](const QString &m) { log(tr("alarm: %1").arg(m)); });
+    connect(s, &RotatorSession::versionChanged, this, [this](const QString &v) { log(tr("controller: %1").arg(v)); });
+    connect(s, &RotatorSession::targetChanged, this, [this](double az, double el) {
+        log(tr("target: az %1 el %2").arg(az, 0, 'f', 1).arg(el, 0, 'f', 1));
+    });
+    connect(s, &RotatorSession::errorFlagsChanged, this, [this](int flags) {
+        const QString text = session::describeErrorFlags(flags);
+        log(tr("error register: %1").arg(text.isEmpty() ? tr("no error") : text));
+    });
+}
+
+HeadlessStation::~HeadlessStation() = default;
+
+void HeadlessStation::log(const QString &line)
+{
+    const QString stamped = QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs) + QLatin1Char(' ') + line;
+    std::fprintf(m_log, "%s\n", qPrintable(stamped));
+    std::fflush(m_log);
+}
+
+bool HeadlessStation::start(const HeadlessConfig &config, QString *error)
+{
+    RotatorSession::Options options = m_session->options();
+    options.autoReconnect = true; // a service keeps trying after a loss
+    m_session->setOptions(options);
+    m_session->setProfile(config.profile);
+    if (config.rotctldEnabled) {
+        m_server = std::make_unique<RotctldServer>(m_session.get());
+        m_server->setAllowedClients(config.allowedClients);
+        m_server->setDeadband(config.profile.deadbandDeg);
+        connect(m_server.get(), &RotctldServer::logMessage, this, [this](const QString &m) { log(m); });
+        connect(m_server.get(), &RotctldServer::commandReceived, this,
+                [this](const QString &peer, const QString &line) {
+                    if (!line.startsWith(QLatin1Char('p')) && !line.contains(QLatin1String("get_pos")))
+                        log(tr("rotctld %1: %2").arg(peer, line)); // polls would drown the log
+                });
+        if (!m_server->listen(config.rotctldAddress, config.rotctldPort, error))
+            return false;
+        // The ready line scripts wait for, with the real port.
+        log(tr("rotctld listening on %1:%2").arg(m_server->address().toString()).arg(m_server->port()));
+    }
+    log(tr("connecting to %1").arg(config.profile.uri));
+    m_session->connectTo(config.profile.uri);
+    return true;
+}
+
+void HeadlessStation::shutdown(const QString &why)
+{
+    if (m_stopping)
+        return;
+    m_stopping = true;
+    log(tr("stopping: %1").arg(why));
+    if (m_server)
+        m_server->close();
+    if (m_session->stop())
+        log(tr("rotator stopped"));
+    finishWhenFlushed();
+}
+
+void HeadlessStation::finishWhenFlushed()
+{
+    transport::Link *link = m_session->link();
+    QIODevice *device = link ? link->device() : nullptr;
+    if (!device || device->bytesToWrite() == 0) {
+        QTimer::singleShot(0, this, &HeadlessStation::finished);
+        return;
+    }
+    // Wait for the stop to leave, from the event loop, with a limit.
+    auto done = std::make_shared<bool>(false);
+    auto finish = [this, done] {
+        if (*done)
+            return;
+        *done = true;
+        emit finished();
+    };
+    connect(device, &QIODevice::bytesWritten, this, [device, finish](qint64) {
+        if (device->bytesToWrite() == 0)
+            finish();
+    });
+    QTimer::singleShot(kFlushGiveUpMs, this, finish);
+}
+
+} // namespace slew::bridge
