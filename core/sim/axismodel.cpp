@@ -193,6 +193,11 @@ double AxisModel::positionDrive(double dt)
     // saturated; and it never stores more than the motor could deliver.
     // Integrating during the braking of a long move would leave a charge
     // that holds the axis off target against its own friction.
+    // Crossing the target empties it: what was stored to get here would
+    // only push the axis on past it.
+    if (sign(error) != sign(m_lastError))
+        m_integral = 0.0;
+    m_lastError = error;
     if (drive == unclamped && std::fabs(error) < kIntegralZone)
         m_integral += error * dt;
     if (m_gains.ki > 0.0) {

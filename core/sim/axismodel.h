@@ -115,6 +115,7 @@ private:
     double m_target = 0.0;
     double m_velocityTarget = 0.0;
     double m_integral = 0.0;      // position loop: degree-seconds of error
+    double m_lastError = 0.0;
     double m_holdError = 0.0;     // velocity loop: degrees behind the commanded motion
     double m_effort = 0.0;
 

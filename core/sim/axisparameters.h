@@ -14,7 +14,7 @@ struct AxisPlant {
     double hardStopMargin = 1.0;  // mechanical stop this far beyond each switch
     double inertia = 1.0;         // relative to the nominal load
     double viscousFriction = 0.5; // deg/s^2 of drag per deg/s
-    double coulombFriction = 0.5; // deg/s^2, also the breakaway (stiction) level
+    double coulombFriction = 0.2; // deg/s^2, also the breakaway (stiction) level
     double torqueLimit = 40.0;    // deg/s^2, the most the motor can deliver
     double maxSpeed = 30.0;       // deg/s, the driver's cap (seeds/000)
     double maxAcceleration = 30.0; // deg/s^2, the driver's ramp (seeds/000)

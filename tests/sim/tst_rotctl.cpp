@@ -1,0 +1,154 @@
+// Hamlib's own rotctl (Debian's libhamlib-utils) drives slew-sim over its
+// pseudo-terminal, for the three Easycomm models: 201 (Easycomm I), 202
+// (Easycomm II) and 204 (Easycomm III / SatNOGS). Both what rotctl reads
+// back and what the simulator received are checked.
+#include "slewsimprocess.h"
+
+#include <QElapsedTimer>
+#include <QFile>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+
+namespace {
+
+struct RotctlResult {
+    bool finished = false;
+    int exitCode = -1;
+    QByteArray out;
+    QByteArray err;
+};
+
+// Runs rotctl to completion, asynchronously, waiting on its finished signal.
+RotctlResult rotctl(int model, const QString &port, const QStringList &commands)
+{
+    QProcess p;
+    p.setProgram(QStandardPaths::findExecutable("rotctl"));
+    p.setArguments(QStringList{"-m", QString::number(model), "-r", port, "-s", "19200"} + commands);
+    QSignalSpy finished(&p, &QProcess::finished);
+    p.start();
+    RotctlResult r;
+    r.finished = finished.wait(15000);
+    if (!r.finished) {
+        p.kill();
+        finished.wait(5000);
+    }
+    r.exitCode = p.exitCode();
+    r.out = p.readAllStandardOutput();
+    r.err = p.readAllStandardError();
+    return r;
+}
+
+QByteArray readAll(const QString &path)
+{
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+bool near(double a, double b) { return qAbs(a - b) <= 0.15; }
+
+} // namespace
+
+class TestRotctl : public QObject {
+    Q_OBJECT
+
+    QTemporaryDir m_dir;
+
+    QString ptyPath(int model) const { return m_dir.filePath(QStringLiteral("rotator-%1").arg(model)); }
+    QString logPath(int model) const { return m_dir.filePath(QStringLiteral("received-%1.log").arg(model)); }
+
+    // get_pos until the rotator reports the position, as a tracking program would.
+    bool getPosUntil(int model, const QString &port, double az, double el)
+    {
+        QElapsedTimer timer;
+        timer.start();
+        while (timer.elapsed() < 20000) {
+            const RotctlResult r = rotctl(model, port, {"p"});
+            const QList<QByteArray> lines = r.out.trimmed().split('\n');
+            if (r.exitCode == 0 && lines.size() == 2 && near(lines[0].toDouble(), az) && near(lines[1].toDouble(), el))
+                return true;
+        }
+        return false;
+    }
+
+private slots:
+    void initTestCase()
+    {
+        QVERIFY(m_dir.isValid());
+        // rotctl is a declared test dependency (packaging installs libhamlib-utils).
+        QVERIFY2(!QStandardPaths::findExecutable("rotctl").isEmpty(), "rotctl (libhamlib-utils) is not installed");
+    }
+
+    void model202Easycomm2()
+    {
+        SlewSimProcess sim;
+        QVERIFY2(sim.start({"--pty", ptyPath(202), "--dialect", "easycomm2", "--baud", "19200", "--log-received",
+                            logPath(202)}),
+                 qPrintable(sim.error()));
+        QVERIFY(sim.readyLine().contains(ptyPath(202)));
+
+        QCOMPARE(rotctl(202, ptyPath(202), {"P", "10.5", "20.25"}).exitCode, 0);
+        QVERIFY(getPosUntil(202, ptyPath(202), 10.5, 20.2));
+        QCOMPARE(rotctl(202, ptyPath(202), {"S"}).exitCode, 0);
+        QCOMPARE(rotctl(202, ptyPath(202), {"K"}).exitCode, 0);
+        QVERIFY(getPosUntil(202, ptyPath(202), 0.0, 0.0)); // park: CW7/CW8 default to 0, 0
+        QCOMPARE(rotctl(202, ptyPath(202), {"R", "1"}).exitCode, 0);
+        QCOMPARE(rotctl(202, ptyPath(202), {"M", "16", "50"}).exitCode, 0);
+        QCOMPARE(rotctl(202, ptyPath(202), {"S"}).exitCode, 0);
+
+        QCOMPARE(sim.stop(), 0);
+        const QByteArray log = readAll(logPath(202));
+        for (const char *line : {"AZ10.5 EL20.2\n", "AZ EL \n", "SA SE \n", "PARK\n", "RESET\n", "MR\n"})
+            QVERIFY2(log.contains(line), qPrintable(QString("missing %1 in:\n%2").arg(line, log)));
+        QVERIFY2(sim.standardError().contains(" 0 rejected"), sim.standardError().constData());
+    }
+
+    void model204SatNogs()
+    {
+        SlewSimProcess sim;
+        QVERIFY2(sim.start({"--pty", ptyPath(204), "--dialect", "satnogs", "--baud", "19200", "--log-received",
+                            logPath(204)}),
+                 qPrintable(sim.error()));
+        QCOMPARE(rotctl(204, ptyPath(204), {"P", "15", "30"}).exitCode, 0);
+        QVERIFY(getPosUntil(204, ptyPath(204), 15.0, 30.0));
+        QCOMPARE(rotctl(204, ptyPath(204), {"S", "K", "R", "1", "M", "16", "50"}).exitCode, 0);
+        QCOMPARE(rotctl(204, ptyPath(204), {"S"}).exitCode, 0);
+
+        QCOMPARE(sim.stop(), 0);
+        const QByteArray log = readAll(logPath(204));
+        for (const char *line : {"AZ15.0 EL30.0\n", "AZ EL \n", "SA SE \n", "PARK\n", "RESET\n", "VR4900\n"})
+            QVERIFY2(log.contains(line), qPrintable(QString("missing %1 in:\n%2").arg(line, log)));
+        QVERIFY2(sim.standardError().contains(" 0 rejected"), sim.standardError().constData());
+    }
+
+    void model201Easycomm1OnlySendsPositions()
+    {
+        // Easycomm I has no way to ask, so a TCP monitor in Easycomm III
+        // watches the same rotator.
+        SlewSimProcess sim;
+        QVERIFY2(sim.start({"--pty", ptyPath(201), "--dialect", "easycomm1", "--listen", "127.0.0.1:0",
+                            "--listen-dialect", "easycomm3", "--log-received", logPath(201)}),
+                 qPrintable(sim.error()));
+        QVERIFY(sim.port() != 0);
+        QCOMPARE(rotctl(201, ptyPath(201), {"P", "12.5", "8"}).exitCode, 0);
+
+        SimClient monitor;
+        QVERIFY(monitor.connectTo(sim.port()));
+        QElapsedTimer timer;
+        timer.start();
+        QByteArray position;
+        while (position != "AZ12.50 EL8.00\n" && timer.elapsed() < 20000) {
+            position = monitor.ask("AZ EL\n");
+            QSignalSpy pause(&monitor.socket(), &QTcpSocket::disconnected);
+            pause.wait(100);
+        }
+        QCOMPARE(position, QByteArray("AZ12.50 EL8.00\n"));
+
+        QCOMPARE(sim.stop(), 0);
+        QVERIFY2(readAll(logPath(201)).contains("AZ12.5 EL8.0 UP000 XXX DN000 XXX\n"), readAll(logPath(201)).constData());
+        QVERIFY2(sim.standardError().contains(" 0 rejected"), sim.standardError().constData());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRotctl)
+#include "tst_rotctl.moc"
