@@ -43,6 +43,8 @@ class RequestQueue {
 public:
     explicit RequestQueue(int capacity = 64) : m_capacity(capacity) {}
 
+    // A smaller capacity keeps what is already queued; it only refuses more.
+    void setCapacity(int capacity) { m_capacity = capacity; }
     bool isFull() const { return int(m_requests.size()) >= m_capacity; }
     bool isEmpty() const { return m_requests.empty(); }
     int size() const { return int(m_requests.size()); }

@@ -91,7 +91,7 @@ void RotatorSession::setProfile(const model::RotatorProfile &profile)
 void RotatorSession::setOptions(const Options &options)
 {
     m_options = options;
-    m_queue = RequestQueue(options.maxQueue);
+    m_queue.setCapacity(options.maxQueue);
     setProfile(m_profile);
 }
 
