@@ -9,7 +9,6 @@ AlarmBanner::AlarmBanner(QWidget *parent) : QWidget(parent)
 {
     setObjectName(QStringLiteral("alarmBanner"));
     setAttribute(Qt::WA_StyledBackground);
-    setStyleSheet(QStringLiteral("#alarmBanner{background:#b71c1c;} QLabel{color:white;font-weight:bold;}"));
     m_text = new QLabel;
     m_text->setObjectName(QStringLiteral("alarmText"));
     m_text->setWordWrap(true);
@@ -29,8 +28,12 @@ QString AlarmBanner::text() const
     return m_text->text();
 }
 
-void AlarmBanner::showAlarms(const QStringList &alarms)
+void AlarmBanner::showAlarms(const QStringList &alarms, bool severe)
 {
+    m_severe = severe;
+    setStyleSheet(QStringLiteral("#alarmBanner{background:%1;} QLabel{color:%2;font-weight:bold;}")
+                      .arg(severe ? QStringLiteral("#b71c1c") : QStringLiteral("#e0a020"),
+                           severe ? QStringLiteral("white") : QStringLiteral("#1a1a1a")));
     m_text->setText(alarms.join(QStringLiteral("   ·   ")));
     setVisible(!alarms.isEmpty());
 }

@@ -1,6 +1,6 @@
 #pragma once
-// A red strip across the top of the window while any alarm holds; hidden
-// when all is well. It only shows what AlarmMonitor says.
+// A strip across the top of the window while any alarm (red) or warning
+// (amber) holds; hidden when all is well. It only shows what AlarmMonitor says.
 
 #include <QWidget>
 
@@ -14,12 +14,14 @@ public:
     explicit AlarmBanner(QWidget *parent = nullptr);
 
     QString text() const;
+    bool isSevere() const { return m_severe; }
 
 public slots:
-    void showAlarms(const QStringList &alarms);
+    void showAlarms(const QStringList &alarms, bool severe);
 
 private:
     QLabel *m_text;
+    bool m_severe = false;
 };
 
 } // namespace slew::ui

@@ -1,5 +1,7 @@
 #include "alarmmonitor.h"
 
+#include <algorithm>
+
 namespace slew::ui {
 
 using session::RotatorSession;
@@ -43,19 +45,32 @@ void AlarmMonitor::log(Severity severity, const QString &text)
     emit eventLogged(QDateTime::currentDateTime(), severity, text);
 }
 
-void AlarmMonitor::setAlarm(const QString &key, bool on, const QString &text)
+QStringList AlarmMonitor::activeAlarms() const
+{
+    QStringList out;
+    for (const Condition &c : m_active)
+        out << c.text;
+    return out;
+}
+
+bool AlarmMonitor::anySevere() const
+{
+    return std::any_of(m_active.begin(), m_active.end(), [](const Condition &c) { return c.severity == Severity::Alarm; });
+}
+
+void AlarmMonitor::setAlarm(const QString &key, bool on, const QString &text, Severity severity)
 {
     if (on) {
-        if (m_active.value(key) == text)
+        if (m_active.contains(key) && m_active[key].text == text)
             return;
-        m_active.insert(key, text);
-        log(Severity::Alarm, text);
+        m_active.insert(key, Condition{text, severity});
+        log(severity, text);
     } else {
         if (!m_active.contains(key))
             return;
-        log(Severity::Info, tr("Cleared: %1").arg(m_active.take(key)));
+        log(Severity::Info, tr("Cleared: %1").arg(m_active.take(key).text));
     }
-    emit alarmsChanged(activeAlarms());
+    emit alarmsChanged(activeAlarms(), anySevere());
 }
 
 void AlarmMonitor::onState(RotatorSession::State state, const QString &detail)
@@ -104,8 +119,9 @@ void AlarmMonitor::onTelemetry(const session::Telemetry &t)
         return which.join(QStringLiteral(" and "));
     };
     const QString az = describe(t.azEndStop, true), el = describe(t.elEndStop, false);
-    setAlarm(QStringLiteral("endstop-az"), !az.isEmpty(), tr("Azimuth at its %1 end stop").arg(az));
-    setAlarm(QStringLiteral("endstop-el"), !el.isEmpty(), tr("Elevation at its %1 end stop").arg(el));
+    // Resting on a switch (parked at the stop) is normal enough to warn, not alarm.
+    setAlarm(QStringLiteral("endstop-az"), !az.isEmpty(), tr("Azimuth at its %1 end stop").arg(az), Severity::Warning);
+    setAlarm(QStringLiteral("endstop-el"), !el.isEmpty(), tr("Elevation at its %1 end stop").arg(el), Severity::Warning);
 }
 
 } // namespace slew::ui

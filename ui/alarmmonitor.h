@@ -20,7 +20,8 @@ public:
 
     explicit AlarmMonitor(session::RotatorSession *session, QObject *parent = nullptr);
 
-    QStringList activeAlarms() const { return m_active.values(); }
+    QStringList activeAlarms() const;
+    bool anySevere() const; // an alarm, not only a warning (an end stop is a warning)
     bool isActive(const QString &key) const { return m_active.contains(key); }
 
 public slots:
@@ -28,17 +29,21 @@ public slots:
     void expectDisconnect() { m_expectDisconnect = true; }
 
 signals:
-    void alarmsChanged(const QStringList &active);
+    void alarmsChanged(const QStringList &active, bool severe);
     void eventLogged(const QDateTime &when, slew::ui::AlarmMonitor::Severity severity, const QString &text);
 
 private:
-    void setAlarm(const QString &key, bool on, const QString &text);
+    void setAlarm(const QString &key, bool on, const QString &text, Severity severity = Severity::Alarm);
     void log(Severity severity, const QString &text);
     void onState(session::RotatorSession::State state, const QString &detail);
     void onTelemetry(const session::Telemetry &t);
 
     session::RotatorSession *m_session;
-    QMap<QString, QString> m_active; // key -> text
+    struct Condition {
+        QString text;
+        Severity severity;
+    };
+    QMap<QString, Condition> m_active;
     session::RotatorSession::State m_state = session::RotatorSession::State::Disconnected;
     bool m_expectDisconnect = false;
 };

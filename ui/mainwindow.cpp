@@ -58,7 +58,7 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
     m_stop = new StopButton(session);
     m_parkHome = new ParkHomePanel(session);
     m_presets = new PresetPanel(session);
-    m_charts = new TelemetryCharts(m_recorder);
+    m_charts = new TelemetryCharts(&m_recorder->history());
     m_config = new ConfigEditor(session);
     m_traffic = new TrafficConsole(session);
     m_log = new EventLog;

@@ -45,8 +45,8 @@ QList<QPointF> asSteps(const QList<QPointF> &points, qint64 to)
 
 } // namespace
 
-TelemetryCharts::TelemetryCharts(const TelemetryRecorder *recorder, QWidget *parent)
-    : QWidget(parent), m_recorder(recorder)
+TelemetryCharts::TelemetryCharts(const model::TelemetryHistory *history, QWidget *parent)
+    : QWidget(parent), m_history(history)
 {
     setObjectName(QStringLiteral("telemetryCharts"));
     m_window = new QComboBox;
@@ -189,7 +189,7 @@ void TelemetryCharts::redraw()
 
 void TelemetryCharts::redrawPanel(Panel &panel, qint64 from, qint64 to)
 {
-    const auto &history = m_recorder->history();
+    const auto &history = *m_history;
     const int columns = std::max(100, int(panel.chart->plotArea().width()));
     double lo = INFINITY, hi = -INFINITY;
     for (Plotted &pl : panel.plotted) {
@@ -230,7 +230,7 @@ bool TelemetryCharts::exportCsv(const QString &path, QString *error) const
         return false;
     }
     file.write("time_utc,unix_ms,series,value\n");
-    const auto &history = m_recorder->history();
+    const auto &history = *m_history;
     for (int s = 0; s < TelemetryRecorder::SeriesCount; ++s) {
         const QByteArray name = TelemetryRecorder::seriesLabel(Series(s)).toUtf8();
         history.forEachSample(s, from, to, [&](qint64 t, double v) {

@@ -26,7 +26,8 @@ namespace slew::ui {
 class TelemetryCharts : public QWidget {
     Q_OBJECT
 public:
-    explicit TelemetryCharts(const TelemetryRecorder *recorder, QWidget *parent = nullptr);
+    // The history's series are in TelemetryRecorder::Series order.
+    explicit TelemetryCharts(const model::TelemetryHistory *history, QWidget *parent = nullptr);
 
     qint64 windowMs() const { return m_windowMs; }
     void setWindowMs(qint64 ms); // clamped to 1 min .. 24 h
@@ -60,7 +61,7 @@ private:
     void redrawPanel(Panel &panel, qint64 from, qint64 to);
     void chooseExportFile();
 
-    const TelemetryRecorder *m_recorder;
+    const model::TelemetryHistory *m_history;
     std::vector<Panel> m_panels;
     QComboBox *m_window;
     QPushButton *m_pause;

@@ -1,0 +1,285 @@
+// The operator window driven the way an operator drives it (clicks, typing,
+// keys), against the in-process simulator.
+
+#include "windowfixture.h"
+
+#include "alarmbanner.h"
+#include "configeditor.h"
+#include "gotopanel.h"
+#include "polarplotwidget.h"
+#include "presetpanel.h"
+#include "targetconfirmation.h"
+#include "telemetrycharts.h"
+#include "trafficconsole.h"
+
+#include <QLabel>
+#include <QLineEdit>
+#include <QLineSeries>
+#include <QListWidget>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTabWidget>
+#include <QTemporaryDir>
+#include <QTest>
+
+using slew::ui::ConfigEditor;
+using slew::ui::TelemetryRecorder;
+
+namespace {
+
+const QRegularExpression kPositionCommand(QStringLiteral("^AZ\\s*-?\\d|EL\\s*-?\\d"));
+
+void typeInto(QLineEdit *field, const QString &text)
+{
+    field->setFocus();
+    field->selectAll();
+    QTest::keyClick(field, Qt::Key_Backspace);
+    QTest::keyClicks(field, text);
+}
+
+} // namespace
+
+class TestOperatorWindow : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { WindowFixture::prepareApplication(); }
+
+    void jogRightMovesThenStopsTheAzimuth()
+    {
+        WindowFixture f;
+        QVERIFY(f.connectAndWait());
+        const double start = f.session.azimuth();
+        auto *right = f.find<QPushButton>(QStringLiteral("jogRight"));
+        QVERIFY(right);
+        QTest::mousePress(right, Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(f.session.azimuth() > start + 2.0, 10000);
+        QVERIFY(f.sentCount(QRegularExpression(QStringLiteral("^VR\\d"))) >= 1);
+        QTest::mouseRelease(right, Qt::LeftButton);
+        QVERIFY(f.sentCount(QRegularExpression(QStringLiteral("^SA"))) >= 1);
+        QVERIFY(f.waitUntilStill());
+        const double stoppedAt = f.session.azimuth();
+        QVERIFY(f.waitUntilStill()); // and it stays there
+        QCOMPARE_LE(std::abs(f.session.azimuth() - stoppedAt), 0.05);
+        QCOMPARE_LE(std::abs(f.session.elevation() - f.recent.front().y()), 0.05);
+    }
+
+    void arrowKeysJogWhileHeld()
+    {
+        WindowFixture f;
+        QVERIFY(f.connectAndWait());
+        f.window->activateWindow();
+        f.find<QWidget>(QStringLiteral("polarPlot"))->setFocus();
+        const double start = f.session.elevation();
+        QTest::keyPress(f.window.get(), Qt::Key_Up);
+        QTRY_VERIFY_WITH_TIMEOUT(f.session.elevation() > start + 2.0, 10000);
+        QTest::keyRelease(f.window.get(), Qt::Key_Up);
+        QVERIFY(f.sentCount(QRegularExpression(QStringLiteral("^SE|^SA SE"))) >= 1);
+        QVERIFY(f.waitUntilStill());
+    }
+
+    void gotoReachesTheTarget()
+    {
+        WindowFixture f;
+        QVERIFY(f.connectAndWait());
+        typeInto(f.find<QLineEdit>(QStringLiteral("gotoAzimuth")), QStringLiteral("40"));
+        typeInto(f.find<QLineEdit>(QStringLiteral("gotoElevation")), QStringLiteral("20,5"));
+        auto *go = f.find<QPushButton>(QStringLiteral("gotoButton"));
+        QVERIFY(go->isEnabled());
+        QTest::mouseClick(go, Qt::LeftButton);
+        QCOMPARE(f.sentCount(kPositionCommand), 1);
+        QVERIFY(f.waitUntilAt(40.0, 20.5));
+        QCOMPARE(f.window->polarPlot()->actual()->x(), f.session.azimuth());
+    }
+
+    void outOfRangeGotoSendsNothing_data()
+    {
+        QTest::addColumn<QString>("az");
+        QTest::addColumn<QString>("el");
+        QTest::newRow("azimuth past the stop") << "400" << "10";
+        QTest::newRow("negative elevation") << "100" << "-3";
+        QTest::newRow("elevation past the profile's 90") << "100" << "95";
+        QTest::newRow("not a number") << "1o0" << "10";
+    }
+
+    void outOfRangeGotoSendsNothing()
+    {
+        QFETCH(QString, az);
+        QFETCH(QString, el);
+        WindowFixture f;
+        QVERIFY(f.connectAndWait());
+        auto *azField = f.find<QLineEdit>(QStringLiteral("gotoAzimuth"));
+        typeInto(azField, az);
+        typeInto(f.find<QLineEdit>(QStringLiteral("gotoElevation")), el);
+        auto *go = f.find<QPushButton>(QStringLiteral("gotoButton"));
+        QVERIFY(!go->isEnabled());
+        QVERIFY(!f.find<QLabel>(QStringLiteral("gotoMessage"))->text().isEmpty());
+        QTest::mouseClick(go, Qt::LeftButton);
+        QTest::keyClick(azField, Qt::Key_Return);
+        QVERIFY(!f.window->gotoPanel()->go());
+        const int polls = int(f.sent.size());
+        QTRY_VERIFY(f.sent.size() > polls + 3); // the link is alive and still polling
+        QCOMPARE(f.sentCount(kPositionCommand), 0);
+    }
+
+    void configApplyIsReadBackEqual()
+    {
+        WindowFixture f;
+        QVERIFY(f.connectAndWait());
+        ConfigEditor *editor = f.window->configEditor();
+        f.window->tabs()->setCurrentWidget(editor); // opening it reads the device
+        QTRY_VERIFY_WITH_TIMEOUT(!editor->deviceValue(1).isEmpty() && !editor->deviceValue(8).isEmpty(), 10000);
+        QCOMPARE(editor->fieldState(1), ConfigEditor::FieldState::Same);
+
+        auto *kp = f.find<QLineEdit>(QStringLiteral("configValue1"));
+        auto *parkAz = f.find<QLineEdit>(QStringLiteral("configValue7"));
+        typeInto(kp, QStringLiteral("12.5"));
+        typeInto(parkAz, QStringLiteral("123.25"));
+        QCOMPARE(editor->fieldState(1), ConfigEditor::FieldState::Changed);
+        QCOMPARE(editor->fieldState(7), ConfigEditor::FieldState::Changed);
+        QCOMPARE(editor->fieldState(2), ConfigEditor::FieldState::Same);
+
+        QTest::mouseClick(f.find<QPushButton>(QStringLiteral("configApply")), Qt::LeftButton);
+        QCOMPARE(f.sentCount(QRegularExpression(QStringLiteral("^CW"))), 2); // only what changed
+        QTRY_COMPARE_WITH_TIMEOUT(editor->fieldState(1), ConfigEditor::FieldState::Confirmed, 10000);
+        QTRY_COMPARE_WITH_TIMEOUT(editor->fieldState(7), ConfigEditor::FieldState::Confirmed, 10000);
+        QCOMPARE(editor->deviceValue(1).toDouble(), 12.5);
+        QCOMPARE(editor->deviceValue(7).toDouble(), 123.25);
+    }
+
+    void invalidConfigWritesNothing()
+    {
+        WindowFixture f;
+        QVERIFY(f.connectAndWait());
+        ConfigEditor *editor = f.window->configEditor();
+        f.window->tabs()->setCurrentWidget(editor);
+        QTRY_VERIFY_WITH_TIMEOUT(!editor->deviceValue(8).isEmpty(), 10000);
+        typeInto(f.find<QLineEdit>(QStringLiteral("configValue2")), QStringLiteral("0.25"));
+        typeInto(f.find<QLineEdit>(QStringLiteral("configValue8")), QStringLiteral("120")); // park el above 90
+        QCOMPARE(editor->fieldState(8), ConfigEditor::FieldState::Invalid);
+        QCOMPARE(editor->apply(), 0);
+        QCOMPARE(f.sentCount(QRegularExpression(QStringLiteral("^CW"))), 0);
+        QVERIFY(f.find<QLabel>(QStringLiteral("configMessage"))->text().contains(QStringLiteral("Nothing was written")));
+    }
+
+    void profileExportAndImportRoundTrip()
+    {
+        WindowFixture f;
+        QVERIFY(f.connectAndWait());
+        ConfigEditor *editor = f.window->configEditor();
+        f.window->tabs()->setCurrentWidget(editor);
+        QTRY_VERIFY_WITH_TIMEOUT(!editor->deviceValue(6).isEmpty(), 10000);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("rotator.json"));
+        QString error;
+        QVERIFY2(editor->exportProfile(path, &error), qPrintable(error));
+        QVERIFY2(editor->importProfile(path, &error), qPrintable(error));
+        QCOMPARE(editor->fieldState(1), ConfigEditor::FieldState::Same); // same gains: nothing to apply
+        QVERIFY(!editor->importProfile(dir.filePath(QStringLiteral("missing.json")), &error));
+        QVERIFY(!error.isEmpty());
+    }
+
+    void chartsReceiveSamples()
+    {
+        WindowFixture f;
+        QVERIFY(f.connectAndWait());
+        f.session.gotoPosition(30, 10);
+        auto *charts = f.window->telemetryCharts();
+        QTRY_VERIFY_WITH_TIMEOUT(charts->series(TelemetryRecorder::AzActual)->count() > 5, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(charts->series(TelemetryRecorder::AzVelocity)->count() > 0, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(charts->series(TelemetryRecorder::AzCommanded)->count() > 0, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(charts->series(TelemetryRecorder::AzStatus)->count() > 0, 10000);
+        const double lastAz = charts->series(TelemetryRecorder::AzActual)->points().back().y();
+        QVERIFY(lastAz >= 0 && lastAz <= 30.5);
+
+        charts->setPaused(true);
+        const int frozen = charts->redrawCount();
+        QVERIFY(f.waitUntilAt(30, 10));
+        QCOMPARE(charts->redrawCount(), frozen);
+        charts->setPaused(false);
+        QVERIFY(charts->redrawCount() > frozen);
+
+        QTemporaryDir dir;
+        const QString csv = dir.filePath(QStringLiteral("t.csv"));
+        QString error;
+        QVERIFY2(charts->exportCsv(csv, &error), qPrintable(error));
+        QFile file(csv);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QList<QByteArray> lines = file.readAll().split('\n');
+        QCOMPARE(lines.front(), QByteArray("time_utc,unix_ms,series,value"));
+        QVERIFY(lines.size() > 10);
+    }
+
+    void aJamRaisesTheAlarmBanner()
+    {
+        WindowFixture f(QStringLiteral("sim:?jam=az&jam_after=0.3"));
+        QVERIFY(f.connectAndWait());
+        auto *banner = f.window->alarmBanner();
+        QVERIFY(!banner->isSevere());
+        QVERIFY(f.session.gotoPosition(90, 0));
+        QTRY_VERIFY_WITH_TIMEOUT(banner->text().contains(QStringLiteral("motor"), Qt::CaseInsensitive), 15000);
+        QVERIFY(!banner->isHidden());
+        QVERIFY(banner->isSevere());
+        const QString log = f.window->findChild<QWidget *>(QStringLiteral("eventLog"))->property("plainText").toString();
+        QVERIFY(log.contains(QStringLiteral("ALARM")));
+    }
+
+    void plotClickAsksThenMoves()
+    {
+        WindowFixture f;
+        QVERIFY(f.connectAndWait());
+        auto *plot = f.window->polarPlot();
+        const QPoint at = plot->pointFor(90, 45).toPoint();
+        QTest::mouseClick(plot, Qt::LeftButton, {}, at);
+        QVERIFY(f.window->targetConfirmation()->pending().has_value());
+        QCOMPARE(f.sentCount(kPositionCommand), 0); // asked, not sent
+        QTest::mouseClick(f.find<QPushButton>(QStringLiteral("targetGo")), Qt::LeftButton);
+        QCOMPARE(f.sentCount(kPositionCommand), 1);
+        const auto picked = plot->azElAt(at);
+        QVERIFY(f.waitUntilAt(picked->x(), picked->y(), 0.5));
+
+        // With confirmation off a click moves at once.
+        f.window->targetConfirmation()->setConfirmationWanted(false);
+        QTest::mouseClick(plot, Qt::LeftButton, {}, plot->pointFor(180, 60).toPoint());
+        QCOMPARE(f.sentCount(kPositionCommand), 2);
+    }
+
+    void presetsStoreAndRecallByNumberKey()
+    {
+        WindowFixture f;
+        QVERIFY(f.connectAndWait());
+        QVERIFY(f.session.gotoPosition(50, 25));
+        QVERIFY(f.waitUntilAt(50, 25, 0.2));
+        QVERIFY(f.waitUntilStill());
+        auto *panel = f.window->presetPanel();
+        QVERIFY(panel->storeCurrent(QStringLiteral("Relay")));
+        QCOMPARE(panel->presets().size(), 1);
+        QVERIFY(f.session.gotoPosition(10, 5));
+        QVERIFY(f.waitUntilAt(10, 5));
+        f.find<QWidget>(QStringLiteral("polarPlot"))->setFocus();
+        QTest::keyClick(f.window.get(), Qt::Key_1);
+        QVERIFY(f.waitUntilAt(50, 25));
+        QVERIFY(!panel->recall(5)); // no such preset: nothing sent
+    }
+
+    void trafficConsoleShowsAndSendsRaw()
+    {
+        WindowFixture f;
+        QVERIFY(f.connectAndWait());
+        auto *console = f.window->trafficConsole();
+        QTRY_VERIFY(console->entries().size() > 4);
+        QVERIFY(std::any_of(console->entries().begin(), console->entries().end(),
+                            [](const auto &e) { return !e.sent && e.line.startsWith("AZ"); }));
+        QVERIFY(console->sendRaw(QStringLiteral("VE")));
+        QCOMPARE(f.sent.back(), QStringLiteral("VE"));
+        QVERIFY(!console->sendRaw(QStringLiteral("AZ400.0"))); // limits apply to raw lines too
+        QVERIFY(f.find<QLabel>(QStringLiteral("rawMessage"))->text().startsWith(QStringLiteral("Not sent")));
+        QCOMPARE(f.sentCount(kPositionCommand), 0);
+        typeInto(f.find<QLineEdit>(QStringLiteral("trafficFilter")), QStringLiteral("^VE"));
+        const QString shown = f.find<QWidget>(QStringLiteral("trafficView"))->property("plainText").toString();
+        QVERIFY(shown.contains(QStringLiteral("→ VE")));
+        QVERIFY(!shown.contains(QStringLiteral("AZ EL")));
+    }
+};
+
+QTEST_MAIN(TestOperatorWindow)
+#include "tst_operatorwindow.moc"

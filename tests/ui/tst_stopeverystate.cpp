@@ -1,0 +1,110 @@
+// Stop works from every state: it never throws the window, sends SA SE on
+// any open link, halts whatever is moving, and ends jogs and homing.
+
+#include "windowfixture.h"
+
+#include "jogpad.h"
+#include "parkhomepanel.h"
+#include "stopbutton.h"
+
+#include <QLineEdit>
+#include <QPushButton>
+#include <QTest>
+
+namespace {
+const QRegularExpression kStopLine(QStringLiteral("^SA SE$"));
+}
+
+class TestStopEveryState : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { WindowFixture::prepareApplication(); }
+
+    void disconnectedStopSaysWhyAndSendsNothing()
+    {
+        WindowFixture f;
+        QTest::mouseClick(f.find<QPushButton>(QStringLiteral("stopButton")), Qt::LeftButton);
+        QCOMPARE(f.sent.size(), 0);
+        QVERIFY(f.find<QWidget>(QStringLiteral("eventLog"))->property("plainText").toString().contains(
+            QStringLiteral("nothing to stop")));
+    }
+
+    void connectingStopIsSafe()
+    {
+        WindowFixture f;
+        f.window->connectTo(f.uri);
+        QTest::mouseClick(f.find<QPushButton>(QStringLiteral("stopButton")), Qt::LeftButton);
+        QVERIFY(f.connectAndWait()); // and the connection still comes up
+    }
+
+    void idleStopSendsStop()
+    {
+        WindowFixture f;
+        QVERIFY(f.connectAndWait());
+        QVERIFY(f.window->stopButton()->stopAll());
+        QCOMPARE(f.sentCount(kStopLine), 1);
+    }
+
+    void stopHaltsAGoto()
+    {
+        WindowFixture f;
+        QVERIFY(f.connectAndWait());
+        QVERIFY(f.session.gotoPosition(300, 80));
+        QTRY_VERIFY_WITH_TIMEOUT(f.session.elevation() > 5, 10000);
+        QTest::mouseClick(f.find<QPushButton>(QStringLiteral("stopButton")), Qt::LeftButton);
+        QVERIFY(f.waitUntilStill());
+        QVERIFY(f.session.elevation() < 75); // it stopped short of the target
+    }
+
+    void stopEndsAJogEvenWhileTheButtonIsHeld()
+    {
+        WindowFixture f;
+        QVERIFY(f.connectAndWait());
+        auto *left = f.find<QPushButton>(QStringLiteral("jogUp"));
+        QTest::mousePress(left, Qt::LeftButton);
+        const double start = f.session.elevation();
+        QTRY_VERIFY_WITH_TIMEOUT(f.session.elevation() > start + 1, 10000);
+        QTest::keyClick(f.window.get(), Qt::Key_Escape);
+        QVERIFY(!f.window->jogPad()->isHeld(slew::ui::JogPad::Up));
+        QVERIFY(f.sentCount(kStopLine) >= 1);
+        QVERIFY(f.waitUntilStill());
+        QTest::mouseRelease(left, Qt::LeftButton);
+    }
+
+    void stopEndsHoming()
+    {
+        WindowFixture f;
+        QVERIFY(f.connectAndWait());
+        QVERIFY(f.session.gotoPosition(120, 40));
+        QVERIFY(f.waitUntilAt(120, 40, 1.0));
+        auto *panel = f.window->parkHomePanel();
+        QVERIFY(panel->home());
+        QVERIFY(panel->isHoming());
+        QVERIFY(f.session.hasPosition());
+        QTRY_VERIFY_WITH_TIMEOUT(f.session.azimuth() < 115, 10000); // heading for the switch
+        QTest::mouseClick(f.find<QPushButton>(QStringLiteral("homeCancel")), Qt::LeftButton);
+        QVERIFY(!panel->isHoming());
+        QVERIFY(f.sentCount(kStopLine) >= 1);
+        QVERIFY(f.waitUntilStill());
+        QVERIFY(f.session.azimuth() > 1); // stopped before it got home
+    }
+
+    void spaceStopsUnlessTypingEscAlways()
+    {
+        WindowFixture f;
+        QVERIFY(f.connectAndWait());
+        f.find<QWidget>(QStringLiteral("polarPlot"))->setFocus();
+        QTest::keyClick(f.window.get(), Qt::Key_Space);
+        QCOMPARE(f.sentCount(kStopLine), 1);
+        auto *raw = f.find<QLineEdit>(QStringLiteral("rawCommand"));
+        raw->setFocus();
+        QTest::keyClick(raw, Qt::Key_Space); // a space in a text field is a space
+        QCOMPARE(f.sentCount(kStopLine), 1);
+        QCOMPARE(raw->text(), QStringLiteral(" "));
+        QTest::keyClick(raw, Qt::Key_Escape);
+        QCOMPARE(f.sentCount(kStopLine), 2);
+    }
+};
+
+QTEST_MAIN(TestStopEveryState)
+#include "tst_stopeverystate.moc"
