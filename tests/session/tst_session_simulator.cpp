@@ -1,0 +1,193 @@
+// RotatorSession against the real simulator on every kind of link it has:
+// the in-process sim: link, slew-sim over TCP, and slew-sim's pseudo-terminal
+// opened as a serial port (QSerialPort). Probe, polling, telemetry, config
+// write then read-back, go-to, stop, park, home, and faults seen as errors.
+
+#include "../sim/slewsimprocess.h"
+#include "linkschemes.h"
+#include "session/rotatorsession.h"
+#include "sim/simulator.h"
+#include "sim/simulatorscheme.h"
+
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace slew;
+using session::RotatorSession;
+
+class SessionSimulatorTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { registerLinkSchemes(); }
+    void probeFindsEverythingTheDerivativeHas();
+    void configWriteThenReadBack();
+    void gotoStopParkHome();
+    void telemetryArrives();
+    void jamShowsAsMotorError();
+    void satnogsDialect();
+    void easycomm2MovesWithMlMr();
+    void overTcpToSlewSim();
+    void overASerialPortToSlewSimsPty();
+
+private:
+    static bool connectTo(RotatorSession &s, const QString &uri, protocol::Dialect d = protocol::Dialect::Easycomm3);
+};
+
+bool SessionSimulatorTest::connectTo(RotatorSession &s, const QString &uri, protocol::Dialect d)
+{
+    model::RotatorProfile p;
+    p.uri = uri;
+    p.dialect = d;
+    s.setProfile(p);
+    s.connectTo(uri);
+    return QTest::qWaitFor([&] { return s.isConnected() && s.capabilities().probed && s.hasPosition(); }, 15000);
+}
+
+void SessionSimulatorTest::probeFindsEverythingTheDerivativeHas()
+{
+    RotatorSession s;
+    QVERIFY(connectTo(s, "sim:"));
+    const auto c = s.capabilities();
+    QVERIFY(c.positionFeedback && c.version && c.status && c.errors && c.inputs && c.config && c.encoders);
+    QVERIFY(c.velocity && c.park && c.reset && c.stop);
+    QCOMPARE(s.version(), QStringLiteral("SlewSim-1.0"));
+    QTRY_VERIFY(s.status().valid);
+    QTRY_COMPARE(s.errorFlags(), 1); // "no error" in the SatNOGS / seeds/000 reading
+}
+
+void SessionSimulatorTest::configWriteThenReadBack()
+{
+    RotatorSession s;
+    QVERIFY(connectTo(s, "sim:"));
+    QSignalSpy values(&s, &RotatorSession::configValueReceived);
+    QVERIFY(s.writeConfig(1, "2.75"));
+    QVERIFY(s.writeConfig(8, "45"));
+    QVERIFY(s.readConfig(1));
+    QVERIFY(s.readConfig(8));
+    auto valueOf = [&](int reg) {
+        for (const auto &v : values)
+            if (v.at(0).toInt() == reg)
+                return v.at(1).toString().toDouble();
+        return qQNaN();
+    };
+    QTRY_COMPARE(valueOf(1), 2.75);
+    QTRY_COMPARE(valueOf(8), 45.0);
+}
+
+void SessionSimulatorTest::gotoStopParkHome()
+{
+    RotatorSession s;
+    QVERIFY(connectTo(s, "sim:?park_az=90&park_el=10"));
+    QVERIFY(s.gotoPosition(20, 15));
+    QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.azimuth() - 20) < 0.2 && std::abs(s.elevation() - 15) < 0.2, 15000);
+    QSignalSpy commanded(&s, &RotatorSession::commandedChanged);
+    QTRY_VERIFY(!commanded.isEmpty()); // CR10/CR11 polled back
+    QCOMPARE(commanded.last().at(0).toDouble(), 20.0);
+
+    QVERIFY(s.gotoPosition(80, 40));
+    QTRY_VERIFY(s.status().anyMoving());
+    QVERIFY(s.stop());
+    QTRY_VERIFY_WITH_TIMEOUT(s.status().idle(), 15000);
+    QVERIFY(std::abs(s.azimuth() - 80) > 1); // stopped on the way
+
+    QVERIFY(s.park());
+    QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.azimuth() - 90) < 0.2 && std::abs(s.elevation() - 10) < 0.2, 15000);
+    QVERIFY(s.home());
+    QTRY_VERIFY_WITH_TIMEOUT(s.status().anyMoving(), 5000);
+    QTRY_VERIFY_WITH_TIMEOUT(s.status().idle() && std::abs(s.azimuth()) < 0.2 && std::abs(s.elevation()) < 0.2, 30000);
+}
+
+void SessionSimulatorTest::telemetryArrives()
+{
+    RotatorSession s;
+    QVERIFY(connectTo(s, "sim:"));
+    QVERIFY(s.moveAxis(session::Axis::Azimuth, 5.0));
+    QTRY_VERIFY_WITH_TIMEOUT(s.telemetry().azVelocity > 1.0, 10000);
+    QVERIFY(!std::isnan(s.telemetry().temperature));
+    QVERIFY(!std::isnan(s.telemetry().azLoad));
+    QVERIFY(s.telemetry().azEndStop >= 0);
+    QVERIFY(s.stop());
+    QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.telemetry().azVelocity) < 0.05, 10000);
+}
+
+void SessionSimulatorTest::jamShowsAsMotorError()
+{
+    RotatorSession s;
+    QVERIFY(connectTo(s, "sim:?jam=az&jam_after=0.3"));
+    QVERIFY(s.gotoPosition(60, 0));
+    QTRY_VERIFY_WITH_TIMEOUT(s.errorFlags() > 1 && (s.errorFlags() & session::ErrorMotor), 10000);
+    QTRY_VERIFY(s.status().anyError());
+    QVERIFY(session::describeErrorFlags(s.errorFlags()).contains("motor"));
+    // The simulator stays reachable behind the session's link (tests, the wizard).
+    sim::Simulator *simulator = sim::simulatorBehind(s.link());
+    QVERIFY(simulator);
+    QVERIFY(s.stop());
+}
+
+void SessionSimulatorTest::satnogsDialect()
+{
+    RotatorSession s;
+    QVERIFY(connectTo(s, "sim:?dialect=satnogs", protocol::Dialect::SatNogs));
+    QVERIFY(!s.capabilities().encoders); // not in SatNOGS
+    QSignalSpy values(&s, &RotatorSession::configValueReceived);
+    QSignalSpy sent(&s, &RotatorSession::bytesSent);
+    QVERIFY(s.readConfig(4));
+    QTRY_VERIFY(!values.isEmpty() && values.last().at(0).toInt() == 4);
+    bool spaced = false;
+    for (const auto &b : sent)
+        spaced = spaced || b.at(0).toByteArray() == "CR 4\n";
+    QVERIFY(spaced);
+    QVERIFY(s.gotoPosition(30, 30));
+    QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.azimuth() - 30) < 0.2, 15000);
+}
+
+void SessionSimulatorTest::easycomm2MovesWithMlMr()
+{
+    RotatorSession s;
+    QVERIFY(connectTo(s, "sim:?dialect=easycomm2", protocol::Dialect::Easycomm2));
+    QVERIFY(!s.capabilities().status && !s.capabilities().config);
+    const double start = s.azimuth();
+    QSignalSpy sent(&s, &RotatorSession::bytesSent);
+    QVERIFY(s.moveAxis(session::Axis::Azimuth, 3.0));
+    QTRY_VERIFY_WITH_TIMEOUT(s.azimuth() > start + 2, 10000);
+    QVERIFY(s.stop(session::Axes::Azimuth));
+    bool mr = false;
+    for (const auto &b : sent)
+        mr = mr || b.at(0).toByteArray() == "MR\n";
+    QVERIFY(mr);
+}
+
+void SessionSimulatorTest::overTcpToSlewSim()
+{
+    SlewSimProcess sim;
+    QVERIFY2(sim.start({"--listen", "127.0.0.1:0"}), qPrintable(sim.error()));
+    RotatorSession s;
+    QVERIFY(connectTo(s, QStringLiteral("tcp://127.0.0.1:%1").arg(sim.port())));
+    QVERIFY(s.capabilities().encoders);
+    QVERIFY(s.gotoPosition(12.5, 7.25));
+    QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.azimuth() - 12.5) < 0.2 && std::abs(s.elevation() - 7.25) < 0.2, 15000);
+    QCOMPARE(sim.stop(), 0);
+}
+
+void SessionSimulatorTest::overASerialPortToSlewSimsPty()
+{
+    QTemporaryDir dir;
+    const QString pty = dir.filePath("ttySLEW");
+    SlewSimProcess sim;
+    QVERIFY2(sim.start({"--pty", pty, "--baud", "19200", "--dialect", "satnogs"}), qPrintable(sim.error()));
+    RotatorSession s;
+    QVERIFY(connectTo(s, "serial:" + pty + "?baud=19200", protocol::Dialect::SatNogs));
+    QVERIFY(s.capabilities().version);
+    QVERIFY(s.gotoPosition(33, 22));
+    QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.azimuth() - 33) < 0.2 && std::abs(s.elevation() - 22) < 0.2, 15000);
+    QSignalSpy values(&s, &RotatorSession::configValueReceived);
+    QVERIFY(s.writeConfig(2, "0.125"));
+    QVERIFY(s.readConfig(2));
+    QTRY_VERIFY(!values.isEmpty() && values.last().at(0).toInt() == 2);
+    QCOMPARE(values.last().at(1).toString().toDouble(), 0.125);
+    QCOMPARE(sim.stop(), 0);
+}
+
+QTEST_GUILESS_MAIN(SessionSimulatorTest)
+#include "tst_session_simulator.moc"
