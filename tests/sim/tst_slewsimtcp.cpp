@@ -183,7 +183,9 @@ private slots:
         // A half line on one connection does not disturb the other.
         a.socket().write("AZ");
         QCOMPARE(b.ask("GE\n"), QByteArray("GE1\n"));
-        QCOMPARE(a.ask(" EL\n"), QByteArray("AZ0.00 EL0.00\n"));
+        const QByteArray joined = a.ask(" EL\n");
+        QVERIFY2(QRegularExpression("^AZ-?\\d+\\.\\d\\d EL-?\\d+\\.\\d\\d\n$").match(QString(joined)).hasMatch(),
+                 joined.constData());
     }
 
     void garbageBarrageThenAValidQuery()
