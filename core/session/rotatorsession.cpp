@@ -140,8 +140,8 @@ void RotatorSession::openLink()
     }
     m_link = std::move(made.link);
     connect(m_link.get(), &transport::Link::opened, this, &RotatorSession::onLinkOpened);
-    connect(m_link.get(), &transport::Link::failed, this, &RotatorSession::onLinkFailed);
-    connect(m_link.get(), &transport::Link::lost, this, &RotatorSession::onLinkLost);
+    connect(m_link.get(), &transport::Link::failed, this, &RotatorSession::onLinkDown);
+    connect(m_link.get(), &transport::Link::lost, this, &RotatorSession::onLinkDown);
     connect(m_link->device(), &QIODevice::readyRead, this, &RotatorSession::onReadyRead);
     connect(m_link.get(), &transport::Link::notice, this, &RotatorSession::errorOccurred);
     connect(m_link.get(), &transport::Link::limitsReported, this,
@@ -163,27 +163,17 @@ void RotatorSession::onLinkOpened()
     m_pollTimer.start();
 }
 
-void RotatorSession::onLinkFailed(const QString &reason)
+void RotatorSession::onLinkDown(const QString &reason)
 {
+    // Whether it never opened or went away, the way on is the same: retry
+    // when the operator asked for it, else stay disconnected with the reason.
     emit errorOccurred(reason);
     if (m_wantConnected && m_options.autoReconnect) {
         scheduleReconnect(reason);
         return;
     }
     m_wantConnected = false;
-    dropLink();
-    setState(State::Disconnected, reason);
-}
-
-void RotatorSession::onLinkLost(const QString &reason)
-{
-    emit errorOccurred(reason);
-    if (m_wantConnected && m_options.autoReconnect) {
-        scheduleReconnect(reason);
-        return;
-    }
-    m_wantConnected = false;
-    dropLink();
+    dropLink(reason);
     setState(State::Disconnected, reason);
 }
 

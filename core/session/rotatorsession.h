@@ -115,8 +115,7 @@ private:
     void setState(State s, const QString &detail = {});
     void openLink();
     void onLinkOpened();
-    void onLinkFailed(const QString &reason);
-    void onLinkLost(const QString &reason);
+    void onLinkDown(const QString &reason); // failed to open, or lost
     void dropLink(const QString &reason = {});
     void scheduleReconnect(const QString &reason);
     void onReadyRead();
