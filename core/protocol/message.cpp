@@ -40,12 +40,13 @@ Message Message::word(Op op, QByteArrayView text, int index)
     return m;
 }
 
-Message Message::invalid(QByteArrayView raw, const char *reason)
+Message Message::invalid(QByteArrayView raw, const char *reason, Refusal kind)
 {
     Message m;
     m.op = Op::Invalid;
     m.text.assign(raw);
     m.reason = reason;
+    m.refusal = kind;
     return m;
 }
 

@@ -54,6 +54,10 @@ enum class Op : std::uint8_t {
     ConfigValue,   // n,value   SatNOGS' answer to `CR n` (no CR prefix)
 };
 
+// Why a token was refused, for code that counts or answers by kind; the
+// reason string is for people.
+enum class Refusal : std::uint8_t { None, Unknown, Malformed, Overlong };
+
 // A short string stored inline. Longer input is refused by the parser before
 // it gets here, so the cap is also the protocol's longest token.
 class InlineText {
@@ -86,6 +90,7 @@ struct Message {
     std::array<double, 4> encoders{}; // Op::Encoders: az, el, az velocity, el velocity
     InlineText text;        // word argument (mode, version, register value, alarm)
     const char *reason = nullptr; // Op::Invalid: why the token was refused (static string)
+    Refusal refusal = Refusal::None; // Op::Invalid: the kind of refusal
     bool lineEnd = false;   // the token was ended by CR or LF, not by a space (framing only:
                             // a device answers a whole line at once; not compared by ==)
 
@@ -96,7 +101,7 @@ struct Message {
     static Message query(Op op, int index = -1);
     static Message number(Op op, double value, int index = -1);
     static Message word(Op op, QByteArrayView text, int index = -1);
-    static Message invalid(QByteArrayView raw, const char *reason);
+    static Message invalid(QByteArrayView raw, const char *reason, Refusal kind = Refusal::Malformed);
 };
 
 bool operator==(const Message &a, const Message &b);

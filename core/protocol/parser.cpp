@@ -231,7 +231,8 @@ void Parser::finishToken(bool lineEnd)
     const QByteArrayView token(m_token.data(), m_length);
     Message m;
     if (m_overflow) {
-        m = Message::invalid(token, "token longer than 128 bytes, dropped up to the next separator");
+        m = Message::invalid(token, "token longer than 128 bytes, dropped up to the next separator",
+                             Refusal::Overlong);
     } else if (m_hasPending && isBareConfigRead(m_pending) && allDigits(token) && token.size() <= 5) {
         // SatNOGS: `CR 1` is one command.
         m_hasPending = false;
@@ -307,11 +308,11 @@ Message Parser::classify(QByteArrayView t) const
         QByteArrayView value;
         if (t.contains(',') && splitIndexed(t, &index, &value) && !value.isEmpty())
             return indexedReply(Op::ConfigValue, index, value);
-        return Message::invalid(t, "number without a command");
+        return Message::invalid(t, "number without a command", Refusal::Unknown);
     }
 
     if (t.size() < 2)
-        return Message::invalid(t, "unknown command");
+        return Message::invalid(t, "unknown command", Refusal::Unknown);
     const QByteArrayView rest = t.sliced(2);
 
     for (const Simple &s : kBare) {
@@ -450,7 +451,7 @@ Message Parser::classify(QByteArrayView t) const
     default:
         break;
     }
-    return Message::invalid(t, "unknown command");
+    return Message::invalid(t, "unknown command", Refusal::Unknown);
 }
 
 } // namespace slew::protocol

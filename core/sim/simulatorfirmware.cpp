@@ -5,7 +5,6 @@
 #include <QDateTime>
 
 #include <cmath>
-#include <cstring>
 
 namespace slew::sim {
 
@@ -30,11 +29,6 @@ QByteArray printable(QByteArrayView raw)
         text += (u > 0x20 && u < 0x7f) ? c : '?';
     }
     return text.isEmpty() ? QByteArray("?") : text;
-}
-
-bool contains(const char *text, const char *what)
-{
-    return text && std::strstr(text, what) != nullptr;
 }
 
 } // namespace
@@ -167,10 +161,10 @@ QByteArray SimulatorFirmware::velocityReply(Op op) const
 void SimulatorFirmware::handle(const Message &m, QByteArray &out)
 {
     if (!m.isValid()) {
-        if (contains(m.reason, "longer than")) {
+        if (m.refusal == protocol::Refusal::Overlong) {
             ++m_counters.overlong;
             alarm("overlong", m.text.view(), out);
-        } else if (contains(m.reason, "unknown") || contains(m.reason, "without a command")) {
+        } else if (m.refusal == protocol::Refusal::Unknown) {
             ++m_counters.unknown;
             alarm("unknown", m.text.view(), out);
         } else {

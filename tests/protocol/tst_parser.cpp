@@ -270,6 +270,10 @@ void ParserTest::overlongTokenIsDroppedOnce()
     again.feed(huge + ' ', [](const Message &) {});
     again.feed("X", [&](const Message &m) { reason = m.reason; });
     QVERIFY(reason && QByteArray(reason).contains("longer than"));
+    Refusal kind = Refusal::None;
+    again.feed(QByteArray(200, 'B') + ' ', [](const Message &) {});
+    again.feed("X", [&](const Message &m) { kind = m.refusal; });
+    QCOMPARE(kind, Refusal::Overlong);
 }
 
 void ParserTest::nulBytesAreRefused()
@@ -282,6 +286,10 @@ void ParserTest::nulBytesAreRefused()
 
 void ParserTest::parseTokenWithoutContext()
 {
+    QCOMPARE(Parser::parseToken("XY12", Dialect::Easycomm3).refusal, Refusal::Unknown);
+    QCOMPARE(Parser::parseToken("42", Dialect::Easycomm3).refusal, Refusal::Unknown);
+    QCOMPARE(Parser::parseToken("AZ1x", Dialect::Easycomm3).refusal, Refusal::Malformed);
+    QCOMPARE(Parser::parseToken("AZ1", Dialect::Easycomm3).refusal, Refusal::None);
     QCOMPARE(dumpMessage(Parser::parseToken("GS1030", Dialect::Easycomm3)), QStringLiteral("status register=1030"));
     QCOMPARE(Parser::parseToken("??", Dialect::Easycomm3).op, Op::Invalid);
 }
