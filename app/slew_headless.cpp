@@ -1,6 +1,7 @@
 // `slew --headless --connect URI --rotctld-listen ADDR:PORT`: argument parsing
 // and wiring for the station service; the work is in core/bridge.
 
+#include "transport/hostport.h"
 #include "slew_headless.h"
 
 #include "bridge/headlessstation.h"
@@ -15,24 +16,6 @@
 #include <cstring>
 
 namespace {
-
-bool splitHostPort(const QString &text, QHostAddress *address, quint16 *port)
-{
-    const qsizetype colon = text.lastIndexOf(u':');
-    if (colon < 0)
-        return false;
-    QString host = text.left(colon);
-    if (host.startsWith(u'[') && host.endsWith(u']'))
-        host = host.mid(1, host.size() - 2);
-    bool ok = false;
-    const uint p = text.mid(colon + 1).toUInt(&ok);
-    if (!ok || p > 65535)
-        return false;
-    // Loopback unless the operator names another address.
-    *address = host.isEmpty() ? QHostAddress(QHostAddress::LocalHost) : QHostAddress(host);
-    *port = quint16(p);
-    return !address->isNull();
-}
 
 int fail(const QString &message)
 {
@@ -96,7 +79,7 @@ int runHeadless(int argc, char *argv[])
         config.profile.dialect = *d;
     }
     if (parser.isSet(listen)) {
-        if (!splitHostPort(parser.value(listen), &config.rotctldAddress, &config.rotctldPort))
+        if (!slew::transport::parseHostPort(parser.value(listen), &config.rotctldAddress, &config.rotctldPort))
             return fail(QStringLiteral("--rotctld-listen %1: expected ADDRESS:PORT").arg(parser.value(listen)));
         config.rotctldEnabled = true;
     }

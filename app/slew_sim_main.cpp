@@ -1,6 +1,7 @@
 // slew-sim: the simulated rotator as a server, on TCP and/or a
 // pseudo-terminal. Argument parsing and wiring only; everything else is in
 // core/sim.
+#include "transport/hostport.h"
 #include "sim/ptyendpoint.h"
 #include "sim/receivedlog.h"
 #include "sim/simulator.h"
@@ -27,22 +28,6 @@ void fail(const QString &message)
 }
 
 // "127.0.0.1:4533", "[::1]:0", ":4533" (loopback)
-bool splitHostPort(const QString &text, QHostAddress *address, quint16 *port)
-{
-    const qsizetype colon = text.lastIndexOf(u':');
-    if (colon < 0)
-        return false;
-    QString host = text.left(colon);
-    if (host.startsWith(u'[') && host.endsWith(u']'))
-        host = host.mid(1, host.size() - 2);
-    bool ok = false;
-    const uint p = text.mid(colon + 1).toUInt(&ok);
-    if (!ok || p > 65535)
-        return false;
-    *address = host.isEmpty() ? QHostAddress(QHostAddress::LocalHost) : QHostAddress(host);
-    *port = quint16(p);
-    return !address->isNull();
-}
 
 } // namespace
 
@@ -105,7 +90,7 @@ int main(int argc, char *argv[])
     if (parser.isSet(listen) || !parser.isSet(pty)) {
         QHostAddress address(QHostAddress::LocalHost);
         quint16 port = 4533;
-        if (parser.isSet(listen) && !splitHostPort(parser.value(listen), &address, &port))
+        if (parser.isSet(listen) && !slew::transport::parseHostPort(parser.value(listen), &address, &port))
             fail(QStringLiteral("--listen %1: expected ADDRESS:PORT").arg(parser.value(listen)));
         ConnectionSettings tcpSettings = settings;
         if (parser.isSet(listenDialect)) {
