@@ -1,0 +1,164 @@
+// The tuning engine against a deliberately mistuned simulator on a stepped
+// clock: the proposal must take the overshoot under 5 % and cut the settling
+// time by at least 30 % on both axes, and cancel must leave the registers.
+#include "simulatorpump.h"
+
+#include "linkschemes.h"
+#include "session/rotatorsession.h"
+#include "sim/simulatorscheme.h"
+#include "tuning/axistuner.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+using namespace slew;
+using session::Axis;
+using session::RotatorSession;
+using tuning::AxisTuner;
+using tuning::TuningResult;
+
+namespace {
+
+// kp 12 with almost no damping: a 4° step overshoots by about half.
+const QString kMistuned = QStringLiteral("sim:?clock=manual&unsolicited=1&kp=12&ki=1&kd=1&start_az=100&start_el=30");
+
+sim::PidGains simGains(RotatorSession &s, Axis axis)
+{
+    return sim::simulatorBehind(s.link())
+        ->rotator()
+        .axis(axis == Axis::Azimuth ? sim::Axis::Azimuth : sim::Axis::Elevation)
+        .gains();
+}
+
+} // namespace
+
+class TestAxisTuner : public QObject {
+    Q_OBJECT
+
+    std::unique_ptr<RotatorSession> m_session;
+    std::unique_ptr<SimulatorPump> m_pump;
+
+    void connectTo(const QString &uri)
+    {
+        m_session = std::make_unique<RotatorSession>();
+        m_pump = std::make_unique<SimulatorPump>();
+        m_session->connectTo(uri);
+        QTRY_VERIFY_WITH_TIMEOUT(m_session->capabilities().probed && m_session->hasPosition(), 5000);
+        m_pump->drive(sim::simulatorBehind(m_session->link()));
+    }
+
+private slots:
+    void initTestCase() { registerLinkSchemes(); }
+    void cleanup()
+    {
+        m_pump.reset();
+        m_session.reset();
+    }
+
+    void proposalFixesMistunedAxis_data()
+    {
+        QTest::addColumn<int>("axisIndex");
+        QTest::newRow("azimuth") << int(Axis::Azimuth);
+        QTest::newRow("elevation") << int(Axis::Elevation);
+    }
+    void proposalFixesMistunedAxis()
+    {
+        QFETCH(int, axisIndex);
+        const Axis axis = Axis(axisIndex);
+        connectTo(kMistuned);
+        if (QTest::currentTestFailed())
+            return;
+        AxisTuner tuner(m_session.get());
+        QSignalSpy ready(&tuner, &AxisTuner::resultReady);
+        QSignalSpy failed(&tuner, &AxisTuner::failed);
+        QVERIFY2(tuner.start(axis), qPrintable(tuner.error()));
+        QTRY_VERIFY2_WITH_TIMEOUT(ready.count() == 1 || failed.count() == 1, "no result", 60000);
+        QVERIFY2(failed.isEmpty(), failed.isEmpty() ? "" : qPrintable(failed.front().front().toString()));
+        const TuningResult r = tuner.result();
+        qInfo().noquote() << "\n" << tuning::formatTuningTable({r});
+        QCOMPARE(r.oldGains.kp, 12.0);
+        QVERIFY2(r.beforeMetrics.overshootPercent > 20.0, qPrintable(QString::number(r.beforeMetrics.overshootPercent)));
+        QVERIFY2(r.afterMetrics.overshootPercent < 5.0, qPrintable(QString::number(r.afterMetrics.overshootPercent)));
+        QVERIFY(r.beforeMetrics.settled || r.beforeMetrics.settlingTime > 0);
+        QVERIFY(r.afterMetrics.settled);
+        QVERIFY2(r.afterMetrics.settlingTime <= 0.7 * r.beforeMetrics.settlingTime,
+                 qPrintable(QStringLiteral("%1 vs %2").arg(r.afterMetrics.settlingTime).arg(r.beforeMetrics.settlingTime)));
+        // The trial gains are on the controller until the operator decides.
+        QCOMPARE(simGains(*m_session, axis).kp, r.newGains.kp);
+        QSignalSpy finished(&tuner, &AxisTuner::finished);
+        tuner.accept();
+        QCOMPARE(finished.count(), 1);
+        QVERIFY(tuner.result().applied);
+        QCOMPARE(simGains(*m_session, axis).kd, r.newGains.kd);
+    }
+
+    void keepOldGainsWritesThemBack()
+    {
+        connectTo(kMistuned);
+        if (QTest::currentTestFailed())
+            return;
+        AxisTuner tuner(m_session.get());
+        QSignalSpy ready(&tuner, &AxisTuner::resultReady);
+        QVERIFY(tuner.start(Axis::Azimuth));
+        QTRY_COMPARE_WITH_TIMEOUT(ready.count(), 1, 60000);
+        QVERIFY(simGains(*m_session, Axis::Azimuth).kd != 1.0);
+        QSignalSpy finished(&tuner, &AxisTuner::finished);
+        tuner.keepOldGains();
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 10000);
+        QVERIFY(!tuner.result().applied);
+        const sim::PidGains g = simGains(*m_session, Axis::Azimuth);
+        QCOMPARE(g.kp, 12.0);
+        QCOMPARE(g.ki, 1.0);
+        QCOMPARE(g.kd, 1.0);
+    }
+
+    void cancelDuringTrialStopsAndRestores()
+    {
+        connectTo(kMistuned);
+        if (QTest::currentTestFailed())
+            return;
+        AxisTuner tuner(m_session.get());
+        QSignalSpy cancelled(&tuner, &AxisTuner::cancelled);
+        QVERIFY(tuner.start(Axis::Elevation));
+        // Cancel in the middle of the trial step, with the new gains written.
+        int afterSamples = 0;
+        connect(&tuner, &AxisTuner::sampleRecorded, this, [&](bool after, const tuning::PositionSample &) {
+            if (after && ++afterSamples == 5) {
+                QVERIFY(simGains(*m_session, Axis::Elevation).kd != 1.0);
+                tuner.cancel();
+            }
+        });
+        QTRY_COMPARE_WITH_TIMEOUT(cancelled.count(), 1, 10000);
+        const sim::PidGains g = simGains(*m_session, Axis::Elevation);
+        QCOMPARE(g.kp, 12.0);
+        QCOMPARE(g.ki, 1.0);
+        QCOMPARE(g.kd, 1.0);
+        // SE went out: the elevation drive is released.
+        QCOMPARE(sim::simulatorBehind(m_session->link())->rotator().axis(sim::Axis::Elevation).mode(),
+                 sim::DriveMode::Released);
+    }
+
+    void badStartChangesNothing()
+    {
+        RotatorSession idle;
+        AxisTuner tuner(&idle);
+        QVERIFY(!tuner.start(Axis::Azimuth));
+        QVERIFY(tuner.error().contains(QStringLiteral("connect")));
+
+        connectTo(kMistuned);
+        if (QTest::currentTestFailed())
+            return;
+        AxisTuner big(m_session.get());
+        tuning::TuningSettings s;
+        s.amplitude = 500;
+        big.setSettings(s);
+        QSignalSpy sent(m_session.get(), &RotatorSession::bytesSent);
+        QVERIFY(!big.start(Axis::Elevation));
+        QVERIFY2(big.error().contains(QStringLiteral("does not fit")), qPrintable(big.error()));
+        for (const QList<QVariant> &bytes : sent)
+            QVERIFY(!bytes.front().toByteArray().startsWith("EL"));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestAxisTuner)
+#include "tst_axistuner.moc"
