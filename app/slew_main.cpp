@@ -2,6 +2,7 @@
 // else lives in slewui and slewcore.
 
 #include "mainwindow.h"
+#include "operatortheme.h"
 #include "slew_headless.h"
 #include "windowsnapshot.h"
 
@@ -93,6 +94,7 @@ int main(int argc, char *argv[])
     QApplication::setOrganizationName(QStringLiteral("Slew"));
     QApplication::setApplicationName(QStringLiteral("slew"));
     QApplication::setApplicationVersion(QStringLiteral("0.1.0"));
+    slew::ui::applyOperatorTheme(app);
     slew::registerLinkSchemes();
 
     QCommandLineParser parser;

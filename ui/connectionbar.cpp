@@ -225,6 +225,7 @@ void ConnectionBar::connectToRotator()
 void ConnectionBar::disconnectFromRotator()
 {
     m_operatorDisconnected = true;
+    emit disconnectRequested();
     m_session->disconnectFromRotator();
 }
 

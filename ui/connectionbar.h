@@ -39,6 +39,9 @@ public slots:
     void connectToRotator(); // with what the fields say
     void disconnectFromRotator();
 
+signals:
+    void disconnectRequested(); // the operator is about to disconnect: not a loss
+
 private:
     void onStateChanged(session::RotatorSession::State state, const QString &detail);
     void refreshSerialPorts();

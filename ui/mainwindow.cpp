@@ -96,6 +96,7 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
     setCentralWidget(central);
 
     connect(m_alarms, &AlarmMonitor::alarmsChanged, m_banner, &AlarmBanner::showAlarms);
+    connect(m_connection, &ConnectionBar::disconnectRequested, m_alarms, &AlarmMonitor::expectDisconnect);
     connect(m_alarms, &AlarmMonitor::eventLogged, m_log, &EventLog::addEvent);
     connect(m_alarms, &AlarmMonitor::eventLogged, this,
             [this](const QDateTime &, AlarmMonitor::Severity, const QString &text) {

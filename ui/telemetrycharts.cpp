@@ -54,7 +54,7 @@ TelemetryCharts::TelemetryCharts(const model::TelemetryHistory *history, QWidget
     for (auto [label, minutes] : {std::pair{tr("1 min"), 1}, {tr("5 min"), 5}, {tr("15 min"), 15}, {tr("1 h"), 60},
                                   {tr("6 h"), 360}, {tr("24 h"), 1440}})
         m_window->addItem(label, qint64(minutes) * kMinute);
-    m_window->setCurrentIndex(1);
+    m_window->setCurrentIndex(0);
     m_pause = new QPushButton(tr("Pause"));
     m_pause->setObjectName(QStringLiteral("chartPause"));
     m_pause->setCheckable(true);
@@ -105,7 +105,7 @@ void TelemetryCharts::addPanel(const QString &title, const QString &unit,
     p.chart->setTheme(QChart::ChartThemeDark);
     p.chart->setBackgroundRoundness(0);
     p.chart->setMargins(QMargins(2, 2, 2, 2));
-    p.chart->legend()->setAlignment(Qt::AlignRight);
+    p.chart->legend()->setAlignment(Qt::AlignTop); // every plot area then has the same width, so times line up
     QFont small = p.chart->legend()->font();
     small.setPointSizeF(small.pointSizeF() * 0.85);
     p.chart->legend()->setFont(small);
@@ -160,8 +160,13 @@ void TelemetryCharts::setWindowMs(qint64 ms)
     // About one redraw per pixel's worth of time, within 4 Hz .. 0.2 Hz.
     m_timer.start(int(std::clamp<qint64>(m_windowMs / 600, 250, 5000)));
     const QString format = m_windowMs > 6 * 60 * kMinute ? QStringLiteral("HH:mm") : QStringLiteral("HH:mm:ss");
-    for (Panel &p : m_panels)
+    // Long windows carry a point per pixel column in every series; smoothing
+    // thousands of segments costs more than it shows.
+    const bool smooth = m_windowMs <= 15 * kMinute;
+    for (Panel &p : m_panels) {
         p.time->setFormat(format);
+        p.view->setRenderHint(QPainter::Antialiasing, smooth);
+    }
     redraw();
 }
 

@@ -68,7 +68,7 @@ private:
     QPushButton *m_export;
     QLabel *m_message;
     QTimer m_timer;
-    qint64 m_windowMs = 5 * 60 * 1000;
+    qint64 m_windowMs = 60 * 1000; // live by default: the last minute
     qint64 m_frozenAt = 0; // the view's right edge while paused
     bool m_paused = false;
     int m_redraws = 0;

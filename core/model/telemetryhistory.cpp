@@ -231,7 +231,20 @@ QList<QPointF> TelemetryHistory::decimated(int id, qint64 fromMs, qint64 toMs, i
     }
 
     const double width = std::max(1.0, double(qint64(to) - from + 1) / columns);
-    auto columnOf = [&](qint32 t) { return std::min<qint64>(columns - 1, qint64((qint64(t) - from) / width)); };
+    const double perMs = 1.0 / width;
+    auto columnOf = [&](qint32 t) { return std::min<qint64>(columns - 1, qint64(double(qint64(t) - from) * perMs)); };
+
+    // Physical positions advance with the index instead of being recomputed
+    // with a modulo for every sample: this loop runs for every block of every
+    // series on every redraw.
+    const std::size_t capacity = std::size_t(m_capacity), blockCapacity = std::size_t(m_blockCapacity);
+    std::size_t p = slot(lo);
+    std::size_t bp = blockSlot(lo / kBlock);
+    auto step = [&](std::size_t &at, std::size_t by, std::size_t cap) {
+        at += by;
+        if (at >= cap)
+            at -= cap;
+    };
 
     out.reserve(2 * columns);
     ColumnExtremes col;
@@ -240,10 +253,12 @@ QList<QPointF> TelemetryHistory::decimated(int id, qint64 fromMs, qint64 toMs, i
         // A whole block inside one column counts as its summary; the block
         // ring holds a summary for every block whose samples are all retained.
         if (i % kBlock == 0 && i + kBlock <= hi) {
-            const qint32 first = s.times[slot(i)], last = s.times[slot(i + kBlock - 1)];
-            const qint64 c = columnOf(first);
-            if (c == columnOf(last)) {
-                const Block &b = s.blocks[blockSlot(i / kBlock)];
+            std::size_t lastAt = p + kBlock - 1;
+            if (lastAt >= capacity)
+                lastAt -= capacity;
+            const qint64 c = columnOf(s.times[p]);
+            if (c == columnOf(s.times[lastAt])) {
+                const Block &b = s.blocks[bp];
                 if (c == col.column) {
                     col.merge(b.minTime, b.min, b.maxTime, b.max);
                 } else {
@@ -251,11 +266,13 @@ QList<QPointF> TelemetryHistory::decimated(int id, qint64 fromMs, qint64 toMs, i
                     col.start(c, b.minTime, b.min, b.maxTime, b.max);
                 }
                 i += kBlock;
+                step(p, kBlock, capacity);
+                step(bp, 1, blockCapacity);
                 continue;
             }
         }
-        const qint32 t = s.times[slot(i)];
-        const float v = s.values[slot(i)];
+        const qint32 t = s.times[p];
+        const float v = s.values[p];
         const qint64 c = columnOf(t);
         if (c == col.column) {
             col.merge(t, v, t, v);
@@ -264,6 +281,9 @@ QList<QPointF> TelemetryHistory::decimated(int id, qint64 fromMs, qint64 toMs, i
             col.start(c, t, v, t, v);
         }
         ++i;
+        step(p, 1, capacity);
+        if (i % kBlock == 0)
+            step(bp, 1, blockCapacity);
     }
     col.flush(out, base);
     return out;

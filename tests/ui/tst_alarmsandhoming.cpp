@@ -1,0 +1,71 @@
+// Link loss, operator disconnects and homing, each against a simulator set
+// up to produce the situation (drop_after, start position, missing switch).
+
+#include "windowfixture.h"
+
+#include "alarmbanner.h"
+#include "connectionbar.h"
+#include "parkhomepanel.h"
+#include "polarplotwidget.h"
+
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QTest>
+
+class TestAlarmsAndHoming : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { WindowFixture::prepareApplication(); }
+
+    void aLostLinkRaisesTheBannerAndShowsLost()
+    {
+        WindowFixture f(QStringLiteral("sim:?drop_after=1"));
+        QVERIFY(f.connectAndWait());
+        QTRY_VERIFY_WITH_TIMEOUT(f.window->alarmBanner()->text().contains(QStringLiteral("Link lost")), 10000);
+        QVERIFY(f.window->alarmBanner()->isSevere());
+        QCOMPARE(f.find<QLabel>(QStringLiteral("connectionState"))->text(), QStringLiteral("lost"));
+    }
+
+    void anOperatorDisconnectIsNotAnAlarm()
+    {
+        WindowFixture f;
+        QVERIFY(f.connectAndWait());
+        QVERIFY(f.session.gotoPosition(20, 10)); // off the end stops, so no warning holds
+        QVERIFY(f.waitUntilAt(20, 10));
+        QTRY_VERIFY_WITH_TIMEOUT(f.window->alarmBanner()->isHidden(), 5000);
+        QTest::mouseClick(f.find<QPushButton>(QStringLiteral("connectButton")), Qt::LeftButton);
+        QCOMPARE(f.session.state(), slew::session::RotatorSession::State::Disconnected);
+        QVERIFY(f.window->alarmBanner()->isHidden());
+        QCOMPARE(f.find<QLabel>(QStringLiteral("connectionState"))->text(), QStringLiteral("disconnected"));
+        QCOMPARE(slew::ui::ConnectionBar::rememberedUri(), QStringLiteral("sim:"));
+    }
+
+    void homingShowsProgressUntilIdle()
+    {
+        WindowFixture f(QStringLiteral("sim:?start_az=6&start_el=4"));
+        QVERIFY(f.connectAndWait());
+        QTest::mouseClick(f.find<QPushButton>(QStringLiteral("homeButton")), Qt::LeftButton);
+        auto *panel = f.window->parkHomePanel();
+        QVERIFY(panel->isHoming());
+        QVERIFY(!f.find<QProgressBar>(QStringLiteral("homeProgress"))->isHidden());
+        QVERIFY(f.sentCount(QRegularExpression(QStringLiteral("^RESET$"))) == 1);
+        QTRY_VERIFY_WITH_TIMEOUT(!panel->isHoming(), 30000);
+        QCOMPARE(f.find<QLabel>(QStringLiteral("homeMessage"))->text(), QStringLiteral("Homed."));
+        QVERIFY(f.find<QProgressBar>(QStringLiteral("homeProgress"))->isHidden());
+        QCOMPARE_LE(f.session.azimuth(), 0.5);
+        QCOMPARE_LE(f.session.elevation(), 0.5);
+    }
+
+    void parkGoesToThePark()
+    {
+        WindowFixture f(QStringLiteral("sim:?park_az=45&park_el=10"));
+        QVERIFY(f.connectAndWait());
+        QTest::mouseClick(f.find<QPushButton>(QStringLiteral("parkButton")), Qt::LeftButton);
+        QCOMPARE(f.sentCount(QRegularExpression(QStringLiteral("^PARK$"))), 1);
+        QVERIFY(f.waitUntilAt(45, 10));
+    }
+};
+
+QTEST_MAIN(TestAlarmsAndHoming)
+#include "tst_alarmsandhoming.moc"
