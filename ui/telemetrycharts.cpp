@@ -83,7 +83,7 @@ TelemetryCharts::TelemetryCharts(const model::TelemetryHistory *history, QWidget
              {{Series::AzActual, az}, {Series::ElActual, el}, {Series::AzCommanded, azCmd}, {Series::ElCommanded, elCmd}});
     addPanel(tr("Speed"), QStringLiteral("°/s"), {{Series::AzVelocity, az}, {Series::ElVelocity, el}});
     addPanel(tr("Load"), QString(), {{Series::AzLoad, az}, {Series::ElLoad, el}});
-    addPanel(tr("Temperature"), QStringLiteral("°C"), {{Series::Temperature, QColor(0xf2, 0x9a, 0x3c)}});
+    addPanel(tr("Temp"), QStringLiteral("°C"), {{Series::Temperature, QColor(0xf2, 0x9a, 0x3c)}});
     addPanel(tr("Status"), QString(),
              {{Series::AzStatus, az}, {Series::ElStatus, el}, {Series::ErrorFlags, QColor(0xe5, 0x48, 0x48)}}, true);
     for (Panel &p : m_panels)
@@ -221,6 +221,7 @@ void TelemetryCharts::redrawPanel(Panel &panel, qint64 from, qint64 to)
     }
     const double pad = std::max(0.5, (hi - lo) * 0.08);
     panel.value->setRange(lo - pad, hi + pad);
+    panel.value->applyNiceNumbers(); // round ticks an operator can read at a glance
     panel.time->setRange(QDateTime::fromMSecsSinceEpoch(from), QDateTime::fromMSecsSinceEpoch(to));
 }
 
