@@ -3,6 +3,7 @@
 #include "session/rotatorsession.h"
 
 #include "model/rotatorlimits.h"
+#include "protocol/encoder.h"
 
 #include <algorithm>
 #include <cmath>
@@ -45,7 +46,6 @@ bool StepExperiment::start(Axis axis, double from, double to)
     m_axis = axis;
     m_from = from;
     m_to = to;
-    m_holdOther = axis == Axis::Azimuth ? m_session->elevation() : m_session->azimuth();
     m_response = StepResponse{};
     // Both ends are checked against the limits before the first byte goes out.
     const model::RotatorLimits &lim = m_session->profile().limits;
@@ -82,9 +82,15 @@ bool StepExperiment::start(Axis axis, double from, double to)
 
 bool StepExperiment::command(double position)
 {
-    // gotoPosition moves both axes: the other one is told to stay put.
-    return m_axis == Axis::Azimuth ? m_session->gotoPosition(position, m_holdOther)
-                                   : m_session->gotoPosition(m_holdOther, position);
+    // Only the stepped axis is commanded: a set-position for both would make
+    // the session take the other axis' unchanged reading for an echo of the
+    // command and hold back whole position replies for a second. The line
+    // passes the session's limit checks like any other move.
+    const protocol::Op op = m_axis == Axis::Azimuth ? protocol::Op::Azimuth : protocol::Op::Elevation;
+    const QByteArray line = protocol::encodeLine({protocol::Message::number(op, position)}, m_session->profile().dialect);
+    if (line.trimmed().isEmpty())
+        return false;
+    return m_session->sendRaw(QString::fromLatin1(line).trimmed());
 }
 
 void StepExperiment::onPosition(double az, double el, bool stale)

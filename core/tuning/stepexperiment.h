@@ -1,8 +1,8 @@
 #pragma once
 // One step of one axis on the real controller: bring the axis to rest at the
 // start, command the target, and record the positions that come back until
-// the axis has stayed at the target for a while or the window runs out. The
-// other axis is held where it is. Driven entirely by the session's signals
+// the axis has stayed at the target for a while or the window runs out. Only
+// this axis is commanded; the other keeps what it was doing. Driven entirely by the session's signals
 // and a light timer; nothing waits.
 
 #include "sampleclock.h"
@@ -72,7 +72,6 @@ private:
     Phase m_phase = Phase::Idle;
     session::Axis m_axis = session::Axis::Azimuth;
     double m_from = 0.0, m_to = 0.0;
-    double m_holdOther = 0.0;   // the other axis stays here
     double m_phaseStart = 0.0;  // clock time the phase began
     double m_lastAway = 0.0;    // clock time the axis was last outside the band of its goal
     double m_last = 0.0;        // latest reading of the axis
