@@ -1,0 +1,142 @@
+#include "dialectidentifier.h"
+
+#include "session/rotatorsession.h"
+
+#include <QStringList>
+
+namespace slew::tuning {
+
+using protocol::Dialect;
+using session::Capabilities;
+using session::RotatorSession;
+
+QString DialectResult::describe() const
+{
+    QStringList answered;
+    const Capabilities &c = capabilities;
+    if (c.positionFeedback)
+        answered << QObject::tr("position");
+    if (c.version)
+        answered << QStringLiteral("VE");
+    if (c.status)
+        answered << QStringLiteral("GS");
+    if (c.errors)
+        answered << QStringLiteral("GE");
+    if (c.inputs)
+        answered << QStringLiteral("IP");
+    if (c.config)
+        answered << QStringLiteral("CR/CW");
+    if (c.encoders)
+        answered << QStringLiteral("\\?ENC");
+    if (c.velocity)
+        answered << QObject::tr("velocity (VL/VR/VU/VD)");
+    return QStringLiteral("%1: %2").arg(protocol::dialectName(dialect),
+                                        answered.isEmpty() ? QObject::tr("no answer") : answered.join(QStringLiteral(", ")));
+}
+
+DialectIdentifier::DialectIdentifier(QObject *parent) : QObject(parent)
+{
+    m_timer.setSingleShot(true);
+    m_timer.setInterval(8000);
+    connect(&m_timer, &QTimer::timeout, this, [this] { conclude(Capabilities{}); });
+}
+
+DialectIdentifier::~DialectIdentifier() = default;
+
+bool DialectIdentifier::start(const QString &uri)
+{
+    m_error.clear();
+    if (uri.trimmed().isEmpty()) {
+        m_error = tr("no link to identify");
+        return false;
+    }
+    cancel();
+    m_uri = uri.trimmed();
+    m_results.clear();
+    m_pending = {Dialect::Easycomm3, Dialect::SatNogs, Dialect::Easycomm2};
+    next();
+    return true;
+}
+
+void DialectIdentifier::cancel()
+{
+    m_timer.stop();
+    m_pending.clear();
+    if (m_session) {
+        m_session->disconnect(this);
+        m_session.release()->deleteLater();
+    }
+}
+
+std::optional<DialectResult> DialectIdentifier::best() const
+{
+    std::optional<DialectResult> winner;
+    for (const DialectResult &r : m_results) {
+        if (r.capabilities.positionFeedback && (!winner || r.score > winner->score))
+            winner = r;
+    }
+    return winner;
+}
+
+void DialectIdentifier::next()
+{
+    if (m_pending.isEmpty()) {
+        emit progress(100, tr("done"));
+        emit finished(best().has_value());
+        return;
+    }
+    const Dialect d = m_pending.takeFirst();
+    emit progress(100 * int(m_results.size()) / 3, tr("asking in %1").arg(protocol::dialectName(d)));
+    DialectResult r;
+    r.dialect = d;
+    m_results.append(r);
+    m_session = std::make_unique<RotatorSession>();
+    model::RotatorProfile profile;
+    profile.dialect = d;
+    m_session->setProfile(profile);
+    connect(m_session.get(), &RotatorSession::capabilitiesChanged, this, [this](const Capabilities &caps) {
+        if (caps.probed)
+            conclude(caps);
+    });
+    connect(m_session.get(), &RotatorSession::stateChanged, this, [this](RotatorSession::State s, const QString &why) {
+        if (s == RotatorSession::State::Disconnected) {
+            m_error = why;
+            conclude(Capabilities{});
+        }
+    });
+    m_timer.start();
+    m_session->connectTo(m_uri);
+}
+
+void DialectIdentifier::conclude(const Capabilities &caps)
+{
+    if (!m_session || m_results.isEmpty())
+        return;
+    m_timer.stop();
+    DialectResult &r = m_results.back();
+    r.capabilities = caps;
+    r.version = m_session->version();
+    // Each answer counts for the dialect and each query it left unanswered
+    // against it: a richer dialect than the device speaks asks for more
+    // than it gets, so the dialect that explains everything wins.
+    using protocol::Op;
+    const std::pair<Op, bool> asked[] = {
+        {Op::Azimuth, caps.positionFeedback}, {Op::Version, caps.version}, {Op::Status, caps.status},
+        {Op::ErrorFlags, caps.errors},         {Op::ReadInput, caps.inputs}, {Op::ConfigRead, caps.config},
+        {Op::Encoders, caps.encoders},
+    };
+    r.score = 0;
+    for (const auto &[op, answered] : asked) {
+        if (protocol::dialectSupports(r.dialect, op))
+            r.score += answered ? 1 : -1;
+    }
+    // SatNOGS firmware names itself at the front of VE.
+    if (r.dialect == Dialect::SatNogs && r.version.startsWith(QLatin1String("SatNOGS"), Qt::CaseInsensitive))
+        r.score += 1;
+    m_session->disconnect(this);
+    m_session->disconnectFromRotator();
+    m_session.release()->deleteLater();
+    QMetaObject::invokeMethod(this, &DialectIdentifier::next, Qt::QueuedConnection);
+}
+
+} // namespace slew::tuning

@@ -1,0 +1,62 @@
+#pragma once
+// Works out which Easycomm flavour a controller speaks by talking to it in
+// each one and counting what it answers (position, VE, GS, GE, IP, CR,
+// \?ENC) against what it leaves unanswered. The dialect that explains the
+// most wins; on a tie the one listed first (easycomm3, satnogs, easycomm2).
+// Easycomm I answers nothing, so it can only be chosen by hand.
+
+#include "protocol/dialect.h"
+#include "session/rotatorstate.h"
+
+#include <QList>
+#include <QObject>
+#include <QTimer>
+
+#include <memory>
+#include <optional>
+
+namespace slew::session {
+class RotatorSession;
+}
+
+namespace slew::tuning {
+
+struct DialectResult {
+    protocol::Dialect dialect = protocol::Dialect::Easycomm3;
+    session::Capabilities capabilities;
+    QString version;
+    int score = 0; // queries answered minus queries left unanswered
+    QString describe() const; // "easycomm3: position, VE, GS, GE, IP, CR/CW, \?ENC"
+};
+
+class DialectIdentifier : public QObject {
+    Q_OBJECT
+public:
+    explicit DialectIdentifier(QObject *parent = nullptr);
+    ~DialectIdentifier() override;
+
+    void setAttemptMs(int ms) { m_timer.setInterval(ms); }
+    bool start(const QString &uri);
+    void cancel();
+    bool isRunning() const { return m_session != nullptr; }
+    QString error() const { return m_error; }
+    const QList<DialectResult> &results() const { return m_results; }
+    std::optional<DialectResult> best() const;
+
+signals:
+    void progress(int percent, const QString &what);
+    void finished(bool identified);
+
+private:
+    void next();
+    void conclude(const session::Capabilities &caps);
+
+    QString m_uri;
+    QList<protocol::Dialect> m_pending;
+    QList<DialectResult> m_results;
+    std::unique_ptr<session::RotatorSession> m_session;
+    QTimer m_timer;
+    QString m_error;
+};
+
+} // namespace slew::tuning
