@@ -35,6 +35,8 @@ int hamlibModelFor(protocol::Dialect d)
     case protocol::Dialect::Easycomm2: return 202;
     case protocol::Dialect::Easycomm3:
     case protocol::Dialect::SatNogs: return 204;
+    case protocol::Dialect::Gs232A: return 601;
+    case protocol::Dialect::Gs232B: return 603;
     }
     return 204;
 }

@@ -9,13 +9,32 @@ QString dialectName(Dialect d)
     case Dialect::Easycomm2: return QStringLiteral("easycomm2");
     case Dialect::Easycomm3: return QStringLiteral("easycomm3");
     case Dialect::SatNogs: return QStringLiteral("satnogs");
+    case Dialect::Gs232A: return QStringLiteral("gs232a");
+    case Dialect::Gs232B: return QStringLiteral("gs232b");
     }
     return {};
 }
 
+const QList<Dialect> &allDialects()
+{
+    static const QList<Dialect> all{Dialect::Easycomm1, Dialect::Easycomm2, Dialect::Easycomm3,
+                                    Dialect::SatNogs,   Dialect::Gs232A,    Dialect::Gs232B};
+    return all;
+}
+
+bool isGs232(Dialect d)
+{
+    return d == Dialect::Gs232A || d == Dialect::Gs232B;
+}
+
+char lineTerminator(Dialect d)
+{
+    return isGs232(d) ? '\r' : '\n';
+}
+
 std::optional<Dialect> dialectFromName(QStringView name)
 {
-    for (Dialect d : {Dialect::Easycomm1, Dialect::Easycomm2, Dialect::Easycomm3, Dialect::SatNogs}) {
+    for (Dialect d : allDialects()) {
         if (name.compare(dialectName(d), Qt::CaseInsensitive) == 0)
             return d;
     }
@@ -24,6 +43,23 @@ std::optional<Dialect> dialectFromName(QStringView name)
 
 bool dialectSupports(Dialect d, Op op)
 {
+    if (isGs232(d)) {
+        switch (op) {
+        case Op::Azimuth:   // M (set), C (query)
+        case Op::Elevation: // B (query); set only together with azimuth (W)
+        case Op::MoveLeft:
+        case Op::MoveRight:
+        case Op::MoveUp:
+        case Op::MoveDown:
+        case Op::StopAzimuth:   // A
+        case Op::StopElevation: // E
+        case Op::Speed:         // X1..X4
+        case Op::KeepAlive:     // ?  (seeds/004)
+            return true;
+        default:
+            return false;
+        }
+    }
     switch (op) {
     case Op::Invalid:
     case Op::ConfigValue: // a reply, never sent by the host
@@ -66,12 +102,17 @@ bool dialectSupports(Dialect d, Op op)
         return d != Dialect::Easycomm1; // Hamlib sends both to models 202 and 204
     case Op::Encoders:
         return d == Dialect::Easycomm3;
+    case Op::Speed:
+    case Op::KeepAlive:
+        return false;
     }
     return false;
 }
 
 int angleDecimals(Dialect d)
 {
+    if (isGs232(d))
+        return 0; // whole degrees: W010 020
     return d == Dialect::Easycomm3 ? 2 : 1;
 }
 

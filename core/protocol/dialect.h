@@ -4,6 +4,7 @@
 
 #include "message.h"
 
+#include <QList>
 #include <QString>
 
 #include <optional>
@@ -15,7 +16,16 @@ enum class Dialect : std::uint8_t {
     Easycomm2, // two-letter commands, one decimal, ML/MR/MU/MD (Hamlib model 202)
     Easycomm3, // the seeds/000 derivative: two decimals, VL..VD, CR/CW, GS per axis, \?ENC
     SatNogs,   // SatNOGS firmware: `CR n` answered `n,value`, VE, IP0..8 (Hamlib model 204)
+    Gs232A,    // Yaesu GS-232A: W/M/C2/S/A/E/R/L/U/D/X, position `+0aaa+0eee` (Hamlib model 601)
+    Gs232B,    // Yaesu GS-232B: the same commands, position `AZ=aaa  EL=eee` (Hamlib model 603)
 };
+
+// Every dialect, in the order the UI lists them.
+const QList<Dialect> &allDialects();
+bool isGs232(Dialect d);
+
+// What ends a line Slew sends: `\n` for Easycomm, `\r` for GS-232.
+char lineTerminator(Dialect d);
 
 QString dialectName(Dialect d);                              // "easycomm2"
 std::optional<Dialect> dialectFromName(QStringView name);   // accepts the names above

@@ -1,5 +1,6 @@
 #include "encoder.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -34,12 +35,39 @@ QByteArray velocity(double mdegPerSecond, Dialect d)
     return QByteArray(buffer, n);
 }
 
+QByteArray threeDigits(double degrees)
+{
+    char buffer[32];
+    const int n = std::snprintf(buffer, sizeof buffer, "%03lld", std::llround(std::max(0.0, degrees)));
+    return QByteArray(buffer, n);
+}
+
+// GS-232 commands: single letters, angles as three whole digits.
+QByteArray encodeGs232Token(const Message &m)
+{
+    switch (m.op) {
+    case Op::Azimuth: return m.hasValue ? "M" + threeDigits(m.value) : QByteArray("C");
+    case Op::Elevation: return m.hasValue ? QByteArray() : QByteArray("B");
+    case Op::MoveLeft: return "L";
+    case Op::MoveRight: return "R";
+    case Op::MoveUp: return "U";
+    case Op::MoveDown: return "D";
+    case Op::StopAzimuth: return "A";
+    case Op::StopElevation: return "E";
+    case Op::Speed: return "X" + QByteArray::number(std::clamp(int(m.value), 1, 4));
+    case Op::KeepAlive: return "?";
+    default: return {};
+    }
+}
+
 } // namespace
 
 QByteArray encodeToken(const Message &m, Dialect d)
 {
     if (!dialectSupports(d, m.op))
         return {};
+    if (isGs232(d))
+        return encodeGs232Token(m);
     QByteArray out = mnemonic(m.op).toByteArray();
     switch (m.op) {
     case Op::Azimuth:
@@ -101,24 +129,51 @@ QByteArray encodeToken(const Message &m, Dialect d)
     case Op::Invalid:
     case Op::Alarm:
     case Op::ConfigValue:
+    case Op::Speed:
+    case Op::KeepAlive:
         return {};
     }
     return out;
 }
 
+QByteArray encodeReport(const Message &m, Dialect d)
+{
+    if (!isGs232(d))
+        return encodeToken(m, d);
+    // GS-232 reports differ from its commands: `+0aaa` (A) or `AZ=aaa` (B).
+    if (!m.hasValue || (m.op != Op::Azimuth && m.op != Op::Elevation))
+        return {};
+    if (d == Dialect::Gs232A)
+        return "+0" + threeDigits(m.value);
+    return (m.op == Op::Azimuth ? "AZ=" : "EL=") + threeDigits(m.value);
+}
+
+QByteArray reportSeparator(Dialect d)
+{
+    // GS-232A runs its two numbers together (`+0010+0020`), GS-232B puts two
+    // spaces between (`AZ=010  EL=020`), Easycomm one.
+    switch (d) {
+    case Dialect::Gs232A: return {};
+    case Dialect::Gs232B: return "  ";
+    default: return " ";
+    }
+}
+
 QByteArray encodeLine(std::initializer_list<Message> tokens, Dialect d)
 {
+    // GS-232 takes one command a line; Easycomm several, space-separated.
+    const char separator = isGs232(d) ? lineTerminator(d) : ' ';
     QByteArray line;
     for (const Message &m : tokens) {
         const QByteArray token = encodeToken(m, d);
         if (token.isEmpty())
             return {};
         if (!line.isEmpty())
-            line += ' ';
+            line += separator;
         line += token;
     }
     if (!line.isEmpty())
-        line += '\n';
+        line += lineTerminator(d);
     return line;
 }
 
@@ -136,6 +191,8 @@ QByteArray encodeSetPosition(double az, double el, Dialect d)
 {
     if (d == Dialect::Easycomm1)
         return encodeEasycomm1Line(az, el);
+    if (isGs232(d))
+        return "W" + threeDigits(az) + ' ' + threeDigits(el) + lineTerminator(d);
     return encodeLine({Message::number(Op::Azimuth, az), Message::number(Op::Elevation, el)}, d);
 }
 
@@ -143,6 +200,8 @@ QByteArray encodeQueryPosition(Dialect d)
 {
     if (d == Dialect::Easycomm1)
         return {}; // Easycomm I has no way to ask
+    if (isGs232(d))
+        return QByteArray("C2") + lineTerminator(d);
     return encodeLine({Message::query(Op::Azimuth), Message::query(Op::Elevation)}, d);
 }
 
@@ -150,6 +209,8 @@ QByteArray encodeStop(bool azimuth, bool elevation, Dialect d)
 {
     if (d == Dialect::Easycomm1 || (!azimuth && !elevation))
         return {};
+    if (azimuth && elevation && isGs232(d))
+        return QByteArray("S") + lineTerminator(d);
     if (azimuth && elevation)
         return encodeLine({Message::query(Op::StopAzimuth), Message::query(Op::StopElevation)}, d);
     return encodeLine({Message::query(azimuth ? Op::StopAzimuth : Op::StopElevation)}, d);

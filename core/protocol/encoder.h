@@ -15,7 +15,8 @@ namespace slew::protocol {
 QByteArray encodeToken(const Message &m, Dialect d);
 
 // Tokens joined by single spaces and ended with `\n`, the terminator every
-// peer in PROTOCOL-NOTES accepts. Empty when any token is unsupported.
+// Easycomm peer in PROTOCOL-NOTES accepts (GS-232: one command a line, each
+// ended with `\r`). Empty when any token is unsupported.
 QByteArray encodeLine(std::initializer_list<Message> tokens, Dialect d);
 
 // The commands the session sends, in each dialect's own form.
@@ -26,6 +27,12 @@ QByteArray encodeStop(bool azimuth, bool elevation, Dialect d); // `SA SE\n`
 // Easycomm I's single line, as Hamlib model 201 writes it.
 QByteArray encodeEasycomm1Line(double az, double el, quint64 up = 0, QByteArrayView upMode = "XXX",
                                quint64 down = 0, QByteArrayView downMode = "XXX");
+
+// A controller's report of a value, for the simulator's answers: the same as
+// encodeToken in Easycomm (`AZ10.0`), `+0010` / `AZ=010` in GS-232.
+QByteArray encodeReport(const Message &m, Dialect d);
+// What goes between two reports on one answer line.
+QByteArray reportSeparator(Dialect d);
 
 // Formats a number the way the wire wants it: fixed decimals, '.' always,
 // never an exponent. Used by the simulator for its replies too.

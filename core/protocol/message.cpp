@@ -105,8 +105,10 @@ constexpr OpInfo kOps[] = {
     {Op::Encoders, "\\?ENC", "raw encoders"},
     {Op::Alarm, "AL", "alarm"},
     {Op::ConfigValue, "", "config value"},
+    {Op::Speed, "X", "speed"},
+    {Op::KeepAlive, "?", "keep-alive"},
 };
-static_assert(std::size(kOps) == size_t(Op::ConfigValue) + 1, "kOps must list every Op");
+static_assert(std::size(kOps) == size_t(Op::KeepAlive) + 1, "kOps must list every Op");
 
 const OpInfo &info(Op op)
 {

@@ -52,6 +52,10 @@ enum class Op : std::uint8_t {
     Encoders,      // \?ENC[az,el,vaz,vel] raw encoder ticks
     Alarm,         // AL[text], sent unsolicited by an Easycomm II controller
     ConfigValue,   // n,value   SatNOGS' answer to `CR n` (no CR prefix)
+    // GS-232 only (docs/protocol.md); the position and stop commands of
+    // GS-232 map onto Azimuth, Elevation, StopAzimuth, StopElevation, Move*.
+    Speed,         // Xn, n 1..4: the speed of the manual moves
+    KeepAlive,     // ?   (a keep-alive that expects no answer)
 };
 
 // Why a token was refused, for code that counts or answers by kind; the

@@ -200,8 +200,9 @@ int Parser::push(char c)
         return m_readyCount;
     }
     // A new token begins: the pending one did not end its line. A bare `CR`
-    // keeps waiting, since its register may be this token (SatNOGS `CR 1`).
-    if (m_length == 0 && !m_overflow && m_hasPending && !isBareConfigRead(m_pending))
+    // keeps waiting, since its register may be this token (SatNOGS `CR 1`),
+    // and so does GS-232's `W010` for its elevation.
+    if (m_length == 0 && !m_overflow && m_hasPending && !pendingWaitsForArgument())
         emitPending(false);
     if (m_length < int(m_token.size()))
         m_token[size_t(m_length++)] = c;
@@ -217,37 +218,58 @@ void Parser::deliver(const Message &m, bool lineEnd)
     slot.lineEnd = lineEnd;
 }
 
+bool Parser::pendingWaitsForArgument() const
+{
+    return m_hasPending && (isBareConfigRead(m_pending) || m_pendingWantsElevation);
+}
+
 void Parser::emitPending(bool lineEnd)
 {
     m_hasPending = false;
-    if (isBareConfigRead(m_pending))
+    if (isBareConfigRead(m_pending)) {
         deliver(Message::invalid("CR", "config read without a register number"), lineEnd);
-    else
+    } else if (m_pendingWantsElevation) {
+        m_pendingWantsElevation = false;
+        deliver(Message::invalid("W", "W needs an azimuth and an elevation (W010 020)"), lineEnd);
+    } else {
         deliver(m_pending, lineEnd);
+    }
 }
 
 void Parser::finishToken(bool lineEnd)
 {
     const QByteArrayView token(m_token.data(), m_length);
-    Message m;
+    Classified c;
     if (m_overflow) {
-        m = Message::invalid(token, "token longer than 128 bytes, dropped up to the next separator",
-                             Refusal::Overlong);
+        c.first = Message::invalid(token, "token longer than 128 bytes, dropped up to the next separator",
+                                   Refusal::Overlong);
     } else if (m_hasPending && isBareConfigRead(m_pending) && allDigits(token) && token.size() <= 5) {
         // SatNOGS: `CR 1` is one command.
         m_hasPending = false;
-        m = Message::query(Op::ConfigRead, token.toInt());
+        c.first = Message::query(Op::ConfigRead, token.toInt());
+    } else if (m_hasPending && m_pendingWantsElevation && allDigits(token) && token.size() <= 3) {
+        // GS-232: `W010 020` sets both axes.
+        m_hasPending = false;
+        m_pendingWantsElevation = false;
+        c.first = m_pending;
+        c.second = Message::number(Op::Elevation, token.toInt());
+        c.count = 2;
     } else {
         if (m_hasPending)
             emitPending(false);
-        m = classify(token);
+        c = classify(token);
     }
     m_length = 0;
     m_overflow = false;
+    if (c.count == 2)
+        deliver(c.first, false);
+    const Message &m = c.count == 2 ? c.second : c.first;
     m_previousOnLine = m.op;
     m_previousHadValue = m.hasValue;
 
     m_pending = m;
+    m_pendingWantsElevation = isGs232(m_dialect) && m.op == Op::Azimuth && m.hasValue && token.size() > 0
+                              && upper(token[0]) == 'W' && c.count == 1;
     if (lineEnd)
         emitPending(true);
     else
@@ -257,14 +279,103 @@ void Parser::finishToken(bool lineEnd)
 Message Parser::parseToken(QByteArrayView token, Dialect d)
 {
     Parser p(d);
-    return p.classify(token);
+    return p.classify(token).first;
 }
 
-Message Parser::classify(QByteArrayView t) const
+Parser::Classified Parser::classify(QByteArrayView t) const
 {
-    if (!isPrintable(t))
-        return Message::invalid(t, "unprintable byte in token");
+    if (!isPrintable(t)) {
+        Classified c;
+        c.first = Message::invalid(t, "unprintable byte in token");
+        return c;
+    }
+    if (isGs232(m_dialect))
+        return classifyGs232(t);
+    Classified c;
+    c.first = classifyEasycomm(t);
+    return c;
+}
 
+Parser::Classified Parser::classifyGs232(QByteArrayView t) const
+{
+    Classified c;
+    auto one = [&](const Message &m) {
+        c.first = m;
+        c.count = 1;
+        return c;
+    };
+    auto two = [&](const Message &a, const Message &b) {
+        c.first = a;
+        c.second = b;
+        c.count = 2;
+        return c;
+    };
+    // Whole degrees, up to three digits (a decimal is tolerated).
+    auto degrees = [](QByteArrayView s, double *out) {
+        return !s.isEmpty() && s.size() <= 6 && parseDecimal(s, out) && *out >= 0;
+    };
+    double a = 0, b = 0;
+    const char first = upper(t[0]);
+    const QByteArrayView rest = t.sliced(1);
+
+    // Reports: `+0aaa`, `+0aaa+0eee` (GS-232A), `AZ=aaa`, `EL=eee` (GS-232B).
+    if (first == '+') {
+        const qsizetype second = t.indexOf('+', 1);
+        if (second < 0 && degrees(rest, &a))
+            return one(Message::number(Op::Azimuth, a)); // the answer to C (or B: read as azimuth)
+        if (second > 0 && degrees(t.sliced(1, second - 1), &a) && degrees(t.sliced(second + 1), &b))
+            return two(Message::number(Op::Azimuth, a), Message::number(Op::Elevation, b));
+        return one(Message::invalid(t, "malformed GS-232 position report"));
+    }
+    if (t.size() > 3 && (startsWithMnemonic(t, "AZ=") || startsWithMnemonic(t, "EL="))) {
+        if (!degrees(t.sliced(3), &a))
+            return one(Message::invalid(t, "malformed GS-232 position report"));
+        return one(Message::number(first == 'A' ? Op::Azimuth : Op::Elevation, a));
+    }
+    if (t == "?>")
+        return one(Message::invalid(t, "the controller did not understand the command (?>)", Refusal::Unknown));
+    if (t == "C2" || t == "c2")
+        return two(Message::query(Op::Azimuth), Message::query(Op::Elevation));
+    if (t == "?")
+        return one(Message::query(Op::KeepAlive));
+    if (t.size() == 1) {
+        switch (first) {
+        case 'C': return one(Message::query(Op::Azimuth));
+        case 'B': return one(Message::query(Op::Elevation));
+        case 'S': return two(Message::query(Op::StopAzimuth), Message::query(Op::StopElevation));
+        case 'A': return one(Message::query(Op::StopAzimuth));
+        case 'E': return one(Message::query(Op::StopElevation));
+        case 'R': return one(Message::query(Op::MoveRight));
+        case 'L': return one(Message::query(Op::MoveLeft));
+        case 'U': return one(Message::query(Op::MoveUp));
+        case 'D': return one(Message::query(Op::MoveDown));
+        default: break;
+        }
+    }
+    switch (first) {
+    case 'A': // Aaaa (seeds/004's variant): azimuth
+    case 'M': // Maaa: azimuth
+    case 'W': // Waaa eee: the elevation is the next token
+        if (!degrees(rest, &a))
+            return one(Message::invalid(t, "malformed GS-232 angle"));
+        return one(Message::number(Op::Azimuth, a));
+    case 'E': // Eeee (seeds/004's variant): elevation
+        if (!degrees(rest, &a))
+            return one(Message::invalid(t, "malformed GS-232 angle"));
+        return one(Message::number(Op::Elevation, a));
+    case 'X': {
+        if (rest.size() != 1 || rest[0] < '1' || rest[0] > '4')
+            return one(Message::invalid(t, "speed must be X1 to X4"));
+        return one(Message::number(Op::Speed, rest[0] - '0'));
+    }
+    default:
+        break;
+    }
+    return one(Message::invalid(t, "unknown command", Refusal::Unknown));
+}
+
+Message Parser::classifyEasycomm(QByteArrayView t) const
+{
     // The mode word of an Easycomm I line: `UP145800000 FM`. Checked first
     // because a mode may look like a command (`CW`).
     if ((m_previousOnLine == Op::UplinkFreq || m_previousOnLine == Op::DownlinkFreq) && m_previousHadValue

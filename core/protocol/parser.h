@@ -57,11 +57,22 @@ public:
     static Message parseToken(QByteArrayView token, Dialect d);
 
 private:
+    // What one token reads as: usually one message, two for GS-232's
+    // `C2`, `S` and `+0aaa+0eee`.
+    struct Classified {
+        Message first;
+        Message second;
+        int count = 1;
+    };
+
     int push(char c); // returns how many messages are ready in m_ready
     void finishToken(bool lineEnd);
     void emitPending(bool lineEnd);
     void deliver(const Message &m, bool lineEnd);
-    Message classify(QByteArrayView token) const;
+    Classified classify(QByteArrayView token) const;
+    Message classifyEasycomm(QByteArrayView token) const;
+    Classified classifyGs232(QByteArrayView token) const;
+    bool pendingWaitsForArgument() const;
 
     Dialect m_dialect;
     std::array<char, InlineText::Capacity> m_token{};
@@ -71,10 +82,12 @@ private:
     // its line ended, so that `AZ EL \n` is known to be one line.
     Message m_pending;
     bool m_hasPending = false;
+    // GS-232's `W010 020`: the azimuth waits in m_pending for its elevation.
+    bool m_pendingWantsElevation = false;
     // Line context: the mode word after UPnnn / DNnnn (Easycomm I).
     Op m_previousOnLine = Op::Invalid;
     bool m_previousHadValue = false;
-    std::array<Message, 2> m_ready;
+    std::array<Message, 4> m_ready;
     int m_readyCount = 0;
 };
 

@@ -85,7 +85,7 @@ void SimulatorFirmware::finishLine(QByteArray &out)
     if (m_lineAnswers.isEmpty())
         return;
     out += m_lineAnswers;
-    out += '\n';
+    out += protocol::isGs232(m_dialect) ? "\r\n" : "\n"; // Yaesu ends its answers with CR LF
     m_lineAnswers.clear();
 }
 
@@ -94,12 +94,18 @@ void SimulatorFirmware::answer(const QByteArray &token)
     if (!answersAtAll() || token.isEmpty())
         return;
     if (!m_lineAnswers.isEmpty())
-        m_lineAnswers += ' ';
+        m_lineAnswers += protocol::reportSeparator(m_dialect);
     m_lineAnswers += token;
 }
 
 void SimulatorFirmware::alarm(const char *kind, QByteArrayView what, QByteArray &out)
 {
+    if (protocol::isGs232(m_dialect)) {
+        // A Yaesu controller's whole vocabulary for "no": its prompt.
+        if (++m_alarmsThisChunk <= kMaxAlarmsPerChunk)
+            out += "?>\r\n";
+        return;
+    }
     if (!sendsAlarms())
         return;
     // A barrage of garbage must not turn into a barrage of alarms that
@@ -126,7 +132,7 @@ void SimulatorFirmware::refuse(const Message &m, QByteArray &out)
 
 QByteArray SimulatorFirmware::angle(Op op, double degrees) const
 {
-    return protocol::encodeToken(Message::number(op, degrees), m_dialect);
+    return protocol::encodeReport(Message::number(op, degrees), m_dialect);
 }
 
 QByteArray SimulatorFirmware::inputReply(int index, double value) const
@@ -187,8 +193,8 @@ void SimulatorFirmware::handle(const Message &m, QByteArray &out)
     };
     const double az = m_rotator.axis(Axis::Azimuth).position();
     const double el = m_rotator.axis(Axis::Elevation).position();
-    const double manual = 1000.0 * m_rotator.axis(Axis::Azimuth).plant().manualSpeed;
-    const double manualEl = 1000.0 * m_rotator.axis(Axis::Elevation).plant().manualSpeed;
+    const double manual = 1000.0 * m_manualSpeedShare * m_rotator.axis(Axis::Azimuth).plant().manualSpeed;
+    const double manualEl = 1000.0 * m_manualSpeedShare * m_rotator.axis(Axis::Elevation).plant().manualSpeed;
 
     switch (m.op) {
     case Op::Azimuth:
@@ -226,6 +232,11 @@ void SimulatorFirmware::handle(const Message &m, QByteArray &out)
     case Op::Aos:
     case Op::Los:
         break; // pass markers: nothing for a rotator to do
+    case Op::KeepAlive:
+        break; // expects no answer
+    case Op::Speed:
+        m_manualSpeedShare = std::clamp(m.value, 1.0, 4.0) / 4.0;
+        break;
     case Op::ReadInput:
         if (m.hasValue || !m.text.isEmpty())
             return readOnly();

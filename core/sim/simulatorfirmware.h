@@ -7,7 +7,9 @@
 // Answers to the queries of one input line leave as one output line, joined
 // by spaces: Hamlib 4.5 and SatNOGS send `AZ EL` and read `AZ10.0 EL20.0`
 // back on a single line, Hamlib 4.6 sends `AZ` and `EL` on lines of their own
-// and so gets two. No I/O here: the caller moves the bytes.
+// and so gets two. The GS-232 dialects answer as a Yaesu controller does:
+// `+0aaa+0eee` or `AZ=aaa  EL=eee` ended by CR LF, and `?>` for what it cannot
+// read. No I/O here: the caller moves the bytes.
 
 #include "firmwarecounters.h"
 #include "simulatedrotator.h"
@@ -72,6 +74,7 @@ private:
     QHash<int, QByteArray> m_radio;
     QHash<int, int> m_outputs;
     QByteArray m_time;
+    double m_manualSpeedShare = 1.0; // GS-232's X1..X4: a quarter to all of the manual speed
 
     QHash<QByteArray, QByteArray> m_pushed; // field -> last text pushed
 };

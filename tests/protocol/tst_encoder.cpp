@@ -16,6 +16,7 @@ class EncoderTest : public QObject {
     Q_OBJECT
 private slots:
     void hamlibWireStrings();
+    void gs232WireStrings();
     void tokens_data();
     void tokens();
     void unsupportedCommandsEncodeToNothing();
@@ -49,6 +50,37 @@ void EncoderTest::hamlibWireStrings()
     // SatNOGS reads the register after a space.
     QCOMPARE(encodeLine({Message::query(Op::ConfigRead, 1)}, Dialect::SatNogs), QByteArray("CR 1\n"));
     QCOMPARE(encodeLine({Message::query(Op::ConfigRead, 1)}, Dialect::Easycomm3), QByteArray("CR1\n"));
+}
+
+void EncoderTest::gs232WireStrings()
+{
+    // What Hamlib's gs232a (601) and gs232b (603) backends send.
+    for (Dialect d : {Dialect::Gs232A, Dialect::Gs232B}) {
+        QCOMPARE(encodeSetPosition(10, 20, d), QByteArray("W010 020\r"));
+        QCOMPARE(encodeSetPosition(359.6, 89.4, d), QByteArray("W360 089\r"));
+        QCOMPARE(encodeQueryPosition(d), QByteArray("C2\r"));
+        QCOMPARE(encodeStop(true, true, d), QByteArray("S\r"));
+        QCOMPARE(encodeStop(true, false, d), QByteArray("A\r"));
+        QCOMPARE(encodeStop(false, true, d), QByteArray("E\r"));
+        QCOMPARE(encodeLine({Message::number(Op::Speed, 2), Message::query(Op::MoveRight)}, d), QByteArray("X2\rR\r"));
+        QCOMPARE(encodeLine({Message::query(Op::MoveLeft)}, d), QByteArray("L\r"));
+        QCOMPARE(encodeLine({Message::query(Op::MoveUp)}, d), QByteArray("U\r"));
+        QCOMPARE(encodeLine({Message::query(Op::MoveDown)}, d), QByteArray("D\r"));
+        QCOMPARE(encodeLine({Message::number(Op::Azimuth, 45)}, d), QByteArray("M045\r"));
+        QCOMPARE(encodeLine({Message::query(Op::Elevation)}, d), QByteArray("B\r"));
+        // No park, reset, config or velocity commands on a GS-232.
+        QVERIFY(encodeLine({Message::query(Op::Park)}, d).isEmpty());
+        QVERIFY(encodeLine({Message::number(Op::VelocityRight, 100)}, d).isEmpty());
+        QVERIFY(encodeLine({Message::query(Op::ConfigRead, 1)}, d).isEmpty());
+    }
+    // Reports, as the simulator answers.
+    QCOMPARE(encodeReport(Message::number(Op::Azimuth, 10), Dialect::Gs232A) + reportSeparator(Dialect::Gs232A)
+                 + encodeReport(Message::number(Op::Elevation, 20), Dialect::Gs232A),
+             QByteArray("+0010+0020"));
+    QCOMPARE(encodeReport(Message::number(Op::Azimuth, 10), Dialect::Gs232B) + reportSeparator(Dialect::Gs232B)
+                 + encodeReport(Message::number(Op::Elevation, 20), Dialect::Gs232B),
+             QByteArray("AZ=010  EL=020"));
+    QCOMPARE(encodeReport(Message::number(Op::Azimuth, 10.5), Dialect::Easycomm2), QByteArray("AZ10.5"));
 }
 
 void EncoderTest::tokens_data()
@@ -120,9 +152,9 @@ void EncoderTest::roundTrip_data()
         Message::query(Op::ErrorFlags),            Message::query(Op::Reset),
         Message::query(Op::Park),                  Message::query(Op::Encoders),
     };
-    for (Dialect d : {Dialect::Easycomm2, Dialect::Easycomm3, Dialect::SatNogs}) {
+    for (Dialect d : {Dialect::Easycomm2, Dialect::Easycomm3, Dialect::SatNogs, Dialect::Gs232A, Dialect::Gs232B}) {
         for (const Message &m : all) {
-            if (dialectSupports(d, m.op)) {
+            if (dialectSupports(d, m.op) && !encodeToken(m, d).isEmpty()) {
                 const QString name = dialectName(d) + ' ' + QString::fromLatin1(encodeToken(m, d));
                 QTest::newRow(qPrintable(name)) << d << m;
             }
@@ -139,6 +171,8 @@ void EncoderTest::roundTrip()
     parser.feed(encodeLine({message}, dialect), [&](const Message &m) { out << m; });
     QCOMPARE(out.size(), 1);
     Message expected = message;
+    if (isGs232(dialect) && expected.hasValue)
+        expected.value = std::round(expected.value); // GS-232 carries whole degrees
     // Text arguments come back with their numeric reading too.
     if (out[0].hasValue && !expected.hasValue && !expected.text.isEmpty()) {
         expected.hasValue = true;
@@ -159,10 +193,12 @@ void EncoderTest::numbersNeverUseExponentOrLocale()
 
 void EncoderTest::dialectNames()
 {
-    for (Dialect d : {Dialect::Easycomm1, Dialect::Easycomm2, Dialect::Easycomm3, Dialect::SatNogs})
+    for (Dialect d : allDialects())
         QCOMPARE(dialectFromName(dialectName(d)), std::optional<Dialect>(d));
+    QCOMPARE(allDialects().size(), 6);
     QCOMPARE(dialectFromName(u"SATNOGS"), std::optional<Dialect>(Dialect::SatNogs));
     QVERIFY(!dialectFromName(u"gs232").has_value());
+    QCOMPARE(dialectFromName(u"GS232B"), std::optional<Dialect>(Dialect::Gs232B));
 }
 
 QTEST_GUILESS_MAIN(EncoderTest)

@@ -161,6 +161,26 @@ void ParserTest::vectors_data()
     row("output not boolean", "easycomm2", "OP1,7\n", {"unreadable input 'OP1,7'|"});
     row("bare number", "easycomm2", "42\n", {"unreadable input '42'|"});
     row("encoders short", "easycomm3", "\\?ENC1,2\n", {"unreadable input '\\?ENC1,2'|"});
+
+    // --- GS-232A/B (Hamlib models 601, 603; seeds/004), commands.
+    row("gs232 W", "gs232a", "W010 020\r", {"azimuth=10", "elevation=20|"});
+    row("gs232 W without el", "gs232a", "W010\r", {"unreadable input 'W'|"});
+    row("gs232 W then command", "gs232a", "W010 S\r",
+        {"unreadable input 'W'", "stop azimuth", "stop elevation|"});
+    row("gs232 M", "gs232b", "M123\r", {"azimuth=123|"});
+    row("gs232 C C2 B", "gs232b", "C\rC2\rB\r", {"azimuth|", "azimuth", "elevation|", "elevation|"});
+    row("gs232 S A E", "gs232a", "S\rA\rE\r", {"stop azimuth", "stop elevation|", "stop azimuth|", "stop elevation|"});
+    row("gs232 moves", "gs232a", "R\rL\rU\rD\r", {"move right|", "move left|", "move up|", "move down|"});
+    row("gs232 speed", "gs232b", "X2\rX5\r", {"speed=2|", "unreadable input 'X5'|"});
+    row("seeds/004 A E set", "gs232a", "A090\rE045\r", {"azimuth=90|", "elevation=45|"});
+    row("seeds/004 keep-alive", "gs232a", "?\r", {"keep-alive|"});
+    // --- GS-232 reports.
+    row("gs232a C2 report", "gs232a", "+0123+0045\r", {"azimuth=123", "elevation=45|"});
+    row("gs232a C report", "gs232a", "+0359\r\n", {"azimuth=359|"});
+    row("gs232b C2 report", "gs232b", "AZ=010  EL=020\r", {"azimuth=10", "elevation=20|"});
+    row("gs232b single", "gs232b", "AZ=350\rEL=005\r", {"azimuth=350|", "elevation=5|"});
+    row("gs232 prompt", "gs232b", "?>\r", {"unreadable input '?>'|"});
+    row("gs232 garbage", "gs232a", "+0x12\rQ\r", {"unreadable input '+0x12'|", "unreadable input 'Q'|"});
 }
 
 void ParserTest::vectors()

@@ -27,6 +27,8 @@ private slots:
     void jamShowsAsMotorError();
     void satnogsDialect();
     void easycomm2MovesWithMlMr();
+    void gs232Dialects_data();
+    void gs232Dialects();
     void overTcpToSlewSim();
     void overASerialPortToSlewSimsPty();
 
@@ -156,6 +158,36 @@ void SessionSimulatorTest::easycomm2MovesWithMlMr()
     for (const auto &b : sent)
         mr = mr || b.at(0).toByteArray() == "MR\n";
     QVERIFY(mr);
+}
+
+void SessionSimulatorTest::gs232Dialects_data()
+{
+    QTest::addColumn<QString>("name");
+    QTest::newRow("gs232a") << "gs232a";
+    QTest::newRow("gs232b") << "gs232b";
+}
+
+void SessionSimulatorTest::gs232Dialects()
+{
+    QFETCH(QString, name);
+    const auto dialect = *protocol::dialectFromName(name);
+    RotatorSession s;
+    QVERIFY(connectTo(s, "sim:?dialect=" + name, dialect));
+    QVERIFY(s.capabilities().positionFeedback);
+    QVERIFY(!s.capabilities().status && !s.capabilities().config && !s.capabilities().velocity);
+    QSignalSpy sent(&s, &RotatorSession::bytesSent);
+    QVERIFY(s.gotoPosition(42, 17));
+    QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.azimuth() - 42) < 0.6 && std::abs(s.elevation() - 17) < 0.6, 15000);
+    const double start = s.azimuth();
+    QVERIFY(s.moveAxis(session::Axis::Azimuth, 3.0));
+    QTRY_VERIFY_WITH_TIMEOUT(s.azimuth() > start + 2, 10000);
+    QVERIFY(s.stop());
+    QStringList wire;
+    for (const auto &b : sent)
+        wire << QString::fromLatin1(b.at(0).toByteArray());
+    QVERIFY2(wire.contains("W042 017\r") && wire.contains("C2\r") && wire.contains("R\r") && wire.contains("S\r"),
+             qPrintable(wire.join('|')));
+    QVERIFY(!s.home()); // GS-232 has no homing command: refused, nothing sent
 }
 
 void SessionSimulatorTest::overTcpToSlewSim()

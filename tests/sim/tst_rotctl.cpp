@@ -1,7 +1,8 @@
 // Hamlib's own rotctl (Debian's libhamlib-utils) drives slew-sim over its
 // pseudo-terminal, for the three Easycomm models: 201 (Easycomm I), 202
-// (Easycomm II) and 204 (Easycomm III / SatNOGS). Both what rotctl reads
-// back and what the simulator received are checked.
+// (Easycomm II) and 204 (Easycomm III / SatNOGS), and the two Yaesu GS-232
+// models 601 (GS-232A) and 603 (GS-232B). Both what rotctl reads back and
+// what the simulator received are checked.
 #include "slewsimprocess.h"
 
 #include <QElapsedTimer>
@@ -117,6 +118,34 @@ private slots:
         QCOMPARE(sim.stop(), 0);
         const QByteArray log = readAll(logPath(204));
         for (const char *line : {"AZ15.0 EL30.0\n", "AZ EL \n", "SA SE \n", "PARK\n", "RESET\n", "VR4900\n"})
+            QVERIFY2(log.contains(line), qPrintable(QString("missing %1 in:\n%2").arg(line, log)));
+        QVERIFY2(sim.standardError().contains(" 0 rejected"), sim.standardError().constData());
+    }
+
+    void gs232Models_data()
+    {
+        QTest::addColumn<int>("model");
+        QTest::addColumn<QString>("dialect");
+        QTest::newRow("601 GS-232A") << 601 << "gs232a";
+        QTest::newRow("603 GS-232B") << 603 << "gs232b";
+    }
+
+    void gs232Models()
+    {
+        QFETCH(int, model);
+        QFETCH(QString, dialect);
+        SlewSimProcess sim;
+        QVERIFY2(sim.start({"--pty", ptyPath(model), "--dialect", dialect, "--baud", "9600", "--log-received",
+                            logPath(model)}),
+                 qPrintable(sim.error()));
+        QCOMPARE(rotctl(model, ptyPath(model), {"P", "40", "25"}).exitCode, 0);
+        QVERIFY(getPosUntil(model, ptyPath(model), 40.0, 25.0));
+        QCOMPARE(rotctl(model, ptyPath(model), {"M", "16", "50"}).exitCode, 0);
+        QCOMPARE(rotctl(model, ptyPath(model), {"S"}).exitCode, 0);
+
+        QCOMPARE(sim.stop(), 0);
+        const QByteArray log = readAll(logPath(model));
+        for (const char *line : {"W040 025\n", "C2\n", "R\n", "S\n"})
             QVERIFY2(log.contains(line), qPrintable(QString("missing %1 in:\n%2").arg(line, log)));
         QVERIFY2(sim.standardError().contains(" 0 rejected"), sim.standardError().constData());
     }
