@@ -1,0 +1,190 @@
+// The setup wizard driven end to end offscreen against the simulator: every
+// page, cancel during homing (the rotator stops), a homing failure injected
+// in the simulator (the wizard says so), tuning with before and after, and
+// the summary's write, read-back and profile save.
+#include "simulatorpump.h"
+
+#include "linkschemes.h"
+#include "session/rotatorsession.h"
+#include "sim/simulatorscheme.h"
+#include "wizard/setupwizard.h"
+
+#include <QAbstractButton>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDir>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QDoubleSpinBox>
+
+using namespace slew;
+using session::RotatorSession;
+using ui::SetupWizard;
+
+class TestSetupWizard : public QObject {
+    Q_OBJECT
+
+    template<typename T>
+    T *find(SetupWizard &w, const char *name)
+    {
+        T *child = w.currentPage()->findChild<T *>(QLatin1String(name));
+        if (!child)
+            qWarning() << "no" << name << "on page" << w.currentId();
+        return child;
+    }
+    static bool canGoOn(SetupWizard &w) { return w.button(QWizard::NextButton)->isEnabled(); }
+
+private slots:
+    void initTestCase() { registerLinkSchemes(); }
+
+    void everyPage()
+    {
+        RotatorSession session;
+        SetupWizard wizard(&session);
+        wizard.resize(900, 760);
+        wizard.show();
+        SimulatorPump pump;
+
+        // Connect: probe the link.
+        QCOMPARE(wizard.currentId(), int(SetupWizard::ConnectPageId));
+        find<QLineEdit>(wizard, "uri")->setText(
+            QStringLiteral("sim:?clock=manual&unsolicited=1&kp=12&ki=1&kd=1&start_az=12&start_el=6"));
+        QVERIFY(!canGoOn(wizard));
+        QTest::mouseClick(find<QPushButton>(wizard, "probe"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(canGoOn(wizard), 10000);
+        QVERIFY(find<QListWidget>(wizard, "baudResults")->item(0)->text().contains(QStringLiteral("answered")));
+        wizard.next();
+
+        // Identify: easycomm3, and the session is connected with it.
+        QCOMPARE(wizard.currentId(), int(SetupWizard::IdentifyPageId));
+        QTRY_VERIFY_WITH_TIMEOUT(canGoOn(wizard), 30000);
+        QVERIFY(find<QLabel>(wizard, "dialectResult")->text().contains(QStringLiteral("easycomm3")));
+        sim::Simulator *sim = sim::simulatorBehind(session.link());
+        QVERIFY(sim);
+        pump.drive(sim);
+        wizard.next();
+
+        // Mechanics: a jog the operator confirms.
+        QCOMPARE(wizard.currentId(), int(SetupWizard::MechanicsPageId));
+        QVERIFY(!canGoOn(wizard));
+        QTest::mouseClick(find<QPushButton>(wizard, "jog"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(std::fabs(session.azimuth() - 17.0) < 0.2, 10000);
+        find<QCheckBox>(wizard, "jogConfirmed")->setChecked(true);
+        QVERIFY(canGoOn(wizard));
+        wizard.next();
+
+        // Homing: cancel part way, and the rotator stops.
+        QCOMPARE(wizard.currentId(), int(SetupWizard::HomingPageId));
+        QVERIFY(!canGoOn(wizard));
+        auto *cancelHoming = find<QPushButton>(wizard, "cancelHoming");
+        auto *result = find<QLabel>(wizard, "homingResult");
+        auto cancelAt = connect(&session, &RotatorSession::positionChanged, this, [&](double az, double, bool) {
+            if (az < 14.0 && cancelHoming->isEnabled())
+                QTest::mouseClick(cancelHoming, Qt::LeftButton);
+        });
+        QTest::mouseClick(find<QPushButton>(wizard, "home"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(result->text().contains(QStringLiteral("cancelled")), 10000);
+        disconnect(cancelAt);
+        QTRY_COMPARE_WITH_TIMEOUT(sim->rotator().axis(sim::Axis::Azimuth).mode(), sim::DriveMode::Released, 5000);
+        QCOMPARE(sim->rotator().axis(sim::Axis::Elevation).mode(), sim::DriveMode::Released);
+        QVERIFY(session.azimuth() > 5.0);
+        QVERIFY(!canGoOn(wizard));
+
+        // Homing: the azimuth end stop is missing, and the wizard says so.
+        sim::AxisFaults broken;
+        broken.missingEndStop = true;
+        sim->setAxisFaults(sim::Axis::Azimuth, broken);
+        QTest::mouseClick(find<QPushButton>(wizard, "home"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(result->text().contains(QStringLiteral("homing error")), 20000);
+        QVERIFY(result->text().contains(QStringLiteral("end stop")));
+        QVERIFY(!canGoOn(wizard));
+
+        // Homing: switch repaired, it homes.
+        sim->setAxisFaults(sim::Axis::Azimuth, sim::AxisFaults{});
+        QTest::mouseClick(find<QPushButton>(wizard, "home"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(canGoOn(wizard), 20000);
+        QVERIFY(result->text().contains(QStringLiteral("Homed")));
+        wizard.next();
+
+        // Tuning: azimuth accepted, elevation kept as it was.
+        QCOMPARE(wizard.currentId(), int(SetupWizard::TuningPageId));
+        auto *accept = find<QPushButton>(wizard, "accept");
+        QTest::mouseClick(find<QPushButton>(wizard, "tune"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(accept->isEnabled(), 60000);
+        QVERIFY(!canGoOn(wizard));
+        QVERIFY(find<QLabel>(wizard, "beforeFigures")->text().contains(QStringLiteral("overshoot")));
+        QVERIFY(find<QLabel>(wizard, "afterFigures")->text().contains(QStringLiteral("settling time")));
+        const QString shot = QStringLiteral(SLEW_SCREENSHOT_DIR "/tuning-before-after.png");
+        QDir().mkpath(QStringLiteral(SLEW_SCREENSHOT_DIR));
+        QVERIFY(wizard.grab().save(shot));
+        QTest::mouseClick(accept, Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(canGoOn(wizard), 5000);
+        const double acceptedKd = sim->rotator().axis(sim::Axis::Azimuth).gains().kd;
+        QVERIFY(acceptedKd > 2.0);
+
+        find<QComboBox>(wizard, "axis")->setCurrentIndex(1);
+        QTest::mouseClick(find<QPushButton>(wizard, "tune"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(accept->isEnabled(), 60000);
+        QTest::mouseClick(find<QPushButton>(wizard, "keepOld"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(canGoOn(wizard), 5000);
+        QCOMPARE(sim->rotator().axis(sim::Axis::Elevation).gains().kd, 1.0);
+        wizard.next();
+
+        // Park: from the present position, nudged by hand.
+        QCOMPARE(wizard.currentId(), int(SetupWizard::ParkPageId));
+        QTest::mouseClick(find<QPushButton>(wizard, "useCurrent"), Qt::LeftButton);
+        find<QDoubleSpinBox>(wizard, "parkAz")->setValue(180.0);
+        find<QDoubleSpinBox>(wizard, "parkEl")->setValue(45.0);
+        wizard.next();
+
+        // Summary: write, read back each register, save.
+        QCOMPARE(wizard.currentId(), int(SetupWizard::SummaryPageId));
+        QVERIFY(find<QLabel>(wizard, "plan")->text().contains(QStringLiteral("CW7,180")));
+        QTest::mouseClick(find<QPushButton>(wizard, "write"), Qt::LeftButton);
+        auto *list = find<QListWidget>(wizard, "writeResults");
+        QTRY_COMPARE_WITH_TIMEOUT(list->count(), 8, 10000);
+        for (int i = 0; i < list->count(); ++i)
+            QVERIFY2(list->item(i)->text().endsWith(QStringLiteral("ok")), qPrintable(list->item(i)->text()));
+        QCOMPARE(sim->rotator().config().parkAzimuth, 180.0);
+        QCOMPARE(sim->rotator().config().parkElevation, 45.0);
+
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("rotator.json"));
+        find<QLineEdit>(wizard, "profilePath")->setText(path);
+        QSignalSpy saved(&wizard, &SetupWizard::profileSaved);
+        QTest::mouseClick(find<QPushButton>(wizard, "save"), Qt::LeftButton);
+        QCOMPARE(saved.count(), 1);
+        QString error;
+        const auto profile = model::RotatorProfile::load(path, &error);
+        QVERIFY2(profile, qPrintable(error));
+        QCOMPARE(profile->parkAz, 180.0);
+        QVERIFY(profile->azGains);
+        QCOMPARE(profile->azGains->kd, acceptedKd);
+        QCOMPARE(profile->elGains->kd, 1.0);
+        QCOMPARE(profile->dialect, protocol::Dialect::Easycomm3);
+    }
+
+    void cancellingTheWizardStopsTheRotator()
+    {
+        RotatorSession session;
+        session.connectTo(QStringLiteral("sim:?clock=manual&unsolicited=1&start_az=40&start_el=20"));
+        QTRY_VERIFY_WITH_TIMEOUT(session.capabilities().probed && session.hasPosition(), 5000);
+        SimulatorPump pump;
+        sim::Simulator *sim = sim::simulatorBehind(session.link());
+        pump.drive(sim);
+        SetupWizard wizard(&session);
+        wizard.show();
+        session.gotoPosition(100, 50);
+        QTRY_VERIFY_WITH_TIMEOUT(session.azimuth() > 45.0, 5000);
+        wizard.reject();
+        QTRY_COMPARE_WITH_TIMEOUT(sim->rotator().axis(sim::Axis::Azimuth).mode(), sim::DriveMode::Released, 5000);
+    }
+};
+
+QTEST_MAIN(TestSetupWizard)
+#include "tst_setupwizard.moc"

@@ -1,0 +1,86 @@
+#include "homingpage.h"
+
+#include "setupwizard.h"
+
+#include <QCheckBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+namespace slew::ui {
+
+namespace {
+constexpr double kHomingTimeoutSeconds = 180.0; // a full 450° sweep at a slow homing speed
+}
+
+HomingPage::HomingPage(SetupWizard *wizard) : QWizardPage(wizard), m_homing(wizard->session())
+{
+    setTitle(tr("Homing"));
+    setSubTitle(tr("The controller drives both axes to their lower end stops and zeroes there (RESET)."));
+    m_home = new QPushButton(tr("Home"), this);
+    m_home->setObjectName(QStringLiteral("home"));
+    m_cancel = new QPushButton(tr("Cancel homing"), this);
+    m_cancel->setObjectName(QStringLiteral("cancelHoming"));
+    m_cancel->setEnabled(false);
+    m_progress = new QProgressBar(this);
+    m_result = new QLabel(this);
+    m_result->setObjectName(QStringLiteral("homingResult"));
+    m_result->setWordWrap(true);
+    m_skip = new QCheckBox(tr("Skip: this rotator has no end stops"), this);
+    m_skip->setObjectName(QStringLiteral("skipHoming"));
+
+    auto *buttons = new QHBoxLayout;
+    buttons->addWidget(m_home);
+    buttons->addWidget(m_cancel);
+    auto *layout = new QVBoxLayout(this);
+    layout->addLayout(buttons);
+    layout->addWidget(m_progress);
+    layout->addWidget(m_result);
+    layout->addWidget(m_skip);
+
+    connect(m_home, &QPushButton::clicked, this, [this] {
+        m_homed = false;
+        emit completeChanged();
+        if (!m_homing.start(kHomingTimeoutSeconds)) {
+            m_result->setText(m_homing.error());
+            return;
+        }
+        setRunning(true);
+    });
+    connect(m_cancel, &QPushButton::clicked, &m_homing, &tuning::HomingRun::cancel);
+    connect(&m_homing, &tuning::HomingRun::progress, this, [this](int percent, const QString &what) {
+        m_progress->setValue(percent);
+        m_result->setText(what);
+    });
+    connect(&m_homing, &tuning::HomingRun::succeeded, this, [this] {
+        m_homed = true;
+        setRunning(false);
+        m_result->setText(tr("Homed: both axes found their end stops and are at zero."));
+    });
+    connect(&m_homing, &tuning::HomingRun::failed, this, [this](const QString &why) {
+        setRunning(false);
+        m_result->setText(why);
+    });
+    connect(&m_homing, &tuning::HomingRun::cancelled, this, [this] {
+        setRunning(false);
+        m_result->setText(m_homing.error());
+    });
+    connect(m_skip, &QCheckBox::toggled, this, &HomingPage::completeChanged);
+    connect(wizard, &SetupWizard::stopRequested, &m_homing, &tuning::HomingRun::cancel);
+}
+
+void HomingPage::setRunning(bool running)
+{
+    m_home->setEnabled(!running);
+    m_cancel->setEnabled(running);
+    emit completeChanged();
+}
+
+bool HomingPage::isComplete() const
+{
+    return !m_homing.isRunning() && (m_homed || m_skip->isChecked());
+}
+
+} // namespace slew::ui

@@ -1,0 +1,36 @@
+#pragma once
+// Step 4: RESET with a progress bar, a time limit and a clear verdict from
+// GE; Cancel stops the rotator. A rotator without end stops may skip it.
+
+#include "tuning/homingrun.h"
+
+#include <QWizardPage>
+
+class QCheckBox;
+class QLabel;
+class QProgressBar;
+class QPushButton;
+
+namespace slew::ui {
+
+class SetupWizard;
+
+class HomingPage : public QWizardPage {
+    Q_OBJECT
+public:
+    explicit HomingPage(SetupWizard *wizard);
+    bool isComplete() const override;
+
+private:
+    void setRunning(bool running);
+
+    tuning::HomingRun m_homing;
+    bool m_homed = false;
+    QPushButton *m_home;
+    QPushButton *m_cancel;
+    QProgressBar *m_progress;
+    QLabel *m_result;
+    QCheckBox *m_skip;
+};
+
+} // namespace slew::ui

@@ -1,0 +1,75 @@
+#include "identifypage.h"
+
+#include "setupwizard.h"
+
+#include "session/rotatorsession.h"
+
+#include <QLabel>
+#include <QListWidget>
+#include <QProgressBar>
+#include <QVBoxLayout>
+
+namespace slew::ui {
+
+using session::RotatorSession;
+
+IdentifyPage::IdentifyPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizard(wizard)
+{
+    setTitle(tr("Identify"));
+    setSubTitle(tr("Slew asks the controller in each Easycomm flavour and keeps the one that explains "
+                   "what it answers."));
+    m_progress = new QProgressBar(this);
+    m_answers = new QListWidget(this);
+    m_result = new QLabel(this);
+    m_result->setObjectName(QStringLiteral("dialectResult"));
+    m_result->setWordWrap(true);
+    auto *layout = new QVBoxLayout(this);
+    layout->addWidget(m_progress);
+    layout->addWidget(m_answers);
+    layout->addWidget(m_result);
+
+    connect(&m_identifier, &tuning::DialectIdentifier::progress, this, [this](int percent, const QString &what) {
+        m_progress->setValue(percent);
+        m_result->setText(what);
+    });
+    connect(&m_identifier, &tuning::DialectIdentifier::finished, this, &IdentifyPage::onIdentified);
+    RotatorSession *s = wizard->session();
+    connect(s, &RotatorSession::capabilitiesChanged, this, &IdentifyPage::completeChanged);
+    connect(s, &RotatorSession::positionChanged, this, &IdentifyPage::completeChanged);
+    connect(s, &RotatorSession::stateChanged, this, &IdentifyPage::completeChanged);
+    connect(wizard, &SetupWizard::stopRequested, &m_identifier, &tuning::DialectIdentifier::cancel);
+}
+
+void IdentifyPage::initializePage()
+{
+    m_answers->clear();
+    if (!m_identifier.start(m_wizard->profile().uri))
+        m_result->setText(m_identifier.error());
+}
+
+void IdentifyPage::onIdentified(bool identified)
+{
+    for (const auto &r : m_identifier.results())
+        m_answers->addItem(QStringLiteral("%1 (score %2)").arg(r.describe()).arg(r.score));
+    if (!identified) {
+        m_result->setText(tr("No dialect got an answer. An Easycomm I controller answers nothing and cannot be "
+                             "set up here; otherwise go back and check the link."));
+        return;
+    }
+    const auto best = *m_identifier.best();
+    m_wizard->profile().dialect = best.dialect;
+    m_result->setText(tr("The controller speaks %1%2. Connecting…")
+                          .arg(protocol::dialectName(best.dialect),
+                               best.version.isEmpty() ? QString() : tr(" (version %1)").arg(best.version)));
+    RotatorSession *s = m_wizard->session();
+    s->setProfile(m_wizard->profile());
+    s->connectTo(m_wizard->profile().uri);
+}
+
+bool IdentifyPage::isComplete() const
+{
+    const RotatorSession *s = m_wizard->session();
+    return !m_identifier.isRunning() && s->isConnected() && s->capabilities().probed && s->hasPosition();
+}
+
+} // namespace slew::ui

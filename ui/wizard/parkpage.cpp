@@ -1,0 +1,73 @@
+#include "parkpage.h"
+
+#include "setupwizard.h"
+
+#include "session/rotatorsession.h"
+
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+namespace slew::ui {
+
+ParkPage::ParkPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizard(wizard)
+{
+    setTitle(tr("Park position"));
+    setSubTitle(tr("Where the antenna rests when it is not in use (PARK). Written to CW7 and CW8 on the summary page."));
+    m_az = new QDoubleSpinBox(this);
+    m_az->setObjectName(QStringLiteral("parkAz"));
+    m_az->setDecimals(1);
+    m_az->setSuffix(QStringLiteral("°"));
+    m_el = new QDoubleSpinBox(this);
+    m_el->setObjectName(QStringLiteral("parkEl"));
+    m_el->setDecimals(1);
+    m_el->setSuffix(QStringLiteral("°"));
+    m_useCurrent = new QPushButton(tr("Use the present position"), this);
+    m_useCurrent->setObjectName(QStringLiteral("useCurrent"));
+    m_status = new QLabel(this);
+    m_status->setWordWrap(true);
+    auto *form = new QFormLayout;
+    form->addRow(tr("Azimuth"), m_az);
+    form->addRow(tr("Elevation"), m_el);
+    auto *layout = new QVBoxLayout(this);
+    layout->addLayout(form);
+    layout->addWidget(m_useCurrent);
+    layout->addWidget(m_status);
+    connect(m_useCurrent, &QPushButton::clicked, this, [this] {
+        const session::RotatorSession *s = m_wizard->session();
+        if (!s->hasPosition()) {
+            m_status->setText(tr("No position from the rotator yet."));
+            return;
+        }
+        m_az->setValue(s->azimuth());
+        m_el->setValue(s->elevation());
+    });
+}
+
+void ParkPage::initializePage()
+{
+    // The spin boxes only offer what the limits allow.
+    const model::RotatorProfile &p = m_wizard->profile();
+    m_az->setRange(p.limits.azMin, p.limits.azMax);
+    m_el->setRange(p.limits.elMin, p.limits.elMax);
+    m_az->setValue(p.parkAz);
+    m_el->setValue(p.parkEl);
+}
+
+bool ParkPage::validatePage()
+{
+    model::RotatorProfile &p = m_wizard->profile();
+    const auto choice = model::chooseAzimuth(p.limits, m_az->value(), std::nullopt);
+    const QString e = choice.azimuth ? model::checkElevation(p.limits, m_el->value()) : choice.error;
+    if (!e.isEmpty()) {
+        m_status->setText(e);
+        return false;
+    }
+    p.parkAz = m_az->value();
+    p.parkEl = m_el->value();
+    return true;
+}
+
+} // namespace slew::ui

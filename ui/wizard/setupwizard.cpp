@@ -1,0 +1,37 @@
+#include "setupwizard.h"
+
+#include "connectpage.h"
+#include "homingpage.h"
+#include "identifypage.h"
+#include "mechanicspage.h"
+#include "parkpage.h"
+#include "summarypage.h"
+#include "tuningpage.h"
+
+#include "session/rotatorsession.h"
+
+namespace slew::ui {
+
+SetupWizard::SetupWizard(session::RotatorSession *session, QWidget *parent)
+    : QWizard(parent), m_session(session), m_profile(session->profile())
+{
+    setWindowTitle(tr("Set up a rotator"));
+    setOption(QWizard::NoBackButtonOnStartPage);
+    setPage(ConnectPageId, new ConnectPage(this));
+    setPage(IdentifyPageId, new IdentifyPage(this));
+    setPage(MechanicsPageId, new MechanicsPage(this));
+    setPage(HomingPageId, new HomingPage(this));
+    setPage(TuningPageId, new TuningPage(this));
+    setPage(ParkPageId, new ParkPage(this));
+    setPage(SummaryPageId, new SummaryPage(this));
+}
+
+void SetupWizard::reject()
+{
+    emit stopRequested();
+    if (m_session->isConnected())
+        m_session->stop();
+    QWizard::reject();
+}
+
+} // namespace slew::ui

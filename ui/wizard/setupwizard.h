@@ -1,0 +1,40 @@
+#pragma once
+// The setup and tuning wizard: from "plugged in" to "tuned, parked and
+// saved". Connect → Identify → Mechanics → Homing → Tuning → Park → Summary.
+// It works on the operator window's session (no second connection to the
+// rotator) and builds the profile that the summary writes and saves.
+
+#include "model/rotatorprofile.h"
+
+#include <QWizard>
+
+namespace slew::session {
+class RotatorSession;
+}
+
+namespace slew::ui {
+
+class SetupWizard : public QWizard {
+    Q_OBJECT
+public:
+    enum PageId { ConnectPageId, IdentifyPageId, MechanicsPageId, HomingPageId, TuningPageId, ParkPageId, SummaryPageId };
+
+    explicit SetupWizard(session::RotatorSession *session, QWidget *parent = nullptr);
+
+    session::RotatorSession *session() const { return m_session; }
+    // The profile being built; pages fill it in as the operator goes.
+    model::RotatorProfile &profile() { return m_profile; }
+
+    // Esc, Cancel or closing: every long action stops, and so does the rotator.
+    void reject() override;
+
+signals:
+    void profileSaved(const QString &path);
+    void stopRequested(); // pages cancel what they run
+
+private:
+    session::RotatorSession *m_session;
+    model::RotatorProfile m_profile;
+};
+
+} // namespace slew::ui

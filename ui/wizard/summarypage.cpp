@@ -1,0 +1,122 @@
+#include "summarypage.h"
+
+#include "setupwizard.h"
+
+#include <QDir>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QPushButton>
+#include <QStandardPaths>
+#include <QVBoxLayout>
+
+namespace slew::ui {
+
+SummaryPage::SummaryPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizard(wizard), m_readback(wizard->session())
+{
+    setTitle(tr("Summary"));
+    setSubTitle(tr("Write the settings to the controller, check each register, and save the profile."));
+    m_plan = new QLabel(this);
+    m_plan->setObjectName(QStringLiteral("plan"));
+    m_plan->setWordWrap(true);
+    m_write = new QPushButton(tr("Write to the controller and read back"), this);
+    m_write->setObjectName(QStringLiteral("write"));
+    m_results = new QListWidget(this);
+    m_results->setObjectName(QStringLiteral("writeResults"));
+    m_path = new QLineEdit(this);
+    m_path->setObjectName(QStringLiteral("profilePath"));
+    m_save = new QPushButton(tr("Save profile"), this);
+    m_save->setObjectName(QStringLiteral("save"));
+    m_status = new QLabel(this);
+    m_status->setObjectName(QStringLiteral("summaryStatus"));
+    m_status->setWordWrap(true);
+    auto *saveRow = new QHBoxLayout;
+    saveRow->addWidget(m_path, 1);
+    saveRow->addWidget(m_save);
+    auto *layout = new QVBoxLayout(this);
+    layout->addWidget(m_plan);
+    layout->addWidget(m_write);
+    layout->addWidget(m_results, 1);
+    layout->addLayout(saveRow);
+    layout->addWidget(m_status);
+
+    connect(m_write, &QPushButton::clicked, this, &SummaryPage::write);
+    connect(m_save, &QPushButton::clicked, this, &SummaryPage::save);
+    connect(&m_readback, &tuning::RegisterReadback::finished, this, [this](bool ok) {
+        m_write->setEnabled(true);
+        for (const auto &check : m_readback.results())
+            m_results->addItem(check.describe());
+        m_status->setText(ok ? tr("Every register holds what was written.")
+                             : tr("Some registers do not hold what was written: see the list."));
+    });
+}
+
+QMap<int, QString> SummaryPage::plannedWrites() const
+{
+    const model::RotatorProfile &p = m_wizard->profile();
+    QMap<int, QString> writes;
+    auto gains = [&](int first, const std::optional<model::PidGains> &g) {
+        if (!g)
+            return;
+        writes.insert(first, tuning::RegisterReadback::format(g->kp));
+        writes.insert(first + 1, tuning::RegisterReadback::format(g->ki));
+        writes.insert(first + 2, tuning::RegisterReadback::format(g->kd));
+    };
+    gains(1, p.azGains);
+    gains(4, p.elGains);
+    writes.insert(7, tuning::RegisterReadback::format(p.parkAz));
+    writes.insert(8, tuning::RegisterReadback::format(p.parkEl));
+    return writes;
+}
+
+void SummaryPage::initializePage()
+{
+    const model::RotatorProfile &p = m_wizard->profile();
+    QStringList lines;
+    lines << tr("Link %1, dialect %2").arg(p.uri, protocol::dialectName(p.dialect));
+    lines << tr("Azimuth %1° … %2° (stop at %3), elevation %4° … %5°")
+                 .arg(p.limits.azMin)
+                 .arg(p.limits.azMax)
+                 .arg(p.southStop ? tr("south") : tr("north"))
+                 .arg(p.limits.elMin)
+                 .arg(p.limits.elMax);
+    const QMap<int, QString> writes = plannedWrites();
+    for (auto it = writes.begin(); it != writes.end(); ++it)
+        lines << QStringLiteral("CW%1,%2").arg(it.key()).arg(it.value());
+    m_plan->setText(lines.join(u'\n'));
+    if (m_path->text().isEmpty()) {
+        const QString dir = QStandardPaths::writableLocation(QStandardPaths::AppConfigLocation);
+        m_path->setText(QDir(dir).filePath(QStringLiteral("rotator.json")));
+    }
+}
+
+void SummaryPage::write()
+{
+    m_results->clear();
+    if (!m_readback.run(plannedWrites())) {
+        m_status->setText(m_readback.error());
+        return;
+    }
+    m_write->setEnabled(false);
+    m_status->setText(tr("Writing…"));
+}
+
+void SummaryPage::save()
+{
+    const QString path = m_path->text().trimmed();
+    if (path.isEmpty()) {
+        m_status->setText(tr("Enter a file name for the profile."));
+        return;
+    }
+    QDir().mkpath(QFileInfo(path).absolutePath());
+    QString error;
+    if (!m_wizard->profile().save(path, &error)) {
+        m_status->setText(error);
+        return;
+    }
+    m_status->setText(tr("Profile saved to %1.").arg(path));
+    emit m_wizard->profileSaved(path);
+}
+
+} // namespace slew::ui

@@ -1,0 +1,92 @@
+#include "tuningchart.h"
+
+#include <QChart>
+#include <QLineSeries>
+#include <QPen>
+#include <QValueAxis>
+
+#include <algorithm>
+
+namespace slew::ui {
+
+TuningChart::TuningChart(QWidget *parent) : QChartView(parent)
+{
+    auto *chart = new QChart;
+    m_before = new QLineSeries(chart);
+    m_before->setName(tr("before"));
+    m_before->setPen(QPen(QColor(0xd9, 0x53, 0x4f), 2));
+    m_after = new QLineSeries(chart);
+    m_after->setName(tr("after"));
+    m_after->setPen(QPen(QColor(0x2a, 0x9d, 0x5c), 2));
+    m_target = new QLineSeries(chart);
+    m_target->setName(tr("target"));
+    m_target->setPen(QPen(Qt::gray, 1, Qt::DashLine));
+    for (QLineSeries *s : {m_target, m_before, m_after})
+        chart->addSeries(s);
+    auto *x = new QValueAxis(chart);
+    x->setTitleText(tr("time since the step (s)"));
+    auto *y = new QValueAxis(chart);
+    y->setTitleText(tr("position (°)"));
+    chart->addAxis(x, Qt::AlignBottom);
+    chart->addAxis(y, Qt::AlignLeft);
+    for (QLineSeries *s : {m_target, m_before, m_after}) {
+        s->attachAxis(x);
+        s->attachAxis(y);
+    }
+    chart->setTitle(tr("Step response"));
+    setChart(chart);
+    setRenderHint(QPainter::Antialiasing);
+    setMinimumHeight(240);
+}
+
+void TuningChart::clear()
+{
+    m_before->clear();
+    m_after->clear();
+    m_target->clear();
+}
+
+void TuningChart::fit(double start, double target, double seconds)
+{
+    const double lo = std::min(start, target), hi = std::max(start, target);
+    const double span = std::max(1.0, hi - lo);
+    auto *x = qobject_cast<QValueAxis *>(chart()->axes(Qt::Horizontal).value(0));
+    auto *y = qobject_cast<QValueAxis *>(chart()->axes(Qt::Vertical).value(0));
+    if (x)
+        x->setRange(0, std::max(1.0, seconds));
+    if (y)
+        y->setRange(lo - 0.2 * span, hi + 0.7 * span);
+    m_target->replace({QPointF(0, target), QPointF(std::max(1.0, seconds), target)});
+}
+
+void TuningChart::addSample(bool after, const tuning::PositionSample &sample)
+{
+    (after ? m_after : m_before)->append(sample.t, sample.position);
+    auto *x = qobject_cast<QValueAxis *>(chart()->axes(Qt::Horizontal).value(0));
+    auto *y = qobject_cast<QValueAxis *>(chart()->axes(Qt::Vertical).value(0));
+    const bool first = m_before->count() + m_after->count() == 1;
+    if (x)
+        x->setRange(0, std::max(first ? 1.0 : x->max(), sample.t));
+    if (y)
+        y->setRange(first ? sample.position - 1 : std::min(y->min(), sample.position - 0.5),
+                    first ? sample.position + 1 : std::max(y->max(), sample.position + 0.5));
+}
+
+void TuningChart::showResult(const tuning::TuningResult &r)
+{
+    auto points = [](const tuning::StepResponse &s) {
+        QList<QPointF> p;
+        for (const auto &sample : s.samples)
+            p.append(QPointF(sample.t, sample.position));
+        return p;
+    };
+    m_before->replace(points(r.before));
+    m_after->replace(points(r.after));
+    chart()->setTitle(tr("%1 step %2° → %3°")
+                          .arg(tuning::axisName(r.axis))
+                          .arg(r.before.start, 0, 'f', 1)
+                          .arg(r.before.target, 0, 'f', 1));
+    fit(r.before.start, r.before.target, std::max(r.before.duration, r.after.duration));
+}
+
+} // namespace slew::ui

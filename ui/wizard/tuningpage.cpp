@@ -1,0 +1,157 @@
+#include "tuningpage.h"
+
+#include "setupwizard.h"
+#include "tuningchart.h"
+
+#include <QComboBox>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+namespace slew::ui {
+
+using session::Axis;
+using tuning::AxisTuner;
+
+TuningPage::TuningPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizard(wizard), m_tuner(wizard->session())
+{
+    setTitle(tr("Tuning"));
+    setSubTitle(tr("Each axis makes a small step with its present gains; Slew fits a model to it, proposes "
+                   "gains that damp it, tries them and shows both runs. Nothing stays unless you accept."));
+    m_axis = new QComboBox(this);
+    m_axis->setObjectName(QStringLiteral("axis"));
+    m_axis->addItem(tr("Azimuth"), int(Axis::Azimuth));
+    m_axis->addItem(tr("Elevation"), int(Axis::Elevation));
+    m_tune = new QPushButton(tr("Tune"), this);
+    m_tune->setObjectName(QStringLiteral("tune"));
+    m_cancel = new QPushButton(tr("Cancel"), this);
+    m_cancel->setObjectName(QStringLiteral("cancelTuning"));
+    m_cancel->setEnabled(false);
+    m_progress = new QProgressBar(this);
+    m_status = new QLabel(this);
+    m_status->setObjectName(QStringLiteral("tuningStatus"));
+    m_status->setWordWrap(true);
+    m_chart = new TuningChart(this);
+    m_chart->setObjectName(QStringLiteral("tuningChart"));
+    m_before = new QLabel(this);
+    m_before->setObjectName(QStringLiteral("beforeFigures"));
+    m_after = new QLabel(this);
+    m_after->setObjectName(QStringLiteral("afterFigures"));
+    m_accept = new QPushButton(tr("Accept new gains"), this);
+    m_accept->setObjectName(QStringLiteral("accept"));
+    m_retry = new QPushButton(tr("Retry"), this);
+    m_retry->setObjectName(QStringLiteral("retry"));
+    m_keepOld = new QPushButton(tr("Keep old gains"), this);
+    m_keepOld->setObjectName(QStringLiteral("keepOld"));
+    setDeciding(false);
+
+    auto *top = new QHBoxLayout;
+    top->addWidget(m_axis);
+    top->addWidget(m_tune);
+    top->addWidget(m_cancel);
+    auto *figuresRow = new QHBoxLayout;
+    figuresRow->addWidget(m_before);
+    figuresRow->addWidget(m_after);
+    auto *decide = new QHBoxLayout;
+    decide->addWidget(m_accept);
+    decide->addWidget(m_retry);
+    decide->addWidget(m_keepOld);
+    auto *layout = new QVBoxLayout(this);
+    layout->addLayout(top);
+    layout->addWidget(m_progress);
+    layout->addWidget(m_status);
+    layout->addWidget(m_chart, 1);
+    layout->addLayout(figuresRow);
+    layout->addLayout(decide);
+
+    connect(m_tune, &QPushButton::clicked, this, &TuningPage::start);
+    connect(m_cancel, &QPushButton::clicked, &m_tuner, &AxisTuner::cancel);
+    connect(m_accept, &QPushButton::clicked, &m_tuner, &AxisTuner::accept);
+    connect(m_keepOld, &QPushButton::clicked, &m_tuner, &AxisTuner::keepOldGains);
+    connect(m_retry, &QPushButton::clicked, this, [this] {
+        setDeciding(false);
+        m_chart->clear();
+        m_tuner.retry();
+    });
+    connect(&m_tuner, &AxisTuner::progress, this, [this](int percent, const QString &what) {
+        m_progress->setValue(percent);
+        m_status->setText(what);
+    });
+    connect(&m_tuner, &AxisTuner::sampleRecorded, m_chart, &TuningChart::addSample);
+    connect(&m_tuner, &AxisTuner::resultReady, this, &TuningPage::showResult);
+    connect(&m_tuner, &AxisTuner::finished, this, [this](const tuning::TuningResult &r) {
+        model::RotatorProfile &p = m_wizard->profile();
+        const model::PidGains kept = r.applied ? r.newGains : r.oldGains;
+        (r.axis == Axis::Azimuth ? p.azGains : p.elGains) = kept;
+        setDeciding(false);
+        m_status->setText(r.applied ? tr("New %1 gains kept on the controller.").arg(tuning::axisName(r.axis))
+                                    : tr("Old %1 gains written back.").arg(tuning::axisName(r.axis)));
+        emit completeChanged();
+    });
+    auto ended = [this](const QString &why) {
+        setDeciding(false);
+        m_status->setText(why);
+        emit completeChanged();
+    };
+    connect(&m_tuner, &AxisTuner::failed, this, ended);
+    connect(&m_tuner, &AxisTuner::cancelled, this, ended);
+    connect(wizard, &SetupWizard::stopRequested, &m_tuner, &AxisTuner::cancel);
+}
+
+void TuningPage::start()
+{
+    m_chart->clear();
+    m_before->clear();
+    m_after->clear();
+    if (!m_tuner.start(Axis(m_axis->currentData().toInt()))) {
+        m_status->setText(m_tuner.error());
+        return;
+    }
+    m_tune->setEnabled(false);
+    m_cancel->setEnabled(true);
+    m_axis->setEnabled(false);
+    emit completeChanged();
+}
+
+QString TuningPage::figures(const QString &title, const tuning::StepMetrics &m, const model::PidGains &g)
+{
+    return tr("<b>%1</b><br>rise time %2<br>overshoot %3 %<br>settling time %4<br>steady-state error %5°<br>"
+              "kp %6 · ki %7 · kd %8")
+        .arg(title, tuning::formatSeconds(m.riseTime, m.rose))
+        .arg(m.overshootPercent, 0, 'f', 1)
+        .arg(m.settled ? tuning::formatSeconds(m.settlingTime, true) : tr("> %1 s").arg(m.settlingTime, 0, 'f', 1))
+        .arg(m.steadyStateError, 0, 'f', 3)
+        .arg(g.kp)
+        .arg(g.ki)
+        .arg(g.kd);
+}
+
+void TuningPage::showResult(const tuning::TuningResult &r)
+{
+    m_chart->showResult(r);
+    m_before->setText(figures(tr("Before"), r.beforeMetrics, r.oldGains));
+    m_after->setText(figures(tr("After (on trial)"), r.afterMetrics, r.newGains));
+    setDeciding(true);
+}
+
+void TuningPage::setDeciding(bool deciding)
+{
+    const bool running = m_tuner.isRunning() && !deciding;
+    m_accept->setEnabled(deciding);
+    m_retry->setEnabled(deciding);
+    m_keepOld->setEnabled(deciding);
+    m_tune->setEnabled(!running && !deciding);
+    m_axis->setEnabled(!running && !deciding);
+    m_cancel->setEnabled(running || deciding);
+}
+
+bool TuningPage::isComplete() const
+{
+    // Tuning is optional, but not half done: no trial gains left undecided.
+    return !m_tuner.isRunning();
+}
+
+} // namespace slew::ui
