@@ -86,6 +86,7 @@ void RotatorSession::setProfile(const model::RotatorProfile &profile)
     m_pollTimer.setInterval(1000 / std::clamp(profile.pollHz, 1, 50));
     const int pollPeriod = m_pollTimer.interval();
     m_staleTimer.setInterval(std::max(1500, 3 * pollPeriod + m_options.replyTimeoutMs * (m_options.retries + 1)));
+    emit profileChanged();
 }
 
 void RotatorSession::setOptions(const Options &options)
@@ -155,6 +156,7 @@ void RotatorSession::openLink()
 void RotatorSession::onLinkOpened()
 {
     m_parser.reset();
+    m_deviceEchoes = false;
     m_reconnectAttempt = 0;
     m_failedPolls = 0;
     m_pollCount = 0;
@@ -226,22 +228,28 @@ void RotatorSession::onReadyRead()
     m_parser.feed(bytes, [this](const Message &m) { apply(m); });
 }
 
-bool RotatorSession::isEcho(const Message &m) const
+bool RotatorSession::isEcho(const Message &m)
 {
-    if (isCommandOnly(m.op))
+    // Unmistakable echoes: a command, or a query form, coming back. Seeing one
+    // tells us this controller echoes what it hears.
+    if (isCommandOnly(m.op)
+        || (m.op != Op::Alarm && m.op != Op::Invalid && !m.hasValue && m.text.isEmpty())) {
+        m_deviceEchoes = true;
         return true;
-    if (m.op != Op::Alarm && m.op != Op::Invalid && !m.hasValue && m.text.isEmpty())
-        return true; // `AZ`, `GS`, `CR1`: our own query coming back
-    if (m.op == Op::Azimuth || m.op == Op::Elevation || m.op == Op::VelocityLeft || m.op == Op::VelocityRight
-        || m.op == Op::VelocityUp || m.op == Op::VelocityDown) {
-        const qint64 now = m_clock.elapsed();
-        for (const Sent &s : m_sent) {
-            if (now - s.atMs <= kEchoWindowMs && s.message.op == m.op && s.message.hasValue
-                && std::abs(s.message.value - m.value) < 1e-9)
-                return true;
-        }
-        // Velocity tokens from a controller are always echoes: it reports speed in IP7/IP8.
-        return m.op != Op::Azimuth && m.op != Op::Elevation;
+    }
+    if (m.op == Op::VelocityLeft || m.op == Op::VelocityRight || m.op == Op::VelocityUp
+        || m.op == Op::VelocityDown)
+        return true; // a controller reports speed in IP7/IP8, never as VL..VD
+    // A set position coming back reads exactly like a position report, so it
+    // is only taken for an echo from a controller known to echo, and only
+    // when it repeats what was sent within the last second.
+    if (!m_deviceEchoes || (m.op != Op::Azimuth && m.op != Op::Elevation))
+        return false;
+    const qint64 now = m_clock.elapsed();
+    for (const Sent &s : m_sent) {
+        if (now - s.atMs <= kEchoWindowMs && s.message.op == m.op && s.message.hasValue
+            && std::abs(s.message.value - m.value) < 1e-9)
+            return true;
     }
     return false;
 }
@@ -607,6 +615,46 @@ bool RotatorSession::gotoPosition(double az, double el)
     m_targetAz = targetAz;
     m_targetEl = el;
     emit targetChanged(targetAz, el);
+    return true;
+}
+
+bool RotatorSession::gotoAxis(Axis axis, double degrees)
+{
+    if (!requireLink())
+        return false;
+    const bool az = axis == Axis::Azimuth;
+    const Op op = az ? Op::Azimuth : Op::Elevation;
+    const Dialect d = m_profile.dialect;
+    // Easycomm I and GS-232 can only command both axes together.
+    if (d == Dialect::Easycomm1 || protocol::isGs232(d)) {
+        const double other = az ? (hasPosition() ? m_el : m_targetEl) : (hasPosition() ? m_az : m_targetAz);
+        if (std::isnan(other))
+            return refuse(tr("%1 moves both axes at once, and the other axis' position is not known yet")
+                              .arg(protocol::dialectName(d)));
+        return az ? gotoPosition(degrees, other) : gotoPosition(other, degrees);
+    }
+    double target = degrees;
+    if (az) {
+        const auto choice =
+            model::chooseAzimuth(m_profile.limits, degrees, hasPosition() ? std::optional<double>(m_az) : std::nullopt);
+        if (!choice.azimuth)
+            return refuse(choice.error);
+        target = *choice.azimuth;
+    } else if (QString e = model::checkElevation(m_profile.limits, degrees); !e.isEmpty()) {
+        return refuse(e);
+    }
+    if (m_reportedLimits) {
+        const bool outside = az ? (target < m_reportedLimits->azMin - 1e-6 || target > m_reportedLimits->azMax + 1e-6)
+                                : !model::checkElevation(*m_reportedLimits, target).isEmpty();
+        if (outside)
+            return refuse(tr("%1° is outside the limits the link reports").arg(target, 0, 'f', 1));
+    }
+    const Message m = Message::number(op, target);
+    rememberSent(Message::number(op, std::round(target * 100) / 100));
+    m_jogSpeed[az ? 0 : 1] = 0.0;
+    write(protocol::encodeLine({m}, d));
+    (az ? m_targetAz : m_targetEl) = target;
+    emit targetChanged(m_targetAz, m_targetEl);
     return true;
 }
 

@@ -84,6 +84,9 @@ public slots:
     // move is outside the limits, the controller lacks the command, or there
     // is no link; in that case nothing is sent.
     bool gotoPosition(double az, double el);
+    // One axis only, the other left where it is going (Easycomm I and GS-232
+    // can only command both: there the other axis gets its current position).
+    bool gotoAxis(slew::session::Axis axis, double degrees);
     bool moveAxis(slew::session::Axis axis, double degreesPerSecond); // + is right (CW) / up
     bool stop(slew::session::Axes axes = slew::session::Axes::Both);
     bool park();
@@ -94,6 +97,7 @@ public slots:
 
 signals:
     void stateChanged(slew::session::RotatorSession::State state, const QString &detail);
+    void profileChanged(); // limits, park, dialect or poll rate changed
     void positionChanged(double az, double el, bool stale);
     void targetChanged(double az, double el);
     void commandedChanged(double az, double el); // CR10 / CR11 read back
@@ -123,7 +127,7 @@ private:
     void applyPosition();
     void applyInput(int index, double value);
     void applyConfig(int reg, const QString &text, bool numeric, double value);
-    bool isEcho(const protocol::Message &m) const;
+    bool isEcho(const protocol::Message &m);
 
     bool refuse(const QString &reason);
     bool requireLink();
@@ -185,6 +189,7 @@ private:
     int m_sentNext = 0;
     QElapsedTimer m_clock;
     int m_echoesIgnored = 0;
+    bool m_deviceEchoes = false; // this controller was seen echoing what it hears
 };
 
 } // namespace slew::session

@@ -35,6 +35,8 @@ private slots:
     void alarmFailsTheRequestInFlight();
     void telemetryAndStatusSignals();
     void velocityJogAndSoftLimitStop();
+    void singleAxisGoto();
+    void reportEqualToTargetIsNotAnEchoFromANonEchoingDevice();
 
 private:
     bool connectSession(RotatorSession &s, FakeDevice &d, protocol::Dialect dialect = protocol::Dialect::SatNogs);
@@ -413,6 +415,38 @@ void RotatorSessionTest::velocityJogAndSoftLimitStop()
     session->setProfile(p);
     QVERIFY(session->moveAxis(session::Axis::Azimuth, -3.0));
     QTRY_VERIFY(device->received.contains("ML"));
+}
+
+void RotatorSessionTest::singleAxisGoto()
+{
+    QVERIFY(connectSession(*session, *device));
+    QSignalSpy targets(session, &RotatorSession::targetChanged);
+    QVERIFY(session->gotoAxis(session::Axis::Azimuth, 50));
+    QTRY_VERIFY(device->received.contains("AZ50.0"));
+    QVERIFY(session->gotoAxis(session::Axis::Elevation, 30));
+    QTRY_VERIFY(device->received.contains("EL30.0"));
+    QCOMPARE(targets.last().at(0).toDouble(), 50.0);
+    QCOMPARE(targets.last().at(1).toDouble(), 30.0);
+    QVERIFY(!session->gotoAxis(session::Axis::Elevation, 91)); // limits hold for one axis too
+    QVERIFY(!device->received.contains("EL91.0"));
+    // GS-232 commands both axes at once: the other keeps its current position.
+    model::RotatorProfile p = session->profile();
+    p.dialect = protocol::Dialect::Gs232B;
+    session->setProfile(p);
+    QSignalSpy sent(session, &RotatorSession::bytesSent);
+    QVERIFY(session->gotoAxis(session::Axis::Azimuth, 120));
+    QCOMPARE(sent.last().at(0).toByteArray(), QByteArray("W120 020\r"));
+}
+
+void RotatorSessionTest::reportEqualToTargetIsNotAnEchoFromANonEchoingDevice()
+{
+    QVERIFY(connectSession(*session, *device));
+    QTRY_COMPARE(session->azimuth(), 10.0);
+    QSignalSpy positions(session, &RotatorSession::positionChanged);
+    QVERIFY(session->gotoPosition(10, 20)); // where it already is
+    // The very next replies carry exactly the target; they count as positions.
+    QTRY_VERIFY_WITH_TIMEOUT(positions.count() >= 3, 900);
+    QCOMPARE(session->echoesIgnored(), 0);
 }
 
 QTEST_GUILESS_MAIN(RotatorSessionTest)
