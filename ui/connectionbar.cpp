@@ -84,11 +84,10 @@ ConnectionBar::ConnectionBar(RotatorSession *session, QWidget *parent) : QWidget
 
     m_dialect = new QComboBox;
     m_dialect->setObjectName(QStringLiteral("dialect"));
-    for (auto d : {protocol::Dialect::Easycomm1, protocol::Dialect::Easycomm2, protocol::Dialect::Easycomm3,
-                   protocol::Dialect::SatNogs})
+    for (auto d : protocol::allDialects())
         m_dialect->addItem(protocol::dialectName(d), int(d));
     setDialect(protocol::Dialect::Easycomm3);
-    m_dialect->setToolTip(tr("Which Easycomm flavour the controller speaks"));
+    m_dialect->setToolTip(tr("Which protocol the controller speaks: an Easycomm flavour or Yaesu GS-232"));
 
     m_connect = new QPushButton(tr("Connect"));
     m_connect->setObjectName(QStringLiteral("connectButton"));

@@ -12,13 +12,19 @@
 #include "polarplotwidget.h"
 #include "positionreadout.h"
 #include "presetpanel.h"
+#include "rotctldpanel.h"
 #include "stopbutton.h"
 #include "targetconfirmation.h"
 #include "telemetrycharts.h"
 #include "telemetryrecorder.h"
 #include "trafficconsole.h"
+#include "wizard/setupwizard.h"
 
+#include "bridge/rotctldserver.h"
+
+#include <QDateTime>
 #include <QGroupBox>
+#include <QMenuBar>
 #include <QLabel>
 #include <QSplitter>
 #include <QStatusBar>
@@ -62,12 +68,15 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
     m_config = new ConfigEditor(session);
     m_traffic = new TrafficConsole(session);
     m_log = new EventLog;
+    m_rotctld = new bridge::RotctldServer(session, this);
+    m_trackers = new RotctldPanel(m_rotctld);
 
     m_tabs = new QTabWidget;
     m_tabs->setObjectName(QStringLiteral("mainTabs"));
     m_tabs->addTab(m_charts, tr("Telemetry"));
     m_tabs->addTab(m_config, tr("Configuration"));
     m_tabs->addTab(m_traffic, tr("Traffic"));
+    m_tabs->addTab(m_trackers, tr("Trackers"));
     m_tabs->addTab(m_log, tr("Events"));
 
     auto *plotColumn = new QWidget;
@@ -105,6 +114,13 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
     connect(m_stop, &StopButton::stopped, m_jog, &JogPad::releaseAll);
     connect(m_stop, &StopButton::stopped, m_parkHome, &ParkHomePanel::abandonHoming);
     connect(m_stop, &StopButton::stopped, m_confirm, &TargetConfirmation::cancel);
+    // The operator stays in charge: after a local Stop, trackers may not
+    // move the rotator until the operator hands control back.
+    connect(m_stop, &StopButton::stopped, m_rotctld, [this] {
+        if (m_rotctld->isListening())
+            m_rotctld->holdRemote();
+    });
+    connect(m_trackers, &RotctldPanel::message, this, &MainWindow::logInfo);
     connect(session, &RotatorSession::stateChanged, this, [this](RotatorSession::State s) {
         if (s == RotatorSession::State::Disconnected)
             m_jog->releaseAll();
@@ -115,7 +131,34 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
     wirePlot();
     showProfile();
     m_keys = new KeyboardControl(this, m_stop, m_jog, m_presets, this);
+    buildMenus();
     resize(1440, 900);
+}
+
+void MainWindow::buildMenus()
+{
+    QMenu *rotator = menuBar()->addMenu(tr("&Rotator"));
+    QAction *wizard = rotator->addAction(tr("Setup and tuning &wizard…"));
+    wizard->setObjectName(QStringLiteral("actionSetupWizard"));
+    connect(wizard, &QAction::triggered, this, &MainWindow::openSetupWizard);
+}
+
+void MainWindow::openSetupWizard()
+{
+    auto *wizard = new SetupWizard(m_session, this);
+    wizard->setObjectName(QStringLiteral("setupWizard"));
+    wizard->setAttribute(Qt::WA_DeleteOnClose);
+    connect(wizard, &SetupWizard::profileSaved, this, [this](const QString &path) {
+        logInfo(tr("setup wizard saved the rotator profile to %1").arg(path));
+        showProfile();
+    });
+    wizard->open(); // window-modal, never from a timer: the event loop keeps running
+}
+
+void MainWindow::logInfo(const QString &text)
+{
+    m_log->addEvent(QDateTime::currentDateTime(), AlarmMonitor::Severity::Info, text);
+    statusBar()->showMessage(text, 8000);
 }
 
 QWidget *MainWindow::buildControlColumn()

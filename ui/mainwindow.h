@@ -11,6 +11,10 @@
 
 class QTabWidget;
 
+namespace slew::bridge {
+class RotctldServer;
+}
+
 namespace slew::ui {
 
 class AlarmBanner;
@@ -25,6 +29,7 @@ class ParkHomePanel;
 class PolarPlotWidget;
 class PositionReadout;
 class PresetPanel;
+class RotctldPanel;
 class StopButton;
 class TargetConfirmation;
 class TelemetryCharts;
@@ -51,16 +56,22 @@ public:
     AlarmMonitor *alarmMonitor() const { return m_alarms; }
     EventLog *eventLog() const { return m_log; }
     QTabWidget *tabs() const { return m_tabs; }
+    bridge::RotctldServer *rotctldServer() const { return m_rotctld; }
+    RotctldPanel *rotctldPanel() const { return m_trackers; }
 
 public slots:
     // Fills the connection bar with this URI (and dialect) and connects.
     void connectTo(const QString &uri, std::optional<slew::protocol::Dialect> dialect = std::nullopt);
+    // Opens the setup and tuning wizard on this window's session.
+    void openSetupWizard();
 
 private:
     QWidget *buildControlColumn();
     void wirePlot();
     void onTargetPicked(double az, double el);
     void showProfile();
+    void buildMenus();
+    void logInfo(const QString &text);
 
     session::RotatorSession *m_session;
     ConnectionBar *m_connection;
@@ -81,6 +92,8 @@ private:
     EventLog *m_log;
     QTabWidget *m_tabs;
     KeyboardControl *m_keys;
+    bridge::RotctldServer *m_rotctld;
+    RotctldPanel *m_trackers;
 };
 
 } // namespace slew::ui

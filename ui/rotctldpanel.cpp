@@ -10,6 +10,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QSignalBlocker>
 #include <QSpinBox>
 #include <QTreeWidget>
 #include <QVBoxLayout>
@@ -108,27 +109,30 @@ void RotctldPanel::apply()
     QList<QHostAddress> allowed;
     for (const QString &a : m_allowed->text().split(u',', Qt::SkipEmptyParts)) {
         const QHostAddress peer(a.trimmed());
-        if (peer.isNull()) {
-            m_state->setText(tr("'%1' is not an address; the server stays off").arg(a.trimmed()));
-            m_enabled->setChecked(false);
-            return;
-        }
+        if (peer.isNull())
+            return refuse(tr("'%1' is not an address; the server stays off").arg(a.trimmed()));
         allowed.append(peer);
     }
-    if (address.isNull()) {
-        m_state->setText(tr("'%1' is not an address; the server stays off").arg(m_address->text()));
-        m_enabled->setChecked(false);
-        return;
-    }
+    if (address.isNull())
+        return refuse(tr("'%1' is not an address; the server stays off").arg(m_address->text()));
     m_server->setAllowedClients(allowed);
     QString error;
-    if (!m_server->listen(address, quint16(m_port->value()), &error)) {
-        m_state->setText(error);
-        emit message(error);
-        m_enabled->setChecked(false);
-        return;
-    }
+    if (!m_server->listen(address, quint16(m_port->value()), &error))
+        return refuse(error);
     showListening();
+}
+
+void RotctldPanel::refuse(const QString &why)
+{
+    // Back to off without going through apply() again, which would replace
+    // the reason with a plain "Off".
+    const QSignalBlocker quiet(m_enabled);
+    m_enabled->setChecked(false);
+    for (QWidget *w : {static_cast<QWidget *>(m_address), static_cast<QWidget *>(m_port),
+                       static_cast<QWidget *>(m_allowed)})
+        w->setEnabled(true);
+    m_state->setText(why);
+    emit message(why);
 }
 
 void RotctldPanel::showListening()

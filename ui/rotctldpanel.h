@@ -33,6 +33,7 @@ signals:
 
 private:
     void apply();
+    void refuse(const QString &why);
     void refreshClients();
     void refreshHold(bool held);
     void showListening();

@@ -1,0 +1,92 @@
+// The Trackers tab: the rotctld server started from the window, a tracker
+// steering through it, the operator's Stop holding remote moves off until
+// control is handed back; and the setup wizard opened from the menu.
+
+#include "bridge/rotctldserver.h"
+#include "rotctldpanel.h"
+#include "windowfixture.h"
+#include "wizard/setupwizard.h"
+
+#include <QAction>
+#include <QCheckBox>
+#include <QLabel>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTcpSocket>
+#include <QTest>
+#include <QTreeWidget>
+
+class TrackersTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { WindowFixture::prepareApplication(); }
+    void trackerSteersUntilTheOperatorStops();
+    void badAddressKeepsTheServerOff();
+    void wizardOpensFromTheMenu();
+
+private:
+    static QByteArray ask(QTcpSocket &s, const QByteArray &line)
+    {
+        QSignalSpy ready(&s, &QTcpSocket::readyRead);
+        s.write(line + '\n');
+        return ready.wait(5000) ? s.readAll() : QByteArray();
+    }
+};
+
+void TrackersTest::trackerSteersUntilTheOperatorStops()
+{
+    WindowFixture f;
+    QVERIFY(f.connectAndWait());
+    auto *panel = f.window->rotctldPanel();
+    QVERIFY(panel->startListening(QStringLiteral("127.0.0.1"), 0));
+    QVERIFY(f.find<QCheckBox>(QStringLiteral("rotctldEnabled"))->isChecked());
+    QVERIFY(f.find<QLabel>(QStringLiteral("rotctldState"))->text().contains(QStringLiteral("Listening on 127.0.0.1")));
+
+    QTcpSocket tracker;
+    tracker.connectToHost(QHostAddress::LocalHost, f.window->rotctldServer()->port());
+    QTRY_COMPARE(tracker.state(), QAbstractSocket::ConnectedState);
+    QCOMPARE(ask(tracker, "P 70 20"), QByteArray("RPRT 0\n"));
+    QVERIFY(f.waitUntilAt(70, 20));
+    // The panel lists the client and its last command.
+    auto *clients = f.find<QTreeWidget>(QStringLiteral("rotctldClients"));
+    QTRY_COMPARE(clients->topLevelItemCount(), 1);
+    QTRY_COMPARE(clients->topLevelItem(0)->text(1), QStringLiteral("P 70 20"));
+
+    // The operator's Stop: remote moves are refused until handed back.
+    QTest::mouseClick(f.find<QPushButton>(QStringLiteral("stopButton")), Qt::LeftButton);
+    QVERIFY(f.window->rotctldServer()->isRemoteHeld());
+    QCOMPARE(ask(tracker, "P 100 30"), QByteArray("RPRT -9\n"));
+    auto *handBack = f.find<QPushButton>(QStringLiteral("rotctldHandBack"));
+    QVERIFY(handBack->isEnabled());
+    QTest::mouseClick(handBack, Qt::LeftButton);
+    QVERIFY(!f.window->rotctldServer()->isRemoteHeld());
+    QCOMPARE(ask(tracker, "P 100 30"), QByteArray("RPRT 0\n"));
+    QVERIFY(f.waitUntilAt(100, 30));
+}
+
+void TrackersTest::badAddressKeepsTheServerOff()
+{
+    WindowFixture f;
+    QVERIFY(!f.window->rotctldPanel()->startListening(QStringLiteral("not-an-address"), 4533));
+    QVERIFY(!f.window->rotctldServer()->isListening());
+    QVERIFY(!f.find<QCheckBox>(QStringLiteral("rotctldEnabled"))->isChecked());
+    QVERIFY(f.find<QLabel>(QStringLiteral("rotctldState"))->text().contains(QStringLiteral("not an address")));
+}
+
+void TrackersTest::wizardOpensFromTheMenu()
+{
+    WindowFixture f;
+    QVERIFY(f.connectAndWait());
+    auto *action = f.find<QAction>(QStringLiteral("actionSetupWizard"));
+    QVERIFY(action);
+    action->trigger();
+    auto *wizard = f.find<slew::ui::SetupWizard>(QStringLiteral("setupWizard"));
+    QVERIFY(wizard);
+    QTRY_VERIFY(wizard->isVisible());
+    QCOMPARE(wizard->session(), &f.session);
+    wizard->reject(); // cancelling stops the rotator and closes
+    QTRY_VERIFY(!f.find<slew::ui::SetupWizard>(QStringLiteral("setupWizard")));
+}
+
+QTEST_MAIN(TrackersTest)
+#include "tst_trackers.moc"
