@@ -4,6 +4,9 @@
 #include "mainwindow.h"
 #include "operatortheme.h"
 #include "slew_headless.h"
+#include "slew_tune.h"
+#include "rotctldpanel.h"
+#include "transport/hostport.h"
 #include "windowsnapshot.h"
 
 #include "connectionbar.h"
@@ -25,6 +28,7 @@ struct Arguments {
     std::optional<std::pair<double, double>> gotoAzEl;
     QString screenshot;
     int settleMs = 3000;
+    std::optional<std::pair<QHostAddress, quint16>> rotctldListen;
 };
 
 // Returns an error message, or empty when the arguments are usable.
@@ -46,10 +50,17 @@ QString parse(QCommandLineParser &parser, const QStringList &argv, Arguments &ou
     const QCommandLineOption settle(QStringLiteral("settle-ms"),
                                     QStringLiteral("How long to run before the screenshot (default 3000)."),
                                     QStringLiteral("ms"));
-    parser.setApplicationDescription(QStringLiteral("Slew: controller for Easycomm az/el antenna rotators."));
+    const QCommandLineOption rotctld(QStringLiteral("rotctld-listen"),
+                                     QStringLiteral("Let trackers steer through Slew: serve the rotctld protocol on "
+                                                    "ADDRESS:PORT (127.0.0.1 unless named)."),
+                                     QStringLiteral("address:port"));
+    parser.setApplicationDescription(QStringLiteral(
+        "Slew: controller for Easycomm and GS-232 az/el antenna rotators.\n"
+        "Also: slew --headless --connect URI --rotctld-listen ADDR:PORT (a station service), "
+        "slew --tune URI --axis az|el|both [--apply] (tuning without a window)."));
     parser.addHelpOption();
     parser.addVersionOption();
-    parser.addOptions({connect, dialect, gotoOption, screenshot, settle});
+    parser.addOptions({connect, dialect, gotoOption, screenshot, settle, rotctld});
     parser.process(argv);
 
     out.connectUri = parser.value(connect);
@@ -65,6 +76,13 @@ QString parse(QCommandLineParser &parser, const QStringList &argv, Arguments &ou
             out.gotoAzEl = std::pair{parts[0].toDouble(&okAz), parts[1].toDouble(&okEl)};
         if (!okAz || !okEl)
             return QStringLiteral("--goto wants az,el (e.g. 210,35)");
+    }
+    if (parser.isSet(rotctld)) {
+        QHostAddress address;
+        quint16 port = 0;
+        if (!slew::transport::parseHostPort(parser.value(rotctld), &address, &port))
+            return QStringLiteral("--rotctld-listen %1: expected ADDRESS:PORT").arg(parser.value(rotctld));
+        out.rotctldListen = std::pair{address, port};
     }
     out.screenshot = parser.value(screenshot);
     if (parser.isSet(settle)) {
@@ -84,6 +102,9 @@ int main(int argc, char *argv[])
     // GUI object exists.
     if (wantsHeadless(argc, argv))
         return runHeadless(argc, argv);
+    // So does tuning from the command line.
+    if (wantsTune(argc, argv))
+        return runTune(argc, argv);
     // A screenshot needs no display: choose the offscreen platform before
     // the application object picks one.
     for (int i = 1; i < argc; ++i) {
@@ -127,6 +148,10 @@ int main(int argc, char *argv[])
                          });
     }
     window.connectTo(uri, dialect);
+    if (args.rotctldListen
+        && !window.rotctldPanel()->startListening(args.rotctldListen->first.toString(), args.rotctldListen->second)) {
+        std::fprintf(stderr, "slew: the rotctld server could not start; see the Trackers tab\n");
+    }
     if (!args.screenshot.isEmpty())
         slew::ui::scheduleWindowSnapshot(&window, args.screenshot, args.settleMs);
     return app.exec();
