@@ -74,7 +74,7 @@ int runTune(int argc, char **argv)
     parser.process(app);
 
     const QString uri = parser.value(tune).trimmed();
-    if (uri.isEmpty())
+    if (uri.isEmpty() || uri.startsWith(QLatin1String("--")))
         return fail(QStringLiteral("--tune needs the rotator's URI, e.g. --tune serial:/dev/ttyUSB0?baud=19200"));
     QList<Axis> axes;
     const QString which = parser.value(axis).toLower();

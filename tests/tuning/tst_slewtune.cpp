@@ -56,7 +56,7 @@ private slots:
         m_bin = qEnvironmentVariable("SLEW_BIN");
         QProcess probe;
         QSignalSpy done(&probe, &QProcess::finished);
-        probe.start(m_bin, {QStringLiteral("--tune"), QStringLiteral("--help")});
+        probe.start(m_bin, {QStringLiteral("--tune"), QStringLiteral("sim:"), QStringLiteral("--help")});
         QVERIFY(done.wait(15000));
         QVERIFY(QString::fromLocal8Bit(probe.readAllStandardOutput()).contains(QStringLiteral("propose PID gains")));
         QVERIFY(!m_bin.isEmpty());

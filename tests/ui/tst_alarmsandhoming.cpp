@@ -7,6 +7,8 @@
 #include "connectionbar.h"
 #include "parkhomepanel.h"
 #include "polarplotwidget.h"
+#include "sim/simulator.h"
+#include "sim/simulatorscheme.h"
 
 #include <QLabel>
 #include <QProgressBar>
@@ -25,6 +27,28 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(f.window->alarmBanner()->text().contains(QStringLiteral("Link lost")), 10000);
         QVERIFY(f.window->alarmBanner()->isSevere());
         QCOMPARE(f.find<QLabel>(QStringLiteral("connectionState"))->text(), QStringLiteral("lost"));
+    }
+
+    void aSilentControllerMakesThePositionStale()
+    {
+        WindowFixture f;
+        QVERIFY(f.connectAndWait());
+        QVERIFY(f.session.gotoPosition(20, 10));
+        QVERIFY(f.waitUntilAt(20, 10));
+        QTRY_VERIFY_WITH_TIMEOUT(f.window->alarmBanner()->isHidden(), 5000);
+        // The link stays up but every answer is lost, as with a dead controller
+        // behind a live serial adapter.
+        slew::sim::Simulator *simulator = slew::sim::simulatorBehind(f.session.link());
+        QVERIFY(simulator);
+        slew::sim::LinkFaults faults;
+        faults.dropRate = 1.0;
+        simulator->setLinkFaults(faults);
+        QTRY_VERIFY_WITH_TIMEOUT(f.window->alarmBanner()->text().contains(QStringLiteral("stale")), 10000);
+        QVERIFY(f.window->alarmBanner()->isSevere());
+        QVERIFY(f.session.positionStale());
+        // Answers come back: the alarm clears.
+        simulator->setLinkFaults({});
+        QTRY_VERIFY_WITH_TIMEOUT(!f.window->alarmBanner()->text().contains(QStringLiteral("stale")), 10000);
     }
 
     void anOperatorDisconnectIsNotAnAlarm()
