@@ -163,15 +163,10 @@ private slots:
 
         SimClient monitor;
         QVERIFY(monitor.connectTo(sim.port()));
-        QElapsedTimer timer;
-        timer.start();
         QByteArray position;
-        while (position != "AZ12.50 EL8.00\n" && timer.elapsed() < 20000) {
-            position = monitor.ask("AZ EL\n");
-            QSignalSpy pause(&monitor.socket(), &QTcpSocket::disconnected);
-            pause.wait(100);
-        }
-        QCOMPARE(position, QByteArray("AZ12.50 EL8.00\n"));
+        const bool arrived =
+            QTest::qWaitFor([&] { return (position = monitor.ask("AZ EL\n")) == "AZ12.50 EL8.00\n"; }, 20000);
+        QVERIFY2(arrived, position.constData());
 
         QCOMPARE(sim.stop(), 0);
         QVERIFY2(readAll(logPath(201)).contains("AZ12.5 EL8.0 UP000 XXX DN000 XXX\n"), readAll(logPath(201)).constData());

@@ -39,15 +39,8 @@ class TestSlewSimTcp : public QObject {
     template <typename Check>
     bool eventually(const QByteArray &query, Check check, int lines = 1)
     {
-        QElapsedTimer timer;
-        timer.start();
-        while (timer.elapsed() < 10000) {
-            if (check(m_client.ask(query, lines)))
-                return true;
-            QSignalSpy never(&m_client.socket(), &QTcpSocket::disconnected);
-            never.wait(50); // poll at ~20 Hz like a client would
-        }
-        return false;
+        // Each ask waits for its answer; between asks the event loop runs.
+        return QTest::qWaitFor([&] { return check(m_client.ask(query, lines)); }, 10000);
     }
 
 private slots:
