@@ -1,11 +1,11 @@
 // `slew --headless --connect URI --rotctld-listen ADDR:PORT`: argument parsing
 // and wiring for the station service; the work is in core/bridge.
 
+#include "slew_identity.h"
 #include "transport/hostport.h"
 #include "slew_headless.h"
 
 #include "bridge/headlessstation.h"
-#include "linkschemes.h"
 #include "protocol/dialect.h"
 #include "sim/terminationsignalwatcher.h"
 
@@ -37,10 +37,7 @@ bool wantsHeadless(int argc, char *argv[])
 int runHeadless(int argc, char *argv[])
 {
     QCoreApplication app(argc, argv);
-    QCoreApplication::setOrganizationName(QStringLiteral("Slew"));
-    QCoreApplication::setApplicationName(QStringLiteral("slew"));
-    QCoreApplication::setApplicationVersion(QStringLiteral("0.1.0"));
-    slew::registerLinkSchemes();
+    setUpSlewApplication();
 
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral("Slew as a station service: no window, log on stdout."));
@@ -49,8 +46,11 @@ int runHeadless(int argc, char *argv[])
     const QCommandLineOption headless(QStringLiteral("headless"), QStringLiteral("Run without a window."));
     const QCommandLineOption connect(QStringLiteral("connect"), QStringLiteral("The rotator's link URI (default sim:)."),
                                      QStringLiteral("URI"));
-    const QCommandLineOption dialect(QStringLiteral("dialect"),
-                                     QStringLiteral("easycomm1, easycomm2, easycomm3 or satnogs."), QStringLiteral("name"));
+    QStringList dialectNames;
+    for (slew::protocol::Dialect d : slew::protocol::allDialects())
+        dialectNames << slew::protocol::dialectName(d);
+    const QCommandLineOption dialect(QStringLiteral("dialect"), QStringLiteral("One of: %1.").arg(dialectNames.join(u", ")),
+                                     QStringLiteral("name"));
     const QCommandLineOption profile(QStringLiteral("profile"), QStringLiteral("A rotator profile (JSON) to load."),
                                      QStringLiteral("file"));
     const QCommandLineOption listen(QStringLiteral("rotctld-listen"),

@@ -1,6 +1,7 @@
 // slew: the operator window. Argument parsing and wiring only; everything
 // else lives in slewui and slewcore.
 
+#include "slew_identity.h"
 #include "mainwindow.h"
 #include "operatortheme.h"
 #include "slew_headless.h"
@@ -12,7 +13,6 @@
 #include "connectionbar.h"
 #include "protocol/dialect.h"
 #include "session/rotatorsession.h"
-#include "linkschemes.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -38,8 +38,11 @@ QString parse(QCommandLineParser &parser, const QStringList &argv, Arguments &ou
                                      QStringLiteral("Connect to URI at start (serial:/dev/ttyUSB0?baud=19200, "
                                                     "tcp://host:port, sim:?az_max=450)."),
                                      QStringLiteral("URI"));
+    QStringList dialectNames;
+    for (slew::protocol::Dialect d : slew::protocol::allDialects())
+        dialectNames << slew::protocol::dialectName(d);
     const QCommandLineOption dialect(QStringLiteral("dialect"),
-                                     QStringLiteral("Dialect: easycomm1, easycomm2, easycomm3, satnogs."),
+                                     QStringLiteral("Dialect: %1.").arg(dialectNames.join(u", ")),
                                      QStringLiteral("name"));
     const QCommandLineOption gotoOption(QStringLiteral("goto"),
                                         QStringLiteral("Once connected, move to this position."),
@@ -105,18 +108,18 @@ int main(int argc, char *argv[])
     // So does tuning from the command line.
     if (wantsTune(argc, argv))
         return runTune(argc, argv);
-    // A screenshot needs no display: choose the offscreen platform before
-    // the application object picks one.
+    // A screenshot, --help and --version need no display: choose the
+    // offscreen platform before the application object picks one.
     for (int i = 1; i < argc; ++i) {
-        if (std::strncmp(argv[i], "--screenshot", 12) == 0 && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        const bool noDisplay = std::strncmp(argv[i], "--screenshot", 12) == 0 || std::strcmp(argv[i], "--help") == 0
+                               || std::strcmp(argv[i], "-h") == 0 || std::strcmp(argv[i], "--version") == 0
+                               || std::strcmp(argv[i], "-v") == 0;
+        if (noDisplay && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
             qputenv("QT_QPA_PLATFORM", "offscreen");
     }
     QApplication app(argc, argv);
-    QApplication::setOrganizationName(QStringLiteral("Slew"));
-    QApplication::setApplicationName(QStringLiteral("slew"));
-    QApplication::setApplicationVersion(QStringLiteral("0.1.0"));
+    setUpSlewApplication();
     slew::ui::applyOperatorTheme(app);
-    slew::registerLinkSchemes();
 
     QCommandLineParser parser;
     Arguments args;

@@ -1,8 +1,8 @@
 // `slew --tune URI`: argument parsing and wiring; the work is in core/tuning.
 
+#include "slew_identity.h"
 #include "slew_tune.h"
 
-#include "linkschemes.h"
 #include "model/rotatorprofile.h"
 #include "protocol/dialect.h"
 #include "session/rotatorsession.h"
@@ -47,10 +47,7 @@ int runTune(int argc, char **argv)
     using slew::session::RotatorSession;
 
     QCoreApplication app(argc, argv);
-    QCoreApplication::setOrganizationName(QStringLiteral("Slew"));
-    QCoreApplication::setApplicationName(QStringLiteral("slew"));
-    QCoreApplication::setApplicationVersion(QStringLiteral("0.1.0"));
-    slew::registerLinkSchemes();
+    setUpSlewApplication();
 
     QCommandLineParser parser;
     parser.setApplicationDescription(

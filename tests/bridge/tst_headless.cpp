@@ -3,7 +3,7 @@
 // rotator goes away, and stops the rotator when told to quit (SIGTERM).
 
 #include "../sim/slewsimprocess.h"
-#include "hamlibprocess.h"
+#include "../common/hamlibprocess.h"
 
 #include <QFile>
 #include <QTcpSocket>

@@ -5,7 +5,7 @@
 
 #include "../sim/slewsimprocess.h"
 #include "bridge/rotctldserver.h"
-#include "hamlibprocess.h"
+#include "../common/hamlibprocess.h"
 #include "linkschemes.h"
 #include "session/rotatorsession.h"
 

@@ -4,7 +4,7 @@
 // answers; several clients; bad clients; deadband; overlap; operator hold.
 
 #include "bridge/rotctldserver.h"
-#include "hamlibprocess.h"
+#include "../common/hamlibprocess.h"
 #include "linkschemes.h"
 #include "session/rotatorsession.h"
 

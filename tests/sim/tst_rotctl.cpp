@@ -3,6 +3,7 @@
 // (Easycomm II) and 204 (Easycomm III / SatNOGS), and the two Yaesu GS-232
 // models 601 (GS-232A) and 603 (GS-232B). Both what rotctl reads back and
 // what the simulator received are checked.
+#include "../common/hamlibprocess.h"
 #include "slewsimprocess.h"
 
 #include <QElapsedTimer>
@@ -13,31 +14,10 @@
 
 namespace {
 
-struct RotctlResult {
-    bool finished = false;
-    int exitCode = -1;
-    QByteArray out;
-    QByteArray err;
-};
-
 // Runs rotctl to completion, asynchronously, waiting on its finished signal.
 RotctlResult rotctl(int model, const QString &port, const QStringList &commands)
 {
-    QProcess p;
-    p.setProgram(QStandardPaths::findExecutable("rotctl"));
-    p.setArguments(QStringList{"-m", QString::number(model), "-r", port, "-s", "19200"} + commands);
-    QSignalSpy finished(&p, &QProcess::finished);
-    p.start();
-    RotctlResult r;
-    r.finished = finished.wait(15000);
-    if (!r.finished) {
-        p.kill();
-        finished.wait(5000);
-    }
-    r.exitCode = p.exitCode();
-    r.out = p.readAllStandardOutput();
-    r.err = p.readAllStandardError();
-    return r;
+    return runRotctl(QStringList{"-m", QString::number(model), "-r", port, "-s", "19200"} + commands, 15000);
 }
 
 QByteArray readAll(const QString &path)

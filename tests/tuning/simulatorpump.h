@@ -5,11 +5,16 @@
 // real line. Samples are stamped with the simulator's clock (SampleClock),
 // so the figures are the same however fast the machine is.
 
+#include "session/rotatorsession.h"
 #include "sim/simulator.h"
+#include "sim/simulatorscheme.h"
 
 #include <QObject>
 #include <QPointer>
+#include <QTest>
 #include <QTimer>
+
+#include <memory>
 
 class SimulatorPump : public QObject {
 public:
@@ -35,3 +40,17 @@ private:
     double m_slice;
     QTimer m_timer;
 };
+
+// Makes a session on a manual-clock sim: URI, waits for the probe and a
+// position, then lets the pump run the simulator's clock.
+inline bool connectPumped(const QString &uri, std::unique_ptr<slew::session::RotatorSession> &session,
+                          std::unique_ptr<SimulatorPump> &pump)
+{
+    session = std::make_unique<slew::session::RotatorSession>();
+    pump = std::make_unique<SimulatorPump>();
+    session->connectTo(uri);
+    if (!QTest::qWaitFor([&] { return session->capabilities().probed && session->hasPosition(); }, 5000))
+        return false;
+    pump->drive(slew::sim::simulatorBehind(session->link()));
+    return true;
+}

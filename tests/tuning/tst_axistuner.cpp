@@ -38,14 +38,7 @@ class TestAxisTuner : public QObject {
     std::unique_ptr<RotatorSession> m_session;
     std::unique_ptr<SimulatorPump> m_pump;
 
-    void connectTo(const QString &uri)
-    {
-        m_session = std::make_unique<RotatorSession>();
-        m_pump = std::make_unique<SimulatorPump>();
-        m_session->connectTo(uri);
-        QTRY_VERIFY_WITH_TIMEOUT(m_session->capabilities().probed && m_session->hasPosition(), 5000);
-        m_pump->drive(sim::simulatorBehind(m_session->link()));
-    }
+    void connectTo(const QString &uri) { QVERIFY(connectPumped(uri, m_session, m_pump)); }
 
 private slots:
     void initTestCase() { registerLinkSchemes(); }
