@@ -4,6 +4,7 @@
 #   packaging/dev.sh run [slew arguments]   install what is missing, build, start Slew
 #   packaging/dev.sh test                   install what is missing, build, run every test
 #   packaging/dev.sh bench                  build and run the benchmarks (tests/bench)
+#   packaging/dev.sh package                build a Debian package (build/slew_*.deb)
 #
 # Works on a fresh Debian 12: missing packages (packaging/debian-packages.txt)
 # are installed with apt-get, through sudo when not root.
@@ -62,8 +63,13 @@ bench)
     done
     [ $found -eq 1 ] || { echo "no benchmarks built"; exit 1; }
     ;;
+package)
+    install_missing
+    configure_and_build
+    (cd "$build" && cpack -G DEB)
+    ;;
 *)
-    echo "usage: $0 run [slew arguments] | test [ctest arguments] | bench" >&2
+    echo "usage: $0 run [slew arguments] | test [ctest arguments] | bench | package" >&2
     exit 2
     ;;
 esac
