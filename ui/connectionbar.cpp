@@ -1,5 +1,6 @@
 #include "connectionbar.h"
 
+#include "sim/simulatorscheme.h"
 #include "transport/serialports.h"
 
 #include <QComboBox>
@@ -214,6 +215,11 @@ void ConnectionBar::connectToRotator()
     model::RotatorProfile profile = m_session->profile();
     profile.uri = target;
     profile.dialect = dialect();
+    if (target.startsWith(QLatin1String("sim:"))) {
+        // The simulator's URI says what rotator it is; the window follows it.
+        profile = sim::profileForSimulator(profile, target);
+        setDialect(profile.dialect);
+    }
     m_session->setProfile(profile);
     m_operatorDisconnected = false;
     m_everConnected = false;

@@ -7,23 +7,56 @@
 
 #include <QUrlQuery>
 
+#include <optional>
+
 namespace slew::sim {
+
+namespace {
+
+// The options a sim: URI sets; an error names the URI and the item.
+std::optional<SimulatorOptions> optionsOf(const QUrl &url, const QString &uri, QString *error)
+{
+    SimulatorOptions options;
+    const QUrlQuery query(url);
+    for (const auto &[name, value] : query.queryItems(QUrl::FullyDecoded)) {
+        if (const QString e = applySimulatorOption(options, name, value); !e.isEmpty()) {
+            *error = QStringLiteral("%1: %2").arg(uri, e);
+            return std::nullopt;
+        }
+    }
+    return options;
+}
+
+} // namespace
 
 void registerSimulatorScheme()
 {
     transport::registerLinkScheme(QStringLiteral("sim"), [](const QUrl &url, const QString &uri) {
         transport::LinkResult result;
-        SimulatorOptions options;
-        const QUrlQuery query(url);
-        for (const auto &[name, value] : query.queryItems(QUrl::FullyDecoded)) {
-            if (const QString error = applySimulatorOption(options, name, value); !error.isEmpty()) {
-                result.error = QStringLiteral("%1: %2").arg(uri, error);
-                return result;
-            }
-        }
-        result.link = std::make_unique<SimulatorLink>(uri, options);
+        if (const auto options = optionsOf(url, uri, &result.error))
+            result.link = std::make_unique<SimulatorLink>(uri, *options);
         return result;
     });
+}
+
+model::RotatorProfile profileForSimulator(model::RotatorProfile profile, const QString &uri)
+{
+    const QUrl url(uri.trimmed());
+    if (url.scheme().toLower() != QLatin1String("sim"))
+        return profile;
+    QString error;
+    const auto options = optionsOf(url, uri, &error);
+    if (!options)
+        return profile; // connecting will report the bad item
+    const RotatorConfig &r = options->rotator;
+    profile.limits.azMin = r.azimuth.minDegrees;
+    profile.limits.azMax = r.azimuth.maxDegrees;
+    profile.limits.elMin = r.elevation.minDegrees;
+    profile.limits.elMax = r.elevation.maxDegrees;
+    profile.parkAz = r.parkAzimuth;
+    profile.parkEl = r.parkElevation;
+    profile.dialect = options->dialect;
+    return profile;
 }
 
 Simulator *simulatorBehind(transport::Link *link)

@@ -6,6 +6,10 @@
 // Every query item is a simulator option (simulatoroptions.h); a bad one
 // makes createLink() fail with a message naming the URI and the item.
 
+#include "model/rotatorprofile.h"
+
+#include <QString>
+
 namespace slew::transport {
 class Link;
 }
@@ -19,5 +23,10 @@ void registerSimulatorScheme();
 // The simulator behind a link made from a `sim:` URI, for tests that step
 // its clock, read its counters or switch faults; null for any other link.
 Simulator *simulatorBehind(transport::Link *link);
+
+// The profile with what a sim: URI says about the simulated rotator (its
+// travel, park position and dialect), so a window connected to
+// `sim:?az_max=450` shows a 450° rotator. Other URIs leave it unchanged.
+model::RotatorProfile profileForSimulator(model::RotatorProfile profile, const QString &uri);
 
 } // namespace slew::sim

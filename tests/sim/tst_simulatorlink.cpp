@@ -69,6 +69,23 @@ private slots:
         QCOMPARE(ask(link.get(), "CR 7\n"), QByteArray("7,90.00\n"));
     }
 
+    void aProfileFollowsTheSimulatorUri()
+    {
+        slew::model::RotatorProfile mine;
+        mine.name = QStringLiteral("mine");
+        const auto p = profileForSimulator(mine, QStringLiteral("sim:?az_max=450&el_max=180&park_az=90&park_el=10&dialect=satnogs"));
+        QCOMPARE(p.name, QStringLiteral("mine"));
+        QCOMPARE(p.limits.azMax, 450.0);
+        QCOMPARE(p.limits.elMax, 180.0);
+        QCOMPARE(p.parkAz, 90.0);
+        QCOMPARE(p.parkEl, 10.0);
+        QCOMPARE(p.dialect, slew::protocol::Dialect::SatNogs);
+        QVERIFY(p.validate().isEmpty());
+        // Other links, and a sim: URI with a bad item, leave the profile alone.
+        QCOMPARE(profileForSimulator(mine, QStringLiteral("tcp://h:1")).limits.azMax, 360.0);
+        QCOMPARE(profileForSimulator(mine, QStringLiteral("sim:?az_max=999")).limits.azMax, 360.0);
+    }
+
     void badQueryItemsNameTheUri_data()
     {
         QTest::addColumn<QString>("uri");
