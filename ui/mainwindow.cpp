@@ -128,6 +128,7 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
                                                                 : tr("Slew — %1").arg(m_session->uri()));
     });
     connect(m_config, &ConfigEditor::profileChanged, this, &MainWindow::showProfile);
+    connect(session, &RotatorSession::profileChanged, this, &MainWindow::showProfile);
     wirePlot();
     showProfile();
     m_keys = new KeyboardControl(this, m_stop, m_jog, m_presets, this);
