@@ -48,14 +48,19 @@ model::RotatorProfile profileForSimulator(model::RotatorProfile profile, const Q
     const auto options = optionsOf(url, uri, &error);
     if (!options)
         return profile; // connecting will report the bad item
+    // Only what the URI names: the simulator's defaults (elevation to 180)
+    // are wider than a usual profile, and a tighter profile is the safe side.
+    const QUrlQuery query(url);
     const RotatorConfig &r = options->rotator;
-    profile.limits.azMin = r.azimuth.minDegrees;
-    profile.limits.azMax = r.azimuth.maxDegrees;
-    profile.limits.elMin = r.elevation.minDegrees;
-    profile.limits.elMax = r.elevation.maxDegrees;
-    profile.parkAz = r.parkAzimuth;
-    profile.parkEl = r.parkElevation;
-    profile.dialect = options->dialect;
+    if (query.hasQueryItem(QStringLiteral("az_max")))
+        profile.limits.azMax = r.azimuth.maxDegrees;
+    if (query.hasQueryItem(QStringLiteral("el_max")))
+        profile.limits.elMax = r.elevation.maxDegrees;
+    if (query.hasQueryItem(QStringLiteral("park_az")))
+        profile.parkAz = r.parkAzimuth;
+    if (query.hasQueryItem(QStringLiteral("park_el")))
+        profile.parkEl = r.parkElevation;
+    profile.dialect = options->dialect; // what the simulator speaks, named or not
     return profile;
 }
 

@@ -24,9 +24,10 @@ void registerSimulatorScheme();
 // its clock, read its counters or switch faults; null for any other link.
 Simulator *simulatorBehind(transport::Link *link);
 
-// The profile with what a sim: URI says about the simulated rotator (its
-// travel, park position and dialect), so a window connected to
-// `sim:?az_max=450` shows a 450° rotator. Other URIs leave it unchanged.
+// The profile with what a sim: URI names about the simulated rotator
+// (az_max, el_max, park_az, park_el) and the dialect it speaks, so a window
+// connected to `sim:?az_max=450` shows a 450° rotator. Other URIs leave the
+// profile unchanged.
 model::RotatorProfile profileForSimulator(model::RotatorProfile profile, const QString &uri);
 
 } // namespace slew::sim

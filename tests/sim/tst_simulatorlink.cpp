@@ -84,6 +84,9 @@ private slots:
         // Other links, and a sim: URI with a bad item, leave the profile alone.
         QCOMPARE(profileForSimulator(mine, QStringLiteral("tcp://h:1")).limits.azMax, 360.0);
         QCOMPARE(profileForSimulator(mine, QStringLiteral("sim:?az_max=999")).limits.azMax, 360.0);
+        // What the URI does not name keeps the profile's (tighter) value.
+        QCOMPARE(profileForSimulator(mine, QStringLiteral("sim:")).limits.elMax, 90.0);
+        QCOMPARE(profileForSimulator(mine, QStringLiteral("sim:")).dialect, slew::protocol::Dialect::Easycomm3);
     }
 
     void badQueryItemsNameTheUri_data()
