@@ -79,7 +79,7 @@ TelemetryCharts::TelemetryCharts(const model::TelemetryHistory *history, QWidget
     layout->addLayout(controls);
 
     const QColor az(0x4c, 0xd9, 0x64), el(0x3c, 0xb4, 0xf2), azCmd(0xf2, 0xc0, 0x3c), elCmd(0xc0, 0x7c, 0xf2);
-    addPanel(tr("Position"), QStringLiteral("°"),
+    addPanel(tr("Az/El"), QStringLiteral("°"),
              {{Series::AzActual, az}, {Series::ElActual, el}, {Series::AzCommanded, azCmd}, {Series::ElCommanded, elCmd}});
     addPanel(tr("Speed"), QStringLiteral("°/s"), {{Series::AzVelocity, az}, {Series::ElVelocity, el}});
     addPanel(tr("Load"), QString(), {{Series::AzLoad, az}, {Series::ElLoad, el}});
@@ -115,7 +115,10 @@ void TelemetryCharts::addPanel(const QString &title, const QString &unit,
     p.time->setTickCount(6);
     p.value = new QValueAxis;
     p.value->setLabelsFont(small);
-    p.value->setTitleText(unit.isEmpty() ? title : QStringLiteral("%1 (%2)").arg(title, unit));
+    // Whole-number labels and a title without brackets: both have to fit a
+    // chart only a hundred pixels high.
+    p.value->setLabelFormat(QStringLiteral("%.0f"));
+    p.value->setTitleText(unit.isEmpty() ? title : QStringLiteral("%1 %2").arg(title, unit));
     QFont titleFont = small;
     titleFont.setBold(true);
     p.value->setTitleFont(titleFont);
@@ -136,7 +139,7 @@ void TelemetryCharts::addPanel(const QString &title, const QString &unit,
         p.plotted.push_back({id, line, step});
     }
     p.view = new QChartView(p.chart);
-    p.view->setObjectName(QStringLiteral("chart%1").arg(title));
+    p.view->setObjectName(QStringLiteral("chart%1").arg(QString(title).remove(QLatin1Char('/'))));
     p.view->setRenderHint(QPainter::Antialiasing);
     p.view->setMinimumHeight(110);
     m_panels.push_back(p);
