@@ -4,6 +4,7 @@
 
 #include <QCoreApplication>
 #include <QSettings>
+#include <QTemporaryDir>
 #include <QStandardPaths>
 #include <QTest>
 
@@ -12,6 +13,11 @@
 void WindowFixture::prepareApplication()
 {
     QStandardPaths::setTestModeEnabled(true);
+    // Settings of this process only: two test runs at once (a developer's and
+    // CI's) must not see each other's remembered connection or preferences.
+    static QTemporaryDir settingsDir;
+    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, settingsDir.path());
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, settingsDir.path());
     QCoreApplication::setOrganizationName(QStringLiteral("SlewTests"));
     QCoreApplication::setApplicationName(QStringLiteral("slew-ui-tests"));
     QSettings().clear();
