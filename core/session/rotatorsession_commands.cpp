@@ -1,0 +1,269 @@
+// RotatorSession, part three: what the operator (or a tracker) asks of the
+// rotator. Every move is checked against the limits before a byte is sent.
+
+#include "rotatorsession.h"
+
+#include "protocol/encoder.h"
+#include "transport/link.h"
+
+#include <cmath>
+
+namespace slew::session {
+
+using protocol::Dialect;
+using protocol::Message;
+using protocol::Op;
+
+namespace {
+
+constexpr int kMaxRawLine = 200;
+
+QString printable(const QByteArray &line)
+{
+    return QString::fromLatin1(line).trimmed();
+}
+
+} // namespace
+
+// --- Commands ---------------------------------------------------------------
+
+bool RotatorSession::gotoPosition(double az, double el)
+{
+    if (!requireLink())
+        return false;
+    if (QString e = model::checkElevation(m_profile.limits, el); !e.isEmpty())
+        return refuse(e);
+    const auto choice =
+        model::chooseAzimuth(m_profile.limits, az, hasPosition() ? std::optional<double>(m_az) : std::nullopt);
+    if (!choice.azimuth)
+        return refuse(choice.error);
+    const double targetAz = *choice.azimuth;
+    if (m_reportedLimits) {
+        const QString outside = tr("%1 (the limits the link reports)");
+        if (QString e = model::checkElevation(*m_reportedLimits, el); !e.isEmpty())
+            return refuse(outside.arg(e));
+        if (targetAz < m_reportedLimits->azMin - 1e-6 || targetAz > m_reportedLimits->azMax + 1e-6)
+            return refuse(outside.arg(tr("azimuth %1° is outside %2°..%3°")
+                                          .arg(targetAz, 0, 'f', 1)
+                                          .arg(m_reportedLimits->azMin, 0, 'f', 0)
+                                          .arg(m_reportedLimits->azMax, 0, 'f', 0)));
+    }
+    const QByteArray line = protocol::encodeSetPosition(targetAz, el, m_profile.dialect);
+    rememberSent(Message::number(Op::Azimuth, std::round(targetAz * 100) / 100));
+    rememberSent(Message::number(Op::Elevation, std::round(el * 100) / 100));
+    m_jogSpeed = {0.0, 0.0};
+    write(line);
+    m_targetAz = targetAz;
+    m_targetEl = el;
+    emit targetChanged(targetAz, el);
+    return true;
+}
+
+bool RotatorSession::gotoAxis(Axis axis, double degrees)
+{
+    if (!requireLink())
+        return false;
+    const bool az = axis == Axis::Azimuth;
+    const Op op = az ? Op::Azimuth : Op::Elevation;
+    const Dialect d = m_profile.dialect;
+    // Easycomm I and GS-232 can only command both axes together.
+    if (d == Dialect::Easycomm1 || protocol::isGs232(d)) {
+        const double other = az ? (hasPosition() ? m_el : m_targetEl) : (hasPosition() ? m_az : m_targetAz);
+        if (std::isnan(other))
+            return refuse(tr("%1 moves both axes at once, and the other axis' position is not known yet")
+                              .arg(protocol::dialectName(d)));
+        return az ? gotoPosition(degrees, other) : gotoPosition(other, degrees);
+    }
+    double target = degrees;
+    if (az) {
+        const auto choice =
+            model::chooseAzimuth(m_profile.limits, degrees, hasPosition() ? std::optional<double>(m_az) : std::nullopt);
+        if (!choice.azimuth)
+            return refuse(choice.error);
+        target = *choice.azimuth;
+    } else if (QString e = model::checkElevation(m_profile.limits, degrees); !e.isEmpty()) {
+        return refuse(e);
+    }
+    if (m_reportedLimits) {
+        const bool outside = az ? (target < m_reportedLimits->azMin - 1e-6 || target > m_reportedLimits->azMax + 1e-6)
+                                : !model::checkElevation(*m_reportedLimits, target).isEmpty();
+        if (outside)
+            return refuse(tr("%1° is outside the limits the link reports").arg(target, 0, 'f', 1));
+    }
+    const Message m = Message::number(op, target);
+    rememberSent(Message::number(op, std::round(target * 100) / 100));
+    m_jogSpeed[az ? 0 : 1] = 0.0;
+    write(protocol::encodeLine({m}, d));
+    (az ? m_targetAz : m_targetEl) = target;
+    emit targetChanged(m_targetAz, m_targetEl);
+    return true;
+}
+
+bool RotatorSession::moveAxis(Axis axis, double degreesPerSecond)
+{
+    if (!requireLink())
+        return false;
+    if (!std::isfinite(degreesPerSecond))
+        return refuse(tr("speed is not a number"));
+    if (degreesPerSecond == 0.0)
+        return stop(axis == Axis::Azimuth ? Axes::Azimuth : Axes::Elevation);
+    const bool az = axis == Axis::Azimuth;
+    const bool positive = degreesPerSecond > 0;
+    const auto &lim = m_profile.limits;
+    if (hasPosition()) {
+        const double at = az ? m_az : m_el;
+        const double limit = positive ? (az ? lim.azMax : lim.elMax) : (az ? lim.azMin : lim.elMin);
+        if (positive ? at >= limit : at <= limit)
+            return refuse(tr("%1 is already at its %2 limit (%3°)")
+                              .arg(az ? tr("azimuth") : tr("elevation"), positive ? tr("upper") : tr("lower"))
+                              .arg(limit, 0, 'f', 1));
+    }
+    const Dialect d = m_profile.dialect;
+    const Op velocityOp = az ? (positive ? Op::VelocityRight : Op::VelocityLeft)
+                             : (positive ? Op::VelocityUp : Op::VelocityDown);
+    const Op moveOp = az ? (positive ? Op::MoveRight : Op::MoveLeft) : (positive ? Op::MoveUp : Op::MoveDown);
+    QByteArray line;
+    if (protocol::dialectSupports(d, velocityOp)) {
+        const Message m = Message::number(velocityOp, std::round(std::abs(degreesPerSecond) * 1000.0));
+        rememberSent(m);
+        line = protocol::encodeLine({m}, d);
+    } else if (protocol::dialectSupports(d, moveOp)) {
+        line = protocol::encodeLine({Message::query(moveOp)}, d);
+    } else {
+        return refuse(tr("%1 has no command to move an axis").arg(protocol::dialectName(d)));
+    }
+    m_jogSpeed[az ? 0 : 1] = degreesPerSecond;
+    write(line);
+    return true;
+}
+
+bool RotatorSession::stop(Axes axes)
+{
+    // Stop goes straight to the wire, ahead of any waiting query, in every
+    // state where there is a link to send it on.
+    if (!m_link || !m_link->isOpen())
+        return refuse(tr("not connected to a rotator: nothing to stop"));
+    const bool az = int(axes) & int(Axes::Azimuth);
+    const bool el = int(axes) & int(Axes::Elevation);
+    if (az)
+        m_jogSpeed[0] = 0.0;
+    if (el)
+        m_jogSpeed[1] = 0.0;
+    const QByteArray line = protocol::encodeStop(az, el, m_profile.dialect);
+    if (line.isEmpty())
+        return refuse(tr("%1 has no stop command").arg(protocol::dialectName(m_profile.dialect)));
+    write(line);
+    return true;
+}
+
+bool RotatorSession::park()
+{
+    if (!requireLink())
+        return false;
+    if (!protocol::dialectSupports(m_profile.dialect, Op::Park))
+        return gotoPosition(m_profile.parkAz, m_profile.parkEl);
+    m_jogSpeed = {0.0, 0.0};
+    write(protocol::encodeLine({Message::query(Op::Park)}, m_profile.dialect));
+    m_targetAz = m_profile.parkAz;
+    m_targetEl = m_profile.parkEl;
+    emit targetChanged(m_targetAz, m_targetEl);
+    return true;
+}
+
+bool RotatorSession::home()
+{
+    if (!requireLink())
+        return false;
+    if (!protocol::dialectSupports(m_profile.dialect, Op::Reset))
+        return refuse(tr("%1 has no RESET (homing) command").arg(protocol::dialectName(m_profile.dialect)));
+    m_jogSpeed = {0.0, 0.0};
+    write(protocol::encodeLine({Message::query(Op::Reset)}, m_profile.dialect));
+    return true;
+}
+
+bool RotatorSession::readConfig(int reg)
+{
+    if (!requireLink())
+        return false;
+    if (!protocol::dialectSupports(m_profile.dialect, Op::ConfigRead))
+        return refuse(tr("%1 has no config registers").arg(protocol::dialectName(m_profile.dialect)));
+    if (reg < 0 || reg > 99999)
+        return refuse(tr("register %1 does not exist").arg(reg));
+    Request r;
+    r.line = protocol::encodeLine({Message::query(Op::ConfigRead, reg)}, m_profile.dialect);
+    r.expects[0] = Expectation{Op::ConfigRead, reg};
+    r.expectCount = 1;
+    r.attemptsLeft = m_options.retries + 1;
+    r.purpose = RequestPurpose::User;
+    r.done = [this, line = printable(r.line)](bool ok, const QString &reason) {
+        if (!ok)
+            emit requestFailed(line, reason);
+    };
+    if (!m_queue.isFull())
+        return enqueue(std::move(r));
+    return refuse(tr("the controller is not keeping up: %1 requests already waiting").arg(m_queue.size()));
+}
+
+bool RotatorSession::writeConfig(int reg, const QString &value)
+{
+    if (!requireLink())
+        return false;
+    if (!protocol::dialectSupports(m_profile.dialect, Op::ConfigWrite))
+        return refuse(tr("%1 has no config registers").arg(protocol::dialectName(m_profile.dialect)));
+    if (reg < 0 || reg > 99999)
+        return refuse(tr("register %1 does not exist").arg(reg));
+    const QByteArray text = value.trimmed().toLatin1();
+    if (text.isEmpty() || text.size() > 28)
+        return refuse(tr("a register value is 1 to 28 characters"));
+    for (char c : text) {
+        if (c <= ' ' || c > '~' || c == ',' || c == ';')
+            return refuse(tr("register value '%1' has a character the protocol cannot carry").arg(value));
+    }
+    if (reg == 7 || reg == 8) {
+        // Park position: a value outside the limits would park into an end stop.
+        bool ok = false;
+        const double angle = value.toDouble(&ok);
+        const QString e = !ok ? tr("park position must be a number")
+                          : reg == 7 ? model::chooseAzimuth(m_profile.limits, angle, std::nullopt).error
+                                     : model::checkElevation(m_profile.limits, angle);
+        if (!e.isEmpty())
+            return refuse(e);
+    }
+    write(protocol::encodeLine({Message::word(Op::ConfigWrite, text, reg)}, m_profile.dialect));
+    return true;
+}
+
+bool RotatorSession::sendRaw(const QString &line)
+{
+    if (!requireLink())
+        return false;
+    const QByteArray bytes = line.trimmed().toLatin1();
+    if (bytes.isEmpty())
+        return refuse(tr("nothing to send"));
+    if (bytes.size() > kMaxRawLine)
+        return refuse(tr("a raw line is at most %1 characters").arg(kMaxRawLine));
+    for (char c : bytes) {
+        if (c < ' ' || c > '~')
+            return refuse(tr("a raw line may hold printable ASCII only"));
+    }
+    // Raw lines pass the same limit checks as every other move.
+    QString error;
+    protocol::Parser check(m_profile.dialect);
+    check.feed(bytes + '\n', [&](const Message &m) {
+        if (!error.isEmpty() || !m.hasValue)
+            return;
+        if (m.op == Op::Azimuth) {
+            const auto choice = model::chooseAzimuth(m_profile.limits, m.value, std::nullopt);
+            if (!choice.azimuth || std::abs(*choice.azimuth - m.value) > 1e-6)
+                error = choice.error.isEmpty() ? tr("azimuth %1° is outside the limits").arg(m.value) : choice.error;
+        } else if (m.op == Op::Elevation) {
+            error = model::checkElevation(m_profile.limits, m.value);
+        }
+    });
+    if (!error.isEmpty())
+        return refuse(error);
+    write(bytes + '\n');
+    return true;
+}
+
+} // namespace slew::session

@@ -1,0 +1,234 @@
+// RotatorSession, part two: the request queue on the wire (one query at a
+// time, timeouts and retries), the capability probe and polling.
+
+#include "rotatorsession.h"
+
+#include "protocol/encoder.h"
+#include "transport/link.h"
+
+#include <QIODevice>
+
+#include <algorithm>
+
+namespace slew::session {
+
+using protocol::Dialect;
+using protocol::Message;
+using protocol::Op;
+
+namespace {
+constexpr int kTelemetryGiveUpAfter = 3; // a query unanswered this often is not polled again
+}
+
+// --- Sending ----------------------------------------------------------------
+
+bool RotatorSession::refuse(const QString &reason)
+{
+    emit commandRefused(reason);
+    return false;
+}
+
+bool RotatorSession::requireLink()
+{
+    if (m_state == State::Connected && m_link && m_link->isOpen())
+        return true;
+    return refuse(tr("not connected to a rotator"));
+}
+
+void RotatorSession::write(const QByteArray &line)
+{
+    if (!m_link || line.isEmpty())
+        return;
+    m_link->device()->write(line);
+    emit bytesSent(line);
+}
+
+void RotatorSession::rememberSent(const Message &m)
+{
+    m_sent[size_t(m_sentNext)] = Sent{m, m_clock.elapsed()};
+    m_sentNext = (m_sentNext + 1) % int(m_sent.size());
+}
+
+bool RotatorSession::enqueue(Request r)
+{
+    if (m_queue.isFull()) {
+        const QString reason = tr("the controller is not keeping up: %1 requests already waiting").arg(m_queue.size());
+        if (r.done)
+            r.done(false, reason);
+        return false;
+    }
+    m_queue.push(std::move(r));
+    sendNext();
+    return true;
+}
+
+void RotatorSession::sendNext()
+{
+    if (m_onWire || !m_link || !m_link->isOpen())
+        return;
+    Request *front = m_queue.front();
+    if (!front)
+        return;
+    front->satisfied = 0;
+    m_onWire = true;
+    write(front->line);
+    m_replyTimer.start(m_options.replyTimeoutMs);
+}
+
+void RotatorSession::onReplyTimeout()
+{
+    Request *front = m_queue.front();
+    if (!front || !m_onWire)
+        return;
+    if (--front->attemptsLeft > 0) {
+        m_onWire = false;
+        sendNext();
+        return;
+    }
+    finishFront(false, tr("no answer within %1 ms").arg(m_options.replyTimeoutMs));
+}
+
+void RotatorSession::finishFront(bool ok, const QString &reason)
+{
+    m_replyTimer.stop();
+    m_onWire = false;
+    if (m_queue.isEmpty())
+        return;
+    Request r = m_queue.takeFront();
+    if (!ok && r.purpose == RequestPurpose::Position)
+        ++m_failedPolls;
+    if (r.done)
+        r.done(ok, reason);
+    sendNext();
+}
+
+// --- Probe and polling ------------------------------------------------------
+
+void RotatorSession::startProbe()
+{
+    const Dialect d = m_profile.dialect;
+    m_caps = Capabilities{};
+    m_caps.velocity = protocol::dialectSupports(d, Op::VelocityLeft);
+    m_caps.moveCommands = protocol::dialectSupports(d, Op::MoveLeft);
+    m_caps.park = protocol::dialectSupports(d, Op::Park);
+    m_caps.reset = protocol::dialectSupports(d, Op::Reset);
+    m_caps.stop = protocol::dialectSupports(d, Op::StopAzimuth);
+    m_telemetryFailures.clear();
+
+    struct Probe {
+        Op op;
+        int index;
+        bool Capabilities::*flag;
+    };
+    const Probe probes[] = {
+        {Op::Azimuth, -1, &Capabilities::positionFeedback}, {Op::Version, -1, &Capabilities::version},
+        {Op::Status, -1, &Capabilities::status},            {Op::ErrorFlags, -1, &Capabilities::errors},
+        {Op::ReadInput, 0, &Capabilities::inputs},          {Op::ConfigRead, 1, &Capabilities::config},
+        {Op::Encoders, -1, &Capabilities::encoders},
+    };
+    m_probesOutstanding = 0;
+    QList<Request> requests;
+    for (const Probe &p : probes) {
+        if (!protocol::dialectSupports(d, p.op))
+            continue;
+        Request r;
+        r.purpose = RequestPurpose::Probe;
+        if (p.op == Op::Azimuth) {
+            r.line = protocol::encodeQueryPosition(d);
+            r.expects = {Expectation{Op::Azimuth, -1}, Expectation{Op::Elevation, -1}};
+            r.expectCount = 2;
+            r.attemptsLeft = m_options.retries + 1;
+        } else {
+            r.line = protocol::encodeLine({Message::query(p.op, p.index)}, d);
+            r.expects[0] = Expectation{p.op, p.index};
+            r.expectCount = 1;
+            r.attemptsLeft = 1; // a controller that lacks a command stays silent
+        }
+        r.done = [this, flag = p.flag](bool ok, const QString &) {
+            m_caps.*flag = ok;
+            if (--m_probesOutstanding == 0) {
+                m_caps.probed = true;
+                emit capabilitiesChanged(m_caps);
+                poll();
+            }
+        };
+        requests.append(std::move(r));
+    }
+    m_probesOutstanding = int(requests.size());
+    if (requests.isEmpty()) {
+        m_caps.probed = true; // Easycomm I: nothing to ask
+        emit capabilitiesChanged(m_caps);
+        return;
+    }
+    for (Request &r : requests)
+        enqueue(std::move(r));
+}
+
+void RotatorSession::poll()
+{
+    if (m_state != State::Connected || !m_link || !m_link->isOpen() || !m_pollingEnabled || !m_caps.probed)
+        return;
+    const Dialect d = m_profile.dialect;
+    if (m_caps.positionFeedback) {
+        const QByteArray line = protocol::encodeQueryPosition(d);
+        if (!m_queue.contains(line)) {
+            Request r;
+            r.line = line;
+            r.expects = {Expectation{Op::Azimuth, -1}, Expectation{Op::Elevation, -1}};
+            r.expectCount = 2;
+            r.attemptsLeft = m_options.retries + 1;
+            r.purpose = RequestPurpose::Position;
+            enqueue(std::move(r));
+        }
+    }
+    if (m_pollCount++ % std::max(1, m_options.telemetryEvery) != 0)
+        return;
+
+    auto ask = [&](Op op, int index) {
+        const QByteArray line = protocol::encodeLine({Message::query(op, index)}, d);
+        if (line.isEmpty() || m_queue.contains(line) || m_telemetryFailures.value(line) >= kTelemetryGiveUpAfter)
+            return;
+        Request r;
+        r.line = line;
+        r.expects[0] = Expectation{op, index};
+        r.expectCount = 1;
+        r.attemptsLeft = 1;
+        r.purpose = RequestPurpose::Telemetry;
+        r.done = [this, line](bool ok, const QString &) {
+            if (ok)
+                m_telemetryFailures.remove(line);
+            else
+                ++m_telemetryFailures[line];
+        };
+        enqueue(std::move(r));
+    };
+    if (m_caps.status)
+        ask(Op::Status, -1);
+    if (m_caps.errors)
+        ask(Op::ErrorFlags, -1);
+    if (m_caps.inputs) {
+        for (int input : {0, 1, 2, 5, 6, 7, 8})
+            ask(Op::ReadInput, input);
+    }
+    if (m_caps.config) {
+        ask(Op::ConfigRead, 10);
+        ask(Op::ConfigRead, 11);
+    }
+}
+
+void RotatorSession::checkSoftLimits()
+{
+    // A velocity move runs until told otherwise; the profile's limits may be
+    // tighter than the controller's own, so stop the axis at them.
+    const auto &lim = m_profile.limits;
+    if ((m_jogSpeed[0] > 0 && m_az >= lim.azMax) || (m_jogSpeed[0] < 0 && m_az <= lim.azMin)) {
+        stop(Axes::Azimuth);
+        emit errorOccurred(tr("azimuth reached the profile limit at %1°; stopped").arg(m_az, 0, 'f', 1));
+    }
+    if ((m_jogSpeed[1] > 0 && m_el >= lim.elMax) || (m_jogSpeed[1] < 0 && m_el <= lim.elMin)) {
+        stop(Axes::Elevation);
+        emit errorOccurred(tr("elevation reached the profile limit at %1°; stopped").arg(m_el, 0, 'f', 1));
+    }
+}
+
+} // namespace slew::session
