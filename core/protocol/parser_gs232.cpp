@@ -1,0 +1,91 @@
+// The GS-232 reader: one token of GS-232A/B (seeds/003, seeds/004) to one
+// or two messages (Parser::classifyGs232): `C2` asks for both axes, `S` stops
+// both, `+0aaa+0eee` reports both.
+
+#include "parser.h"
+
+#include "tokentext.h"
+
+namespace slew::protocol {
+
+using namespace text;
+
+Parser::Classified Parser::classifyGs232(QByteArrayView t) const
+{
+    Classified c;
+    auto one = [&](const Message &m) {
+        c.first = m;
+        c.count = 1;
+        return c;
+    };
+    auto two = [&](const Message &a, const Message &b) {
+        c.first = a;
+        c.second = b;
+        c.count = 2;
+        return c;
+    };
+    // Whole degrees, up to three digits (a decimal is tolerated).
+    auto degrees = [](QByteArrayView s, double *out) {
+        return !s.isEmpty() && s.size() <= 6 && parseDecimal(s, out) && *out >= 0;
+    };
+    double a = 0, b = 0;
+    const char first = upper(t[0]);
+    const QByteArrayView rest = t.sliced(1);
+
+    // Reports: `+0aaa`, `+0aaa+0eee` (GS-232A), `AZ=aaa`, `EL=eee` (GS-232B).
+    if (first == '+') {
+        const qsizetype second = t.indexOf('+', 1);
+        if (second < 0 && degrees(rest, &a))
+            return one(Message::number(Op::Azimuth, a)); // the answer to C (or B: read as azimuth)
+        if (second > 0 && degrees(t.sliced(1, second - 1), &a) && degrees(t.sliced(second + 1), &b))
+            return two(Message::number(Op::Azimuth, a), Message::number(Op::Elevation, b));
+        return one(Message::invalid(t, "malformed GS-232 position report"));
+    }
+    if (t.size() > 3 && (startsWithMnemonic(t, "AZ=") || startsWithMnemonic(t, "EL="))) {
+        if (!degrees(t.sliced(3), &a))
+            return one(Message::invalid(t, "malformed GS-232 position report"));
+        return one(Message::number(first == 'A' ? Op::Azimuth : Op::Elevation, a));
+    }
+    if (t == "?>")
+        return one(Message::invalid(t, "the controller did not understand the command (?>)", Refusal::Unknown));
+    if (t == "C2" || t == "c2")
+        return two(Message::query(Op::Azimuth), Message::query(Op::Elevation));
+    if (t == "?")
+        return one(Message::query(Op::KeepAlive));
+    if (t.size() == 1) {
+        switch (first) {
+        case 'C': return one(Message::query(Op::Azimuth));
+        case 'B': return one(Message::query(Op::Elevation));
+        case 'S': return two(Message::query(Op::StopAzimuth), Message::query(Op::StopElevation));
+        case 'A': return one(Message::query(Op::StopAzimuth));
+        case 'E': return one(Message::query(Op::StopElevation));
+        case 'R': return one(Message::query(Op::MoveRight));
+        case 'L': return one(Message::query(Op::MoveLeft));
+        case 'U': return one(Message::query(Op::MoveUp));
+        case 'D': return one(Message::query(Op::MoveDown));
+        default: break;
+        }
+    }
+    switch (first) {
+    case 'A': // Aaaa (seeds/004's variant): azimuth
+    case 'M': // Maaa: azimuth
+    case 'W': // Waaa eee: the elevation is the next token
+        if (!degrees(rest, &a))
+            return one(Message::invalid(t, "malformed GS-232 angle"));
+        return one(Message::number(Op::Azimuth, a));
+    case 'E': // Eeee (seeds/004's variant): elevation
+        if (!degrees(rest, &a))
+            return one(Message::invalid(t, "malformed GS-232 angle"));
+        return one(Message::number(Op::Elevation, a));
+    case 'X': {
+        if (rest.size() != 1 || rest[0] < '1' || rest[0] > '4')
+            return one(Message::invalid(t, "speed must be X1 to X4"));
+        return one(Message::number(Op::Speed, rest[0] - '0'));
+    }
+    default:
+        break;
+    }
+    return one(Message::invalid(t, "unknown command", Refusal::Unknown));
+}
+
+} // namespace slew::protocol
