@@ -46,10 +46,8 @@ int runHeadless(int argc, char *argv[])
     const QCommandLineOption headless(QStringLiteral("headless"), QStringLiteral("Run without a window."));
     const QCommandLineOption connect(QStringLiteral("connect"), QStringLiteral("The rotator's link URI (default sim:)."),
                                      QStringLiteral("URI"));
-    QStringList dialectNames;
-    for (slew::protocol::Dialect d : slew::protocol::allDialects())
-        dialectNames << slew::protocol::dialectName(d);
-    const QCommandLineOption dialect(QStringLiteral("dialect"), QStringLiteral("One of: %1.").arg(dialectNames.join(u", ")),
+    const QCommandLineOption dialect(QStringLiteral("dialect"),
+                                     QStringLiteral("One of: %1.").arg(slew::protocol::dialectNameList()),
                                      QStringLiteral("name"));
     const QCommandLineOption profile(QStringLiteral("profile"), QStringLiteral("A rotator profile (JSON) to load."),
                                      QStringLiteral("file"));

@@ -38,11 +38,8 @@ QString parse(QCommandLineParser &parser, const QStringList &argv, Arguments &ou
                                      QStringLiteral("Connect to URI at start (serial:/dev/ttyUSB0?baud=19200, "
                                                     "tcp://host:port, sim:?az_max=450)."),
                                      QStringLiteral("URI"));
-    QStringList dialectNames;
-    for (slew::protocol::Dialect d : slew::protocol::allDialects())
-        dialectNames << slew::protocol::dialectName(d);
     const QCommandLineOption dialect(QStringLiteral("dialect"),
-                                     QStringLiteral("Dialect: %1.").arg(dialectNames.join(u", ")),
+                                     QStringLiteral("Dialect: %1.").arg(slew::protocol::dialectNameList()),
                                      QStringLiteral("name"));
     const QCommandLineOption gotoOption(QStringLiteral("goto"),
                                         QStringLiteral("Once connected, move to this position."),

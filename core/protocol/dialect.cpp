@@ -1,5 +1,7 @@
 #include "dialect.h"
 
+#include <QStringList>
+
 namespace slew::protocol {
 
 QString dialectName(Dialect d)
@@ -20,6 +22,14 @@ const QList<Dialect> &allDialects()
     static const QList<Dialect> all{Dialect::Easycomm1, Dialect::Easycomm2, Dialect::Easycomm3,
                                     Dialect::SatNogs,   Dialect::Gs232A,    Dialect::Gs232B};
     return all;
+}
+
+QString dialectNameList()
+{
+    QStringList names;
+    for (Dialect d : allDialects())
+        names << dialectName(d);
+    return names.join(QStringLiteral(", "));
 }
 
 bool isGs232(Dialect d)

@@ -22,6 +22,8 @@ enum class Dialect : std::uint8_t {
 
 // Every dialect, in the order the UI lists them.
 const QList<Dialect> &allDialects();
+// "easycomm1, easycomm2, ..., gs232b", for help texts and messages.
+QString dialectNameList();
 bool isGs232(Dialect d);
 
 // What ends a line Slew sends: `\n` for Easycomm, `\r` for GS-232.

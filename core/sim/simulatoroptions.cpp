@@ -24,7 +24,7 @@ const std::vector<SimulatorOptionInfo> kOptions = {
     {"park_el", "degrees", "elevation park position (CW8)"},
     {"start_az", "degrees", "azimuth at start"},
     {"start_el", "degrees", "elevation at start"},
-    {"dialect", "name", "easycomm1, easycomm2, easycomm3 or satnogs"},
+    {"dialect", "name", "easycomm1, easycomm2, easycomm3, satnogs, gs232a or gs232b"},
     {"unsolicited", "", "push changed fields unsolicited (easycomm3)"},
     {"baud", "rate", "pace bytes to a serial line of this rate (0: unpaced)"},
     {"clock", "mode", "wall (default) or manual: time moves only when a test advances it"},
@@ -189,7 +189,7 @@ QString applySimulatorOption(SimulatorOptions &o, QStringView rawName, QStringVi
     if (name == u"dialect") {
         const auto d = protocol::dialectFromName(value);
         if (!d)
-            return bad(name, value, QStringLiteral("expected easycomm1, easycomm2, easycomm3 or satnogs"));
+            return bad(name, value, QStringLiteral("expected one of: %1").arg(protocol::dialectNameList()));
         o.dialect = *d;
         return {};
     }
