@@ -48,6 +48,30 @@ class TestSimulatorLink : public QObject {
         return reply;
     }
 
+    // Lets queued deliveries run: what is due has arrived afterwards.
+    static void settle()
+    {
+        for (int i = 0; i < 10; ++i)
+            QCoreApplication::processEvents();
+    }
+
+    // Sends `GE` and checks that its answer is held while the simulated clock
+    // stands before `due` seconds and released once the clock passes it.
+    static void expectGeHeldUntil(Link *link, double due)
+    {
+        Simulator *sim = simulatorBehind(link);
+        QIODevice *d = link->device();
+        QSignalSpy ready(d, &QIODevice::readyRead);
+        d->write("GE\n");
+        settle();
+        sim->advance(due * 0.9);
+        settle();
+        QCOMPARE(d->bytesAvailable(), 0);
+        sim->advance(due * 0.2);
+        QVERIFY(ready.wait(2000));
+        QCOMPARE(d->readAll(), QByteArray("GE1\n"));
+    }
+
 private slots:
     void initTestCase() { registerSimulatorScheme(); }
 
@@ -157,19 +181,7 @@ private slots:
     {
         auto link = openLink("sim:?clock=manual&latency_ms=500");
         QVERIFY(link);
-        Simulator *sim = simulatorBehind(link.get());
-        QIODevice *d = link->device();
-        QSignalSpy ready(d, &QIODevice::readyRead);
-        d->write("GE\n");
-        for (int i = 0; i < 5; ++i)
-            QCoreApplication::processEvents();
-        sim->advance(0.45);
-        for (int i = 0; i < 5; ++i)
-            QCoreApplication::processEvents();
-        QCOMPARE(d->bytesAvailable(), 0);
-        sim->advance(0.1);
-        QVERIFY(ready.wait(2000));
-        QCOMPARE(d->readAll(), QByteArray("GE1\n"));
+        expectGeHeldUntil(link.get(), 0.5);
     }
 
     void baudPacingTakesTheLineTime()
@@ -177,19 +189,7 @@ private slots:
         // 1200 baud: 120 characters a second; `GE\n` in, `GE1\n` out is 7.
         auto link = openLink("sim:?clock=manual&baud=1200");
         QVERIFY(link);
-        Simulator *sim = simulatorBehind(link.get());
-        QIODevice *d = link->device();
-        QSignalSpy ready(d, &QIODevice::readyRead);
-        d->write("GE\n");
-        for (int i = 0; i < 5; ++i)
-            QCoreApplication::processEvents();
-        sim->advance(0.055);
-        for (int i = 0; i < 5; ++i)
-            QCoreApplication::processEvents();
-        QCOMPARE(d->bytesAvailable(), 0);
-        sim->advance(0.005);
-        QVERIFY(ready.wait(2000));
-        QCOMPARE(d->readAll(), QByteArray("GE1\n"));
+        expectGeHeldUntil(link.get(), 7.0 / 120.0);
     }
 
     void lossyLinkLosesEveryByteAtRateOne()
@@ -198,11 +198,9 @@ private slots:
         QVERIFY(link);
         Simulator *sim = simulatorBehind(link.get());
         link->device()->write("GE\nAZ\n");
-        for (int i = 0; i < 10; ++i)
-            QCoreApplication::processEvents();
+        settle();
         sim->advance(1.0);
-        for (int i = 0; i < 10; ++i)
-            QCoreApplication::processEvents();
+        settle();
         QCOMPARE(link->device()->bytesAvailable(), 0);
         QCOMPARE(sim->counters().commands, 2u); // heard, answered, lost on the way
         // Switched off at run time, the line works again.
