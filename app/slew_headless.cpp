@@ -1,7 +1,11 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `slew --headless --connect URI --rotctld-listen ADDR:PORT`: argument parsing
-// and wiring for the station service; the work is in core/bridge.
+// and wiring for the station service; the work is in core/bridge. The
+// options are described in cli/.
 
 #include "slew_identity.h"
+#include "cli/configfile.h"
+#include "cli/slewcommandline.h"
 #include "transport/hostport.h"
 #include "slew_headless.h"
 
@@ -39,30 +43,20 @@ int runHeadless(int argc, char *argv[])
     QCoreApplication app(argc, argv);
     setUpSlewApplication();
 
+    // A --config file stands for options written before the real ones.
+    QString error;
+    const auto arguments = slew::cli::withConfigFile(app.arguments(), slew::cli::slewHeadlessMode(), &error);
+    if (!arguments)
+        return fail(error);
     QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral("Slew as a station service: no window, log on stdout."));
-    parser.addHelpOption();
-    parser.addVersionOption();
-    const QCommandLineOption headless(QStringLiteral("headless"), QStringLiteral("Run without a window."));
-    const QCommandLineOption connect(QStringLiteral("connect"), QStringLiteral("The rotator's link URI (default sim:)."),
-                                     QStringLiteral("URI"));
-    const QCommandLineOption dialect(QStringLiteral("dialect"),
-                                     QStringLiteral("One of: %1.").arg(slew::protocol::dialectNameList()),
-                                     QStringLiteral("name"));
-    const QCommandLineOption profile(QStringLiteral("profile"), QStringLiteral("A rotator profile (JSON) to load."),
-                                     QStringLiteral("file"));
-    const QCommandLineOption listen(QStringLiteral("rotctld-listen"),
-                                    QStringLiteral("Serve rotctld on ADDRESS:PORT (127.0.0.1 unless named)."),
-                                    QStringLiteral("address:port"));
-    const QCommandLineOption allow(QStringLiteral("rotctld-allow"),
-                                   QStringLiteral("Comma-separated client addresses allowed (default: any)."),
-                                   QStringLiteral("addresses"));
-    parser.addOptions({headless, connect, dialect, profile, listen, allow});
-    parser.process(app);
+    slew::cli::describeTo(parser, slew::cli::slewHeadlessMode());
+    parser.process(*arguments);
+    const QString connect = QStringLiteral("connect"), dialect = QStringLiteral("dialect"),
+                  profile = QStringLiteral("profile"), listen = QStringLiteral("rotctld-listen"),
+                  allow = QStringLiteral("rotctld-allow");
 
     slew::bridge::HeadlessConfig config;
     if (parser.isSet(profile)) {
-        QString error;
         auto loaded = slew::model::RotatorProfile::load(parser.value(profile), &error);
         if (!loaded)
             return fail(error);
@@ -91,7 +85,6 @@ int runHeadless(int argc, char *argv[])
     }
 
     slew::bridge::HeadlessStation station;
-    QString error;
     if (!station.start(config, &error))
         return fail(error);
 

@@ -1,7 +1,9 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // slew: the operator window. Argument parsing and wiring only; everything
-// else lives in slewui and slewcore.
+// else lives in slewui and slewcore. The options are described in cli/.
 
 #include "slew_identity.h"
+#include "cli/slewcommandline.h"
 #include "mainwindow.h"
 #include "operatortheme.h"
 #include "slew_headless.h"
@@ -34,35 +36,12 @@ struct Arguments {
 // Returns an error message, or empty when the arguments are usable.
 QString parse(QCommandLineParser &parser, const QStringList &argv, Arguments &out)
 {
-    const QCommandLineOption connect(QStringLiteral("connect"),
-                                     QStringLiteral("Connect to URI at start (serial:/dev/ttyUSB0?baud=19200, "
-                                                    "tcp://host:port, sim:?az_max=450)."),
-                                     QStringLiteral("URI"));
-    const QCommandLineOption dialect(QStringLiteral("dialect"),
-                                     QStringLiteral("Dialect: %1.").arg(slew::protocol::dialectNameList()),
-                                     QStringLiteral("name"));
-    const QCommandLineOption gotoOption(QStringLiteral("goto"),
-                                        QStringLiteral("Once connected, move to this position."),
-                                        QStringLiteral("az,el"));
-    const QCommandLineOption screenshot(QStringLiteral("screenshot"),
-                                        QStringLiteral("Render the window to a PNG after the settle time, then exit."),
-                                        QStringLiteral("FILE.png"));
-    const QCommandLineOption settle(QStringLiteral("settle-ms"),
-                                    QStringLiteral("How long to run before the screenshot (default 3000)."),
-                                    QStringLiteral("ms"));
-    const QCommandLineOption rotctld(QStringLiteral("rotctld-listen"),
-                                     QStringLiteral("Let trackers steer through Slew: serve the rotctld protocol on "
-                                                    "ADDRESS:PORT (127.0.0.1 unless named)."),
-                                     QStringLiteral("address:port"));
-    parser.setApplicationDescription(QStringLiteral(
-        "Slew: controller for Easycomm and GS-232 az/el antenna rotators.\n"
-        "Also: slew --headless --connect URI --rotctld-listen ADDR:PORT (a station service), "
-        "slew --tune URI --axis az|el|both [--apply] (tuning without a window)."));
-    parser.addHelpOption();
-    parser.addVersionOption();
-    parser.addOptions({connect, dialect, gotoOption, screenshot, settle, rotctld});
+    slew::cli::describeTo(parser, slew::cli::slewWindowMode());
     parser.process(argv);
 
+    const QString connect = QStringLiteral("connect"), dialect = QStringLiteral("dialect"),
+                  gotoOption = QStringLiteral("goto"), rotctld = QStringLiteral("rotctld-listen"),
+                  screenshot = QStringLiteral("screenshot"), settle = QStringLiteral("settle-ms");
     out.connectUri = parser.value(connect);
     if (parser.isSet(dialect)) {
         out.dialect = slew::protocol::dialectFromName(parser.value(dialect));

@@ -1,6 +1,8 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // slew-sim: the simulated rotator as a server, on TCP and/or a
 // pseudo-terminal. Argument parsing and wiring only; everything else is in
-// core/sim.
+// core/sim, and the options are described in cli/.
+#include "cli/slewcommandline.h"
 #include "transport/hostport.h"
 #include "sim/ptyendpoint.h"
 #include "sim/receivedlog.h"
@@ -27,50 +29,30 @@ void fail(const QString &message)
     std::exit(2);
 }
 
-// "127.0.0.1:4533", "[::1]:0", ":4533" (loopback)
-
 } // namespace
 
 int main(int argc, char *argv[])
 {
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("slew-sim"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(SLEW_VERSION));
 
     QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral(
-        "Simulated Easycomm az/el rotator, served on TCP and/or a pseudo-terminal."));
-    parser.addHelpOption();
-    const QCommandLineOption listen(QStringLiteral("listen"), QStringLiteral("serve TCP on ADDRESS:PORT (port 0: any free port)"),
-                                    QStringLiteral("address:port"));
-    const QCommandLineOption pty(QStringLiteral("pty"), QStringLiteral("serve a pseudo-terminal, symlinked at PATH"),
-                                 QStringLiteral("path"));
-    const QCommandLineOption listenDialect(QStringLiteral("listen-dialect"),
-                                           QStringLiteral("dialect of the TCP endpoint if not --dialect's"),
-                                           QStringLiteral("name"));
-    const QCommandLineOption logReceived(QStringLiteral("log-received"),
-                                         QStringLiteral("write every line received to FILE"), QStringLiteral("file"));
-    parser.addOptions({listen, pty, listenDialect, logReceived});
+    slew::cli::describeTo(parser, slew::cli::slewSimMode());
+    parser.process(app);
+    const QString listen = QStringLiteral("listen"), pty = QStringLiteral("pty"),
+                  listenDialect = QStringLiteral("listen-dialect"), logReceived = QStringLiteral("log-received");
 
-    std::vector<std::pair<QCommandLineOption, const char *>> simOptions;
+    // The simulator's own options, the same as a sim: URI's (the clock is
+    // not among slew-sim's: a server always runs on the wall clock).
+    SimulatorOptions options;
     for (const SimulatorOptionInfo &info : simulatorOptionList()) {
         const QString name = QString::fromLatin1(info.name);
-        QStringList names{QString(name).replace(u'_', u'-')};
-        if (name.contains(u'_'))
-            names << name;
-        QCommandLineOption option(names, QString::fromLatin1(info.description), QString::fromLatin1(info.valueName));
-        if (names.first() == u"clock")
-            continue; // a server always runs on the wall clock
-        parser.addOption(option);
-        simOptions.emplace_back(option, info.name);
-    }
-    parser.process(app);
-
-    SimulatorOptions options;
-    for (const auto &[option, name] : simOptions) {
-        if (!parser.isSet(option))
+        const QString flag = QString(name).replace(u'_', u'-');
+        if (!slew::cli::slewSimMode().find(flag) || !parser.isSet(flag))
             continue;
-        const QString value = option.valueName().isEmpty() ? QStringLiteral("1") : parser.value(option);
-        if (const QString error = applySimulatorOption(options, QString::fromLatin1(name), value); !error.isEmpty())
+        const QString value = QString::fromLatin1(info.valueName).isEmpty() ? QStringLiteral("1") : parser.value(flag);
+        if (const QString error = applySimulatorOption(options, name, value); !error.isEmpty())
             fail(error);
     }
 

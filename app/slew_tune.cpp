@@ -1,6 +1,9 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `slew --tune URI`: argument parsing and wiring; the work is in core/tuning.
+// The options are described in cli/.
 
 #include "slew_identity.h"
+#include "cli/slewcommandline.h"
 #include "slew_tune.h"
 
 #include "model/rotatorprofile.h"
@@ -50,31 +53,17 @@ int runTune(int argc, char **argv)
     setUpSlewApplication();
 
     QCommandLineParser parser;
-    parser.setApplicationDescription(
-        QStringLiteral("Measure a step on each axis, propose PID gains from a fitted model, try them, "
-                       "and print before and after. Without --apply the old gains are written back."));
-    parser.addHelpOption();
-    parser.addVersionOption();
-    const QCommandLineOption tune(QStringLiteral("tune"), QStringLiteral("The rotator's link URI."), QStringLiteral("URI"));
-    const QCommandLineOption axis(QStringLiteral("axis"), QStringLiteral("az, el or both (default both)."),
-                                  QStringLiteral("axis"), QStringLiteral("both"));
-    const QCommandLineOption apply(QStringLiteral("apply"), QStringLiteral("Keep the new gains on the controller."));
-    const QCommandLineOption dialect(QStringLiteral("dialect"),
-                                     QStringLiteral("easycomm3 (default) or satnogs: the dialects with CR/CW."),
-                                     QStringLiteral("name"));
-    const QCommandLineOption profile(QStringLiteral("profile"),
-                                     QStringLiteral("A rotator profile (JSON) for the limits and dialect."),
-                                     QStringLiteral("file"));
-    const QCommandLineOption step(QStringLiteral("step"), QStringLiteral("Step size in degrees (default 4)."),
-                                  QStringLiteral("degrees"), QStringLiteral("4"));
-    parser.addOptions({tune, axis, apply, dialect, profile, step});
+    slew::cli::describeTo(parser, slew::cli::slewTuneMode());
     parser.process(app);
+    const QString tune = QStringLiteral("tune"), axis = QStringLiteral("axis"), apply = QStringLiteral("apply"),
+                  dialect = QStringLiteral("dialect"), profile = QStringLiteral("profile"),
+                  step = QStringLiteral("step");
 
     const QString uri = parser.value(tune).trimmed();
     if (uri.isEmpty() || uri.startsWith(QLatin1String("--")))
         return fail(QStringLiteral("--tune needs the rotator's URI, e.g. --tune serial:/dev/ttyUSB0?baud=19200"));
     QList<Axis> axes;
-    const QString which = parser.value(axis).toLower();
+    const QString which = parser.isSet(axis) ? parser.value(axis).toLower() : QStringLiteral("both");
     if (which == u"az" || which == u"azimuth")
         axes = {Axis::Azimuth};
     else if (which == u"el" || which == u"elevation")
@@ -83,8 +72,8 @@ int runTune(int argc, char **argv)
         axes = {Axis::Azimuth, Axis::Elevation};
     else
         return fail(QStringLiteral("--axis must be az, el or both, not '%1'").arg(parser.value(axis)));
-    bool stepOk = false;
-    const double stepDegrees = parser.value(step).toDouble(&stepOk);
+    bool stepOk = true;
+    const double stepDegrees = parser.isSet(step) ? parser.value(step).toDouble(&stepOk) : 4.0;
     if (!stepOk || !(stepDegrees >= 0.5 && stepDegrees <= 30.0))
         return fail(QStringLiteral("--step must be 0.5 to 30 degrees, not '%1'").arg(parser.value(step)));
 

@@ -58,7 +58,7 @@ private slots:
         QSignalSpy done(&probe, &QProcess::finished);
         probe.start(m_bin, {QStringLiteral("--tune"), QStringLiteral("sim:"), QStringLiteral("--help")});
         QVERIFY(done.wait(15000));
-        QVERIFY(QString::fromLocal8Bit(probe.readAllStandardOutput()).contains(QStringLiteral("propose PID gains")));
+        QVERIFY(QString::fromLocal8Bit(probe.readAllStandardOutput()).contains(QStringLiteral("proposes PID gains")));
         QVERIFY(!m_bin.isEmpty());
     }
 

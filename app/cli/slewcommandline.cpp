@@ -1,0 +1,267 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "slewcommandline.h"
+
+#include "protocol/dialect.h"
+#include "sim/simulatoroptions.h"
+
+#include <QCommandLineParser>
+
+namespace slew::cli {
+namespace {
+
+// Options that several modes share, written once.
+ProgramOption connectOption(const QString &description)
+{
+    return {{QStringLiteral("connect")}, QStringLiteral("URI"), description, true};
+}
+
+ProgramOption dialectOption()
+{
+    return {{QStringLiteral("dialect")},
+            QStringLiteral("name"),
+            QStringLiteral("The controller's command set: %1.").arg(protocol::dialectNameList()),
+            true};
+}
+
+ProgramOption profileOption()
+{
+    return {{QStringLiteral("profile")},
+            QStringLiteral("file"),
+            QStringLiteral("A rotator profile (JSON, as the window exports it): limits, overlap, park, dialect."),
+            true};
+}
+
+ProgramOption rotctldListenOption()
+{
+    return {{QStringLiteral("rotctld-listen")},
+            QStringLiteral("address:port"),
+            QStringLiteral("Let trackers (Gpredict, the SatNOGS client, rotctl) steer through Slew: serve Hamlib's "
+                           "rotctld protocol on ADDRESS:PORT. The address is 127.0.0.1 unless one is named."),
+            true};
+}
+
+ProgramMode makeWindowMode()
+{
+    ProgramMode mode;
+    mode.title = QStringLiteral("The operator window");
+    mode.synopsis = QStringLiteral("slew [--connect URI] [--dialect NAME] [--rotctld-listen ADDRESS:PORT] "
+                                   "[--goto AZ,EL] [--screenshot FILE.png [--settle-ms MS]]");
+    mode.description = QStringLiteral(
+        "Opens the operator window: the polar plot, the jog pad, go-to, Stop, Park and Home, the controller's "
+        "configuration, live telemetry charts, the traffic log, the rotctld server and the setup and tuning "
+        "wizard. Without --connect it opens the last connection, or the built-in simulator the first time. "
+        "The same program runs as a station service (slew --headless --help) and tunes a rotator without a "
+        "window (slew --tune URI --help).");
+    mode.options = {
+        connectOption(QStringLiteral("Connect to URI at start: serial:/dev/ttyUSB0?baud=19200, tcp://HOST:PORT, "
+                                     "rotctld://HOST:PORT or sim:?az_max=450.")),
+        dialectOption(),
+        rotctldListenOption(),
+        {{QStringLiteral("goto")}, QStringLiteral("az,el"), QStringLiteral("Once connected, move to this position.")},
+        {{QStringLiteral("screenshot")},
+         QStringLiteral("FILE.png"),
+         QStringLiteral("Render the window to a PNG after the settle time, then exit. Needs no display.")},
+        {{QStringLiteral("settle-ms")},
+         QStringLiteral("ms"),
+         QStringLiteral("How long to run before the screenshot (default 3000).")},
+    };
+    return mode;
+}
+
+ProgramMode makeHeadlessMode()
+{
+    ProgramMode mode;
+    mode.title = QStringLiteral("Station service");
+    mode.synopsis = QStringLiteral("slew --headless [--config FILE] [--connect URI] [--dialect NAME] "
+                                   "[--profile FILE] [--rotctld-listen ADDRESS:PORT] [--rotctld-allow ADDRESSES]");
+    mode.description = QStringLiteral(
+        "Runs Slew with no window and no display, as a station service: it keeps the link to the rotator open "
+        "and reconnects after a loss, serves the rotctld protocol to trackers, and logs one line per event on "
+        "standard output. On SIGTERM or SIGINT it stops the rotator, waits for the stop to leave the link, and "
+        "exits.");
+    mode.options = {
+        {{QStringLiteral("headless")}, {}, QStringLiteral("Run as a station service, without a window.")},
+        {{QStringLiteral("config")},
+         QStringLiteral("file"),
+         QStringLiteral("Read settings from FILE, one `name = value` a line, where name is one of connect, dialect, "
+                        "profile, rotctld-listen, rotctld-allow. Options on the command line win over the file.")},
+        connectOption(QStringLiteral("The rotator's link URI (default sim:, the built-in simulator).")),
+        dialectOption(),
+        profileOption(),
+        rotctldListenOption(),
+        {{QStringLiteral("rotctld-allow")},
+         QStringLiteral("addresses"),
+         QStringLiteral("Comma-separated client addresses the rotctld server accepts (default: any)."),
+         true},
+    };
+    return mode;
+}
+
+ProgramMode makeTuneMode()
+{
+    ProgramMode mode;
+    mode.title = QStringLiteral("Tuning without a window");
+    mode.synopsis = QStringLiteral("slew --tune URI [--axis az|el|both] [--apply] [--step DEGREES] [--dialect NAME] "
+                                   "[--profile FILE]");
+    mode.description = QStringLiteral(
+        "Measures a step on each axis, fits a model, proposes PID gains, tries them, and prints rise time, "
+        "overshoot, settling time and steady-state error before and after. Without --apply the old gains are "
+        "written back. Ctrl-C stops the rotator and restores the old gains.");
+    mode.options = {
+        {{QStringLiteral("tune")}, QStringLiteral("URI"), QStringLiteral("The rotator's link URI.")},
+        {{QStringLiteral("axis")}, QStringLiteral("axis"), QStringLiteral("az, el or both (default both).")},
+        {{QStringLiteral("apply")}, {}, QStringLiteral("Keep the new gains on the controller.")},
+        {{QStringLiteral("dialect")},
+         QStringLiteral("name"),
+         QStringLiteral("easycomm3 (default) or satnogs: the dialects with the CR and CW registers.")},
+        profileOption(),
+        {{QStringLiteral("step")}, QStringLiteral("degrees"), QStringLiteral("Step size, 0.5 to 30 (default 4).")},
+    };
+    return mode;
+}
+
+ProgramMode makeSimMode()
+{
+    ProgramMode mode;
+    mode.title = QStringLiteral("Options");
+    mode.synopsis = QStringLiteral("slew-sim [--listen ADDRESS:PORT] [--pty PATH] [--dialect NAME] "
+                                   "[SIMULATOR OPTIONS]");
+    mode.description = QStringLiteral(
+        "Simulated az/el rotator, served on TCP and/or a pseudo-terminal. It speaks the same bytes as a real "
+        "controller, so any program that drives a rotator (Slew, Hamlib's rotctl and rotctld, Gpredict through "
+        "rotctld) can be tried without hardware. It prints one ready line with the address and the terminal path, "
+        "and exits on SIGTERM or SIGINT with a count of the lines it received.");
+    mode.options = {
+        {{QStringLiteral("listen")},
+         QStringLiteral("address:port"),
+         QStringLiteral("Serve TCP on ADDRESS:PORT; port 0 picks a free one (default 127.0.0.1:4533 when --pty is "
+                        "not given).")},
+        {{QStringLiteral("pty")},
+         QStringLiteral("path"),
+         QStringLiteral("Serve a pseudo-terminal, symlinked at PATH (open it as a serial port).")},
+        {{QStringLiteral("listen-dialect")},
+         QStringLiteral("name"),
+         QStringLiteral("Dialect of the TCP endpoint if not --dialect's.")},
+        {{QStringLiteral("log-received")}, QStringLiteral("file"), QStringLiteral("Write every line received to FILE.")},
+    };
+    // The simulator's own options, which sim: URIs take too (`--az-max 450`
+    // here is `sim:?az_max=450` there). The clock option is for tests in the
+    // same process: a server always runs on the wall clock.
+    for (const sim::SimulatorOptionInfo &info : sim::simulatorOptionList()) {
+        const QString name = QString::fromLatin1(info.name);
+        if (name == u"clock")
+            continue;
+        QStringList names{QString(name).replace(u'_', u'-')};
+        if (name.contains(u'_'))
+            names << name;
+        QString description = QString::fromLatin1(info.description);
+        description[0] = description[0].toUpper();
+        mode.options.append({names, QString::fromLatin1(info.valueName), description + u'.'});
+    }
+    return mode;
+}
+
+QString seeAlso()
+{
+    return QStringLiteral("rotctl(1), rotctld(1), the Slew README and docs/protocol.md, docs/simulator.md and "
+                          "docs/tuning.md in the source.");
+}
+
+} // namespace
+
+const ProgramDescription &slewProgram()
+{
+    static const ProgramDescription program = [] {
+        ProgramDescription p;
+        p.name = QStringLiteral("slew");
+        p.summary = QStringLiteral("controller for az/el antenna rotators");
+        p.description = QStringLiteral(
+            "Slew drives az/el antenna rotators that speak Easycomm I, II or III, the SatNOGS variant, or Yaesu "
+            "GS-232A/B, over a serial port, over TCP, through Hamlib's rotctld, or its own simulator when no "
+            "rotator is attached. Every move, from the operator, a tracker, a preset or a raw command, is checked "
+            "against the rotator's limits before a byte is sent.");
+        p.modes = {makeWindowMode(), makeHeadlessMode(), makeTuneMode()};
+        p.sections = {
+            {QStringLiteral("Links"),
+             QStringLiteral("A link is named by a URI, the same on the command line, in the window and in profiles:\n"
+                            "\n"
+                            "  serial:/dev/ttyUSB0?baud=19200&data=8&parity=none&stop=1&flow=none\n"
+                            "  tcp://HOST:PORT\n"
+                            "  rotctld://HOST:PORT\n"
+                            "  sim:?az_max=450&el_max=180\n"
+                            "\n"
+                            "The simulator's options are listed in slew-sim(1).")},
+            {QStringLiteral("Files"),
+             QStringLiteral("  /etc/slew/NAME.conf\n"
+                            "\n"
+                            "Settings of the station service slew-station@NAME.service, read with --config. "
+                            "/etc/slew/example.conf shows every setting.\n"
+                            "\n"
+                            "  ~/.config/Slew/slew.conf\n"
+                            "\n"
+                            "The window's remembered connection, presets and preferences.")},
+            {QStringLiteral("Exit status"),
+             QStringLiteral("0 when Slew ends normally, 1 when a tuning run fails or is cancelled, 2 for a bad "
+                            "option, a bad config file or a server that cannot listen.")},
+            {QStringLiteral("Examples"),
+             QStringLiteral("  slew --connect serial:/dev/ttyUSB0?baud=9600 --dialect easycomm2\n"
+                            "  slew --headless --connect tcp://192.0.2.10:4533 --rotctld-listen 127.0.0.1:4533\n"
+                            "  systemctl enable --now slew-station@example\n"
+                            "  slew --tune sim:?kp=12&ki=1&kd=1 --axis az")},
+            {QStringLiteral("See also"), QStringLiteral("slew-sim(1), ") + seeAlso()},
+        };
+        return p;
+    }();
+    return program;
+}
+
+const ProgramMode &slewWindowMode()
+{
+    return slewProgram().modes.at(0);
+}
+
+const ProgramMode &slewHeadlessMode()
+{
+    return slewProgram().modes.at(1);
+}
+
+const ProgramMode &slewTuneMode()
+{
+    return slewProgram().modes.at(2);
+}
+
+const ProgramDescription &slewSimProgram()
+{
+    static const ProgramDescription program = [] {
+        ProgramDescription p;
+        p.name = QStringLiteral("slew-sim");
+        p.summary = QStringLiteral("simulated az/el antenna rotator on TCP or a pseudo-terminal");
+        p.modes = {makeSimMode()};
+        p.description = p.modes.first().description;
+        p.sections = {
+            {QStringLiteral("Examples"),
+             QStringLiteral("  slew-sim --listen 127.0.0.1:4533 --dialect easycomm3\n"
+                            "  slew-sim --pty /tmp/rotator --dialect gs232b --baud 9600\n"
+                            "  rotctl -m 202 -r /tmp/rotator -s 9600 P 180 30")},
+            {QStringLiteral("See also"), QStringLiteral("slew(1), ") + seeAlso()},
+        };
+        return p;
+    }();
+    return program;
+}
+
+const ProgramMode &slewSimMode()
+{
+    return slewSimProgram().modes.at(0);
+}
+
+void describeTo(QCommandLineParser &parser, const ProgramMode &mode)
+{
+    parser.setApplicationDescription(mode.description);
+    parser.addHelpOption();
+    parser.addVersionOption();
+    for (const ProgramOption &option : mode.options)
+        parser.addOption(option.toQt());
+}
+
+} // namespace slew::cli

@@ -1,0 +1,25 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The command lines of slew and slew-sim, described once (programoption.h).
+
+#include "programoption.h"
+
+class QCommandLineParser;
+
+namespace slew::cli {
+
+// slew: the window, --headless and --tune.
+const ProgramDescription &slewProgram();
+const ProgramMode &slewWindowMode();
+const ProgramMode &slewHeadlessMode();
+const ProgramMode &slewTuneMode();
+
+// slew-sim: the simulated rotator as a server.
+const ProgramDescription &slewSimProgram();
+const ProgramMode &slewSimMode();
+
+// Gives a parser a mode's description and options, with --help and
+// --version.
+void describeTo(QCommandLineParser &parser, const ProgramMode &mode);
+
+} // namespace slew::cli
