@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # One entry point for developers and CI.
 #
 #   packaging/dev.sh run [slew arguments]   install what is missing, build, start Slew
 #   packaging/dev.sh test                   install what is missing, build, run every test
 #   packaging/dev.sh bench                  build and run the benchmarks (tests/bench)
-#   packaging/dev.sh package                build a Debian package (build/slew_*.deb)
+#   packaging/dev.sh package                build a Debian package (build/slew_*.deb), stripped
 #
 # Works on a fresh Debian 12: missing packages (packaging/debian-packages.txt)
 # are installed with apt-get, through sudo when not root.
@@ -21,10 +22,15 @@ install_missing() {
     for pkg in $wanted; do
         dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q 'install ok installed' || missing+=("$pkg")
     done
-    [ ${#missing[@]} -eq 0 ] && return 0
-    echo "== installing: ${missing[*]}"
     local sudo=()
     [ "$(id -u)" -ne 0 ] && sudo=(sudo)
+    # The fresh-machine test asks apt-cache for the list's dependencies,
+    # which needs the package lists even when nothing is missing.
+    if [ ${#missing[@]} -eq 0 ]; then
+        compgen -G '/var/lib/apt/lists/*_Packages*' > /dev/null || "${sudo[@]}" apt-get update -q
+        return 0
+    fi
+    echo "== installing: ${missing[*]}"
     "${sudo[@]}" apt-get update -q
     DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
 }
@@ -67,6 +73,7 @@ package)
     install_missing
     configure_and_build
     (cd "$build" && cpack -G DEB)
+    ls -l "$build"/slew_*.deb
     ;;
 *)
     echo "usage: $0 run [slew arguments] | test [ctest arguments] | bench | package" >&2

@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
+# A fresh Debian 12 in a directory (debootstrap --variant=minbase, the
+# smallest system apt works on), for the two claims a new user relies on:
+#
+#   fresh-machine.sh test          the committed source, copied in, passes
+#                                  `packaging/dev.sh test` with nothing but
+#                                  what dev.sh installs from the list
+#   fresh-machine.sh install DEB   the package installs with apt-get on a
+#                                  system without the build dependencies,
+#                                  and both programs run
+#
+# Needs root and Debian's package archive. The base system is made once in
+# $SLEW_FRESH_DIR (default /var/tmp/slew-fresh) and copied for each run, so
+# every run starts from the same fresh system.
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+top=$(cd "$here/.." && pwd)
+dir=${SLEW_FRESH_DIR:-/var/tmp/slew-fresh}
+[ "$(id -u)" -eq 0 ] || { echo "fresh-machine.sh needs root (debootstrap, chroot)"; exit 2; }
+
+base=$dir/base
+if [ ! -x "$base/usr/bin/apt-get" ]; then
+    command -v debootstrap > /dev/null \
+        || DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends debootstrap
+    # The archive this machine's apt uses.
+    mirror=$(sed -nE 's/^URIs: *([^ ]+).*/\1/p' /etc/apt/sources.list.d/*.sources 2>/dev/null | head -n 1)
+    [ -n "$mirror" ] || mirror=$(awk '$1 == "deb" {print $2; exit}' /etc/apt/sources.list)
+    rm -rf "$base"
+    mkdir -p "$dir"
+    debootstrap --variant=minbase bookworm "$base" "$mirror"
+fi
+
+run=$dir/run
+cleanup() {
+    for m in dev/shm dev/pts dev sys proc; do
+        mountpoint -q "$run/$m" && umount -l "$run/$m"
+    done
+    rm -rf "$run"
+}
+trap cleanup EXIT
+cleanup
+cp -a "$base" "$run"
+cp /etc/resolv.conf "$run/etc/resolv.conf" 2>/dev/null || true
+mount -t proc proc "$run/proc"
+mount -t sysfs sys "$run/sys"
+mount --bind /dev "$run/dev"
+mount -t devpts -o newinstance,ptmxmode=0666 devpts "$run/dev/pts"
+mount -t tmpfs tmpfs "$run/dev/shm"
+in_root() { chroot "$run" /usr/bin/env -i HOME=/root PATH=/usr/sbin:/usr/bin:/sbin:/bin LANG=C.UTF-8 "$@"; }
+
+case ${1:-} in
+test)
+    # The committed tree, as a clone has it.
+    mkdir -p "$run/src"
+    git -C "$top" archive HEAD | tar -x -C "$run/src"
+    in_root bash -c 'cd /src && packaging/dev.sh test'
+    ;;
+install)
+    deb=${2:?usage: fresh-machine.sh install DEB}
+    cp "$deb" "$run/tmp/"
+    in_root apt-get update -q
+    in_root bash -c 'DEBIAN_FRONTEND=noninteractive apt-get install -y -q /tmp/'"$(basename "$deb")"
+    in_root slew --version
+    in_root slew-sim --help > /dev/null && echo "slew-sim --help: ok"
+    echo "installed size: $(in_root dpkg-query -W -f='${Installed-Size}' slew) KiB"
+    ;;
+*)
+    echo "usage: $0 test | install DEB" >&2
+    exit 2
+    ;;
+esac
