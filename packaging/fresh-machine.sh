@@ -33,20 +33,20 @@ fi
 
 run=$dir/run
 cleanup() {
-    for m in dev/shm dev/pts dev sys proc; do
-        mountpoint -q "$run/$m" && umount -l "$run/$m"
+    for m in dev sys proc; do
+        if mountpoint -q "$run/$m"; then umount -R "$run/$m" || umount -lR "$run/$m"; fi
     done
-    rm -rf "$run"
+    rm -rf --one-file-system "$run"
 }
 trap cleanup EXIT
 cleanup
 cp -a "$base" "$run"
 cp /etc/resolv.conf "$run/etc/resolv.conf" 2>/dev/null || true
+# The host's /dev (with /dev/pts for the pseudo-terminal tests), as a
+# slave so that nothing mounted or unmounted here reaches the host.
 mount -t proc proc "$run/proc"
-mount -t sysfs sys "$run/sys"
-mount --bind /dev "$run/dev"
-mount -t devpts -o newinstance,ptmxmode=0666 devpts "$run/dev/pts"
-mount -t tmpfs tmpfs "$run/dev/shm"
+mount --rbind /sys "$run/sys" && mount --make-rslave "$run/sys"
+mount --rbind /dev "$run/dev" && mount --make-rslave "$run/dev"
 in_root() { chroot "$run" /usr/bin/env -i HOME=/root PATH=/usr/sbin:/usr/bin:/sbin:/bin LANG=C.UTF-8 "$@"; }
 
 case ${1:-} in
