@@ -16,7 +16,7 @@ int main(int argc, char *argv[])
     QCoreApplication app(argc, argv);
     const QStringList args = app.arguments();
     if (args.size() != 3) {
-        std::fprintf(stderr, "usage: slew-manpage slew|slew-sim FILE\n");
+        std::fprintf(stderr, "usage: slew-manpage slew|slew-sim|slewctl FILE\n");
         return 2;
     }
     const slew::cli::ProgramDescription *program = nullptr;
@@ -24,6 +24,8 @@ int main(int argc, char *argv[])
         program = &slew::cli::slewProgram();
     else if (args[1] == u"slew-sim")
         program = &slew::cli::slewSimProgram();
+    else if (args[1] == u"slewctl")
+        program = &slew::cli::slewctlProgram();
     else {
         std::fprintf(stderr, "slew-manpage: no program '%s'\n", qPrintable(args[1]));
         return 2;

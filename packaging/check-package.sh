@@ -24,7 +24,7 @@ dpkg-deb -e "$deb" "$work/control"
 echo "package: $(basename "$deb"), $(du -k "$deb" | cut -f1) KiB; installed size $(du -sk "$root" | cut -f1) KiB"
 
 # Stripped: no debug sections and no symbol table in either program.
-for program in slew slew-sim; do
+for program in slew slew-sim slewctl; do
     binary=$root/usr/bin/$program
     [ -x "$binary" ] || fail "no /usr/bin/$program in the package"
     sections=$(readelf -S --wide "$binary")
@@ -54,7 +54,7 @@ grep -qx '/etc/slew/example.conf' "$work/control/conffiles" || fail "example.con
 for script in postinst prerm postrm; do
     [ -x "$work/control/$script" ] || fail "no $script"
 done
-for page in slew slew-sim; do
+for page in slew slew-sim slewctl; do
     man=$root/usr/share/man/man1/$page.1.gz
     [ -f "$man" ] || fail "no manual page $page(1)"
     zcat "$man" | grep -q '^\.TH' || fail "$page(1) is not a manual page"
@@ -67,6 +67,9 @@ grep -qE '^slew [0-9]+\.[0-9]+\.[0-9]+$' <<<"$version" || fail "slew --version p
 help=$(env -u LD_LIBRARY_PATH -u QT_PLUGIN_PATH -u DISPLAY "$root/usr/bin/slew-sim" --help) \
     || fail "slew-sim --help failed"
 grep -q -- '--listen' <<<"$help" || fail "slew-sim --help does not list --listen"
+position=$(env -u LD_LIBRARY_PATH -u DISPLAY "$root/usr/bin/slewctl" 'sim:?start_az=42&start_el=7' get) \
+    || fail "slewctl sim: get failed"
+[ "$position" = "az 42.00 el 7.00" ] || fail "slewctl sim: get printed '$position'"
 # The station service's settings file is one the program accepts.
 env -u LD_LIBRARY_PATH -u DISPLAY "$root/usr/bin/slew" --headless --config "$root/etc/slew/example.conf" --help \
     > /dev/null || fail "slew --headless refuses the example config"
@@ -78,4 +81,4 @@ sed -e "s|/usr/bin/slew|$root/usr/bin/slew|" -e "s|/etc/slew/|$root/etc/slew/|g"
     > "$work/slew-station@check.service"
 complaints=$(SYSTEMD_LOG_LEVEL=notice "$analyze" verify --man=no "$work/slew-station@check.service" 2>&1) || true
 [ -z "$complaints" ] || fail "systemd-analyze verify: $complaints"
-echo "$version and slew-sim run from the unpacked package; unit, config, manuals and licence in place"
+echo "$version, slew-sim and slewctl run from the unpacked package; unit, config, manuals and licence in place"

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "slewcommandline.h"
 
+#include "console/consolecommand.h"
 #include "protocol/dialect.h"
 #include "sim/simulatoroptions.h"
 
@@ -253,6 +254,58 @@ const ProgramDescription &slewSimProgram()
 const ProgramMode &slewSimMode()
 {
     return slewSimProgram().modes.at(0);
+}
+
+const ProgramDescription &slewctlProgram()
+{
+    static const ProgramDescription program = [] {
+        ProgramDescription p;
+        p.name = QStringLiteral("slewctl");
+        p.summary = QStringLiteral("command-line client for az/el antenna rotators");
+        ProgramMode mode;
+        mode.title = QStringLiteral("Options");
+        mode.synopsis = QStringLiteral("slewctl [--json] [--dialect NAME] [--profile FILE] [--timeout SECONDS] URI "
+                                       "[COMMAND [ARGUMENTS]]");
+        mode.description = QStringLiteral(
+            "Sends one command to a rotator and prints the result, or, without a command, reads commands at a "
+            "prompt (or from standard input) until quit. It uses the same core as the Slew window: every move "
+            "and every raw line is checked against the rotator's limits before a byte is sent.");
+        mode.options = {
+            {{QStringLiteral("json")}, {}, QStringLiteral("Print one JSON object a line, for scripts.")},
+            dialectOption(),
+            profileOption(),
+            {{QStringLiteral("timeout")},
+             QStringLiteral("seconds"),
+             QStringLiteral("How long --wait waits for the rotator to arrive (default 600).")},
+        };
+        p.modes = {mode};
+        p.description = mode.description;
+        QString commands;
+        for (const QString &line : console::consoleCommandSummary().split(u'\n', Qt::SkipEmptyParts))
+            commands += QStringLiteral("  ") + line + u'\n';
+        commands.chop(1);
+        p.sections = {
+            {QStringLiteral("Commands"), commands},
+            {QStringLiteral("Exit status"),
+             QStringLiteral("0 done; 1 the controller did not answer, a read-back differed or --wait timed out; 2 a "
+                            "bad argument; 3 no link to the rotator, or it was lost; 4 the move or line was refused "
+                            "and nothing was sent.")},
+            {QStringLiteral("Examples"),
+             QStringLiteral("  slewctl sim: goto 180 30 --wait\n"
+                            "  slewctl serial:/dev/ttyUSB0?baud=9600 --dialect easycomm2 get\n"
+                            "  slewctl --json tcp://127.0.0.1:4533 watch --interval 0.5\n"
+                            "  slewctl sim: raw 'AZ EL'\n"
+                            "  slewctl sim: config set 1 0.8")},
+            {QStringLiteral("See also"), QStringLiteral("slew(1), slew-sim(1), ") + seeAlso()},
+        };
+        return p;
+    }();
+    return program;
+}
+
+const ProgramMode &slewctlMode()
+{
+    return slewctlProgram().modes.at(0);
 }
 
 void describeTo(QCommandLineParser &parser, const ProgramMode &mode)

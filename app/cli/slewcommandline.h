@@ -18,6 +18,10 @@ const ProgramMode &slewTuneMode();
 const ProgramDescription &slewSimProgram();
 const ProgramMode &slewSimMode();
 
+// slewctl: one command to a rotator from a shell or a script.
+const ProgramDescription &slewctlProgram();
+const ProgramMode &slewctlMode();
+
 // Gives a parser a mode's description and options, with --help and
 // --version.
 void describeTo(QCommandLineParser &parser, const ProgramMode &mode);

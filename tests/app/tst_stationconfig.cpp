@@ -108,6 +108,7 @@ void StationConfigTest::manualPagesMatchHelp_data()
     QTest::newRow("headless") << slew << QStringList{"--headless", "--help"} << "slew.1";
     QTest::newRow("tune") << slew << QStringList{"--tune", "sim:", "--help"} << "slew.1";
     QTest::newRow("slew-sim") << sim << QStringList{"--help"} << "slew-sim.1";
+    QTest::newRow("slewctl") << qEnvironmentVariable("SLEWCTL_BIN") << QStringList{"--help"} << "slewctl.1";
 }
 
 void StationConfigTest::manualPagesMatchHelp()

@@ -1,0 +1,355 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "consolerunner.h"
+
+#include "session/rotatorsession.h"
+#include "transport/link.h"
+#include "tuning/homingrun.h"
+
+#include <QIODevice>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+#include <cmath>
+
+namespace slew::console {
+namespace {
+
+using session::RotatorSession;
+
+// A --wait move has arrived when both axes are this close to the target.
+constexpr double kArrivedDegrees = 1.0;
+// How long a stop or a command may take to leave the link before we go.
+constexpr int kSendGiveUpMs = 2000;
+
+QString json(const QJsonObject &object)
+{
+    return QString::fromUtf8(QJsonDocument(object).toJson(QJsonDocument::Compact));
+}
+
+double bearingDifference(double a, double b)
+{
+    const double d = std::fmod(std::abs(a - b), 360.0);
+    return std::min(d, 360.0 - d);
+}
+
+} // namespace
+
+ConsoleRunner::ConsoleRunner(RotatorSession *session, bool json, QObject *parent)
+    : QObject(parent), m_session(session), m_json(json)
+{
+    m_deadline.setSingleShot(true);
+    connect(&m_deadline, &QTimer::timeout, this, [this] {
+        if (!m_started)
+            finish(ExitCode::LinkFailure, tr("no answer from %1 within %2 s").arg(m_session->uri()).arg(m_connectTimeoutMs / 1000.0));
+        else
+            finish(ExitCode::Failed, tr("not there after %1 s; the rotator keeps going").arg(m_arrivalTimeoutMs / 1000.0));
+    });
+    // A refusal arrives as a signal during the call that is refused.
+    connect(m_session, &RotatorSession::commandRefused, this, [this](const QString &reason) { m_lastRefusal = reason; });
+}
+
+ConsoleRunner::~ConsoleRunner() = default;
+
+void ConsoleRunner::run(const ConsoleCommand &command)
+{
+    m_command = command;
+    m_running = true;
+    m_started = false;
+    m_lastRefusal.clear();
+    m_deadline.start(m_connectTimeoutMs);
+    m_connections << connect(m_session, &RotatorSession::stateChanged, this,
+                             [this](RotatorSession::State state, const QString &detail) {
+                                 if (state == RotatorSession::State::Disconnected
+                                     || state == RotatorSession::State::Reconnecting)
+                                     finish(ExitCode::LinkFailure, tr("link lost: %1").arg(detail));
+                                 else
+                                     whenReady();
+                             });
+    m_connections << connect(m_session, &RotatorSession::capabilitiesChanged, this, [this] { whenReady(); });
+    m_connections << connect(m_session, &RotatorSession::positionChanged, this, [this] { whenReady(); });
+    whenReady();
+}
+
+void ConsoleRunner::whenReady()
+{
+    if (!m_running || m_started || !m_session->isConnected() || !m_session->capabilities().probed)
+        return;
+    // Everything but a raw line or a register wants to know where it is.
+    const bool needsPosition = m_command.kind != ConsoleCommand::Kind::Raw
+                               && m_command.kind != ConsoleCommand::Kind::ConfigGet
+                               && m_command.kind != ConsoleCommand::Kind::ConfigSet;
+    if (needsPosition && !m_session->hasPosition())
+        return;
+    m_started = true;
+    m_deadline.stop();
+    start();
+}
+
+void ConsoleRunner::start()
+{
+    using Kind = ConsoleCommand::Kind;
+    switch (m_command.kind) {
+    case Kind::Get:
+        printPosition("position");
+        finish(ExitCode::Ok);
+        return;
+    case Kind::Goto:
+        startGoto();
+        return;
+    case Kind::Stop:
+        m_session->stop();
+        emit output(m_json ? json({{QStringLiteral("event"), QStringLiteral("stopped")}}) : tr("stopped"));
+        finishWhenSent();
+        return;
+    case Kind::Park:
+        if (!m_session->park()) {
+            finish(ExitCode::Refused, m_lastRefusal);
+            return;
+        }
+        emit output(m_json ? json({{QStringLiteral("event"), QStringLiteral("parking")}}) : tr("parking"));
+        if (!m_command.wait) {
+            finishWhenSent();
+            return;
+        }
+        m_targetAz = m_session->profile().parkAz;
+        m_targetEl = m_session->profile().parkEl;
+        m_deadline.start(m_arrivalTimeoutMs);
+        m_connections << connect(m_session, &RotatorSession::positionChanged, this, &ConsoleRunner::checkArrival);
+        return;
+    case Kind::Home:
+        startHome();
+        return;
+    case Kind::Watch:
+        startWatch();
+        return;
+    case Kind::Raw:
+        startRaw();
+        return;
+    case Kind::ConfigGet:
+    case Kind::ConfigSet:
+        startConfig();
+        return;
+    case Kind::Help:
+    case Kind::Quit:
+        finish(ExitCode::Ok);
+        return;
+    }
+}
+
+void ConsoleRunner::startGoto()
+{
+    if (!m_session->gotoPosition(m_command.azimuth, m_command.elevation)) {
+        finish(ExitCode::Refused, m_lastRefusal.isEmpty() ? tr("the move was refused") : m_lastRefusal);
+        return;
+    }
+    m_targetAz = m_session->targetAzimuth();
+    m_targetEl = m_session->targetElevation();
+    emit output(m_json ? json({{QStringLiteral("event"), QStringLiteral("moving")},
+                               {QStringLiteral("target_az"), m_targetAz},
+                               {QStringLiteral("target_el"), m_targetEl}})
+                       : tr("moving to az %1 el %2").arg(m_targetAz, 0, 'f', 2).arg(m_targetEl, 0, 'f', 2));
+    if (!m_command.wait) {
+        finishWhenSent();
+        return;
+    }
+    m_deadline.start(m_arrivalTimeoutMs);
+    m_connections << connect(m_session, &RotatorSession::positionChanged, this, &ConsoleRunner::checkArrival);
+    checkArrival();
+}
+
+void ConsoleRunner::checkArrival()
+{
+    if (!m_running || m_session->positionStale())
+        return;
+    if (bearingDifference(m_session->azimuth(), m_targetAz) <= kArrivedDegrees
+        && std::abs(m_session->elevation() - m_targetEl) <= kArrivedDegrees) {
+        printPosition("arrived");
+        finish(ExitCode::Ok);
+    }
+}
+
+void ConsoleRunner::startHome()
+{
+    if (!m_command.wait) {
+        if (!m_session->home()) {
+            finish(ExitCode::Refused, m_lastRefusal);
+            return;
+        }
+        emit output(m_json ? json({{QStringLiteral("event"), QStringLiteral("homing")}}) : tr("homing"));
+        finishWhenSent();
+        return;
+    }
+    m_homing = std::make_unique<tuning::HomingRun>(m_session);
+    connect(m_homing.get(), &tuning::HomingRun::succeeded, this, [this] {
+        printPosition("homed");
+        finish(ExitCode::Ok);
+    });
+    connect(m_homing.get(), &tuning::HomingRun::failed, this,
+            [this](const QString &reason) { finish(ExitCode::Failed, tr("homing failed: %1").arg(reason)); });
+    connect(m_homing.get(), &tuning::HomingRun::cancelled, this,
+            [this] { finish(ExitCode::Failed, tr("homing cancelled; the rotator was stopped")); });
+    if (!m_homing->start(m_arrivalTimeoutMs / 1000.0))
+        finish(ExitCode::Refused, m_lastRefusal.isEmpty() ? tr("this controller cannot home") : m_lastRefusal);
+}
+
+void ConsoleRunner::startWatch()
+{
+    printPosition("position");
+    m_tick.setSingleShot(false);
+    m_tick.setInterval(int(std::lround(m_command.intervalSeconds * 1000)));
+    m_connections << connect(&m_tick, &QTimer::timeout, this, [this] { printPosition("position"); });
+    m_tick.start();
+}
+
+void ConsoleRunner::startRaw()
+{
+    // Only the answer to this line is wanted: nothing else is asked, and a
+    // poll already on the wire is answered first.
+    m_session->setPolling(false);
+    m_rawSent = false;
+    m_connections << connect(m_session, &RotatorSession::bytesReceived, this, [this](const QByteArray &bytes) {
+        if (!m_rawSent) {
+            // The session takes the reply off its queue after this signal.
+            QTimer::singleShot(0, this, &ConsoleRunner::sendRawWhenQuiet);
+            return;
+        }
+        m_rawAnswer += bytes;
+        const qsizetype end = m_rawAnswer.indexOf('\n') >= 0 ? m_rawAnswer.indexOf('\n') : m_rawAnswer.indexOf('\r');
+        if (end < 0)
+            return;
+        const QString answer = QString::fromLatin1(m_rawAnswer.left(end)).trimmed();
+        emit output(m_json ? json({{QStringLiteral("sent"), m_command.text}, {QStringLiteral("answer"), answer}})
+                           : answer);
+        finish(ExitCode::Ok);
+    });
+    m_connections << connect(m_session, &RotatorSession::requestFailed, this, &ConsoleRunner::sendRawWhenQuiet);
+    sendRawWhenQuiet();
+}
+
+void ConsoleRunner::sendRawWhenQuiet()
+{
+    if (!m_running || m_rawSent || m_session->queuedRequests() > 0)
+        return;
+    m_rawSent = true;
+    m_rawAnswer.clear();
+    if (!m_session->sendRaw(m_command.text)) {
+        finish(ExitCode::Refused, m_lastRefusal);
+        return;
+    }
+    // Many commands have no answer: once the controller's reply time has
+    // passed, say so and go.
+    m_tick.setSingleShot(true);
+    m_tick.setInterval(m_session->options().replyTimeoutMs);
+    m_connections << connect(&m_tick, &QTimer::timeout, this, [this] {
+        emit output(m_json ? json({{QStringLiteral("sent"), m_command.text}, {QStringLiteral("answer"), QJsonValue()}})
+                           : tr("(no answer)"));
+        finish(ExitCode::Ok);
+    });
+    m_tick.start();
+}
+
+void ConsoleRunner::startConfig()
+{
+    m_session->setPolling(false);
+    const int reg = m_command.reg;
+    const bool writing = m_command.kind == ConsoleCommand::Kind::ConfigSet;
+    m_connections << connect(m_session, &RotatorSession::configValueReceived, this,
+                             [this, reg, writing](int answered, const QString &value) {
+                                 if (answered != reg)
+                                     return;
+                                 if (m_json)
+                                     emit output(json({{QStringLiteral("register"), reg}, {QStringLiteral("value"), value}}));
+                                 else
+                                     emit output(QStringLiteral("CR%1 %2").arg(reg).arg(value));
+                                 const bool same = !writing || value.toDouble() == m_command.text.toDouble()
+                                                   || value == m_command.text;
+                                 finish(same ? ExitCode::Ok : ExitCode::Failed,
+                                        same ? QString() : tr("wrote %1, read back %2").arg(m_command.text, value));
+                             });
+    m_connections << connect(m_session, &RotatorSession::requestFailed, this,
+                             [this](const QString &request, const QString &reason) {
+                                 finish(ExitCode::Failed, tr("%1: %2").arg(request, reason));
+                             });
+    if (writing && !m_session->writeConfig(reg, m_command.text)) {
+        finish(ExitCode::Refused, m_lastRefusal);
+        return;
+    }
+    if (!m_session->readConfig(reg))
+        finish(ExitCode::Refused, m_lastRefusal);
+}
+
+void ConsoleRunner::interrupt()
+{
+    if (!m_running)
+        return;
+    const bool moving = m_command.wait && m_started;
+    if (m_homing && m_homing->isRunning()) {
+        m_homing->cancel(); // stops the rotator, then reports cancelled
+        return;
+    }
+    if (moving) {
+        m_session->stop();
+        finishWhenSent(ExitCode::Failed, tr("interrupted; the rotator was stopped"));
+        return;
+    }
+    finish(ExitCode::Ok);
+}
+
+void ConsoleRunner::printPosition(const char *event)
+{
+    const double az = m_session->azimuth(), el = m_session->elevation();
+    if (m_json) {
+        emit output(json({{QStringLiteral("event"), QString::fromLatin1(event)},
+                          {QStringLiteral("az"), az},
+                          {QStringLiteral("el"), el},
+                          {QStringLiteral("stale"), m_session->positionStale()}}));
+    } else {
+        emit output(QStringLiteral("az %1 el %2%3")
+                        .arg(az, 0, 'f', 2)
+                        .arg(el, 0, 'f', 2)
+                        .arg(m_session->positionStale() ? tr(" (stale)") : QString()));
+    }
+}
+
+void ConsoleRunner::finishWhenSent(ExitCode code, const QString &problemText)
+{
+    // What the command wrote must leave before the program may end.
+    transport::Link *link = m_session->link();
+    QIODevice *device = link ? link->device() : nullptr;
+    if (!device || device->bytesToWrite() == 0) {
+        finish(code, problemText);
+        return;
+    }
+    m_deadline.stop();
+    m_connections << connect(device, &QIODevice::bytesWritten, this, [this, device, code, problemText] {
+        if (device->bytesToWrite() == 0)
+            finish(code, problemText);
+    });
+    m_tick.setSingleShot(true);
+    m_connections << connect(&m_tick, &QTimer::timeout, this,
+                             [this] { finish(ExitCode::LinkFailure, tr("the command did not leave the link")); });
+    m_tick.start(kSendGiveUpMs);
+}
+
+void ConsoleRunner::finish(ExitCode code, const QString &problemText)
+{
+    if (!m_running)
+        return;
+    m_running = false;
+    m_deadline.stop();
+    m_tick.stop();
+    for (const QMetaObject::Connection &c : std::as_const(m_connections))
+        disconnect(c);
+    m_connections.clear();
+    if (!problemText.isEmpty())
+        emit problem(m_json ? json({{QStringLiteral("error"), problemText}, {QStringLiteral("code"), int(code)}})
+                            : problemText);
+    if (m_homing) {
+        m_homing->disconnect(this);
+        m_homing.release()->deleteLater();
+    }
+    m_session->setPolling(true);
+    emit finished(code);
+}
+
+} // namespace slew::console

@@ -1,0 +1,215 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// slewctl as a user runs it: the real binary against the built-in
+// simulator, slew-sim over TCP and slew-sim's pseudo-terminal; exit codes
+// for a refused move, a lost link and a bad argument; JSON for scripts; the
+// prompt fed from a pipe; Ctrl-C during a watch and during a --wait move.
+
+#include "../sim/slewsimprocess.h"
+
+#include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <csignal>
+
+namespace {
+
+struct Run {
+    int exitCode = -1;
+    QString out;
+    QString err;
+};
+
+Run slewctl(const QStringList &arguments, const QByteArray &input = {}, int timeoutMs = 60000)
+{
+    QProcess p;
+    QSignalSpy finished(&p, &QProcess::finished);
+    p.start(qEnvironmentVariable("SLEWCTL_BIN"), arguments);
+    // Written before the process runs, the input waits in QProcess's buffer.
+    if (!input.isEmpty())
+        p.write(input);
+    p.closeWriteChannel();
+    if (!finished.wait(timeoutMs)) {
+        p.kill();
+        finished.wait(5000);
+        return {};
+    }
+    Run r;
+    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+    r.out = QString::fromUtf8(p.readAllStandardOutput());
+    r.err = QString::fromUtf8(p.readAllStandardError());
+    return r;
+}
+
+// "az 12.34 el 5.67" -> {12.34, 5.67}
+std::pair<double, double> position(const QString &line)
+{
+    const QStringList w = line.split(u' ');
+    return {w.value(1).toDouble(), w.value(3).toDouble()};
+}
+
+} // namespace
+
+class SlewctlTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void everyLinkKind_data();
+    void everyLinkKind();
+    void refusedMoveSendsNothing();
+    void exitCodesTellFailuresApart();
+    void jsonIsOneObjectALine();
+    void promptReadsAPipe();
+    void interruptEndsAWatch();
+    void interruptStopsAWaitingMove();
+
+private:
+    QTemporaryDir m_dir;
+    SlewSimProcess m_tcpSim;
+    SlewSimProcess m_ptySim;
+};
+
+void SlewctlTest::initTestCase()
+{
+    QVERIFY(!qEnvironmentVariable("SLEWCTL_BIN").isEmpty());
+    QVERIFY2(m_tcpSim.start({"--listen", "127.0.0.1:0", "--log-received", m_dir.filePath("tcp.log")}),
+             qPrintable(m_tcpSim.error()));
+    QVERIFY2(m_ptySim.start({"--pty", m_dir.filePath("rotator"), "--dialect", "easycomm2"}), qPrintable(m_ptySim.error()));
+}
+
+void SlewctlTest::everyLinkKind_data()
+{
+    QTest::addColumn<QStringList>("link");
+    QTest::newRow("sim:") << QStringList{"sim:"};
+    QTest::newRow("tcp") << QStringList{QStringLiteral("tcp://127.0.0.1:%1").arg(m_tcpSim.port())};
+    QTest::newRow("pty") << QStringList{"--dialect", "easycomm2", "serial:" + m_dir.filePath("rotator")};
+}
+
+void SlewctlTest::everyLinkKind()
+{
+    QFETCH(QStringList, link);
+
+    Run get = slewctl(link + QStringList{"get"});
+    QCOMPARE(get.exitCode, 0);
+    QVERIFY2(get.out.startsWith("az "), qPrintable(get.out + get.err));
+
+    // A short move, waited for: it ends where it was sent.
+    const auto [az0, el0] = position(get.out.trimmed());
+    const double az = az0 < 20 ? az0 + 8 : az0 - 8, el = el0 < 20 ? el0 + 4 : el0 - 4;
+    Run move = slewctl(link + QStringList{"goto", QString::number(az), QString::number(el), "--wait"});
+    QCOMPARE(move.exitCode, 0);
+    const QStringList lines = move.out.trimmed().split(u'\n');
+    QVERIFY2(lines.first().startsWith("moving to"), qPrintable(move.out));
+    const auto [azEnd, elEnd] = position(lines.last());
+    QVERIFY2(std::abs(azEnd - az) <= 1.0 && std::abs(elEnd - el) <= 1.0, qPrintable(move.out));
+
+    // The controller's answer to a raw line.
+    Run raw = slewctl(link + QStringList{"raw", "AZ EL"});
+    QCOMPARE(raw.exitCode, 0);
+    QVERIFY2(raw.out.startsWith("AZ"), qPrintable(raw.out + raw.err));
+
+    Run stop = slewctl(link + QStringList{"stop"});
+    QCOMPARE(stop.exitCode, 0);
+    QCOMPARE(stop.out, QString("stopped\n"));
+}
+
+void SlewctlTest::refusedMoveSendsNothing()
+{
+    const QString link = QStringLiteral("tcp://127.0.0.1:%1").arg(m_tcpSim.port());
+    auto received = [&] {
+        QFile f(m_dir.filePath("tcp.log"));
+        return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+    };
+    Run far = slewctl({link, "goto", "500", "10"});
+    QCOMPARE(far.exitCode, 4);
+    QVERIFY2(far.err.contains("outside"), qPrintable(far.err));
+    Run raw = slewctl({link, "raw", "AZ500.0 EL10.0"});
+    QCOMPARE(raw.exitCode, 4);
+    Run reg = slewctl({link, "config", "set", "1", "0.9"});
+    QCOMPARE(reg.exitCode, 0);
+    QCOMPARE(reg.out, QString("CR1 0.900\n"));
+    QVERIFY(!received().contains("AZ500"));
+    QVERIFY(received().contains("CW1,0.9") || received().contains("CW1 0.9") || received().contains("CW1"));
+}
+
+void SlewctlTest::exitCodesTellFailuresApart()
+{
+    QCOMPARE(slewctl({"sim:", "goto", "10"}).exitCode, 2);
+    QCOMPARE(slewctl({"sim:", "fly"}).exitCode, 2);
+    QCOMPARE(slewctl({}).exitCode, 2);
+    QCOMPARE(slewctl({"--dialect", "morse", "sim:", "get"}).exitCode, 2);
+    // Nothing listens on port 1.
+    Run none = slewctl({"tcp://127.0.0.1:1", "get"});
+    QCOMPARE(none.exitCode, 3);
+    QVERIFY2(none.err.contains("127.0.0.1:1"), qPrintable(none.err));
+    QCOMPARE(slewctl({"sim:", "goto", "0", "-30"}).exitCode, 4);
+}
+
+void SlewctlTest::jsonIsOneObjectALine()
+{
+    Run get = slewctl({"--json", "sim:?start_az=123&start_el=45", "get"});
+    QCOMPARE(get.exitCode, 0);
+    QJsonParseError error;
+    const QJsonObject o = QJsonDocument::fromJson(get.out.toUtf8(), &error).object();
+    QCOMPARE(error.error, QJsonParseError::NoError);
+    QCOMPARE(o.value("event").toString(), QString("position"));
+    QCOMPARE(o.value("az").toDouble(), 123.0);
+    QCOMPARE(o.value("el").toDouble(), 45.0);
+
+    Run refused = slewctl({"--json", "sim:", "goto", "400", "0"});
+    QCOMPARE(refused.exitCode, 4);
+    const QJsonObject e = QJsonDocument::fromJson(refused.err.toUtf8()).object();
+    QCOMPARE(e.value("code").toInt(), 4);
+    QVERIFY(e.value("error").toString().contains("outside"));
+}
+
+void SlewctlTest::promptReadsAPipe()
+{
+    Run r = slewctl({"sim:?start_az=10&start_el=20"}, "get\n\nraw 'VE'\nnonsense\nconfig get 2\nquit\nget\n");
+    QCOMPARE(r.exitCode, 2); // the first failure's code: 'nonsense'; nothing after 'quit' runs
+    const QStringList lines = r.out.trimmed().split(u'\n');
+    QCOMPARE(lines.size(), 3);
+    QCOMPARE(lines[0], QString("az 10.00 el 20.00"));
+    QVERIFY2(lines[1].startsWith("VE"), qPrintable(r.out));
+    QVERIFY2(lines[2].startsWith("CR2 "), qPrintable(r.out));
+    QVERIFY(r.err.contains("unknown command 'nonsense'"));
+}
+
+void SlewctlTest::interruptEndsAWatch()
+{
+    QProcess p;
+    p.start(qEnvironmentVariable("SLEWCTL_BIN"), {"sim:", "watch", "--interval", "0.1"});
+    QByteArray out;
+    QVERIFY(QTest::qWaitFor([&] { return (out += p.readAllStandardOutput()).count('\n') >= 3; }, 20000));
+    QSignalSpy finished(&p, &QProcess::finished);
+    ::kill(pid_t(p.processId()), SIGINT);
+    QVERIFY(finished.wait(10000));
+    QCOMPARE(p.exitCode(), 0);
+}
+
+void SlewctlTest::interruptStopsAWaitingMove()
+{
+    const QString link = QStringLiteral("tcp://127.0.0.1:%1").arg(m_tcpSim.port());
+    QProcess p;
+    p.start(qEnvironmentVariable("SLEWCTL_BIN"), {link, "goto", "300", "60", "--wait"});
+    QByteArray out;
+    QVERIFY(QTest::qWaitFor([&] { return (out += p.readAllStandardOutput()).contains("moving to"); }, 20000));
+    auto received = [&] {
+        QFile f(m_dir.filePath("tcp.log"));
+        return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+    };
+    const qsizetype stopsBefore = received().count("SA SE");
+    QSignalSpy finished(&p, &QProcess::finished);
+    ::kill(pid_t(p.processId()), SIGINT);
+    QVERIFY(finished.wait(10000));
+    QCOMPARE(p.exitCode(), 1);
+    QVERIFY(p.readAllStandardError().contains("interrupted; the rotator was stopped"));
+    QTRY_VERIFY(received().count("SA SE") > stopsBefore);
+}
+
+QTEST_GUILESS_MAIN(SlewctlTest)
+#include "tst_slewctl.moc"
