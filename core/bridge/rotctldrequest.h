@@ -2,7 +2,7 @@
 // One line of Hamlib's rotctld network protocol, read and answered.
 //
 // The forms Gpredict, the SatNOGS client and Hamlib's own netrotctl send
-// (../shared/PROTOCOL-NOTES.md): short commands (`p`, `P 10 20`, `S`, `K`,
+// (docs/protocol.md lists what they send): short commands (`p`, `P 10 20`, `S`, `K`,
 // `R 1`, `M 16 50`, `_`, `q`), long ones (`\get_pos`, `\set_pos 10 20`,
 // `\dump_state`), and the extended form: a leading `+` answers with a header
 // and key: value lines, any other leading punctuation (`;`, `|`, `,`) also

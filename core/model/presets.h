@@ -1,5 +1,5 @@
 #pragma once
-// Named az/el positions the operator returns to (seeds/003's presets, with
+// Named az/el positions the operator returns to (the Micro-2g program's presets, with
 // names and elevation): stored from the current position, recalled with one
 // click or a number key 1..9.
 

@@ -28,7 +28,7 @@ struct RotatorProfile {
     RotatorLimits limits;
     double parkAz = 0.0;
     double parkEl = 90.0;
-    bool southStop = false;          // the azimuth stop is at south (seeds/003 set-up)
+    bool southStop = false;          // the azimuth stop is at south (Micro-2g program set-up)
     std::optional<PidGains> azGains; // as last written with CW1..CW3
     std::optional<PidGains> elGains; // CW4..CW6
     double deadbandDeg = 0.5;        // a remote target this close to the last one is not re-sent

@@ -64,7 +64,7 @@ bool dialectSupports(Dialect d, Op op)
         case Op::StopAzimuth:   // A
         case Op::StopElevation: // E
         case Op::Speed:         // X1..X4
-        case Op::KeepAlive:     // ?  (seeds/004)
+        case Op::KeepAlive:     // ?  (easycom library)
             return true;
         default:
             return false;

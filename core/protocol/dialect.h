@@ -14,7 +14,7 @@ namespace slew::protocol {
 enum class Dialect : std::uint8_t {
     Easycomm1, // one line: AZ EL UP mode DN mode; no feedback (Hamlib model 201)
     Easycomm2, // two-letter commands, one decimal, ML/MR/MU/MD (Hamlib model 202)
-    Easycomm3, // the seeds/000 derivative: two decimals, VL..VD, CR/CW, GS per axis, \?ENC
+    Easycomm3, // the Easycomm III derivative: two decimals, VL..VD, CR/CW, GS per axis, \?ENC
     SatNogs,   // SatNOGS firmware: `CR n` answered `n,value`, VE, IP0..8 (Hamlib model 204)
     Gs232A,    // Yaesu GS-232A: W/M/C2/S/A/E/R/L/U/D/X, position `+0aaa+0eee` (Hamlib model 601)
     Gs232B,    // Yaesu GS-232B: the same commands, position `AZ=aaa  EL=eee` (Hamlib model 603)

@@ -14,7 +14,7 @@
 
 namespace slew::protocol {
 
-// Every mnemonic of seeds/001 (Easycomm I, II, III) and seeds/000 (the
+// Every mnemonic of the Easycomm command reference (Easycomm I, II, III) and the Easycomm III derivative (the
 // Easycomm III derivative), plus the replies real devices send.
 enum class Op : std::uint8_t {
     Invalid,       // unreadable input: text holds the raw bytes, reason says why

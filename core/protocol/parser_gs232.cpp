@@ -1,4 +1,4 @@
-// The GS-232 reader: one token of GS-232A/B (seeds/003, seeds/004) to one
+// The GS-232 reader: one token of GS-232A/B (the Micro-2g program, the easycom library) to one
 // or two messages (Parser::classifyGs232): `C2` asks for both axes, `S` stops
 // both, `+0aaa+0eee` reports both.
 
@@ -67,13 +67,13 @@ Parser::Classified Parser::classifyGs232(QByteArrayView t) const
         }
     }
     switch (first) {
-    case 'A': // Aaaa (seeds/004's variant): azimuth
+    case 'A': // Aaaa (the easycom library's variant): azimuth
     case 'M': // Maaa: azimuth
     case 'W': // Waaa eee: the elevation is the next token
         if (!degrees(rest, &a))
             return one(Message::invalid(t, "malformed GS-232 angle"));
         return one(Message::number(Op::Azimuth, a));
-    case 'E': // Eeee (seeds/004's variant): elevation
+    case 'E': // Eeee (the easycom library's variant): elevation
         if (!degrees(rest, &a))
             return one(Message::invalid(t, "malformed GS-232 angle"));
         return one(Message::number(Op::Elevation, a));

@@ -15,7 +15,7 @@ class SimClock : public QObject {
 public:
     enum class Mode { Manual, WallClock };
 
-    // seeds/000's simulator steps every 25 ms; the physics below substeps at 1 ms.
+    // the Easycomm III derivative's simulator steps every 25 ms; the physics below substeps at 1 ms.
     static constexpr int tickMilliseconds = 25;
 
     explicit SimClock(Mode mode, QObject *parent = nullptr);

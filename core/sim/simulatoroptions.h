@@ -23,7 +23,7 @@ struct SimulatorOptions {
     AxisFaults elevationFaults;
     LinkFaults link;
     protocol::Dialect dialect = protocol::Dialect::Easycomm3;
-    bool unsolicited = false; // push changed fields as seeds/000's controller does
+    bool unsolicited = false; // push changed fields as the Easycomm III derivative's controller does
     int baud = 0;             // 0: bytes move as fast as the link carries them
     bool manualClock = false; // time moves only when advanced (tests)
 };

@@ -1,6 +1,6 @@
 #pragma once
 // Step 3: how far the rotator turns (360°, or up to 450° with overlap; stop
-// at north or south, as seeds/003 sets rotators up), the elevation range,
+// at north or south, as the Micro-2g program sets rotators up), the elevation range,
 // and a short jog the operator confirms moved the right way.
 
 #include <QWizardPage>

@@ -37,7 +37,7 @@ void operator delete(void *p, std::size_t) noexcept
 
 static QByteArray traffic(qsizetype bytes)
 {
-    // What a polled seeds/000 controller sends back, plus SatNOGS forms,
+    // What a polled Easycomm III derivative controller sends back, plus SatNOGS forms,
     // Easycomm I lines and a little garbage.
     static const char *lines[] = {
         "AZ123.45 EL45.67\n", "AZ10.0\nEL20.0\n", "GS1030\n",       "GE1\n",
