@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `slew --tune URI`: argument parsing and wiring; the work is in core/tuning.
 
 #include "slew_identity.h"
@@ -65,8 +66,8 @@ int runTune(int argc, char **argv)
     const QCommandLineOption profile(QStringLiteral("profile"),
                                      QStringLiteral("A rotator profile (JSON) for the limits and dialect."),
                                      QStringLiteral("file"));
-    const QCommandLineOption step(QStringLiteral("step"), QStringLiteral("Step size in degrees (default 4)."),
-                                  QStringLiteral("degrees"), QStringLiteral("4"));
+    const QCommandLineOption step(QStringLiteral("step"), QStringLiteral("Step size in degrees (default 2)."),
+                                  QStringLiteral("degrees"), QStringLiteral("2"));
     parser.addOptions({tune, axis, apply, dialect, profile, step});
     parser.process(app);
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Slew's rotctld-compatible server, on a session connected to the in-process
 // simulator, driven by Hamlib's real rotctl (model 2, netrotctl) and by raw
 // sockets: position, stop, park, reset, move, info, dump_state; one-write
@@ -48,7 +49,7 @@ void RotctldServerTest::init()
     session = new session::RotatorSession;
     server = new bridge::RotctldServer(session);
     model::RotatorProfile p;
-    p.uri = "sim:";
+    p.uri = "sim:?model=satnogs"; // a fast rotator: these cases are about the protocol
     QVERIFY(connectSession(p));
     QString error;
     QVERIFY2(server->listen(QHostAddress::LocalHost, 0, &error), qPrintable(error));
@@ -203,7 +204,7 @@ void RotctldServerTest::deadbandSuppressesRepeatedTargets()
 void RotctldServerTest::overlapPicksTheShortestLegalPath()
 {
     model::RotatorProfile p;
-    p.uri = "sim:?az_max=450&el_max=180";
+    p.uri = "sim:?model=satnogs&az_max=450&el_max=180";
     p.limits.azMax = 450;
     p.limits.elMax = 180;
     QVERIFY(connectSession(p));
