@@ -208,6 +208,11 @@ bool RotatorSession::home()
         return refuse(tr("%1 has no RESET (homing) command").arg(protocol::dialectName(m_profile.dialect)));
     m_jogSpeed = {0.0, 0.0};
     writeMove(protocol::encodeLine({Message::query(Op::Reset)}, m_profile.dialect));
+    // Homing ends at the lower limits: that is where the rotator is going
+    // now, not the last go-to.
+    m_targetAz = m_profile.limits.azMin;
+    m_targetEl = m_profile.limits.elMin;
+    emit targetChanged(m_targetAz, m_targetEl);
     return true;
 }
 
