@@ -174,6 +174,10 @@ void AxisModel::step(double dt)
     if (m_errors != 0)
         powered = false; // a fault found this step cut the drive too
     integrate(drive, powered, dt);
+    if (!powered)
+        m_effort = 0.0;
+    else if (!m_faults.jam)
+        m_effort = deliveredEffort(drive);
 
     if (m_mode == DriveMode::Homing && m_errors == 0) {
         m_homingTravel += std::fabs(m_velocity) * dt;
@@ -193,6 +197,23 @@ void AxisModel::step(double dt)
             fail(AxisError::Homing);
         }
     }
+}
+
+double AxisModel::deliveredEffort(double drive) const
+{
+    // At the driver's speed cap or on its ramp, the loop may ask for full
+    // torque, but the driver only lets through what holds the speed or the
+    // ramp: friction at cruise, a little more while it speeds up. That is
+    // the motor's load (IP5/IP6) and what warms it, not the loop's demand.
+    const bool capped = std::fabs(m_velocity) >= m_plant.maxSpeed - 1e-9
+        || std::fabs(m_acceleration) >= m_plant.maxAcceleration - 1e-6;
+    if (!capped)
+        return drive;
+    const double needed = m_plant.inertia * m_acceleration + m_plant.viscousFriction * m_velocity
+        + m_plant.coulombFriction * sign(m_velocity);
+    if (sign(needed) != sign(drive))
+        return drive;
+    return sign(drive) * std::min(std::fabs(drive), std::fabs(needed));
 }
 
 double AxisModel::positionDrive(double dt)

@@ -95,6 +95,7 @@ private:
     double sampleEncoder();
     double positionDrive(double dt);
     double velocityDrive(double target, double dt);
+    double deliveredEffort(double drive) const;
     void integrate(double drive, bool powered, double dt);
     void move(double dt); // motor, gear play and hard stops at the current speed
     void detectFaults(double drive, double previousReading, double dt);

@@ -254,6 +254,10 @@ private slots:
         r.advanceBy(3.0);
         QVERIFY(std::fabs(r.axis(Axis::Azimuth).velocity() - 6.2) < 0.01);
         QVERIFY(std::fabs(r.axis(Axis::Elevation).velocity() - 2.7) < 0.01);
+        // At the speed cap the motor only works against friction: a long
+        // slew is not a long stall.
+        QVERIFY2(r.readInput(5).value() < 15.0, qPrintable(QString::number(r.readInput(5).value())));
+        QVERIFY(r.readInput(5).value() > 0.0);
     }
 
     void stopFromFullSpeedHoldsWithinADegree_data()
