@@ -116,7 +116,7 @@ private slots:
         QCOMPARE(wizard.currentId(), int(SetupWizard::TuningPageId));
         auto *accept = find<QPushButton>(wizard, "accept");
         QTest::mouseClick(find<QPushButton>(wizard, "tune"), Qt::LeftButton);
-        QTRY_VERIFY_WITH_TIMEOUT(accept->isEnabled(), 60000);
+        QTRY_VERIFY2_WITH_TIMEOUT(accept->isEnabled(), qPrintable(find<QLabel>(wizard, "tuningStatus")->text()), 60000);
         QVERIFY(!canGoOn(wizard));
         QVERIFY(find<QLabel>(wizard, "beforeFigures")->text().contains(QStringLiteral("overshoot")));
         QVERIFY(find<QLabel>(wizard, "afterFigures")->text().contains(QStringLiteral("settling time")));
