@@ -26,10 +26,10 @@ SetupWizard::SetupWizard(session::RotatorSession *session, QWidget *parent)
     setPage(ParkPageId, new ParkPage(this));
     setPage(SummaryPageId, new SummaryPage(this));
     // Big enough for the fullest page (tuning, with a chart and both sets of
-    // figures, whose room the page keeps from the start) with some to spare;
-    // the layouts keep it from being made smaller than they need.
-    setMinimumSize(minimumSizeHint());
-    resize(minimumSizeHint().expandedTo(QSize(860, 720)));
+    // figures, whose room the page keeps from the start) with some to spare.
+    // QWizard keeps the dialog from being made smaller than its pages'
+    // layouts need.
+    resize(QSize(860, 720).expandedTo(minimumSizeHint()));
 }
 
 void SetupWizard::reject()
