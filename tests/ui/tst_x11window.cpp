@@ -18,6 +18,7 @@
 #include <QChart>
 #include <QChartView>
 #include <QCheckBox>
+#include <QDir>
 #include <QGraphicsScene>
 #include <QGraphicsTextItem>
 #include <QGuiApplication>
@@ -128,6 +129,8 @@ private slots:
                 QVERIFY2(time.match(t).hasMatch(), qPrintable(all));
             QCOMPARE(QSet<QString>(labels.values.begin(), labels.values.end()).size(), labels.values.size());
         }
+        QDir().mkpath(QStringLiteral(SLEW_SCREENSHOT_DIR));
+        QVERIFY(f.window->grab().save(QStringLiteral(SLEW_SCREENSHOT_DIR "/main-window-x11.png")));
     }
 
     void everyWizardPageFitsItsDefaultSize()
@@ -187,6 +190,9 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(find<QPushButton>(wizard, "accept")->isEnabled(), 60000);
         QVERIFY(find<QLabel>(wizard, "beforeFigures")->text().contains(QStringLiteral("overshoot")));
         PAGE_IS_CLEAN();
+        // For a person to look at: the page as X11 drew it.
+        QDir().mkpath(QStringLiteral(SLEW_SCREENSHOT_DIR));
+        QVERIFY(wizard.grab().save(QStringLiteral(SLEW_SCREENSHOT_DIR "/wizard-tuning-x11.png")));
         QTest::mouseClick(find<QPushButton>(wizard, "accept"), Qt::LeftButton);
         QTRY_VERIFY_WITH_TIMEOUT(next(), 5000);
         wizard.next();
