@@ -73,7 +73,8 @@ int runTune(int argc, char **argv)
     else
         return fail(QStringLiteral("--axis must be az, el or both, not '%1'").arg(parser.value(axis)));
     bool stepOk = true;
-    const double stepDegrees = parser.isSet(step) ? parser.value(step).toDouble(&stepOk) : 4.0;
+    const double stepDegrees =
+        parser.isSet(step) ? parser.value(step).toDouble(&stepOk) : slew::tuning::TuningSettings{}.amplitude;
     if (!stepOk || !(stepDegrees >= 0.5 && stepDegrees <= 30.0))
         return fail(QStringLiteral("--step must be 0.5 to 30 degrees, not '%1'").arg(parser.value(step)));
 

@@ -1,10 +1,22 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "alarmmonitor.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace slew::ui {
 
 using session::RotatorSession;
+
+namespace {
+
+// Slower than this (deg/s) an axis is at rest: well below the slowest
+// rotator's speed, well above encoder jitter.
+constexpr double kMovingSpeed = 0.2;
+// Travel between two telemetry reads that counts as having moved.
+constexpr double kMovedDegrees = 0.2;
+
+} // namespace
 
 AlarmMonitor::AlarmMonitor(RotatorSession *session, QObject *parent) : QObject(parent), m_session(session)
 {
@@ -23,10 +35,7 @@ AlarmMonitor::AlarmMonitor(RotatorSession *session, QObject *parent) : QObject(p
         setAlarm(QStringLiteral("gs"), !axes.isEmpty(), tr("Axis error (GS): %1").arg(axes.join(QStringLiteral(", "))));
     });
     connect(session, &RotatorSession::telemetryChanged, this, &AlarmMonitor::onTelemetry);
-    connect(session, &RotatorSession::positionChanged, this, [this](double, double, bool stale) {
-        setAlarm(QStringLiteral("stale"), stale && m_state == RotatorSession::State::Connected,
-                 tr("Position is stale: the controller stopped answering"));
-    });
+    connect(session, &RotatorSession::positionChanged, this, &AlarmMonitor::onPosition);
     connect(session, &RotatorSession::alarmReceived, this,
             [this](const QString &text) { log(Severity::Alarm, tr("Controller alarm: %1").arg(text)); });
     connect(session, &RotatorSession::commandRefused, this,
@@ -102,26 +111,90 @@ void AlarmMonitor::onState(RotatorSession::State state, const QString &detail)
         for (const QString &key : {QStringLiteral("stale"), QStringLiteral("ge"), QStringLiteral("gs"),
                                    QStringLiteral("endstop-az"), QStringLiteral("endstop-el")})
             setAlarm(key, false, {});
+        setResting(0, {});
+        setResting(1, {});
+        m_lastPositionMs = -1;
+        m_lastSwitches[0] = m_lastSwitches[1] = -1;
         break;
     }
 }
 
+void AlarmMonitor::onPosition(double az, double el, bool stale)
+{
+    setAlarm(QStringLiteral("stale"), stale && m_state == RotatorSession::State::Connected,
+             tr("Position is stale: the controller stopped answering"));
+    if (stale)
+        return;
+    const qint64 now = QDateTime::currentMSecsSinceEpoch();
+    if (m_lastPositionMs >= 0 && now > m_lastPositionMs) {
+        const double seconds = double(now - m_lastPositionMs) / 1000.0;
+        m_speed[0] = (az - m_lastPosition[0]) / seconds;
+        m_speed[1] = (el - m_lastPosition[1]) / seconds;
+    }
+    m_lastPosition[0] = az;
+    m_lastPosition[1] = el;
+    m_lastPositionMs = now;
+}
+
+QString AlarmMonitor::resting() const
+{
+    QStringList parts;
+    for (const QString &r : m_resting) {
+        if (!r.isEmpty())
+            parts << r;
+    }
+    return parts.join(QStringLiteral(" · "));
+}
+
+void AlarmMonitor::setResting(int axis, const QString &text)
+{
+    if (m_resting[axis] == text)
+        return;
+    m_resting[axis] = text;
+    if (!text.isEmpty())
+        log(Severity::Info, text);
+    emit restingChanged(resting());
+}
+
 void AlarmMonitor::onTelemetry(const session::Telemetry &t)
 {
-    auto describe = [this](int bits, bool az) {
-        if (bits <= 0)
-            return QString();
-        QStringList which;
-        if (bits & 1)
-            which << (az ? tr("counter-clockwise") : tr("lower"));
-        if (bits & 2)
-            which << (az ? tr("clockwise") : tr("upper"));
-        return which.join(QStringLiteral(" and "));
-    };
-    const QString az = describe(t.azEndStop, true), el = describe(t.elEndStop, false);
-    // Resting on a switch (parked at the stop) is normal enough to warn, not alarm.
-    setAlarm(QStringLiteral("endstop-az"), !az.isEmpty(), tr("Azimuth at its %1 end stop").arg(az), Severity::Warning);
-    setAlarm(QStringLiteral("endstop-el"), !el.isEmpty(), tr("Elevation at its %1 end stop").arg(el), Severity::Warning);
+    checkEndStop(0, t.azEndStop, t.azVelocity);
+    checkEndStop(1, t.elEndStop, t.elVelocity);
+}
+
+void AlarmMonitor::checkEndStop(int axis, int bits, double reportedSpeed)
+{
+    const bool az = axis == 0;
+    const QString key = az ? QStringLiteral("endstop-az") : QStringLiteral("endstop-el");
+    QStringList which;
+    if (bits > 0 && (bits & 1))
+        which << (az ? tr("counter-clockwise") : tr("lower"));
+    if (bits > 0 && (bits & 2))
+        which << (az ? tr("clockwise") : tr("upper"));
+    const int before = m_lastSwitches[axis];
+    const double movedBy = m_lastPosition[axis] - m_positionAtLastSwitches[axis];
+    m_lastSwitches[axis] = std::max(bits, 0);
+    m_positionAtLastSwitches[axis] = m_lastPosition[axis];
+    if (which.isEmpty()) {
+        setAlarm(key, false, {});
+        setResting(axis, {});
+        return;
+    }
+    const QString where = which.join(QStringLiteral(" and "));
+    const QString name = az ? tr("Azimuth") : tr("Elevation");
+    // Moving into the switch, or the switch tripped since the last look while
+    // the axis travelled towards it: the drive ran (or was sent) into its
+    // stop. A switch found set at rest is where many rotators park.
+    const double speed = std::isfinite(reportedSpeed) ? reportedSpeed : m_speed[axis];
+    const int tripped = before < 0 ? 0 : bits & ~before;
+    const bool into = ((bits & 1) && speed < -kMovingSpeed) || ((bits & 2) && speed > kMovingSpeed)
+        || ((tripped & 1) && movedBy < -kMovedDegrees) || ((tripped & 2) && movedBy > kMovedDegrees);
+    if (into || isActive(key)) {
+        setResting(axis, {});
+        setAlarm(key, true, tr("%1 ran into its %2 end stop").arg(name, where), Severity::Warning);
+    } else {
+        setResting(axis, tr("%1 rests on its %2 limit switch").arg(name, where));
+    }
 }
 
 } // namespace slew::ui

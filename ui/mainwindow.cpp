@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "mainwindow.h"
 
 #include "alarmbanner.h"
@@ -105,6 +106,12 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
     setCentralWidget(central);
 
     connect(m_alarms, &AlarmMonitor::alarmsChanged, m_banner, &AlarmBanner::showAlarms);
+    // Resting on a limit switch is a state: a quiet line at the foot of the
+    // window, not the banner.
+    auto *resting = new QLabel;
+    resting->setObjectName(QStringLiteral("limitSwitchState"));
+    statusBar()->addPermanentWidget(resting);
+    connect(m_alarms, &AlarmMonitor::restingChanged, resting, &QLabel::setText);
     connect(m_connection, &ConnectionBar::disconnectRequested, m_alarms, &AlarmMonitor::expectDisconnect);
     connect(m_alarms, &AlarmMonitor::eventLogged, m_log, &EventLog::addEvent);
     connect(m_alarms, &AlarmMonitor::eventLogged, this,

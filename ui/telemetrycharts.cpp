@@ -1,4 +1,7 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "telemetrycharts.h"
+
+#include "chartaxisticks.h"
 
 #include <QChart>
 #include <QChartView>
@@ -220,18 +223,18 @@ void TelemetryCharts::redrawPanel(Panel &panel, qint64 from, qint64 to)
         }
         lines.append(std::move(points));
     }
-    if (!(lo <= hi)) {
-        lo = 0;
-        hi = 1;
-    }
     // A range change lays out every line of the chart again. Emptying the
     // lines first, then setting the axes, then filling the lines lays each
     // one out once: this order is what keeps a 24-hour redraw fast.
     for (Plotted &pl : panel.plotted)
         pl.line->clear();
-    const double pad = std::max(0.5, (hi - lo) * 0.08);
-    panel.value->setRange(lo - pad, hi + pad);
-    panel.value->applyNiceNumbers(); // round ticks an operator can read at a glance
+    // Whole-number steps as many as the height has room for: a flat line
+    // (a rotator at rest) keeps readable labels, and no label repeats.
+    const AxisTicks ticks = wholeNumberTicks(lo, hi, ticksForHeight(panel.chart->plotArea().height()));
+    panel.value->setRange(ticks.min, ticks.max);
+    panel.value->setTickType(QValueAxis::TicksDynamic);
+    panel.value->setTickAnchor(ticks.firstTick);
+    panel.value->setTickInterval(ticks.step);
     panel.time->setRange(QDateTime::fromMSecsSinceEpoch(from), QDateTime::fromMSecsSinceEpoch(to));
     for (qsizetype i = 0; i < lines.size(); ++i)
         panel.plotted[i].line->replace(lines[i]);

@@ -116,7 +116,7 @@ ProgramMode makeTuneMode()
          QStringLiteral("name"),
          QStringLiteral("easycomm3 (default) or satnogs: the dialects with the CR and CW registers.")},
         profileOption(),
-        {{QStringLiteral("step")}, QStringLiteral("degrees"), QStringLiteral("Step size, 0.5 to 30 (default 4).")},
+        {{QStringLiteral("step")}, QStringLiteral("degrees"), QStringLiteral("Step size, 0.5 to 30 (default 2).")},
     };
     return mode;
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "headlessstation.h"
 
 #include "rotctldserver.h"
@@ -81,6 +82,13 @@ void HeadlessStation::shutdown(const QString &why)
         m_server->close();
     if (m_session->stop())
         log(tr("rotator stopped"));
+    if (m_session->stopHoldPending()) {
+        // The hold that brakes a free-running drive follows the stop in a
+        // moment; leaving before it would let such a drive coast on.
+        connect(m_session.get(), &session::RotatorSession::stopHoldSent, this, &HeadlessStation::finishWhenFlushed,
+                Qt::SingleShotConnection);
+        return;
+    }
     finishWhenFlushed();
 }
 

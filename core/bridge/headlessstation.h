@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Slew as a station service, with no window: a session to the rotator that
 // reconnects after a loss, a rotctld-compatible server for the trackers, and

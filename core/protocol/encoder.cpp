@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "encoder.h"
 
 #include <algorithm>
@@ -214,6 +215,17 @@ QByteArray encodeStop(bool azimuth, bool elevation, Dialect d)
     if (azimuth && elevation)
         return encodeLine({Message::query(Op::StopAzimuth), Message::query(Op::StopElevation)}, d);
     return encodeLine({Message::query(azimuth ? Op::StopAzimuth : Op::StopElevation)}, d);
+}
+
+QByteArray encodeStopHold(bool azimuth, bool elevation, Dialect d)
+{
+    if (!dialectSupports(d, Op::VelocityLeft) || !dialectSupports(d, Op::VelocityUp))
+        return {};
+    if (azimuth && elevation)
+        return encodeLine({Message::number(Op::VelocityLeft, 0), Message::number(Op::VelocityUp, 0)}, d);
+    if (azimuth || elevation)
+        return encodeLine({Message::number(azimuth ? Op::VelocityLeft : Op::VelocityUp, 0)}, d);
+    return {};
 }
 
 } // namespace slew::protocol

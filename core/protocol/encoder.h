@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Turning messages into wire bytes, per dialect. Pure functions: no I/O.
 
@@ -23,6 +24,10 @@ QByteArray encodeLine(std::initializer_list<Message> tokens, Dialect d);
 QByteArray encodeSetPosition(double az, double el, Dialect d); // Easycomm I: full line
 QByteArray encodeQueryPosition(Dialect d);                     // `AZ EL\n`; empty for Easycomm I
 QByteArray encodeStop(bool azimuth, bool elevation, Dialect d); // `SA SE\n`
+// What holds the stopped axes with the drive engaged: a zero speed (`VL000
+// VU000\n`), which brakes a drive that would coast. Empty for a dialect
+// without speed commands.
+QByteArray encodeStopHold(bool azimuth, bool elevation, Dialect d);
 
 // Easycomm I's single line, as Hamlib model 201 writes it.
 QByteArray encodeEasycomm1Line(double az, double el, quint64 up = 0, QByteArrayView upMode = "XXX",

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // RotatorSession, part one: the link (open, lose, reconnect) and what comes
 // back on it. Parts two and three: rotatorsession_requests.cpp (queue,
 // probe, polling) and rotatorsession_commands.cpp (moves, config, raw).
@@ -60,6 +61,8 @@ RotatorSession::RotatorSession(QObject *parent) : QObject(parent), m_queue(m_opt
     m_staleTimer.setSingleShot(true);
     connect(&m_staleTimer, &QTimer::timeout, this, &RotatorSession::onStale);
     connect(&m_pollTimer, &QTimer::timeout, this, &RotatorSession::poll);
+    m_stopHoldTimer.setSingleShot(true);
+    connect(&m_stopHoldTimer, &QTimer::timeout, this, &RotatorSession::sendStopHold);
     setProfile(m_profile);
 }
 
@@ -187,6 +190,7 @@ void RotatorSession::dropLink(const QString &reason)
     m_pollTimer.stop();
     m_replyTimer.stop();
     m_staleTimer.stop();
+    m_stopHoldTimer.stop();
     m_onWire = false;
     m_jogSpeed = {0.0, 0.0};
     if (m_link) {

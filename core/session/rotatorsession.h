@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // RotatorSession: one conversation with one rotator controller.
 //
@@ -73,6 +74,10 @@ public:
     int queuedRequests() const { return m_queue.size(); }
     int echoesIgnored() const { return m_echoesIgnored; }
 
+    // After a stop, the zero-speed hold that brakes a free-running drive is
+    // still to be sent (stopHoldSent() follows, or nothing if a move comes first).
+    bool stopHoldPending() const { return m_stopHoldTimer.isActive(); }
+
     bool isPolling() const { return m_pollingEnabled; }
     void setPolling(bool enabled);
 
@@ -108,6 +113,7 @@ signals:
     void configValueReceived(int reg, const QString &value);
     void versionChanged(const QString &version);
     void capabilitiesChanged(const slew::session::Capabilities &capabilities);
+    void stopHoldSent();
     void bytesSent(const QByteArray &bytes);
     void bytesReceived(const QByteArray &bytes);
     void alarmReceived(const QString &text);
@@ -132,6 +138,8 @@ private:
     bool refuse(const QString &reason);
     bool requireLink();
     void write(const QByteArray &line);
+    void writeMove(const QByteArray &line); // a new move: the pending stop hold is void
+    void sendStopHold();
     void rememberSent(const protocol::Message &m);
     bool enqueue(Request r);
     void sendNext();
@@ -175,6 +183,8 @@ private:
     double m_targetAz = kUnknown, m_targetEl = kUnknown;
     double m_commandedAz = kUnknown, m_commandedEl = kUnknown;
     std::array<double, 2> m_jogSpeed{0.0, 0.0}; // °/s of a running velocity move, per axis
+    QTimer m_stopHoldTimer;
+    bool m_holdAzimuth = false, m_holdElevation = false;
     StatusWord m_status;
     int m_errorFlags = -1;
     Telemetry m_telemetry;

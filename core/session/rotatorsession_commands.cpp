@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // RotatorSession, part three: what the operator (or a tracker) asks of the
 // rotator. Every move is checked against the limits before a byte is sent.
 
@@ -17,6 +18,13 @@ using protocol::Op;
 namespace {
 
 constexpr int kMaxRawLine = 200;
+
+// How long after SA / SE the zero-speed hold follows. A self-locking (worm)
+// drive is at rest well within it, so the hold changes nothing there; a
+// free-running drive has coasted this long and is then braked by the speed
+// loop. Sent at once, the hold would replace the worm's instant stop with
+// the driver's gentler braking ramp.
+constexpr int kStopHoldDelayMs = 250;
 
 QString printable(const QByteArray &line)
 {
@@ -52,7 +60,7 @@ bool RotatorSession::gotoPosition(double az, double el)
     rememberSent(Message::number(Op::Azimuth, std::round(targetAz * 100) / 100));
     rememberSent(Message::number(Op::Elevation, std::round(el * 100) / 100));
     m_jogSpeed = {0.0, 0.0};
-    write(line);
+    writeMove(line);
     m_targetAz = targetAz;
     m_targetEl = el;
     emit targetChanged(targetAz, el);
@@ -93,7 +101,7 @@ bool RotatorSession::gotoAxis(Axis axis, double degrees)
     const Message m = Message::number(op, target);
     rememberSent(Message::number(op, std::round(target * 100) / 100));
     m_jogSpeed[az ? 0 : 1] = 0.0;
-    write(protocol::encodeLine({m}, d));
+    writeMove(protocol::encodeLine({m}, d));
     (az ? m_targetAz : m_targetEl) = target;
     emit targetChanged(m_targetAz, m_targetEl);
     return true;
@@ -133,7 +141,7 @@ bool RotatorSession::moveAxis(Axis axis, double degreesPerSecond)
         return refuse(tr("%1 has no command to move an axis").arg(protocol::dialectName(d)));
     }
     m_jogSpeed[az ? 0 : 1] = degreesPerSecond;
-    write(line);
+    writeMove(line);
     return true;
 }
 
@@ -153,7 +161,29 @@ bool RotatorSession::stop(Axes axes)
     if (line.isEmpty())
         return refuse(tr("%1 has no stop command").arg(protocol::dialectName(m_profile.dialect)));
     write(line);
+    // SA / SE only let go of the drive. Where the dialect has speed commands,
+    // a zero speed follows to brake a drive that would coast (spur gear,
+    // direct drive) and hold it there.
+    if (!protocol::encodeStopHold(az, el, m_profile.dialect).isEmpty()) {
+        m_holdAzimuth = az || (m_stopHoldTimer.isActive() && m_holdAzimuth);
+        m_holdElevation = el || (m_stopHoldTimer.isActive() && m_holdElevation);
+        m_stopHoldTimer.start(kStopHoldDelayMs);
+    }
     return true;
+}
+
+void RotatorSession::sendStopHold()
+{
+    write(protocol::encodeStopHold(m_holdAzimuth, m_holdElevation, m_profile.dialect));
+    m_holdAzimuth = m_holdElevation = false;
+    emit stopHoldSent();
+}
+
+void RotatorSession::writeMove(const QByteArray &line)
+{
+    m_stopHoldTimer.stop();
+    m_holdAzimuth = m_holdElevation = false;
+    write(line);
 }
 
 bool RotatorSession::park()
@@ -163,7 +193,7 @@ bool RotatorSession::park()
     if (!protocol::dialectSupports(m_profile.dialect, Op::Park))
         return gotoPosition(m_profile.parkAz, m_profile.parkEl);
     m_jogSpeed = {0.0, 0.0};
-    write(protocol::encodeLine({Message::query(Op::Park)}, m_profile.dialect));
+    writeMove(protocol::encodeLine({Message::query(Op::Park)}, m_profile.dialect));
     m_targetAz = m_profile.parkAz;
     m_targetEl = m_profile.parkEl;
     emit targetChanged(m_targetAz, m_targetEl);
@@ -177,7 +207,12 @@ bool RotatorSession::home()
     if (!protocol::dialectSupports(m_profile.dialect, Op::Reset))
         return refuse(tr("%1 has no RESET (homing) command").arg(protocol::dialectName(m_profile.dialect)));
     m_jogSpeed = {0.0, 0.0};
-    write(protocol::encodeLine({Message::query(Op::Reset)}, m_profile.dialect));
+    writeMove(protocol::encodeLine({Message::query(Op::Reset)}, m_profile.dialect));
+    // Homing ends at the lower limits: that is where the rotator is going
+    // now, not the last go-to.
+    m_targetAz = m_profile.limits.azMin;
+    m_targetEl = m_profile.limits.elMin;
+    emit targetChanged(m_targetAz, m_targetEl);
     return true;
 }
 
@@ -262,7 +297,7 @@ bool RotatorSession::sendRaw(const QString &line)
     });
     if (!error.isEmpty())
         return refuse(error);
-    write(bytes + '\n');
+    writeMove(bytes + '\n');
     return true;
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "axismodel.h"
 
 #include <algorithm>
@@ -157,19 +158,34 @@ void AxisModel::step(double dt)
 
     // The limit switches are wired into the driver: it will not push further
     // into a switch that has tripped, whatever the loop asks for.
+    bool powered = m_errors == 0 && m_mode != DriveMode::Released;
     const int switches = limitSwitches();
-    if ((switches & LimitSwitch::Lower) && drive < 0.0)
+    if ((switches & LimitSwitch::Lower) && drive < 0.0) {
         drive = 0.0;
-    if ((switches & LimitSwitch::Upper) && drive > 0.0)
+        powered = false;
+    }
+    if ((switches & LimitSwitch::Upper) && drive > 0.0) {
         drive = 0.0;
+        powered = false;
+    }
     m_effort = drive;
 
     detectFaults(drive, previousReading, dt);
-    integrate(drive, dt);
+    if (m_errors != 0)
+        powered = false; // a fault found this step cut the drive too
+    integrate(drive, powered, dt);
+    if (!powered)
+        m_effort = 0.0;
+    else if (!m_faults.jam)
+        m_effort = deliveredEffort(drive);
 
     if (m_mode == DriveMode::Homing && m_errors == 0) {
         m_homingTravel += std::fabs(m_velocity) * dt;
-        if (limitSwitches() & LimitSwitch::Lower) {
+        // The switch cuts the motor. A worm gear stops the axis on it at once,
+        // and home is where it stopped; a free drive would coast on, so its
+        // loop takes over as soon as the switch trips.
+        const bool stoppedOnSwitch = m_plant.driveTrain == DriveTrain::FreeRunning || m_velocity == 0.0;
+        if ((limitSwitches() & LimitSwitch::Lower) && stoppedOnSwitch) {
             // Found home. The switch edge reads a little below the minimum,
             // so that the minimum itself lies clear of the switch and the
             // loop can hold it without pushing into a switch that cuts it.
@@ -181,6 +197,23 @@ void AxisModel::step(double dt)
             fail(AxisError::Homing);
         }
     }
+}
+
+double AxisModel::deliveredEffort(double drive) const
+{
+    // At the driver's speed cap or on its ramp, the loop may ask for full
+    // torque, but the driver only lets through what holds the speed or the
+    // ramp: friction at cruise, a little more while it speeds up. That is
+    // the motor's load (IP5/IP6) and what warms it, not the loop's demand.
+    const bool capped = std::fabs(m_velocity) >= m_plant.maxSpeed - 1e-9
+        || std::fabs(m_acceleration) >= m_plant.maxAcceleration - 1e-6;
+    if (!capped)
+        return drive;
+    const double needed = m_plant.inertia * m_acceleration + m_plant.viscousFriction * m_velocity
+        + m_plant.coulombFriction * sign(m_velocity);
+    if (sign(needed) != sign(drive))
+        return drive;
+    return sign(drive) * std::min(std::fabs(drive), std::fabs(needed));
 }
 
 double AxisModel::positionDrive(double dt)
@@ -221,12 +254,22 @@ double AxisModel::velocityDrive(double target, double dt)
     return std::clamp(drive, -m_plant.torqueLimit, m_plant.torqueLimit);
 }
 
-void AxisModel::integrate(double drive, double dt)
+void AxisModel::integrate(double drive, bool powered, double dt)
 {
     const double before = m_velocity;
     if (m_faults.jam) {
         m_velocity = 0.0;
         m_acceleration = 0.0;
+        return;
+    }
+
+    if (!powered && m_plant.driveTrain == DriveTrain::SelfLocking) {
+        // The load cannot turn a worm: with the motor let go, only the
+        // rotor's own momentum remains, and the worm's friction stops it.
+        const double slowed = std::max(0.0, std::fabs(m_velocity) - m_plant.lockDeceleration * dt);
+        m_velocity = sign(m_velocity) * slowed;
+        move(dt);
+        m_acceleration = (m_velocity - before) / dt;
         return;
     }
 
@@ -247,6 +290,12 @@ void AxisModel::integrate(double drive, double dt)
         velocity = 0.0;
     velocity = std::clamp(velocity, -m_plant.maxSpeed, m_plant.maxSpeed);
     m_velocity = velocity;
+    move(dt);
+    m_acceleration = (m_velocity - before) / dt;
+}
+
+void AxisModel::move(double dt)
+{
     m_motor += m_velocity * dt;
 
     // Gear play: the antenna follows the motor only once the slack is taken up.
@@ -265,7 +314,6 @@ void AxisModel::integrate(double drive, double dt)
         m_antenna = stop;
         m_velocity = 0.0;
     }
-    m_acceleration = (m_velocity - before) / dt;
 }
 
 void AxisModel::detectFaults(double drive, double previousReading, double dt)

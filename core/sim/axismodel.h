@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // One motorised axis: motor and load with inertia and friction, a gearbox
 // with optional play, limit switches, hard stops, an encoder, and the servo
@@ -14,7 +15,7 @@
 namespace slew::sim {
 
 enum class DriveMode : std::uint8_t {
-    Released, // no drive: the axis coasts to rest against friction (SA / SE)
+    Released, // no drive (SA / SE): a worm gear stops at once, a free drive coasts to rest
     Position, // PID on the encoder reading (AZ / EL / PARK)
     Velocity, // speed loop that also holds its place (VL..VD, VL0 holds)
     Homing,   // RESET: creep towards the lower switch, then zero there
@@ -77,6 +78,12 @@ public:
     double targetVelocity() const { return m_velocityTarget; }
     bool isSettled() const;      // position mode and within tolerance, at rest
     bool isMoving() const;       // anything but settled or at rest
+    // What a stop leaves: the drive released (SA / SE), or holding a zero
+    // speed (VL0, which Slew sends after SA to brake a free-running drive).
+    bool isStopped() const
+    {
+        return m_mode == DriveMode::Released || (m_mode == DriveMode::Velocity && m_velocityTarget == 0.0);
+    }
     int limitSwitches() const;   // LimitSwitch bits
     int errors() const { return m_errors; }
     double load() const;         // drive effort in percent of the torque limit
@@ -88,7 +95,9 @@ private:
     double sampleEncoder();
     double positionDrive(double dt);
     double velocityDrive(double target, double dt);
-    void integrate(double drive, double dt);
+    double deliveredEffort(double drive) const;
+    void integrate(double drive, bool powered, double dt);
+    void move(double dt); // motor, gear play and hard stops at the current speed
     void detectFaults(double drive, double previousReading, double dt);
     void fail(int errorBit);
 

@@ -1,13 +1,25 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The numbers that describe one simulated axis: its mechanics, its servo
 // gains and the faults switched on for it. Plain values, so options parsing,
 // the rotator and the tests can pass them around freely.
 
+#include <cstdint>
+
 namespace slew::sim {
+
+// What the gearbox does when the motor lets go.
+enum class DriveTrain : std::uint8_t {
+    SelfLocking, // a worm gear: the load cannot turn the worm, so a released axis stops at once
+    FreeRunning, // a spur gear or direct drive: a released axis coasts until friction stops it
+};
 
 // Mechanics of one axis, in degrees and seconds. The motor torque is written
 // as the angular acceleration it gives the load (deg/s^2 for inertia 1), so
 // the gains below read as "deg/s^2 of drive per degree of error".
+// The speed and acceleration defaults are those of a Yaesu G-5500 class
+// azimuth (360 degrees in about 58 s); rotatormodels.h holds the elevation
+// figures and the other classes.
 struct AxisPlant {
     double minDegrees = 0.0;      // lower (CCW / down) limit switch
     double maxDegrees = 360.0;    // upper (CW / up) limit switch
@@ -16,12 +28,17 @@ struct AxisPlant {
     double viscousFriction = 0.5; // deg/s^2 of drag per deg/s
     double coulombFriction = 0.2; // deg/s^2, also the breakaway (stiction) level
     double torqueLimit = 40.0;    // deg/s^2, the most the motor can deliver
-    double maxSpeed = 30.0;       // deg/s, the driver's cap (seeds/000)
-    double maxAcceleration = 30.0; // deg/s^2, the driver's ramp (seeds/000)
+    double maxSpeed = 6.2;        // deg/s, the driver's cap
+    double maxAcceleration = 12.0; // deg/s^2, the driver's ramp
+    DriveTrain driveTrain = DriveTrain::SelfLocking;
+    // How hard a self-locking gear stops a released axis: only the motor's own
+    // rotor still turns, and the worm's friction eats its momentum within a
+    // fraction of a worm turn, a few hundredths of a degree at the antenna.
+    double lockDeceleration = 1000.0; // deg/s^2
     double ticksPerDegree = 100.0; // encoder resolution, reported by \?ENC
     double homingSpeed = 5.0;     // deg/s while RESET looks for the switch: slow enough to
                                   // brake before the hard stop once it trips
-    double manualSpeed = 10.0;    // deg/s for ML/MR/MU/MD (Easycomm II has no speed)
+    double manualSpeed = 6.2;     // deg/s for ML/MR/MU/MD (Easycomm II has no speed): full speed
 };
 
 // Position servo gains, as CW1..CW3 (azimuth) and CW4..CW6 (elevation) set

@@ -1,4 +1,7 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "simulatedrotator.h"
+
+#include "rotatormodels.h"
 
 #include <algorithm>
 #include <cmath>
@@ -29,6 +32,7 @@ double controlMode(DriveMode mode)
 RotatorConfig::RotatorConfig()
 {
     elevation.maxDegrees = 180.0;
+    applyRotatorModel(*this, rotatorModels().front());
 }
 
 SimulatedRotator::SimulatedRotator(const RotatorConfig &config)
@@ -207,6 +211,9 @@ int SimulatedRotator::axisStatus(Axis which) const
     switch (a.mode()) {
     case DriveMode::Released: return AxisStatus::Idle;
     case DriveMode::Velocity:
+        // A zero speed command holds the axis where it is (Slew's Stop on a
+        // free-running drive): at rest, that is not moving.
+        return a.targetVelocity() == 0.0 && !a.isMoving() ? AxisStatus::Idle : AxisStatus::Moving;
     case DriveMode::Homing: return AxisStatus::Moving;
     case DriveMode::Position:
         return a.isSettled() ? AxisStatus::Pointing : AxisStatus::Pointing | AxisStatus::Moving;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The simulated az/el rotator: two axes, the controller board's registers
 // (CR1..CR13), its inputs (IP0..IP8), status and error registers, a motor

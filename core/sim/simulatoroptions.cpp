@@ -1,4 +1,7 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "simulatoroptions.h"
+
+#include "rotatormodels.h"
 
 #include <QStringList>
 
@@ -11,15 +14,19 @@ namespace {
 
 using protocol::Dialect;
 
+// The model comes first: slew-sim applies its flags in this order, and the
+// URI reader takes it first too, so the other items adjust the preset.
 const std::vector<SimulatorOptionInfo> kOptions = {
+    {"model", "name", "class of rotator: g5500 (default, 6.2/2.7 deg/s), satnogs (30 deg/s) or heavy (2/1 deg/s)"},
+    {"drive", "kind", "worm (default: self-locking, stops when released) or free (spur or direct drive: coasts)"},
     {"kp", "gain", "initial proportional gain of both axes (CW1/CW4)"},
     {"ki", "gain", "initial integral gain of both axes (CW2/CW5)"},
     {"kd", "gain", "initial derivative gain of both axes (CW3/CW6)"},
     {"az_max", "degrees", "azimuth range end, 360..450 (above 360 is overlap)"},
     {"el_max", "degrees", "elevation range end, 90 or 180"},
     {"ticks_per_deg", "ticks", "encoder resolution, reported by \\?ENC (1..100000)"},
-    {"max_speed", "deg/s", "driver speed cap of both axes (default 30)"},
-    {"max_accel", "deg/s^2", "driver acceleration cap of both axes (default 30)"},
+    {"max_speed", "deg/s", "driver speed cap of both axes (default: the model's)"},
+    {"max_accel", "deg/s^2", "driver acceleration cap of both axes (default: the model's)"},
     {"park_az", "degrees", "azimuth park position (CW7)"},
     {"park_el", "degrees", "elevation park position (CW8)"},
     {"start_az", "degrees", "azimuth at start"},
@@ -157,6 +164,24 @@ QString applySimulatorOption(SimulatorOptions &o, QStringView rawName, QStringVi
     };
     const double big = std::numeric_limits<double>::max();
 
+    if (name == u"model") {
+        const RotatorModel *model = findRotatorModel(value);
+        if (!model)
+            return bad(name, value, QStringLiteral("expected %1").arg(rotatorModelNameList()));
+        applyRotatorModel(r, *model);
+        return {};
+    }
+    if (name == u"drive") {
+        DriveTrain train = DriveTrain::SelfLocking;
+        if (value.compare(u"worm", Qt::CaseInsensitive) == 0)
+            train = DriveTrain::SelfLocking;
+        else if (value.compare(u"free", Qt::CaseInsensitive) == 0)
+            train = DriveTrain::FreeRunning;
+        else
+            return bad(name, value, QStringLiteral("expected worm or free"));
+        r.azimuth.driveTrain = r.elevation.driveTrain = train;
+        return {};
+    }
     if (name == u"kp")
         return gain(&PidGains::kp);
     if (name == u"ki")

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "simulatorscheme.h"
 
 #include "simulatorlink.h"
@@ -7,6 +8,7 @@
 
 #include <QUrlQuery>
 
+#include <algorithm>
 #include <optional>
 
 namespace slew::sim {
@@ -18,7 +20,11 @@ std::optional<SimulatorOptions> optionsOf(const QUrl &url, const QString &uri, Q
 {
     SimulatorOptions options;
     const QUrlQuery query(url);
-    for (const auto &[name, value] : query.queryItems(QUrl::FullyDecoded)) {
+    auto items = query.queryItems(QUrl::FullyDecoded);
+    // A model is a starting point that the other items adjust, wherever it stands.
+    std::stable_partition(items.begin(), items.end(),
+                          [](const auto &item) { return item.first.compare(u"model", Qt::CaseInsensitive) == 0; });
+    for (const auto &[name, value] : items) {
         if (const QString e = applySimulatorOption(options, name, value); !e.isEmpty()) {
             *error = QStringLiteral("%1: %2").arg(uri, e);
             return std::nullopt;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "axistuner.h"
 
 #include "session/rotatorsession.h"
@@ -12,6 +13,7 @@ using session::RotatorSession;
 namespace {
 
 constexpr double kLimitMargin = 1.0; // degrees kept clear of a limit by the step
+constexpr double kRestingSlack = 0.1; // degrees past a limit that still count as resting on it
 
 } // namespace
 
@@ -73,7 +75,14 @@ bool AxisTuner::start(Axis axis)
     const auto &lim = m_session->profile().limits;
     const double lo = axis == Axis::Azimuth ? lim.azMin : lim.elMin;
     const double hi = axis == Axis::Azimuth ? lim.azMax : lim.elMax;
-    const double here = std::round((axis == Axis::Azimuth ? m_session->azimuth() : m_session->elevation()) * 100) / 100;
+    double here = std::round((axis == Axis::Azimuth ? m_session->azimuth() : m_session->elevation()) * 100) / 100;
+    // An axis resting at a limit may read a hundredth or two past it (just
+    // homed, say, with the loop not yet pulled in against friction): that
+    // is the limit, and the step starts from there.
+    if (here < lo && here >= lo - kRestingSlack)
+        here = lo;
+    else if (here > hi && here <= hi + kRestingSlack)
+        here = hi;
     const double a = m_settings.amplitude;
     if (here + a <= hi - kLimitMargin && here >= lo)
         m_to = here + a;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Tunes one axis end to end on the live controller:
 //
@@ -24,7 +25,10 @@ class RotatorSession;
 namespace slew::tuning {
 
 struct TuningSettings {
-    double amplitude = 4.0; // degrees: small enough that the drive stays out of its limits
+    // Degrees: small enough that the drive stays out of its speed and
+    // acceleration limits, where the fitted model holds. A G-5500 class
+    // elevation (2.7 deg/s) runs into its speed cap on a 4 degree step.
+    double amplitude = 2.0;
     StepSettings step;
     AnalysisSettings analysis;
     ProposalSettings proposal;

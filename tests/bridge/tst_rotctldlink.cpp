@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The rotctld:// link: Slew reaching a rotator through a running rotctld.
 // Against Hamlib's real rotctld: model 1 (its dummy rotator) and model 202
 // (Easycomm II) on slew-sim's pseudo-terminal; and against Slew's own
@@ -91,7 +92,8 @@ void RotctldLinkTest::againstHamlibEasycommOnTheSimulator()
     QTemporaryDir dir;
     const QString pty = dir.filePath("rotator");
     SlewSimProcess sim;
-    QVERIFY2(sim.start({"--pty", pty, "--dialect", "easycomm2", "--log-received", dir.filePath("received.log")}),
+    QVERIFY2(sim.start({"--model", "satnogs", "--pty", pty, "--dialect", "easycomm2", "--log-received",
+                        dir.filePath("received.log")}),
              qPrintable(sim.error()));
     QProcess rotctld;
     const quint16 port = startRotctld(rotctld, {"-m", "202", "-r", pty, "-s", "19200"});

@@ -1,13 +1,17 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Slew's rotctld-compatible server, on a session connected to the in-process
 // simulator, driven by Hamlib's real rotctl (model 2, netrotctl) and by raw
 // sockets: position, stop, park, reset, move, info, dump_state; one-write
-// answers; several clients; bad clients; deadband; overlap; operator hold.
+// answers; several clients; bad clients; deadband; overlap; operator hold;
+// and a tracker's S bringing the antenna to rest on either drive train.
 
 #include "bridge/rotctldserver.h"
 #include "../common/hamlibprocess.h"
 #include "linkschemes.h"
 #include "session/rotatorsession.h"
 
+#include <QElapsedTimer>
+#include <QPointF>
 #include <QTcpSocket>
 #include <QTest>
 
@@ -21,6 +25,8 @@ private slots:
     void cleanup();
 
     void rotctlDrivesTheSimulator();
+    void stopBringsTheAntennaToRest_data();
+    void stopBringsTheAntennaToRest();
     void rawSocketGetsBothLinesInOneRead();
     void extendedAnswers();
     void outOfRangeIsRefusedAndNothingSent();
@@ -48,7 +54,7 @@ void RotctldServerTest::init()
     session = new session::RotatorSession;
     server = new bridge::RotctldServer(session);
     model::RotatorProfile p;
-    p.uri = "sim:";
+    p.uri = "sim:?model=satnogs"; // a fast rotator: these cases are about the protocol
     QVERIFY(connectSession(p));
     QString error;
     QVERIFY2(server->listen(QHostAddress::LocalHost, 0, &error), qPrintable(error));
@@ -117,6 +123,50 @@ void RotctldServerTest::rotctlDrivesTheSimulator()
     r = runRotctl({"-m", "2", "-r", where, "1"});
     QVERIFY2(r.out.contains("Max Azimuth:\t\t360.00") && r.out.contains("Max Elevation:\t\t90.00"), r.out.constData());
     session->stop();
+}
+
+void RotctldServerTest::stopBringsTheAntennaToRest_data()
+{
+    QTest::addColumn<QString>("uri");
+    QTest::addColumn<int>("restWithinMs");
+    QTest::addColumn<double>("maxTravel");
+    QTest::newRow("default worm gear") << QStringLiteral("sim:") << 1000 << 2.0;
+    QTest::newRow("free drive") << QStringLiteral("sim:?drive=free") << 2000 << 360.0;
+}
+
+void RotctldServerTest::stopBringsTheAntennaToRest()
+{
+    QFETCH(QString, uri);
+    QFETCH(int, restWithinMs);
+    QFETCH(double, maxTravel);
+    model::RotatorProfile p;
+    p.uri = uri;
+    QVERIFY(connectSession(p));
+    QTcpSocket s;
+    s.connectToHost(QHostAddress::LocalHost, server->port());
+    QTRY_COMPARE(s.state(), QAbstractSocket::ConnectedState);
+    QCOMPARE(ask(s, "P 300 80"), QByteArray("RPRT 0\n"));
+    QTRY_VERIFY_WITH_TIMEOUT(session->azimuth() > 10.0, 15000);
+    const QPointF pressed(session->azimuth(), session->elevation());
+    QCOMPARE(ask(s, "S"), QByteArray("RPRT 0\n"));
+    QElapsedTimer sinceStop;
+    sinceStop.start();
+    QVERIFY(QTest::qWaitFor([&] { return sinceStop.elapsed() >= restWithinMs; }, restWithinMs + 5000));
+    const QPointF first(session->azimuth(), session->elevation());
+    QVERIFY(QTest::qWaitFor([&] { return sinceStop.elapsed() >= restWithinMs + 1000; }, 6000));
+    const QPointF second(session->azimuth(), session->elevation());
+    const QString trace = QStringLiteral("S at %1/%2, then %3/%4, a second later %5/%6")
+                              .arg(pressed.x())
+                              .arg(pressed.y())
+                              .arg(first.x())
+                              .arg(first.y())
+                              .arg(second.x())
+                              .arg(second.y());
+    qInfo("%s: %s", QTest::currentDataTag(), qPrintable(trace));
+    QVERIFY2(!session->positionStale(), qPrintable(trace));
+    QVERIFY2(std::abs(second.x() - first.x()) < 0.05 && std::abs(second.y() - first.y()) < 0.05, qPrintable(trace));
+    QVERIFY2(std::abs(first.x() - pressed.x()) < maxTravel && std::abs(first.y() - pressed.y()) < maxTravel,
+             qPrintable(trace));
 }
 
 void RotctldServerTest::rawSocketGetsBothLinesInOneRead()
@@ -203,7 +253,7 @@ void RotctldServerTest::deadbandSuppressesRepeatedTargets()
 void RotctldServerTest::overlapPicksTheShortestLegalPath()
 {
     model::RotatorProfile p;
-    p.uri = "sim:?az_max=450&el_max=180";
+    p.uri = "sim:?model=satnogs&az_max=450&el_max=180";
     p.limits.azMax = 450;
     p.limits.elMax = 180;
     QVERIFY(connectSession(p));

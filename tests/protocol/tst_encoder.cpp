@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The encoder per dialect: the exact bytes Hamlib's backends and the seeds/000
 // controller send, and a round trip through the parser for every command.
 
@@ -40,6 +41,13 @@ void EncoderTest::hamlibWireStrings()
     QCOMPARE(encodeQueryPosition(Dialect::Easycomm1), QByteArray());
     QCOMPARE(encodeStop(true, true, Dialect::SatNogs), QByteArray("SA SE\n"));
     QCOMPARE(encodeStop(false, true, Dialect::Easycomm3), QByteArray("SE\n"));
+    // The zero speed that brakes and holds what a stop released.
+    QCOMPARE(encodeStopHold(true, true, Dialect::Easycomm3), QByteArray("VL000 VU000\n"));
+    QCOMPARE(encodeStopHold(true, true, Dialect::SatNogs), QByteArray("VL0000 VU0000\n"));
+    QCOMPARE(encodeStopHold(true, false, Dialect::Easycomm3), QByteArray("VL000\n"));
+    QCOMPARE(encodeStopHold(false, true, Dialect::Easycomm3), QByteArray("VU000\n"));
+    QVERIFY(encodeStopHold(true, true, Dialect::Easycomm2).isEmpty()); // no speed commands
+    QVERIFY(encodeStopHold(true, true, Dialect::Gs232B).isEmpty());
     // `M 16 50` on model 204 sends VR4900 (speed (50-1)*100 mdeg/s).
     QCOMPARE(encodeLine({Message::number(Op::VelocityRight, 4900)}, Dialect::SatNogs), QByteArray("VR4900\n"));
     QCOMPARE(encodeLine({Message::number(Op::VelocityLeft, 50)}, Dialect::SatNogs), QByteArray("VL0050\n"));

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // RotatorSession against a scripted controller over a real local socket:
 // matching, timeout and retry, unsolicited values, echo, limit refusal, link
 // loss and reconnection. No fixed waits: every wait is on a signal.
@@ -28,6 +29,9 @@ private slots:
     void outOfRangeMovesSendNothing();
     void overlapTakesTheShortestLegalPath();
     void stopGoesOutEvenWhenTheQueueIsStuck();
+    void stopIsFollowedByAZeroSpeedHold();
+    void aMoveAfterStopCancelsTheHold();
+    void dialectsWithoutSpeedCommandsOnlyRelease();
     void rawLinesAreLimitChecked();
     void positionGoesStaleWhenRepliesStop();
     void linkLossFailsWaitingRequestsAndReconnects();
@@ -278,6 +282,43 @@ void RotatorSessionTest::stopGoesOutEvenWhenTheQueueIsStuck()
     QVERIFY(session->queuedRequests() >= 1); // it did not wait for them
     QVERIFY(session->stop(session::Axes::Azimuth));
     QTRY_VERIFY(device->received.contains("SA"));
+}
+
+void RotatorSessionTest::stopIsFollowedByAZeroSpeedHold()
+{
+    QVERIFY(connectSession(*session, *device));
+    QSignalSpy held(session, &RotatorSession::stopHoldSent);
+    QVERIFY(session->stop());
+    QTRY_VERIFY(device->received.contains("SA SE"));
+    QVERIFY(session->stopHoldPending());
+    QVERIFY(!device->received.contains("VL0000 VU0000")); // not at once: a worm gear stops faster on its own
+    QVERIFY(held.wait(2000));
+    QTRY_VERIFY(device->received.contains("VL0000 VU0000")); // SatNOGS writes four digits
+    QVERIFY(!session->stopHoldPending());
+    // One axis, one hold.
+    QVERIFY(session->stop(session::Axes::Elevation));
+    QVERIFY(held.wait(2000));
+    QTRY_VERIFY(device->received.contains("VU0000"));
+}
+
+void RotatorSessionTest::aMoveAfterStopCancelsTheHold()
+{
+    QVERIFY(connectSession(*session, *device));
+    QSignalSpy held(session, &RotatorSession::stopHoldSent);
+    QVERIFY(session->stop());
+    QVERIFY(session->gotoPosition(40, 20)); // the operator's next move wins
+    QVERIFY(!session->stopHoldPending());
+    QTRY_VERIFY(device->received.contains("AZ40.0 EL20.0"));
+    QVERIFY(!held.wait(600));
+    QVERIFY(!device->received.contains("VL0000 VU0000"));
+}
+
+void RotatorSessionTest::dialectsWithoutSpeedCommandsOnlyRelease()
+{
+    QVERIFY(connectSession(*session, *device, protocol::Dialect::Easycomm2));
+    QVERIFY(session->stop());
+    QVERIFY(!session->stopHoldPending());
+    QTRY_VERIFY(device->received.contains("SA SE"));
 }
 
 void RotatorSessionTest::rawLinesAreLimitChecked()

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // RotatorSession against the real simulator on every kind of link it has:
 // the in-process sim: link, slew-sim over TCP, and slew-sim's pseudo-terminal
 // opened as a serial port (QSerialPort). Probe, polling, telemetry, config
@@ -80,7 +81,7 @@ void SessionSimulatorTest::configWriteThenReadBack()
 void SessionSimulatorTest::gotoStopParkHome()
 {
     RotatorSession s;
-    QVERIFY(connectTo(s, "sim:?park_az=90&park_el=10"));
+    QVERIFY(connectTo(s, "sim:?model=satnogs&park_az=90&park_el=10"));
     QVERIFY(s.gotoPosition(20, 15));
     QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.azimuth() - 20) < 0.2 && std::abs(s.elevation() - 15) < 0.2, 15000);
     QSignalSpy commanded(&s, &RotatorSession::commandedChanged);
@@ -130,7 +131,7 @@ void SessionSimulatorTest::jamShowsAsMotorError()
 void SessionSimulatorTest::satnogsDialect()
 {
     RotatorSession s;
-    QVERIFY(connectTo(s, "sim:?dialect=satnogs", protocol::Dialect::SatNogs));
+    QVERIFY(connectTo(s, "sim:?model=satnogs&dialect=satnogs", protocol::Dialect::SatNogs));
     QVERIFY(!s.capabilities().encoders); // not in SatNOGS
     QSignalSpy values(&s, &RotatorSession::configValueReceived);
     QSignalSpy sent(&s, &RotatorSession::bytesSent);
@@ -172,7 +173,7 @@ void SessionSimulatorTest::gs232Dialects()
     QFETCH(QString, name);
     const auto dialect = *protocol::dialectFromName(name);
     RotatorSession s;
-    QVERIFY(connectTo(s, "sim:?dialect=" + name, dialect));
+    QVERIFY(connectTo(s, "sim:?model=satnogs&dialect=" + name, dialect));
     QVERIFY(s.capabilities().positionFeedback);
     QVERIFY(!s.capabilities().status && !s.capabilities().config && !s.capabilities().velocity);
     QSignalSpy sent(&s, &RotatorSession::bytesSent);
@@ -193,7 +194,7 @@ void SessionSimulatorTest::gs232Dialects()
 void SessionSimulatorTest::overTcpToSlewSim()
 {
     SlewSimProcess sim;
-    QVERIFY2(sim.start({"--listen", "127.0.0.1:0"}), qPrintable(sim.error()));
+    QVERIFY2(sim.start({"--listen", "127.0.0.1:0", "--model", "satnogs"}), qPrintable(sim.error()));
     RotatorSession s;
     QVERIFY(connectTo(s, QStringLiteral("tcp://127.0.0.1:%1").arg(sim.port())));
     QVERIFY(s.capabilities().encoders);
@@ -207,7 +208,7 @@ void SessionSimulatorTest::overASerialPortToSlewSimsPty()
     QTemporaryDir dir;
     const QString pty = dir.filePath("ttySLEW");
     SlewSimProcess sim;
-    QVERIFY2(sim.start({"--pty", pty, "--baud", "19200", "--dialect", "satnogs"}), qPrintable(sim.error()));
+    QVERIFY2(sim.start({"--pty", pty, "--baud", "19200", "--dialect", "satnogs", "--model", "satnogs"}), qPrintable(sim.error()));
     RotatorSession s;
     QVERIFY(connectTo(s, "serial:" + pty + "?baud=19200", protocol::Dialect::SatNogs));
     QVERIFY(s.capabilities().version);

@@ -1,5 +1,7 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The physics of one axis on an exactly stepped clock: settling, limits,
-// gains that matter, coasting, holding, homing, and each axis fault.
+// gains that matter, the drive train (a worm that stops, a free drive that
+// coasts), holding, homing, and each axis fault.
 #include "sim/axismodel.h"
 
 #include <QTest>
@@ -51,11 +53,50 @@ double settlingTime(AxisModel &axis, double target, double seconds, double toler
     return settledSince;
 }
 
+// The default: a G-5500 class azimuth with a self-locking worm gear.
 AxisPlant azimuthPlant()
 {
     AxisPlant p;
     p.maxDegrees = 360.0;
     return p;
+}
+
+// A fast (SatNOGS-class) axis at the Easycomm III controller's caps.
+AxisPlant fastPlant(DriveTrain train = DriveTrain::SelfLocking)
+{
+    AxisPlant p = azimuthPlant();
+    p.maxSpeed = 30.0;
+    p.maxAcceleration = 30.0;
+    p.driveTrain = train;
+    return p;
+}
+
+struct StopRun {
+    double travel = 0.0;  // degrees from the release to rest
+    double seconds = 0.0; // from the release to rest
+};
+
+// Runs an axis at full speed in velocity mode, releases it, and measures
+// how far and how long it goes on.
+StopRun releaseFromFullSpeed(AxisPlant plant)
+{
+    plant.minDegrees = 0.0;
+    plant.maxDegrees = 450.0;
+    AxisModel axis(plant);
+    axis.placeAt(20.0);
+    axis.commandVelocity(plant.maxSpeed);
+    run(axis, 4.0 + plant.maxSpeed / plant.maxAcceleration);
+    if (std::fabs(axis.velocity() - plant.maxSpeed) > 0.01 * plant.maxSpeed)
+        return {-1.0, -1.0};
+    axis.release();
+    const double from = axis.antennaPosition();
+    StopRun r;
+    for (int i = 0; i < 30000 && axis.velocity() != 0.0; ++i) {
+        axis.step(kDt);
+        r.seconds += kDt;
+    }
+    r.travel = axis.antennaPosition() - from;
+    return r;
 }
 
 } // namespace
@@ -77,9 +118,24 @@ private slots:
         QVERIFY(axis.isSettled());
     }
 
+    void defaultIsAG5500ClassAzimuth()
+    {
+        AxisModel axis(azimuthPlant());
+        axis.placeAt(0.0);
+        axis.commandPosition(360.0);
+        double seconds = 0.0;
+        while (std::fabs(axis.position() - 360.0) > 0.1 && seconds < 120.0) {
+            axis.step(kDt);
+            seconds += kDt;
+        }
+        qInfo("0 to 360 degrees in %.1f s", seconds);
+        // A G-5500 turns its 360 degrees in about 58 s.
+        QVERIFY2(seconds > 55.0 && seconds < 62.0, qPrintable(QString("360 degrees in %1 s").arg(seconds)));
+    }
+
     void mistunedGainsOvershootByMoreThanTwentyPercent()
     {
-        AxisModel axis(azimuthPlant(), PidGains{40.0, 0.0, 0.0});
+        AxisModel axis(fastPlant(), PidGains{40.0, 0.0, 0.0});
         axis.placeAt(100.0);
         axis.commandPosition(110.0);
         const Trace t = run(axis, 6.0);
@@ -97,13 +153,65 @@ private slots:
 
     void speedAndAccelerationLimitsHold()
     {
-        AxisModel axis(azimuthPlant(), PidGains{200.0, 0.0, 20.0});
+        AxisModel axis(fastPlant(), PidGains{200.0, 0.0, 20.0});
         axis.placeAt(10.0);
         axis.commandPosition(300.0);
         const Trace t = run(axis, 20.0);
         QVERIFY(t.maxSpeed <= 30.0 + 1e-9);
         QVERIFY(t.maxAccel <= 30.0 + 1e-6);
         QVERIFY(t.maxSpeed > 29.0); // and a long move does reach the cap
+
+        AxisModel slow(azimuthPlant(), PidGains{200.0, 0.0, 20.0});
+        slow.placeAt(10.0);
+        slow.commandPosition(300.0);
+        const Trace g = run(slow, 60.0);
+        QVERIFY(g.maxSpeed <= 6.2 + 1e-9);
+        QVERIFY(g.maxSpeed > 6.1);
+        QVERIFY(g.maxAccel <= 12.0 + 1e-6);
+    }
+
+    void releasedWormGearStopsWithinADegree_data()
+    {
+        QTest::addColumn<double>("speed");
+        QTest::addColumn<double>("acceleration");
+        QTest::newRow("g5500 azimuth") << 6.2 << 12.0;
+        QTest::newRow("g5500 elevation") << 2.7 << 6.0;
+        QTest::newRow("satnogs") << 30.0 << 30.0;
+        QTest::newRow("heavy") << 2.0 << 2.0;
+    }
+
+    void releasedWormGearStopsWithinADegree()
+    {
+        QFETCH(double, speed);
+        QFETCH(double, acceleration);
+        AxisPlant plant = azimuthPlant();
+        plant.maxSpeed = speed;
+        plant.maxAcceleration = acceleration;
+        const StopRun r = releaseFromFullSpeed(plant);
+        qInfo("%s: released at %.1f deg/s, %.3f deg and %.3f s to rest", QTest::currentDataTag(), speed, r.travel,
+              r.seconds);
+        QVERIFY2(r.travel >= 0.0 && r.travel < 1.0, qPrintable(QString("travel %1").arg(r.travel)));
+        QVERIFY2(r.seconds < 0.5, qPrintable(QString("%1 s").arg(r.seconds)));
+    }
+
+    void releasedFreeDriveCoasts()
+    {
+        const StopRun r = releaseFromFullSpeed(fastPlant(DriveTrain::FreeRunning));
+        qInfo("free drive released at 30 deg/s: %.1f deg and %.2f s to rest", r.travel, r.seconds);
+        QVERIFY2(r.travel > 20.0, qPrintable(QString("travel %1").arg(r.travel)));
+        QVERIFY2(r.seconds > 3.0, qPrintable(QString("%1 s").arg(r.seconds)));
+    }
+
+    void wormGearStopsAtALimitSwitchThatCutsTheDrive()
+    {
+        AxisPlant plant = fastPlant();
+        AxisModel axis(plant);
+        axis.placeAt(300.0);
+        axis.commandVelocity(30.0);
+        run(axis, 4.0);
+        // The switch at 360 cut the drive; the worm stopped the axis well before the hard stop.
+        QCOMPARE(axis.velocity(), 0.0);
+        QVERIFY(axis.antennaPosition() >= 360.0 && axis.antennaPosition() < 360.5);
     }
 
     void stepsNearTheEndsNeverPassTheStops()
@@ -118,9 +226,9 @@ private slots:
         QVERIFY(high.peak <= 361.0);
     }
 
-    void releasedAxisCoastsToRestButVelocityZeroHolds()
+    void releasedFreeAxisCoastsToRestButVelocityZeroHolds()
     {
-        AxisModel axis(azimuthPlant());
+        AxisModel axis(fastPlant(DriveTrain::FreeRunning));
         axis.placeAt(100.0);
         axis.commandVelocity(20.0);
         run(axis, 2.0);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hamlib's own rotctl (Debian's libhamlib-utils) drives slew-sim over its
 // pseudo-terminal, for the three Easycomm models: 201 (Easycomm I), 202
 // (Easycomm II) and 204 (Easycomm III / SatNOGS), and the two Yaesu GS-232
@@ -63,7 +64,7 @@ private slots:
     void model202Easycomm2()
     {
         SlewSimProcess sim;
-        QVERIFY2(sim.start({"--pty", ptyPath(202), "--dialect", "easycomm2", "--baud", "19200", "--log-received",
+        QVERIFY2(sim.start({"--model", "satnogs", "--pty", ptyPath(202), "--dialect", "easycomm2", "--baud", "19200", "--log-received",
                             logPath(202)}),
                  qPrintable(sim.error()));
         QVERIFY(sim.readyLine().contains(ptyPath(202)));
@@ -87,7 +88,7 @@ private slots:
     void model204SatNogs()
     {
         SlewSimProcess sim;
-        QVERIFY2(sim.start({"--pty", ptyPath(204), "--dialect", "satnogs", "--baud", "19200", "--log-received",
+        QVERIFY2(sim.start({"--model", "satnogs", "--pty", ptyPath(204), "--dialect", "satnogs", "--baud", "19200", "--log-received",
                             logPath(204)}),
                  qPrintable(sim.error()));
         QCOMPARE(rotctl(204, ptyPath(204), {"P", "15", "30"}).exitCode, 0);
@@ -115,7 +116,7 @@ private slots:
         QFETCH(int, model);
         QFETCH(QString, dialect);
         SlewSimProcess sim;
-        QVERIFY2(sim.start({"--pty", ptyPath(model), "--dialect", dialect, "--baud", "9600", "--log-received",
+        QVERIFY2(sim.start({"--model", "satnogs", "--pty", ptyPath(model), "--dialect", dialect, "--baud", "9600", "--log-received",
                             logPath(model)}),
                  qPrintable(sim.error()));
         QCOMPARE(rotctl(model, ptyPath(model), {"P", "40", "25"}).exitCode, 0);
@@ -135,7 +136,7 @@ private slots:
         // Easycomm I has no way to ask, so a TCP monitor in Easycomm III
         // watches the same rotator.
         SlewSimProcess sim;
-        QVERIFY2(sim.start({"--pty", ptyPath(201), "--dialect", "easycomm1", "--listen", "127.0.0.1:0",
+        QVERIFY2(sim.start({"--model", "satnogs", "--pty", ptyPath(201), "--dialect", "easycomm1", "--listen", "127.0.0.1:0",
                             "--listen-dialect", "easycomm3", "--log-received", logPath(201)}),
                  qPrintable(sim.error()));
         QVERIFY(sim.port() != 0);

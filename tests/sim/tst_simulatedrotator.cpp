@@ -1,5 +1,8 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The whole rotator on a stepped clock: overlap paths, end stops, homing,
-// park, registers, and every fault as GS / GE / IP report it (seeds/000).
+// park, registers, the rotator classes and their stop, and every fault as
+// GS / GE / IP report it (seeds/000).
+#include "sim/rotatormodels.h"
 #include "sim/simulatedrotator.h"
 
 #include <QTest>
@@ -11,9 +14,18 @@ using namespace slew::sim;
 
 namespace {
 
-RotatorConfig withAzimuthRange(double maxDegrees, double start = 0.0)
+// Most cases here are about paths, switches and registers, not speed: they
+// run on the fast SatNOGS-class preset so that they take little simulated time.
+RotatorConfig fastConfig()
 {
     RotatorConfig c;
+    applyRotatorModel(c, *findRotatorModel(u"satnogs"));
+    return c;
+}
+
+RotatorConfig withAzimuthRange(double maxDegrees, double start = 0.0)
+{
+    RotatorConfig c = fastConfig();
     c.azimuth.maxDegrees = maxDegrees;
     c.startAzimuth = start;
     return c;
@@ -163,7 +175,7 @@ private slots:
 
     void temperatureRisesWithLoad()
     {
-        SimulatedRotator r;
+        SimulatedRotator r(fastConfig());
         r.driveAzimuth(30000.0);
         r.driveElevation(30000.0);
         r.advanceBy(2.0);
@@ -229,6 +241,68 @@ private slots:
         QCOMPARE(r.readInput(1).value(), 0.0); // the switch never tripped
         QVERIFY(r.axis(Axis::Azimuth).antennaPosition() >= -1.0);
         QCOMPARE(elByte(r), 4); // elevation homed fine
+    }
+
+    void defaultIsAG5500ClassRotator()
+    {
+        SimulatedRotator r;
+        QCOMPARE(r.axis(Axis::Azimuth).plant().maxSpeed, 6.2);
+        QCOMPARE(r.axis(Axis::Elevation).plant().maxSpeed, 2.7);
+        QCOMPARE(r.axis(Axis::Azimuth).plant().driveTrain, DriveTrain::SelfLocking);
+        r.driveAzimuth(30000.0); // asks for more than the motor can do
+        r.driveElevation(30000.0);
+        r.advanceBy(3.0);
+        QVERIFY(std::fabs(r.axis(Axis::Azimuth).velocity() - 6.2) < 0.01);
+        QVERIFY(std::fabs(r.axis(Axis::Elevation).velocity() - 2.7) < 0.01);
+        // At the speed cap the motor only works against friction: a long
+        // slew is not a long stall.
+        QVERIFY2(r.readInput(5).value() < 15.0, qPrintable(QString::number(r.readInput(5).value())));
+        QVERIFY(r.readInput(5).value() > 0.0);
+    }
+
+    void stopFromFullSpeedHoldsWithinADegree_data()
+    {
+        QTest::addColumn<QString>("model");
+        for (const RotatorModel &m : rotatorModels())
+            QTest::newRow(m.name) << QString::fromLatin1(m.name);
+    }
+
+    void stopFromFullSpeedHoldsWithinADegree()
+    {
+        QFETCH(QString, model);
+        RotatorConfig c = withAzimuthRange(450.0, 10.0);
+        applyRotatorModel(c, *findRotatorModel(model));
+        SimulatedRotator r(c);
+        r.pointAzimuth(440.0);
+        r.pointElevation(170.0);
+        r.advanceBy(6.0); // both axes at full speed
+        const double az = r.axis(Axis::Azimuth).antennaPosition();
+        const double el = r.axis(Axis::Elevation).antennaPosition();
+        r.stopAzimuth();
+        r.stopElevation();
+        r.advanceBy(0.5);
+        QCOMPARE(r.axis(Axis::Azimuth).velocity(), 0.0);
+        QCOMPARE(r.axis(Axis::Elevation).velocity(), 0.0);
+        QVERIFY(r.axis(Axis::Azimuth).antennaPosition() - az < 1.0);
+        QVERIFY(r.axis(Axis::Elevation).antennaPosition() - el < 1.0);
+        QCOMPARE(r.status(), 1 | (1 << 8)); // idle: the drive is released
+    }
+
+    void zeroSpeedBrakesAFreeDriveAndReportsIdleAtRest()
+    {
+        RotatorConfig c = withAzimuthRange(450.0, 10.0);
+        c.azimuth.driveTrain = c.elevation.driveTrain = DriveTrain::FreeRunning;
+        SimulatedRotator r(c);
+        r.driveAzimuth(30000.0);
+        r.advanceBy(3.0);
+        QCOMPARE(azByte(r), 2);
+        r.stopAzimuth();
+        r.advanceBy(0.25);
+        QVERIFY(r.axis(Axis::Azimuth).velocity() > 20.0); // a free drive coasts
+        r.driveAzimuth(0.0);
+        r.advanceBy(1.75);
+        QVERIFY(std::fabs(r.axis(Axis::Azimuth).velocity()) < 0.01); // braked by the speed loop
+        QCOMPARE(azByte(r), 1);
     }
 
     void encodersReportTicks()

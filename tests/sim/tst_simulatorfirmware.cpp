@@ -1,5 +1,7 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The firmware alone: bytes in, bytes out, per dialect. Time is stepped on
 // the rotator directly, so nothing here waits.
+#include "sim/rotatormodels.h"
 #include "sim/simulatedrotator.h"
 #include "sim/simulatorfirmware.h"
 
@@ -12,8 +14,17 @@ using slew::protocol::Dialect;
 class TestSimulatorFirmware : public QObject {
     Q_OBJECT
 
+    // The fast SatNOGS-class rotator: these cases are about bytes, and its
+    // speed lets them reach a position in a few simulated seconds.
+    static RotatorConfig fastConfig()
+    {
+        RotatorConfig c;
+        applyRotatorModel(c, *findRotatorModel(u"satnogs"));
+        return c;
+    }
+
     struct Bench {
-        explicit Bench(Dialect d, RotatorConfig config = {}) : rotator(config), firmware(rotator, counters, d) {}
+        explicit Bench(Dialect d, RotatorConfig config = fastConfig()) : rotator(config), firmware(rotator, counters, d) {}
         SimulatedRotator rotator;
         FirmwareCounters counters;
         SimulatorFirmware firmware;

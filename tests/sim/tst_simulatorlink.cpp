@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The `sim:` link: made from a URI, opened and used like any other link,
 // with its clock stepped by the test.
 #include "sim/simulator.h"
@@ -93,6 +94,27 @@ private slots:
         QCOMPARE(ask(link.get(), "CR 7\n"), QByteArray("7,90.00\n"));
     }
 
+    void modelAndDriveItemsNameTheRotator()
+    {
+        auto plain = openLink("sim:?clock=manual");
+        const SimulatedRotator &byDefault = simulatorBehind(plain.get())->rotator();
+        QCOMPARE(byDefault.axis(Axis::Azimuth).plant().maxSpeed, 6.2);
+        QCOMPARE(byDefault.axis(Axis::Elevation).plant().maxSpeed, 2.7);
+        QCOMPARE(byDefault.axis(Axis::Azimuth).plant().driveTrain, DriveTrain::SelfLocking);
+
+        auto fast = openLink("sim:?clock=manual&model=satnogs&drive=free");
+        const SimulatedRotator &f = simulatorBehind(fast.get())->rotator();
+        QCOMPARE(f.axis(Axis::Azimuth).plant().maxSpeed, 30.0);
+        QCOMPARE(f.axis(Axis::Elevation).plant().maxSpeed, 30.0);
+        QCOMPARE(f.axis(Axis::Elevation).plant().driveTrain, DriveTrain::FreeRunning);
+
+        // The model is the starting point wherever it stands; other items adjust it.
+        auto heavy = openLink("sim:?clock=manual&max_speed=1.5&model=heavy");
+        const SimulatedRotator &h = simulatorBehind(heavy.get())->rotator();
+        QCOMPARE(h.axis(Axis::Azimuth).plant().maxSpeed, 1.5);
+        QCOMPARE(h.axis(Axis::Azimuth).plant().maxAcceleration, 2.0);
+    }
+
     void aProfileFollowsTheSimulatorUri()
     {
         slew::model::RotatorProfile mine;
@@ -123,6 +145,8 @@ private slots:
         QTest::newRow("dialect") << "sim:?dialect=gs232" << "dialect";
         QTest::newRow("unknown") << "sim:?warp=9" << "warp";
         QTest::newRow("jam") << "sim:?jam=roll" << "jam";
+        QTest::newRow("model") << "sim:?model=g9999" << "model";
+        QTest::newRow("drive") << "sim:?drive=belt" << "drive";
     }
     void badQueryItemsNameTheUri()
     {
@@ -149,7 +173,7 @@ private slots:
 
     void steppedClockMovesTheRotatorExactly()
     {
-        auto link = openLink("sim:?clock=manual&start_az=100");
+        auto link = openLink("sim:?clock=manual&model=satnogs&start_az=100");
         QVERIFY(link);
         Simulator *sim = simulatorBehind(link.get());
         // The GS answer proves the set before it was taken.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The tuning engine against a deliberately mistuned simulator on a stepped
 // clock: the proposal must take the overshoot under 5 % and cut the settling
 // time by at least 30 % on both axes, and cancel must leave the registers.
@@ -126,9 +127,8 @@ private slots:
         QCOMPARE(g.kp, 12.0);
         QCOMPARE(g.ki, 1.0);
         QCOMPARE(g.kd, 1.0);
-        // SE went out: the elevation drive is released.
-        QCOMPARE(sim::simulatorBehind(m_session->link())->rotator().axis(sim::Axis::Elevation).mode(),
-                 sim::DriveMode::Released);
+        // SE went out: the elevation drive is released (or held at zero speed).
+        QVERIFY(sim::simulatorBehind(m_session->link())->rotator().axis(sim::Axis::Elevation).isStopped());
     }
 
     void badStartChangesNothing()

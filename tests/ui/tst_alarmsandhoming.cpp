@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Link loss, operator disconnects and homing, each against a simulator set
 // up to produce the situation (drop_after, start position, missing switch).
 
@@ -62,7 +63,38 @@ private slots:
         QCOMPARE(f.session.state(), slew::session::RotatorSession::State::Disconnected);
         QVERIFY(f.window->alarmBanner()->isHidden());
         QCOMPARE(f.find<QLabel>(QStringLiteral("connectionState"))->text(), QStringLiteral("disconnected"));
-        QCOMPARE(slew::ui::ConnectionBar::rememberedUri(), QStringLiteral("sim:"));
+        QCOMPARE(slew::ui::ConnectionBar::rememberedUri(), f.uri);
+    }
+
+    void theDefaultSimulatorOpensWithoutABanner()
+    {
+        // It rests at 0/0 on both lower limit switches, as many rotators park:
+        // a state for the status line, not an alarm.
+        WindowFixture f(QStringLiteral("sim:"));
+        QVERIFY(f.connectAndWait());
+        auto *resting = f.find<QLabel>(QStringLiteral("limitSwitchState"));
+        QTRY_VERIFY_WITH_TIMEOUT(resting->text().contains(QStringLiteral("limit switch")), 5000);
+        QVERIFY(f.window->alarmBanner()->isHidden());
+        QVERIFY(f.window->alarmBanner()->text().isEmpty());
+        // Moving off the switches ends the quiet state too.
+        QVERIFY(f.session.gotoPosition(3, 2));
+        QVERIFY(f.waitUntilAt(3, 2, 0.2));
+        QTRY_VERIFY_WITH_TIMEOUT(resting->text().isEmpty(), 5000);
+        QVERIFY(f.window->alarmBanner()->isHidden());
+    }
+
+    void drivingIntoAnEndStopRaisesTheBanner()
+    {
+        WindowFixture f(QStringLiteral("sim:?model=satnogs&start_az=330&start_el=20"));
+        QVERIFY(f.connectAndWait());
+        QVERIFY(f.window->alarmBanner()->isHidden());
+        // A raw speed command the profile's soft limits cannot stop: the
+        // switch at 360 has to.
+        QVERIFY(f.session.sendRaw(QStringLiteral("VR20000")));
+        QTRY_VERIFY_WITH_TIMEOUT(f.window->alarmBanner()->text().contains(QStringLiteral("end stop")), 30000);
+        QVERIFY(!f.window->alarmBanner()->isHidden());
+        QVERIFY(!f.window->alarmBanner()->isSevere()); // a warning, not a fault
+        f.session.stop();
     }
 
     void homingShowsProgressUntilIdle()

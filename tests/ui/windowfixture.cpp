@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "windowfixture.h"
 
 #include "sim/simulatorscheme.h"
@@ -33,9 +34,11 @@ WindowFixture::WindowFixture(const QString &uri_) : window(std::make_unique<slew
                          if (stale)
                              return;
                          recent.emplace_back(az, el);
+                         lastFreshMs = clock.elapsed();
                          if (recent.size() > 6)
                              recent.pop_front();
                      });
+    clock.start();
     window->show();
 }
 
@@ -82,4 +85,37 @@ bool WindowFixture::waitUntilAt(double az, double el, double tolerance, int time
                 && std::abs(session.elevation() - el) < tolerance;
         },
         timeoutMs);
+}
+
+WindowFixture::AfterStop WindowFixture::watchAfterStop(QPointF pressed, int restWithinMs)
+{
+    AfterStop r;
+    r.pressed = pressed;
+    const qint64 stoppedAt = clock.elapsed();
+    if (!QTest::qWaitFor([&] { return lastFreshMs >= stoppedAt + restWithinMs; }, restWithinMs + 10000))
+        return r;
+    r.first = recent.back();
+    const qint64 firstAt = lastFreshMs;
+    if (!QTest::qWaitFor([&] { return lastFreshMs >= firstAt + 1000; }, 11000))
+        return r;
+    r.second = recent.back();
+    r.valid = true;
+    return r;
+}
+
+bool WindowFixture::AfterStop::atRest() const
+{
+    return valid && std::abs(second.x() - first.x()) < 0.05 && std::abs(second.y() - first.y()) < 0.05;
+}
+
+double WindowFixture::AfterStop::travel() const
+{
+    return std::max(std::abs(first.x() - pressed.x()), std::abs(first.y() - pressed.y()));
+}
+
+QString WindowFixture::AfterStop::describe() const
+{
+    auto at = [](QPointF p) { return QStringLiteral("%1/%2").arg(p.x(), 0, 'f', 2).arg(p.y(), 0, 'f', 2); };
+    return QStringLiteral("pressed at %1, then %2, a second later %3%4")
+        .arg(at(pressed), at(first), at(second), valid ? QString() : QStringLiteral(" (no position came)"));
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // One operator window on one in-process simulator, for the widget tests:
 // finds widgets by objectName, keeps every line the session sent, and
@@ -7,6 +8,7 @@
 #include "mainwindow.h"
 #include "session/rotatorsession.h"
 
+#include <QElapsedTimer>
 #include <QPointF>
 #include <QRegularExpression>
 #include <QStringList>
@@ -19,7 +21,10 @@ public:
     // Call once per test executable: test settings, the sim: scheme.
     static void prepareApplication();
 
-    explicit WindowFixture(const QString &uri = QStringLiteral("sim:"));
+    // The fast SatNOGS-class simulator unless a test names another: most
+    // window tests are about the window, and a fast rotator keeps them short.
+    static constexpr const char *fastSim = "sim:?model=satnogs";
+    explicit WindowFixture(const QString &uri = QString::fromLatin1(fastSim));
 
     // Connects through the connection bar and waits for the probe and a position.
     bool connectAndWait(int timeoutMs = 10000);
@@ -35,9 +40,25 @@ public:
     bool waitUntilStill(int timeoutMs = 15000);
     bool waitUntilAt(double az, double el, double toleranceDeg = 0.5, int timeoutMs = 20000);
 
+    // What followed a Stop: the position when it was pressed, the first fresh
+    // position reported restWithinMs later, and the first one a second after
+    // that. At rest when the last two agree within 0.05°.
+    struct AfterStop {
+        QPointF pressed, first, second;
+        bool valid = false;
+        bool atRest() const;
+        double travel() const; // the larger axis' distance from pressed to first
+        QString describe() const;
+    };
+    // Call right after pressing Stop, with the position seen before it.
+    AfterStop watchAfterStop(QPointF pressed, int restWithinMs);
+    QPointF lastPosition() const { return recent.empty() ? QPointF() : recent.back(); }
+
     slew::session::RotatorSession session;
     std::unique_ptr<slew::ui::MainWindow> window;
     QString uri;
     QStringList sent;
     std::deque<QPointF> recent; // az, el of the latest fresh positions
+    QElapsedTimer clock;
+    qint64 lastFreshMs = -1;    // clock time of recent.back()
 };

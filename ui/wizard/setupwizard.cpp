@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "setupwizard.h"
 
 #include "connectpage.h"
@@ -24,6 +25,11 @@ SetupWizard::SetupWizard(session::RotatorSession *session, QWidget *parent)
     setPage(TuningPageId, new TuningPage(this));
     setPage(ParkPageId, new ParkPage(this));
     setPage(SummaryPageId, new SummaryPage(this));
+    // Big enough for the fullest page (tuning, with a chart and both sets of
+    // figures, whose room the page keeps from the start) with some to spare.
+    // QWizard keeps the dialog from being made smaller than its pages'
+    // layouts need.
+    resize(QSize(860, 720).expandedTo(minimumSizeHint()));
 }
 
 void SetupWizard::reject()

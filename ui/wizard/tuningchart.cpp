@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "tuningchart.h"
 
 #include <QChart>
@@ -12,6 +13,13 @@ namespace slew::ui {
 TuningChart::TuningChart(QWidget *parent) : QChartView(parent)
 {
     auto *chart = new QChart;
+    // Follow the window's theme: the operator window is dark, and a white
+    // chart inside it dazzles. The theme goes first; it would repaint the
+    // series' pens set below.
+    if (palette().color(QPalette::Window).lightness() < 128) {
+        chart->setTheme(QChart::ChartThemeDark);
+        chart->setBackgroundRoundness(0);
+    }
     m_before = new QLineSeries(chart);
     m_before->setName(tr("before"));
     m_before->setPen(QPen(QColor(0xd9, 0x53, 0x4f), 2));
@@ -36,7 +44,8 @@ TuningChart::TuningChart(QWidget *parent) : QChartView(parent)
     chart->setTitle(tr("Step response"));
     setChart(chart);
     setRenderHint(QPainter::Antialiasing);
-    setMinimumHeight(240);
+    // Room for the title, the legend, four or five ticks and both axis titles.
+    setMinimumSize(360, 260);
 }
 
 void TuningChart::clear()

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "tuningpage.h"
 
 #include "setupwizard.h"
@@ -15,6 +16,10 @@ namespace slew::ui {
 
 using session::Axis;
 using tuning::AxisTuner;
+
+namespace {
+constexpr int kFigureLines = 7; // title, four figures, the gains, and a spare for a wrapped line
+}
 
 TuningPage::TuningPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizard(wizard), m_tuner(wizard->session())
 {
@@ -40,6 +45,15 @@ TuningPage::TuningPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizard(wiza
     m_before->setObjectName(QStringLiteral("beforeFigures"));
     m_after = new QLabel(this);
     m_after->setObjectName(QStringLiteral("afterFigures"));
+    // The figures arrive after a run; their room is kept from the start, so
+    // the page's minimum size (which the wizard's follows) already holds
+    // them and they never land on the chart.
+    for (QLabel *figures : {m_before, m_after}) {
+        figures->setTextFormat(Qt::RichText);
+        figures->setAlignment(Qt::AlignLeft | Qt::AlignTop);
+        figures->setMinimumHeight(figures->fontMetrics().lineSpacing() * kFigureLines);
+        figures->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Fixed);
+    }
     m_accept = new QPushButton(tr("Accept new gains"), this);
     m_accept->setObjectName(QStringLiteral("accept"));
     m_retry = new QPushButton(tr("Retry"), this);

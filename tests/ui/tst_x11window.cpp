@@ -1,0 +1,209 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The operator window and the setup wizard on a real X11 server (Xvfb, the
+// xcb platform), as an operator first meets them; the offscreen platform
+// lays text out differently and hid faults that showed here:
+// - the window opens on the default simulator with no alarm banner;
+// - every chart's axis labels are numbers (times on the time axis), not "…";
+// - every wizard page, at the wizard's own default size, has no two visible
+//   widgets on top of each other, the tuning page with its figures filled in.
+
+#include "../tuning/simulatorpump.h"
+#include "windowfixture.h"
+
+#include "alarmbanner.h"
+#include "linkschemes.h"
+#include "telemetrycharts.h"
+#include "wizard/setupwizard.h"
+
+#include <QChart>
+#include <QChartView>
+#include <QCheckBox>
+#include <QDir>
+#include <QGraphicsScene>
+#include <QGraphicsTextItem>
+#include <QGuiApplication>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QRegularExpression>
+#include <QTest>
+#include <QWizardPage>
+
+using slew::session::RotatorSession;
+using slew::ui::SetupWizard;
+
+namespace {
+
+struct AxisLabels {
+    QStringList values; // left of the plot area, upright
+    QStringList times;  // below the plot area
+};
+
+AxisLabels labelsOf(QChart *chart)
+{
+    AxisLabels out;
+    const QRectF plot = chart->plotArea();
+    for (QGraphicsItem *item : chart->scene()->items()) {
+        auto *text = dynamic_cast<QGraphicsTextItem *>(item);
+        if (!text || !text->isVisible() || text->toPlainText().isEmpty() || text->rotation() != 0.0)
+            continue; // the value axis' title is turned on its side
+        const QRectF at = chart->mapFromScene(text->sceneBoundingRect()).boundingRect();
+        if (at.right() <= plot.left() + 2 && at.top() >= plot.top() - at.height())
+            out.values << text->toPlainText();
+        else if (at.top() >= plot.bottom() - 2)
+            out.times << text->toPlainText();
+    }
+    return out;
+}
+
+// Pairs of a page's visible widgets that overlap, by name, and any that
+// stick out of the page.
+QStringList overlapsOn(QWizardPage *page)
+{
+    QList<QWidget *> shown;
+    for (QWidget *w : page->findChildren<QWidget *>(Qt::FindDirectChildrenOnly)) {
+        if (w->isVisibleTo(page) && !w->isWindow())
+            shown << w;
+    }
+    auto name = [](QWidget *w) {
+        return QStringLiteral("%1 %2").arg(QLatin1String(w->metaObject()->className()), w->objectName());
+    };
+    QStringList faults;
+    for (qsizetype i = 0; i < shown.size(); ++i) {
+        const QRect a = shown[i]->geometry();
+        if (!page->rect().contains(a))
+            faults << QStringLiteral("%1 outside the page").arg(name(shown[i]));
+        for (qsizetype j = i + 1; j < shown.size(); ++j) {
+            const QRect both = a.intersected(shown[j]->geometry());
+            if (both.width() > 1 && both.height() > 1)
+                faults << QStringLiteral("%1 over %2").arg(name(shown[i]), name(shown[j]));
+        }
+    }
+    return faults;
+}
+
+template <typename T>
+T *find(QWidget &w, const char *name)
+{
+    T *child = w.findChild<T *>(QLatin1String(name));
+    if (!child)
+        qWarning("no %s", name);
+    return child;
+}
+
+} // namespace
+
+class X11WindowTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase()
+    {
+        QCOMPARE(QGuiApplication::platformName(), QStringLiteral("xcb"));
+        WindowFixture::prepareApplication();
+        slew::registerLinkSchemes();
+    }
+
+    void windowOpensQuietlyWithNumbersOnEveryChart()
+    {
+        WindowFixture f(QStringLiteral("sim:"));
+        f.window->resize(1600, 1000);
+        QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
+        QVERIFY(f.connectAndWait());
+        auto *charts = f.window->telemetryCharts();
+        const int before = charts->redrawCount();
+        QTRY_VERIFY_WITH_TIMEOUT(charts->redrawCount() > before + 2, 10000);
+        QVERIFY(f.window->alarmBanner()->isHidden());
+
+        const auto views = charts->findChildren<QChartView *>();
+        QVERIFY(views.size() >= 4);
+        for (QChartView *view : views) {
+            const AxisLabels labels = labelsOf(view->chart());
+            const QString all = labels.values.join(u' ') + QStringLiteral(" | ") + labels.times.join(u' ');
+            QVERIFY2(labels.values.size() >= 2, qPrintable(all));
+            QVERIFY2(labels.times.size() >= 2, qPrintable(all));
+            static const QRegularExpression number(QStringLiteral("^-?\\d+$"));
+            static const QRegularExpression time(QStringLiteral("^\\d\\d:\\d\\d:\\d\\d$"));
+            for (const QString &v : labels.values)
+                QVERIFY2(number.match(v).hasMatch(), qPrintable(all));
+            for (const QString &t : labels.times)
+                QVERIFY2(time.match(t).hasMatch(), qPrintable(all));
+            QCOMPARE(QSet<QString>(labels.values.begin(), labels.values.end()).size(), labels.values.size());
+        }
+        QDir().mkpath(QStringLiteral(SLEW_SCREENSHOT_DIR));
+        QVERIFY(f.window->grab().save(QStringLiteral(SLEW_SCREENSHOT_DIR "/main-window-x11.png")));
+    }
+
+    void everyWizardPageFitsItsDefaultSize()
+    {
+        RotatorSession session;
+        SetupWizard wizard(&session);
+        wizard.show(); // at the size the wizard chooses
+        QVERIFY(QTest::qWaitForWindowExposed(&wizard));
+        SimulatorPump pump;
+        auto pageIsClean = [&] {
+            QWizardPage *page = wizard.currentPage();
+            QTRY_VERIFY(page->isVisible());
+            QCoreApplication::processEvents(); // let the layout settle
+            const QStringList faults = overlapsOn(page);
+            QVERIFY2(faults.isEmpty(), qPrintable(QStringLiteral("%1 at %2x%3: %4")
+                                                      .arg(page->title())
+                                                      .arg(wizard.width())
+                                                      .arg(wizard.height())
+                                                      .arg(faults.join(QStringLiteral("; ")))));
+        };
+        auto next = [&] { return wizard.button(QWizard::NextButton)->isEnabled(); };
+#define PAGE_IS_CLEAN()                                                                                                \
+    do {                                                                                                               \
+        pageIsClean();                                                                                                 \
+        if (QTest::currentTestFailed())                                                                                \
+            return;                                                                                                    \
+    } while (false)
+
+        PAGE_IS_CLEAN();
+        find<QLineEdit>(wizard, "uri")->setText(
+            QStringLiteral("sim:?clock=manual&unsolicited=1&kp=12&ki=1&kd=1&start_az=12&start_el=6"));
+        QTest::mouseClick(find<QPushButton>(wizard, "probe"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(next(), 10000);
+        PAGE_IS_CLEAN();
+        wizard.next();
+
+        QTRY_VERIFY_WITH_TIMEOUT(next(), 30000); // identified
+        pump.drive(slew::sim::simulatorBehind(session.link()));
+        PAGE_IS_CLEAN();
+        wizard.next();
+
+        QTest::mouseClick(find<QPushButton>(wizard, "jog"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(std::fabs(session.azimuth() - 17.0) < 0.2, 10000);
+        find<QCheckBox>(wizard, "jogConfirmed")->setChecked(true);
+        PAGE_IS_CLEAN();
+        wizard.next();
+
+        QTest::mouseClick(find<QPushButton>(wizard, "home"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(next(), 30000);
+        // Homing drove the rotator to its lower limits: that is the target now.
+        QCOMPARE(session.targetAzimuth(), 0.0);
+        QCOMPARE(session.targetElevation(), 0.0);
+        PAGE_IS_CLEAN();
+        wizard.next();
+
+        QTest::mouseClick(find<QPushButton>(wizard, "tune"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(find<QPushButton>(wizard, "accept")->isEnabled(), 60000);
+        QVERIFY(find<QLabel>(wizard, "beforeFigures")->text().contains(QStringLiteral("overshoot")));
+        PAGE_IS_CLEAN();
+        // For a person to look at: the page as X11 drew it.
+        QDir().mkpath(QStringLiteral(SLEW_SCREENSHOT_DIR));
+        QVERIFY(wizard.grab().save(QStringLiteral(SLEW_SCREENSHOT_DIR "/wizard-tuning-x11.png")));
+        QTest::mouseClick(find<QPushButton>(wizard, "accept"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(next(), 5000);
+        wizard.next();
+
+        PAGE_IS_CLEAN(); // park
+        QTRY_VERIFY_WITH_TIMEOUT(next(), 10000);
+        wizard.next();
+        PAGE_IS_CLEAN(); // summary
+#undef PAGE_IS_CLEAN
+    }
+};
+
+QTEST_MAIN(X11WindowTest)
+#include "tst_x11window.moc"
