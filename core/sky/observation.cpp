@@ -60,29 +60,42 @@ Geodetic earthFixedToGeodetic(const Vec3 &p)
     return {degrees(lat), degrees(std::atan2(p.y, p.x)), height};
 }
 
-LookAngles lookAnglesEarthFixed(const Station &station, const Vec3 &positionEcef, const Vec3 &velocityEcef)
+StationFrame::StationFrame(const Station &station)
+    : position(stationEarthFixed(station))
 {
     const double lat = radians(station.latitudeDeg);
     const double lon = radians(station.longitudeDeg);
     const double sinLat = std::sin(lat), cosLat = std::cos(lat);
     const double sinLon = std::sin(lon), cosLon = std::cos(lon);
-    const Vec3 east{-sinLon, cosLon, 0.0};
-    const Vec3 north{-sinLat * cosLon, -sinLat * sinLon, cosLat};
-    const Vec3 up{cosLat * cosLon, cosLat * sinLon, sinLat};
+    east = {-sinLon, cosLon, 0.0};
+    north = {-sinLat * cosLon, -sinLat * sinLon, cosLat};
+    up = {cosLat * cosLon, cosLat * sinLon, sinLat};
+}
 
-    const Vec3 rho = positionEcef - stationEarthFixed(station);
+LookAngles lookAnglesEarthFixed(const StationFrame &station, const Vec3 &positionEcef, const Vec3 &velocityEcef)
+{
+    const Vec3 rho = positionEcef - station.position;
     LookAngles look;
     look.rangeKm = rho.norm();
-    look.azimuthDeg = wrap360(degrees(std::atan2(rho.dot(east), rho.dot(north))));
-    look.elevationDeg = degrees(std::asin(std::clamp(rho.dot(up) / look.rangeKm, -1.0, 1.0)));
+    look.azimuthDeg = wrap360(degrees(std::atan2(rho.dot(station.east), rho.dot(station.north))));
+    look.elevationDeg = degrees(std::asin(std::clamp(rho.dot(station.up) / look.rangeKm, -1.0, 1.0)));
     look.rangeRateKmS = rho.dot(velocityEcef) / look.rangeKm;
     return look;
 }
 
+EarthFixedState temeStateToEarthFixed(const Vec3 &p, const Vec3 &v, double julianDate)
+{
+    const double g = gmstIau82(julianDate);
+    const double c = std::cos(g), s = std::sin(g);
+    const Vec3 r{c * p.x + s * p.y, -s * p.x + c * p.y, p.z};
+    const Vec3 vr{c * v.x + s * v.y, -s * v.x + c * v.y, v.z};
+    return {r, {vr.x + kEarthRotationRadS * r.y, vr.y - kEarthRotationRadS * r.x, vr.z}};
+}
+
 LookAngles lookAngles(const Station &station, const Vec3 &positionTeme, const Vec3 &velocityTeme, double julianDate)
 {
-    return lookAnglesEarthFixed(station, temeToEarthFixed(positionTeme, julianDate),
-                                temeVelocityToEarthFixed(positionTeme, velocityTeme, julianDate));
+    const EarthFixedState e = temeStateToEarthFixed(positionTeme, velocityTeme, julianDate);
+    return lookAnglesEarthFixed(StationFrame(station), e.position, e.velocity);
 }
 
 double refractionDeg(double elevationDeg)

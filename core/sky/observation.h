@@ -36,8 +36,26 @@ Vec3 temeVelocityToEarthFixed(const Vec3 &positionTeme, const Vec3 &velocityTeme
 Vec3 stationEarthFixed(const Station &station); // km, WGS-84
 Geodetic earthFixedToGeodetic(const Vec3 &ecef);
 
+// The station's position and local east/north/up axes, worked out once for
+// the many look angles of a pass search.
+struct StationFrame {
+    explicit StationFrame(const Station &station);
+    Vec3 position, east, north, up;
+};
+
 // Look angles to an Earth-fixed position and velocity.
-LookAngles lookAnglesEarthFixed(const Station &station, const Vec3 &positionEcef, const Vec3 &velocityEcef);
+LookAngles lookAnglesEarthFixed(const StationFrame &station, const Vec3 &positionEcef, const Vec3 &velocityEcef);
+inline LookAngles lookAnglesEarthFixed(const Station &station, const Vec3 &positionEcef, const Vec3 &velocityEcef)
+{
+    return lookAnglesEarthFixed(StationFrame(station), positionEcef, velocityEcef);
+}
+
+// A TEME state in the Earth-fixed frame: position and velocity seen from
+// the rotating earth, with one sidereal time.
+struct EarthFixedState {
+    Vec3 position, velocity;
+};
+EarthFixedState temeStateToEarthFixed(const Vec3 &positionTeme, const Vec3 &velocityTeme, double julianDate);
 // Look angles to a TEME state at a Julian date (UTC).
 LookAngles lookAngles(const Station &station, const Vec3 &positionTeme, const Vec3 &velocityTeme, double julianDate);
 

@@ -11,20 +11,57 @@ namespace {
 
 constexpr double kSecond = 1.0 / kSecondsPerDay;
 constexpr double kCrossingTolerance = 0.01 * kSecond;
-constexpr double kPeakTolerance = 0.1 * kSecond;
+constexpr double kPeakTolerance = 0.5 * kSecond;
 // A pass still going on at the window's end is followed this far at most.
 constexpr double kFollowBeyondWindow = 1.0;
 
-// The time in (below, above] where the elevation crosses the threshold,
-// given one side below it and the other above.
+// The time where the elevation crosses the threshold, given one end of the
+// bracket below it and the other above; the answer is on the "above" side,
+// within the tolerance. Regula falsi with the Illinois modification: the
+// elevation is smooth, so this needs a handful of evaluations where
+// bisection needs twenty; a bisection step whenever the bracket does not
+// halve keeps the worst case bounded.
 double bisectCrossing(const ElevationFunction &f, double below, double above, double threshold)
 {
+    double fBelow = f(below).elevationDeg - threshold;
+    double fAbove = f(above).elevationDeg - threshold;
+    int side = 0;
     while (std::fabs(above - below) > kCrossingTolerance) {
-        const double mid = 0.5 * (below + above);
-        if (f(mid).elevationDeg >= threshold)
-            above = mid;
-        else
-            below = mid;
+        const double width = std::fabs(above - below);
+        double t = (fAbove - fBelow) != 0.0 ? above - fAbove * (above - below) / (fAbove - fBelow)
+                                            : 0.5 * (above + below);
+        // Keep the probe strictly inside, a tolerance from either end, so the
+        // bracket always shrinks.
+        const double lo = std::min(below, above) + kCrossingTolerance / 2;
+        const double hi = std::max(below, above) - kCrossingTolerance / 2;
+        t = std::clamp(t, lo, hi);
+        const double value = f(t).elevationDeg - threshold;
+        if (value >= 0.0) {
+            above = t;
+            fAbove = value;
+            if (side == 1)
+                fBelow /= 2.0;
+            side = 1;
+        } else {
+            below = t;
+            fBelow = value;
+            if (side == -1)
+                fAbove /= 2.0;
+            side = -1;
+        }
+        if (std::fabs(above - below) > 0.5 * width) {
+            // Slow progress: one bisection step.
+            const double mid = 0.5 * (below + above);
+            const double v = f(mid).elevationDeg - threshold;
+            if (v >= 0.0) {
+                above = mid;
+                fAbove = v;
+            } else {
+                below = mid;
+                fBelow = v;
+            }
+            side = 0;
+        }
     }
     return above;
 }
@@ -66,60 +103,65 @@ QList<Pass> scanPasses(const ElevationFunction &f, const PassWindow &window, con
 {
     QList<Pass> passes;
     const double threshold = window.minElevationDeg;
-    const double inPassStep = scan.inPassStepS * kSecond;
+    const double minStep = scan.inPassStepS / 2.0;
 
     double t = window.startJulian;
-    double elevation = f(t).elevationDeg;
-    bool inPass = elevation >= threshold;
+    ElevationSample sample = f(t);
+    bool inPass = sample.elevationDeg >= threshold;
     Pass current;
-    // The highest sample so far in the current pass, to bracket the peak.
-    double bestSampleTime = t, bestSampleElevation = elevation;
+    // The highest sample of the current pass and the samples either side
+    // of it: the peak lies between those two.
+    double bestElevation = -1e9, bestLo = t, bestHi = t;
+    bool bestHiKnown = false;
     if (inPass) {
         current.aos = pointAt(f, t);
         current.aosClipped = true;
+        bestElevation = sample.elevationDeg;
     }
+    auto finishPass = [&](double los, bool clipped) {
+        current.los = pointAt(f, los);
+        current.losClipped = clipped;
+        current.tca = pointAt(f, goldenSectionPeak(f, bestLo, bestHiKnown ? bestHi : los));
+        passes.append(current);
+    };
 
     const double hardEnd = window.endJulian + kFollowBeyondWindow;
     while (true) {
         if (!inPass && t >= window.endJulian)
             break;
         if (inPass && t >= hardEnd) {
-            current.los = pointAt(f, t);
-            current.losClipped = true;
-            current.tca = pointAt(f, goldenSectionPeak(f, std::max(current.aos.julian, bestSampleTime - inPassStep),
-                                                       std::min(t, bestSampleTime + inPassStep)));
-            passes.append(current);
+            finishPass(t, true);
             break;
         }
-        double step = inPassStep;
-        if (!inPass) {
-            // Far below the threshold the object cannot come up quickly.
-            const double seconds = (threshold - elevation) / scan.maxElevationRateDegS;
-            step = std::clamp(seconds, scan.inPassStepS / 2.0, scan.maxStepS) * kSecond;
-        }
-        const double next = inPass ? t + step : std::min(t + step, window.endJulian);
-        const double nextElevation = f(next).elevationDeg;
-        if (!inPass && nextElevation >= threshold) {
+        // How far the elevation cannot reach the threshold: by the rate
+        // bound, or by the function's own geometry if that says more.
+        const double margin = std::fabs(sample.elevationDeg - threshold);
+        double seconds = std::max(margin / scan.maxElevationRateDegS, sample.quietSeconds);
+        seconds = std::clamp(seconds, inPass ? scan.inPassStepS : minStep, scan.maxStepS);
+        const double next = inPass ? t + seconds * kSecond : std::min(t + seconds * kSecond, window.endJulian);
+        const ElevationSample nextSample = f(next);
+        const bool nextUp = nextSample.elevationDeg >= threshold;
+        if (!inPass && nextUp) {
             current = Pass();
             current.aos = pointAt(f, bisectCrossing(f, t, next, threshold));
             inPass = true;
-            bestSampleTime = next;
-            bestSampleElevation = nextElevation;
-        } else if (inPass && nextElevation < threshold) {
-            // bisectCrossing wants the "above" end second: search from LOS backwards.
-            const double los = bisectCrossing(f, next, t, threshold);
-            current.los = pointAt(f, los);
-            const double from = std::max(current.aos.julian, bestSampleTime - inPassStep);
-            const double to = std::min(los, bestSampleTime + inPassStep);
-            current.tca = pointAt(f, goldenSectionPeak(f, from, to));
-            passes.append(current);
+            bestElevation = nextSample.elevationDeg;
+            bestLo = current.aos.julian;
+            bestHiKnown = false;
+        } else if (inPass && !nextUp) {
+            // Bisect from the side that is up: the last moment above.
+            finishPass(bisectCrossing(f, next, t, threshold), false);
             inPass = false;
-        } else if (inPass && nextElevation > bestSampleElevation) {
-            bestSampleTime = next;
-            bestSampleElevation = nextElevation;
+        } else if (inPass && nextSample.elevationDeg > bestElevation) {
+            bestElevation = nextSample.elevationDeg;
+            bestLo = t;
+            bestHiKnown = false;
+        } else if (inPass && !bestHiKnown) {
+            bestHi = next;
+            bestHiKnown = true;
         }
         t = next;
-        elevation = nextElevation;
+        sample = nextSample;
     }
     return passes;
 }
@@ -137,30 +179,70 @@ QList<Pass> predictPasses(const Sgp4 &satellite, const Station &station, const P
 {
     if (satellite.initialError() != Sgp4Error::None)
         return {};
-    const ElevationFunction f = [&](double julian) {
-        LookAngles look;
-        if (!observeSatellite(satellite, station, julian, &look))
-            return ElevationSample{-90.0, 0.0};
-        return ElevationSample{look.elevationDeg, look.azimuthDeg};
+    const Tle &tle = satellite.elements();
+
+    // Geometry that bounds how soon the satellite can rise or set. Seen
+    // from the earth's centre, a satellite at radius r is above elevation E
+    // only within the angle ψ(r) = acos(R cos E / r) − E of the station. It
+    // moves over the ground no faster than its angular rate at perigee plus
+    // the earth's rotation, so while it is further than ψ(apogee) away it
+    // cannot rise, and while it is nearer than ψ(perigee) it cannot set.
+    // Half a degree covers the difference between the geocentric and the
+    // geodetic vertical; 1 % on the radii (60 km for a LEO) covers the
+    // short-period terms and a week of drag.
+    const StationFrame frame(station);
+    const Vec3 stationEcef = frame.position;
+    const double stationRadius = stationEcef.norm();
+    const Vec3 stationUnit = stationEcef * (1.0 / stationRadius);
+    const double meanMotionRadS = tle.meanMotionRevPerDay * kTwoPi / kSecondsPerDay;
+    const double semiMajorKm = std::cbrt(398600.8 / (meanMotionRadS * meanMotionRadS)); // Kepler's third law
+    const double e = tle.eccentricity;
+    const double apogee = semiMajorKm * (1.0 + e) * 1.01;
+    const double perigee = semiMajorKm * (1.0 - e) * 0.99;
+    const double threshold = radians(window.minElevationDeg);
+    const double margin = radians(0.5);
+    auto visibleAngle = [&](double radius) {
+        const double c = stationRadius * std::cos(threshold) / radius;
+        return c >= 1.0 ? 0.0 : std::acos(c) - threshold;
     };
-    // How fast the elevation can change below the horizon: the satellite's
-    // angular rate about the earth's centre, magnified by up to five times
-    // as seen from the ground (the factor is (R + h) / range at the
-    // horizon, 4 for a 200 km orbit), plus the earth's own rotation.
-    const double orbitRateDegS = satellite.elements().meanMotionRevPerDay * 360.0 / kSecondsPerDay;
+    const double riseAngle = visibleAngle(apogee) + margin;
+    const double setAngle = std::max(0.0, visibleAngle(perigee) - margin);
+    const double perigeeRate = meanMotionRadS * (1.0 + e) * (1.0 + e) / std::pow(1.0 - e * e, 1.5);
+    const double groundRate = (perigeeRate + kEarthRotationRadS) * 1.05;
+
+    const ElevationFunction f = [&](double julian) {
+        const Sgp4State s = satellite.propagateToJulian(julian);
+        if (!s.ok())
+            return ElevationSample{-90.0, 0.0, 0.0};
+        const EarthFixedState fixed = temeStateToEarthFixed(s.positionKm, s.velocityKmS, julian);
+        const Vec3 &r = fixed.position;
+        const LookAngles look = lookAnglesEarthFixed(frame, r, fixed.velocity);
+        const double angle = std::acos(std::clamp(stationUnit.dot(r) / r.norm(), -1.0, 1.0));
+        double quiet = 0.0;
+        if (look.elevationDeg < window.minElevationDeg)
+            quiet = std::max(0.0, (angle - riseAngle) / groundRate);
+        else
+            quiet = std::max(0.0, (setAngle - angle) / groundRate);
+        return ElevationSample{look.elevationDeg, look.azimuthDeg, quiet};
+    };
     PassScan scan;
-    scan.maxElevationRateDegS = 5.0 * orbitRateDegS + degrees(kEarthRotationRadS);
+    scan.maxElevationRateDegS = 1e9; // the geometry above is the bound
+    scan.inPassStepS = 60.0;
+    scan.maxStepS = 3600.0;
 
     QList<Pass> passes = scanPasses(f, window, scan);
     for (Pass &p : passes) {
-        p.name = satellite.elements().displayName();
-        p.catalogueNumber = satellite.elements().catalogueNumber;
-        // Sunlit if it is in sunlight at any of a few moments of the pass.
-        const int samples = 8;
+        p.name = tle.displayName();
+        p.catalogueNumber = tle.catalogueNumber;
+        // Sunlit if it is in sunlight at any of a few moments of the pass;
+        // the sun moves a quarter of a degree in a LEO pass, so one
+        // direction serves the whole pass.
+        const Vec3 sun = sunVectorEquatorial(p.tca.julian);
+        const int samples = 4;
         for (int i = 0; i <= samples && !p.sunlit; ++i) {
             const double julian = p.aos.julian + (p.los.julian - p.aos.julian) * i / samples;
             const Sgp4State s = satellite.propagateToJulian(julian);
-            p.sunlit = s.ok() && isSunlit(s.positionKm, sunVectorEquatorial(julian));
+            p.sunlit = s.ok() && isSunlit(s.positionKm, sun);
         }
     }
     return passes;

@@ -6,11 +6,13 @@
 // which is what an antenna cares about) and its loss (LOS), each with the
 // azimuth, and whether the satellite is in sunlight during it.
 //
-// The search steps through time, longer steps the further below the
-// threshold the object is (bounded by how fast its elevation can change),
-// then pins each crossing down by bisection to 10 ms and the peak by golden
-// section. A pass that clears the threshold for less than the in-pass step
-// (30 s) can be missed; such passes are of no use to a rotator anyway.
+// The search steps through time, as far as the object provably cannot
+// cross the threshold (for a satellite: its angle from the station about
+// the earth's centre, against the largest angle at which it can be up and
+// the fastest it can move), then pins each crossing down by bisection to
+// 10 ms and the peak by golden section. A pass that clears the threshold for
+// less than the shortest step (30 s for satellites) can be missed; such
+// passes are of no use to a rotator anyway.
 
 #include "sgp4.h"
 #include "station.h"
@@ -65,6 +67,9 @@ QList<Pass> predictBodyPasses(SkyBody body, const Station &station, const PassWi
 struct ElevationSample {
     double elevationDeg = 0;
     double azimuthDeg = 0;
+    // A proven lower bound on the time before the elevation can cross the
+    // threshold (from geometry); 0 when the function knows none.
+    double quietSeconds = 0;
 };
 using ElevationFunction = std::function<ElevationSample(double julian)>;
 struct PassScan {
