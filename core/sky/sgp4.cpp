@@ -269,6 +269,7 @@ Sgp4::Sgp4(const Tle &tle)
     delta = j2Factor / (a0 * a0);
     m_epoch.meanMotion = kozaiMeanMotion / (1.0 + delta);
     const double semiMajorAxis = std::pow(kXke / m_epoch.meanMotion, kTwoThirds);
+    m_semiMajorAtEpoch = semiMajorAxis;
     const double perigeeKm = (semiMajorAxis * (1.0 - ecc) - 1.0) * kEarthRadiusKm;
 
     m_gmstAtEpoch = gmstIau82(m_epochJd + m_epochFraction);
@@ -617,7 +618,8 @@ Sgp4State Sgp4::propagate(double t) const
     double tempL = m_t2 * t2;
     if (!m_simpleDrag) {
         const double dArgp = m_argPerigeeDragCoeff * t;
-        const double dM = m_meanAnomalyDragCoeff * (std::pow(1.0 + m_eta * std::cos(meanAnomalyDf), 3) - m_delta0Cubed);
+        const double delta = 1.0 + m_eta * std::cos(meanAnomalyDf);
+        const double dM = m_meanAnomalyDragCoeff * (delta * delta * delta - m_delta0Cubed);
         m.meanAnomaly = meanAnomalyDf + dArgp + dM;
         m.argPerigee = argPerigeeDf - dArgp - dM;
         const double t3 = t2 * t, t4 = t3 * t;
@@ -642,8 +644,12 @@ Sgp4State Sgp4::propagate(double t) const
         state.error = Sgp4Error::MeanMotion;
         return state;
     }
-    const double semiMajor = std::pow(kXke / meanMotion, kTwoThirds) * tempA * tempA;
-    meanMotion = kXke / std::pow(semiMajor, 1.5);
+    // Without resonance the mean motion is the epoch's, and so is its
+    // semi-major axis: no need for the power every time.
+    const double unperturbedAxis = meanMotion == m_epoch.meanMotion ? m_semiMajorAtEpoch
+                                                                    : std::pow(kXke / meanMotion, kTwoThirds);
+    const double semiMajor = unperturbedAxis * tempA * tempA;
+    meanMotion = kXke / (semiMajor * std::sqrt(semiMajor));
     m.eccentricity -= tempE;
     if (m.eccentricity >= 1.0 || m.eccentricity < -0.001) {
         state.error = Sgp4Error::MeanEccentricity;

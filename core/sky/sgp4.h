@@ -94,6 +94,7 @@ private:
     MeanElements m_epoch;        // mean elements at epoch
     double m_bstar = 0;
     double m_gmstAtEpoch = 0;
+    double m_semiMajorAtEpoch = 0; // earth radii, from the Brouwer mean motion
 
     // Secular rates and drag coefficients (Spacetrack Report #3 symbols).
     double m_meanAnomalyRate = 0, m_argPerigeeRate = 0, m_nodeRate = 0;
