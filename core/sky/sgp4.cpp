@@ -493,8 +493,8 @@ void Sgp4::addThirdBodyPeriodics(double t, MeanElements &e) const
 {
     const PeriodicChange s = periodicChange(m_sun, t);
     const PeriodicChange l = periodicChange(m_moon, t);
-    // The revision applies the full periodics (not their change since
-    // epoch): the element sets were fitted that way.
+    // Applied whole, as the 2006 revision does (its offsets at epoch are
+    // zero), so the states match the element sets' own propagator.
     const double dEcc = s.ecc + l.ecc;
     const double dInc = s.inc + l.inc;
     const double dL = s.meanLongitude + l.meanLongitude;
@@ -674,10 +674,10 @@ Sgp4State Sgp4::propagate(double t) const
             return state;
         }
     }
-    return positionAndVelocity(t, m, semiMajor, meanMotion);
+    return positionAndVelocity(m, semiMajor, meanMotion);
 }
 
-Sgp4State Sgp4::positionAndVelocity(double, const MeanElements &m, double a, double meanMotion) const
+Sgp4State Sgp4::positionAndVelocity(const MeanElements &m, double a, double meanMotion) const
 {
     Sgp4State state;
     const double sinI = std::sin(m.inclination);

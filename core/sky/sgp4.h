@@ -82,7 +82,7 @@ private:
     void initialiseDeepSpace(double epochSince1950);
     void addThirdBodyPeriodics(double t, MeanElements &e) const;
     void integrateResonance(double t, MeanElements &e, double &meanMotionChange) const;
-    Sgp4State positionAndVelocity(double t, const MeanElements &m, double semiMajorAxis, double meanMotion) const;
+    Sgp4State positionAndVelocity(const MeanElements &m, double semiMajorAxis, double meanMotion) const;
 
     Tle m_tle;
     double m_epochJd = 0;
