@@ -50,8 +50,8 @@ ProgramMode makeWindowMode()
         "Opens the operator window: the polar plot, the jog pad, go-to, Stop, Park and Home, the controller's "
         "configuration, live telemetry charts, the traffic log, the rotctld server and the setup and tuning "
         "wizard. Without --connect it opens the last connection, or the built-in simulator the first time. "
-        "The same program runs as a station service (slew --headless --help) and tunes a rotator without a "
-        "window (slew --tune URI --help).");
+        "The same program runs as a station service (slew --headless --help), tunes a rotator without a "
+        "window (slew --tune URI --help) and predicts passes (slew --passes SAT --help, slew --where SAT --help).");
     mode.options = {
         connectOption(QStringLiteral("Connect to URI at start: serial:/dev/ttyUSB0?baud=19200, tcp://HOST:PORT, "
                                      "rotctld://HOST:PORT or sim:?az_max=450.")),
@@ -264,8 +264,9 @@ const ProgramDescription &slewProgram()
                             "\n"
                             "The window's remembered connection, presets and preferences.")},
             {QStringLiteral("Exit status"),
-             QStringLiteral("0 when Slew ends normally, 1 when a tuning run fails or is cancelled, 2 for a bad "
-                            "option, a bad config file or a server that cannot listen.")},
+             QStringLiteral("0 when Slew ends normally, 1 when a tuning run fails or is cancelled or --passes or "
+                            "--where finds no satellite to answer for, 2 for a bad option, a bad config file or a "
+                            "server that cannot listen.")},
             {QStringLiteral("Examples"),
              QStringLiteral("  slew --connect serial:/dev/ttyUSB0?baud=9600 --dialect easycomm2\n"
                             "  slew --headless --connect tcp://192.0.2.10:4533 --rotctld-listen 127.0.0.1:4533\n"
