@@ -53,8 +53,8 @@ bool hasOption(int argc, char **argv, const char *name)
 
 QDateTime fromJulian(double julian)
 {
-    return QDateTime::fromMSecsSinceEpoch(qint64(std::llround(unixSecondsFromJulian(julian) * 1000.0)),
-                                          QTimeZone::utc());
+    // Qt::UTC, not a UTC time zone: ISO 8601 output then ends in "Z".
+    return QDateTime::fromMSecsSinceEpoch(qint64(std::llround(unixSecondsFromJulian(julian) * 1000.0)), Qt::UTC);
 }
 
 QString isoTime(double julian)
