@@ -21,6 +21,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QSettings>
 #include <QTimeZone>
 
 #include <cstdio>
@@ -94,11 +95,19 @@ struct Common {
 // The options both modes share: the station, a time, the element file.
 QString readCommon(const QCommandLineParser &parser, const QString &timeOption, bool needTle, Common *out)
 {
-    if (!parser.isSet(QStringLiteral("qth")))
-        return QStringLiteral("--qth is needed: LAT,LON[,HEIGHT_M] or a Maidenhead locator");
+    // The station from --qth, else the one the window saved (Sky → Station…).
     QString error;
-    if (!parseStation(parser.value(QStringLiteral("qth")), &out->station, &error))
-        return QStringLiteral("--qth: %1").arg(error);
+    if (parser.isSet(QStringLiteral("qth"))) {
+        if (!parseStation(parser.value(QStringLiteral("qth")), &out->station, &error))
+            return QStringLiteral("--qth: %1").arg(error);
+    } else {
+        const QString saved = QSettings().value(QLatin1String(kStationSettingsKey)).toString();
+        if (saved.isEmpty())
+            return QStringLiteral("--qth is needed: LAT,LON[,HEIGHT_M] or a Maidenhead locator "
+                                  "(or set the station in the window: Sky → Station…)");
+        if (!parseStation(saved, &out->station, &error))
+            return QStringLiteral("the saved station \"%1\": %2 (give --qth)").arg(saved, error);
+    }
     out->julian = nowJulian();
     if (parser.isSet(timeOption)) {
         const auto t = parseTime(parser.value(timeOption));

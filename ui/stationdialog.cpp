@@ -13,8 +13,6 @@
 namespace slew::ui {
 namespace {
 
-constexpr char kStationKey[] = "sky/station";
-
 QString describe(const sky::Station &s)
 {
     return QObject::tr("%1° %2, %3° %4, %5 m above the ellipsoid — locator %6")
@@ -58,7 +56,7 @@ StationDialog::StationDialog(QWidget *parent)
 
 bool StationDialog::savedStation(sky::Station *out, QString *text)
 {
-    const QString saved = QSettings().value(QLatin1String(kStationKey)).toString();
+    const QString saved = QSettings().value(QLatin1String(sky::kStationSettingsKey)).toString();
     if (text)
         *text = saved;
     QString error;
@@ -84,7 +82,7 @@ void StationDialog::accept()
     if (!sky::parseStation(m_edit->text(), &parsed, &error))
         return;
     m_station = parsed;
-    QSettings().setValue(QLatin1String(kStationKey), m_edit->text().trimmed());
+    QSettings().setValue(QLatin1String(sky::kStationSettingsKey), m_edit->text().trimmed());
     QDialog::accept();
 }
 

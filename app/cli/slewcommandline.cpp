@@ -125,7 +125,8 @@ ProgramOption qthOption()
     return {{QStringLiteral("qth")},
             QStringLiteral("station"),
             QStringLiteral("Where the station is: LAT,LON or LAT,LON,HEIGHT_M (degrees north and east, metres above "
-                           "the WGS-84 ellipsoid), or a Maidenhead locator of 4, 6 or 8 characters (JO65hq).")};
+                           "the WGS-84 ellipsoid), or a Maidenhead locator of 4, 6 or 8 characters (JO65hq). Without it, the "
+                           "station set in the window (Sky, Station) is used.")};
 }
 
 ProgramOption tleOption(const QString &description)

@@ -16,6 +16,10 @@ struct Station {
     QString locator; // as given, when the station came from one
 };
 
+// Where the window keeps the station (QSettings key), as the text typed;
+// the command line falls back to it when --qth is not given.
+inline constexpr char kStationSettingsKey[] = "sky/station";
+
 // "LAT,LON", "LAT,LON,HEIGHT_M" or a 4, 6 or 8 character locator
 // ("JO65", "JO65hq", "JO65hq42"). On refusal, *error says why.
 bool parseStation(const QString &text, Station *out, QString *error);

@@ -9,11 +9,13 @@
 #include "sky/sgp4.h"
 
 #include <QDateTime>
+#include <QDir>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QTimeZone>
 
@@ -30,10 +32,15 @@ struct Run {
     QByteArray out, err;
 };
 
-Run runSlew(const QStringList &arguments)
+Run runSlew(const QStringList &arguments, const QString &configHome = QString())
 {
     Run r;
     QProcess p;
+    // Settings from a directory of the test's, never the user's own.
+    static QTemporaryDir emptyHome;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert(QStringLiteral("XDG_CONFIG_HOME"), configHome.isEmpty() ? emptyHome.path() : configHome);
+    p.setProcessEnvironment(env);
     p.start(qEnvironmentVariable("SLEW_BIN"), arguments);
     if (!p.waitForFinished(120000))
         return r;
@@ -63,6 +70,7 @@ private slots:
     void refusals_data();
     void refusals();
     void helpDescribesTheMode();
+    void savedStationWhenNoQth();
 };
 
 void TestSlewSky::initTestCase()
@@ -266,6 +274,32 @@ void TestSlewSky::helpDescribesTheMode()
     QCOMPARE(r.exitCode, 0);
     QVERIFY(r.out.contains("--min-el"));
     QVERIFY(r.out.contains("--qth"));
+}
+
+void TestSlewSky::savedStationWhenNoQth()
+{
+    // What the window's Sky → Station… leaves in ~/.config/Slew/slew.conf.
+    QTemporaryDir home;
+    QVERIFY(QDir(home.path()).mkpath(QStringLiteral("Slew")));
+    QFile conf(home.filePath(QStringLiteral("Slew/slew.conf")));
+    QVERIFY(conf.open(QIODevice::WriteOnly));
+    conf.write("[sky]\nstation=JO65hq\n");
+    conf.close();
+    const QStringList where{QStringLiteral("--where"), QStringLiteral("sun"), QStringLiteral("--time"),
+                            QStringLiteral("2024-06-20T12:00:00Z"), QStringLiteral("--json")};
+    const Run saved = runSlew(where, home.path());
+    QVERIFY2(saved.exitCode == 0, saved.err.constData());
+    const Run given = runSlew(where + QStringList{QStringLiteral("--qth"), QStringLiteral("JO65hq")});
+    QCOMPARE(given.exitCode, 0);
+    QCOMPARE(saved.out, given.out);
+
+    // A bad saved station is refused with a pointer to --qth.
+    QVERIFY(conf.open(QIODevice::WriteOnly));
+    conf.write("[sky]\nstation=ZZ99\n");
+    conf.close();
+    const Run bad = runSlew(where, home.path());
+    QCOMPARE(bad.exitCode, 2);
+    QVERIFY2(bad.err.contains("give --qth"), bad.err.constData());
 }
 
 QTEST_GUILESS_MAIN(TestSlewSky)
