@@ -7,6 +7,7 @@
 #include "mainwindow.h"
 #include "operatortheme.h"
 #include "slew_headless.h"
+#include "slew_sky.h"
 #include "slew_tune.h"
 #include "rotctldpanel.h"
 #include "transport/hostport.h"
@@ -84,6 +85,9 @@ int main(int argc, char *argv[])
     // So does tuning from the command line.
     if (wantsTune(argc, argv))
         return runTune(argc, argv);
+    // And the sky questions: passes, and where things are.
+    if (wantsSky(argc, argv))
+        return runSky(argc, argv);
     // A screenshot, --help and --version need no display: choose the
     // offscreen platform before the application object picks one.
     for (int i = 1; i < argc; ++i) {

@@ -14,6 +14,7 @@
 #include "positionreadout.h"
 #include "presetpanel.h"
 #include "rotctldpanel.h"
+#include "stationdialog.h"
 #include "stopbutton.h"
 #include "targetconfirmation.h"
 #include "telemetrycharts.h"
@@ -149,6 +150,19 @@ void MainWindow::buildMenus()
     QAction *wizard = rotator->addAction(tr("Setup and tuning &wizard…"));
     wizard->setObjectName(QStringLiteral("actionSetupWizard"));
     connect(wizard, &QAction::triggered, this, &MainWindow::openSetupWizard);
+
+    QMenu *sky = menuBar()->addMenu(tr("&Sky"));
+    QAction *station = sky->addAction(tr("&Station…"));
+    station->setObjectName(QStringLiteral("actionStation"));
+    connect(station, &QAction::triggered, this, [this] {
+        auto *dialog = new StationDialog(this);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        connect(dialog, &QDialog::accepted, this, [this, dialog] {
+            logInfo(tr("station set to %1").arg(sky::stationLocator(dialog->station().latitudeDeg,
+                                                                    dialog->station().longitudeDeg)));
+        });
+        dialog->open(); // window-modal, the event loop keeps running
+    });
 }
 
 void MainWindow::openSetupWizard()

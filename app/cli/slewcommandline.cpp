@@ -51,8 +51,8 @@ ProgramMode makeWindowMode()
         "Opens the operator window: the polar plot, the jog pad, go-to, Stop, Park and Home, the controller's "
         "configuration, live telemetry charts, the traffic log, the rotctld server and the setup and tuning "
         "wizard. Without --connect it opens the last connection, or the built-in simulator the first time. "
-        "The same program runs as a station service (slew --headless --help) and tunes a rotator without a "
-        "window (slew --tune URI --help).");
+        "The same program runs as a station service (slew --headless --help), tunes a rotator without a "
+        "window (slew --tune URI --help) and predicts passes (slew --passes SAT --help, slew --where SAT --help).");
     mode.options = {
         connectOption(QStringLiteral("Connect to URI at start: serial:/dev/ttyUSB0?baud=19200, tcp://HOST:PORT, "
                                      "rotctld://HOST:PORT or sim:?az_max=450.")),
@@ -121,6 +121,70 @@ ProgramMode makeTuneMode()
     return mode;
 }
 
+ProgramOption qthOption()
+{
+    return {{QStringLiteral("qth")},
+            QStringLiteral("station"),
+            QStringLiteral("Where the station is: LAT,LON or LAT,LON,HEIGHT_M (degrees north and east, metres above "
+                           "the WGS-84 ellipsoid), or a Maidenhead locator of 4, 6 or 8 characters (JO65hq). Without it, the "
+                           "station set in the window (Sky, Station) is used.")};
+}
+
+ProgramOption tleOption(const QString &description)
+{
+    return {{QStringLiteral("tle")}, QStringLiteral("file"), description};
+}
+
+ProgramMode makePassesMode()
+{
+    ProgramMode mode;
+    mode.title = QStringLiteral("Pass prediction");
+    mode.synopsis = QStringLiteral("slew --passes SAT|all|sun|moon --qth STATION --tle FILE [--hours 24] "
+                                   "[--min-el 10] [--start ISO8601] [--json]");
+    mode.description = QStringLiteral(
+        "Prints the passes of a satellite over the station: AOS, the highest point (TCA) and LOS with their "
+        "times (UTC) and azimuths, the maximum elevation and whether the satellite is in sunlight. SAT is a "
+        "catalogue number or the start of a name, in any case; \"all\" predicts every satellite in the file, "
+        "sorted by AOS. For the sun and the moon it prints rise, culmination and set, and needs no --tle.");
+    mode.options = {
+        {{QStringLiteral("passes")}, QStringLiteral("sat"), QStringLiteral("The satellite, \"all\", \"sun\" or \"moon\".")},
+        qthOption(),
+        tleOption(QStringLiteral("Two- or three-line element sets (CelesTrak's format). Sets that cannot be "
+                                 "read are reported and skipped.")),
+        {{QStringLiteral("hours")}, QStringLiteral("hours"), QStringLiteral("How far ahead to look, 0.1 to 720 (default 24).")},
+        {{QStringLiteral("min-el")},
+         QStringLiteral("degrees"),
+         QStringLiteral("Passes must climb above this elevation, -5 to 90 (default 10; the almanac's "
+                        "-0.833 for the sun and the moon when not given).")},
+        {{QStringLiteral("start")},
+         QStringLiteral("time"),
+         QStringLiteral("Start of the search, ISO 8601 in UTC (default now).")},
+        {{QStringLiteral("json")}, {}, QStringLiteral("Print JSON instead of a table.")},
+    };
+    return mode;
+}
+
+ProgramMode makeWhereMode()
+{
+    ProgramMode mode;
+    mode.title = QStringLiteral("Where is it now");
+    mode.synopsis = QStringLiteral("slew --where SAT|sun|moon --qth STATION [--tle FILE] [--time ISO8601] "
+                                   "[--refraction] [--json]");
+    mode.description = QStringLiteral(
+        "Prints where a satellite, the sun or the moon is seen from the station: azimuth and elevation in "
+        "degrees, range in km and range-rate in km/s (positive when receding), and for a satellite the point "
+        "beneath it and whether it is in sunlight.");
+    mode.options = {
+        {{QStringLiteral("where")}, QStringLiteral("sat"), QStringLiteral("The satellite, \"sun\" or \"moon\".")},
+        qthOption(),
+        tleOption(QStringLiteral("Two- or three-line element sets; needed for a satellite.")),
+        {{QStringLiteral("time")}, QStringLiteral("time"), QStringLiteral("ISO 8601 in UTC (default now).")},
+        {{QStringLiteral("refraction")}, {}, QStringLiteral("Add standard atmospheric refraction to the elevation.")},
+        {{QStringLiteral("json")}, {}, QStringLiteral("Print JSON instead of text.")},
+    };
+    return mode;
+}
+
 ProgramMode makeSimMode()
 {
     ProgramMode mode;
@@ -181,7 +245,7 @@ const ProgramDescription &slewProgram()
             "GS-232A/B, over a serial port, over TCP, through Hamlib's rotctld, or its own simulator when no "
             "rotator is attached. Every move, from the operator, a tracker, a preset or a raw command, is checked "
             "against the rotator's limits before a byte is sent.");
-        p.modes = {makeWindowMode(), makeHeadlessMode(), makeTuneMode()};
+        p.modes = {makeWindowMode(), makeHeadlessMode(), makeTuneMode(), makePassesMode(), makeWhereMode()};
         p.sections = {
             {QStringLiteral("Links"),
              QStringLiteral("A link is named by a URI, the same on the command line, in the window and in profiles:\n"
@@ -202,13 +266,16 @@ const ProgramDescription &slewProgram()
                             "\n"
                             "The window's remembered connection, presets and preferences.")},
             {QStringLiteral("Exit status"),
-             QStringLiteral("0 when Slew ends normally, 1 when a tuning run fails or is cancelled, 2 for a bad "
-                            "option, a bad config file or a server that cannot listen.")},
+             QStringLiteral("0 when Slew ends normally, 1 when a tuning run fails or is cancelled or --passes or "
+                            "--where finds no satellite to answer for, 2 for a bad option, a bad config file or a "
+                            "server that cannot listen.")},
             {QStringLiteral("Examples"),
              QStringLiteral("  slew --connect serial:/dev/ttyUSB0?baud=9600 --dialect easycomm2\n"
                             "  slew --headless --connect tcp://192.0.2.10:4533 --rotctld-listen 127.0.0.1:4533\n"
                             "  systemctl enable --now slew-station@example\n"
-                            "  slew --tune sim:?kp=12&ki=1&kd=1 --axis az")},
+                            "  slew --tune sim:?kp=12&ki=1&kd=1 --axis az\n"
+                            "  slew --passes \"ISS (ZARYA)\" --qth JO65hq --tle amateur.txt --hours 48\n"
+                            "  slew --where moon --qth 55.69,12.63,20")},
             {QStringLiteral("See also"), QStringLiteral("slew-sim(1), ") + seeAlso()},
         };
         return p;
@@ -229,6 +296,16 @@ const ProgramMode &slewHeadlessMode()
 const ProgramMode &slewTuneMode()
 {
     return slewProgram().modes.at(2);
+}
+
+const ProgramMode &slewPassesMode()
+{
+    return slewProgram().modes.at(3);
+}
+
+const ProgramMode &slewWhereMode()
+{
+    return slewProgram().modes.at(4);
 }
 
 const ProgramDescription &slewSimProgram()

@@ -8,11 +8,13 @@ class QCommandLineParser;
 
 namespace slew::cli {
 
-// slew: the window, --headless and --tune.
+// slew: the window, --headless, --tune, --passes and --where.
 const ProgramDescription &slewProgram();
 const ProgramMode &slewWindowMode();
 const ProgramMode &slewHeadlessMode();
 const ProgramMode &slewTuneMode();
+const ProgramMode &slewPassesMode();
+const ProgramMode &slewWhereMode();
 
 // slew-sim: the simulated rotator as a server.
 const ProgramDescription &slewSimProgram();

@@ -1,0 +1,398 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// `slew --passes` and `slew --where`: argument parsing and printing; the
+// astronomy is in core/sky. The options are described in cli/.
+
+#include "slew_sky.h"
+
+#include "cli/slewcommandline.h"
+#include "slew_identity.h"
+
+#include "sky/observation.h"
+#include "sky/passes.h"
+#include "sky/sgp4.h"
+#include "sky/station.h"
+#include "sky/sunmoon.h"
+#include "sky/tle.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSettings>
+#include <QTimeZone>
+
+#include <cstdio>
+#include <cstring>
+#include <optional>
+
+using namespace slew::sky;
+
+namespace {
+
+int fail(const QString &message)
+{
+    std::fprintf(stderr, "slew: %s\n", qPrintable(message));
+    return 2;
+}
+
+void say(const QString &line)
+{
+    std::fprintf(stdout, "%s\n", qPrintable(line));
+}
+
+bool hasOption(int argc, char **argv, const char *name)
+{
+    const size_t length = std::strlen(name);
+    for (int i = 1; i < argc; ++i)
+        if (std::strcmp(argv[i], name) == 0 || (std::strncmp(argv[i], name, length) == 0 && argv[i][length] == '='))
+            return true;
+    return false;
+}
+
+QDateTime fromJulian(double julian)
+{
+    // Qt::UTC, not a UTC time zone: ISO 8601 output then ends in "Z".
+    return QDateTime::fromMSecsSinceEpoch(qint64(std::llround(unixSecondsFromJulian(julian) * 1000.0)), Qt::UTC);
+}
+
+QString isoTime(double julian)
+{
+    return fromJulian(julian).toString(Qt::ISODate);
+}
+
+QString tableTime(double julian)
+{
+    return fromJulian(julian).toString(QStringLiteral("yyyy-MM-dd HH:mm:ss"));
+}
+
+// ISO 8601; a time without a zone is UTC.
+std::optional<double> parseTime(const QString &text)
+{
+    QDateTime t = QDateTime::fromString(text.trimmed(), Qt::ISODateWithMs);
+    if (!t.isValid())
+        t = QDateTime::fromString(text.trimmed(), Qt::ISODate);
+    if (!t.isValid())
+        return std::nullopt;
+    if (t.timeSpec() == Qt::LocalTime)
+        t.setTimeZone(QTimeZone::utc());
+    return julianFromUnixSeconds(t.toMSecsSinceEpoch() / 1000.0);
+}
+
+double nowJulian()
+{
+    return julianFromUnixSeconds(QDateTime::currentMSecsSinceEpoch() / 1000.0);
+}
+
+struct Common {
+    Station station;
+    double julian = 0;
+    QList<Tle> sets;
+};
+
+// The options both modes share: the station, a time, the element file.
+QString readCommon(const QCommandLineParser &parser, const QString &timeOption, bool needTle, Common *out)
+{
+    // The station from --qth, else the one the window saved (Sky → Station…).
+    QString error;
+    if (parser.isSet(QStringLiteral("qth"))) {
+        if (!parseStation(parser.value(QStringLiteral("qth")), &out->station, &error))
+            return QStringLiteral("--qth: %1").arg(error);
+    } else {
+        const QString saved = QSettings().value(QLatin1String(kStationSettingsKey)).toString();
+        if (saved.isEmpty())
+            return QStringLiteral("--qth is needed: LAT,LON[,HEIGHT_M] or a Maidenhead locator "
+                                  "(or set the station in the window: Sky → Station…)");
+        if (!parseStation(saved, &out->station, &error))
+            return QStringLiteral("the saved station \"%1\": %2 (give --qth)").arg(saved, error);
+    }
+    out->julian = nowJulian();
+    if (parser.isSet(timeOption)) {
+        const auto t = parseTime(parser.value(timeOption));
+        if (!t)
+            return QStringLiteral("--%1 wants an ISO 8601 time such as 2024-06-20T12:00:00Z, not '%2'")
+                .arg(timeOption, parser.value(timeOption));
+        out->julian = *t;
+    }
+    if (!parser.isSet(QStringLiteral("tle"))) {
+        if (needTle)
+            return QStringLiteral("--tle FILE is needed for a satellite");
+        return {};
+    }
+    QFile file(parser.value(QStringLiteral("tle")));
+    if (!file.open(QIODevice::ReadOnly))
+        return QStringLiteral("--tle %1: %2").arg(file.fileName(), file.errorString());
+    const TleReadResult read = readTleText(QString::fromUtf8(file.readAll()));
+    for (const TleRefusal &r : read.refusals)
+        std::fprintf(stderr, "slew: %s:%d: skipped: %s\n", qPrintable(file.fileName()), r.line, qPrintable(r.reason));
+    out->sets = read.sets;
+    return {};
+}
+
+std::optional<SkyBody> bodyNamed(const QString &name)
+{
+    if (name.compare(QStringLiteral("sun"), Qt::CaseInsensitive) == 0)
+        return SkyBody::Sun;
+    if (name.compare(QStringLiteral("moon"), Qt::CaseInsensitive) == 0)
+        return SkyBody::Moon;
+    return std::nullopt;
+}
+
+// One satellite by number or name; the message says why not.
+const Tle *pickSatellite(const QList<Tle> &sets, const QString &query, QString *error)
+{
+    const QList<const Tle *> found = findTles(sets, query);
+    if (found.isEmpty()) {
+        *error = QStringLiteral("no satellite '%1' in the element file").arg(query);
+        return nullptr;
+    }
+    if (found.size() > 1) {
+        QStringList names;
+        for (const Tle *t : found.mid(0, 8))
+            names << QStringLiteral("%1 (%2)").arg(t->displayName()).arg(t->catalogueNumber);
+        *error = QStringLiteral("'%1' matches %2 satellites: %3%4")
+                     .arg(query)
+                     .arg(found.size())
+                     .arg(names.join(QStringLiteral(", ")), found.size() > 8 ? QStringLiteral(", …") : QString());
+        return nullptr;
+    }
+    return found.first();
+}
+
+QJsonObject pointJson(const PassPoint &p, bool withElevation)
+{
+    QJsonObject o{{QStringLiteral("time"), isoTime(p.julian)},
+                  {QStringLiteral("azimuth"), std::round(p.azimuthDeg * 10) / 10}};
+    if (withElevation)
+        o.insert(QStringLiteral("elevation"), std::round(p.elevationDeg * 10) / 10);
+    return o;
+}
+
+void printPasses(const QList<Pass> &passes, bool json, bool bodies)
+{
+    if (json) {
+        QJsonArray array;
+        for (const Pass &p : passes) {
+            QJsonObject o{{QStringLiteral("name"), p.name},
+                          {QStringLiteral("aos"), pointJson(p.aos, false)},
+                          {QStringLiteral("tca"), pointJson(p.tca, true)},
+                          {QStringLiteral("los"), pointJson(p.los, false)},
+                          {QStringLiteral("max_elevation"), std::round(p.maxElevationDeg() * 10) / 10},
+                          {QStringLiteral("duration_s"), std::round(p.durationSeconds())},
+                          {QStringLiteral("aos_clipped"), p.aosClipped},
+                          {QStringLiteral("los_clipped"), p.losClipped}};
+            if (!bodies) {
+                o.insert(QStringLiteral("catalogue_number"), p.catalogueNumber);
+                o.insert(QStringLiteral("sunlit"), p.sunlit);
+            }
+            array.append(o);
+        }
+        std::fputs(QJsonDocument(array).toJson(QJsonDocument::Indented).constData(), stdout);
+        return;
+    }
+    const QString header = bodies ? QStringLiteral("%1  %2  %3  %4  %5  %6  %7  %8")
+                                        .arg(QStringLiteral("Body"), -6)
+                                        .arg(QStringLiteral("Rise (UTC)"), -19)
+                                        .arg(QStringLiteral("Az"), 5)
+                                        .arg(QStringLiteral("Culmination"), -19)
+                                        .arg(QStringLiteral("El"), 5)
+                                        .arg(QStringLiteral("Set (UTC)"), -19)
+                                        .arg(QStringLiteral("Az"), 5)
+                                        .arg(QStringLiteral("Hours"))
+                                  : QStringLiteral("%1  %2  %3  %4  %5  %6  %7  %8  %9")
+                                        .arg(QStringLiteral("Satellite"), -20)
+                                        .arg(QStringLiteral("AOS (UTC)"), -19)
+                                        .arg(QStringLiteral("Az"), 5)
+                                        .arg(QStringLiteral("TCA (UTC)"), -19)
+                                        .arg(QStringLiteral("Max el"), 6)
+                                        .arg(QStringLiteral("LOS (UTC)"), -19)
+                                        .arg(QStringLiteral("Az"), 5)
+                                        .arg(QStringLiteral("Min"), 5)
+                                        .arg(QStringLiteral("Sunlit"));
+    say(header);
+    for (const Pass &p : passes) {
+        if (bodies) {
+            say(QStringLiteral("%1  %2  %3  %4  %5  %6  %7  %8")
+                    .arg(p.name, -6)
+                    .arg(tableTime(p.aos.julian) + (p.aosClipped ? QStringLiteral("*") : QString()), -19)
+                    .arg(p.aos.azimuthDeg, 5, 'f', 0)
+                    .arg(tableTime(p.tca.julian), -19)
+                    .arg(p.tca.elevationDeg, 5, 'f', 1)
+                    .arg(tableTime(p.los.julian) + (p.losClipped ? QStringLiteral("*") : QString()), -19)
+                    .arg(p.los.azimuthDeg, 5, 'f', 0)
+                    .arg(p.durationSeconds() / 3600.0, 5, 'f', 2));
+            continue;
+        }
+        say(QStringLiteral("%1  %2  %3  %4  %5  %6  %7  %8  %9")
+                .arg(p.name.left(20), -20)
+                .arg(tableTime(p.aos.julian) + (p.aosClipped ? QStringLiteral("*") : QString()), -19)
+                .arg(p.aos.azimuthDeg, 5, 'f', 0)
+                .arg(tableTime(p.tca.julian), -19)
+                .arg(p.tca.elevationDeg, 6, 'f', 1)
+                .arg(tableTime(p.los.julian) + (p.losClipped ? QStringLiteral("*") : QString()), -19)
+                .arg(p.los.azimuthDeg, 5, 'f', 0)
+                .arg(p.durationSeconds() / 60.0, 5, 'f', 1)
+                .arg(p.sunlit ? QStringLiteral("yes") : QStringLiteral("no")));
+    }
+    if (passes.isEmpty())
+        say(QStringLiteral("(no passes)"));
+}
+
+int runPasses(QCoreApplication &app)
+{
+    QCommandLineParser parser;
+    slew::cli::describeTo(parser, slew::cli::slewPassesMode());
+    parser.process(app);
+    const QString target = parser.value(QStringLiteral("passes")).trimmed();
+    if (target.isEmpty())
+        return fail(QStringLiteral("--passes needs a satellite, \"all\", \"sun\" or \"moon\""));
+    const std::optional<SkyBody> body = bodyNamed(target);
+
+    Common common;
+    const QString error = readCommon(parser, QStringLiteral("start"), !body, &common);
+    if (!error.isEmpty())
+        return fail(error);
+    bool ok = true;
+    const double hours = parser.isSet(QStringLiteral("hours")) ? parser.value(QStringLiteral("hours")).toDouble(&ok) : 24.0;
+    if (!ok || hours < 0.1 || hours > 720.0)
+        return fail(QStringLiteral("--hours must be 0.1 to 720, not '%1'").arg(parser.value(QStringLiteral("hours"))));
+    double minEl = body ? kRiseSetElevationDeg : 10.0;
+    if (parser.isSet(QStringLiteral("min-el"))) {
+        minEl = parser.value(QStringLiteral("min-el")).toDouble(&ok);
+        if (!ok || minEl < -5.0 || minEl > 90.0)
+            return fail(QStringLiteral("--min-el must be -5 to 90 degrees, not '%1'")
+                            .arg(parser.value(QStringLiteral("min-el"))));
+    }
+    const PassWindow window{common.julian, common.julian + hours / 24.0, minEl};
+    const bool json = parser.isSet(QStringLiteral("json"));
+
+    if (body) {
+        printPasses(predictBodyPasses(*body, common.station, window), json, true);
+        return 0;
+    }
+    if (target.compare(QStringLiteral("all"), Qt::CaseInsensitive) == 0) {
+        if (common.sets.isEmpty())
+            return fail(QStringLiteral("no element sets could be read from %1").arg(parser.value(QStringLiteral("tle"))));
+        printPasses(predictPasses(common.sets, common.station, window), json, false);
+        return 0;
+    }
+    QString why;
+    const Tle *tle = pickSatellite(common.sets, target, &why);
+    if (!tle) {
+        std::fprintf(stderr, "slew: %s\n", qPrintable(why));
+        return 1;
+    }
+    const Sgp4 sat(*tle);
+    if (sat.initialError() != Sgp4Error::None) {
+        std::fprintf(stderr, "slew: %s cannot be propagated: %s\n", qPrintable(tle->displayName()),
+                     qPrintable(sgp4ErrorText(sat.initialError())));
+        return 1;
+    }
+    printPasses(predictPasses(sat, common.station, window), json, false);
+    return 0;
+}
+
+int runWhere(QCoreApplication &app)
+{
+    QCommandLineParser parser;
+    slew::cli::describeTo(parser, slew::cli::slewWhereMode());
+    parser.process(app);
+    const QString target = parser.value(QStringLiteral("where")).trimmed();
+    if (target.isEmpty())
+        return fail(QStringLiteral("--where needs a satellite, \"sun\" or \"moon\""));
+    const std::optional<SkyBody> body = bodyNamed(target);
+    Common common;
+    const QString error = readCommon(parser, QStringLiteral("time"), !body, &common);
+    if (!error.isEmpty())
+        return fail(error);
+    const bool refraction = parser.isSet(QStringLiteral("refraction"));
+
+    QJsonObject out{{QStringLiteral("time"), isoTime(common.julian)}};
+    LookAngles look;
+    if (body) {
+        const BodyPosition p = bodyPosition(*body, common.station, common.julian);
+        look.azimuthDeg = p.azimuthDeg;
+        look.elevationDeg = p.elevationDeg;
+        // Range from the station, rate by a one-second difference.
+        const Vec3 station = stationEarthFixed(common.station);
+        auto rangeAt = [&](double julian) {
+            const BodyPosition q = bodyPosition(*body, common.station, julian);
+            const double ra = radians(q.rightAscensionDeg), dec = radians(q.declinationDeg);
+            const Vec3 geocentric = Vec3{std::cos(dec) * std::cos(ra), std::cos(dec) * std::sin(ra), std::sin(dec)}
+                                    * q.distanceKm;
+            const double g = gmstIau82(julian);
+            const Vec3 stationInertial{station.x * std::cos(g) - station.y * std::sin(g),
+                                       station.x * std::sin(g) + station.y * std::cos(g), station.z};
+            return (geocentric - stationInertial).norm();
+        };
+        look.rangeKm = rangeAt(common.julian);
+        look.rangeRateKmS = rangeAt(common.julian + 0.5 / kSecondsPerDay) - rangeAt(common.julian - 0.5 / kSecondsPerDay);
+        out.insert(QStringLiteral("name"), *body == SkyBody::Sun ? QStringLiteral("Sun") : QStringLiteral("Moon"));
+    } else {
+        QString why;
+        const Tle *tle = pickSatellite(common.sets, target, &why);
+        if (!tle) {
+            std::fprintf(stderr, "slew: %s\n", qPrintable(why));
+            return 1;
+        }
+        const Sgp4 sat(*tle);
+        const Sgp4State s = sat.propagateToJulian(common.julian);
+        if (!s.ok()) {
+            std::fprintf(stderr, "slew: %s cannot be propagated to %s: %s\n", qPrintable(tle->displayName()),
+                         qPrintable(isoTime(common.julian)), qPrintable(sgp4ErrorText(s.error)));
+            return 1;
+        }
+        look = lookAngles(common.station, s.positionKm, s.velocityKmS, common.julian);
+        const Geodetic under = subSatellitePoint(s.positionKm, common.julian);
+        out.insert(QStringLiteral("name"), tle->displayName());
+        out.insert(QStringLiteral("catalogue_number"), tle->catalogueNumber);
+        out.insert(QStringLiteral("sub_latitude"), under.latitudeDeg);
+        out.insert(QStringLiteral("sub_longitude"), under.longitudeDeg);
+        out.insert(QStringLiteral("altitude_km"), under.heightKm);
+        out.insert(QStringLiteral("sunlit"), isSunlit(s.positionKm, sunVectorEquatorial(common.julian)));
+        out.insert(QStringLiteral("element_age_days"), common.julian - sat.epochJulian());
+    }
+    if (refraction)
+        look.elevationDeg += refractionDeg(look.elevationDeg);
+    out.insert(QStringLiteral("azimuth"), look.azimuthDeg);
+    out.insert(QStringLiteral("elevation"), look.elevationDeg);
+    out.insert(QStringLiteral("range_km"), look.rangeKm);
+    out.insert(QStringLiteral("range_rate_km_s"), look.rangeRateKmS);
+    out.insert(QStringLiteral("refraction"), refraction);
+
+    if (parser.isSet(QStringLiteral("json"))) {
+        std::fputs(QJsonDocument(out).toJson(QJsonDocument::Indented).constData(), stdout);
+        return 0;
+    }
+    say(QStringLiteral("%1 at %2").arg(out.value(QStringLiteral("name")).toString(), isoTime(common.julian)));
+    say(QStringLiteral("azimuth    %1°").arg(look.azimuthDeg, 0, 'f', 3));
+    say(QStringLiteral("elevation  %1°%2").arg(look.elevationDeg, 0, 'f', 3)
+            .arg(refraction ? QStringLiteral(" (refracted)") : QString()));
+    say(QStringLiteral("range      %1 km").arg(look.rangeKm, 0, 'f', 3));
+    say(QStringLiteral("range-rate %1 km/s").arg(look.rangeRateKmS, 0, 'f', 4));
+    if (!body) {
+        say(QStringLiteral("beneath    %1°, %2°, %3 km up")
+                .arg(out.value(QStringLiteral("sub_latitude")).toDouble(), 0, 'f', 3)
+                .arg(out.value(QStringLiteral("sub_longitude")).toDouble(), 0, 'f', 3)
+                .arg(out.value(QStringLiteral("altitude_km")).toDouble(), 0, 'f', 1));
+        say(QStringLiteral("sunlit     %1").arg(out.value(QStringLiteral("sunlit")).toBool() ? QStringLiteral("yes")
+                                                                                          : QStringLiteral("no")));
+    }
+    return 0;
+}
+
+} // namespace
+
+bool wantsSky(int argc, char **argv)
+{
+    return hasOption(argc, argv, "--passes") || hasOption(argc, argv, "--where");
+}
+
+int runSky(int argc, char **argv)
+{
+    QCoreApplication app(argc, argv);
+    setUpSlewApplication();
+    return hasOption(argc, argv, "--passes") ? runPasses(app) : runWhere(app);
+}

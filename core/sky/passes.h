@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Pass prediction: when a satellite (or the sun, or the moon) is above a
+// minimum elevation at the station. A pass has its acquisition (AOS), the
+// time of closest approach (TCA, taken as the moment of highest elevation,
+// which is what an antenna cares about) and its loss (LOS), each with the
+// azimuth, and whether the satellite is in sunlight during it.
+//
+// The search steps through time, as far as the object provably cannot
+// cross the threshold (for a satellite: its angle from the station about
+// the earth's centre, against the largest angle at which it can be up and
+// the fastest it can move), then pins each crossing down by bisection to
+// 10 ms and the peak by golden section. A pass that clears the threshold for
+// less than the shortest step (30 s for satellites) can be missed; such
+// passes are of no use to a rotator anyway.
+
+#include "sgp4.h"
+#include "station.h"
+#include "sunmoon.h"
+#include "tle.h"
+
+#include <QList>
+#include <QString>
+
+#include <functional>
+
+namespace slew::sky {
+
+struct PassPoint {
+    double julian = 0;
+    double azimuthDeg = 0;
+    double elevationDeg = 0;
+};
+
+struct Pass {
+    QString name;
+    int catalogueNumber = 0;  // 0 for the sun and the moon
+    PassPoint aos, tca, los;
+    bool aosClipped = false;  // already up when the window opened
+    bool losClipped = false;  // still up when the search gave up
+    bool sunlit = false;      // in sunlight for some of the pass
+    double maxElevationDeg() const { return tca.elevationDeg; }
+    double durationSeconds() const { return (los.julian - aos.julian) * kSecondsPerDay; }
+};
+
+struct PassWindow {
+    double startJulian = 0;
+    double endJulian = 0;        // passes that begin before this are reported whole
+    double minElevationDeg = 0;
+};
+
+// The next passes of one satellite. A satellite that cannot be propagated
+// (decayed, invalid elements) has none.
+QList<Pass> predictPasses(const Sgp4 &satellite, const Station &station, const PassWindow &window);
+
+// Every satellite, all passes sorted by AOS.
+QList<Pass> predictPasses(const QList<Tle> &satellites, const Station &station, const PassWindow &window);
+
+// Rise, culmination and set of the sun or the moon above the window's
+// minimum elevation. The almanac's sunrise and sunset put the centre at
+// kRiseSetElevationDeg: the upper limb on the horizon, lifted by standard
+// refraction.
+inline constexpr double kRiseSetElevationDeg = -0.8333;
+QList<Pass> predictBodyPasses(SkyBody body, const Station &station, const PassWindow &window);
+
+// The engine, on any elevation function: exposed for tests.
+struct ElevationSample {
+    double elevationDeg = 0;
+    double azimuthDeg = 0;
+    // A proven lower bound on the time before the elevation can cross the
+    // threshold (from geometry); 0 when the function knows none.
+    double quietSeconds = 0;
+};
+using ElevationFunction = std::function<ElevationSample(double julian)>;
+struct PassScan {
+    double maxElevationRateDegS = 1.0; // bound on |d elevation / dt|, for the step below the threshold
+    double inPassStepS = 30.0;
+    double maxStepS = 600.0;
+};
+QList<Pass> scanPasses(const ElevationFunction &elevation, const PassWindow &window, const PassScan &scan);
+
+// The satellite's look angles at a time; false when it cannot be propagated.
+bool observeSatellite(const Sgp4 &satellite, const Station &station, double julian, LookAngles *out);
+
+} // namespace slew::sky

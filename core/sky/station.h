@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Where the antenna stands: geodetic latitude and longitude (WGS-84,
+// degrees, east positive) and height above the ellipsoid. Operators often
+// know their station by its Maidenhead locator instead; a locator stands for
+// the centre of the square it names.
+
+#include <QString>
+
+namespace slew::sky {
+
+struct Station {
+    double latitudeDeg = 0;
+    double longitudeDeg = 0;
+    double heightM = 0;
+    QString locator; // as given, when the station came from one
+};
+
+// Where the window keeps the station (QSettings key), as the text typed;
+// the command line falls back to it when --qth is not given.
+inline constexpr char kStationSettingsKey[] = "sky/station";
+
+// "LAT,LON", "LAT,LON,HEIGHT_M" or a 4, 6 or 8 character locator
+// ("JO65", "JO65hq", "JO65hq42"). On refusal, *error says why.
+bool parseStation(const QString &text, Station *out, QString *error);
+
+// The centre of a Maidenhead square; false (and *error) for a malformed one.
+bool locatorToStation(const QString &locator, Station *out, QString *error);
+
+// The 6-character locator of a position.
+QString stationLocator(double latitudeDeg, double longitudeDeg);
+
+} // namespace slew::sky

@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The sun and the moon as the station sees them: apparent topocentric
+// azimuth and elevation (aberration, nutation and, for the moon, parallax),
+// computed with libnova (Meeus's "Astronomical Algorithms"). Times are UTC
+// Julian dates; the difference to dynamical time is applied here.
+
+#include "observation.h"
+#include "skyvector.h"
+#include "station.h"
+
+namespace slew::sky {
+
+enum class SkyBody { Sun, Moon };
+
+struct BodyPosition {
+    double azimuthDeg = 0;   // from true north, clockwise
+    double elevationDeg = 0; // geometric (no refraction)
+    double distanceKm = 0;   // from the earth's centre
+    double rightAscensionDeg = 0; // apparent geocentric, of date
+    double declinationDeg = 0;
+};
+
+BodyPosition bodyPosition(SkyBody body, const Station &station, double julianDate);
+inline BodyPosition sunPosition(const Station &s, double jd) { return bodyPosition(SkyBody::Sun, s, jd); }
+inline BodyPosition moonPosition(const Station &s, double jd) { return bodyPosition(SkyBody::Moon, s, jd); }
+
+// Geocentric direction to the sun in the equatorial frame of date (close
+// enough to TEME for the shadow test), in km.
+Vec3 sunVectorEquatorial(double julianDate);
+
+} // namespace slew::sky

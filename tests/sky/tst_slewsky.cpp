@@ -1,0 +1,306 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// `slew --passes` and `slew --where` as the real program: the answers match
+// the library's, the table and JSON forms both work, and bad input is
+// refused with a message and exit status 2 (1 when there is nothing to
+// answer with).
+
+#include "sky/observation.h"
+#include "sky/passes.h"
+#include "sky/sgp4.h"
+
+#include <QDateTime>
+#include <QDir>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimeZone>
+
+using namespace slew::sky;
+
+namespace {
+
+const QString kTle = QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle");
+// A day inside the snapshot's epochs.
+const QString kStart = QStringLiteral("2018-01-21T00:00:00Z");
+
+struct Run {
+    int exitCode = -1;
+    QByteArray out, err;
+};
+
+Run runSlew(const QStringList &arguments, const QString &configHome = QString())
+{
+    Run r;
+    QProcess p;
+    // Settings from a directory of the test's, never the user's own.
+    static QTemporaryDir emptyHome;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert(QStringLiteral("XDG_CONFIG_HOME"), configHome.isEmpty() ? emptyHome.path() : configHome);
+    p.setProcessEnvironment(env);
+    p.start(qEnvironmentVariable("SLEW_BIN"), arguments);
+    if (!p.waitForFinished(120000))
+        return r;
+    r.exitCode = p.exitCode();
+    r.out = p.readAllStandardOutput();
+    r.err = p.readAllStandardError();
+    return r;
+}
+
+double julianOf(const QString &iso)
+{
+    return julianFromUnixSeconds(QDateTime::fromString(iso, Qt::ISODate).toMSecsSinceEpoch() / 1000.0);
+}
+
+} // namespace
+
+class TestSlewSky : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void passesAsJson();
+    void passesOfAllSortedByAos();
+    void passesTable();
+    void sunRiseAndSet();
+    void whereMatchesTheLibrary();
+    void whereSunAndMoon();
+    void refusals_data();
+    void refusals();
+    void helpDescribesTheMode();
+    void savedStationWhenNoQth();
+};
+
+void TestSlewSky::initTestCase()
+{
+    QVERIFY2(!qEnvironmentVariable("SLEW_BIN").isEmpty(), "SLEW_BIN is not set (tests/CMakeLists.txt sets it)");
+    QVERIFY(QFile::exists(kTle));
+}
+
+void TestSlewSky::passesAsJson()
+{
+    const Run r = runSlew({QStringLiteral("--passes"), QStringLiteral("iss"), QStringLiteral("--qth"),
+                        QStringLiteral("JO65hq"), QStringLiteral("--tle"), kTle, QStringLiteral("--start"), kStart,
+                        QStringLiteral("--hours"), QStringLiteral("24"), QStringLiteral("--min-el"),
+                        QStringLiteral("10"), QStringLiteral("--json")});
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    const QJsonArray passes = QJsonDocument::fromJson(r.out).array();
+    QVERIFY(passes.size() >= 2);
+
+    // The same passes as the library gives.
+    QList<Tle> sets = readTleText([] {
+                          QFile f(kTle);
+                          f.open(QIODevice::ReadOnly);
+                          return QString::fromLatin1(f.readAll());
+                      }())
+                          .sets;
+    const Tle *iss = findTles(sets, QStringLiteral("ISS")).first();
+    const double start = julianOf(kStart);
+    const QList<Pass> expected = predictPasses(Sgp4(*iss), Station{55.6875, 12.625, 0, {}}, {start, start + 1.0, 10.0});
+    QCOMPARE(passes.size(), expected.size());
+    for (int i = 0; i < passes.size(); ++i) {
+        const QJsonObject p = passes[i].toObject();
+        QCOMPARE(p.value(QStringLiteral("name")).toString(), QStringLiteral("ISS (ZARYA)"));
+        QCOMPARE(p.value(QStringLiteral("catalogue_number")).toInt(), 25544);
+        const double aos = julianOf(p.value(QStringLiteral("aos")).toObject().value(QStringLiteral("time")).toString());
+        QVERIFY(std::fabs(aos - expected[i].aos.julian) * kSecondsPerDay < 1.0);
+        QVERIFY(p.value(QStringLiteral("max_elevation")).toDouble() >= 10.0);
+        QVERIFY(std::fabs(p.value(QStringLiteral("max_elevation")).toDouble() - expected[i].maxElevationDeg()) < 0.06);
+        QVERIFY(p.contains(QStringLiteral("sunlit")));
+        QVERIFY(p.value(QStringLiteral("los")).toObject().contains(QStringLiteral("azimuth")));
+    }
+}
+
+void TestSlewSky::passesOfAllSortedByAos()
+{
+    const Run r = runSlew({QStringLiteral("--passes"), QStringLiteral("all"), QStringLiteral("--qth"),
+                        QStringLiteral("55.6875,12.625,20"), QStringLiteral("--tle"), kTle, QStringLiteral("--start"),
+                        kStart, QStringLiteral("--hours"), QStringLiteral("1"), QStringLiteral("--json")});
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    const QJsonArray passes = QJsonDocument::fromJson(r.out).array();
+    QVERIFY(passes.size() > 20);
+    QSet<int> satellites;
+    QString previous;
+    for (const QJsonValue &v : passes) {
+        const QJsonObject p = v.toObject();
+        const QString aos = p.value(QStringLiteral("aos")).toObject().value(QStringLiteral("time")).toString();
+        QVERIFY(previous <= aos); // ISO 8601 in UTC sorts as text
+        previous = aos;
+        satellites.insert(p.value(QStringLiteral("catalogue_number")).toInt());
+    }
+    QVERIFY(satellites.size() > 10);
+}
+
+void TestSlewSky::passesTable()
+{
+    const Run r = runSlew({QStringLiteral("--passes"), QStringLiteral("25544"), QStringLiteral("--qth"),
+                        QStringLiteral("JO65hq"), QStringLiteral("--tle"), kTle, QStringLiteral("--start"), kStart});
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    const QList<QByteArray> lines = r.out.trimmed().split('\n');
+    QVERIFY(lines.size() >= 3);
+    QVERIFY(lines[0].startsWith("Satellite"));
+    QVERIFY(lines[0].contains("AOS (UTC)") && lines[0].contains("Max el") && lines[0].contains("Sunlit"));
+    QVERIFY(lines[1].startsWith("ISS (ZARYA)"));
+    QVERIFY(lines[1].contains("2018-01-21"));
+}
+
+void TestSlewSky::sunRiseAndSet()
+{
+    const Run r = runSlew({QStringLiteral("--passes"), QStringLiteral("sun"), QStringLiteral("--qth"),
+                        QStringLiteral("51.4779,-0.0015"), QStringLiteral("--start"),
+                        QStringLiteral("2024-06-20T00:00:00Z"), QStringLiteral("--hours"), QStringLiteral("24"),
+                        QStringLiteral("--json")});
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    const QJsonArray passes = QJsonDocument::fromJson(r.out).array();
+    QCOMPARE(passes.size(), 1);
+    const QJsonObject day = passes[0].toObject();
+    // Greenwich, 20 June 2024: London's published sunrise and sunset are
+    // 04:43 and 21:21 BST; the sun culminates at 90 − 51.48 + 23.44 = 62.0°.
+    // Published to the minute: within half a minute of it.
+    const double rise = julianOf(day.value(QStringLiteral("aos")).toObject().value(QStringLiteral("time")).toString());
+    const double set = julianOf(day.value(QStringLiteral("los")).toObject().value(QStringLiteral("time")).toString());
+    QVERIFY(std::fabs(rise - julianOf(QStringLiteral("2024-06-20T03:43:00Z"))) * kSecondsPerDay <= 30.0);
+    QVERIFY(std::fabs(set - julianOf(QStringLiteral("2024-06-20T20:21:00Z"))) * kSecondsPerDay <= 30.0);
+    QVERIFY(std::fabs(day.value(QStringLiteral("max_elevation")).toDouble() - 62.0) < 0.2);
+}
+
+void TestSlewSky::whereMatchesTheLibrary()
+{
+    const QString when = QStringLiteral("2018-01-21T12:34:56Z");
+    const Run r = runSlew({QStringLiteral("--where"), QStringLiteral("ISS (ZARYA)"), QStringLiteral("--qth"),
+                        QStringLiteral("JO65hq"), QStringLiteral("--tle"), kTle, QStringLiteral("--time"), when,
+                        QStringLiteral("--json")});
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+
+    QFile f(kTle);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QList<Tle> sets = readTleText(QString::fromLatin1(f.readAll())).sets;
+    const Sgp4 iss(*findTles(sets, QStringLiteral("25544")).first());
+    const double jd = julianOf(when);
+    const Sgp4State s = iss.propagateToJulian(jd);
+    const LookAngles look = lookAngles(Station{55.6875, 12.625, 0, {}}, s.positionKm, s.velocityKmS, jd);
+    QVERIFY(std::fabs(o.value(QStringLiteral("azimuth")).toDouble() - look.azimuthDeg) < 1e-6);
+    QVERIFY(std::fabs(o.value(QStringLiteral("elevation")).toDouble() - look.elevationDeg) < 1e-6);
+    QVERIFY(std::fabs(o.value(QStringLiteral("range_km")).toDouble() - look.rangeKm) < 1e-6);
+    QVERIFY(std::fabs(o.value(QStringLiteral("range_rate_km_s")).toDouble() - look.rangeRateKmS) < 1e-9);
+    QVERIFY(std::fabs(o.value(QStringLiteral("altitude_km")).toDouble() - 405) < 30);
+    QVERIFY(o.contains(QStringLiteral("sunlit")));
+
+    // Refraction lifts the elevation by the formula's amount.
+    const Run refracted = runSlew({QStringLiteral("--where"), QStringLiteral("25544"), QStringLiteral("--qth"),
+                                QStringLiteral("JO65hq"), QStringLiteral("--tle"), kTle, QStringLiteral("--time"), when,
+                                QStringLiteral("--refraction"), QStringLiteral("--json")});
+    QCOMPARE(refracted.exitCode, 0);
+    const double lifted = QJsonDocument::fromJson(refracted.out).object().value(QStringLiteral("elevation")).toDouble();
+    QVERIFY(std::fabs(lifted - (look.elevationDeg + refractionDeg(look.elevationDeg))) < 1e-6);
+
+    // The text form says the same.
+    const Run text = runSlew({QStringLiteral("--where"), QStringLiteral("25544"), QStringLiteral("--qth"),
+                           QStringLiteral("JO65hq"), QStringLiteral("--tle"), kTle, QStringLiteral("--time"), when});
+    QCOMPARE(text.exitCode, 0);
+    QVERIFY(text.out.contains("azimuth    " + QByteArray::number(look.azimuthDeg, 'f', 3)));
+    QVERIFY(text.out.contains("range-rate"));
+}
+
+void TestSlewSky::whereSunAndMoon()
+{
+    for (const QString &body : {QStringLiteral("sun"), QStringLiteral("Moon")}) {
+        const Run r = runSlew({QStringLiteral("--where"), body, QStringLiteral("--qth"), QStringLiteral("FN31pr"),
+                            QStringLiteral("--time"), QStringLiteral("2024-06-20T12:00:00Z"), QStringLiteral("--json")});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+        const Station s{41.729166666, -72.708333333, 0, {}};
+        const BodyPosition p = bodyPosition(body == u"sun" ? SkyBody::Sun : SkyBody::Moon, s, 2460482.0);
+        QVERIFY(std::fabs(o.value(QStringLiteral("azimuth")).toDouble() - p.azimuthDeg) < 1e-6);
+        QVERIFY(std::fabs(o.value(QStringLiteral("elevation")).toDouble() - p.elevationDeg) < 1e-6);
+        // Range within the earth's radius of the centre distance; the sun's
+        // range-rate is under 1 km/s, the moon's under 2.
+        QVERIFY(std::fabs(o.value(QStringLiteral("range_km")).toDouble() - p.distanceKm) < 6400);
+        QVERIFY(std::fabs(o.value(QStringLiteral("range_rate_km_s")).toDouble()) < 2.0);
+    }
+}
+
+void TestSlewSky::refusals_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<int>("exitCode");
+    QTest::addColumn<QString>("message");
+    const QStringList tle{QStringLiteral("--tle"), kTle};
+    QTest::newRow("bad locator") << (QStringList{QStringLiteral("--where"), QStringLiteral("sun"),
+                                                 QStringLiteral("--qth"), QStringLiteral("ZZ99")})
+                                 << 2 << QStringLiteral("letters A to R");
+    QTest::newRow("no station") << (QStringList{QStringLiteral("--where"), QStringLiteral("sun")}) << 2
+                                << QStringLiteral("--qth is needed");
+    QTest::newRow("satellite without elements")
+        << (QStringList{QStringLiteral("--passes"), QStringLiteral("ISS"), QStringLiteral("--qth"), QStringLiteral("JO65")})
+        << 2 << QStringLiteral("--tle FILE is needed");
+    QTest::newRow("bad time") << (QStringList{QStringLiteral("--where"), QStringLiteral("moon"), QStringLiteral("--qth"),
+                                              QStringLiteral("JO65"), QStringLiteral("--time"), QStringLiteral("noon")})
+                              << 2 << QStringLiteral("ISO 8601");
+    QTest::newRow("hours out of range")
+        << (QStringList{QStringLiteral("--passes"), QStringLiteral("sun"), QStringLiteral("--qth"), QStringLiteral("JO65"),
+                        QStringLiteral("--hours"), QStringLiteral("0")})
+        << 2 << QStringLiteral("--hours");
+    QTest::newRow("no such satellite") << (QStringList{QStringLiteral("--where"), QStringLiteral("VOYAGER"),
+                                                       QStringLiteral("--qth"), QStringLiteral("JO65")}
+                                           + tle)
+                                       << 1 << QStringLiteral("no satellite 'VOYAGER'");
+    QTest::newRow("ambiguous name") << (QStringList{QStringLiteral("--where"), QStringLiteral("NOAA"),
+                                                    QStringLiteral("--qth"), QStringLiteral("JO65")}
+                                        + tle)
+                                    << 1 << QStringLiteral("matches");
+    QTest::newRow("missing file") << (QStringList{QStringLiteral("--passes"), QStringLiteral("ISS"),
+                                                  QStringLiteral("--qth"), QStringLiteral("JO65"), QStringLiteral("--tle"),
+                                                  QStringLiteral("/nonexistent/elements.txt")})
+                                  << 2 << QStringLiteral("/nonexistent/elements.txt");
+}
+
+void TestSlewSky::refusals()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(int, exitCode);
+    QFETCH(QString, message);
+    const Run r = runSlew(arguments);
+    QCOMPARE(r.exitCode, exitCode);
+    QVERIFY2(QString::fromUtf8(r.err).contains(message), r.err.constData());
+}
+
+void TestSlewSky::helpDescribesTheMode()
+{
+    const Run r = runSlew({QStringLiteral("--passes"), QStringLiteral("x"), QStringLiteral("--help")});
+    QCOMPARE(r.exitCode, 0);
+    QVERIFY(r.out.contains("--min-el"));
+    QVERIFY(r.out.contains("--qth"));
+}
+
+void TestSlewSky::savedStationWhenNoQth()
+{
+    // What the window's Sky → Station… leaves in ~/.config/Slew/slew.conf.
+    QTemporaryDir home;
+    QVERIFY(QDir(home.path()).mkpath(QStringLiteral("Slew")));
+    QFile conf(home.filePath(QStringLiteral("Slew/slew.conf")));
+    QVERIFY(conf.open(QIODevice::WriteOnly));
+    conf.write("[sky]\nstation=JO65hq\n");
+    conf.close();
+    const QStringList where{QStringLiteral("--where"), QStringLiteral("sun"), QStringLiteral("--time"),
+                            QStringLiteral("2024-06-20T12:00:00Z"), QStringLiteral("--json")};
+    const Run saved = runSlew(where, home.path());
+    QVERIFY2(saved.exitCode == 0, saved.err.constData());
+    const Run given = runSlew(where + QStringList{QStringLiteral("--qth"), QStringLiteral("JO65hq")});
+    QCOMPARE(given.exitCode, 0);
+    QCOMPARE(saved.out, given.out);
+
+    // A bad saved station is refused with a pointer to --qth.
+    QVERIFY(conf.open(QIODevice::WriteOnly));
+    conf.write("[sky]\nstation=ZZ99\n");
+    conf.close();
+    const Run bad = runSlew(where, home.path());
+    QCOMPARE(bad.exitCode, 2);
+    QVERIFY2(bad.err.contains("give --qth"), bad.err.constData());
+}
+
+QTEST_GUILESS_MAIN(TestSlewSky)
+#include "tst_slewsky.moc"

@@ -1,0 +1,177 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Reading element sets: the fields, the checksum, two- and three-line files,
+// refusals that name the line and the reason while the rest still loads,
+// and finding a set by number or name.
+
+#include "sky/tle.h"
+
+#include <QTest>
+
+using namespace slew::sky;
+
+namespace {
+
+const QString kIssName = QStringLiteral("ISS (ZARYA)");
+// Real sets: the ISS (epoch 2008-09-20) as Wikipedia's TLE article prints
+// it, and NOAA 19 from the test data snapshot.
+const QString kIss1 = QStringLiteral("1 25544U 98067A   08264.51782528 -.00002182  00000-0 -11606-4 0  2927");
+const QString kIss2 = QStringLiteral("2 25544  51.6416 247.4627 0006703 130.5360 325.0288 15.72125391563537");
+const QString kNoaa1 = QStringLiteral("1 33591U 09005A   18020.91958580  .00000107  00000-0  83477-4 0  9992");
+const QString kNoaa2 = QStringLiteral("2 33591  99.1238 356.1693 0014450  24.0615 336.1228 14.12247534461122");
+
+// Change one column (1-based) and fix the checksum, so only the field is wrong.
+QString withColumn(QString line, int column, QChar c)
+{
+    line[column - 1] = c;
+    line[68] = QChar(u'0' + tleChecksum(line));
+    return line;
+}
+
+} // namespace
+
+class TestTle : public QObject {
+    Q_OBJECT
+private slots:
+    void readsTheFields();
+    void checksum_data();
+    void checksum();
+    void refusals_data();
+    void refusals();
+    void fileKeepsLoadingPastBadSets();
+    void findsByNumberAndName_data();
+    void findsByNumberAndName();
+};
+
+void TestTle::readsTheFields()
+{
+    Tle t;
+    TleRefusal r;
+    QVERIFY2(parseTle(kIss1, kIss2, &t, &r), qPrintable(r.reason));
+    QCOMPARE(t.catalogueNumber, 25544);
+    QCOMPARE(t.designator, QStringLiteral("98067A"));
+    QCOMPARE(t.epochYear, 2008);
+    QCOMPARE(t.epochDayOfYear, 264.51782528);
+    QCOMPARE(t.meanMotionDot, -0.00002182);
+    QCOMPARE(t.meanMotionDdot, 0.0);
+    QVERIFY(qFuzzyCompare(t.bstar, -0.11606e-4));
+    QCOMPARE(t.inclinationDeg, 51.6416);
+    QCOMPARE(t.raanDeg, 247.4627);
+    QCOMPARE(t.eccentricity, 0.0006703);
+    QCOMPARE(t.argPerigeeDeg, 130.5360);
+    QCOMPARE(t.meanAnomalyDeg, 325.0288);
+    QCOMPARE(t.meanMotionRevPerDay, 15.72125391);
+    QCOMPARE(t.revolutionNumber, 56353);
+    // 2008 day 264.5178 is 20 September 12:25:40 UTC: JD 2454730.0178.
+    QCOMPARE(t.epochJulianDay(), 2454729.5);
+    QVERIFY(std::fabs(t.epochJulian() - 2454730.01782528) < 1e-9);
+}
+
+void TestTle::checksum_data()
+{
+    QTest::addColumn<QString>("line");
+    QTest::addColumn<int>("sum");
+    QTest::newRow("ISS line 1") << kIss1 << 7;
+    QTest::newRow("ISS line 2") << kIss2 << 7;
+    QTest::newRow("minus counts one") << QStringLiteral("1 -") << 2;
+    QTest::newRow("letters and plus count nothing") << QStringLiteral("ABC+.") << 0;
+}
+
+void TestTle::checksum()
+{
+    QFETCH(QString, line);
+    QFETCH(int, sum);
+    QCOMPARE(tleChecksum(line), sum);
+}
+
+void TestTle::refusals_data()
+{
+    QTest::addColumn<QString>("line1");
+    QTest::addColumn<QString>("line2");
+    QTest::addColumn<int>("line");
+    QTest::addColumn<QString>("reasonContains");
+    QString badSum1 = kIss1;
+    badSum1[68] = u'8';
+    QString badSum2 = kIss2;
+    badSum2[68] = u'0';
+    QTest::newRow("checksum line 1") << badSum1 << kIss2 << 1 << QStringLiteral("checksum");
+    QTest::newRow("checksum line 2") << kIss1 << badSum2 << 2 << QStringLiteral("checksum");
+    QTest::newRow("short line") << kIss1.left(40) << kIss2 << 1 << QStringLiteral("69 columns");
+    QTest::newRow("lines swapped") << kIss2 << kIss1 << 1 << QStringLiteral("line 1");
+    QTest::newRow("numbers differ") << kIss1 << kNoaa2 << 2 << QStringLiteral("catalogue number");
+    QTest::newRow("inclination over 180") << kIss1 << withColumn(kIss2, 9, u'2') << 2 << QStringLiteral("inclination");
+    QTest::newRow("eccentricity not digits")
+        << kIss1 << withColumn(kIss2, 28, u'x') << 2 << QStringLiteral("eccentricity");
+    QTest::newRow("epoch day zero") << withColumn(withColumn(withColumn(kIss1, 21, u'0'), 22, u'0'), 23, u'0') << kIss2
+                                    << 1 << QStringLiteral("epoch day");
+    QTest::newRow("bad B*") << withColumn(kIss1, 60, u'x') << kIss2 << 1 << QStringLiteral("B*");
+}
+
+void TestTle::refusals()
+{
+    QFETCH(QString, line1);
+    QFETCH(QString, line2);
+    QFETCH(int, line);
+    QFETCH(QString, reasonContains);
+    Tle t;
+    TleRefusal r;
+    QVERIFY(!parseTle(line1, line2, &t, &r));
+    QCOMPARE(r.line, line);
+    QVERIFY2(r.reason.contains(reasonContains), qPrintable(r.reason));
+}
+
+void TestTle::fileKeepsLoadingPastBadSets()
+{
+    QString badSum = kIss2;
+    badSum[68] = u'0';
+    const QString text = QStringList{
+        kIssName, kIss1, kIss2,                   // 1-3: three-line set
+        QString(), QStringLiteral("# comment"),   // 4-5
+        kNoaa1, kNoaa2,                           // 6-7: two-line set
+        QStringLiteral("BROKEN"), kIss1, badSum,  // 8-10: bad checksum on line 10
+        kIss2,                                    // 11: line 2 without line 1
+        QStringLiteral("0 NOAA 19"), kNoaa1, kNoaa2, // 12-14: CelesTrak's "0 " name prefix
+        QStringLiteral("LONELY NAME"),            // 15
+    }.join(u'\n');
+    const TleReadResult result = readTleText(text);
+    QCOMPARE(result.sets.size(), 3);
+    QCOMPARE(result.sets[0].name, kIssName);
+    QCOMPARE(result.sets[1].name, QString());
+    QCOMPARE(result.sets[1].displayName(), QStringLiteral("33591"));
+    QCOMPARE(result.sets[2].name, QStringLiteral("NOAA 19"));
+    QCOMPARE(result.refusals.size(), 3);
+    QCOMPARE(result.refusals[0].line, 10);
+    QVERIFY(result.refusals[0].reason.contains(QStringLiteral("checksum")));
+    QCOMPARE(result.refusals[1].line, 11);
+    QCOMPARE(result.refusals[2].line, 15);
+}
+
+void TestTle::findsByNumberAndName_data()
+{
+    QTest::addColumn<QString>("query");
+    QTest::addColumn<QList<int>>("numbers");
+    QTest::newRow("number") << QStringLiteral("33591") << QList<int>{33591};
+    QTest::newRow("exact name, any case") << QStringLiteral("iss (zarya)") << QList<int>{25544};
+    QTest::newRow("prefix") << QStringLiteral("noaa") << QList<int>{33591, 28654};
+    QTest::newRow("exact beats prefix") << QStringLiteral("NOAA 18") << QList<int>{28654};
+    QTest::newRow("nothing") << QStringLiteral("GOES") << QList<int>{};
+}
+
+void TestTle::findsByNumberAndName()
+{
+    QFETCH(QString, query);
+    QFETCH(QList<int>, numbers);
+    QList<Tle> sets(3);
+    sets[0].name = kIssName;
+    sets[0].catalogueNumber = 25544;
+    sets[1].name = QStringLiteral("NOAA 19");
+    sets[1].catalogueNumber = 33591;
+    sets[2].name = QStringLiteral("NOAA 18");
+    sets[2].catalogueNumber = 28654;
+    QList<int> found;
+    for (const Tle *t : findTles(sets, query))
+        found.append(t->catalogueNumber);
+    QCOMPARE(found, numbers);
+}
+
+QTEST_GUILESS_MAIN(TestTle)
+#include "tst_tle.moc"
