@@ -7,10 +7,12 @@
 # programs run from the scratch root with LD_LIBRARY_PATH unset, so they can
 # only use the system's libraries, as on a station without the build tree.
 #
-#   check-package.sh BUILD_DIR SYSTEMD_ANALYZE
+#   check-package.sh BUILD_DIR SYSTEMD_ANALYZE FILE
 set -euo pipefail
-build=${1:?usage: check-package.sh BUILD_DIR SYSTEMD_ANALYZE}
-analyze=${2:?usage: check-package.sh BUILD_DIR SYSTEMD_ANALYZE}
+usage="usage: check-package.sh BUILD_DIR SYSTEMD_ANALYZE FILE"
+build=${1:?$usage}
+analyze=${2:?$usage}
+file_command=${3:?$usage}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
@@ -27,6 +29,8 @@ echo "package: $(basename "$deb"), $(du -k "$deb" | cut -f1) KiB; installed size
 for program in slew slew-sim slewctl; do
     binary=$root/usr/bin/$program
     [ -x "$binary" ] || fail "no /usr/bin/$program in the package"
+    kind=$("$file_command" -b "$binary")
+    grep -q ', stripped' <<<"$kind" || fail "file(1) says /usr/bin/$program is: $kind"
     sections=$(readelf -S --wide "$binary")
     if grep -qE '\.debug_|\.symtab' <<<"$sections"; then
         fail "/usr/bin/$program is not stripped"

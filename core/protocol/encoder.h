@@ -16,7 +16,7 @@ namespace slew::protocol {
 QByteArray encodeToken(const Message &m, Dialect d);
 
 // Tokens joined by single spaces and ended with `\n`, the terminator every
-// Easycomm peer in PROTOCOL-NOTES accepts (GS-232: one command a line, each
+// Easycomm peer in docs/protocol.md accepts (GS-232: one command a line, each
 // ended with `\r`). Empty when any token is unsupported.
 QByteArray encodeLine(std::initializer_list<Message> tokens, Dialect d);
 

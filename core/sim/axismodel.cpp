@@ -10,7 +10,7 @@ namespace {
 
 // The speed loop used by VL..VD and by homing: a stiff PI on speed whose
 // integral is the distance lagging behind the commanded motion, so a zero
-// speed command holds its place against a push (VL0 in seeds/000).
+// speed command holds its place against a push (VL0 in the Easycomm III derivative).
 constexpr double kVelocityGain = 10.0;    // deg/s^2 per deg/s
 constexpr double kHoldStiffness = 40.0;   // deg/s^2 per degree behind
 constexpr double kVelocityFilter = 0.02;  // s, smoothing of the encoder's derivative

@@ -29,7 +29,7 @@ constexpr int Homing = 4;
 constexpr int Motor = 8;
 } // namespace AxisError
 
-// Limit switch bits as IP1 / IP2 report them (seeds/000).
+// Limit switch bits as IP1 / IP2 report them (Easycomm III derivative).
 namespace LimitSwitch {
 constexpr int Lower = 1; // CCW for azimuth, down for elevation
 constexpr int Upper = 2; // CW for azimuth, up for elevation

@@ -33,7 +33,7 @@ struct RotatorConfig {
     RotatorConfig();
 };
 
-// Status bits of one axis (seeds/000's GS, one byte per axis).
+// Status bits of one axis (Easycomm III derivative's GS, one byte per axis).
 namespace AxisStatus {
 constexpr int Idle = 1;
 constexpr int Moving = 2;
@@ -71,7 +71,7 @@ public:
     std::optional<double> readInput(int index) const;
 
     int axisStatus(Axis axis) const;   // AxisStatus bits of one axis
-    int status() const;                // seeds/000: azimuth | elevation << 8
+    int status() const;                // the Easycomm III derivative: azimuth | elevation << 8
     int combinedStatus() const;        // SatNOGS: one set of bits for the whole rotator
     int errorRegister() const;         // GE: 1 when clear, else the error bits
     std::array<std::int64_t, 4> encoders() const; // \?ENC: az, el ticks; az, el ticks/s
@@ -84,7 +84,7 @@ public:
     const RotatorConfig &config() const { return m_config; }
 
     // Where an azimuth command will really go: in the overlap, the one of the
-    // two mechanical angles for the bearing that is nearer (seeds/003).
+    // two mechanical angles for the bearing that is nearer (Micro-2g program).
     double resolveAzimuth(double degrees) const;
 
 private:

@@ -56,7 +56,7 @@ void SessionSimulatorTest::probeFindsEverythingTheDerivativeHas()
     QVERIFY(c.velocity && c.park && c.reset && c.stop);
     QCOMPARE(s.version(), QStringLiteral("SlewSim-1.0"));
     QTRY_VERIFY(s.status().valid);
-    QTRY_COMPARE(s.errorFlags(), 1); // "no error" in the SatNOGS / seeds/000 reading
+    QTRY_COMPARE(s.errorFlags(), 1); // "no error" in the SatNOGS / the Easycomm III derivative reading
 }
 
 void SessionSimulatorTest::configWriteThenReadBack()

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The whole rotator on a stepped clock: overlap paths, end stops, homing,
 // park, registers, the rotator classes and their stop, and every fault as
-// GS / GE / IP report it (seeds/000).
+// GS / GE / IP report it (Easycomm III derivative).
 #include "sim/rotatormodels.h"
 #include "sim/simulatedrotator.h"
 
