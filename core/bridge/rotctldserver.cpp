@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "rotctldserver.h"
 
 #include "session/rotatorsession.h"
@@ -254,10 +255,11 @@ int RotctldServer::setPosition(const RotctldRequest &r)
         return int(HamlibError::Rejected);
     if (!m_session->isConnected())
         return int(HamlibError::Io);
-    const double lastAz = m_session->targetAzimuth();
-    const double lastEl = m_session->targetElevation();
-    if (!std::isnan(lastAz) && !std::isnan(lastEl) && bearingDifference(r.az, lastAz) < m_deadband
-        && std::abs(r.el - lastEl) < m_deadband) {
+    // The deadband is measured from where the rotator is going now. After a
+    // stop, a jog, park, home or a new link there is no such target, and a
+    // tracker's repeated P goes out again.
+    if (const auto active = m_session->activeTarget();
+        active && bearingDifference(r.az, active->azimuth) < m_deadband && std::abs(r.el - active->elevation) < m_deadband) {
         // Still checked: a target inside the deadband of a legal one can be illegal.
         const auto &lim = m_session->profile().limits;
         if (model::checkElevation(lim, r.el).isEmpty() && model::chooseAzimuth(lim, r.az, std::nullopt).azimuth) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A server that speaks Hamlib's rotctld protocol, so Gpredict, the SatNOGS
 // client or `rotctl -m 2` can steer the rotator through Slew while the
@@ -50,9 +51,11 @@ public:
 
     // Only these peers may connect; empty lets any in.
     void setAllowedClients(const QList<QHostAddress> &peers) { m_allowed = peers; }
-    // A target within this many degrees of the one already commanded is
-    // answered RPRT 0 and not sent: trackers re-send P every cycle, and a
-    // relay rotator re-commanded for every 0.1° chatters.
+    // A target within this many degrees of the one the rotator is still
+    // going to (RotatorSession::activeTarget) is answered RPRT 0 and not
+    // sent: trackers re-send P every cycle, and a relay rotator re-commanded
+    // for every 0.1° chatters. After a stop, a local move, park, home or a
+    // lost link there is no such target, so the same P goes out again.
     void setDeadband(double degrees) { m_deadband = degrees; }
     double deadband() const { return m_deadband; }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // RotatorSession, part three: what the operator (or a tracker) asks of the
 // rotator. Every move is checked against the limits before a byte is sent.
 
@@ -53,6 +54,7 @@ bool RotatorSession::gotoPosition(double az, double el)
     rememberSent(Message::number(Op::Elevation, std::round(el * 100) / 100));
     m_jogSpeed = {0.0, 0.0};
     write(line);
+    m_activeTarget = PointingTarget{targetAz, el};
     m_targetAz = targetAz;
     m_targetEl = el;
     emit targetChanged(targetAz, el);
@@ -94,6 +96,9 @@ bool RotatorSession::gotoAxis(Axis axis, double degrees)
     rememberSent(Message::number(op, std::round(target * 100) / 100));
     m_jogSpeed[az ? 0 : 1] = 0.0;
     write(protocol::encodeLine({m}, d));
+    // The other axis keeps going where it was going, if that is known.
+    if (m_activeTarget)
+        (az ? m_activeTarget->azimuth : m_activeTarget->elevation) = target;
     (az ? m_targetAz : m_targetEl) = target;
     emit targetChanged(m_targetAz, m_targetEl);
     return true;
@@ -133,6 +138,7 @@ bool RotatorSession::moveAxis(Axis axis, double degreesPerSecond)
         return refuse(tr("%1 has no command to move an axis").arg(protocol::dialectName(d)));
     }
     m_jogSpeed[az ? 0 : 1] = degreesPerSecond;
+    m_activeTarget.reset(); // the axis runs at a speed now, towards no target
     write(line);
     return true;
 }
@@ -152,6 +158,7 @@ bool RotatorSession::stop(Axes axes)
     const QByteArray line = protocol::encodeStop(az, el, m_profile.dialect);
     if (line.isEmpty())
         return refuse(tr("%1 has no stop command").arg(protocol::dialectName(m_profile.dialect)));
+    m_activeTarget.reset();
     write(line);
     return true;
 }
@@ -160,9 +167,13 @@ bool RotatorSession::park()
 {
     if (!requireLink())
         return false;
-    if (!protocol::dialectSupports(m_profile.dialect, Op::Park))
-        return gotoPosition(m_profile.parkAz, m_profile.parkEl);
+    if (!protocol::dialectSupports(m_profile.dialect, Op::Park)) {
+        const bool sent = gotoPosition(m_profile.parkAz, m_profile.parkEl);
+        m_activeTarget.reset(); // parking is the operator's move, not a tracker target
+        return sent;
+    }
     m_jogSpeed = {0.0, 0.0};
+    m_activeTarget.reset();
     write(protocol::encodeLine({Message::query(Op::Park)}, m_profile.dialect));
     m_targetAz = m_profile.parkAz;
     m_targetEl = m_profile.parkEl;
@@ -177,6 +188,7 @@ bool RotatorSession::home()
     if (!protocol::dialectSupports(m_profile.dialect, Op::Reset))
         return refuse(tr("%1 has no RESET (homing) command").arg(protocol::dialectName(m_profile.dialect)));
     m_jogSpeed = {0.0, 0.0};
+    m_activeTarget.reset();
     write(protocol::encodeLine({Message::query(Op::Reset)}, m_profile.dialect));
     return true;
 }
@@ -262,6 +274,7 @@ bool RotatorSession::sendRaw(const QString &line)
     });
     if (!error.isEmpty())
         return refuse(error);
+    m_activeTarget.reset(); // a raw line may send the rotator anywhere, or stop it
     write(bytes + '\n');
     return true;
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `slew --headless` as a station service, run as a real process: it serves
 // rotctld for a tracker, steers slew-sim over TCP, reconnects after the
 // rotator goes away, and stops the rotator when told to quit (SIGTERM).
@@ -17,6 +18,7 @@ class HeadlessTest : public QObject {
 private slots:
     void servesTrackersAndStopsOnSigterm();
     void reconnectsAfterTheRotatorReturns();
+    void repeatedTargetReachesTheRotatorAfterStopAndReconnect();
     void refusesABadListenAddress();
 
 private:
@@ -122,6 +124,55 @@ void HeadlessTest::reconnectsAfterTheRotatorReturns()
     slew.terminate();
     QTRY_COMPARE(slew.state(), QProcess::NotRunning);
     QVERIFY(slew.readAllStandardOutput().contains("retrying"));
+}
+
+void HeadlessTest::repeatedTargetReachesTheRotatorAfterStopAndReconnect()
+{
+    QTemporaryDir dir;
+    auto received = [&](const QString &name) {
+        QFile f(dir.filePath(name));
+        return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+    };
+    SlewSimProcess sim;
+    QVERIFY2(sim.start({"--listen", "127.0.0.1:0", "--log-received", dir.filePath("first.log")}), qPrintable(sim.error()));
+    const quint16 simPort = sim.port();
+    QProcess slew;
+    quint16 port = 0;
+    QVERIFY(startSlew(slew, {"--connect", QStringLiteral("tcp://127.0.0.1:%1").arg(simPort), "--rotctld-listen",
+                             "127.0.0.1:0"},
+                      &port));
+    QTcpSocket tracker;
+    tracker.connectToHost(QHostAddress::LocalHost, port);
+    QTRY_COMPARE(tracker.state(), QAbstractSocket::ConnectedState);
+    QVERIFY(QTest::qWaitFor([&] { return ask(tracker, "p").count('\n') == 2; }, 10000));
+
+    // P, S, the same P: both reach the rotator.
+    QCOMPARE(ask(tracker, "P 100 40"), QByteArray("RPRT 0\n"));
+    QTRY_COMPARE(received("first.log").count("AZ100.00 EL40.00"), 1);
+    QCOMPARE(ask(tracker, "S"), QByteArray("RPRT 0\n"));
+    QTRY_VERIFY(received("first.log").contains("SA SE"));
+    QCOMPARE(ask(tracker, "P 100 40"), QByteArray("RPRT 0\n"));
+    QTRY_COMPARE(received("first.log").count("AZ100.00 EL40.00"), 2);
+
+    // The rotator goes away and comes back on the same port.
+    sim.stop();
+    QVERIFY(QTest::qWaitFor([&] { return ask(tracker, "p") == "RPRT -6\n"; }, 10000));
+    SlewSimProcess again;
+    QVERIFY2(again.start({"--listen", QStringLiteral("127.0.0.1:%1").arg(simPort), "--log-received",
+                          dir.filePath("second.log")}),
+             qPrintable(again.error()));
+    QVERIFY(QTest::qWaitFor([&] { return ask(tracker, "p").count('\n') == 2; }, 30000));
+    // Slew does not move the antenna by itself after the blip...
+    QVERIFY(!received("second.log").contains("AZ100.00 EL40.00"));
+    // ...but the tracker's next P, identical, goes out, and one inside the
+    // deadband of the old target too.
+    QCOMPARE(ask(tracker, "P 100 40"), QByteArray("RPRT 0\n"));
+    QTRY_COMPARE(received("second.log").count("AZ100.00 EL40.00"), 1);
+    QCOMPARE(ask(tracker, "S"), QByteArray("RPRT 0\n"));
+    QCOMPARE(ask(tracker, "P 100.3 40.2"), QByteArray("RPRT 0\n"));
+    QTRY_COMPARE(received("second.log").count("AZ100.30 EL40.20"), 1);
+    slew.terminate();
+    QTRY_COMPARE(slew.state(), QProcess::NotRunning);
 }
 
 void HeadlessTest::refusesABadListenAddress()

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Slew's rotctld-compatible server, on a session connected to the in-process
 // simulator, driven by Hamlib's real rotctl (model 2, netrotctl) and by raw
 // sockets: position, stop, park, reset, move, info, dump_state; one-write
@@ -7,6 +8,8 @@
 #include "../common/hamlibprocess.h"
 #include "linkschemes.h"
 #include "session/rotatorsession.h"
+#include "sim/simulator.h"
+#include "sim/simulatorscheme.h"
 
 #include <QTcpSocket>
 #include <QTest>
@@ -25,6 +28,10 @@ private slots:
     void extendedAnswers();
     void outOfRangeIsRefusedAndNothingSent();
     void deadbandSuppressesRepeatedTargets();
+    void repeatedTargetGoesOutAfterAStop();
+    void repeatedTargetGoesOutAfterALocalMove();
+    void repeatedTargetGoesOutAfterParkAndHome();
+    void repeatedTargetGoesOutAfterTheLinkReturns();
     void overlapPicksTheShortestLegalPath();
     void operatorHoldRefusesRemoteMovesButNotStop();
     void badClientsDoNotDisturbOthers();
@@ -32,6 +39,8 @@ private slots:
 
 private:
     QByteArray ask(QTcpSocket &s, const QByteArray &line);
+    // How many times the session sent exactly this line to the rotator.
+    static int timesSent(const QSignalSpy &sent, const QByteArray &line);
     bool connectSession(const model::RotatorProfile &profile);
     session::RotatorSession *session = nullptr;
     bridge::RotctldServer *server = nullptr;
@@ -198,6 +207,136 @@ void RotctldServerTest::deadbandSuppressesRepeatedTargets()
     QCOMPARE(ask(s, "P 359.90 30.00"), QByteArray("RPRT 0\n"));
     QCOMPARE(ask(s, "P 0.10 30.00"), QByteArray("RPRT 0\n"));
     QCOMPARE(gotoCount(), 3);
+}
+
+int RotctldServerTest::timesSent(const QSignalSpy &sent, const QByteArray &line)
+{
+    int n = 0;
+    for (const auto &args : sent)
+        n += args.at(0).toByteArray() == line;
+    return n;
+}
+
+void RotctldServerTest::repeatedTargetGoesOutAfterAStop()
+{
+    server->setDeadband(0.5);
+    QTcpSocket s;
+    s.connectToHost(QHostAddress::LocalHost, server->port());
+    QTRY_COMPARE(s.state(), QAbstractSocket::ConnectedState);
+    QSignalSpy sent(session, &session::RotatorSession::bytesSent);
+    const QByteArray go = "AZ100.00 EL40.00\n";
+    QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, go), 1);
+    QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n")); // still on its way: not re-sent
+    QCOMPARE(timesSent(sent, go), 1);
+    // A remote stop: the same target must reach the rotator again.
+    QCOMPARE(ask(s, "S"), QByteArray("RPRT 0\n"));
+    QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, go), 2);
+    // The operator's Stop (a local stop) likewise.
+    QVERIFY(session->stop());
+    QCOMPARE(ask(s, "P 100.2 40.1"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, "AZ100.20 EL40.10\n"), 1);
+    // A stop of one axis leaves no target either.
+    QVERIFY(session->stop(session::Axes::Elevation));
+    QCOMPARE(ask(s, "P 100.2 40.1"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, "AZ100.20 EL40.10\n"), 2);
+    QCOMPARE(server->movesSuppressedByDeadband(), 1);
+    session->stop();
+}
+
+void RotctldServerTest::repeatedTargetGoesOutAfterALocalMove()
+{
+    server->setDeadband(0.5);
+    QTcpSocket s;
+    s.connectToHost(QHostAddress::LocalHost, server->port());
+    QTRY_COMPARE(s.state(), QAbstractSocket::ConnectedState);
+    QSignalSpy sent(session, &session::RotatorSession::bytesSent);
+    const QByteArray go = "AZ100.00 EL40.00\n";
+    QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n"));
+    // A jog.
+    QVERIFY(session->moveAxis(session::Axis::Azimuth, 2.0));
+    QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, go), 2);
+    // The operator's go-to (or a preset) elsewhere.
+    QVERIFY(session->gotoPosition(50, 20));
+    QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, go), 3);
+    // A raw line from the traffic console.
+    QVERIFY(session->sendRaw("SA"));
+    QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, go), 4);
+    // One axis sent elsewhere: the target changed, so the old one goes out.
+    QVERIFY(session->gotoAxis(session::Axis::Elevation, 10));
+    QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, go), 5);
+    // A remote move (M) is a jog too.
+    QCOMPARE(ask(s, "M 16 50"), QByteArray("RPRT 0\n"));
+    QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, go), 6);
+    QCOMPARE(server->movesSuppressedByDeadband(), 0);
+    session->stop();
+}
+
+void RotctldServerTest::repeatedTargetGoesOutAfterParkAndHome()
+{
+    server->setDeadband(0.5);
+    QTcpSocket s;
+    s.connectToHost(QHostAddress::LocalHost, server->port());
+    QTRY_COMPARE(s.state(), QAbstractSocket::ConnectedState);
+    QSignalSpy sent(session, &session::RotatorSession::bytesSent);
+    const QByteArray go = "AZ100.00 EL40.00\n";
+    QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n"));
+    QCOMPARE(ask(s, "K"), QByteArray("RPRT 0\n")); // remote park
+    QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, go), 2);
+    QCOMPARE(ask(s, "R 1"), QByteArray("RPRT 0\n")); // remote reset (home)
+    QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, go), 3);
+    QVERIFY(session->park()); // the operator's Park
+    QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, go), 4);
+    QVERIFY(session->home()); // the operator's Home
+    QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, go), 5);
+    QCOMPARE(server->movesSuppressedByDeadband(), 0);
+    session->stop();
+}
+
+void RotctldServerTest::repeatedTargetGoesOutAfterTheLinkReturns()
+{
+    server->setDeadband(0.5);
+    auto options = session->options();
+    options.autoReconnect = true;
+    session->setOptions(options);
+    QTcpSocket s;
+    s.connectToHost(QHostAddress::LocalHost, server->port());
+    QTRY_COMPARE(s.state(), QAbstractSocket::ConnectedState);
+    QSignalSpy sent(session, &session::RotatorSession::bytesSent);
+    const QByteArray go = "AZ180.00 EL60.00\n";
+    QCOMPARE(ask(s, "P 180 60"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, go), 1);
+
+    // The line drops; the session reconnects by itself.
+    sim::Simulator *simulator = sim::simulatorBehind(session->link());
+    QVERIFY(simulator);
+    simulator->dropConnections();
+    QVERIFY(QTest::qWaitFor([&] { return session->state() != session::RotatorSession::State::Connected; }, 5000));
+    QVERIFY(QTest::qWaitFor([&] { return session->isConnected() && session->hasPosition(); }, 10000));
+    // A reconnect does not re-send the old target on its own...
+    QCOMPARE(timesSent(sent, go), 1);
+    // ...but the tracker's next P, the same one, goes out, and so does one
+    // inside the deadband.
+    QCOMPARE(ask(s, "P 180 60"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, go), 2);
+    simulator = sim::simulatorBehind(session->link());
+    simulator->dropConnections();
+    QVERIFY(QTest::qWaitFor([&] { return session->state() != session::RotatorSession::State::Connected; }, 5000));
+    QVERIFY(QTest::qWaitFor([&] { return session->isConnected() && session->hasPosition(); }, 10000));
+    QCOMPARE(ask(s, "P 180.3 60.2"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, "AZ180.30 EL60.20\n"), 1);
+    QCOMPARE(server->movesSuppressedByDeadband(), 0);
+    session->stop();
 }
 
 void RotctldServerTest::overlapPicksTheShortestLegalPath()
