@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `slew --headless --connect URI --rotctld-listen ADDR:PORT`: argument parsing
 // and wiring for the station service; the work is in core/bridge.
 
@@ -6,6 +7,7 @@
 #include "slew_headless.h"
 
 #include "bridge/headlessstation.h"
+#include "bridge/rotctldserver.h"
 #include "protocol/dialect.h"
 #include "sim/terminationsignalwatcher.h"
 
@@ -24,6 +26,15 @@ int fail(const QString &message)
 }
 
 } // namespace
+
+std::optional<int> parseMaxClients(const QString &text)
+{
+    bool ok = false;
+    const int n = text.toInt(&ok);
+    if (!ok || n < 1 || n > 100000)
+        return std::nullopt;
+    return n;
+}
 
 bool wantsHeadless(int argc, char *argv[])
 {
@@ -57,7 +68,12 @@ int runHeadless(int argc, char *argv[])
     const QCommandLineOption allow(QStringLiteral("rotctld-allow"),
                                    QStringLiteral("Comma-separated client addresses allowed (default: any)."),
                                    QStringLiteral("addresses"));
-    parser.addOptions({headless, connect, dialect, profile, listen, allow});
+    const QCommandLineOption maxClients(
+        QStringLiteral("rotctld-max-clients"),
+        QStringLiteral("rotctld clients at once (default %1); one more reads RPRT -9 and is closed.")
+            .arg(slew::bridge::RotctldServer::kDefaultMaxClients),
+        QStringLiteral("n"));
+    parser.addOptions({headless, connect, dialect, profile, listen, allow, maxClients});
     parser.process(app);
 
     slew::bridge::HeadlessConfig config;
@@ -88,6 +104,14 @@ int runHeadless(int argc, char *argv[])
                 return fail(QStringLiteral("--rotctld-allow: '%1' is not an address").arg(a));
             config.allowedClients.append(address);
         }
+    }
+
+    if (parser.isSet(maxClients)) {
+        const auto n = parseMaxClients(parser.value(maxClients));
+        if (!n)
+            return fail(QStringLiteral("--rotctld-max-clients %1: expected a number from 1 to 100000")
+                            .arg(parser.value(maxClients)));
+        config.rotctldMaxClients = *n;
     }
 
     slew::bridge::HeadlessStation station;

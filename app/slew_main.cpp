@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // slew: the operator window. Argument parsing and wiring only; everything
 // else lives in slewui and slewcore.
 
@@ -12,6 +13,7 @@
 
 #include "connectionbar.h"
 #include "protocol/dialect.h"
+#include "bridge/rotctldserver.h"
 #include "session/rotatorsession.h"
 
 #include <QApplication>
@@ -29,6 +31,7 @@ struct Arguments {
     QString screenshot;
     int settleMs = 3000;
     std::optional<std::pair<QHostAddress, quint16>> rotctldListen;
+    std::optional<int> rotctldMaxClients;
 };
 
 // Returns an error message, or empty when the arguments are usable.
@@ -60,7 +63,11 @@ QString parse(QCommandLineParser &parser, const QStringList &argv, Arguments &ou
         "slew --tune URI --axis az|el|both [--apply] (tuning without a window)."));
     parser.addHelpOption();
     parser.addVersionOption();
-    parser.addOptions({connect, dialect, gotoOption, screenshot, settle, rotctld});
+    const QCommandLineOption maxClients(QStringLiteral("rotctld-max-clients"),
+                                        QStringLiteral("rotctld clients at once (default 32); one more reads "
+                                                       "RPRT -9 and is closed."),
+                                        QStringLiteral("n"));
+    parser.addOptions({connect, dialect, gotoOption, screenshot, settle, rotctld, maxClients});
     parser.process(argv);
 
     out.connectUri = parser.value(connect);
@@ -83,6 +90,12 @@ QString parse(QCommandLineParser &parser, const QStringList &argv, Arguments &ou
         if (!slew::transport::parseHostPort(parser.value(rotctld), &address, &port))
             return QStringLiteral("--rotctld-listen %1: expected ADDRESS:PORT").arg(parser.value(rotctld));
         out.rotctldListen = std::pair{address, port};
+    }
+    if (parser.isSet(maxClients)) {
+        out.rotctldMaxClients = parseMaxClients(parser.value(maxClients));
+        if (!out.rotctldMaxClients)
+            return QStringLiteral("--rotctld-max-clients %1: expected a number from 1 to 100000")
+                .arg(parser.value(maxClients));
     }
     out.screenshot = parser.value(screenshot);
     if (parser.isSet(settle)) {
@@ -147,6 +160,8 @@ int main(int argc, char *argv[])
                              }
                          });
     }
+    if (args.rotctldMaxClients)
+        window.rotctldServer()->setMaxClients(*args.rotctldMaxClients);
     window.connectTo(uri, dialect);
     if (args.rotctldListen
         && !window.rotctldPanel()->startListening(args.rotctldListen->first.toString(), args.rotctldListen->second)) {

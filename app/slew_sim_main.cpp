@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // slew-sim: the simulated rotator as a server, on TCP and/or a
 // pseudo-terminal. Argument parsing and wiring only; everything else is in
 // core/sim.
@@ -49,7 +50,11 @@ int main(int argc, char *argv[])
                                            QStringLiteral("name"));
     const QCommandLineOption logReceived(QStringLiteral("log-received"),
                                          QStringLiteral("write every line received to FILE"), QStringLiteral("file"));
-    parser.addOptions({listen, pty, listenDialect, logReceived});
+    const QCommandLineOption maxClients(
+        QStringLiteral("max-clients"),
+        QStringLiteral("TCP clients at once (default %1); one more is refused").arg(SimulatorTcpServer::kDefaultMaxClients),
+        QStringLiteral("n"));
+    parser.addOptions({listen, pty, listenDialect, logReceived, maxClients});
 
     std::vector<std::pair<QCommandLineOption, const char *>> simOptions;
     for (const SimulatorOptionInfo &info : simulatorOptionList()) {
@@ -100,6 +105,16 @@ int main(int argc, char *argv[])
             tcpSettings.dialect = *d;
         }
         tcp = std::make_unique<SimulatorTcpServer>(simulator, tcpSettings);
+        if (parser.isSet(maxClients)) {
+            bool ok = false;
+            const int n = parser.value(maxClients).toInt(&ok);
+            if (!ok || n < 1 || n > 100000)
+                fail(QStringLiteral("--max-clients %1: expected a number from 1 to 100000").arg(parser.value(maxClients)));
+            tcp->setMaxClients(n);
+        }
+        QObject::connect(tcp.get(), &SimulatorTcpServer::notice, [](const QString &text) {
+            std::fprintf(stderr, "slew-sim: %s\n", qPrintable(text));
+        });
         if (!tcp->listen(address, port))
             fail(QStringLiteral("cannot listen on %1:%2: %3").arg(address.toString()).arg(port).arg(tcp->errorString()));
         ready += QStringLiteral(" tcp %1:%2").arg(tcp->serverAddress().toString()).arg(tcp->serverPort());

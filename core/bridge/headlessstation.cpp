@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "headlessstation.h"
 
 #include "rotctldserver.h"
@@ -54,6 +55,7 @@ bool HeadlessStation::start(const HeadlessConfig &config, QString *error)
     if (config.rotctldEnabled) {
         m_server = std::make_unique<RotctldServer>(m_session.get());
         m_server->setAllowedClients(config.allowedClients);
+        m_server->setMaxClients(config.rotctldMaxClients);
         m_server->setDeadband(config.profile.deadbandDeg);
         connect(m_server.get(), &RotctldServer::logMessage, this, [this](const QString &m) { log(m); });
         connect(m_server.get(), &RotctldServer::commandReceived, this,

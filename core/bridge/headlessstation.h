@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Slew as a station service, with no window: a session to the rotator that
 // reconnects after a loss, a rotctld-compatible server for the trackers, and
@@ -27,6 +28,7 @@ struct HeadlessConfig {
     quint16 rotctldPort = 0;
     bool rotctldEnabled = false;
     QList<QHostAddress> allowedClients; // empty: any
+    int rotctldMaxClients = 32;         // RotctldServer::kDefaultMaxClients
 };
 
 class HeadlessStation : public QObject {

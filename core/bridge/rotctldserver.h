@@ -10,14 +10,20 @@
 // overlong line or vanishes disturbs no one else.
 
 #include "rotctldrequest.h"
+#include "transport/boundedtcpserver.h"
 
 #include <QDateTime>
 #include <QHash>
 #include <QHostAddress>
 #include <QObject>
-#include <QTcpServer>
+
+#include <memory>
 
 class QTcpSocket;
+
+namespace slew::transport {
+class SpareSocketHandle;
+}
 
 namespace slew::session {
 class RotatorSession;
@@ -37,6 +43,7 @@ public:
 
     static constexpr int kMaxLine = 1024;               // longer lines are refused
     static constexpr qint64 kMaxUnsentAnswers = 1 << 20; // a client that never reads is cut off
+    static constexpr int kDefaultMaxClients = transport::BoundedTcpServer::kDefaultMaxClients;
 
     explicit RotctldServer(session::RotatorSession *session, QObject *parent = nullptr);
     ~RotctldServer() override;
@@ -46,6 +53,9 @@ public:
     bool listen(const QHostAddress &address, quint16 port, QString *error);
     void close();
     bool isListening() const { return m_server.isListening(); }
+    // Clients at once; one more reads `RPRT -9` (rejected) and is closed.
+    void setMaxClients(int count) { m_server.setMaxClients(count); }
+    int maxClients() const { return m_server.maxClients(); }
     QHostAddress address() const { return m_server.serverAddress(); }
     quint16 port() const { return m_server.serverPort(); }
 
@@ -79,18 +89,29 @@ private:
         QTcpSocket *socket = nullptr;
         QByteArray buffer;
         bool discarding = false; // inside an overlong line
+        bool finished = false;   // quit, or end of input: nothing more is read
+        // Keeps the connection open after Qt closes on the client's end of
+        // input, so the answers to its last lines still reach it.
+        std::shared_ptr<transport::SpareSocketHandle> spare;
         ClientInfo info;
     };
 
-    void onNewConnection();
+    void onClientArrived(QTcpSocket *socket);
     void onReadyRead(QTcpSocket *socket);
+    // Lines out of bytes, answers out of lines; true in *quit on `q`.
+    QByteArray consume(Client &client, const QByteArray &bytes, bool *quit);
+    // The answer to an unterminated last line, at the end of input.
+    QByteArray answerLastLine(Client &client);
+    // The client sent its last byte (a one-shot `printf 'p\n' | nc -N`):
+    // answer the unterminated last line too, then close once all has left.
+    void finishInput(Client &client);
     void onDisconnected(QTcpSocket *socket);
     QByteArray answer(Client &client, const QByteArray &line);
     int setPosition(const RotctldRequest &r);
     int move(const RotctldRequest &r);
 
     session::RotatorSession *m_session;
-    QTcpServer m_server;
+    transport::BoundedTcpServer m_server;
     QHash<QTcpSocket *, Client> m_clients;
     QList<QHostAddress> m_allowed;
     double m_deadband = 0.5;

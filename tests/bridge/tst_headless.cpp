@@ -4,14 +4,21 @@
 // rotator goes away, and stops the rotator when told to quit (SIGTERM).
 
 #include "../sim/slewsimprocess.h"
+#include "../common/halfclose.h"
 #include "../common/hamlibprocess.h"
 
+#include <QElapsedTimer>
 #include <QFile>
 #include <QTcpSocket>
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <QTimer>
+
 #include <csignal>
+#include <functional>
+#include <list>
+#include <sys/resource.h>
 
 class HeadlessTest : public QObject {
     Q_OBJECT
@@ -20,14 +27,19 @@ private slots:
     void reconnectsAfterTheRotatorReturns();
     void repeatedTargetReachesTheRotatorAfterStopAndReconnect();
     void refusesABadListenAddress();
+    void runningOutOfDescriptorsDoesNotSpin();
 
 private:
-    bool startSlew(QProcess &slew, const QStringList &args, quint16 *rotctldPort);
+    bool startSlew(QProcess &slew, const QStringList &args, quint16 *rotctldPort,
+                   const std::function<void()> &childSetup = {});
     static QByteArray ask(QTcpSocket &s, const QByteArray &line);
 };
 
-bool HeadlessTest::startSlew(QProcess &slew, const QStringList &args, quint16 *rotctldPort)
+bool HeadlessTest::startSlew(QProcess &slew, const QStringList &args, quint16 *rotctldPort,
+                             const std::function<void()> &childSetup)
 {
+    if (childSetup)
+        slew.setChildProcessModifier(childSetup);
     slew.setProgram(qEnvironmentVariable("SLEW_BIN"));
     slew.setArguments(QStringList{"--headless"} + args);
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
@@ -185,6 +197,72 @@ void HeadlessTest::refusesABadListenAddress()
     QVERIFY(finished.wait(10000));
     QCOMPARE(slew.exitCode(), 2);
     QVERIFY(slew.readAllStandardError().contains("expected ADDRESS:PORT"));
+}
+
+void HeadlessTest::runningOutOfDescriptorsDoesNotSpin()
+{
+    // 64 descriptors and 200 trackers: the rotctld server runs out long
+    // before its client limit (raised here so that it does not step in first).
+    QProcess slew;
+    quint16 port = 0;
+    QVERIFY(startSlew(slew, {"--connect", "sim:", "--rotctld-listen", "127.0.0.1:0", "--rotctld-max-clients", "500"},
+                      &port, [] {
+                          const rlimit few{64, 64};
+                          ::setrlimit(RLIMIT_NOFILE, &few);
+                      }));
+    QByteArray log;
+    auto logged = [&](const char *text) {
+        log += slew.readAllStandardOutput();
+        return log.contains(text);
+    };
+    std::list<QTcpSocket> clients;
+    for (int i = 0; i < 200; ++i) {
+        clients.emplace_back();
+        clients.back().connectToHost(QHostAddress::LocalHost, port);
+    }
+    for (QTcpSocket &c : clients)
+        c.write("S\n");
+    QVERIFY2(QTest::qWaitFor([&] { return logged("new connections wait"); }, 10000), log.right(2000).constData());
+
+    // Measured over a fixed window, because CPU use is a rate: a server
+    // that retries accept() in a loop burns the whole window.
+    const qint64 before = processCpuTicks(slew.processId());
+    QElapsedTimer window;
+    window.start();
+    QTimer end;
+    end.setSingleShot(true);
+    QSignalSpy ended(&end, &QTimer::timeout);
+    end.start(2000);
+    QVERIFY(ended.wait(10000));
+    const double seconds = (processCpuTicks(slew.processId()) - before) / clockTicksPerSecond();
+    const double share = seconds / (window.elapsed() / 1000.0);
+    qInfo("slew --headless out of descriptors: %.1f %% of a core over %.1f s", 100 * share, window.elapsed() / 1000.0);
+    QVERIFY2(share < 0.2, qPrintable(QString::number(share)));
+
+    // Every tracker is answered: those taken at once, and the waiting ones
+    // as the first leave.
+    int answered = 0;
+    QByteArray wrong;
+    QVERIFY(QTest::qWaitFor(
+        [&] {
+            for (auto it = clients.begin(); it != clients.end();) {
+                if (it->canReadLine()) {
+                    if (const QByteArray a = it->readAll(); a != "RPRT 0\n")
+                        wrong += a;
+                    ++answered;
+                    it = clients.erase(it);
+                } else {
+                    ++it;
+                }
+            }
+            return clients.empty();
+        },
+        30000));
+    QCOMPARE(answered, 200);
+    QVERIFY2(wrong.isEmpty(), wrong.constData());
+    QVERIFY(logged("accepting connections again"));
+    slew.terminate();
+    QTRY_COMPARE(slew.state(), QProcess::NotRunning);
 }
 
 QTEST_GUILESS_MAIN(HeadlessTest)

@@ -5,6 +5,7 @@
 // answers; several clients; bad clients; deadband; overlap; operator hold.
 
 #include "bridge/rotctldserver.h"
+#include "../common/halfclose.h"
 #include "../common/hamlibprocess.h"
 #include "linkschemes.h"
 #include "session/rotatorsession.h"
@@ -36,6 +37,8 @@ private slots:
     void operatorHoldRefusesRemoteMovesButNotStop();
     void badClientsDoNotDisturbOthers();
     void allowedClientList();
+    void halfClosedClientsAreAnswered();
+    void clientsBeyondTheLimitAreRefused();
 
 private:
     QByteArray ask(QTcpSocket &s, const QByteArray &line);
@@ -427,6 +430,57 @@ void RotctldServerTest::allowedClientList()
     t.connectToHost(QHostAddress::LocalHost, server->port());
     QTRY_COMPARE(t.state(), QAbstractSocket::ConnectedState);
     QCOMPARE(ask(t, "S"), QByteArray("RPRT 0\n"));
+}
+
+void RotctldServerTest::halfClosedClientsAreAnswered()
+{
+    // `printf 'p\n' | nc -N`: the client stops sending before it reads.
+    int answered = 0;
+    for (int i = 0; i < 20; ++i) {
+        const QByteArray a = askThenHalfClose(server->port(), "p\n");
+        answered += a.count('\n') == 2 && !a.startsWith("RPRT");
+    }
+    QCOMPARE(answered, 20);
+    // Several lines, and an unterminated last one, as Hamlib's rotctld answers it.
+    for (int i = 0; i < 20; ++i)
+        QCOMPARE(askThenHalfClose(server->port(), "S\n_\nS"), QByteArray("RPRT 0\nSlew rotator bridge (SlewSim-1.0)\nRPRT 0\n"));
+    // A move in the last line is carried out.
+    QSignalSpy sent(session, &session::RotatorSession::bytesSent);
+    QCOMPARE(askThenHalfClose(server->port(), "P 33 11"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, "AZ33.00 EL11.00\n"), 1);
+    // 100 kB of queries (several reads) and then the end: every one answered.
+    QByteArray many;
+    for (int i = 0; i < 50000; ++i)
+        many += "p\n";
+    QCOMPARE(askThenHalfClose(server->port(), many, 20000).count('\n'), 100000);
+    QTRY_COMPARE(server->clients().size(), 0);
+    session->stop();
+}
+
+void RotctldServerTest::clientsBeyondTheLimitAreRefused()
+{
+    QCOMPARE(server->maxClients(), 32); // the documented default
+    server->setMaxClients(2);
+    QTcpSocket a, b, c;
+    a.connectToHost(QHostAddress::LocalHost, server->port());
+    b.connectToHost(QHostAddress::LocalHost, server->port());
+    QTRY_COMPARE(server->clients().size(), 2);
+    // The third reads why, and is closed.
+    QSignalSpy refused(&c, &QTcpSocket::disconnected);
+    c.connectToHost(QHostAddress::LocalHost, server->port());
+    QVERIFY(refused.wait(5000));
+    QCOMPARE(c.readAll(), QByteArray("RPRT -9\n"));
+    QCOMPARE(server->clients().size(), 2);
+    QCOMPARE(ask(a, "S"), QByteArray("RPRT 0\n"));
+    QCOMPARE(ask(b, "S"), QByteArray("RPRT 0\n"));
+    // One leaves: the next is served.
+    a.disconnectFromHost();
+    QTRY_COMPARE(server->clients().size(), 1);
+    QTcpSocket d;
+    d.connectToHost(QHostAddress::LocalHost, server->port());
+    QTRY_COMPARE(d.state(), QAbstractSocket::ConnectedState);
+    QCOMPARE(ask(d, "S"), QByteArray("RPRT 0\n"));
+    QCOMPARE(server->clients().size(), 2);
 }
 
 QTEST_MAIN(RotctldServerTest)
