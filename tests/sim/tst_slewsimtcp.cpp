@@ -166,6 +166,11 @@ private slots:
         QCOMPARE(m_client.ask("EL-1\n"), QByteArray("ALlimit:EL-1.00\n"));
         QCOMPARE(m_client.ask("QQ\n"), QByteArray("ALunknown:QQ\n"));
         QCOMPARE(m_client.ask("AZ1.2.3\n"), QByteArray("ALmalformed:AZ1.2.3\n"));
+        QCOMPARE(m_client.ask("AZ-0.004\n"), QByteArray("ALlimit:AZ-0.004\n"));
+        QCOMPARE(m_client.ask("VL99999999999999999999\n"), QByteArray("ALmalformed:VL99999999999999999999\n"));
+        QCOMPARE(m_client.ask("VL2147483648\n"), QByteArray("ALmalformed:VL2147483648\n"));
+        QCOMPARE(m_client.ask("ST99:99:99:99:99:99\n"), QByteArray("ALmalformed:ST99:99:99:99:99:99\n"));
+        QCOMPARE(m_client.ask("CR12\n"), QByteArray("CR12,0.00\n"));
         QCOMPARE(m_client.ask("CR10\n"), QByteArray("CR10,0.00\n"));
     }
 
