@@ -295,6 +295,13 @@ QByteArray RotctldServer::answer(Client &c, const QByteArray &line)
             return formatStatus(r, int(HamlibError::Io));
         return formatStatus(r, m_session->park() ? 0 : int(HamlibError::InvalidArgument));
     case Kind::Reset:
+        // Hamlib's reset takes a type, and 1 ("reset all") is the only one.
+        if (r.resetType != 1) {
+            emit logMessage(tr("rotctld client %1: reset type %2 means nothing; only 1 (reset all)")
+                                .arg(c.info.peer)
+                                .arg(r.resetType));
+            return formatStatus(r, int(HamlibError::InvalidArgument));
+        }
         if (m_remoteHeld)
             return formatStatus(r, int(HamlibError::Rejected));
         if (!m_session->isConnected())

@@ -39,6 +39,7 @@ private slots:
     void allowedClientList();
     void halfClosedClientsAreAnswered();
     void clientsBeyondTheLimitAreRefused();
+    void resetTakesOnlyResetAll();
 
 private:
     QByteArray ask(QTcpSocket &s, const QByteArray &line);
@@ -481,6 +482,22 @@ void RotctldServerTest::clientsBeyondTheLimitAreRefused()
     QTRY_COMPARE(d.state(), QAbstractSocket::ConnectedState);
     QCOMPARE(ask(d, "S"), QByteArray("RPRT 0\n"));
     QCOMPARE(server->clients().size(), 2);
+}
+
+void RotctldServerTest::resetTakesOnlyResetAll()
+{
+    QTcpSocket s;
+    s.connectToHost(QHostAddress::LocalHost, server->port());
+    QTRY_COMPARE(s.state(), QAbstractSocket::ConnectedState);
+    QSignalSpy sent(session, &session::RotatorSession::bytesSent);
+    // Hamlib's rotctl: "Reset accepts an integer value of 1 for Reset All".
+    for (const QByteArray &type : {QByteArray("0"), QByteArray("2"), QByteArray("-1"), QByteArray("-2147483648")})
+        QCOMPARE(ask(s, "R " + type), QByteArray("RPRT -1\n"));
+    QCOMPARE(ask(s, "+\\reset 7"), QByteArray("reset: 7\nRPRT -1\n"));
+    QCOMPARE(timesSent(sent, "RESET\n"), 0);
+    QCOMPARE(ask(s, "R 1"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, "RESET\n"), 1);
+    session->stop();
 }
 
 QTEST_MAIN(RotctldServerTest)
