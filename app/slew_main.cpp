@@ -15,6 +15,8 @@
 #include "protocol/dialect.h"
 #include "bridge/rotctldserver.h"
 #include "session/rotatorsession.h"
+#include "session/stopbeforeexit.h"
+#include "sim/terminationsignalwatcher.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -169,5 +171,14 @@ int main(int argc, char *argv[])
     }
     if (!args.screenshot.isEmpty())
         slew::ui::scheduleWindowSnapshot(&window, args.screenshot, args.settleMs);
+    // SIGTERM (a logout, systemd, kill) or SIGINT: as the station service
+    // does, stop the rotator and let the stop leave before exiting.
+    slew::sim::TerminationSignalWatcher terminationSignals;
+    QObject::connect(&terminationSignals, &slew::sim::TerminationSignalWatcher::terminationRequested, &app,
+                     [&session, &window, &app](int number) {
+                         std::fprintf(stderr, "slew: signal %d: stopping the rotator, then exiting\n", number);
+                         window.rotctldServer()->close(); // no tracker moves it again meanwhile
+                         slew::session::stopThenCall(session, &app, [] { QCoreApplication::quit(); });
+                     });
     return app.exec();
 }

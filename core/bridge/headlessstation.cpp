@@ -3,19 +3,13 @@
 
 #include "rotctldserver.h"
 #include "session/rotatorsession.h"
-#include "transport/link.h"
+#include "session/stopbeforeexit.h"
 
 #include <QDateTime>
-#include <QIODevice>
-#include <QTimer>
 
 namespace slew::bridge {
 
 using session::RotatorSession;
-
-namespace {
-constexpr int kFlushGiveUpMs = 1000; // a link that cannot take 6 bytes in a second is gone anyway
-}
 
 HeadlessStation::HeadlessStation(std::FILE *logFile, QObject *parent)
     : QObject(parent), m_log(logFile), m_session(std::make_unique<RotatorSession>())
@@ -81,32 +75,8 @@ void HeadlessStation::shutdown(const QString &why)
     log(tr("stopping: %1").arg(why));
     if (m_server)
         m_server->close();
-    if (m_session->stop())
+    if (session::stopThenCall(*m_session, this, [this] { emit finished(); }))
         log(tr("rotator stopped"));
-    finishWhenFlushed();
-}
-
-void HeadlessStation::finishWhenFlushed()
-{
-    transport::Link *link = m_session->link();
-    QIODevice *device = link ? link->device() : nullptr;
-    if (!device || device->bytesToWrite() == 0) {
-        QTimer::singleShot(0, this, &HeadlessStation::finished);
-        return;
-    }
-    // Wait for the stop to leave, from the event loop, with a limit.
-    auto done = std::make_shared<bool>(false);
-    auto finish = [this, done] {
-        if (*done)
-            return;
-        *done = true;
-        emit finished();
-    };
-    connect(device, &QIODevice::bytesWritten, this, [device, finish](qint64) {
-        if (device->bytesToWrite() == 0)
-            finish();
-    });
-    QTimer::singleShot(kFlushGiveUpMs, this, finish);
 }
 
 } // namespace slew::bridge

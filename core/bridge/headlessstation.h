@@ -52,7 +52,6 @@ signals:
 
 private:
     void log(const QString &line);
-    void finishWhenFlushed();
 
     std::FILE *m_log;
     std::unique_ptr<session::RotatorSession> m_session;
