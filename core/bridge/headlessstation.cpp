@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "headlessstation.h"
 
+#include "logtext.h"
 #include "rotctldserver.h"
 #include "session/rotatorsession.h"
 #include "session/stopbeforeexit.h"
@@ -35,7 +36,10 @@ HeadlessStation::~HeadlessStation() = default;
 
 void HeadlessStation::log(const QString &line)
 {
-    const QString stamped = QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs) + QLatin1Char(' ') + line;
+    // Device and client text reaches here too: no control characters (an
+    // escape sequence would reach the operator's terminal), no endless lines.
+    const QString stamped =
+        QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs) + QLatin1Char(' ') + loggableText(line);
     std::fprintf(m_log, "%s\n", qPrintable(stamped));
     std::fflush(m_log);
 }
@@ -52,11 +56,7 @@ bool HeadlessStation::start(const HeadlessConfig &config, QString *error)
         m_server->setMaxClients(config.rotctldMaxClients);
         m_server->setDeadband(config.profile.deadbandDeg);
         connect(m_server.get(), &RotctldServer::logMessage, this, [this](const QString &m) { log(m); });
-        connect(m_server.get(), &RotctldServer::commandReceived, this,
-                [this](const QString &peer, const QString &line) {
-                    if (!line.startsWith(QLatin1Char('p')) && !line.contains(QLatin1String("get_pos")))
-                        log(tr("rotctld %1: %2").arg(peer, line)); // polls would drown the log
-                });
+        m_server->setLogCommands(true); // polls excepted, escaped and rate-limited per client
         if (!m_server->listen(config.rotctldAddress, config.rotctldPort, error))
             return false;
         // The ready line scripts wait for, with the real port.

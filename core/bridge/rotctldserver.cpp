@@ -53,6 +53,9 @@ RotctldServer::RotctldServer(session::RotatorSession *session, QObject *parent)
     // Hamlib's "command rejected": netrotctl reports it when it opens,
     // Gpredict counts it as a failed cycle.
     m_server.setRefusal("RPRT -9\n");
+    m_clock.start();
+    m_suppressedReport.setInterval(5000);
+    connect(&m_suppressedReport, &QTimer::timeout, this, &RotctldServer::reportAllSuppressed);
     connect(&m_server, &transport::BoundedTcpServer::clientArrived, this, &RotctldServer::onClientArrived);
     connect(&m_server, &transport::BoundedTcpServer::notice, this,
             [this](const QString &text) { emit logMessage(tr("rotctld server: %1").arg(text)); });
@@ -163,6 +166,7 @@ void RotctldServer::onDisconnected(QTcpSocket *s)
     }
     if (c.spare)
         c.spare->close();
+    reportSuppressed(c);
     emit logMessage(tr("rotctld client %1 left").arg(c.info.peer));
     m_clients.erase(it);
     s->deleteLater();
@@ -195,7 +199,7 @@ QByteArray RotctldServer::consume(Client &c, const QByteArray &bytes, bool *quit
             c.buffer.clear();
             c.discarding = true;
             out += "RPRT -1\n";
-            emit logMessage(tr("rotctld client %1 sent a line over %2 bytes; refused").arg(c.info.peer).arg(kMaxLine));
+            logClient(c, tr("rotctld client %1 sent a line over %2 bytes; refused").arg(c.info.peer).arg(kMaxLine));
             continue;
         }
         c.buffer += ch;
@@ -273,6 +277,8 @@ QByteArray RotctldServer::answer(Client &c, const QByteArray &line)
     emit commandReceived(c.info.peer, c.info.lastCommand);
 
     const RotctldRequest r = parseRotctldLine(line);
+    if (m_logCommands && r.kind != Kind::GetPosition && r.kind != Kind::Unknown && r.kind != Kind::Malformed)
+        logClient(c, tr("rotctld %1: %2").arg(c.info.peer, c.info.lastCommand));
     const auto &profile = m_session->profile();
     switch (r.kind) {
     case Kind::GetPosition: {
@@ -297,9 +303,9 @@ QByteArray RotctldServer::answer(Client &c, const QByteArray &line)
     case Kind::Reset:
         // Hamlib's reset takes a type, and 1 ("reset all") is the only one.
         if (r.resetType != 1) {
-            emit logMessage(tr("rotctld client %1: reset type %2 means nothing; only 1 (reset all)")
-                                .arg(c.info.peer)
-                                .arg(r.resetType));
+            logClient(c, tr("rotctld client %1: reset type %2 means nothing; only 1 (reset all)")
+                             .arg(c.info.peer)
+                             .arg(r.resetType));
             return formatStatus(r, int(HamlibError::InvalidArgument));
         }
         if (m_remoteHeld)
@@ -322,10 +328,39 @@ QByteArray RotctldServer::answer(Client &c, const QByteArray &line)
         return {};
     case Kind::Unknown:
     case Kind::Malformed:
-        emit logMessage(tr("rotctld client %1: %2").arg(c.info.peer, r.error));
+        // Logged once, as the refusal; the line itself is in it.
+        logClient(c, tr("rotctld client %1: %2").arg(c.info.peer, r.error));
         return formatStatus(r, int(HamlibError::InvalidArgument));
     }
     return formatStatus(r, int(HamlibError::InvalidArgument));
+}
+
+void RotctldServer::logClient(Client &c, const QString &text)
+{
+    if (!c.logAllowance.take(m_clock.elapsed())) {
+        if (!m_suppressedReport.isActive())
+            m_suppressedReport.start();
+        return;
+    }
+    reportSuppressed(c);
+    emit logMessage(loggableText(text));
+}
+
+void RotctldServer::reportSuppressed(Client &c)
+{
+    if (const int n = c.logAllowance.takeSuppressed(); n > 0)
+        emit logMessage(tr("%1 more lines from %2 suppressed").arg(n).arg(c.info.peer));
+}
+
+void RotctldServer::reportAllSuppressed()
+{
+    bool any = false;
+    for (Client &c : m_clients) {
+        reportSuppressed(c);
+        any = any || c.logAllowance.suppressed() > 0;
+    }
+    if (!any)
+        m_suppressedReport.stop();
 }
 
 int RotctldServer::setPosition(const RotctldRequest &r)

@@ -9,13 +9,16 @@
 // client is answered on its own connection; a client that floods, sends an
 // overlong line or vanishes disturbs no one else.
 
+#include "logtext.h"
 #include "rotctldrequest.h"
 #include "transport/boundedtcpserver.h"
 
 #include <QDateTime>
 #include <QHash>
 #include <QHostAddress>
+#include <QElapsedTimer>
 #include <QObject>
+#include <QTimer>
 
 #include <memory>
 
@@ -75,6 +78,13 @@ public:
     void holdRemote();
     void releaseRemote();
 
+    // Also log every command but position polls (the station service does;
+    // the window shows them in the Trackers tab instead). Whatever is logged
+    // about one client is escaped, cut at 200 characters and held to a rate
+    // (LogAllowance): a hostile client cannot flood the log or write
+    // terminal escapes into it.
+    void setLogCommands(bool on) { m_logCommands = on; }
+
     QList<ClientInfo> clients() const;
     int movesSuppressedByDeadband() const { return m_suppressed; }
 
@@ -93,6 +103,7 @@ private:
         // Keeps the connection open after Qt closes on the client's end of
         // input, so the answers to its last lines still reach it.
         std::shared_ptr<transport::SpareSocketHandle> spare;
+        LogAllowance logAllowance;
         ClientInfo info;
     };
 
@@ -108,6 +119,9 @@ private:
     void onDisconnected(QTcpSocket *socket);
     QByteArray answer(Client &client, const QByteArray &line);
     int setPosition(const RotctldRequest &r);
+    void logClient(Client &client, const QString &text);
+    void reportSuppressed(Client &client);
+    void reportAllSuppressed();
     int move(const RotctldRequest &r);
 
     session::RotatorSession *m_session;
@@ -117,6 +131,9 @@ private:
     double m_deadband = 0.5;
     bool m_remoteHeld = false;
     int m_suppressed = 0;
+    bool m_logCommands = false;
+    QElapsedTimer m_clock;
+    QTimer m_suppressedReport; // runs while some client has lines held back
 };
 
 } // namespace slew::bridge

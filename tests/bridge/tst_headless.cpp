@@ -13,6 +13,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <QRandomGenerator>
+#include <QRegularExpression>
 #include <QTimer>
 
 #include <csignal>
@@ -28,6 +30,7 @@ private slots:
     void repeatedTargetReachesTheRotatorAfterStopAndReconnect();
     void refusesABadListenAddress();
     void runningOutOfDescriptorsDoesNotSpin();
+    void hostileClientCannotFloodTheLog();
 
 private:
     bool startSlew(QProcess &slew, const QStringList &args, quint16 *rotctldPort,
@@ -261,6 +264,67 @@ void HeadlessTest::runningOutOfDescriptorsDoesNotSpin()
     QCOMPARE(answered, 200);
     QVERIFY2(wrong.isEmpty(), wrong.constData());
     QVERIFY(logged("accepting connections again"));
+    slew.terminate();
+    QTRY_COMPARE(slew.state(), QProcess::NotRunning);
+}
+
+void HeadlessTest::hostileClientCannotFloodTheLog()
+{
+    QProcess slew;
+    quint16 port = 0;
+    QVERIFY(startSlew(slew, {"--connect", "sim:", "--rotctld-listen", "127.0.0.1:0"}, &port));
+    QByteArray out;
+    auto logged = [&](const QByteArray &text) {
+        out += slew.readAllStandardOutput();
+        return out.contains(text);
+    };
+    logged("");
+    const qsizetype before = out.size();
+
+    // 512 KiB of random bytes, laced with terminal escape sequences and
+    // lines long and short, from one client, which then leaves.
+    QRandomGenerator rng(11);
+    QByteArray junk;
+    const QByteArray escapes[] = {"\x1b[2J", "\x1b]0;owned\x07", "\x9b" "31m", "\x1b[31m", "\r", "\x08\x08\x08"};
+    while (junk.size() < 512 * 1024) {
+        if (rng.bounded(4) == 0)
+            junk += escapes[rng.bounded(int(std::size(escapes)))];
+        else if (rng.bounded(8) == 0)
+            junk += '\n';
+        else
+            junk += char(rng.bounded(256));
+    }
+    QTcpSocket hostile;
+    hostile.connectToHost(QHostAddress::LocalHost, port);
+    QTRY_COMPARE(hostile.state(), QAbstractSocket::ConnectedState);
+    const QByteArray peer = "127.0.0.1:" + QByteArray::number(hostile.localPort());
+    hostile.write(junk);
+    QVERIFY(QTest::qWaitFor([&] { return hostile.bytesToWrite() == 0; }, 20000));
+    // An unknown line is logged once, as its refusal.
+    QTcpSocket good;
+    good.connectToHost(QHostAddress::LocalHost, port);
+    QTRY_COMPARE(good.state(), QAbstractSocket::ConnectedState);
+    QCOMPARE(ask(good, "Zebra"), QByteArray("RPRT -1\n"));
+    QVERIFY(QTest::qWaitFor([&] { return logged("unknown command 'Z'"); }, 10000));
+    hostile.disconnectFromHost();
+    QVERIFY(QTest::qWaitFor([&] { return logged("rotctld client " + peer + " left"); }, 20000));
+
+    const QByteArray flood = out.mid(before);
+    qInfo("512 KiB of hostile input: %lld bytes of log in %lld lines", qint64(flood.size()), qint64(flood.count('\n')));
+    QVERIFY2(flood.contains("more lines from " + peer + " suppressed"), flood.right(2000).constData());
+    // Bounded: a burst of lines, each at most 200 characters after its time stamp.
+    QVERIFY2(flood.size() < 12 * 1024, qPrintable(QString::number(flood.size())));
+    for (const QByteArray &line : flood.split('\n')) {
+        QVERIFY2(QString::fromUtf8(line).size() <= 25 + 200 + 30, line.constData());
+        for (const char ch : line) {
+            const auto u = static_cast<unsigned char>(ch);
+            QVERIFY2(u >= 0x20 && u != 0x7f, line.toPercentEncoding().constData());
+        }
+        // No C1 controls either (U+0080..U+009F in UTF-8: C2 80..C2 9F).
+        QVERIFY2(!QString::fromUtf8(line).contains(QRegularExpression("[\\x{80}-\\x{9f}]")), line.constData());
+    }
+    QCOMPARE(flood.count("Zebra"), 0); // the refusal names the command letter only, once
+    QCOMPARE(flood.count("unknown command 'Z'"), 1);
     slew.terminate();
     QTRY_COMPARE(slew.state(), QProcess::NotRunning);
 }
