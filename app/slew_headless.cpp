@@ -10,6 +10,7 @@
 #include "slew_headless.h"
 
 #include "bridge/headlessstation.h"
+#include "bridge/rotctldserver.h"
 #include "protocol/dialect.h"
 #include "sim/terminationsignalwatcher.h"
 
@@ -28,6 +29,15 @@ int fail(const QString &message)
 }
 
 } // namespace
+
+std::optional<int> parseMaxClients(const QString &text)
+{
+    bool ok = false;
+    const int n = text.toInt(&ok);
+    if (!ok || n < 1 || n > 100000)
+        return std::nullopt;
+    return n;
+}
 
 bool wantsHeadless(int argc, char *argv[])
 {
@@ -53,7 +63,7 @@ int runHeadless(int argc, char *argv[])
     parser.process(*arguments);
     const QString connect = QStringLiteral("connect"), dialect = QStringLiteral("dialect"),
                   profile = QStringLiteral("profile"), listen = QStringLiteral("rotctld-listen"),
-                  allow = QStringLiteral("rotctld-allow");
+                  allow = QStringLiteral("rotctld-allow"), maxClients = QStringLiteral("rotctld-max-clients");
 
     slew::bridge::HeadlessConfig config;
     if (parser.isSet(profile)) {
@@ -82,6 +92,14 @@ int runHeadless(int argc, char *argv[])
                 return fail(QStringLiteral("--rotctld-allow: '%1' is not an address").arg(a));
             config.allowedClients.append(address);
         }
+    }
+
+    if (parser.isSet(maxClients)) {
+        const auto n = parseMaxClients(parser.value(maxClients));
+        if (!n)
+            return fail(QStringLiteral("--rotctld-max-clients %1: expected a number from 1 to 100000")
+                            .arg(parser.value(maxClients)));
+        config.rotctldMaxClients = *n;
     }
 
     slew::bridge::HeadlessStation station;

@@ -15,7 +15,10 @@
 
 #include "connectionbar.h"
 #include "protocol/dialect.h"
+#include "bridge/rotctldserver.h"
 #include "session/rotatorsession.h"
+#include "session/stopbeforeexit.h"
+#include "sim/terminationsignalwatcher.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -32,6 +35,7 @@ struct Arguments {
     QString screenshot;
     int settleMs = 3000;
     std::optional<std::pair<QHostAddress, quint16>> rotctldListen;
+    std::optional<int> rotctldMaxClients;
 };
 
 // Returns an error message, or empty when the arguments are usable.
@@ -42,7 +46,8 @@ QString parse(QCommandLineParser &parser, const QStringList &argv, Arguments &ou
 
     const QString connect = QStringLiteral("connect"), dialect = QStringLiteral("dialect"),
                   gotoOption = QStringLiteral("goto"), rotctld = QStringLiteral("rotctld-listen"),
-                  screenshot = QStringLiteral("screenshot"), settle = QStringLiteral("settle-ms");
+                  screenshot = QStringLiteral("screenshot"), settle = QStringLiteral("settle-ms"),
+                  maxClients = QStringLiteral("rotctld-max-clients");
     out.connectUri = parser.value(connect);
     if (parser.isSet(dialect)) {
         out.dialect = slew::protocol::dialectFromName(parser.value(dialect));
@@ -63,6 +68,12 @@ QString parse(QCommandLineParser &parser, const QStringList &argv, Arguments &ou
         if (!slew::transport::parseHostPort(parser.value(rotctld), &address, &port))
             return QStringLiteral("--rotctld-listen %1: expected ADDRESS:PORT").arg(parser.value(rotctld));
         out.rotctldListen = std::pair{address, port};
+    }
+    if (parser.isSet(maxClients)) {
+        out.rotctldMaxClients = parseMaxClients(parser.value(maxClients));
+        if (!out.rotctldMaxClients)
+            return QStringLiteral("--rotctld-max-clients %1: expected a number from 1 to 100000")
+                .arg(parser.value(maxClients));
     }
     out.screenshot = parser.value(screenshot);
     if (parser.isSet(settle)) {
@@ -130,6 +141,8 @@ int main(int argc, char *argv[])
                              }
                          });
     }
+    if (args.rotctldMaxClients)
+        window.rotctldServer()->setMaxClients(*args.rotctldMaxClients);
     window.connectTo(uri, dialect);
     if (args.rotctldListen
         && !window.rotctldPanel()->startListening(args.rotctldListen->first.toString(), args.rotctldListen->second)) {
@@ -137,5 +150,14 @@ int main(int argc, char *argv[])
     }
     if (!args.screenshot.isEmpty())
         slew::ui::scheduleWindowSnapshot(&window, args.screenshot, args.settleMs);
+    // SIGTERM (a logout, systemd, kill) or SIGINT: as the station service
+    // does, stop the rotator and let the stop leave before exiting.
+    slew::sim::TerminationSignalWatcher terminationSignals;
+    QObject::connect(&terminationSignals, &slew::sim::TerminationSignalWatcher::terminationRequested, &app,
+                     [&session, &window, &app](int number) {
+                         std::fprintf(stderr, "slew: signal %d: stopping the rotator, then exiting\n", number);
+                         window.rotctldServer()->close(); // no tracker moves it again meanwhile
+                         slew::session::stopThenCall(session, &app, [] { QCoreApplication::quit(); });
+                     });
     return app.exec();
 }

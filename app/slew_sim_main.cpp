@@ -41,7 +41,8 @@ int main(int argc, char *argv[])
     slew::cli::describeTo(parser, slew::cli::slewSimMode());
     parser.process(app);
     const QString listen = QStringLiteral("listen"), pty = QStringLiteral("pty"),
-                  listenDialect = QStringLiteral("listen-dialect"), logReceived = QStringLiteral("log-received");
+                  listenDialect = QStringLiteral("listen-dialect"), logReceived = QStringLiteral("log-received"),
+                  maxClients = QStringLiteral("max-clients");
 
     // The simulator's own options, the same as a sim: URI's (the clock is
     // not among slew-sim's: a server always runs on the wall clock).
@@ -82,6 +83,16 @@ int main(int argc, char *argv[])
             tcpSettings.dialect = *d;
         }
         tcp = std::make_unique<SimulatorTcpServer>(simulator, tcpSettings);
+        if (parser.isSet(maxClients)) {
+            bool ok = false;
+            const int n = parser.value(maxClients).toInt(&ok);
+            if (!ok || n < 1 || n > 100000)
+                fail(QStringLiteral("--max-clients %1: expected a number from 1 to 100000").arg(parser.value(maxClients)));
+            tcp->setMaxClients(n);
+        }
+        QObject::connect(tcp.get(), &SimulatorTcpServer::notice, [](const QString &text) {
+            std::fprintf(stderr, "slew-sim: %s\n", qPrintable(text));
+        });
         if (!tcp->listen(address, port))
             fail(QStringLiteral("cannot listen on %1:%2: %3").arg(address.toString()).arg(port).arg(tcp->errorString()));
         ready += QStringLiteral(" tcp %1:%2").arg(tcp->serverAddress().toString()).arg(tcp->serverPort());

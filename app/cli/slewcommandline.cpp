@@ -2,8 +2,10 @@
 #include "slewcommandline.h"
 
 #include "console/consolecommand.h"
+#include "bridge/rotctldserver.h"
 #include "protocol/dialect.h"
 #include "sim/simulatoroptions.h"
+#include "sim/simulatortcpserver.h"
 
 #include <QCommandLineParser>
 
@@ -41,6 +43,16 @@ ProgramOption rotctldListenOption()
             true};
 }
 
+ProgramOption rotctldMaxClientsOption()
+{
+    return {{QStringLiteral("rotctld-max-clients")},
+            QStringLiteral("n"),
+            QStringLiteral("How many trackers may be connected at once (default %1); one more reads RPRT -9 and is "
+                           "closed.")
+                .arg(bridge::RotctldServer::kDefaultMaxClients),
+            true};
+}
+
 ProgramMode makeWindowMode()
 {
     ProgramMode mode;
@@ -58,6 +70,7 @@ ProgramMode makeWindowMode()
                                      "rotctld://HOST:PORT or sim:?az_max=450.")),
         dialectOption(),
         rotctldListenOption(),
+        rotctldMaxClientsOption(),
         {{QStringLiteral("goto")}, QStringLiteral("az,el"), QStringLiteral("Once connected, move to this position.")},
         {{QStringLiteral("screenshot")},
          QStringLiteral("FILE.png"),
@@ -85,7 +98,7 @@ ProgramMode makeHeadlessMode()
         {{QStringLiteral("config")},
          QStringLiteral("file"),
          QStringLiteral("Read settings from FILE, one `name = value` a line, where name is one of connect, dialect, "
-                        "profile, rotctld-listen, rotctld-allow. Options on the command line win over the file.")},
+                        "profile, rotctld-listen, rotctld-allow, rotctld-max-clients. Options on the command line win over the file.")},
         connectOption(QStringLiteral("The rotator's link URI (default sim:, the built-in simulator).")),
         dialectOption(),
         profileOption(),
@@ -94,6 +107,7 @@ ProgramMode makeHeadlessMode()
          QStringLiteral("addresses"),
          QStringLiteral("Comma-separated client addresses the rotctld server accepts (default: any)."),
          true},
+        rotctldMaxClientsOption(),
     };
     return mode;
 }
@@ -208,6 +222,10 @@ ProgramMode makeSimMode()
          QStringLiteral("name"),
          QStringLiteral("Dialect of the TCP endpoint if not --dialect's.")},
         {{QStringLiteral("log-received")}, QStringLiteral("file"), QStringLiteral("Write every line received to FILE.")},
+        {{QStringLiteral("max-clients")},
+         QStringLiteral("n"),
+         QStringLiteral("TCP clients at once (default %1); one more is refused and closed.")
+             .arg(sim::SimulatorTcpServer::kDefaultMaxClients)},
     };
     // The simulator's own options, which sim: URIs take too (`--az-max 450`
     // here is `sim:?az_max=450` there). The clock option is for tests in the

@@ -1,21 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "headlessstation.h"
 
+#include "logtext.h"
 #include "rotctldserver.h"
 #include "session/rotatorsession.h"
-#include "transport/link.h"
+#include "session/stopbeforeexit.h"
 
 #include <QDateTime>
-#include <QIODevice>
-#include <QTimer>
 
 namespace slew::bridge {
 
 using session::RotatorSession;
-
-namespace {
-constexpr int kFlushGiveUpMs = 1000; // a link that cannot take 6 bytes in a second is gone anyway
-}
 
 HeadlessStation::HeadlessStation(std::FILE *logFile, QObject *parent)
     : QObject(parent), m_log(logFile), m_session(std::make_unique<RotatorSession>())
@@ -41,7 +36,10 @@ HeadlessStation::~HeadlessStation() = default;
 
 void HeadlessStation::log(const QString &line)
 {
-    const QString stamped = QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs) + QLatin1Char(' ') + line;
+    // Device and client text reaches here too: no control characters (an
+    // escape sequence would reach the operator's terminal), no endless lines.
+    const QString stamped =
+        QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs) + QLatin1Char(' ') + loggableText(line);
     std::fprintf(m_log, "%s\n", qPrintable(stamped));
     std::fflush(m_log);
 }
@@ -55,13 +53,10 @@ bool HeadlessStation::start(const HeadlessConfig &config, QString *error)
     if (config.rotctldEnabled) {
         m_server = std::make_unique<RotctldServer>(m_session.get());
         m_server->setAllowedClients(config.allowedClients);
+        m_server->setMaxClients(config.rotctldMaxClients);
         m_server->setDeadband(config.profile.deadbandDeg);
         connect(m_server.get(), &RotctldServer::logMessage, this, [this](const QString &m) { log(m); });
-        connect(m_server.get(), &RotctldServer::commandReceived, this,
-                [this](const QString &peer, const QString &line) {
-                    if (!line.startsWith(QLatin1Char('p')) && !line.contains(QLatin1String("get_pos")))
-                        log(tr("rotctld %1: %2").arg(peer, line)); // polls would drown the log
-                });
+        m_server->setLogCommands(true); // polls excepted, escaped and rate-limited per client
         if (!m_server->listen(config.rotctldAddress, config.rotctldPort, error))
             return false;
         // The ready line scripts wait for, with the real port.
@@ -80,39 +75,8 @@ void HeadlessStation::shutdown(const QString &why)
     log(tr("stopping: %1").arg(why));
     if (m_server)
         m_server->close();
-    if (m_session->stop())
+    if (session::stopThenCall(*m_session, this, [this] { emit finished(); }))
         log(tr("rotator stopped"));
-    if (m_session->stopHoldPending()) {
-        // The hold that brakes a free-running drive follows the stop in a
-        // moment; leaving before it would let such a drive coast on.
-        connect(m_session.get(), &session::RotatorSession::stopHoldSent, this, &HeadlessStation::finishWhenFlushed,
-                Qt::SingleShotConnection);
-        return;
-    }
-    finishWhenFlushed();
-}
-
-void HeadlessStation::finishWhenFlushed()
-{
-    transport::Link *link = m_session->link();
-    QIODevice *device = link ? link->device() : nullptr;
-    if (!device || device->bytesToWrite() == 0) {
-        QTimer::singleShot(0, this, &HeadlessStation::finished);
-        return;
-    }
-    // Wait for the stop to leave, from the event loop, with a limit.
-    auto done = std::make_shared<bool>(false);
-    auto finish = [this, done] {
-        if (*done)
-            return;
-        *done = true;
-        emit finished();
-    };
-    connect(device, &QIODevice::bytesWritten, this, [device, finish](qint64) {
-        if (device->bytesToWrite() == 0)
-            finish();
-    });
-    QTimer::singleShot(kFlushGiveUpMs, this, finish);
 }
 
 } // namespace slew::bridge

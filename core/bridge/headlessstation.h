@@ -28,6 +28,7 @@ struct HeadlessConfig {
     quint16 rotctldPort = 0;
     bool rotctldEnabled = false;
     QList<QHostAddress> allowedClients; // empty: any
+    int rotctldMaxClients = 32;         // RotctldServer::kDefaultMaxClients
 };
 
 class HeadlessStation : public QObject {
@@ -51,7 +52,6 @@ signals:
 
 private:
     void log(const QString &line);
-    void finishWhenFlushed();
 
     std::FILE *m_log;
     std::unique_ptr<session::RotatorSession> m_session;

@@ -1,6 +1,8 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "rotctldserver.h"
 
 #include "session/rotatorsession.h"
+#include "transport/endofinput.h"
 
 #include <QTcpSocket>
 #include <QTimer>
@@ -16,6 +18,8 @@ using session::RotatorSession;
 namespace {
 
 constexpr qint64 kReadChunk = 16 * 1024; // per event, so a flood cannot starve the GUI
+// A client that has finished sending but does not read its answers.
+constexpr int kCloseLingerMs = 5000;
 
 QString peerName(const QTcpSocket *s)
 {
@@ -46,7 +50,15 @@ int hamlibModelFor(protocol::Dialect d)
 RotctldServer::RotctldServer(session::RotatorSession *session, QObject *parent)
     : QObject(parent), m_session(session)
 {
-    connect(&m_server, &QTcpServer::newConnection, this, &RotctldServer::onNewConnection);
+    // Hamlib's "command rejected": netrotctl reports it when it opens,
+    // Gpredict counts it as a failed cycle.
+    m_server.setRefusal("RPRT -9\n");
+    m_clock.start();
+    m_suppressedReport.setInterval(5000);
+    connect(&m_suppressedReport, &QTimer::timeout, this, &RotctldServer::reportAllSuppressed);
+    connect(&m_server, &transport::BoundedTcpServer::clientArrived, this, &RotctldServer::onClientArrived);
+    connect(&m_server, &transport::BoundedTcpServer::notice, this,
+            [this](const QString &text) { emit logMessage(tr("rotctld server: %1").arg(text)); });
 }
 
 RotctldServer::~RotctldServer()
@@ -107,26 +119,33 @@ QList<RotctldServer::ClientInfo> RotctldServer::clients() const
     return out;
 }
 
-void RotctldServer::onNewConnection()
+void RotctldServer::onClientArrived(QTcpSocket *s)
 {
-    while (QTcpSocket *s = m_server.nextPendingConnection()) {
-        if (!m_allowed.isEmpty() && !m_allowed.contains(s->peerAddress())) {
-            emit logMessage(tr("refused rotctld client %1: not in the allowed list").arg(peerName(s)));
-            s->abort();
-            s->deleteLater();
-            continue;
-        }
-        s->setSocketOption(QAbstractSocket::LowDelayOption, 1);
-        Client c;
-        c.socket = s;
-        c.info.peer = peerName(s);
-        c.info.lastSeen = QDateTime::currentDateTime();
-        m_clients.insert(s, c);
-        connect(s, &QTcpSocket::readyRead, this, [this, s] { onReadyRead(s); });
-        connect(s, &QTcpSocket::disconnected, this, [this, s] { onDisconnected(s); });
-        emit logMessage(tr("rotctld client %1 connected").arg(c.info.peer));
-        emit clientsChanged();
+    if (!m_allowed.isEmpty() && !m_allowed.contains(s->peerAddress())) {
+        emit logMessage(tr("refused rotctld client %1: not in the allowed list").arg(peerName(s)));
+        s->abort();
+        s->deleteLater();
+        return;
     }
+    s->setSocketOption(QAbstractSocket::LowDelayOption, 1);
+    // Qt reads no more than this ahead of us, so everything it has read is
+    // answered before it can see the client's end of input.
+    s->setReadBufferSize(kReadChunk);
+    Client c;
+    c.socket = s;
+    c.info.peer = peerName(s);
+    c.info.lastSeen = QDateTime::currentDateTime();
+    c.spare = std::make_shared<transport::SpareSocketHandle>(*s);
+    m_clients.insert(s, c);
+    connect(s, &QTcpSocket::readyRead, this, [this, s] { onReadyRead(s); });
+    connect(s, &QTcpSocket::disconnected, this, [this, s] { onDisconnected(s); });
+    emit logMessage(tr("rotctld client %1 connected").arg(c.info.peer));
+    emit clientsChanged();
+    if (s->bytesAvailable() > 0)
+        QTimer::singleShot(0, this, [this, s] {
+            if (m_clients.contains(s))
+                onReadyRead(s);
+        });
 }
 
 void RotctldServer::onDisconnected(QTcpSocket *s)
@@ -134,31 +153,40 @@ void RotctldServer::onDisconnected(QTcpSocket *s)
     const auto it = m_clients.find(s);
     if (it == m_clients.end())
         return;
-    emit logMessage(tr("rotctld client %1 left").arg(it->info.peer));
+    Client &c = *it;
+    // Qt saw the client's end of input first and closed: what it sent last
+    // is answered through the spare descriptor, if it still listens.
+    if (!c.finished && c.spare && c.spare->peerAwaitsAnswers()) {
+        c.finished = true;
+        bool quit = false;
+        QByteArray out = consume(c, s->readAll(), &quit);
+        if (!quit)
+            out += answerLastLine(c);
+        c.spare->send(out);
+    }
+    if (c.spare)
+        c.spare->close();
+    reportSuppressed(c);
+    emit logMessage(tr("rotctld client %1 left").arg(c.info.peer));
     m_clients.erase(it);
     s->deleteLater();
     emit clientsChanged();
 }
 
-void RotctldServer::onReadyRead(QTcpSocket *s)
+QByteArray RotctldServer::consume(Client &c, const QByteArray &bytes, bool *quit)
 {
-    auto it = m_clients.find(s);
-    if (it == m_clients.end())
-        return;
-    Client &c = *it;
-    const QByteArray bytes = s->read(kReadChunk);
     QByteArray out;
+    *quit = false;
     for (char ch : bytes) {
         if (ch == '\n' || ch == '\r') {
             if (c.discarding) {
                 c.discarding = false;
             } else if (!c.buffer.isEmpty()) {
-                const QByteArray line = c.buffer;
+                const QByteArray line = c.buffer.trimmed();
                 c.buffer.clear();
-                if (line.trimmed() == "q" || line.trimmed() == "Q" || line.trimmed() == "\\quit") {
-                    s->write(out);
-                    s->disconnectFromHost();
-                    return;
+                if (line == "q" || line == "Q" || line == "\\quit") {
+                    *quit = true;
+                    return out;
                 }
                 out += answer(c, line);
             }
@@ -171,25 +199,74 @@ void RotctldServer::onReadyRead(QTcpSocket *s)
             c.buffer.clear();
             c.discarding = true;
             out += "RPRT -1\n";
-            emit logMessage(tr("rotctld client %1 sent a line over %2 bytes; refused").arg(c.info.peer).arg(kMaxLine));
+            logClient(c, tr("rotctld client %1 sent a line over %2 bytes; refused").arg(c.info.peer).arg(kMaxLine));
             continue;
         }
         c.buffer += ch;
     }
-    // Every answer of this read leaves in one write: Gpredict reads a `p`
-    // answer with a single recv.
-    if (!out.isEmpty())
+    return out;
+}
+
+QByteArray RotctldServer::answerLastLine(Client &c)
+{
+    const QByteArray last = c.buffer.trimmed();
+    c.buffer.clear();
+    if (c.discarding || last.isEmpty() || last == "q" || last == "Q" || last == "\\quit")
+        return {};
+    return answer(c, last);
+}
+
+void RotctldServer::onReadyRead(QTcpSocket *s)
+{
+    auto it = m_clients.find(s);
+    if (it == m_clients.end())
+        return;
+    Client &c = *it;
+    if (c.finished)
+        return;
+    // All Qt holds, which the read buffer size keeps to one chunk.
+    bool quit = false;
+    const QByteArray out = consume(c, s->readAll(), &quit);
+    if (quit) {
+        c.finished = true;
         s->write(out);
+        s->disconnectFromHost();
+        return;
+    }
+    // Every answer of this read leaves in one write: Gpredict reads a `p`
+    // answer with a single recv. Flushed at once, so an answer is on its way
+    // before Qt can read the client's end of input and close the socket.
+    if (!out.isEmpty()) {
+        s->write(out);
+        s->flush();
+    }
     if (s->bytesToWrite() > kMaxUnsentAnswers) {
         emit logMessage(tr("rotctld client %1 is not reading its answers; disconnected").arg(c.info.peer));
+        c.finished = true;
         s->abort();
         return;
     }
-    if (s->bytesAvailable() > 0)
+    if (s->bytesAvailable() > 0) {
         QTimer::singleShot(0, this, [this, s] {
             if (m_clients.contains(s))
                 onReadyRead(s);
         });
+        return;
+    }
+    if (transport::peerFinishedSending(*s))
+        finishInput(c);
+}
+
+void RotctldServer::finishInput(Client &c)
+{
+    QTcpSocket *s = c.socket;
+    c.finished = true;
+    if (const QByteArray out = answerLastLine(c); !out.isEmpty())
+        s->write(out);
+    // Closes once the answers have left; a client that never reads them is
+    // cut off.
+    QTimer::singleShot(kCloseLingerMs, s, [s] { s->abort(); });
+    s->disconnectFromHost();
 }
 
 QByteArray RotctldServer::answer(Client &c, const QByteArray &line)
@@ -200,6 +277,8 @@ QByteArray RotctldServer::answer(Client &c, const QByteArray &line)
     emit commandReceived(c.info.peer, c.info.lastCommand);
 
     const RotctldRequest r = parseRotctldLine(line);
+    if (m_logCommands && r.kind != Kind::GetPosition && r.kind != Kind::Unknown && r.kind != Kind::Malformed)
+        logClient(c, tr("rotctld %1: %2").arg(c.info.peer, c.info.lastCommand));
     const auto &profile = m_session->profile();
     switch (r.kind) {
     case Kind::GetPosition: {
@@ -222,6 +301,13 @@ QByteArray RotctldServer::answer(Client &c, const QByteArray &line)
             return formatStatus(r, int(HamlibError::Io));
         return formatStatus(r, m_session->park() ? 0 : int(HamlibError::InvalidArgument));
     case Kind::Reset:
+        // Hamlib's reset takes a type, and 1 ("reset all") is the only one.
+        if (r.resetType != 1) {
+            logClient(c, tr("rotctld client %1: reset type %2 means nothing; only 1 (reset all)")
+                             .arg(c.info.peer)
+                             .arg(r.resetType));
+            return formatStatus(r, int(HamlibError::InvalidArgument));
+        }
         if (m_remoteHeld)
             return formatStatus(r, int(HamlibError::Rejected));
         if (!m_session->isConnected())
@@ -242,10 +328,39 @@ QByteArray RotctldServer::answer(Client &c, const QByteArray &line)
         return {};
     case Kind::Unknown:
     case Kind::Malformed:
-        emit logMessage(tr("rotctld client %1: %2").arg(c.info.peer, r.error));
+        // Logged once, as the refusal; the line itself is in it.
+        logClient(c, tr("rotctld client %1: %2").arg(c.info.peer, r.error));
         return formatStatus(r, int(HamlibError::InvalidArgument));
     }
     return formatStatus(r, int(HamlibError::InvalidArgument));
+}
+
+void RotctldServer::logClient(Client &c, const QString &text)
+{
+    if (!c.logAllowance.take(m_clock.elapsed())) {
+        if (!m_suppressedReport.isActive())
+            m_suppressedReport.start();
+        return;
+    }
+    reportSuppressed(c);
+    emit logMessage(loggableText(text));
+}
+
+void RotctldServer::reportSuppressed(Client &c)
+{
+    if (const int n = c.logAllowance.takeSuppressed(); n > 0)
+        emit logMessage(tr("%1 more lines from %2 suppressed").arg(n).arg(c.info.peer));
+}
+
+void RotctldServer::reportAllSuppressed()
+{
+    bool any = false;
+    for (Client &c : m_clients) {
+        reportSuppressed(c);
+        any = any || c.logAllowance.suppressed() > 0;
+    }
+    if (!any)
+        m_suppressedReport.stop();
 }
 
 int RotctldServer::setPosition(const RotctldRequest &r)
@@ -254,10 +369,11 @@ int RotctldServer::setPosition(const RotctldRequest &r)
         return int(HamlibError::Rejected);
     if (!m_session->isConnected())
         return int(HamlibError::Io);
-    const double lastAz = m_session->targetAzimuth();
-    const double lastEl = m_session->targetElevation();
-    if (!std::isnan(lastAz) && !std::isnan(lastEl) && bearingDifference(r.az, lastAz) < m_deadband
-        && std::abs(r.el - lastEl) < m_deadband) {
+    // The deadband is measured from where the rotator is going now. After a
+    // stop, a jog, park, home or a new link there is no such target, and a
+    // tracker's repeated P goes out again.
+    if (const auto active = m_session->activeTarget();
+        active && bearingDifference(r.az, active->azimuth) < m_deadband && std::abs(r.el - active->elevation) < m_deadband) {
         // Still checked: a target inside the deadband of a legal one can be illegal.
         const auto &lim = m_session->profile().limits;
         if (model::checkElevation(lim, r.el).isEmpty() && model::chooseAzimuth(lim, r.az, std::nullopt).azimuth) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A server that speaks Hamlib's rotctld protocol, so Gpredict, the SatNOGS
 // client or `rotctl -m 2` can steer the rotator through Slew while the
@@ -8,15 +9,24 @@
 // client is answered on its own connection; a client that floods, sends an
 // overlong line or vanishes disturbs no one else.
 
+#include "logtext.h"
 #include "rotctldrequest.h"
+#include "transport/boundedtcpserver.h"
 
 #include <QDateTime>
 #include <QHash>
 #include <QHostAddress>
+#include <QElapsedTimer>
 #include <QObject>
-#include <QTcpServer>
+#include <QTimer>
+
+#include <memory>
 
 class QTcpSocket;
+
+namespace slew::transport {
+class SpareSocketHandle;
+}
 
 namespace slew::session {
 class RotatorSession;
@@ -36,6 +46,7 @@ public:
 
     static constexpr int kMaxLine = 1024;               // longer lines are refused
     static constexpr qint64 kMaxUnsentAnswers = 1 << 20; // a client that never reads is cut off
+    static constexpr int kDefaultMaxClients = transport::BoundedTcpServer::kDefaultMaxClients;
 
     explicit RotctldServer(session::RotatorSession *session, QObject *parent = nullptr);
     ~RotctldServer() override;
@@ -45,14 +56,19 @@ public:
     bool listen(const QHostAddress &address, quint16 port, QString *error);
     void close();
     bool isListening() const { return m_server.isListening(); }
+    // Clients at once; one more reads `RPRT -9` (rejected) and is closed.
+    void setMaxClients(int count) { m_server.setMaxClients(count); }
+    int maxClients() const { return m_server.maxClients(); }
     QHostAddress address() const { return m_server.serverAddress(); }
     quint16 port() const { return m_server.serverPort(); }
 
     // Only these peers may connect; empty lets any in.
     void setAllowedClients(const QList<QHostAddress> &peers) { m_allowed = peers; }
-    // A target within this many degrees of the one already commanded is
-    // answered RPRT 0 and not sent: trackers re-send P every cycle, and a
-    // relay rotator re-commanded for every 0.1° chatters.
+    // A target within this many degrees of the one the rotator is still
+    // going to (RotatorSession::activeTarget) is answered RPRT 0 and not
+    // sent: trackers re-send P every cycle, and a relay rotator re-commanded
+    // for every 0.1° chatters. After a stop, a local move, park, home or a
+    // lost link there is no such target, so the same P goes out again.
     void setDeadband(double degrees) { m_deadband = degrees; }
     double deadband() const { return m_deadband; }
 
@@ -61,6 +77,13 @@ public:
     bool isRemoteHeld() const { return m_remoteHeld; }
     void holdRemote();
     void releaseRemote();
+
+    // Also log every command but position polls (the station service does;
+    // the window shows them in the Trackers tab instead). Whatever is logged
+    // about one client is escaped, cut at 200 characters and held to a rate
+    // (LogAllowance): a hostile client cannot flood the log or write
+    // terminal escapes into it.
+    void setLogCommands(bool on) { m_logCommands = on; }
 
     QList<ClientInfo> clients() const;
     int movesSuppressedByDeadband() const { return m_suppressed; }
@@ -76,23 +99,41 @@ private:
         QTcpSocket *socket = nullptr;
         QByteArray buffer;
         bool discarding = false; // inside an overlong line
+        bool finished = false;   // quit, or end of input: nothing more is read
+        // Keeps the connection open after Qt closes on the client's end of
+        // input, so the answers to its last lines still reach it.
+        std::shared_ptr<transport::SpareSocketHandle> spare;
+        LogAllowance logAllowance;
         ClientInfo info;
     };
 
-    void onNewConnection();
+    void onClientArrived(QTcpSocket *socket);
     void onReadyRead(QTcpSocket *socket);
+    // Lines out of bytes, answers out of lines; true in *quit on `q`.
+    QByteArray consume(Client &client, const QByteArray &bytes, bool *quit);
+    // The answer to an unterminated last line, at the end of input.
+    QByteArray answerLastLine(Client &client);
+    // The client sent its last byte (a one-shot `printf 'p\n' | nc -N`):
+    // answer the unterminated last line too, then close once all has left.
+    void finishInput(Client &client);
     void onDisconnected(QTcpSocket *socket);
     QByteArray answer(Client &client, const QByteArray &line);
     int setPosition(const RotctldRequest &r);
+    void logClient(Client &client, const QString &text);
+    void reportSuppressed(Client &client);
+    void reportAllSuppressed();
     int move(const RotctldRequest &r);
 
     session::RotatorSession *m_session;
-    QTcpServer m_server;
+    transport::BoundedTcpServer m_server;
     QHash<QTcpSocket *, Client> m_clients;
     QList<QHostAddress> m_allowed;
     double m_deadband = 0.5;
     bool m_remoteHeld = false;
     int m_suppressed = 0;
+    bool m_logCommands = false;
+    QElapsedTimer m_clock;
+    QTimer m_suppressedReport; // runs while some client has lines held back
 };
 
 } // namespace slew::bridge

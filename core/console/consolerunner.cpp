@@ -2,10 +2,9 @@
 #include "consolerunner.h"
 
 #include "session/rotatorsession.h"
-#include "transport/link.h"
+#include "session/stopbeforeexit.h"
 #include "tuning/homingrun.h"
 
-#include <QIODevice>
 #include <QJsonDocument>
 #include <QJsonObject>
 
@@ -18,8 +17,6 @@ using session::RotatorSession;
 
 // A --wait move has arrived when both axes are this close to the target.
 constexpr double kArrivedDegrees = 1.0;
-// How long a stop or a command may take to leave the link before we go.
-constexpr int kSendGiveUpMs = 2000;
 
 QString json(const QJsonObject &object)
 {
@@ -288,8 +285,9 @@ void ConsoleRunner::interrupt()
         return;
     }
     if (moving) {
-        m_session->stop();
-        finishWhenSent(ExitCode::Failed, tr("interrupted; the rotator was stopped"));
+        m_deadline.stop();
+        session::stopThenCall(*m_session, this,
+                              [this] { finish(ExitCode::Failed, tr("interrupted; the rotator was stopped")); });
         return;
     }
     finish(ExitCode::Ok);
@@ -314,21 +312,8 @@ void ConsoleRunner::printPosition(const char *event)
 void ConsoleRunner::finishWhenSent(ExitCode code, const QString &problemText)
 {
     // What the command wrote must leave before the program may end.
-    transport::Link *link = m_session->link();
-    QIODevice *device = link ? link->device() : nullptr;
-    if (!device || device->bytesToWrite() == 0) {
-        finish(code, problemText);
-        return;
-    }
     m_deadline.stop();
-    m_connections << connect(device, &QIODevice::bytesWritten, this, [this, device, code, problemText] {
-        if (device->bytesToWrite() == 0)
-            finish(code, problemText);
-    });
-    m_tick.setSingleShot(true);
-    m_connections << connect(&m_tick, &QTimer::timeout, this,
-                             [this] { finish(ExitCode::LinkFailure, tr("the command did not leave the link")); });
-    m_tick.start(kSendGiveUpMs);
+    session::callWhenSent(*m_session, this, [this, code, problemText] { finish(code, problemText); });
 }
 
 void ConsoleRunner::finish(ExitCode code, const QString &problemText)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Incremental Easycomm reader: bytes in, messages out.
 //
@@ -52,6 +53,9 @@ public:
     }
 
     void reset();
+
+    // Bytes of a line are held that no line end has completed yet.
+    bool hasUnfinishedLine() const { return m_length > 0 || m_overflow || m_hasPending; }
 
     // Parses one token on its own, with no line context (tests, the console).
     static Message parseToken(QByteArrayView token, Dialect d);

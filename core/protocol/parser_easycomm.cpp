@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The Easycomm reader: one token of Easycomm I, II, III or SatNOGS to a
 // message (Parser::classifyEasycomm). The line context (Easycomm I's mode
 // words) comes from the parser's state.
@@ -11,6 +12,8 @@ namespace slew::protocol {
 using namespace text;
 
 namespace {
+
+constexpr double kMaxVelocity = 99999.0; // mdeg/s
 
 Message indexedReply(Op op, int index, QByteArrayView value)
 {
@@ -126,6 +129,11 @@ Message Parser::classifyEasycomm(QByteArrayView t) const
         double v = 0;
         if (!parseDecimal(rest, &v) || v < 0)
             return Message::invalid(t, "malformed velocity (mdeg/s, not negative)");
+        // Hamlib sends at most 9900 and the seeds/000 controller caps its
+        // drive at 30000; five digits leave room, and keep a value that
+        // would wrap a controller's integer out.
+        if (v > kMaxVelocity)
+            return Message::invalid(t, "velocity out of range (0 to 99999 mdeg/s)");
         return Message::number(op, v);
     };
     auto indexed = [&](Op op, bool valueRequired) {
@@ -191,8 +199,8 @@ Message Parser::classifyEasycomm(QByteArrayView t) const
         if (b == 'T') {
             if (rest.isEmpty())
                 return Message::query(Op::Time);
-            if (!looksLikeTime(rest))
-                return Message::invalid(t, "time must be YY:MM:DD:HH:mm:SS");
+            if (!isValidTime(rest))
+                return Message::invalid(t, "time must be a real YY:MM:DD:HH:mm:SS");
             return Message::word(Op::Time, rest);
         }
         break;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "tokentext.h"
 
 #include <charconv>
@@ -97,17 +98,26 @@ bool splitIndexed(QByteArrayView rest, int *index, QByteArrayView *value)
     return true;
 }
 
-bool looksLikeTime(QByteArrayView s)
+bool isValidTime(QByteArrayView s)
 {
     // YY:MM:DD:HH:mm:SS
     if (s.size() != 17)
         return false;
+    int field[6] = {};
     for (qsizetype i = 0; i < s.size(); ++i) {
         const bool colon = (i % 3) == 2;
         if (colon ? s[i] != ':' : !isDigit(s[i]))
             return false;
+        if (!colon)
+            field[i / 3] = field[i / 3] * 10 + (s[i] - '0');
     }
-    return true;
+    const int year = 2000 + field[0], month = field[1], day = field[2];
+    if (month < 1 || month > 12 || day < 1)
+        return false;
+    static constexpr int kDays[12] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+    const bool leap = (year % 4 == 0 && year % 100 != 0) || year % 400 == 0;
+    const int days = kDays[month - 1] + (month == 2 && leap ? 1 : 0);
+    return day <= days && field[3] <= 23 && field[4] <= 59 && field[5] <= 59;
 }
 
 bool isPrintable(QByteArrayView s)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Small readers for the text inside a token (digits, numbers the way devices
 // write them, `n,value` pairs), shared by the Easycomm and GS-232 readers.
@@ -25,7 +26,9 @@ bool parseUnsigned(QByteArrayView s, int maxDigits, double *out);
 bool parseSigned64(QByteArrayView s, double *out);
 // `n,value` as in IP0,23.5 / CR1,0.8 / AN0,65535 / SatNOGS' bare `1,0.8`.
 bool splitIndexed(QByteArrayView rest, int *index, QByteArrayView *value);
-bool looksLikeTime(QByteArrayView s); // YY:MM:DD:HH:mm:SS
+// YY:MM:DD:HH:mm:SS naming a real moment: month 1..12, a day the month
+// has (20YY's leap years), hour 0..23, minute and second 0..59.
+bool isValidTime(QByteArrayView s);
 bool isPrintable(QByteArrayView s);   // printable ASCII, no spaces
 
 } // namespace slew::protocol::text

@@ -153,6 +153,7 @@ void RotatorSession::openLink()
 void RotatorSession::onLinkOpened()
 {
     m_parser.reset();
+    m_activeTarget.reset();
     m_deviceEchoes = false;
     m_reconnectAttempt = 0;
     m_failedPolls = 0;
@@ -193,6 +194,9 @@ void RotatorSession::dropLink(const QString &reason)
     m_stopHoldTimer.stop();
     m_onWire = false;
     m_jogSpeed = {0.0, 0.0};
+    // Whatever the rotator was doing, the session no longer knows: the next
+    // target, even one repeated, must go out on the new link.
+    m_activeTarget.reset();
     if (m_link) {
         m_link->disconnect(this);
         m_link->device()->disconnect(this);
@@ -299,6 +303,8 @@ void RotatorSession::apply(const Message &m)
         break;
     case Op::Alarm: {
         const QString text = QString::fromLatin1(m.text.view().toByteArray());
+        // The controller may have refused the target, or stopped: resend it.
+        m_activeTarget.reset();
         emit alarmReceived(text);
         emit errorOccurred(tr("controller alarm: %1").arg(text));
         if (m_onWire)

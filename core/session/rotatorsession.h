@@ -65,8 +65,15 @@ public:
     double azimuth() const { return m_az; }
     double elevation() const { return m_el; }
     bool positionStale() const { return m_stale; }
+    // The last target shown to the operator; stays after a stop, for display.
     double targetAzimuth() const { return m_targetAz; }
     double targetElevation() const { return m_targetEl; }
+    // Where the rotator was told to go and, as far as the session knows, is
+    // still going. Empty once anything else has been sent to it: a stop, a
+    // jog, park, home, a raw line, an alarm from the controller, or a link
+    // that closed or (re)opened. A tracker's deadband compares against this,
+    // so a target repeated after any of those goes out again.
+    std::optional<PointingTarget> activeTarget() const { return m_activeTarget; }
     StatusWord status() const { return m_status; }
     int errorFlags() const { return m_errorFlags; }
     const Telemetry &telemetry() const { return m_telemetry; }
@@ -181,6 +188,7 @@ private:
     bool m_azFresh = false, m_elFresh = false;
     bool m_stale = true;
     double m_targetAz = kUnknown, m_targetEl = kUnknown;
+    std::optional<PointingTarget> m_activeTarget;
     double m_commandedAz = kUnknown, m_commandedEl = kUnknown;
     std::array<double, 2> m_jogSpeed{0.0, 0.0}; // °/s of a running velocity move, per axis
     QTimer m_stopHoldTimer;

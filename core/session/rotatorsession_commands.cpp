@@ -61,6 +61,7 @@ bool RotatorSession::gotoPosition(double az, double el)
     rememberSent(Message::number(Op::Elevation, std::round(el * 100) / 100));
     m_jogSpeed = {0.0, 0.0};
     writeMove(line);
+    m_activeTarget = PointingTarget{targetAz, el};
     m_targetAz = targetAz;
     m_targetEl = el;
     emit targetChanged(targetAz, el);
@@ -102,6 +103,9 @@ bool RotatorSession::gotoAxis(Axis axis, double degrees)
     rememberSent(Message::number(op, std::round(target * 100) / 100));
     m_jogSpeed[az ? 0 : 1] = 0.0;
     writeMove(protocol::encodeLine({m}, d));
+    // The other axis keeps going where it was going, if that is known.
+    if (m_activeTarget)
+        (az ? m_activeTarget->azimuth : m_activeTarget->elevation) = target;
     (az ? m_targetAz : m_targetEl) = target;
     emit targetChanged(m_targetAz, m_targetEl);
     return true;
@@ -142,6 +146,7 @@ bool RotatorSession::moveAxis(Axis axis, double degreesPerSecond)
     }
     m_jogSpeed[az ? 0 : 1] = degreesPerSecond;
     writeMove(line);
+    m_activeTarget.reset(); // the axis runs at a speed now, towards no target
     return true;
 }
 
@@ -160,6 +165,7 @@ bool RotatorSession::stop(Axes axes)
     const QByteArray line = protocol::encodeStop(az, el, m_profile.dialect);
     if (line.isEmpty())
         return refuse(tr("%1 has no stop command").arg(protocol::dialectName(m_profile.dialect)));
+    m_activeTarget.reset();
     write(line);
     // SA / SE only let go of the drive. Where the dialect has speed commands,
     // a zero speed follows to brake a drive that would coast (spur gear,
@@ -190,10 +196,14 @@ bool RotatorSession::park()
 {
     if (!requireLink())
         return false;
-    if (!protocol::dialectSupports(m_profile.dialect, Op::Park))
-        return gotoPosition(m_profile.parkAz, m_profile.parkEl);
+    if (!protocol::dialectSupports(m_profile.dialect, Op::Park)) {
+        const bool sent = gotoPosition(m_profile.parkAz, m_profile.parkEl);
+        m_activeTarget.reset(); // parking is the operator's move, not a tracker target
+        return sent;
+    }
     m_jogSpeed = {0.0, 0.0};
     writeMove(protocol::encodeLine({Message::query(Op::Park)}, m_profile.dialect));
+    m_activeTarget.reset();
     m_targetAz = m_profile.parkAz;
     m_targetEl = m_profile.parkEl;
     emit targetChanged(m_targetAz, m_targetEl);
@@ -208,6 +218,7 @@ bool RotatorSession::home()
         return refuse(tr("%1 has no RESET (homing) command").arg(protocol::dialectName(m_profile.dialect)));
     m_jogSpeed = {0.0, 0.0};
     writeMove(protocol::encodeLine({Message::query(Op::Reset)}, m_profile.dialect));
+    m_activeTarget.reset();
     // Homing ends at the lower limits: that is where the rotator is going
     // now, not the last go-to.
     m_targetAz = m_profile.limits.azMin;
@@ -298,6 +309,7 @@ bool RotatorSession::sendRaw(const QString &line)
     if (!error.isEmpty())
         return refuse(error);
     writeMove(bytes + '\n');
+    m_activeTarget.reset(); // a raw line may send the rotator anywhere, or stop it
     return true;
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // What the session knows about the rotator, as plain values that signals
 // carry and widgets show.
@@ -27,6 +28,12 @@ enum ErrorBit : std::uint16_t {
     ErrorMotor = 8,
     ErrorOverTemperature = 12, // SatNOGS reports 12 (motor | homing bits)
     ErrorWatchdog = 16,
+};
+
+// A position the rotator was sent to (azimuth as commanded, mechanical).
+struct PointingTarget {
+    double azimuth = 0.0;
+    double elevation = 0.0;
 };
 
 struct StatusWord {

@@ -1,7 +1,9 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "simulatorconnection.h"
 
 #include "simulator.h"
 
+#include <QAbstractSocket>
 #include <QIODevice>
 
 #include <algorithm>
@@ -121,13 +123,17 @@ void SimulatorConnection::send(QByteArray bytes, double at)
         }
         bytes = std::move(damaged);
     }
+    if (m_finalOutput) {
+        *m_finalOutput += bytes;
+        return;
+    }
     if (bytes.isEmpty() || !m_device)
         return;
 
     const double perByte = byteSeconds();
     if (faults.latency <= 0.0 && perByte <= 0.0 && m_outbound.empty()) {
         if (m_device->bytesToWrite() < kMaxOutbound)
-            m_device->write(bytes);
+            writeToDevice(bytes);
         return;
     }
     if (m_outboundBytes + bytes.size() > kMaxOutbound)
@@ -138,6 +144,47 @@ void SimulatorConnection::send(QByteArray bytes, double at)
     m_outboundBytes += bytes.size();
     m_outbound.push_back({m_outboundFreeAt, std::move(bytes)});
     schedule();
+}
+
+void SimulatorConnection::writeToDevice(const QByteArray &bytes)
+{
+    m_device->write(bytes);
+    // On a socket, on its way now: Qt drops what it still holds when it
+    // reads the host's end of input.
+    if (auto *socket = qobject_cast<QAbstractSocket *>(m_device.data()))
+        socket->flush();
+}
+
+QByteArray SimulatorConnection::takeFinalOutput(QByteArrayView lastBytes)
+{
+    if (m_dropped)
+        return {};
+    QByteArray now;
+    m_finalOutput = &now;
+    const double at = m_simulator.clock().now();
+    while (!m_inbound.empty()) {
+        const QByteArray bytes = std::move(m_inbound.front().bytes);
+        m_inbound.pop_front();
+        process(bytes, at);
+    }
+    m_inboundBytes = 0;
+    if (!lastBytes.isEmpty())
+        process(lastBytes, at);
+    if (m_firmware.hasUnfinishedLine()) {
+        m_simulator.syncToNow();
+        send(m_firmware.endLine(), at);
+    }
+    m_finalOutput = nullptr;
+    // Replies already waiting leave before the ones just made.
+    QByteArray out;
+    for (const Timed &t : m_outbound)
+        out += t.bytes;
+    m_outbound.clear();
+    m_outboundBytes = 0;
+    out += now;
+    m_dropped = true;
+    m_timer.stop();
+    return out;
 }
 
 void SimulatorConnection::service()
@@ -173,7 +220,7 @@ void SimulatorConnection::service()
         m_outbound.pop_front();
     }
     if (!ready.isEmpty() && m_device && m_device->bytesToWrite() < kMaxOutbound)
-        m_device->write(ready);
+        writeToDevice(ready);
     schedule();
 }
 

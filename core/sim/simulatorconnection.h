@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // One host's connection to the simulator, over any QIODevice (a TCP socket,
 // the in-process pipe, the pseudo-terminal). It feeds the firmware, and puts
@@ -45,6 +46,13 @@ public:
     // readyRead call this themselves).
     void receive(QByteArrayView bytes);
 
+    // The host sends nothing more (it shut down its side, and the socket is
+    // about to close): `lastBytes` and any input still on the paced line are
+    // handled now, an unterminated last line is ended, and every reply not
+    // yet written is returned at once, latency and pacing notwithstanding,
+    // rather than lost. Nothing is sent on the device after this.
+    QByteArray takeFinalOutput(QByteArrayView lastBytes = {});
+
     // Bytes waiting to leave (pacing, latency); tests and benchmarks look.
     qsizetype pendingOutput() const { return m_outboundBytes; }
 
@@ -67,6 +75,7 @@ private:
     void schedule();
     void onTick();
     double byteSeconds() const;
+    void writeToDevice(const QByteArray &bytes);
 
     Simulator &m_simulator;
     QPointer<QIODevice> m_device;
@@ -84,6 +93,7 @@ private:
     double m_idleFlushAt = -1.0;
     double m_openedAt = 0.0;
     bool m_dropped = false;
+    QByteArray *m_finalOutput = nullptr; // set while takeFinalOutput() collects
     QTimer m_timer;
 };
 

@@ -1,9 +1,11 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "simulatorfirmware.h"
 
 #include "protocol/encoder.h"
 
 #include <QDateTime>
 
+#include <charconv>
 #include <cmath>
 
 namespace slew::sim {
@@ -127,6 +129,14 @@ void SimulatorFirmware::refuse(const Message &m, QByteArray &out)
     QByteArray token = protocol::encodeToken(m, Dialect::Easycomm3);
     if (token.isEmpty())
         token = protocol::mnemonic(m.op).toByteArray();
+    // The alarm names the value refused: `AZ-0.004` is not to read as
+    // `AZ0.00`, which would have been accepted.
+    const bool angle = m.op == Op::Azimuth || m.op == Op::Elevation;
+    if (angle && m.hasValue && std::isfinite(m.value) && std::round(m.value * 100) / 100 != m.value) {
+        char digits[32];
+        const auto end = std::to_chars(digits, digits + sizeof digits, m.value).ptr;
+        token = protocol::mnemonic(m.op).toByteArray() + QByteArray(digits, end - digits);
+    }
     alarm("limit", token, out);
 }
 

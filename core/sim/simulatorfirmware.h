@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The controller board's command interpreter: Easycomm bytes in, answers
 // out, acting on a SimulatedRotator. One per connection (each host has its
@@ -38,6 +39,8 @@ public:
     // end on a space alone, so the caller gives it a moment and then calls
     // endLine() rather than wait for a line end that may never come.
     bool awaitingLineEnd() const { return m_awaitingLineEnd; }
+    // Bytes of a line wait for its end (the host may never send it).
+    bool hasUnfinishedLine() const { return m_parser.hasUnfinishedLine(); }
     QByteArray endLine();
 
     // seeds/000's unsolicited reports: every field whose text differs from

@@ -60,7 +60,7 @@ void CommandLineTest::configFileRefusesWhatItCannotMean()
     QVERIFY2(error.startsWith(message) || error.contains(message), qPrintable(error));
     // Every refusal says what may be set instead.
     if (error.contains(u"unknown setting"))
-        QVERIFY2(error.contains(u"connect, dialect, profile, rotctld-listen, rotctld-allow"), qPrintable(error));
+        QVERIFY2(error.contains(u"connect, dialect, profile, rotctld-listen, rotctld-allow, rotctld-max-clients"), qPrintable(error));
 }
 
 void CommandLineTest::commandLineWinsOverTheFile()

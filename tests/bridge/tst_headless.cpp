@@ -5,6 +5,7 @@
 // rest near where it was, on a worm gear and on a free-running drive.
 
 #include "../sim/slewsimprocess.h"
+#include "../common/halfclose.h"
 #include "../common/hamlibprocess.h"
 
 #include <QElapsedTimer>
@@ -14,7 +15,14 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <QRandomGenerator>
+#include <QRegularExpression>
+#include <QTimer>
+
 #include <csignal>
+#include <functional>
+#include <list>
+#include <sys/resource.h>
 
 class HeadlessTest : public QObject {
     Q_OBJECT
@@ -23,10 +31,14 @@ private slots:
     void sigtermLeavesTheAntennaAtRest_data();
     void sigtermLeavesTheAntennaAtRest();
     void reconnectsAfterTheRotatorReturns();
+    void repeatedTargetReachesTheRotatorAfterStopAndReconnect();
     void refusesABadListenAddress();
+    void runningOutOfDescriptorsDoesNotSpin();
+    void hostileClientCannotFloodTheLog();
 
 private:
-    bool startSlew(QProcess &slew, const QStringList &args, quint16 *rotctldPort);
+    bool startSlew(QProcess &slew, const QStringList &args, quint16 *rotctldPort,
+                   const std::function<void()> &childSetup = {});
     static QByteArray ask(QTcpSocket &s, const QByteArray &line);
     static QPointF positionOf(const QByteArray &reply); // "AZ12.00 EL3.00"
 };
@@ -39,8 +51,11 @@ QPointF HeadlessTest::positionOf(const QByteArray &reply)
     return QPointF(words[0].mid(2).toDouble(), words[1].mid(2).toDouble());
 }
 
-bool HeadlessTest::startSlew(QProcess &slew, const QStringList &args, quint16 *rotctldPort)
+bool HeadlessTest::startSlew(QProcess &slew, const QStringList &args, quint16 *rotctldPort,
+                             const std::function<void()> &childSetup)
 {
+    if (childSetup)
+        slew.setChildProcessModifier(childSetup);
     slew.setProgram(qEnvironmentVariable("SLEW_BIN"));
     slew.setArguments(QStringList{"--headless"} + args);
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
@@ -213,6 +228,55 @@ void HeadlessTest::reconnectsAfterTheRotatorReturns()
     QVERIFY(slew.readAllStandardOutput().contains("retrying"));
 }
 
+void HeadlessTest::repeatedTargetReachesTheRotatorAfterStopAndReconnect()
+{
+    QTemporaryDir dir;
+    auto received = [&](const QString &name) {
+        QFile f(dir.filePath(name));
+        return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+    };
+    SlewSimProcess sim;
+    QVERIFY2(sim.start({"--listen", "127.0.0.1:0", "--log-received", dir.filePath("first.log")}), qPrintable(sim.error()));
+    const quint16 simPort = sim.port();
+    QProcess slew;
+    quint16 port = 0;
+    QVERIFY(startSlew(slew, {"--connect", QStringLiteral("tcp://127.0.0.1:%1").arg(simPort), "--rotctld-listen",
+                             "127.0.0.1:0"},
+                      &port));
+    QTcpSocket tracker;
+    tracker.connectToHost(QHostAddress::LocalHost, port);
+    QTRY_COMPARE(tracker.state(), QAbstractSocket::ConnectedState);
+    QVERIFY(QTest::qWaitFor([&] { return ask(tracker, "p").count('\n') == 2; }, 10000));
+
+    // P, S, the same P: both reach the rotator.
+    QCOMPARE(ask(tracker, "P 100 40"), QByteArray("RPRT 0\n"));
+    QTRY_COMPARE(received("first.log").count("AZ100.00 EL40.00"), 1);
+    QCOMPARE(ask(tracker, "S"), QByteArray("RPRT 0\n"));
+    QTRY_VERIFY(received("first.log").contains("SA SE"));
+    QCOMPARE(ask(tracker, "P 100 40"), QByteArray("RPRT 0\n"));
+    QTRY_COMPARE(received("first.log").count("AZ100.00 EL40.00"), 2);
+
+    // The rotator goes away and comes back on the same port.
+    sim.stop();
+    QVERIFY(QTest::qWaitFor([&] { return ask(tracker, "p") == "RPRT -6\n"; }, 10000));
+    SlewSimProcess again;
+    QVERIFY2(again.start({"--listen", QStringLiteral("127.0.0.1:%1").arg(simPort), "--log-received",
+                          dir.filePath("second.log")}),
+             qPrintable(again.error()));
+    QVERIFY(QTest::qWaitFor([&] { return ask(tracker, "p").count('\n') == 2; }, 30000));
+    // Slew does not move the antenna by itself after the blip...
+    QVERIFY(!received("second.log").contains("AZ100.00 EL40.00"));
+    // ...but the tracker's next P, identical, goes out, and one inside the
+    // deadband of the old target too.
+    QCOMPARE(ask(tracker, "P 100 40"), QByteArray("RPRT 0\n"));
+    QTRY_COMPARE(received("second.log").count("AZ100.00 EL40.00"), 1);
+    QCOMPARE(ask(tracker, "S"), QByteArray("RPRT 0\n"));
+    QCOMPARE(ask(tracker, "P 100.3 40.2"), QByteArray("RPRT 0\n"));
+    QTRY_COMPARE(received("second.log").count("AZ100.30 EL40.20"), 1);
+    slew.terminate();
+    QTRY_COMPARE(slew.state(), QProcess::NotRunning);
+}
+
 void HeadlessTest::refusesABadListenAddress()
 {
     QProcess slew;
@@ -223,6 +287,133 @@ void HeadlessTest::refusesABadListenAddress()
     QVERIFY(finished.wait(10000));
     QCOMPARE(slew.exitCode(), 2);
     QVERIFY(slew.readAllStandardError().contains("expected ADDRESS:PORT"));
+}
+
+void HeadlessTest::runningOutOfDescriptorsDoesNotSpin()
+{
+    // 64 descriptors and 200 trackers: the rotctld server runs out long
+    // before its client limit (raised here so that it does not step in first).
+    QProcess slew;
+    quint16 port = 0;
+    QVERIFY(startSlew(slew, {"--connect", "sim:", "--rotctld-listen", "127.0.0.1:0", "--rotctld-max-clients", "500"},
+                      &port, [] {
+                          const rlimit few{64, 64};
+                          ::setrlimit(RLIMIT_NOFILE, &few);
+                      }));
+    QByteArray log;
+    auto logged = [&](const char *text) {
+        log += slew.readAllStandardOutput();
+        return log.contains(text);
+    };
+    std::list<QTcpSocket> clients;
+    for (int i = 0; i < 200; ++i) {
+        clients.emplace_back();
+        clients.back().connectToHost(QHostAddress::LocalHost, port);
+    }
+    for (QTcpSocket &c : clients)
+        c.write("S\n");
+    QVERIFY2(QTest::qWaitFor([&] { return logged("new connections wait"); }, 10000), log.right(2000).constData());
+
+    // Measured over a fixed window, because CPU use is a rate: a server
+    // that retries accept() in a loop burns the whole window.
+    const qint64 before = processCpuTicks(slew.processId());
+    QElapsedTimer window;
+    window.start();
+    QTimer end;
+    end.setSingleShot(true);
+    QSignalSpy ended(&end, &QTimer::timeout);
+    end.start(2000);
+    QVERIFY(ended.wait(10000));
+    const double seconds = (processCpuTicks(slew.processId()) - before) / clockTicksPerSecond();
+    const double share = seconds / (window.elapsed() / 1000.0);
+    qInfo("slew --headless out of descriptors: %.1f %% of a core over %.1f s", 100 * share, window.elapsed() / 1000.0);
+    QVERIFY2(share < 0.2, qPrintable(QString::number(share)));
+
+    // Every tracker is answered: those taken at once, and the waiting ones
+    // as the first leave.
+    int answered = 0;
+    QByteArray wrong;
+    QVERIFY(QTest::qWaitFor(
+        [&] {
+            for (auto it = clients.begin(); it != clients.end();) {
+                if (it->canReadLine()) {
+                    if (const QByteArray a = it->readAll(); a != "RPRT 0\n")
+                        wrong += a;
+                    ++answered;
+                    it = clients.erase(it);
+                } else {
+                    ++it;
+                }
+            }
+            return clients.empty();
+        },
+        30000));
+    QCOMPARE(answered, 200);
+    QVERIFY2(wrong.isEmpty(), wrong.constData());
+    QVERIFY(logged("accepting connections again"));
+    slew.terminate();
+    QTRY_COMPARE(slew.state(), QProcess::NotRunning);
+}
+
+void HeadlessTest::hostileClientCannotFloodTheLog()
+{
+    QProcess slew;
+    quint16 port = 0;
+    QVERIFY(startSlew(slew, {"--connect", "sim:", "--rotctld-listen", "127.0.0.1:0"}, &port));
+    QByteArray out;
+    auto logged = [&](const QByteArray &text) {
+        out += slew.readAllStandardOutput();
+        return out.contains(text);
+    };
+    logged("");
+    const qsizetype before = out.size();
+
+    // 512 KiB of random bytes, laced with terminal escape sequences and
+    // lines long and short, from one client, which then leaves.
+    QRandomGenerator rng(11);
+    QByteArray junk;
+    const QByteArray escapes[] = {"\x1b[2J", "\x1b]0;owned\x07", "\x9b" "31m", "\x1b[31m", "\r", "\x08\x08\x08"};
+    while (junk.size() < 512 * 1024) {
+        if (rng.bounded(4) == 0)
+            junk += escapes[rng.bounded(int(std::size(escapes)))];
+        else if (rng.bounded(8) == 0)
+            junk += '\n';
+        else
+            junk += char(rng.bounded(256));
+    }
+    QTcpSocket hostile;
+    hostile.connectToHost(QHostAddress::LocalHost, port);
+    QTRY_COMPARE(hostile.state(), QAbstractSocket::ConnectedState);
+    const QByteArray peer = "127.0.0.1:" + QByteArray::number(hostile.localPort());
+    hostile.write(junk);
+    QVERIFY(QTest::qWaitFor([&] { return hostile.bytesToWrite() == 0; }, 20000));
+    // An unknown line is logged once, as its refusal.
+    QTcpSocket good;
+    good.connectToHost(QHostAddress::LocalHost, port);
+    QTRY_COMPARE(good.state(), QAbstractSocket::ConnectedState);
+    QCOMPARE(ask(good, "Zebra"), QByteArray("RPRT -1\n"));
+    QVERIFY(QTest::qWaitFor([&] { return logged("unknown command 'Z'"); }, 10000));
+    hostile.disconnectFromHost();
+    QVERIFY(QTest::qWaitFor([&] { return logged("rotctld client " + peer + " left"); }, 20000));
+
+    const QByteArray flood = out.mid(before);
+    qInfo("512 KiB of hostile input: %lld bytes of log in %lld lines", qint64(flood.size()), qint64(flood.count('\n')));
+    QVERIFY2(flood.contains("more lines from " + peer + " suppressed"), flood.right(2000).constData());
+    // Bounded: a burst of lines, each at most 200 characters after its time stamp.
+    QVERIFY2(flood.size() < 12 * 1024, qPrintable(QString::number(flood.size())));
+    for (const QByteArray &line : flood.split('\n')) {
+        QVERIFY2(QString::fromUtf8(line).size() <= 25 + 200 + 30, line.constData());
+        for (const char ch : line) {
+            const auto u = static_cast<unsigned char>(ch);
+            QVERIFY2(u >= 0x20 && u != 0x7f, line.toPercentEncoding().constData());
+        }
+        // No C1 controls either (U+0080..U+009F in UTF-8: C2 80..C2 9F).
+        QVERIFY2(!QString::fromUtf8(line).contains(QRegularExpression("[\\x{80}-\\x{9f}]")), line.constData());
+    }
+    QCOMPARE(flood.count("Zebra"), 0); // the refusal names the command letter only, once
+    QCOMPARE(flood.count("unknown command 'Z'"), 1);
+    slew.terminate();
+    QTRY_COMPARE(slew.state(), QProcess::NotRunning);
 }
 
 QTEST_GUILESS_MAIN(HeadlessTest)

@@ -1,6 +1,8 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading rotctld command lines and writing answers byte for byte as Hamlib
 // 4.5's rotctld does (the expected strings were captured from `rotctld -m 1`).
 
+#include "bridge/logtext.h"
 #include "bridge/rotctldrequest.h"
 
 #include <QTest>
@@ -13,6 +15,31 @@ Q_DECLARE_METATYPE(RotctldRequest::Kind)
 class RotctldRequestTest : public QObject {
     Q_OBJECT
 private slots:
+    void logTextIsEscapedAndCut()
+    {
+        using slew::bridge::loggableText;
+        QCOMPARE(loggableText("P 10 20"), QString("P 10 20"));
+        QCOMPARE(loggableText(QString::fromLatin1("a\x1b[2Jb\x07\x7f\x9b")), QString("a\\x1b[2Jb\\x07\\x7f\\x9b"));
+        QCOMPARE(loggableText(QString(250, 'x')), QString(200, 'x') + QString::fromUtf8("… (50 more bytes)"));
+        // An escape is never cut in half.
+        const QString cut = loggableText(QString(198, 'x') + QChar(0x1b) + "y", 200);
+        QCOMPARE(cut, QString(198, 'x') + QString::fromUtf8("… (2 more bytes)"));
+    }
+
+    void logAllowanceIsABurstThenARate()
+    {
+        slew::bridge::LogAllowance a;
+        int allowed = 0;
+        for (int i = 0; i < 100; ++i)
+            allowed += a.take(0);
+        QCOMPARE(allowed, 20);
+        QCOMPARE(a.takeSuppressed(), 80);
+        QCOMPARE(a.takeSuppressed(), 0);
+        QVERIFY(a.take(500)); // two a second
+        QVERIFY(!a.take(500));
+        QCOMPARE(a.suppressed(), 1);
+    }
+
     void parse_data();
     void parse();
     void answers();

@@ -6,9 +6,12 @@
 // and a tracker's S bringing the antenna to rest on either drive train.
 
 #include "bridge/rotctldserver.h"
+#include "../common/halfclose.h"
 #include "../common/hamlibprocess.h"
 #include "linkschemes.h"
 #include "session/rotatorsession.h"
+#include "sim/simulator.h"
+#include "sim/simulatorscheme.h"
 
 #include <QElapsedTimer>
 #include <QPointF>
@@ -31,13 +34,22 @@ private slots:
     void extendedAnswers();
     void outOfRangeIsRefusedAndNothingSent();
     void deadbandSuppressesRepeatedTargets();
+    void repeatedTargetGoesOutAfterAStop();
+    void repeatedTargetGoesOutAfterALocalMove();
+    void repeatedTargetGoesOutAfterParkAndHome();
+    void repeatedTargetGoesOutAfterTheLinkReturns();
     void overlapPicksTheShortestLegalPath();
     void operatorHoldRefusesRemoteMovesButNotStop();
     void badClientsDoNotDisturbOthers();
     void allowedClientList();
+    void halfClosedClientsAreAnswered();
+    void clientsBeyondTheLimitAreRefused();
+    void resetTakesOnlyResetAll();
 
 private:
     QByteArray ask(QTcpSocket &s, const QByteArray &line);
+    // How many times the session sent exactly this line to the rotator.
+    static int timesSent(const QSignalSpy &sent, const QByteArray &line);
     bool connectSession(const model::RotatorProfile &profile);
     session::RotatorSession *session = nullptr;
     bridge::RotctldServer *server = nullptr;
@@ -250,6 +262,136 @@ void RotctldServerTest::deadbandSuppressesRepeatedTargets()
     QCOMPARE(gotoCount(), 3);
 }
 
+int RotctldServerTest::timesSent(const QSignalSpy &sent, const QByteArray &line)
+{
+    int n = 0;
+    for (const auto &args : sent)
+        n += args.at(0).toByteArray() == line;
+    return n;
+}
+
+void RotctldServerTest::repeatedTargetGoesOutAfterAStop()
+{
+    server->setDeadband(0.5);
+    QTcpSocket s;
+    s.connectToHost(QHostAddress::LocalHost, server->port());
+    QTRY_COMPARE(s.state(), QAbstractSocket::ConnectedState);
+    QSignalSpy sent(session, &session::RotatorSession::bytesSent);
+    const QByteArray go = "AZ100.00 EL40.00\n";
+    QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, go), 1);
+    QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n")); // still on its way: not re-sent
+    QCOMPARE(timesSent(sent, go), 1);
+    // A remote stop: the same target must reach the rotator again.
+    QCOMPARE(ask(s, "S"), QByteArray("RPRT 0\n"));
+    QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, go), 2);
+    // The operator's Stop (a local stop) likewise.
+    QVERIFY(session->stop());
+    QCOMPARE(ask(s, "P 100.2 40.1"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, "AZ100.20 EL40.10\n"), 1);
+    // A stop of one axis leaves no target either.
+    QVERIFY(session->stop(session::Axes::Elevation));
+    QCOMPARE(ask(s, "P 100.2 40.1"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, "AZ100.20 EL40.10\n"), 2);
+    QCOMPARE(server->movesSuppressedByDeadband(), 1);
+    session->stop();
+}
+
+void RotctldServerTest::repeatedTargetGoesOutAfterALocalMove()
+{
+    server->setDeadband(0.5);
+    QTcpSocket s;
+    s.connectToHost(QHostAddress::LocalHost, server->port());
+    QTRY_COMPARE(s.state(), QAbstractSocket::ConnectedState);
+    QSignalSpy sent(session, &session::RotatorSession::bytesSent);
+    const QByteArray go = "AZ100.00 EL40.00\n";
+    QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n"));
+    // A jog.
+    QVERIFY(session->moveAxis(session::Axis::Azimuth, 2.0));
+    QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, go), 2);
+    // The operator's go-to (or a preset) elsewhere.
+    QVERIFY(session->gotoPosition(50, 20));
+    QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, go), 3);
+    // A raw line from the traffic console.
+    QVERIFY(session->sendRaw("SA"));
+    QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, go), 4);
+    // One axis sent elsewhere: the target changed, so the old one goes out.
+    QVERIFY(session->gotoAxis(session::Axis::Elevation, 10));
+    QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, go), 5);
+    // A remote move (M) is a jog too.
+    QCOMPARE(ask(s, "M 16 50"), QByteArray("RPRT 0\n"));
+    QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, go), 6);
+    QCOMPARE(server->movesSuppressedByDeadband(), 0);
+    session->stop();
+}
+
+void RotctldServerTest::repeatedTargetGoesOutAfterParkAndHome()
+{
+    server->setDeadband(0.5);
+    QTcpSocket s;
+    s.connectToHost(QHostAddress::LocalHost, server->port());
+    QTRY_COMPARE(s.state(), QAbstractSocket::ConnectedState);
+    QSignalSpy sent(session, &session::RotatorSession::bytesSent);
+    const QByteArray go = "AZ100.00 EL40.00\n";
+    QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n"));
+    QCOMPARE(ask(s, "K"), QByteArray("RPRT 0\n")); // remote park
+    QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, go), 2);
+    QCOMPARE(ask(s, "R 1"), QByteArray("RPRT 0\n")); // remote reset (home)
+    QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, go), 3);
+    QVERIFY(session->park()); // the operator's Park
+    QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, go), 4);
+    QVERIFY(session->home()); // the operator's Home
+    QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, go), 5);
+    QCOMPARE(server->movesSuppressedByDeadband(), 0);
+    session->stop();
+}
+
+void RotctldServerTest::repeatedTargetGoesOutAfterTheLinkReturns()
+{
+    server->setDeadband(0.5);
+    auto options = session->options();
+    options.autoReconnect = true;
+    session->setOptions(options);
+    QTcpSocket s;
+    s.connectToHost(QHostAddress::LocalHost, server->port());
+    QTRY_COMPARE(s.state(), QAbstractSocket::ConnectedState);
+    QSignalSpy sent(session, &session::RotatorSession::bytesSent);
+    const QByteArray go = "AZ180.00 EL60.00\n";
+    QCOMPARE(ask(s, "P 180 60"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, go), 1);
+
+    // The line drops; the session reconnects by itself.
+    sim::Simulator *simulator = sim::simulatorBehind(session->link());
+    QVERIFY(simulator);
+    simulator->dropConnections();
+    QVERIFY(QTest::qWaitFor([&] { return session->state() != session::RotatorSession::State::Connected; }, 5000));
+    QVERIFY(QTest::qWaitFor([&] { return session->isConnected() && session->hasPosition(); }, 10000));
+    // A reconnect does not re-send the old target on its own...
+    QCOMPARE(timesSent(sent, go), 1);
+    // ...but the tracker's next P, the same one, goes out, and so does one
+    // inside the deadband.
+    QCOMPARE(ask(s, "P 180 60"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, go), 2);
+    simulator = sim::simulatorBehind(session->link());
+    simulator->dropConnections();
+    QVERIFY(QTest::qWaitFor([&] { return session->state() != session::RotatorSession::State::Connected; }, 5000));
+    QVERIFY(QTest::qWaitFor([&] { return session->isConnected() && session->hasPosition(); }, 10000));
+    QCOMPARE(ask(s, "P 180.3 60.2"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, "AZ180.30 EL60.20\n"), 1);
+    QCOMPARE(server->movesSuppressedByDeadband(), 0);
+    session->stop();
+}
+
 void RotctldServerTest::overlapPicksTheShortestLegalPath()
 {
     model::RotatorProfile p;
@@ -338,6 +480,73 @@ void RotctldServerTest::allowedClientList()
     t.connectToHost(QHostAddress::LocalHost, server->port());
     QTRY_COMPARE(t.state(), QAbstractSocket::ConnectedState);
     QCOMPARE(ask(t, "S"), QByteArray("RPRT 0\n"));
+}
+
+void RotctldServerTest::halfClosedClientsAreAnswered()
+{
+    // `printf 'p\n' | nc -N`: the client stops sending before it reads.
+    int answered = 0;
+    for (int i = 0; i < 20; ++i) {
+        const QByteArray a = askThenHalfClose(server->port(), "p\n");
+        answered += a.count('\n') == 2 && !a.startsWith("RPRT");
+    }
+    QCOMPARE(answered, 20);
+    // Several lines, and an unterminated last one, as Hamlib's rotctld answers it.
+    for (int i = 0; i < 20; ++i)
+        QCOMPARE(askThenHalfClose(server->port(), "S\n_\nS"), QByteArray("RPRT 0\nSlew rotator bridge (SlewSim-1.0)\nRPRT 0\n"));
+    // A move in the last line is carried out.
+    QSignalSpy sent(session, &session::RotatorSession::bytesSent);
+    QCOMPARE(askThenHalfClose(server->port(), "P 33 11"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, "AZ33.00 EL11.00\n"), 1);
+    // 100 kB of queries (several reads) and then the end: every one answered.
+    QByteArray many;
+    for (int i = 0; i < 50000; ++i)
+        many += "p\n";
+    QCOMPARE(askThenHalfClose(server->port(), many, 20000).count('\n'), 100000);
+    QTRY_COMPARE(server->clients().size(), 0);
+    session->stop();
+}
+
+void RotctldServerTest::clientsBeyondTheLimitAreRefused()
+{
+    QCOMPARE(server->maxClients(), 32); // the documented default
+    server->setMaxClients(2);
+    QTcpSocket a, b, c;
+    a.connectToHost(QHostAddress::LocalHost, server->port());
+    b.connectToHost(QHostAddress::LocalHost, server->port());
+    QTRY_COMPARE(server->clients().size(), 2);
+    // The third reads why, and is closed.
+    QSignalSpy refused(&c, &QTcpSocket::disconnected);
+    c.connectToHost(QHostAddress::LocalHost, server->port());
+    QVERIFY(refused.wait(5000));
+    QCOMPARE(c.readAll(), QByteArray("RPRT -9\n"));
+    QCOMPARE(server->clients().size(), 2);
+    QCOMPARE(ask(a, "S"), QByteArray("RPRT 0\n"));
+    QCOMPARE(ask(b, "S"), QByteArray("RPRT 0\n"));
+    // One leaves: the next is served.
+    a.disconnectFromHost();
+    QTRY_COMPARE(server->clients().size(), 1);
+    QTcpSocket d;
+    d.connectToHost(QHostAddress::LocalHost, server->port());
+    QTRY_COMPARE(d.state(), QAbstractSocket::ConnectedState);
+    QCOMPARE(ask(d, "S"), QByteArray("RPRT 0\n"));
+    QCOMPARE(server->clients().size(), 2);
+}
+
+void RotctldServerTest::resetTakesOnlyResetAll()
+{
+    QTcpSocket s;
+    s.connectToHost(QHostAddress::LocalHost, server->port());
+    QTRY_COMPARE(s.state(), QAbstractSocket::ConnectedState);
+    QSignalSpy sent(session, &session::RotatorSession::bytesSent);
+    // Hamlib's rotctl: "Reset accepts an integer value of 1 for Reset All".
+    for (const QByteArray &type : {QByteArray("0"), QByteArray("2"), QByteArray("-1"), QByteArray("-2147483648")})
+        QCOMPARE(ask(s, "R " + type), QByteArray("RPRT -1\n"));
+    QCOMPARE(ask(s, "+\\reset 7"), QByteArray("reset: 7\nRPRT -1\n"));
+    QCOMPARE(timesSent(sent, "RESET\n"), 0);
+    QCOMPARE(ask(s, "R 1"), QByteArray("RPRT 0\n"));
+    QCOMPARE(timesSent(sent, "RESET\n"), 1);
+    session->stop();
 }
 
 QTEST_MAIN(RotctldServerTest)

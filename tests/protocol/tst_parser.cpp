@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The incremental parser against byte vectors: every row of seeds/001 and
 // seeds/000, the strings Hamlib and SatNOGS put on the wire, tolerant numbers,
 // chunking invariance and garbage recovery.
@@ -158,6 +159,17 @@ void ParserTest::vectors_data()
     row("CR then word", "satnogs", "CR GS\n", {"unreadable input 'CR'", "status register|"});
     row("negative velocity", "easycomm3", "VL-5\n", {"unreadable input 'VL-5'|"});
     row("bad time", "easycomm2", "ST12:00\n", {"unreadable input 'ST12:00'|"});
+    row("velocity too large", "easycomm3", "VL99999999999999999999\n", {"unreadable input 'VL99999999999999999999'|"});
+    row("velocity past 32 bits", "easycomm3", "VL2147483648\n", {"unreadable input 'VL2147483648'|"});
+    row("velocity one over", "satnogs", "VR100000\n", {"unreadable input 'VR100000'|"});
+    row("velocity at the top", "satnogs", "VR99999\n", {"velocity right=99999|"});
+    row("time out of range", "easycomm2", "ST99:99:99:99:99:99\n", {"unreadable input 'ST99:99:99:99:99:99'|"});
+    row("time month 13", "easycomm2", "ST26:13:01:00:00:00\n", {"unreadable input 'ST26:13:01:00:00:00'|"});
+    row("time 30 February", "easycomm2", "ST26:02:30:00:00:00\n", {"unreadable input 'ST26:02:30:00:00:00'|"});
+    row("time 29 February, leap year", "easycomm2", "ST28:02:29:23:59:59\n", {"time '28:02:29:23:59:59'|"});
+    row("time 29 February, common year", "easycomm2", "ST27:02:29:00:00:00\n", {"unreadable input 'ST27:02:29:00:00:00'|"});
+    row("time hour 24", "easycomm2", "ST26:11:21:24:00:00\n", {"unreadable input 'ST26:11:21:24:00:00'|"});
+    row("time second 60", "easycomm2", "ST26:11:21:23:59:60\n", {"unreadable input 'ST26:11:21:23:59:60'|"});
     row("output not boolean", "easycomm2", "OP1,7\n", {"unreadable input 'OP1,7'|"});
     row("bare number", "easycomm2", "42\n", {"unreadable input '42'|"});
     row("encoders short", "easycomm3", "\\?ENC1,2\n", {"unreadable input '\\?ENC1,2'|"});

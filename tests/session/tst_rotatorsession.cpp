@@ -16,6 +16,7 @@ class RotatorSessionTest : public QObject {
     Q_OBJECT
 private slots:
     void init();
+    void activeTargetEndsWithAnythingElseSent();
     void cleanup();
 
     void connectsProbesAndPolls();
@@ -248,6 +249,43 @@ void RotatorSessionTest::outOfRangeMovesSendNothing()
     QVERIFY(session->gotoPosition(359.9, 89.9));
     QCOMPARE(sent.count(), 1);
     QCOMPARE(sent.first().at(0).toByteArray(), QByteArray("AZ359.9 EL89.9\n"));
+}
+
+void RotatorSessionTest::activeTargetEndsWithAnythingElseSent()
+{
+    QVERIFY(connectSession(*session, *device));
+    QVERIFY(!session->activeTarget());
+    auto goThere = [&] {
+        QVERIFY(session->gotoPosition(100, 40));
+        QVERIFY(session->activeTarget());
+        QCOMPARE(session->activeTarget()->azimuth, 100.0);
+        QCOMPARE(session->activeTarget()->elevation, 40.0);
+    };
+    goThere();
+    QVERIFY(session->gotoAxis(session::Axis::Elevation, 20)); // one axis: the other keeps its target
+    QCOMPARE(session->activeTarget()->azimuth, 100.0);
+    QCOMPARE(session->activeTarget()->elevation, 20.0);
+    QVERIFY(session->stop(session::Axes::Azimuth));
+    QVERIFY(!session->activeTarget());
+    goThere();
+    QVERIFY(session->moveAxis(session::Axis::Azimuth, 2.0));
+    QVERIFY(!session->activeTarget());
+    goThere();
+    QVERIFY(session->sendRaw("SA"));
+    QVERIFY(!session->activeTarget());
+    goThere();
+    QVERIFY(session->park());
+    QVERIFY(!session->activeTarget());
+    goThere();
+    QVERIFY(session->home());
+    QVERIFY(!session->activeTarget());
+    // What the plot shows as the target is where homing goes: the lower
+    // limits, not the last go-to.
+    QCOMPARE(session->targetAzimuth(), session->profile().limits.azMin);
+    QCOMPARE(session->targetElevation(), session->profile().limits.elMin);
+    goThere();
+    session->disconnectFromRotator();
+    QVERIFY(!session->activeTarget());
 }
 
 void RotatorSessionTest::overlapTakesTheShortestLegalPath()

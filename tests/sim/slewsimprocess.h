@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Starts slew-sim (SLEW_SIM_BIN) as a child process for a test, reads its
 // ready line, and stops it with SIGTERM at the end. Waits only on signals.
@@ -8,6 +9,7 @@
 #include <QStringList>
 #include <QTcpSocket>
 
+#include <functional>
 #include <memory>
 
 class SlewSimProcess {
@@ -15,7 +17,8 @@ public:
     ~SlewSimProcess() { stop(); }
 
     // Starts it and waits for the ready line; false (with error()) if it fails.
-    bool start(const QStringList &arguments)
+    // childSetup runs in the child before slew-sim starts (e.g. setrlimit).
+    bool start(const QStringList &arguments, const std::function<void()> &childSetup = {})
     {
         const QString program = qEnvironmentVariable("SLEW_SIM_BIN");
         if (program.isEmpty()) {
@@ -26,6 +29,8 @@ public:
         m_process->setProgram(program);
         m_process->setArguments(arguments);
         m_process->setProcessChannelMode(QProcess::SeparateChannels);
+        if (childSetup)
+            m_process->setChildProcessModifier(childSetup);
         QSignalSpy ready(m_process.get(), &QProcess::readyReadStandardOutput);
         QSignalSpy finished(m_process.get(), &QProcess::finished);
         m_process->start();

@@ -115,6 +115,15 @@ private slots:
         QTest::newRow("malformed") << QByteArray("AZ12x\n") << QByteArray("ALmalformed:AZ12x\n");
         QTest::newRow("over the limit") << QByteArray("AZ500\n") << QByteArray("ALlimit:AZ500.00\n");
         QTest::newRow("negative") << QByteArray("EL-5\n") << QByteArray("ALlimit:EL-5.00\n");
+        // The alarm shows the value refused, not a rounding that would pass.
+        QTest::newRow("just below zero") << QByteArray("AZ-0.004\n") << QByteArray("ALlimit:AZ-0.004\n");
+        QTest::newRow("elevation just below zero") << QByteArray("EL-0.001\n") << QByteArray("ALlimit:EL-0.001\n");
+        QTest::newRow("velocity too large") << QByteArray("VL99999999999999999999\n")
+                                            << QByteArray("ALmalformed:VL99999999999999999999\n");
+        QTest::newRow("velocity past 32 bits") << QByteArray("VL2147483648\n") << QByteArray("ALmalformed:VL2147483648\n");
+        QTest::newRow("velocity one over") << QByteArray("VR100000\n") << QByteArray("ALmalformed:VR100000\n");
+        QTest::newRow("time out of range") << QByteArray("ST99:99:99:99:99:99\n")
+                                           << QByteArray("ALmalformed:ST99:99:99:99:99:99\n");
         QTest::newRow("no such register") << QByteArray("CW44,1\n") << QByteArray("ALlimit:CW44,1\n");
         QTest::newRow("overlong") << QByteArray(300, 'A') + '\n' << QByteArray("ALoverlong:") + QByteArray(32, 'A') + '\n';
     }
@@ -129,6 +138,16 @@ private slots:
         QCOMPARE(b.rotator.axis(Axis::Azimuth).position(), 0.0);
         QCOMPARE(b.rotator.axis(Axis::Elevation).position(), 0.0);
         QCOMPARE(b.rotator.axis(Axis::Azimuth).mode(), DriveMode::Released);
+        // Nothing commanded: the registers still read the start.
+        QCOMPARE(b.send("CR10 CR12\n"), QByteArray("CR10,0.00 CR12,0.00\n"));
+    }
+
+    void refusedTimeKeepsTheClock()
+    {
+        Bench b(Dialect::Easycomm2);
+        QCOMPARE(b.send("ST26:11:21:23:00:00\n"), QByteArray());
+        QCOMPARE(b.send("ST99:99:99:99:99:99\n"), QByteArray("ALmalformed:ST99:99:99:99:99:99\n"));
+        QCOMPARE(b.send("ST\n"), QByteArray("ST26:11:21:23:00:00\n"));
     }
 
     void satnogsRefusesSilently()

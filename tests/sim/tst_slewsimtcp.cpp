@@ -3,13 +3,18 @@
 // seeds/000, several clients at once, faults from the command line, garbage,
 // and a clean stop on SIGINT / SIGTERM.
 #include "slewsimprocess.h"
+#include "../common/halfclose.h"
 
 #include <QElapsedTimer>
 #include <QRandomGenerator>
 #include <QRegularExpression>
 #include <QTest>
 
+#include <QTimer>
+
 #include <csignal>
+#include <list>
+#include <sys/resource.h>
 
 namespace {
 
@@ -162,6 +167,11 @@ private slots:
         QCOMPARE(m_client.ask("EL-1\n"), QByteArray("ALlimit:EL-1.00\n"));
         QCOMPARE(m_client.ask("QQ\n"), QByteArray("ALunknown:QQ\n"));
         QCOMPARE(m_client.ask("AZ1.2.3\n"), QByteArray("ALmalformed:AZ1.2.3\n"));
+        QCOMPARE(m_client.ask("AZ-0.004\n"), QByteArray("ALlimit:AZ-0.004\n"));
+        QCOMPARE(m_client.ask("VL99999999999999999999\n"), QByteArray("ALmalformed:VL99999999999999999999\n"));
+        QCOMPARE(m_client.ask("VL2147483648\n"), QByteArray("ALmalformed:VL2147483648\n"));
+        QCOMPARE(m_client.ask("ST99:99:99:99:99:99\n"), QByteArray("ALmalformed:ST99:99:99:99:99:99\n"));
+        QCOMPARE(m_client.ask("CR12\n"), QByteArray("CR12,0.00\n"));
         QCOMPARE(m_client.ask("CR10\n"), QByteArray("CR10,0.00\n"));
     }
 
@@ -204,6 +214,120 @@ private slots:
         }
         QCOMPARE(line, QByteArray("GE1\n"));
         QCOMPARE(m_client.ask("GE\n"), QByteArray("GE1\n"));
+    }
+
+    void halfClosedClientsGetTheirAnswers()
+    {
+        // `printf 'AZ EL\n' | nc -N`: the host stops sending before it reads.
+        int answered = 0;
+        for (int i = 0; i < 20; ++i) {
+            const QByteArray a = askThenHalfClose(m_sim.port(), "AZ EL\n");
+            answered += QRegularExpression("^AZ-?\\d+\\.\\d\\d EL-?\\d+\\.\\d\\d\n$").match(QString(a)).hasMatch();
+        }
+        QCOMPARE(answered, 20);
+        // An unterminated last line is answered too.
+        for (int i = 0; i < 20; ++i)
+            QCOMPARE(askThenHalfClose(m_sim.port(), "GE\nVE"), QByteArray("GE1\nVESlewSim-1.0\n"));
+        // On a slow line the held-back answer leaves at once rather than never.
+        SlewSimProcess slow;
+        QVERIFY2(slow.start({"--listen", "127.0.0.1:0", "--latency-ms", "300"}), qPrintable(slow.error()));
+        for (int i = 0; i < 5; ++i)
+            QCOMPARE(askThenHalfClose(slow.port(), "GE\n"), QByteArray("GE1\n"));
+    }
+
+    void clientsBeyondTheLimitAreRefused()
+    {
+        SlewSimProcess sim;
+        QVERIFY2(sim.start({"--listen", "127.0.0.1:0", "--max-clients", "3"}), qPrintable(sim.error()));
+        SimClient a, b, c;
+        for (SimClient *client : {&a, &b, &c}) {
+            QVERIFY(client->connectTo(sim.port()));
+            QCOMPARE(client->ask("GE\n"), QByteArray("GE1\n"));
+        }
+        // The fourth reads why, and is closed.
+        SimClient d;
+        QSignalSpy refused(&d.socket(), &QTcpSocket::disconnected);
+        QVERIFY(d.connectTo(sim.port()));
+        QVERIFY(refused.wait(5000));
+        QCOMPARE(d.socket().readAll(), QByteArray("ALbusy:max-clients=3\n"));
+        // One leaves: the next is served.
+        a.socket().disconnectFromHost();
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                SimClient e;
+                return e.connectTo(sim.port()) && e.ask("GE\n") == "GE1\n";
+            },
+            10000));
+        QCOMPARE(b.ask("GE\n"), QByteArray("GE1\n"));
+        // A nonsense limit is a clear error.
+        SlewSimProcess bad;
+        QVERIFY(!bad.start({"--listen", "127.0.0.1:0", "--max-clients", "0"}));
+        QVERIFY2(bad.error().contains("--max-clients"), qPrintable(bad.error()));
+    }
+
+    void runningOutOfDescriptorsDoesNotSpin()
+    {
+        // 64 descriptors and 200 clients: slew-sim runs out long before the
+        // client limit (raised here so that it does not step in first).
+        SlewSimProcess sim;
+        QVERIFY2(sim.start({"--listen", "127.0.0.1:0", "--max-clients", "500"},
+                           [] {
+                               const rlimit few{64, 64};
+                               ::setrlimit(RLIMIT_NOFILE, &few);
+                           }),
+                 qPrintable(sim.error()));
+        QProcess *process = sim.process();
+        QByteArray notices;
+        auto noticed = [&](const char *text) {
+            notices += process->readAllStandardError();
+            return notices.contains(text);
+        };
+        std::list<QTcpSocket> clients;
+        for (int i = 0; i < 200; ++i) {
+            clients.emplace_back();
+            clients.back().connectToHost(QHostAddress::LocalHost, sim.port());
+        }
+        for (QTcpSocket &c : clients)
+            c.write("GE\n");
+        QVERIFY2(QTest::qWaitFor([&] { return noticed("new connections wait"); }, 10000), notices.constData());
+
+        // Measured over a fixed window, because CPU use is a rate: a server
+        // that retries accept() in a loop burns the whole window.
+        const qint64 before = processCpuTicks(process->processId());
+        QElapsedTimer window;
+        window.start();
+        QTimer end;
+        end.setSingleShot(true);
+        QSignalSpy ended(&end, &QTimer::timeout);
+        end.start(2000);
+        QVERIFY(ended.wait(10000));
+        const double seconds = (processCpuTicks(process->processId()) - before) / clockTicksPerSecond();
+        const double share = seconds / (window.elapsed() / 1000.0);
+        qInfo("slew-sim out of descriptors: %.1f %% of a core over %.1f s", 100 * share, window.elapsed() / 1000.0);
+        QVERIFY2(share < 0.2, qPrintable(QString::number(share)));
+
+        // The clients it took are answered; once they leave, the waiting
+        // ones are taken and answered too.
+        int answered = 0;
+        QByteArray wrong;
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                for (auto it = clients.begin(); it != clients.end();) {
+                    if (it->canReadLine()) {
+                        if (const QByteArray a = it->readAll(); a != "GE1\n")
+                            wrong += a;
+                        ++answered;
+                        it = clients.erase(it);
+                    } else {
+                        ++it;
+                    }
+                }
+                return clients.empty();
+            },
+            30000));
+        QCOMPARE(answered, 200);
+        QVERIFY2(wrong.isEmpty(), wrong.constData());
+        QVERIFY2(noticed("accepting connections again"), notices.constData());
     }
 
     void cleanStopOnSigterm()

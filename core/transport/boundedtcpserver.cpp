@@ -1,0 +1,149 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "boundedtcpserver.h"
+
+#include <QSocketNotifier>
+#include <QTcpSocket>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <sys/socket.h>
+#include <unistd.h>
+
+namespace slew::transport {
+
+namespace {
+// A refused client that does not read its line is cut off after this.
+constexpr int kRefusalLingerMs = 2000;
+// Accepts per wake-up, so a burst of connections cannot starve the rest.
+constexpr int kAcceptsPerWake = 64;
+} // namespace
+
+BoundedTcpServer::BoundedTcpServer(QObject *parent) : QObject(parent)
+{
+    m_retry.setSingleShot(true);
+    m_retry.setInterval(kRetryAcceptMs);
+    connect(&m_retry, &QTimer::timeout, this, &BoundedTcpServer::resumeAccepting);
+}
+
+BoundedTcpServer::~BoundedTcpServer()
+{
+    close();
+}
+
+bool BoundedTcpServer::listen(const QHostAddress &address, quint16 port)
+{
+    close();
+    if (!m_server.listen(address, port))
+        return false;
+    m_server.pauseAccepting(); // Qt's own accepting stays off: see the header
+    m_incoming = std::make_unique<QSocketNotifier>(m_server.socketDescriptor(), QSocketNotifier::Read);
+    connect(m_incoming.get(), &QSocketNotifier::activated, this, &BoundedTcpServer::acceptPending);
+    return true;
+}
+
+void BoundedTcpServer::close()
+{
+    m_retry.stop();
+    m_waitingForDescriptors = false;
+    m_incoming.reset();
+    m_server.close();
+}
+
+void BoundedTcpServer::setMaxClients(int count)
+{
+    m_maxClients = std::max(1, count);
+}
+
+void BoundedTcpServer::acceptPending()
+{
+    if (!m_incoming)
+        return;
+    const int listener = int(m_server.socketDescriptor());
+    for (int i = 0; i < kAcceptsPerWake; ++i) {
+        const int fd = ::accept4(listener, nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC);
+        if (fd < 0) {
+            switch (errno) {
+            case EINTR:
+            case ECONNABORTED: // the client gave up while waiting: the next one
+            case EPROTO:
+                continue;
+            case EAGAIN:
+#if EAGAIN != EWOULDBLOCK
+            case EWOULDBLOCK:
+#endif
+                return; // nobody left waiting
+            default:
+                // EMFILE, ENFILE, ENOBUFS, ENOMEM, or worse: the connection
+                // stays queued in the kernel, and trying again now fails again.
+                waitForDescriptors(QString::fromLocal8Bit(std::strerror(errno)));
+                return;
+            }
+        }
+        auto *socket = new QTcpSocket(this);
+        if (!socket->setSocketDescriptor(fd)) {
+            ::close(fd);
+            delete socket;
+            continue;
+        }
+        if (m_waitingForDescriptors) {
+            m_waitingForDescriptors = false;
+            emit notice(tr("accepting connections again"));
+        }
+        if (m_clients >= m_maxClients)
+            refuse(socket);
+        else
+            take(socket);
+    }
+}
+
+void BoundedTcpServer::take(QTcpSocket *socket)
+{
+    ++m_clients;
+    connect(socket, &QObject::destroyed, this, [this] {
+        --m_clients;
+        m_refusedSinceNotice = 0;
+        // A descriptor came free: try the waiting clients now.
+        if (m_waitingForDescriptors)
+            resumeAccepting();
+    });
+    emit clientArrived(socket);
+}
+
+void BoundedTcpServer::refuse(QTcpSocket *socket)
+{
+    // One notice until a client leaves, not one per refused client.
+    if (m_refusedSinceNotice++ == 0)
+        emit notice(tr("refused a client from %1: already %2 clients, the most allowed")
+                        .arg(socket->peerAddress().toString())
+                        .arg(m_maxClients));
+    connect(socket, &QTcpSocket::disconnected, socket, &QObject::deleteLater);
+    QTimer::singleShot(kRefusalLingerMs, socket, [socket] {
+        socket->abort();
+        socket->deleteLater();
+    });
+    if (!m_refusal.isEmpty())
+        socket->write(m_refusal);
+    socket->disconnectFromHost(); // after the line has left
+}
+
+void BoundedTcpServer::waitForDescriptors(const QString &why)
+{
+    m_incoming->setEnabled(false);
+    if (!m_waitingForDescriptors) {
+        m_waitingForDescriptors = true;
+        emit notice(tr("cannot accept a connection with %1 clients (%2): new connections wait")
+                        .arg(m_clients)
+                        .arg(why));
+    }
+    m_retry.start();
+}
+
+void BoundedTcpServer::resumeAccepting()
+{
+    m_retry.stop();
+    if (m_incoming)
+        m_incoming->setEnabled(true);
+}
+
+} // namespace slew::transport

@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// A TCP server that stays well-behaved under pressure: at most a set number
+// of clients at once (one more is told why and closed), and when the process
+// runs out of file descriptors it stops accepting for a moment instead of
+// retrying in a loop, and starts again as soon as a client leaves.
+//
+// QTcpServer binds and listens; accepting is done here, because Qt 6.4
+// takes EMFILE from accept() for a passing condition and tries again at
+// once, for as long as the connection waits: a core at 100 %.
+//
+// Both of Slew's servers sit on it: the rotctld bridge and slew-sim.
+
+#include <QByteArray>
+#include <QHostAddress>
+#include <QObject>
+#include <QTcpServer>
+#include <QTimer>
+
+#include <memory>
+
+class QSocketNotifier;
+class QTcpSocket;
+
+namespace slew::transport {
+
+class BoundedTcpServer : public QObject {
+    Q_OBJECT
+public:
+    static constexpr int kDefaultMaxClients = 32;
+    static constexpr int kRetryAcceptMs = 500; // after running out of descriptors
+
+    explicit BoundedTcpServer(QObject *parent = nullptr);
+    ~BoundedTcpServer() override;
+
+    bool listen(const QHostAddress &address, quint16 port);
+    void close();
+    bool isListening() const { return m_server.isListening(); }
+    QString errorString() const { return m_server.errorString(); }
+    QHostAddress serverAddress() const { return m_server.serverAddress(); }
+    quint16 serverPort() const { return m_server.serverPort(); }
+
+    // At least 1. Clients already connected stay when it is lowered.
+    void setMaxClients(int count);
+    int maxClients() const { return m_maxClients; }
+    // What a client over the limit reads before it is closed (may be empty).
+    void setRefusal(const QByteArray &line) { m_refusal = line; }
+
+    int clientCount() const { return m_clients; }
+    // True while accepting is paused because descriptors ran out.
+    bool isWaitingForDescriptors() const { return m_waitingForDescriptors; }
+
+signals:
+    // A client within the limit. The receiver handles it; the server counts
+    // it until the socket is destroyed.
+    void clientArrived(QTcpSocket *socket);
+    // Something the operator should know, ready for a log.
+    void notice(const QString &text);
+
+private:
+    void acceptPending();
+    void waitForDescriptors(const QString &why);
+    void resumeAccepting();
+    void take(QTcpSocket *socket);
+    void refuse(QTcpSocket *socket);
+
+    QTcpServer m_server;
+    std::unique_ptr<QSocketNotifier> m_incoming;
+    QTimer m_retry;
+    QByteArray m_refusal;
+    int m_maxClients = kDefaultMaxClients;
+    int m_clients = 0;
+    bool m_waitingForDescriptors = false;
+    qint64 m_refusedSinceNotice = 0;
+};
+
+} // namespace slew::transport
