@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "tuningchart.h"
 
 #include <QChart>
@@ -34,7 +35,11 @@ TuningChart::TuningChart(QWidget *parent) : QChartView(parent)
         s->attachAxis(y);
     }
     chart->setTitle(tr("Step response"));
+    // The QChartView constructor made a chart of its own; setChart() lets go
+    // of it without deleting it (Qt's documented contract), so delete it here.
+    QChart *const made = this->chart();
     setChart(chart);
+    delete made;
     setRenderHint(QPainter::Antialiasing);
     setMinimumHeight(240);
 }
