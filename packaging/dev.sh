@@ -5,6 +5,7 @@
 #   packaging/dev.sh test                   install what is missing, build, run every test
 #   packaging/dev.sh bench                  build and run the benchmarks (tests/bench)
 #   packaging/dev.sh package                build a Debian package (build/slew_*.deb)
+#   packaging/dev.sh sanitize [ctest args]  build with ASan+UBSan (build-sanitize) and run the tests
 #
 # Works on a fresh Debian 12: missing packages (packaging/debian-packages.txt)
 # are installed with apt-get, through sudo when not root.
@@ -32,6 +33,15 @@ install_missing() {
 configure_and_build() {
     cmake -S "$top" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE="${SLEW_BUILD_TYPE:-RelWithDebInfo}" >/dev/null
     cmake --build "$build" -j "$jobs"
+}
+
+# The sanitizer build: its own directory, so it never mixes with build/.
+# ctest runs each test under packaging/sanitized-test.sh (tests/CMakeLists.txt),
+# which fails it on any ASan, LSan or UBSan report.
+sanitize_build=${SLEW_SANITIZE_BUILD_DIR:-$top/build-sanitize}
+sanitize_configure_and_build() {
+    cmake -S "$top" -B "$sanitize_build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSLEW_SANITIZE=ON >/dev/null
+    cmake --build "$sanitize_build" -j "$jobs"
 }
 
 cmd=${1:-}
@@ -68,8 +78,14 @@ package)
     configure_and_build
     (cd "$build" && cpack -G DEB)
     ;;
+sanitize)
+    install_missing
+    sanitize_configure_and_build
+    cd "$sanitize_build"
+    ctest --output-on-failure --timeout 1800 "$@"
+    ;;
 *)
-    echo "usage: $0 run [slew arguments] | test [ctest arguments] | bench | package" >&2
+    echo "usage: $0 run [slew arguments] | test [ctest arguments] | bench | package | sanitize [ctest arguments]" >&2
     exit 2
     ;;
 esac
