@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The encoder per dialect: the exact bytes Hamlib's backends and the seeds/000
 // controller send, and a round trip through the parser for every command.
 
@@ -23,6 +24,7 @@ private slots:
     void roundTrip_data();
     void roundTrip();
     void numbersNeverUseExponentOrLocale();
+    void hugeNumbersAreWrittenWhole();
     void dialectNames();
 };
 
@@ -189,6 +191,20 @@ void EncoderTest::numbersNeverUseExponentOrLocale()
     QCOMPARE(formatNumber(-12.5, 1), QByteArray("-12.5"));
     QCOMPARE(formatNumber(qQNaN(), 1), QByteArray("0.0"));
     QLocale::setDefault(QLocale::c());
+}
+
+// snprintf once reported the length the number needed, more than the buffer
+// held, and the bytes past the buffer were copied out (found by fuzz_rotctldrequest
+// in the same code of rotctldrequest.cpp).
+void EncoderTest::hugeNumbersAreWrittenWhole()
+{
+    const QByteArray big = formatNumber(1e300, 2);
+    QCOMPARE(big.size(), 301 + 3);
+    QVERIFY(big.startsWith("10000000000000000525"));
+    QVERIFY(big.endsWith(".00"));
+    const QByteArray largest = formatNumber(-1.7976931348623157e308, 1);
+    QCOMPARE(largest.size(), 1 + 309 + 2);
+    QVERIFY(largest.startsWith("-17976931348623157"));
 }
 
 void EncoderTest::dialectNames()
