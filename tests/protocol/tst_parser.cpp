@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The incremental parser against byte vectors: every row of seeds/001 and
 // seeds/000, the strings Hamlib and SatNOGS put on the wire, tolerant numbers,
 // chunking invariance and garbage recovery.
@@ -312,6 +313,12 @@ void ParserTest::parseTokenWithoutContext()
     QCOMPARE(Parser::parseToken("AZ1", Dialect::Easycomm3).refusal, Refusal::None);
     QCOMPARE(dumpMessage(Parser::parseToken("GS1030", Dialect::Easycomm3)), QStringLiteral("status register=1030"));
     QCOMPARE(Parser::parseToken("??", Dialect::Easycomm3).op, Op::Invalid);
+    // Found by fuzz_parser: an empty token was read at its first byte.
+    for (Dialect d : allDialects()) {
+        const Message empty = Parser::parseToken("", d);
+        QCOMPARE(empty.op, Op::Invalid);
+        QCOMPARE(empty.refusal, Refusal::Unknown);
+    }
 }
 
 QTEST_GUILESS_MAIN(ParserTest)
