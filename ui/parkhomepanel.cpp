@@ -1,9 +1,12 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "parkhomepanel.h"
 
 #include <QGridLayout>
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
+
+#include <cmath>
 
 namespace slew::ui {
 
@@ -51,6 +54,7 @@ ParkHomePanel::ParkHomePanel(RotatorSession *session, QWidget *parent) : QWidget
     connect(m_home, &QPushButton::clicked, this, &ParkHomePanel::home);
     connect(m_cancel, &QPushButton::clicked, this, &ParkHomePanel::cancelHoming);
     connect(session, &RotatorSession::statusChanged, this, &ParkHomePanel::onStatus);
+    connect(session, &RotatorSession::positionChanged, this, &ParkHomePanel::onPosition);
     connect(session, &RotatorSession::errorFlagsChanged, this, [this](int ge) {
         if (m_homing && ge > 1 && (ge & session::ErrorHoming))
             finish(false, tr("Homing failed: %1.").arg(session::describeErrorFlags(ge)));
@@ -88,6 +92,7 @@ bool ParkHomePanel::home()
         return false;
     m_homing = true;
     m_sawMoving = false;
+    m_hasStart = false;
     m_timeout.start();
     m_progress->setVisible(true);
     m_cancel->setVisible(true);
@@ -108,6 +113,22 @@ void ParkHomePanel::onStatus(session::StatusWord status)
         m_sawMoving = true;
     else if (m_sawMoving)
         finish(true, tr("Homed."));
+}
+
+void ParkHomePanel::onPosition(double az, double el, bool stale)
+{
+    if (!m_homing || stale || m_sawMoving)
+        return;
+    if (!m_hasStart) {
+        m_hasStart = true;
+        m_startAz = az;
+        m_startEl = el;
+        return;
+    }
+    // More than a reading's jitter: the rotator is on its way.
+    constexpr double kMovedDeg = 0.2;
+    if (std::abs(az - m_startAz) > kMovedDeg || std::abs(el - m_startEl) > kMovedDeg)
+        m_sawMoving = true;
 }
 
 void ParkHomePanel::cancelHoming()

@@ -1,7 +1,14 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Park and Home. Homing (RESET) runs against the end stops and can take a
 // while, so it shows progress until GS reports both axes idle again, and can
 // be cancelled (which stops the rotator). Nothing here blocks or pops up.
+//
+// "Idle again" needs the homing to have been seen moving first. GS is polled
+// about once a second, so a short homing (a few degrees from the switches)
+// can start and end between two GS answers, more so on a loaded machine; the
+// position, polled ten times as often, moving away from where it was when
+// Home was pressed counts as moving too.
 
 #include "session/rotatorsession.h"
 
@@ -34,6 +41,7 @@ signals:
 
 private:
     void onStatus(session::StatusWord status);
+    void onPosition(double az, double el, bool stale);
     void finish(bool ok, const QString &message);
     void updateEnabled();
 
@@ -46,6 +54,8 @@ private:
     QTimer m_timeout;
     bool m_homing = false;
     bool m_sawMoving = false;
+    bool m_hasStart = false;   // the first fresh position after Home was pressed
+    double m_startAz = 0.0, m_startEl = 0.0;
 };
 
 } // namespace slew::ui

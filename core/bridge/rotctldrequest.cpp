@@ -1,8 +1,10 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "rotctldrequest.h"
 
 #include <QList>
 #include <QObject>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -67,18 +69,26 @@ bool readInt(const QByteArray &text, int *out)
     return true;
 }
 
+// `%.Nf` in the C locale, as rotctld prints. snprintf returns the length the
+// whole number needs, which for a large double (`P 1e308 0` is a valid
+// set_pos, and a rotctld:// peer may report anything) is far more than a
+// small buffer: the buffer holds any finite double, and the length is
+// clamped to what was written.
+QByteArray fixed(double v, int decimals)
+{
+    char buffer[400]; // DBL_MAX is 309 digits before the point
+    const int n = std::snprintf(buffer, sizeof buffer, "%.*f", decimals, v);
+    return QByteArray(buffer, std::clamp(n, 0, int(sizeof buffer) - 1));
+}
+
 QByteArray fixed2(double v)
 {
-    char buffer[48];
-    const int n = std::snprintf(buffer, sizeof buffer, "%.2f", v);
-    return QByteArray(buffer, n);
+    return fixed(v, 2);
 }
 
 QByteArray fixed6(double v)
 {
-    char buffer[48];
-    const int n = std::snprintf(buffer, sizeof buffer, "%.6f", v);
-    return QByteArray(buffer, n);
+    return fixed(v, 6);
 }
 
 QByteArray rprt(int code)
@@ -99,7 +109,8 @@ QByteArray header(const RotctldRequest &r)
 
 QString describeHamlibError(int code)
 {
-    switch (std::abs(code)) {
+    // A rotctld:// peer's `RPRT n` can be any int; std::abs(INT_MIN) is undefined.
+    switch (code < 0 ? -qint64(code) : qint64(code)) {
     case 0: return QObject::tr("no error");
     case 1: return QObject::tr("invalid argument");
     case 2: return QObject::tr("internal error");

@@ -14,9 +14,12 @@ QByteArray formatNumber(double value, int decimals)
     if (!std::isfinite(value) || std::fabs(value) < 0.5 * std::pow(10.0, -decimals))
         value = 0.0;
     // snprintf with "C" numbers: the wire always uses '.', never a locale comma.
-    char buffer[64];
+    // It returns the length the whole number needs, which for a large value
+    // is more than it wrote: the buffer holds any finite double at the
+    // decimals Slew uses, and the length is clamped to what was written.
+    char buffer[400]; // DBL_MAX is 309 digits before the point
     const int n = std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
-    return QByteArray(buffer, n > 0 ? n : 0);
+    return QByteArray(buffer, std::clamp(n, 0, int(sizeof buffer) - 1));
 }
 
 namespace {
@@ -26,7 +29,7 @@ QByteArray integer(double v)
     return QByteArray::number(qint64(std::llround(v)));
 }
 
-// Velocity in mdeg/s. The seeds/000 controller pads to 3 digits, Hamlib's
+// Velocity in mdeg/s. The Easycomm III derivative controller pads to 3 digits, Hamlib's
 // model 204 (the SatNOGS path) to 4; devices read either.
 QByteArray velocity(double mdegPerSecond, Dialect d)
 {

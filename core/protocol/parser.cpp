@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "parser.h"
 
 #include "tokentext.h"
@@ -139,6 +140,13 @@ Message Parser::parseToken(QByteArrayView token, Dialect d)
 
 Parser::Classified Parser::classify(QByteArrayView t) const
 {
+    // The byte loop never hands over an empty token, but parseToken() can;
+    // both readers look at the first byte.
+    if (t.isEmpty()) {
+        Classified c;
+        c.first = Message::invalid(t, "empty token", Refusal::Unknown);
+        return c;
+    }
     if (!isPrintable(t)) {
         Classified c;
         c.first = Message::invalid(t, "unprintable byte in token");

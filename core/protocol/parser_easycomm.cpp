@@ -129,7 +129,7 @@ Message Parser::classifyEasycomm(QByteArrayView t) const
         double v = 0;
         if (!parseDecimal(rest, &v) || v < 0)
             return Message::invalid(t, "malformed velocity (mdeg/s, not negative)");
-        // Hamlib sends at most 9900 and the seeds/000 controller caps its
+        // Hamlib sends at most 9900 and the Easycomm III derivative controller caps its
         // drive at 30000; five digits leave room, and keep a value that
         // would wrap a controller's integer out.
         if (v > kMaxVelocity)

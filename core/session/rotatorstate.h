@@ -17,12 +17,12 @@ inline constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
 enum class Axis : std::uint8_t { Azimuth, Elevation };
 enum class Axes : std::uint8_t { Azimuth = 1, Elevation = 2, Both = 3 };
 
-// GS bits, per axis (seeds/000: azimuth in the low byte, elevation in the high).
+// GS bits, per axis (the Easycomm III derivative: azimuth in the low byte, elevation in the high).
 enum AxisStatusBit : std::uint8_t { StatusIdle = 1, StatusMoving = 2, StatusPointing = 4, StatusError = 8 };
 
 // GE bits. Which reading is in force depends on the dialect: docs/protocol.md.
 enum ErrorBit : std::uint16_t {
-    ErrorNone = 1,           // SatNOGS / seeds/000: "no error"
+    ErrorNone = 1,           // SatNOGS / the Easycomm III derivative: "no error"
     ErrorSensor = 2,
     ErrorHoming = 4,
     ErrorMotor = 8,

@@ -35,7 +35,7 @@ public:
     // call; the rest are counted and summarised as `ALsuppressed:n`.
     QByteArray receive(QByteArrayView bytes);
 
-    // True when the input so far ended in a space: seeds/000 lets a command
+    // True when the input so far ended in a space: the Easycomm III derivative lets a command
     // end on a space alone, so the caller gives it a moment and then calls
     // endLine() rather than wait for a line end that may never come.
     bool awaitingLineEnd() const { return m_awaitingLineEnd; }
@@ -43,7 +43,7 @@ public:
     bool hasUnfinishedLine() const { return m_parser.hasUnfinishedLine(); }
     QByteArray endLine();
 
-    // seeds/000's unsolicited reports: every field whose text differs from
+    // the Easycomm III derivative's unsolicited reports: every field whose text differs from
     // what this host was last sent, one per line. The first call sends all.
     QByteArray unsolicitedChanges();
 

@@ -7,6 +7,8 @@
 
 #include <QTest>
 
+#include <limits>
+
 using namespace slew::bridge;
 using Kind = RotctldRequest::Kind;
 
@@ -44,6 +46,7 @@ private slots:
     void parse();
     void answers();
     void errorsAreNamed();
+    void hugeAnglesAreAnsweredWhole();
 };
 
 void RotctldRequestTest::parse_data()
@@ -140,6 +143,28 @@ void RotctldRequestTest::errorsAreNamed()
     QCOMPARE(describeHamlibError(1), QStringLiteral("invalid argument"));
     QCOMPARE(describeHamlibError(-21), QStringLiteral("limit exceeded"));
     QVERIFY(describeHamlibError(-99).contains("99"));
+    QVERIFY(describeHamlibError(std::numeric_limits<int>::min()).contains("-2147483648"));
+}
+
+// Found by fuzz_rotctldrequest (seed `P 1e308 1e-308`): snprintf returned the
+// length 1e308 needs, far more than the 48-byte buffer, and the answer copied
+// the stack beyond it. A rotctld:// peer can report such an angle, and
+// set_pos accepts one (the limits refuse it later).
+void RotctldRequestTest::hugeAnglesAreAnsweredWhole()
+{
+    const RotctldRequest r = parseRotctldLine("P 1e308 1e-308");
+    QCOMPARE(r.kind, Kind::SetPosition);
+    const QByteArray answer = formatPosition(parseRotctldLine("p"), r.az, r.el);
+    const QList<QByteArray> lines = answer.split('\n');
+    QCOMPARE(lines.size(), 3);
+    QCOMPARE(lines[0].size(), 309 + 3);
+    QVERIFY(lines[0].startsWith("1000000000000000010979"));
+    QVERIFY(lines[0].endsWith(".00"));
+    QCOMPARE(lines[1], QByteArray("0.00"));
+    const QByteArray state = formatDumpState({-1.7976931348623157e308, 1.7976931348623157e308, 0, 90, 1});
+    QVERIFY(state.contains("\nmin_az=-17976931348623157"));
+    QVERIFY(state.contains(".000000\nmax_az=17976931348623157"));
+    QVERIFY(state.endsWith("done\n"));
 }
 
 QTEST_GUILESS_MAIN(RotctldRequestTest)

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The encoder per dialect: the exact bytes Hamlib's backends and the seeds/000
+// The encoder per dialect: the exact bytes Hamlib's backends and the Easycomm III derivative
 // controller send, and a round trip through the parser for every command.
 
 #include "messagedump.h"
@@ -24,18 +24,19 @@ private slots:
     void roundTrip_data();
     void roundTrip();
     void numbersNeverUseExponentOrLocale();
+    void hugeNumbersAreWrittenWhole();
     void dialectNames();
 };
 
 void EncoderTest::hamlibWireStrings()
 {
-    // PROTOCOL-NOTES: `P 10.5 20.25` makes model 202/204 send `AZ10.5 EL20.2`.
+    // Peers (docs/protocol.md): `P 10.5 20.25` makes model 202/204 send `AZ10.5 EL20.2`.
     QCOMPARE(encodeSetPosition(10.5, 20.25, Dialect::Easycomm2), QByteArray("AZ10.5 EL20.2\n"));
     QCOMPARE(encodeSetPosition(10.5, 20.25, Dialect::SatNogs), QByteArray("AZ10.5 EL20.2\n"));
     // Model 201 (Easycomm I) sends the whole line.
     QCOMPARE(encodeSetPosition(10.5, 20.25, Dialect::Easycomm1),
              QByteArray("AZ10.5 EL20.2 UP000 XXX DN000 XXX\n"));
-    // The seeds/000 derivative takes two decimals.
+    // The Easycomm III derivative takes two decimals.
     QCOMPARE(encodeSetPosition(10.5, 20.25, Dialect::Easycomm3), QByteArray("AZ10.50 EL20.25\n"));
     QCOMPARE(encodeQueryPosition(Dialect::Easycomm2), QByteArray("AZ EL\n"));
     QCOMPARE(encodeQueryPosition(Dialect::Easycomm1), QByteArray());
@@ -197,6 +198,20 @@ void EncoderTest::numbersNeverUseExponentOrLocale()
     QCOMPARE(formatNumber(-12.5, 1), QByteArray("-12.5"));
     QCOMPARE(formatNumber(qQNaN(), 1), QByteArray("0.0"));
     QLocale::setDefault(QLocale::c());
+}
+
+// snprintf once reported the length the number needed, more than the buffer
+// held, and the bytes past the buffer were copied out (found by fuzz_rotctldrequest
+// in the same code of rotctldrequest.cpp).
+void EncoderTest::hugeNumbersAreWrittenWhole()
+{
+    const QByteArray big = formatNumber(1e300, 2);
+    QCOMPARE(big.size(), 301 + 3);
+    QVERIFY(big.startsWith("10000000000000000525"));
+    QVERIFY(big.endsWith(".00"));
+    const QByteArray largest = formatNumber(-1.7976931348623157e308, 1);
+    QCOMPARE(largest.size(), 1 + 309 + 2);
+    QVERIFY(largest.startsWith("-17976931348623157"));
 }
 
 void EncoderTest::dialectNames()

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The incremental parser against byte vectors: every row of seeds/001 and
-// seeds/000, the strings Hamlib and SatNOGS put on the wire, tolerant numbers,
+// The incremental parser against byte vectors: every row of the Easycomm command reference and
+// the Easycomm III derivative, the strings Hamlib and SatNOGS put on the wire, tolerant numbers,
 // chunking invariance and garbage recovery.
 
 #include "messagedump.h"
@@ -37,7 +37,7 @@ void ParserTest::vectors_data()
         QTest::newRow(name) << QByteArray(dialect) << QByteArray(bytes) << expected;
     };
 
-    // --- seeds/001, Easycomm I: the one-line command and the matching report.
+    // --- the Easycomm command reference, Easycomm I: the one-line command and the matching report.
     row("std1 line", "easycomm1", "AZ123.1 EL123.1 UP1231231231 LSB DN1231231231 USB\n",
         {"azimuth=123.1", "elevation=123.1", "uplink frequency=1231231231", "uplink mode 'LSB'",
          "downlink frequency=1231231231", "downlink mode 'USB'|"});
@@ -47,7 +47,7 @@ void ParserTest::vectors_data()
     row("std1 mode CW is a mode", "easycomm2", "UP145800000 CW DN435000000 FM\n",
         {"uplink frequency=145800000", "uplink mode 'CW'", "downlink frequency=435000000", "downlink mode 'FM'|"});
 
-    // --- seeds/001, Easycomm II rows: command and response.
+    // --- the Easycomm command reference, Easycomm II rows: command and response.
     row("AZ set", "easycomm2", "AZ123.1\n", {"azimuth=123.1|"});
     row("AZ get", "easycomm2", "AZ\n", {"azimuth|"});
     row("EL set", "easycomm2", "EL123.1\n", {"elevation=123.1|"});
@@ -86,7 +86,7 @@ void ParserTest::vectors_data()
     row("VE reply", "easycomm2", "VE0.123\n", {"version '0.123'|"});
     row("AL alarm", "easycomm2", "ALJAM_AZ\n", {"alarm 'JAM_AZ'|"});
 
-    // --- seeds/001, Easycomm III rows.
+    // --- the Easycomm command reference, Easycomm III rows.
     row("VL set", "easycomm3", "VL123\n", {"velocity left=123|"});
     row("VL get", "easycomm3", "VL\n", {"velocity left|"});
     row("VR", "easycomm3", "VR123 VR\n", {"velocity right=123", "velocity right|"});
@@ -102,7 +102,7 @@ void ParserTest::vectors_data()
     row("GE get", "easycomm3", "GE\n", {"error register|"});
     row("GE reply", "easycomm3", "GE1 GE5\n", {"error register=1", "error register=5|"});
 
-    // --- seeds/000, the derivative: commands.
+    // --- the Easycomm III derivative: commands.
     row("000 AZ two decimals", "easycomm3", "AZ123.45\n", {"azimuth=123.45|"});
     row("000 EL two decimals", "easycomm3", "EL45.67\n", {"elevation=45.67|"});
     row("000 VL four digits", "easycomm3", "VL1500 VR0250\n", {"velocity left=1500", "velocity right=250|"});
@@ -114,7 +114,7 @@ void ParserTest::vectors_data()
          "config write#4=2 '2'", "config write#5=0 '0'", "config write#6=0.2 '0.2'", "config write#7=180 '180'",
          "config write#8=90 '90'|"});
     row("000 ENC query", "easycomm3", "\\?ENC\n", {"raw encoders|"});
-    // --- seeds/000: status reports.
+    // --- the Easycomm III derivative: status reports.
     row("000 AZ report", "easycomm3", "AZ154.1\n", {"azimuth=154.1|"});
     row("000 IP0..IP8", "easycomm3", "IP0,25.31\nIP1,1\nIP2,2\nIP3,123.45\nIP4,45.00\nIP5,12.5\nIP6,3\nIP7,1.5\nIP8,-2.0\n",
         {"input#0=25.31 '25.31'|", "input#1=1 '1'|", "input#2=2 '2'|", "input#3=123.45 '123.45'|",
@@ -128,7 +128,7 @@ void ParserTest::vectors_data()
          "config read#13=0 '0.00'|"});
     row("000 ENC report", "easycomm3", "\\?ENC123450,45000,-5,0\n", {"raw encoders=123450,45000,-5,0|"});
 
-    // --- PROTOCOL-NOTES: what Hamlib and SatNOGS put on the wire.
+    // --- Peers (docs/protocol.md): what Hamlib and SatNOGS put on the wire.
     row("hamlib 202 set_pos", "easycomm2", "AZ10.5 EL20.2\n", {"azimuth=10.5", "elevation=20.2|"});
     row("hamlib 4.5 get_pos", "easycomm2", "AZ EL \n", {"azimuth", "elevation|"});
     row("hamlib 4.6 get_pos", "easycomm2", "AZ\nEL\n", {"azimuth|", "elevation|"});
@@ -174,7 +174,7 @@ void ParserTest::vectors_data()
     row("bare number", "easycomm2", "42\n", {"unreadable input '42'|"});
     row("encoders short", "easycomm3", "\\?ENC1,2\n", {"unreadable input '\\?ENC1,2'|"});
 
-    // --- GS-232A/B (Hamlib models 601, 603; seeds/004), commands.
+    // --- GS-232A/B (Hamlib models 601, 603; the easycom library), commands.
     row("gs232 W", "gs232a", "W010 020\r", {"azimuth=10", "elevation=20|"});
     row("gs232 W without el", "gs232a", "W010\r", {"unreadable input 'W'|"});
     row("gs232 W then command", "gs232a", "W010 S\r",
@@ -184,8 +184,8 @@ void ParserTest::vectors_data()
     row("gs232 S A E", "gs232a", "S\rA\rE\r", {"stop azimuth", "stop elevation|", "stop azimuth|", "stop elevation|"});
     row("gs232 moves", "gs232a", "R\rL\rU\rD\r", {"move right|", "move left|", "move up|", "move down|"});
     row("gs232 speed", "gs232b", "X2\rX5\r", {"speed=2|", "unreadable input 'X5'|"});
-    row("seeds/004 A E set", "gs232a", "A090\rE045\r", {"azimuth=90|", "elevation=45|"});
-    row("seeds/004 keep-alive", "gs232a", "?\r", {"keep-alive|"});
+    row("the easycom library A E set", "gs232a", "A090\rE045\r", {"azimuth=90|", "elevation=45|"});
+    row("the easycom library keep-alive", "gs232a", "?\r", {"keep-alive|"});
     // --- GS-232 reports.
     row("gs232a C2 report", "gs232a", "+0123+0045\r", {"azimuth=123", "elevation=45|"});
     row("gs232a C report", "gs232a", "+0359\r\n", {"azimuth=359|"});
@@ -324,6 +324,12 @@ void ParserTest::parseTokenWithoutContext()
     QCOMPARE(Parser::parseToken("AZ1", Dialect::Easycomm3).refusal, Refusal::None);
     QCOMPARE(dumpMessage(Parser::parseToken("GS1030", Dialect::Easycomm3)), QStringLiteral("status register=1030"));
     QCOMPARE(Parser::parseToken("??", Dialect::Easycomm3).op, Op::Invalid);
+    // Found by fuzz_parser: an empty token was read at its first byte.
+    for (Dialect d : allDialects()) {
+        const Message empty = Parser::parseToken("", d);
+        QCOMPARE(empty.op, Op::Invalid);
+        QCOMPARE(empty.refusal, Refusal::Unknown);
+    }
 }
 
 QTEST_GUILESS_MAIN(ParserTest)

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // slew-sim as a separate process over TCP: every command and status row of
-// seeds/000, several clients at once, faults from the command line, garbage,
+// the Easycomm III derivative, several clients at once, faults from the command line, garbage,
 // and a clean stop on SIGINT / SIGTERM.
 #include "slewsimprocess.h"
 #include "../common/halfclose.h"

@@ -23,8 +23,16 @@ private slots:
 
     void aLostLinkRaisesTheBannerAndShowsLost()
     {
-        WindowFixture f(QStringLiteral("sim:?drop_after=1"));
+        WindowFixture f;
         QVERIFY(f.connectAndWait());
+        // The cut comes once the link is up. drop_after counts from when the
+        // link opened, so `sim:?drop_after=1` raced the probe and the first
+        // positions, and lost on a busy machine.
+        slew::sim::Simulator *simulator = slew::sim::simulatorBehind(f.session.link());
+        QVERIFY(simulator);
+        slew::sim::LinkFaults faults;
+        faults.dropAfter = 0.001;
+        simulator->setLinkFaults(faults);
         QTRY_VERIFY_WITH_TIMEOUT(f.window->alarmBanner()->text().contains(QStringLiteral("Link lost")), 10000);
         QVERIFY(f.window->alarmBanner()->isSevere());
         QCOMPARE(f.find<QLabel>(QStringLiteral("connectionState"))->text(), QStringLiteral("lost"));
@@ -120,6 +128,25 @@ private slots:
         QTest::mouseClick(f.find<QPushButton>(QStringLiteral("parkButton")), Qt::LeftButton);
         QCOMPARE(f.sentCount(QRegularExpression(QStringLiteral("^PARK$"))), 1);
         QVERIFY(f.waitUntilAt(45, 10));
+    }
+
+    void aHomingShorterThanTheStatusPollIsSeen()
+    {
+        // A second of homing from a few degrees off the switches, and GS asked
+        // only every five seconds: the homing starts and ends between two
+        // status answers, which a loaded machine makes likely at the usual
+        // rate too. The moving position shows it ran.
+        WindowFixture f(QStringLiteral("sim:?start_az=6&start_el=4"));
+        slew::session::RotatorSession::Options options = f.session.options();
+        options.telemetryEvery = 50;
+        f.session.setOptions(options);
+        QVERIFY(f.connectAndWait());
+        auto *panel = f.window->parkHomePanel();
+        QVERIFY(panel->home());
+        QTRY_VERIFY_WITH_TIMEOUT(!panel->isHoming(), 60000);
+        QCOMPARE(f.find<QLabel>(QStringLiteral("homeMessage"))->text(), QStringLiteral("Homed."));
+        QCOMPARE_LE(f.session.azimuth(), 0.5);
+        QCOMPARE_LE(f.session.elevation(), 0.5);
     }
 };
 

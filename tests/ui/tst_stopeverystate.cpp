@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stop works from every state: it never throws the window, sends SA SE on
 // any open link, halts whatever is moving, and ends jogs and homing.
 
@@ -47,7 +48,11 @@ private slots:
 
     void stopHaltsAGoto()
     {
-        WindowFixture f;
+        // A slow rotator: 80 degrees take about 27 s, so however long a busy
+        // machine holds this process between seeing it move and pressing
+        // Stop, the goto cannot finish first. At the default 30 deg/s it took
+        // under 3 s and did, under load.
+        WindowFixture f(QStringLiteral("sim:?max_speed=3"));
         QVERIFY(f.connectAndWait());
         QVERIFY(f.session.gotoPosition(300, 80));
         QTRY_VERIFY_WITH_TIMEOUT(f.session.elevation() > 5, 10000);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The Trackers tab: the rotctld server started from the window, a tracker
 // steering through it, the operator's Stop holding remote moves off until
 // control is handed back; and the setup wizard opened from the menu.
@@ -29,7 +30,9 @@ private:
     {
         QSignalSpy ready(&s, &QTcpSocket::readyRead);
         s.write(line + '\n');
-        return ready.wait(5000) ? s.readAll() : QByteArray();
+        // Generous: the answer is local and comes at once on a quiet machine,
+        // but this waits for the event, not the time.
+        return ready.wait(30000) ? s.readAll() : QByteArray();
     }
 };
 

@@ -42,7 +42,11 @@ TuningChart::TuningChart(QWidget *parent) : QChartView(parent)
         s->attachAxis(y);
     }
     chart->setTitle(tr("Step response"));
+    // The QChartView constructor made a chart of its own; setChart() lets go
+    // of it without deleting it (Qt's documented contract), so delete it here.
+    QChart *const made = this->chart();
     setChart(chart);
+    delete made;
     setRenderHint(QPainter::Antialiasing);
     // Room for the title, the legend, four or five ticks and both axis titles.
     setMinimumSize(360, 260);
