@@ -7,7 +7,11 @@
 #include <QFile>
 #include <QHostAddress>
 #include <QSignalSpy>
+#include <QElapsedTimer>
 #include <QTcpSocket>
+#include <QTimer>
+
+#include <list>
 
 #include <sys/socket.h>
 #include <unistd.h>
@@ -47,4 +51,41 @@ inline qint64 processCpuTicks(qint64 pid)
 inline double clockTicksPerSecond()
 {
     return double(::sysconf(_SC_CLK_TCK));
+}
+
+// The share of one core a process uses over about `ms` of wall time, the
+// window waited out on the event loop. A rate needs a window: a server that
+// retries accept() in a loop burns the whole of it. -1 if it cannot be read.
+inline double cpuShareOver(qint64 pid, int ms)
+{
+    const qint64 before = processCpuTicks(pid);
+    QElapsedTimer window;
+    window.start();
+    QTimer end;
+    end.setSingleShot(true);
+    QSignalSpy ended(&end, &QTimer::timeout);
+    end.start(ms);
+    if (before < 0 || !ended.wait(ms + 10000))
+        return -1;
+    const double seconds = (processCpuTicks(pid) - before) / clockTicksPerSecond();
+    return seconds / (window.elapsed() / 1000.0);
+}
+
+// For QTest::qWaitFor: takes the one answer each client is owed as it
+// comes, counts it, keeps any that is not `expected`, and drops answered
+// clients; true once every client has answered.
+inline bool takeOneAnswerEach(std::list<QTcpSocket> &clients, const QByteArray &expected, int *answered,
+                              QByteArray *wrong)
+{
+    for (auto it = clients.begin(); it != clients.end();) {
+        if (!it->canReadLine()) {
+            ++it;
+            continue;
+        }
+        if (const QByteArray a = it->readAll(); a != expected)
+            *wrong += a;
+        ++*answered;
+        it = clients.erase(it);
+    }
+    return clients.empty();
 }
