@@ -6,7 +6,10 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <climits>
 #include <cstring>
+#include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -17,6 +20,26 @@ namespace {
 constexpr int kRefusalLingerMs = 2000;
 // Accepts per wake-up, so a burst of connections cannot starve the rest.
 constexpr int kAcceptsPerWake = 64;
+
+// The process' descriptor limit, or INT_MAX when there is none.
+int descriptorLimit()
+{
+    rlimit limit{};
+    if (::getrlimit(RLIMIT_NOFILE, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY || limit.rlim_cur > INT_MAX)
+        return INT_MAX;
+    return int(limit.rlim_cur);
+}
+
+// The descriptor the next open or accept would get: the kernel hands out the
+// lowest free number, so every number below it is in use. -1 when there is
+// none left at all.
+int lowestFreeDescriptor(int anyOpen)
+{
+    const int probe = ::fcntl(anyOpen, F_DUPFD_CLOEXEC, 0);
+    if (probe >= 0)
+        ::close(probe);
+    return probe;
+}
 } // namespace
 
 BoundedTcpServer::BoundedTcpServer(QObject *parent) : QObject(parent)
@@ -55,9 +78,21 @@ void BoundedTcpServer::setMaxClients(int count)
     m_maxClients = std::max(1, count);
 }
 
+void BoundedTcpServer::setReservedDescriptors(int count)
+{
+    m_reserved = std::max(0, count);
+}
+
+bool BoundedTcpServer::descriptorsLow(int lowestFree) const
+{
+    // With the lowest free number at n, at most limit - n are left.
+    const int limit = descriptorLimit();
+    return lowestFree < 0 || (limit != INT_MAX && lowestFree >= limit - m_reserved);
+}
+
 void BoundedTcpServer::acceptPending()
 {
-    if (!m_incoming)
+    if (!m_incoming || !m_incoming->isEnabled()) // closed, or paused since this was queued
         return;
     const int listener = int(m_server.socketDescriptor());
     for (int i = 0; i < kAcceptsPerWake; ++i) {
@@ -72,7 +107,13 @@ void BoundedTcpServer::acceptPending()
 #if EAGAIN != EWOULDBLOCK
             case EWOULDBLOCK:
 #endif
-                return; // nobody left waiting
+                // Nobody left waiting. Said once the queue has drained, not
+                // every time one waiting client gets in.
+                if (m_waitingForDescriptors) {
+                    m_waitingForDescriptors = false;
+                    emit notice(tr("accepting connections again"));
+                }
+                return;
             default:
                 // EMFILE, ENFILE, ENOBUFS, ENOMEM, or worse: the connection
                 // stays queued in the kernel, and trying again now fails again.
@@ -86,14 +127,15 @@ void BoundedTcpServer::acceptPending()
             delete socket;
             continue;
         }
-        if (m_waitingForDescriptors) {
-            m_waitingForDescriptors = false;
-            emit notice(tr("accepting connections again"));
-        }
         if (m_clients >= m_maxClients)
             refuse(socket);
         else
             take(socket);
+        // This one is served, but the next would eat into the reserve.
+        if (m_reserved > 0 && descriptorsLow(lowestFreeDescriptor(listener))) {
+            waitForDescriptors(tr("%1 descriptors kept for the rest of the process").arg(m_reserved));
+            return;
+        }
     }
 }
 
@@ -142,8 +184,18 @@ void BoundedTcpServer::waitForDescriptors(const QString &why)
 void BoundedTcpServer::resumeAccepting()
 {
     m_retry.stop();
-    if (m_incoming)
-        m_incoming->setEnabled(true);
+    if (!m_incoming)
+        return;
+    // Still low: keep waiting, without taking one more client into the
+    // reserve on every retry.
+    if (m_reserved > 0 && descriptorsLow(lowestFreeDescriptor(int(m_server.socketDescriptor())))) {
+        m_retry.start();
+        return;
+    }
+    m_incoming->setEnabled(true);
+    // Look now rather than when the next client knocks, so that a drained
+    // queue is noticed (and said) even if nobody else comes.
+    QMetaObject::invokeMethod(this, &BoundedTcpServer::acceptPending, Qt::QueuedConnection);
 }
 
 } // namespace slew::transport

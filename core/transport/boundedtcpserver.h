@@ -2,8 +2,15 @@
 #pragma once
 // A TCP server that stays well-behaved under pressure: at most a set number
 // of clients at once (one more is told why and closed), and when the process
-// runs out of file descriptors it stops accepting for a moment instead of
+// runs low on file descriptors it stops accepting for a moment instead of
 // retrying in a loop, and starts again as soon as a client leaves.
+//
+// "Low" comes before "out": accepting pauses while fewer than
+// reservedDescriptors() are left under the process' limit (RLIMIT_NOFILE),
+// so that clients alone can never take the descriptors the rest of the
+// process needs: the rotator link reconnecting, a serial port, a log file.
+// Should something else use them up all the same, accept() fails with
+// EMFILE and accepting pauses the same way.
 //
 // QTcpServer binds and listens; accepting is done here, because Qt 6.4
 // takes EMFILE from accept() for a passing condition and tries again at
@@ -28,7 +35,8 @@ class BoundedTcpServer : public QObject {
     Q_OBJECT
 public:
     static constexpr int kDefaultMaxClients = 32;
-    static constexpr int kRetryAcceptMs = 500; // after running out of descriptors
+    static constexpr int kRetryAcceptMs = 500; // after running low on descriptors
+    static constexpr int kDefaultReservedDescriptors = 16;
 
     explicit BoundedTcpServer(QObject *parent = nullptr);
     ~BoundedTcpServer() override;
@@ -46,8 +54,12 @@ public:
     // What a client over the limit reads before it is closed (may be empty).
     void setRefusal(const QByteArray &line) { m_refusal = line; }
 
+    // Descriptors kept free for the rest of the process (at least 0).
+    void setReservedDescriptors(int count);
+    int reservedDescriptors() const { return m_reserved; }
+
     int clientCount() const { return m_clients; }
-    // True while accepting is paused because descriptors ran out.
+    // True while accepting is paused because descriptors ran low or out.
     bool isWaitingForDescriptors() const { return m_waitingForDescriptors; }
 
 signals:
@@ -61,6 +73,7 @@ private:
     void acceptPending();
     void waitForDescriptors(const QString &why);
     void resumeAccepting();
+    bool descriptorsLow(int lowestFree) const;
     void take(QTcpSocket *socket);
     void refuse(QTcpSocket *socket);
 
@@ -69,6 +82,7 @@ private:
     QTimer m_retry;
     QByteArray m_refusal;
     int m_maxClients = kDefaultMaxClients;
+    int m_reserved = kDefaultReservedDescriptors;
     int m_clients = 0;
     bool m_waitingForDescriptors = false;
     qint64 m_refusedSinceNotice = 0;

@@ -291,7 +291,7 @@ void HeadlessTest::refusesABadListenAddress()
 
 void HeadlessTest::runningOutOfDescriptorsDoesNotSpin()
 {
-    // 64 descriptors and 200 trackers: the rotctld server runs out long
+    // 64 descriptors and 200 trackers: the rotctld server runs low long
     // before its client limit (raised here so that it does not step in first).
     QProcess slew;
     quint16 port = 0;

@@ -267,7 +267,7 @@ private slots:
 
     void runningOutOfDescriptorsDoesNotSpin()
     {
-        // 64 descriptors and 200 clients: slew-sim runs out long before the
+        // 64 descriptors and 200 clients: slew-sim runs low long before the
         // client limit (raised here so that it does not step in first).
         SlewSimProcess sim;
         QVERIFY2(sim.start({"--listen", "127.0.0.1:0", "--max-clients", "500"},
