@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace slew::ui {
 
@@ -38,8 +39,26 @@ AlarmMonitor::AlarmMonitor(RotatorSession *session, QObject *parent) : QObject(p
     connect(session, &RotatorSession::positionChanged, this, &AlarmMonitor::onPosition);
     connect(session, &RotatorSession::alarmReceived, this,
             [this](const QString &text) { log(Severity::Alarm, tr("Controller alarm: %1").arg(text)); });
-    connect(session, &RotatorSession::commandRefused, this,
-            [this](const QString &why) { log(Severity::Warning, tr("Not sent: %1").arg(why)); });
+    // A refused move goes on the banner (which logs it); other refusals, such
+    // as a bad register value, only to the log.
+    m_refusedMoveShown.setSingleShot(true);
+    m_refusedMoveShown.setInterval(kRefusedMoveShownMs);
+    auto clearRefusedMove = [this] {
+        m_refusedMoveShown.stop();
+        setAlarm(QStringLiteral("refused-move"), false, {});
+    };
+    connect(&m_refusedMoveShown, &QTimer::timeout, this, clearRefusedMove);
+    connect(session, &RotatorSession::moveSent, this, clearRefusedMove);
+    connect(session, &RotatorSession::moveRefused, this, [this](const QString &why) {
+        m_refusedMove = why;
+        setAlarm(QStringLiteral("refused-move"), true, tr("Move refused: %1").arg(why), Severity::Warning);
+        m_refusedMoveShown.start();
+    });
+    connect(session, &RotatorSession::commandRefused, this, [this](const QString &why) {
+        if (why == std::exchange(m_refusedMove, QString()))
+            return; // on the banner already
+        log(Severity::Warning, tr("Not sent: %1").arg(why));
+    });
     connect(session, &RotatorSession::requestFailed, this, [this](const QString &request, const QString &why) {
         log(Severity::Warning, tr("%1 failed: %2").arg(request, why));
     });
@@ -109,7 +128,8 @@ void AlarmMonitor::onState(RotatorSession::State state, const QString &detail)
         m_expectDisconnect = false;
         // Nothing else can be known about a rotator we do not talk to.
         for (const QString &key : {QStringLiteral("stale"), QStringLiteral("ge"), QStringLiteral("gs"),
-                                   QStringLiteral("endstop-az"), QStringLiteral("endstop-el")})
+                                   QStringLiteral("endstop-az"), QStringLiteral("endstop-el"),
+                                   QStringLiteral("refused-move")})
             setAlarm(key, false, {});
         setResting(0, {});
         setResting(1, {});

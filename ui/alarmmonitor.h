@@ -5,13 +5,17 @@
 // position) and into a stream of timestamped events. Alarms are keyed, so a
 // condition that holds raises one alarm, and it clears when the condition
 // does. Resting on a limit switch (parked at the stop, as many rotators are)
-// is a state, not an alarm: it is reported quietly by restingChanged().
+// is a state, not an alarm: it is reported quietly by restingChanged(). A
+// move the session refused (outside the limits, or further into the stop an
+// axis rests on) is a warning until the next move is sent, or for
+// kRefusedMoveShownMs.
 
 #include "session/rotatorsession.h"
 
 #include <QDateTime>
 #include <QMap>
 #include <QObject>
+#include <QTimer>
 
 namespace slew::ui {
 
@@ -20,6 +24,8 @@ class AlarmMonitor : public QObject {
 public:
     enum class Severity { Info, Warning, Alarm };
     Q_ENUM(Severity)
+
+    static constexpr int kRefusedMoveShownMs = 10000;
 
     explicit AlarmMonitor(session::RotatorSession *session, QObject *parent = nullptr);
 
@@ -67,6 +73,9 @@ private:
     int m_lastSwitches[2] = {-1, -1};
     double m_positionAtLastSwitches[2] = {0.0, 0.0};
     QString m_resting[2];
+    // The refused move on show, and when it goes.
+    QString m_refusedMove;
+    QTimer m_refusedMoveShown;
 };
 
 } // namespace slew::ui

@@ -125,6 +125,11 @@ signals:
     void bytesReceived(const QByteArray &bytes);
     void alarmReceived(const QString &text);
     void commandRefused(const QString &reason);
+    // A move refused because it would leave the limits or drive an axis
+    // further into the stop it rests on (also reported by commandRefused).
+    void moveRefused(const QString &reason);
+    // A move, stop hold aside, went to the wire.
+    void moveSent();
     void requestFailed(const QString &request, const QString &reason);
     void errorOccurred(const QString &message);
 
@@ -143,6 +148,7 @@ private:
     bool isEcho(const protocol::Message &m);
 
     bool refuse(const QString &reason);
+    bool refuseMove(const QString &reason); // refuse(), and moveRefused()
     bool requireLink();
     void write(const QByteArray &line);
     void writeMove(const QByteArray &line); // a new move: the pending stop hold is void

@@ -40,18 +40,18 @@ bool RotatorSession::gotoPosition(double az, double el)
     if (!requireLink())
         return false;
     if (QString e = model::checkElevation(m_profile.limits, el); !e.isEmpty())
-        return refuse(e);
+        return refuseMove(e);
     const auto choice =
         model::chooseAzimuth(m_profile.limits, az, hasPosition() ? std::optional<double>(m_az) : std::nullopt);
     if (!choice.azimuth)
-        return refuse(choice.error);
+        return refuseMove(choice.error);
     const double targetAz = *choice.azimuth;
     if (m_reportedLimits) {
         const QString outside = tr("%1 (the limits the link reports)");
         if (QString e = model::checkElevation(*m_reportedLimits, el); !e.isEmpty())
-            return refuse(outside.arg(e));
+            return refuseMove(outside.arg(e));
         if (targetAz < m_reportedLimits->azMin - 1e-6 || targetAz > m_reportedLimits->azMax + 1e-6)
-            return refuse(outside.arg(tr("azimuth %1° is outside %2°..%3°")
+            return refuseMove(outside.arg(tr("azimuth %1° is outside %2°..%3°")
                                           .arg(targetAz, 0, 'f', 1)
                                           .arg(m_reportedLimits->azMin, 0, 'f', 0)
                                           .arg(m_reportedLimits->azMax, 0, 'f', 0)));
@@ -88,16 +88,16 @@ bool RotatorSession::gotoAxis(Axis axis, double degrees)
         const auto choice =
             model::chooseAzimuth(m_profile.limits, degrees, hasPosition() ? std::optional<double>(m_az) : std::nullopt);
         if (!choice.azimuth)
-            return refuse(choice.error);
+            return refuseMove(choice.error);
         target = *choice.azimuth;
     } else if (QString e = model::checkElevation(m_profile.limits, degrees); !e.isEmpty()) {
-        return refuse(e);
+        return refuseMove(e);
     }
     if (m_reportedLimits) {
         const bool outside = az ? (target < m_reportedLimits->azMin - 1e-6 || target > m_reportedLimits->azMax + 1e-6)
                                 : !model::checkElevation(*m_reportedLimits, target).isEmpty();
         if (outside)
-            return refuse(tr("%1° is outside the limits the link reports").arg(target, 0, 'f', 1));
+            return refuseMove(tr("%1° is outside the limits the link reports").arg(target, 0, 'f', 1));
     }
     const Message m = Message::number(op, target);
     rememberSent(Message::number(op, std::round(target * 100) / 100));
@@ -126,7 +126,7 @@ bool RotatorSession::moveAxis(Axis axis, double degreesPerSecond)
         const double at = az ? m_az : m_el;
         const double limit = positive ? (az ? lim.azMax : lim.elMax) : (az ? lim.azMin : lim.elMin);
         if (positive ? at >= limit : at <= limit)
-            return refuse(tr("%1 is already at its %2 limit (%3°)")
+            return refuseMove(tr("%1 is already at its %2 limit (%3°)")
                               .arg(az ? tr("azimuth") : tr("elevation"), positive ? tr("upper") : tr("lower"))
                               .arg(limit, 0, 'f', 1));
     }
@@ -190,6 +190,7 @@ void RotatorSession::writeMove(const QByteArray &line)
     m_stopHoldTimer.stop();
     m_holdAzimuth = m_holdElevation = false;
     write(line);
+    emit moveSent();
 }
 
 bool RotatorSession::park()

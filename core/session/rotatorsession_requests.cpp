@@ -28,6 +28,12 @@ bool RotatorSession::refuse(const QString &reason)
     return false;
 }
 
+bool RotatorSession::refuseMove(const QString &reason)
+{
+    emit moveRefused(reason);
+    return refuse(reason);
+}
+
 bool RotatorSession::requireLink()
 {
     if (m_state == State::Connected && m_link && m_link->isOpen())

@@ -14,6 +14,7 @@
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QTest>
 
 class TestAlarmsAndHoming : public QObject {
@@ -89,6 +90,35 @@ private slots:
         QVERIFY(f.waitUntilAt(3, 2, 0.2));
         QTRY_VERIFY_WITH_TIMEOUT(resting->text().isEmpty(), 5000);
         QVERIFY(f.window->alarmBanner()->isHidden());
+    }
+
+    void aMoveIntoTheStopItRestsOnRaisesTheBannerUntilTheNextMove()
+    {
+        WindowFixture f(QStringLiteral("sim:"));
+        QVERIFY(f.connectAndWait());
+        auto *resting = f.find<QLabel>(QStringLiteral("limitSwitchState"));
+        QTRY_VERIFY_WITH_TIMEOUT(resting->text().contains(QStringLiteral("limit switch")), 5000);
+        QVERIFY(f.window->alarmBanner()->isHidden());
+        // At rest on the counter-clockwise stop, the operator holds ◀.
+        const QRegularExpression jogLeft(QStringLiteral("^VL"));
+        auto *left = f.find<QPushButton>(QStringLiteral("jogLeft"));
+        QTest::mousePress(left, Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!f.window->alarmBanner()->isHidden(), 5000);
+        QTest::mouseRelease(left, Qt::LeftButton);
+        QVERIFY2(f.window->alarmBanner()->text().contains(QStringLiteral("Move refused: azimuth is already at its lower limit")),
+                 qPrintable(f.window->alarmBanner()->text()));
+        QVERIFY(!f.window->alarmBanner()->isSevere()); // a warning
+        QCOMPARE(f.sentCount(jogLeft), 0);
+        // A move the session sends clears it.
+        QVERIFY(f.session.gotoPosition(2, 1));
+        QTRY_VERIFY_WITH_TIMEOUT(f.window->alarmBanner()->isHidden(), 5000);
+
+        // A tracker's target beyond the limits is refused the same way.
+        QVERIFY(!f.session.gotoPosition(10, 95));
+        QVERIFY2(f.window->alarmBanner()->text().contains(QStringLiteral("Move refused")),
+                 qPrintable(f.window->alarmBanner()->text()));
+        QVERIFY(f.session.gotoPosition(3, 2));
+        QTRY_VERIFY_WITH_TIMEOUT(f.window->alarmBanner()->isHidden(), 5000);
     }
 
     void drivingIntoAnEndStopRaisesTheBanner()
