@@ -13,7 +13,9 @@
 #include "alarmbanner.h"
 #include "linkschemes.h"
 #include "telemetrycharts.h"
+#include "operatortheme.h"
 #include "wizard/setupwizard.h"
+#include "wizard/tuningchart.h"
 
 #include <QChart>
 #include <QChartView>
@@ -21,10 +23,14 @@
 #include <QDir>
 #include <QGraphicsScene>
 #include <QGraphicsTextItem>
+#include <QApplication>
 #include <QGuiApplication>
+#include <QImage>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QRegularExpression>
 #include <QTest>
 #include <QWizardPage>
@@ -57,21 +63,30 @@ AxisLabels labelsOf(QChart *chart)
 }
 
 // Pairs of a page's visible widgets that overlap, by name, and any that
-// stick out of the page.
-QStringList overlapsOn(QWizardPage *page)
+// stick out of the page's body. With mayScroll false, a page that needs to
+// scroll is a fault too.
+QStringList overlapsOn(QWizardPage *page, bool mayScroll = false)
 {
+    auto *scroll = page->findChild<QScrollArea *>(QStringLiteral("pageScroll"));
+    if (!scroll)
+        return {QStringLiteral("no pageScroll on the page")};
+    QWidget *body = scroll->widget();
     QList<QWidget *> shown;
-    for (QWidget *w : page->findChildren<QWidget *>(Qt::FindDirectChildrenOnly)) {
-        if (w->isVisibleTo(page) && !w->isWindow())
+    for (QWidget *w : body->findChildren<QWidget *>(Qt::FindDirectChildrenOnly)) {
+        if (w->isVisibleTo(body) && !w->isWindow())
             shown << w;
     }
+    if (shown.size() < 2)
+        return {QStringLiteral("fewer than two widgets on the page body")};
+    QStringList faults;
+    if (!mayScroll && (scroll->verticalScrollBar()->isVisible() || scroll->horizontalScrollBar()->isVisible()))
+        faults << QStringLiteral("the page scrolls at this size");
     auto name = [](QWidget *w) {
         return QStringLiteral("%1 %2").arg(QLatin1String(w->metaObject()->className()), w->objectName());
     };
-    QStringList faults;
     for (qsizetype i = 0; i < shown.size(); ++i) {
         const QRect a = shown[i]->geometry();
-        if (!page->rect().contains(a))
+        if (!body->rect().contains(a))
             faults << QStringLiteral("%1 outside the page").arg(name(shown[i]));
         for (qsizetype j = i + 1; j < shown.size(); ++j) {
             const QRect both = a.intersected(shown[j]->geometry());
@@ -101,6 +116,37 @@ private slots:
         QCOMPARE(QGuiApplication::platformName(), QStringLiteral("xcb"));
         WindowFixture::prepareApplication();
         slew::registerLinkSchemes();
+        // As `slew` starts: the dark operator theme.
+        slew::ui::applyOperatorTheme(*qobject_cast<QApplication *>(QCoreApplication::instance()));
+    }
+
+    void theTuningChartFollowsTheTheme()
+    {
+        // Inside the dark operator theme: a dark chart, not a white one.
+        slew::ui::TuningChart dark;
+        dark.resize(480, 320);
+        dark.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dark));
+        QCOMPARE(dark.chart()->theme(), QChart::ChartThemeDark);
+        const QImage darkImage = dark.grab().toImage();
+        const QColor darkMiddle = darkImage.pixelColor(darkImage.width() / 2, darkImage.height() / 2);
+        QVERIFY2(darkMiddle.lightness() < 100, qPrintable(darkMiddle.name()));
+
+        // Inside a light window it stays light.
+        QWidget lightWindow;
+        QPalette light = lightWindow.palette();
+        light.setColor(QPalette::Window, QColor(0xf0, 0xf0, 0xf0));
+        light.setColor(QPalette::WindowText, Qt::black);
+        lightWindow.setPalette(light);
+        lightWindow.resize(480, 320);
+        auto *chart = new slew::ui::TuningChart(&lightWindow);
+        chart->resize(480, 320);
+        lightWindow.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&lightWindow));
+        QCOMPARE(chart->chart()->theme(), QChart::ChartThemeLight);
+        const QImage lightImage = chart->grab().toImage();
+        const QColor lightMiddle = lightImage.pixelColor(lightImage.width() / 2, lightImage.height() / 2);
+        QVERIFY2(lightMiddle.lightness() > 200, qPrintable(lightMiddle.name()));
     }
 
     void windowOpensQuietlyWithNumbersOnEveryChart()
@@ -193,6 +239,19 @@ private slots:
         // For a person to look at: the page as X11 drew it.
         QDir().mkpath(QStringLiteral(SLEW_SCREENSHOT_DIR));
         QVERIFY(wizard.grab().save(QStringLiteral(SLEW_SCREENSHOT_DIR "/wizard-tuning-x11.png")));
+        {
+            // On a small screen the page scrolls rather than squeezing the
+            // figures onto the chart.
+            const QSize full = wizard.size();
+            wizard.resize(560, 420);
+            auto *scroll = wizard.currentPage()->findChild<QScrollArea *>(QStringLiteral("pageScroll"));
+            QTRY_VERIFY(scroll->verticalScrollBar()->isVisible());
+            QTRY_VERIFY(wizard.height() < 500);
+            const QStringList faults = overlapsOn(wizard.currentPage(), true);
+            QVERIFY2(faults.isEmpty(), qPrintable(faults.join(QStringLiteral("; "))));
+            QVERIFY(wizard.grab().save(QStringLiteral(SLEW_SCREENSHOT_DIR "/wizard-tuning-small-x11.png")));
+            wizard.resize(full);
+        }
         QTest::mouseClick(find<QPushButton>(wizard, "accept"), Qt::LeftButton);
         QTRY_VERIFY_WITH_TIMEOUT(next(), 5000);
         wizard.next();

@@ -1,5 +1,6 @@
 #include "connectpage.h"
 
+#include "pagebody.h"
 #include "setupwizard.h"
 
 #include "transport/serialports.h"
@@ -38,7 +39,7 @@ ConnectPage::ConnectPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizard(wi
     auto *form = new QFormLayout;
     form->addRow(tr("Serial port"), m_ports);
     form->addRow(tr("Link"), m_uri);
-    auto *layout = new QVBoxLayout(this);
+    auto *layout = new QVBoxLayout(makePageBody(this));
     layout->addLayout(form);
     layout->addWidget(m_probeButton);
     layout->addWidget(m_progress);

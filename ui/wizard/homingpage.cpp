@@ -1,5 +1,6 @@
 #include "homingpage.h"
 
+#include "pagebody.h"
 #include "setupwizard.h"
 
 #include <QCheckBox>
@@ -34,7 +35,7 @@ HomingPage::HomingPage(SetupWizard *wizard) : QWizardPage(wizard), m_homing(wiza
     auto *buttons = new QHBoxLayout;
     buttons->addWidget(m_home);
     buttons->addWidget(m_cancel);
-    auto *layout = new QVBoxLayout(this);
+    auto *layout = new QVBoxLayout(makePageBody(this));
     layout->addLayout(buttons);
     layout->addWidget(m_progress);
     layout->addWidget(m_result);

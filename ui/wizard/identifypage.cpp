@@ -1,5 +1,6 @@
 #include "identifypage.h"
 
+#include "pagebody.h"
 #include "setupwizard.h"
 
 #include "session/rotatorsession.h"
@@ -23,7 +24,7 @@ IdentifyPage::IdentifyPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizard(
     m_result = new QLabel(this);
     m_result->setObjectName(QStringLiteral("dialectResult"));
     m_result->setWordWrap(true);
-    auto *layout = new QVBoxLayout(this);
+    auto *layout = new QVBoxLayout(makePageBody(this));
     layout->addWidget(m_progress);
     layout->addWidget(m_answers);
     layout->addWidget(m_result);

@@ -1,5 +1,6 @@
 #include "mechanicspage.h"
 
+#include "pagebody.h"
 #include "setupwizard.h"
 
 #include "session/rotatorsession.h"
@@ -55,7 +56,7 @@ MechanicsPage::MechanicsPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizar
     form->addRow(tr("Azimuth travel (over 360° is overlap)"), m_azRange);
     form->addRow(tr("Azimuth end stop at"), stops);
     form->addRow(tr("Elevation"), m_elMax);
-    auto *layout = new QVBoxLayout(this);
+    auto *layout = new QVBoxLayout(makePageBody(this));
     layout->addLayout(form);
     layout->addWidget(m_jog);
     layout->addWidget(m_confirmed);

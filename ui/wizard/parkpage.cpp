@@ -1,5 +1,6 @@
 #include "parkpage.h"
 
+#include "pagebody.h"
 #include "setupwizard.h"
 
 #include "session/rotatorsession.h"
@@ -31,7 +32,7 @@ ParkPage::ParkPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizard(wizard)
     auto *form = new QFormLayout;
     form->addRow(tr("Azimuth"), m_az);
     form->addRow(tr("Elevation"), m_el);
-    auto *layout = new QVBoxLayout(this);
+    auto *layout = new QVBoxLayout(makePageBody(this));
     layout->addLayout(form);
     layout->addWidget(m_useCurrent);
     layout->addWidget(m_status);

@@ -26,9 +26,9 @@ SetupWizard::SetupWizard(session::RotatorSession *session, QWidget *parent)
     setPage(ParkPageId, new ParkPage(this));
     setPage(SummaryPageId, new SummaryPage(this));
     // Big enough for the fullest page (tuning, with a chart and both sets of
-    // figures, whose room the page keeps from the start) with some to spare.
-    // QWizard keeps the dialog from being made smaller than its pages'
-    // layouts need.
+    // figures, whose room the page keeps from the start) with some to spare,
+    // so that no page scrolls at this size. Made smaller (a small screen),
+    // each page scrolls (pagebody.h).
     resize(QSize(860, 720).expandedTo(minimumSizeHint()));
 }
 

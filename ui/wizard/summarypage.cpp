@@ -1,5 +1,6 @@
 #include "summarypage.h"
 
+#include "pagebody.h"
 #include "setupwizard.h"
 
 #include <QDir>
@@ -34,7 +35,7 @@ SummaryPage::SummaryPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizard(wi
     auto *saveRow = new QHBoxLayout;
     saveRow->addWidget(m_path, 1);
     saveRow->addWidget(m_save);
-    auto *layout = new QVBoxLayout(this);
+    auto *layout = new QVBoxLayout(makePageBody(this));
     layout->addWidget(m_plan);
     layout->addWidget(m_write);
     layout->addWidget(m_results, 1);

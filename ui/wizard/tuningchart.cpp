@@ -7,6 +7,7 @@
 #include <QValueAxis>
 
 #include <algorithm>
+#include <cmath>
 
 namespace slew::ui {
 
@@ -69,7 +70,9 @@ void TuningChart::fit(double start, double target, double seconds)
         x->setRange(0, std::max(1.0, seconds));
     if (y)
         y->setRange(lo - 0.2 * span, hi + 0.7 * span);
-    m_target->replace({QPointF(0, target), QPointF(std::max(1.0, seconds), target)});
+    niceTicks();
+    const double end = x ? x->max() : std::max(1.0, seconds);
+    m_target->replace({QPointF(0, target), QPointF(end, target)});
 }
 
 void TuningChart::addSample(bool after, const tuning::PositionSample &sample)
@@ -83,6 +86,27 @@ void TuningChart::addSample(bool after, const tuning::PositionSample &sample)
     if (y)
         y->setRange(first ? sample.position - 1 : std::min(y->min(), sample.position - 0.5),
                     first ? sample.position + 1 : std::max(y->max(), sample.position + 0.5));
+    niceTicks();
+}
+
+void TuningChart::niceTicks()
+{
+    // Ticks at multiples of 1, 2 or 5 times a power of ten (0.5°, 1 s), about
+    // five to an axis, rather than at fifths of whatever the range is
+    // (2.45°, 1.3 s). The range itself stays where the data put it.
+    for (QAbstractAxis *axis : chart()->axes()) {
+        auto *value = qobject_cast<QValueAxis *>(axis);
+        if (!value || !(value->max() > value->min()))
+            continue;
+        const double rough = (value->max() - value->min()) / 5.0;
+        const double power = std::pow(10.0, std::floor(std::log10(rough)));
+        const double step = power * (rough / power < 1.5 ? 1.0 : rough / power < 3.5 ? 2.0 : 5.0);
+        value->setTickType(QValueAxis::TicksDynamic);
+        value->setTickAnchor(0.0);
+        value->setTickInterval(step);
+        const int decimals = std::max(0, int(-std::floor(std::log10(step) + 1e-9)));
+        value->setLabelFormat(QStringLiteral("%.%1f").arg(decimals));
+    }
 }
 
 void TuningChart::showResult(const tuning::TuningResult &r)

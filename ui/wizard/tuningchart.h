@@ -22,6 +22,7 @@ public:
 
 private:
     void fit(double start, double target, double seconds);
+    void niceTicks();
 
     QLineSeries *m_before;
     QLineSeries *m_after;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "tuningpage.h"
 
+#include "pagebody.h"
 #include "setupwizard.h"
 #include "tuningchart.h"
 
@@ -73,7 +74,7 @@ TuningPage::TuningPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizard(wiza
     decide->addWidget(m_accept);
     decide->addWidget(m_retry);
     decide->addWidget(m_keepOld);
-    auto *layout = new QVBoxLayout(this);
+    auto *layout = new QVBoxLayout(makePageBody(this));
     layout->addLayout(top);
     layout->addWidget(m_progress);
     layout->addWidget(m_status);
