@@ -24,9 +24,21 @@ QByteArray formatNumber(double value, int decimals)
 
 namespace {
 
+// Rounded to a whole number for the wire, defined for every double: a NaN
+// is 0 and magnitudes are capped at 10^15, where llround (and llabs of what
+// it returns) would otherwise be undefined. Callers check ranges first; this
+// keeps the encoder total when one does not.
+long long wholeNumber(double v)
+{
+    constexpr double kCap = 1e15;
+    if (std::isnan(v))
+        return 0;
+    return std::llround(std::clamp(v, -kCap, kCap));
+}
+
 QByteArray integer(double v)
 {
-    return QByteArray::number(qint64(std::llround(v)));
+    return QByteArray::number(qint64(wholeNumber(v)));
 }
 
 // Velocity in mdeg/s. The Easycomm III derivative controller pads to 3 digits, Hamlib's
@@ -34,7 +46,7 @@ QByteArray integer(double v)
 QByteArray velocity(double mdegPerSecond, Dialect d)
 {
     char buffer[32];
-    const long long v = std::llabs(std::llround(mdegPerSecond));
+    const long long v = std::llabs(wholeNumber(mdegPerSecond));
     const int n = std::snprintf(buffer, sizeof buffer, d == Dialect::SatNogs ? "%04lld" : "%03lld", v);
     return QByteArray(buffer, n);
 }
@@ -42,7 +54,7 @@ QByteArray velocity(double mdegPerSecond, Dialect d)
 QByteArray threeDigits(double degrees)
 {
     char buffer[32];
-    const int n = std::snprintf(buffer, sizeof buffer, "%03lld", std::llround(std::max(0.0, degrees)));
+    const int n = std::snprintf(buffer, sizeof buffer, "%03lld", wholeNumber(std::max(0.0, degrees)));
     return QByteArray(buffer, n);
 }
 

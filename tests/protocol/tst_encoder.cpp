@@ -8,6 +8,8 @@
 
 #include <QTest>
 
+#include <limits>
+
 using namespace slew::protocol;
 
 Q_DECLARE_METATYPE(slew::protocol::Dialect)
@@ -25,6 +27,7 @@ private slots:
     void roundTrip();
     void numbersNeverUseExponentOrLocale();
     void hugeNumbersAreWrittenWhole();
+    void wholeNumbersAreDefinedForEveryDouble();
     void dialectNames();
 };
 
@@ -212,6 +215,23 @@ void EncoderTest::hugeNumbersAreWrittenWhole()
     const QByteArray largest = formatNumber(-1.7976931348623157e308, 1);
     QCOMPARE(largest.size(), 1 + 309 + 2);
     QVERIFY(largest.startsWith("-17976931348623157"));
+}
+
+// llround of a NaN or of more than a long long holds is undefined, and so is
+// llabs of the LLONG_MIN it may return (UBSan's finding in velocity()). The
+// session never sends such values; the encoder stays defined all the same.
+void EncoderTest::wholeNumbersAreDefinedForEveryDouble()
+{
+    const double inf = std::numeric_limits<double>::infinity();
+    QCOMPARE(encodeLine({Message::number(Op::VelocityLeft, 1e300)}, Dialect::Easycomm3),
+             QByteArray("VL1000000000000000\n"));
+    QCOMPARE(encodeLine({Message::number(Op::VelocityRight, -inf)}, Dialect::Easycomm3),
+             QByteArray("VR1000000000000000\n"));
+    QCOMPARE(encodeLine({Message::number(Op::VelocityUp, qQNaN())}, Dialect::SatNogs), QByteArray("VU0000\n"));
+    QCOMPARE(encodeLine({Message::number(Op::VelocityDown, -9.3e18)}, Dialect::SatNogs),
+             QByteArray("VD1000000000000000\n"));
+    const QByteArray gs = encodeSetPosition(inf, qQNaN(), Dialect::Gs232B);
+    QCOMPARE(gs, QByteArray("W1000000000000000 000\r"));
 }
 
 void EncoderTest::dialectNames()
