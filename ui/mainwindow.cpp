@@ -117,6 +117,10 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
     connect(m_alarms, &AlarmMonitor::eventLogged, m_log, &EventLog::addEvent);
     connect(m_alarms, &AlarmMonitor::eventLogged, this,
             [this](const QDateTime &, AlarmMonitor::Severity, const QString &text) {
+                // The resting state has its own place at the foot: the event
+                // log keeps it, the passing message would only say it twice.
+                if (!text.isEmpty() && m_alarms->resting().contains(text))
+                    return;
                 statusBar()->showMessage(text, 8000);
             });
     connect(m_stop, &StopButton::stopped, m_jog, &JogPad::releaseAll);

@@ -14,6 +14,7 @@
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QStatusBar>
 #include <QRegularExpression>
 #include <QTest>
 
@@ -85,6 +86,9 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(resting->text().contains(QStringLiteral("limit switch")), 5000);
         QVERIFY(f.window->alarmBanner()->isHidden());
         QVERIFY(f.window->alarmBanner()->text().isEmpty());
+        // Said once, at the foot, not also as a passing message beside it.
+        QVERIFY2(!f.window->statusBar()->currentMessage().contains(QStringLiteral("limit switch")),
+                 qPrintable(f.window->statusBar()->currentMessage()));
         // Moving off the switches ends the quiet state too.
         QVERIFY(f.session.gotoPosition(3, 2));
         QVERIFY(f.waitUntilAt(3, 2, 0.2));
