@@ -1,6 +1,6 @@
 #include "configeditor.h"
 
-#include "model/rotatorlimits.h"
+#include "model/movegate.h"
 
 #include <QFileDialog>
 #include <QGridLayout>
@@ -184,13 +184,13 @@ QString ConfigEditor::validate(int reg, const QString &text) const
     const double v = text.trimmed().toDouble(&ok);
     if (!ok || !std::isfinite(v))
         return tr("not a number");
-    const auto &limits = m_session->profile().limits;
     if (reg >= 1 && reg <= 6 && v < 0)
         return tr("gains are not negative");
+    // The gate the session will ask when the value is written.
     if (reg == 7)
-        return model::chooseAzimuth(limits, v, std::nullopt).error;
+        return m_session->moveGate().azimuthPosition(v).refusal;
     if (reg == 8)
-        return model::checkElevation(limits, v);
+        return m_session->moveGate().elevation(v).refusal;
     return {};
 }
 
@@ -281,8 +281,8 @@ int ConfigEditor::apply()
     for (int reg : toWrite) {
         Row &row = m_rows[reg];
         const QString value = row.edit->text().trimmed();
-        if (!m_session->writeConfig(reg, value)) {
-            setState(reg, FieldState::Failed, tr("refused"));
+        if (const session::CommandResult sent = m_session->writeConfig(reg, value); !sent) {
+            setState(reg, FieldState::Failed, tr("refused: %1").arg(sent.refusal));
             continue;
         }
         row.written = value;

@@ -1,6 +1,6 @@
 #include "gotopanel.h"
 
-#include "model/rotatorlimits.h"
+#include "model/movegate.h"
 
 #include <QGridLayout>
 #include <QLabel>
@@ -71,7 +71,6 @@ GotoPanel::GotoPanel(session::RotatorSession *session, QWidget *parent) : QWidge
 GotoPanel::Checked GotoPanel::check() const
 {
     Checked c;
-    const auto &limits = m_session->profile().limits;
     const auto az = parseAngle(m_az->text());
     const auto el = parseAngle(m_el->text());
     if (m_az->text().trimmed().isEmpty() || m_el->text().trimmed().isEmpty()) {
@@ -84,19 +83,18 @@ GotoPanel::Checked GotoPanel::check() const
         c.message = !az ? tr("Azimuth is not a number.") : tr("Elevation is not a number.");
         return c;
     }
-    const auto current = m_session->hasPosition() ? std::optional<double>(m_session->azimuth()) : std::nullopt;
-    const model::AzimuthChoice choice = model::chooseAzimuth(limits, *az, current);
-    const QString elError = model::checkElevation(limits, *el);
-    c.azimuthBad = !choice.azimuth;
-    c.elevationBad = !elError.isEmpty();
-    if (c.azimuthBad || c.elevationBad) {
-        c.message = c.azimuthBad ? choice.error : elError;
+    // The session's gate, as it will decide when Go is pressed.
+    const model::MoveCheck check = m_session->previewPointing(*az, *el);
+    if (!check.allowed()) {
+        c.elevationBad = !m_session->moveGate().elevation(*el).allowed();
+        c.azimuthBad = !c.elevationBad;
+        c.message = check.refusal;
         return c;
     }
-    c.azimuth = choice.azimuth;
+    c.azimuth = check.azimuth;
     c.elevation = el;
-    if (std::abs(*choice.azimuth - *az) > 1e-9)
-        c.message = tr("Will turn to %1° (the shorter way through the overlap).").arg(*choice.azimuth, 0, 'f', 1);
+    if (std::abs(check.azimuth - *az) > 1e-9)
+        c.message = tr("Will turn to %1° (the shorter way through the overlap).").arg(check.azimuth, 0, 'f', 1);
     return c;
 }
 
@@ -126,8 +124,9 @@ bool GotoPanel::go()
         m_message->setStyleSheet(QStringLiteral("color:#e54848;"));
         return false; // nothing is sent
     }
-    // The session takes the bearing and picks the same overlap position.
-    return m_session->gotoPosition(*parseAngle(m_az->text()), *c.elevation);
+    // The bearing as typed: the gate decides again at sending time, from
+    // where the rotator is then, as the preview did from where it was.
+    return bool(m_session->gotoPosition(*parseAngle(m_az->text()), *c.elevation));
 }
 
 } // namespace slew::ui

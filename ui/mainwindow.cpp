@@ -230,12 +230,8 @@ void MainWindow::wirePlot()
 
 void MainWindow::onTargetPicked(double az, double el)
 {
-    const auto &limits = m_session->profile().limits;
-    const auto current = m_session->hasPosition() ? std::optional<double>(m_session->azimuth()) : std::nullopt;
-    const auto choice = model::chooseAzimuth(limits, az, current);
-    const QString elError = model::checkElevation(limits, el);
-    if (!choice.azimuth || !elError.isEmpty()) {
-        m_confirm->showProblem(!choice.azimuth ? choice.error : elError);
+    if (const model::MoveCheck check = m_session->previewPointing(az, el); !check.allowed()) {
+        m_confirm->showProblem(check.refusal);
         return;
     }
     m_goto->setFields(az, el);

@@ -78,18 +78,22 @@ void ParkHomePanel::updateEnabled()
 
 bool ParkHomePanel::park()
 {
-    const bool ok = m_session->park();
-    m_message->setText(ok ? tr("Parking at %1°, %2°.")
-                                .arg(m_session->profile().parkAz, 0, 'f', 1)
-                                .arg(m_session->profile().parkEl, 0, 'f', 1)
-                          : QString());
-    return ok;
+    const session::CommandResult sent = m_session->park();
+    m_message->setText(sent ? tr("Parking at %1°, %2°.")
+                                  .arg(m_session->profile().parkAz, 0, 'f', 1)
+                                  .arg(m_session->profile().parkEl, 0, 'f', 1)
+                            : tr("Not parking: %1").arg(sent.refusal));
+    return bool(sent);
 }
 
 bool ParkHomePanel::home()
 {
-    if (m_homing || !m_session->home())
+    if (m_homing)
         return false;
+    if (const session::CommandResult sent = m_session->home(); !sent) {
+        m_message->setText(tr("Not homing: %1").arg(sent.refusal));
+        return false;
+    }
     m_homing = true;
     m_sawMoving = false;
     m_hasStart = false;

@@ -22,7 +22,7 @@ StopButton::StopButton(session::RotatorSession *session, QWidget *parent)
 bool StopButton::stopAll()
 {
     emit stopped(); // first: a running jog or homing must not restart the motion
-    return m_session->stop(session::Axes::Both);
+    return bool(m_session->stop(session::Axes::Both));
 }
 
 } // namespace slew::ui

@@ -68,10 +68,6 @@ TrafficConsole::TrafficConsole(RotatorSession *session, QWidget *parent) : QWidg
     m_flush.start();
     connect(session, &RotatorSession::bytesSent, this, [this](const QByteArray &bytes) { add(true, bytes); });
     connect(session, &RotatorSession::bytesReceived, this, &TrafficConsole::onReceived);
-    connect(session, &RotatorSession::commandRefused, this, [this](const QString &why) {
-        if (m_sending)
-            m_message->setText(tr("Not sent: %1").arg(why));
-    });
     for (QCheckBox *c : {m_invert, m_showSent, m_showReceived})
         connect(c, &QCheckBox::toggled, this, &TrafficConsole::refilter);
     connect(m_filter, &QLineEdit::textChanged, this, &TrafficConsole::refilter);
@@ -176,15 +172,14 @@ void TrafficConsole::refilter()
 
 bool TrafficConsole::sendRaw(const QString &line)
 {
-    m_message->clear();
-    m_sending = true;
-    const bool ok = m_session->sendRaw(line);
-    m_sending = false;
-    if (ok) {
+    const session::CommandResult sent = m_session->sendRaw(line);
+    if (sent) {
         m_raw->clear();
         m_message->setText(tr("Sent."));
+    } else {
+        m_message->setText(tr("Not sent: %1").arg(sent.refusal));
     }
-    return ok;
+    return bool(sent);
 }
 
 void TrafficConsole::clear()

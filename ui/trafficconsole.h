@@ -63,7 +63,6 @@ private:
     QLineEdit *m_raw;
     QPushButton *m_send;
     QLabel *m_message;
-    bool m_sending = false;
     QRegularExpression m_pattern; // compiled from the filter field
 };
 

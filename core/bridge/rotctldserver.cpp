@@ -375,8 +375,7 @@ int RotctldServer::setPosition(const RotctldRequest &r)
     if (const auto active = m_session->activeTarget();
         active && bearingDifference(r.az, active->azimuth) < m_deadband && std::abs(r.el - active->elevation) < m_deadband) {
         // Still checked: a target inside the deadband of a legal one can be illegal.
-        const auto &lim = m_session->profile().limits;
-        if (model::checkElevation(lim, r.el).isEmpty() && model::chooseAzimuth(lim, r.az, std::nullopt).azimuth) {
+        if (m_session->previewPointing(r.az, r.el).allowed()) {
             ++m_suppressed;
             return 0;
         }

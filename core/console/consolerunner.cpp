@@ -41,8 +41,6 @@ ConsoleRunner::ConsoleRunner(RotatorSession *session, bool json, QObject *parent
         else
             finish(ExitCode::Failed, tr("not there after %1 s; the rotator keeps going").arg(m_arrivalTimeoutMs / 1000.0));
     });
-    // A refusal arrives as a signal during the call that is refused.
-    connect(m_session, &RotatorSession::commandRefused, this, [this](const QString &reason) { m_lastRefusal = reason; });
 }
 
 ConsoleRunner::~ConsoleRunner() = default;
@@ -52,7 +50,6 @@ void ConsoleRunner::run(const ConsoleCommand &command)
     m_command = command;
     m_running = true;
     m_started = false;
-    m_lastRefusal.clear();
     m_deadline.start(m_connectTimeoutMs);
     m_connections << connect(m_session, &RotatorSession::stateChanged, this,
                              [this](RotatorSession::State state, const QString &detail) {
@@ -99,8 +96,8 @@ void ConsoleRunner::start()
         finishWhenSent();
         return;
     case Kind::Park:
-        if (!m_session->park()) {
-            finish(ExitCode::Refused, m_lastRefusal);
+        if (const auto parked = m_session->park(); !parked) {
+            finish(ExitCode::Refused, parked.refusal);
             return;
         }
         emit output(m_json ? json({{QStringLiteral("event"), QStringLiteral("parking")}}) : tr("parking"));
@@ -135,8 +132,8 @@ void ConsoleRunner::start()
 
 void ConsoleRunner::startGoto()
 {
-    if (!m_session->gotoPosition(m_command.azimuth, m_command.elevation)) {
-        finish(ExitCode::Refused, m_lastRefusal.isEmpty() ? tr("the move was refused") : m_lastRefusal);
+    if (const auto sent = m_session->gotoPosition(m_command.azimuth, m_command.elevation); !sent) {
+        finish(ExitCode::Refused, sent.refusal);
         return;
     }
     m_targetAz = m_session->targetAzimuth();
@@ -168,8 +165,8 @@ void ConsoleRunner::checkArrival()
 void ConsoleRunner::startHome()
 {
     if (!m_command.wait) {
-        if (!m_session->home()) {
-            finish(ExitCode::Refused, m_lastRefusal);
+        if (const auto homing = m_session->home(); !homing) {
+            finish(ExitCode::Refused, homing.refusal);
             return;
         }
         emit output(m_json ? json({{QStringLiteral("event"), QStringLiteral("homing")}}) : tr("homing"));
@@ -186,7 +183,7 @@ void ConsoleRunner::startHome()
     connect(m_homing.get(), &tuning::HomingRun::cancelled, this,
             [this] { finish(ExitCode::Failed, tr("homing cancelled; the rotator was stopped")); });
     if (!m_homing->start(m_arrivalTimeoutMs / 1000.0))
-        finish(ExitCode::Refused, m_lastRefusal.isEmpty() ? tr("this controller cannot home") : m_lastRefusal);
+        finish(ExitCode::Refused, m_homing->error());
 }
 
 void ConsoleRunner::startWatch()
@@ -229,8 +226,8 @@ void ConsoleRunner::sendRawWhenQuiet()
         return;
     m_rawSent = true;
     m_rawAnswer.clear();
-    if (!m_session->sendRaw(m_command.text)) {
-        finish(ExitCode::Refused, m_lastRefusal);
+    if (const auto sent = m_session->sendRaw(m_command.text); !sent) {
+        finish(ExitCode::Refused, sent.refusal);
         return;
     }
     // Many commands have no answer: once the controller's reply time has
@@ -267,12 +264,14 @@ void ConsoleRunner::startConfig()
                              [this](const QString &request, const QString &reason) {
                                  finish(ExitCode::Failed, tr("%1: %2").arg(request, reason));
                              });
-    if (writing && !m_session->writeConfig(reg, m_command.text)) {
-        finish(ExitCode::Refused, m_lastRefusal);
-        return;
+    if (writing) {
+        if (const auto written = m_session->writeConfig(reg, m_command.text); !written) {
+            finish(ExitCode::Refused, written.refusal);
+            return;
+        }
     }
-    if (!m_session->readConfig(reg))
-        finish(ExitCode::Refused, m_lastRefusal);
+    if (const auto read = m_session->readConfig(reg); !read)
+        finish(ExitCode::Refused, read.refusal);
 }
 
 void ConsoleRunner::interrupt()

@@ -70,7 +70,6 @@ private:
     ConsoleCommand m_command;
     bool m_running = false;
     bool m_started = false;
-    QString m_lastRefusal;
     double m_targetAz = 0, m_targetEl = 0;
     QTimer m_deadline;
     QTimer m_tick;

@@ -1,6 +1,6 @@
 #include "presets.h"
 
-#include "rotatorlimits.h"
+#include "movegate.h"
 
 #include <QJsonObject>
 #include <QObject>
@@ -24,9 +24,7 @@ QString PresetList::store(const Preset &preset, const RotatorLimits &limits)
         return QObject::tr("a preset name is at most 40 characters");
     if (!std::isfinite(p.azimuth) || !std::isfinite(p.elevation))
         return QObject::tr("preset '%1' has no position").arg(p.name);
-    if (const auto choice = chooseAzimuth(limits, p.azimuth, std::nullopt); !choice.azimuth)
-        return choice.error;
-    if (QString e = checkElevation(limits, p.elevation); !e.isEmpty())
+    if (QString e = MoveGate(limits).pointing(p.azimuth, p.elevation, std::nullopt).refusal; !e.isEmpty())
         return e;
     for (Preset &existing : m_presets) {
         if (existing.name.compare(p.name, Qt::CaseInsensitive) == 0) {

@@ -1,5 +1,7 @@
 #include "rotatorprofile.h"
 
+#include "movegate.h"
+
 #include <QFile>
 #include <QJsonDocument>
 #include <QObject>
@@ -53,7 +55,7 @@ QString RotatorProfile::validate() const
 {
     if (QString e = limits.validate(); !e.isEmpty())
         return e;
-    if (!checkElevation(limits, parkEl).isEmpty() || !chooseAzimuth(limits, parkAz, std::nullopt).azimuth)
+    if (!MoveGate(limits).pointing(parkAz, parkEl, std::nullopt).allowed())
         return QObject::tr("park position %1°, %2° is outside the limits").arg(parkAz).arg(parkEl);
     if (!(deadbandDeg >= 0.0 && deadbandDeg <= 10.0))
         return QObject::tr("deadband must be 0° to 10°");

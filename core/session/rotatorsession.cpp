@@ -79,6 +79,7 @@ RotatorSession::~RotatorSession()
 void RotatorSession::setProfile(const model::RotatorProfile &profile)
 {
     m_profile = profile;
+    m_gate.setProfileLimits(profile.limits);
     m_parser.setDialect(profile.dialect);
     m_pollTimer.setInterval(1000 / std::clamp(profile.pollHz, 1, 50));
     const int pollPeriod = m_pollTimer.interval();
@@ -144,7 +145,7 @@ void RotatorSession::openLink()
     connect(m_link.get(), &transport::Link::notice, this, &RotatorSession::errorOccurred);
     connect(m_link.get(), &transport::Link::limitsReported, this,
             [this](double azMin, double azMax, double elMin, double elMax) {
-                m_reportedLimits = model::RotatorLimits{azMin, azMax, elMin, elMax};
+                m_gate.setReportedLimits(model::RotatorLimits{azMin, azMax, elMin, elMax});
             });
     setState(m_reconnectAttempt > 0 ? State::Reconnecting : State::Connecting, tr("opening %1").arg(m_uri));
     m_link->open();
@@ -213,7 +214,7 @@ void RotatorSession::dropLink(const QString &reason)
     }
     m_stale = true;
     m_caps = Capabilities{};
-    m_reportedLimits.reset();
+    m_gate.setReportedLimits(std::nullopt);
     emit capabilitiesChanged(m_caps);
 }
 

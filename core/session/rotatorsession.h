@@ -8,6 +8,7 @@
 // stop, park, home, config) into the dialect's bytes after checking the
 // profile's limits. Everything is driven by signals; nothing here waits.
 
+#include "model/movegate.h"
 #include "model/rotatorprofile.h"
 #include "protocol/parser.h"
 #include "requestqueue.h"
@@ -33,6 +34,8 @@ class RotatorSession : public QObject {
 public:
     enum class State { Disconnected, Connecting, Connected, Reconnecting };
     Q_ENUM(State)
+    // What an azimuth given to gotoAxis() means.
+    enum class AzimuthIs { Bearing, Position };
 
     struct Options {
         int replyTimeoutMs = 500;
@@ -59,7 +62,11 @@ public:
     const Capabilities &capabilities() const { return m_caps; }
     // Limits the link reported (rotctld's \dump_state), if any; moves must
     // fit these as well as the profile's.
-    std::optional<model::RotatorLimits> reportedLimits() const { return m_reportedLimits; }
+    std::optional<model::RotatorLimits> reportedLimits() const { return m_gate.reportedLimits(); }
+    // The gate every move passes (model/movegate.h), and what it would say
+    // now to a go-to: for widgets that show a target before it is sent.
+    const model::MoveGate &moveGate() const { return m_gate; }
+    model::MoveCheck previewPointing(double az, double el) const;
 
     bool hasPosition() const { return !std::isnan(m_az) && !std::isnan(m_el); }
     double azimuth() const { return m_az; }
@@ -92,20 +99,22 @@ public slots:
     void connectTo(const QString &uri);
     void disconnectFromRotator();
 
-    // Each returns false (and emits commandRefused with the reason) when the
-    // move is outside the limits, the controller lacks the command, or there
-    // is no link; in that case nothing is sent.
-    bool gotoPosition(double az, double el);
+    // Each is refused (the result says why, and commandRefused() too) when
+    // the move does not pass the gate, the controller lacks the command, or
+    // there is no link; then nothing is sent.
+    CommandResult gotoPosition(double az, double el); // az a bearing: the gate picks the position
     // One axis only, the other left where it is going (Easycomm I and GS-232
     // can only command both: there the other axis gets its current position).
-    bool gotoAxis(slew::session::Axis axis, double degrees);
-    bool moveAxis(slew::session::Axis axis, double degreesPerSecond); // + is right (CW) / up
-    bool stop(slew::session::Axes axes = slew::session::Axes::Both);
-    bool park();
-    bool home();
-    bool readConfig(int reg);
-    bool writeConfig(int reg, const QString &value);
-    bool sendRaw(const QString &line);
+    // A Bearing azimuth is chosen as gotoPosition does; an azimuth Position is
+    // exactly that mechanical angle (a tuning step).
+    CommandResult gotoAxis(slew::session::Axis axis, double degrees, AzimuthIs meaning = AzimuthIs::Bearing);
+    CommandResult moveAxis(slew::session::Axis axis, double degreesPerSecond); // + is right (CW) / up
+    CommandResult stop(slew::session::Axes axes = slew::session::Axes::Both);
+    CommandResult park();
+    CommandResult home();
+    CommandResult readConfig(int reg);
+    CommandResult writeConfig(int reg, const QString &value);
+    CommandResult sendRaw(const QString &line);
 
 signals:
     void stateChanged(slew::session::RotatorSession::State state, const QString &detail);
@@ -147,9 +156,12 @@ private:
     void applyConfig(int reg, const QString &text, bool numeric, double value);
     bool isEcho(const protocol::Message &m);
 
-    bool refuse(const QString &reason);
-    bool refuseMove(const QString &reason); // refuse(), and moveRefused()
-    bool requireLink();
+    CommandResult refuse(const QString &reason);
+    CommandResult refuseMove(const QString &reason); // refuse(), and moveRefused()
+    CommandResult requireLink();
+    // The gate's answer to one message of a raw line, empty when it may go.
+    QString rawMoveRefusal(const protocol::Message &m) const;
+    std::optional<double> knownAzimuth() const;
     void write(const QByteArray &line);
     void writeMove(const QByteArray &line); // a new move: the pending stop hold is void
     void sendStopHold();
@@ -185,7 +197,7 @@ private:
     int m_failedPolls = 0;
     QTimer m_staleTimer;
 
-    std::optional<model::RotatorLimits> m_reportedLimits; // from the link, if it knows them
+    model::MoveGate m_gate; // the profile's limits and the link's, if it reports them
     Capabilities m_caps;
     int m_probesOutstanding = 0;
     QHash<QByteArray, int> m_telemetryFailures; // consecutive misses per telemetry query

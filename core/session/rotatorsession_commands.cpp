@@ -34,28 +34,28 @@ QString printable(const QByteArray &line)
 } // namespace
 
 // --- Commands ---------------------------------------------------------------
+//
+// Every move asks m_gate (model/movegate.h) before anything is written, and
+// sends what the gate decided: the azimuth it chose, not the one asked for.
 
-bool RotatorSession::gotoPosition(double az, double el)
+std::optional<double> RotatorSession::knownAzimuth() const
 {
-    if (!requireLink())
-        return false;
-    if (QString e = model::checkElevation(m_profile.limits, el); !e.isEmpty())
-        return refuseMove(e);
-    const auto choice =
-        model::chooseAzimuth(m_profile.limits, az, hasPosition() ? std::optional<double>(m_az) : std::nullopt);
-    if (!choice.azimuth)
-        return refuseMove(choice.error);
-    const double targetAz = *choice.azimuth;
-    if (m_reportedLimits) {
-        const QString outside = tr("%1 (the limits the link reports)");
-        if (QString e = model::checkElevation(*m_reportedLimits, el); !e.isEmpty())
-            return refuseMove(outside.arg(e));
-        if (targetAz < m_reportedLimits->azMin - 1e-6 || targetAz > m_reportedLimits->azMax + 1e-6)
-            return refuseMove(outside.arg(tr("azimuth %1° is outside %2°..%3°")
-                                          .arg(targetAz, 0, 'f', 1)
-                                          .arg(m_reportedLimits->azMin, 0, 'f', 0)
-                                          .arg(m_reportedLimits->azMax, 0, 'f', 0)));
-    }
+    return hasPosition() ? std::optional<double>(m_az) : std::nullopt;
+}
+
+model::MoveCheck RotatorSession::previewPointing(double az, double el) const
+{
+    return m_gate.pointing(az, el, knownAzimuth());
+}
+
+CommandResult RotatorSession::gotoPosition(double az, double el)
+{
+    if (auto linked = requireLink(); !linked)
+        return linked;
+    const model::MoveCheck check = m_gate.pointing(az, el, knownAzimuth());
+    if (!check.allowed())
+        return refuseMove(check.refusal);
+    const double targetAz = check.azimuth;
     const QByteArray line = protocol::encodeSetPosition(targetAz, el, m_profile.dialect);
     rememberSent(Message::number(Op::Azimuth, std::round(targetAz * 100) / 100));
     rememberSent(Message::number(Op::Elevation, std::round(el * 100) / 100));
@@ -65,39 +65,30 @@ bool RotatorSession::gotoPosition(double az, double el)
     m_targetAz = targetAz;
     m_targetEl = el;
     emit targetChanged(targetAz, el);
-    return true;
+    return {};
 }
 
-bool RotatorSession::gotoAxis(Axis axis, double degrees)
+CommandResult RotatorSession::gotoAxis(Axis axis, double degrees, AzimuthIs meaning)
 {
-    if (!requireLink())
-        return false;
+    if (auto linked = requireLink(); !linked)
+        return linked;
     const bool az = axis == Axis::Azimuth;
     const Op op = az ? Op::Azimuth : Op::Elevation;
     const Dialect d = m_profile.dialect;
+    const model::MoveCheck check = !az ? m_gate.elevation(degrees)
+        : meaning == AzimuthIs::Bearing ? m_gate.azimuthBearing(degrees, knownAzimuth())
+                                        : m_gate.azimuthPosition(degrees);
+    if (!check.allowed())
+        return refuseMove(check.refusal);
+    const double target = az ? check.azimuth : check.elevation;
     // Easycomm I and GS-232 can only command both axes together.
     if (d == Dialect::Easycomm1 || protocol::isGs232(d)) {
         const double other = az ? (hasPosition() ? m_el : m_targetEl) : (hasPosition() ? m_az : m_targetAz);
         if (std::isnan(other))
             return refuse(tr("%1 moves both axes at once, and the other axis' position is not known yet")
                               .arg(protocol::dialectName(d)));
-        return az ? gotoPosition(degrees, other) : gotoPosition(other, degrees);
-    }
-    double target = degrees;
-    if (az) {
-        const auto choice =
-            model::chooseAzimuth(m_profile.limits, degrees, hasPosition() ? std::optional<double>(m_az) : std::nullopt);
-        if (!choice.azimuth)
-            return refuseMove(choice.error);
-        target = *choice.azimuth;
-    } else if (QString e = model::checkElevation(m_profile.limits, degrees); !e.isEmpty()) {
-        return refuseMove(e);
-    }
-    if (m_reportedLimits) {
-        const bool outside = az ? (target < m_reportedLimits->azMin - 1e-6 || target > m_reportedLimits->azMax + 1e-6)
-                                : !model::checkElevation(*m_reportedLimits, target).isEmpty();
-        if (outside)
-            return refuseMove(tr("%1° is outside the limits the link reports").arg(target, 0, 'f', 1));
+        // The chosen azimuth is a mechanical position now: sent as it is.
+        return az ? gotoPosition(target, other) : gotoPosition(other, target);
     }
     const Message m = Message::number(op, target);
     rememberSent(Message::number(op, std::round(target * 100) / 100));
@@ -108,28 +99,22 @@ bool RotatorSession::gotoAxis(Axis axis, double degrees)
         (az ? m_activeTarget->azimuth : m_activeTarget->elevation) = target;
     (az ? m_targetAz : m_targetEl) = target;
     emit targetChanged(m_targetAz, m_targetEl);
-    return true;
+    return {};
 }
 
-bool RotatorSession::moveAxis(Axis axis, double degreesPerSecond)
+CommandResult RotatorSession::moveAxis(Axis axis, double degreesPerSecond)
 {
-    if (!requireLink())
-        return false;
+    if (auto linked = requireLink(); !linked)
+        return linked;
     if (!std::isfinite(degreesPerSecond))
         return refuse(tr("speed is not a number"));
     if (degreesPerSecond == 0.0)
         return stop(axis == Axis::Azimuth ? Axes::Azimuth : Axes::Elevation);
     const bool az = axis == Axis::Azimuth;
     const bool positive = degreesPerSecond > 0;
-    const auto &lim = m_profile.limits;
-    if (hasPosition()) {
-        const double at = az ? m_az : m_el;
-        const double limit = positive ? (az ? lim.azMax : lim.elMax) : (az ? lim.azMin : lim.elMin);
-        if (positive ? at >= limit : at <= limit)
-            return refuseMove(tr("%1 is already at its %2 limit (%3°)")
-                              .arg(az ? tr("azimuth") : tr("elevation"), positive ? tr("upper") : tr("lower"))
-                              .arg(limit, 0, 'f', 1));
-    }
+    const std::optional<double> at = hasPosition() ? std::optional<double>(az ? m_az : m_el) : std::nullopt;
+    if (const model::MoveCheck check = m_gate.drive(az, positive, at); !check.allowed())
+        return refuseMove(check.refusal);
     const Dialect d = m_profile.dialect;
     const Op velocityOp = az ? (positive ? Op::VelocityRight : Op::VelocityLeft)
                              : (positive ? Op::VelocityUp : Op::VelocityDown);
@@ -147,13 +132,13 @@ bool RotatorSession::moveAxis(Axis axis, double degreesPerSecond)
     m_jogSpeed[az ? 0 : 1] = degreesPerSecond;
     writeMove(line);
     m_activeTarget.reset(); // the axis runs at a speed now, towards no target
-    return true;
+    return {};
 }
 
-bool RotatorSession::stop(Axes axes)
+CommandResult RotatorSession::stop(Axes axes)
 {
     // Stop goes straight to the wire, ahead of any waiting query, in every
-    // state where there is a link to send it on.
+    // state where there is a link to send it on. It is never gated.
     if (!m_link || !m_link->isOpen())
         return refuse(tr("not connected to a rotator: nothing to stop"));
     const bool az = int(axes) & int(Axes::Azimuth);
@@ -175,7 +160,7 @@ bool RotatorSession::stop(Axes axes)
         m_holdElevation = el || (m_stopHoldTimer.isActive() && m_holdElevation);
         m_stopHoldTimer.start(kStopHoldDelayMs);
     }
-    return true;
+    return {};
 }
 
 void RotatorSession::sendStopHold()
@@ -193,30 +178,38 @@ void RotatorSession::writeMove(const QByteArray &line)
     emit moveSent();
 }
 
-bool RotatorSession::park()
+CommandResult RotatorSession::park()
 {
-    if (!requireLink())
-        return false;
+    if (auto linked = requireLink(); !linked)
+        return linked;
     if (!protocol::dialectSupports(m_profile.dialect, Op::Park)) {
-        const bool sent = gotoPosition(m_profile.parkAz, m_profile.parkEl);
+        const CommandResult sent = gotoPosition(m_profile.parkAz, m_profile.parkEl);
         m_activeTarget.reset(); // parking is the operator's move, not a tracker target
         return sent;
     }
+    // The controller parks where its own registers say; the profile's park
+    // position is what was written there (CW7/CW8 pass the gate), and it is
+    // checked again against the limits in force now.
+    const model::MoveCheck check = m_gate.mechanical(m_profile.parkAz, m_profile.parkEl);
+    if (!check.allowed())
+        return refuseMove(tr("the park position: %1").arg(check.refusal));
     m_jogSpeed = {0.0, 0.0};
     writeMove(protocol::encodeLine({Message::query(Op::Park)}, m_profile.dialect));
     m_activeTarget.reset();
     m_targetAz = m_profile.parkAz;
     m_targetEl = m_profile.parkEl;
     emit targetChanged(m_targetAz, m_targetEl);
-    return true;
+    return {};
 }
 
-bool RotatorSession::home()
+CommandResult RotatorSession::home()
 {
-    if (!requireLink())
-        return false;
+    if (auto linked = requireLink(); !linked)
+        return linked;
     if (!protocol::dialectSupports(m_profile.dialect, Op::Reset))
         return refuse(tr("%1 has no RESET (homing) command").arg(protocol::dialectName(m_profile.dialect)));
+    // Homing runs each axis to its lower limit switch: the controller's own
+    // move, bounded by the switches rather than by soft limits.
     m_jogSpeed = {0.0, 0.0};
     writeMove(protocol::encodeLine({Message::query(Op::Reset)}, m_profile.dialect));
     m_activeTarget.reset();
@@ -225,13 +218,13 @@ bool RotatorSession::home()
     m_targetAz = m_profile.limits.azMin;
     m_targetEl = m_profile.limits.elMin;
     emit targetChanged(m_targetAz, m_targetEl);
-    return true;
+    return {};
 }
 
-bool RotatorSession::readConfig(int reg)
+CommandResult RotatorSession::readConfig(int reg)
 {
-    if (!requireLink())
-        return false;
+    if (auto linked = requireLink(); !linked)
+        return linked;
     if (!protocol::dialectSupports(m_profile.dialect, Op::ConfigRead))
         return refuse(tr("%1 has no config registers").arg(protocol::dialectName(m_profile.dialect)));
     if (reg < 0 || reg > 99999)
@@ -246,15 +239,16 @@ bool RotatorSession::readConfig(int reg)
         if (!ok)
             emit requestFailed(line, reason);
     };
-    if (!m_queue.isFull())
-        return enqueue(std::move(r));
-    return refuse(tr("the controller is not keeping up: %1 requests already waiting").arg(m_queue.size()));
+    if (m_queue.isFull())
+        return refuse(tr("the controller is not keeping up: %1 requests already waiting").arg(m_queue.size()));
+    enqueue(std::move(r));
+    return {};
 }
 
-bool RotatorSession::writeConfig(int reg, const QString &value)
+CommandResult RotatorSession::writeConfig(int reg, const QString &value)
 {
-    if (!requireLink())
-        return false;
+    if (auto linked = requireLink(); !linked)
+        return linked;
     if (!protocol::dialectSupports(m_profile.dialect, Op::ConfigWrite))
         return refuse(tr("%1 has no config registers").arg(protocol::dialectName(m_profile.dialect)));
     if (reg < 0 || reg > 99999)
@@ -270,20 +264,65 @@ bool RotatorSession::writeConfig(int reg, const QString &value)
         // Park position: a value outside the limits would park into an end stop.
         bool ok = false;
         const double angle = value.toDouble(&ok);
-        const QString e = !ok ? tr("park position must be a number")
-                          : reg == 7 ? model::chooseAzimuth(m_profile.limits, angle, std::nullopt).error
-                                     : model::checkElevation(m_profile.limits, angle);
-        if (!e.isEmpty())
-            return refuse(e);
+        if (!ok)
+            return refuse(tr("park position must be a number"));
+        const model::MoveCheck check = reg == 7 ? m_gate.azimuthPosition(angle) : m_gate.elevation(angle);
+        if (!check.allowed())
+            return refuseMove(check.refusal);
     }
     write(protocol::encodeLine({Message::word(Op::ConfigWrite, text, reg)}, m_profile.dialect));
-    return true;
+    return {};
 }
 
-bool RotatorSession::sendRaw(const QString &line)
+QString RotatorSession::rawMoveRefusal(const Message &m) const
 {
-    if (!requireLink())
-        return false;
+    // Angles in a raw line are mechanical positions, sent as typed; speeds
+    // and bare moves drive towards a limit, as a jog does.
+    switch (m.op) {
+    case Op::Azimuth:
+        return m.hasValue ? m_gate.azimuthPosition(m.value).refusal : QString();
+    case Op::Elevation:
+        return m.hasValue ? m_gate.elevation(m.value).refusal : QString();
+    case Op::VelocityLeft:
+    case Op::VelocityRight:
+    case Op::VelocityUp:
+    case Op::VelocityDown:
+        if (!m.hasValue || m.value == 0.0)
+            return {}; // a zero speed holds the axis
+        [[fallthrough]];
+    case Op::MoveLeft:
+    case Op::MoveRight:
+    case Op::MoveUp:
+    case Op::MoveDown: {
+        const bool az = m.op == Op::VelocityLeft || m.op == Op::VelocityRight || m.op == Op::MoveLeft
+            || m.op == Op::MoveRight;
+        const bool positive = m.op == Op::VelocityRight || m.op == Op::VelocityUp || m.op == Op::MoveRight
+            || m.op == Op::MoveUp;
+        const std::optional<double> at = hasPosition() ? std::optional<double>(az ? m_az : m_el) : std::nullopt;
+        return m_gate.drive(az, positive, at).refusal;
+    }
+    case Op::Park: {
+        const model::MoveCheck check = m_gate.mechanical(m_profile.parkAz, m_profile.parkEl);
+        return check.allowed() ? QString() : tr("the park position: %1").arg(check.refusal);
+    }
+    case Op::ConfigWrite:
+        if (m.index == 7 || m.index == 8) {
+            bool ok = false;
+            const double angle = QString::fromLatin1(m.text.view()).toDouble(&ok);
+            if (!ok)
+                return tr("park position must be a number");
+            return (m.index == 7 ? m_gate.azimuthPosition(angle) : m_gate.elevation(angle)).refusal;
+        }
+        return {};
+    default:
+        return {};
+    }
+}
+
+CommandResult RotatorSession::sendRaw(const QString &line)
+{
+    if (auto linked = requireLink(); !linked)
+        return linked;
     const QByteArray bytes = line.trimmed().toLatin1();
     if (bytes.isEmpty())
         return refuse(tr("nothing to send"));
@@ -293,25 +332,18 @@ bool RotatorSession::sendRaw(const QString &line)
         if (c < ' ' || c > '~')
             return refuse(tr("a raw line may hold printable ASCII only"));
     }
-    // Raw lines pass the same limit checks as every other move.
+    // Raw lines pass the same gate as every other move.
     QString error;
     protocol::Parser check(m_profile.dialect);
     check.feed(bytes + '\n', [&](const Message &m) {
-        if (!error.isEmpty() || !m.hasValue)
-            return;
-        if (m.op == Op::Azimuth) {
-            const auto choice = model::chooseAzimuth(m_profile.limits, m.value, std::nullopt);
-            if (!choice.azimuth || std::abs(*choice.azimuth - m.value) > 1e-6)
-                error = choice.error.isEmpty() ? tr("azimuth %1° is outside the limits").arg(m.value) : choice.error;
-        } else if (m.op == Op::Elevation) {
-            error = model::checkElevation(m_profile.limits, m.value);
-        }
+        if (error.isEmpty())
+            error = rawMoveRefusal(m);
     });
     if (!error.isEmpty())
-        return refuse(error);
+        return refuseMove(error);
     writeMove(bytes + '\n');
     m_activeTarget.reset(); // a raw line may send the rotator anywhere, or stop it
-    return true;
+    return {};
 }
 
 } // namespace slew::session

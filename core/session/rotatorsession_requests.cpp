@@ -22,22 +22,22 @@ constexpr int kTelemetryGiveUpAfter = 3; // a query unanswered this often is not
 
 // --- Sending ----------------------------------------------------------------
 
-bool RotatorSession::refuse(const QString &reason)
+CommandResult RotatorSession::refuse(const QString &reason)
 {
     emit commandRefused(reason);
-    return false;
+    return CommandResult{reason};
 }
 
-bool RotatorSession::refuseMove(const QString &reason)
+CommandResult RotatorSession::refuseMove(const QString &reason)
 {
     emit moveRefused(reason);
     return refuse(reason);
 }
 
-bool RotatorSession::requireLink()
+CommandResult RotatorSession::requireLink()
 {
     if (m_state == State::Connected && m_link && m_link->isOpen())
-        return true;
+        return {};
     return refuse(tr("not connected to a rotator"));
 }
 

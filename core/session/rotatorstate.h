@@ -30,6 +30,13 @@ enum ErrorBit : std::uint16_t {
     ErrorWatchdog = 16,
 };
 
+// What a command did: sent (true), or refused, and then nothing was sent;
+// refusal says why (commandRefused() carries the same words).
+struct CommandResult {
+    QString refusal;
+    explicit operator bool() const { return refusal.isEmpty(); }
+};
+
 // A position the rotator was sent to (azimuth as commanded, mechanical).
 struct PointingTarget {
     double azimuth = 0.0;

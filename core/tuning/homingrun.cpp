@@ -47,15 +47,8 @@ bool HomingRun::start(double timeoutSeconds)
         m_error = tr("the homing time limit must be positive");
         return false;
     }
-    QString refusal;
-    const auto catcher = connect(m_session, &RotatorSession::commandRefused, this, [&refusal](const QString &why) {
-        if (refusal.isEmpty())
-            refusal = why;
-    });
-    const bool sent = m_session->home();
-    disconnect(catcher);
-    if (!sent) {
-        m_error = refusal.isEmpty() ? tr("the rotator refused RESET") : refusal;
+    if (const auto sent = m_session->home(); !sent) {
+        m_error = sent.refusal;
         return false;
     }
     m_running = true;

@@ -85,18 +85,12 @@ bool RegisterReadback::run(const QMap<int, QString> &writes, const QList<int> &r
         m_error = tr("no registers to write or read");
         return false;
     }
-    // Refusals come synchronously; catch the reason of the first one.
+    // The first refusal stops the run; what was sent before it stands.
     QString refusal;
-    const auto catcher = connect(m_session, &session::RotatorSession::commandRefused, this,
-                                 [&refusal](const QString &why) {
-                                     if (refusal.isEmpty())
-                                         refusal = why;
-                                 });
     for (auto it = writes.begin(); it != writes.end() && refusal.isEmpty(); ++it)
-        m_session->writeConfig(it.key(), it.value());
+        refusal = m_session->writeConfig(it.key(), it.value()).refusal;
     for (int i = 0; i < m_results.size() && refusal.isEmpty(); ++i)
-        m_session->readConfig(m_results[i].reg);
-    disconnect(catcher);
+        refusal = m_session->readConfig(m_results[i].reg).refusal;
     if (!refusal.isEmpty()) {
         m_error = refusal;
         m_results.clear();

@@ -2,8 +2,7 @@
 
 #include "session/rotatorsession.h"
 
-#include "model/rotatorlimits.h"
-#include "protocol/encoder.h"
+#include "model/movegate.h"
 
 #include <algorithm>
 #include <cmath>
@@ -47,27 +46,16 @@ bool StepExperiment::start(Axis axis, double from, double to)
     m_from = from;
     m_to = to;
     m_response = StepResponse{};
-    // Both ends are checked against the limits before the first byte goes out.
-    const model::RotatorLimits &lim = m_session->profile().limits;
-    for (double p : {from, to}) {
-        const QString e = axis == Axis::Azimuth
-            ? (p < lim.azMin || p > lim.azMax ? tr("azimuth %1° is outside %2°..%3°").arg(p).arg(lim.azMin).arg(lim.azMax)
-                                              : QString())
-            : model::checkElevation(lim, p);
-        if (!e.isEmpty()) {
-            m_error = e;
-            return false;
-        }
+    // The far end is put to the session's gate before the first byte goes
+    // out; the near end is sent, and so passes the gate, just below.
+    const model::MoveGate &gate = m_session->moveGate();
+    if (const model::MoveCheck far = axis == Axis::Azimuth ? gate.azimuthPosition(to) : gate.elevation(to);
+        !far.allowed()) {
+        m_error = far.refusal;
+        return false;
     }
-    QString refusal;
-    const auto catcher = connect(m_session, &RotatorSession::commandRefused, this, [&refusal](const QString &why) {
-        if (refusal.isEmpty())
-            refusal = why;
-    });
-    const bool ok = command(from);
-    disconnect(catcher);
-    if (!ok) {
-        m_error = refusal.isEmpty() ? tr("the rotator refused the move") : refusal;
+    if (const session::CommandResult sent = command(from); !sent) {
+        m_error = sent.refusal;
         return false;
     }
     m_phase = Phase::Preparing;
@@ -80,17 +68,13 @@ bool StepExperiment::start(Axis axis, double from, double to)
     return true;
 }
 
-bool StepExperiment::command(double position)
+session::CommandResult StepExperiment::command(double position)
 {
-    // Only the stepped axis is commanded: a set-position for both would make
-    // the session take the other axis' unchanged reading for an echo of the
-    // command and hold back whole position replies for a second. The line
-    // passes the session's limit checks like any other move.
-    const protocol::Op op = m_axis == Axis::Azimuth ? protocol::Op::Azimuth : protocol::Op::Elevation;
-    const QByteArray line = protocol::encodeLine({protocol::Message::number(op, position)}, m_session->profile().dialect);
-    if (line.trimmed().isEmpty())
-        return false;
-    return m_session->sendRaw(QString::fromLatin1(line).trimmed());
+    // Only the stepped axis is commanded where the dialect can (a set-position
+    // for both would make the session take the other axis' unchanged reading
+    // for an echo of the command). The position is mechanical: a step near
+    // the overlap must not be turned into the same bearing elsewhere.
+    return m_session->gotoAxis(m_axis, position, RotatorSession::AzimuthIs::Position);
 }
 
 void StepExperiment::onPosition(double az, double el, bool stale)
@@ -140,8 +124,8 @@ void StepExperiment::beginStep()
 {
     m_response.start = reading();
     m_response.target = m_to;
-    if (!command(m_to)) {
-        fail(tr("the rotator refused the step to %1°").arg(m_to));
+    if (const session::CommandResult sent = command(m_to); !sent) {
+        fail(tr("the rotator refused the step to %1°: %2").arg(m_to).arg(sent.refusal));
         return;
     }
     m_phase = Phase::Stepping;

@@ -59,7 +59,7 @@ private:
     void onPosition(double az, double el, bool stale);
     void evaluate();
     void beginStep();
-    bool command(double position);
+    session::CommandResult command(double position);
     void end();
     void fail(const QString &reason);
     double reading() const;

@@ -60,8 +60,7 @@ void ParkPage::initializePage()
 bool ParkPage::validatePage()
 {
     model::RotatorProfile &p = m_wizard->profile();
-    const auto choice = model::chooseAzimuth(p.limits, m_az->value(), std::nullopt);
-    const QString e = choice.azimuth ? model::checkElevation(p.limits, m_el->value()) : choice.error;
+    const QString e = model::MoveGate(p.limits).pointing(m_az->value(), m_el->value(), std::nullopt).refusal;
     if (!e.isEmpty()) {
         m_status->setText(e);
         return false;

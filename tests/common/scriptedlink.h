@@ -1,0 +1,145 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// An in-process Link for session tests: no socket, no simulator. It keeps
+// every byte the session writes, answers position queries from a position
+// the test sets, and can report travel limits as a rotctld link does. The
+// session cannot tell it from a serial port (transport/link.h).
+//
+//   registerScriptedLinkScheme();          // once, in initTestCase
+//   session.connectTo("scripted:");        // the last one made is lastScriptedLink()
+
+#include "model/rotatorlimits.h"
+#include "protocol/message.h"
+#include "protocol/parser.h"
+#include "transport/link.h"
+#include "transport/linkfactory.h"
+
+#include <QIODevice>
+#include <QPointer>
+#include <QTimer>
+
+#include <optional>
+
+// The byte stream behind the link: what the session writes is kept and
+// answered; answers are read back as a device's would be.
+class ScriptedDevice : public QIODevice {
+public:
+    double azimuth = 0.0;
+    double elevation = 0.0;
+    QByteArray written; // everything the session wrote, in order
+
+    bool isSequential() const override { return true; }
+    qint64 bytesAvailable() const override { return m_pending.size() + QIODevice::bytesAvailable(); }
+
+    // Easycomm moves in what was written since `from`: set positions, speeds,
+    // bare moves, park, home and register writes. Queries are not moves.
+    QStringList movesSince(qsizetype from) const
+    {
+        QStringList moves;
+        slew::protocol::Parser parser(slew::protocol::Dialect::Easycomm3);
+        parser.feed(QByteArrayView(written).sliced(from), [&](const slew::protocol::Message &m) {
+            using slew::protocol::Op;
+            const bool move = ((m.op == Op::Azimuth || m.op == Op::Elevation) && m.hasValue)
+                || m.op == Op::VelocityLeft || m.op == Op::VelocityRight || m.op == Op::VelocityUp
+                || m.op == Op::VelocityDown || m.op == Op::MoveLeft || m.op == Op::MoveRight || m.op == Op::MoveUp
+                || m.op == Op::MoveDown || m.op == Op::Park || m.op == Op::Reset || m.op == Op::ConfigWrite;
+            if (move)
+                moves << QString::fromLatin1(slew::protocol::mnemonic(m.op)) + (m.hasValue ? QString::number(m.value) : QString());
+        });
+        return moves;
+    }
+
+protected:
+    qint64 readData(char *data, qint64 maxSize) override
+    {
+        const qint64 n = std::min<qint64>(maxSize, m_pending.size());
+        std::copy_n(m_pending.constData(), n, data);
+        m_pending.remove(0, n);
+        return n;
+    }
+
+    qint64 writeData(const char *data, qint64 size) override
+    {
+        written.append(data, size);
+        m_line.append(data, size);
+        for (qsizetype end; (end = m_line.indexOf('\n')) >= 0;) {
+            answer(m_line.left(end));
+            m_line.remove(0, end + 1);
+        }
+        return size;
+    }
+
+private:
+    // Position queries get the position; everything else goes unanswered,
+    // as an older controller leaves what it does not know.
+    void answer(const QByteArray &line)
+    {
+        QByteArrayList out;
+        for (const QByteArray &token : line.simplified().split(' ')) {
+            if (token == "AZ")
+                out << "AZ" + QByteArray::number(azimuth, 'f', 1);
+            else if (token == "EL")
+                out << "EL" + QByteArray::number(elevation, 'f', 1);
+        }
+        if (out.isEmpty())
+            return;
+        m_pending += out.join(' ') + '\n';
+        QTimer::singleShot(0, this, [this] {
+            if (!m_pending.isEmpty())
+                emit readyRead();
+        });
+    }
+
+    QByteArray m_pending;
+    QByteArray m_line;
+};
+
+class ScriptedLink : public slew::transport::Link {
+public:
+    using Link::Link;
+
+    // Limits to report once open, as rotctld's \dump_state does.
+    std::optional<slew::model::RotatorLimits> reports;
+
+    ScriptedDevice *scripted() { return &m_device; }
+    QIODevice *device() override { return &m_device; }
+    bool isOpen() const override { return m_device.isOpen(); }
+
+    void open() override
+    {
+        m_device.open(QIODevice::ReadWrite);
+        QTimer::singleShot(0, this, [this] {
+            emit opened();
+            if (reports)
+                emit limitsReported(reports->azMin, reports->azMax, reports->elMin, reports->elMax);
+        });
+    }
+
+    void close() override { m_device.close(); }
+
+private:
+    ScriptedDevice m_device;
+};
+
+// The link most recently made for a `scripted:` URI, and what it reports.
+inline QPointer<ScriptedLink> &lastScriptedLink()
+{
+    static QPointer<ScriptedLink> last;
+    return last;
+}
+
+inline std::optional<slew::model::RotatorLimits> &scriptedLinkReports()
+{
+    static std::optional<slew::model::RotatorLimits> reports;
+    return reports;
+}
+
+inline void registerScriptedLinkScheme()
+{
+    slew::transport::registerLinkScheme(QStringLiteral("scripted"), [](const QUrl &, const QString &uri) {
+        auto link = std::make_unique<ScriptedLink>(uri);
+        link->reports = scriptedLinkReports();
+        lastScriptedLink() = link.get();
+        return slew::transport::LinkResult{std::move(link), {}};
+    });
+}

@@ -1,0 +1,221 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Every path to the wire passes the one gate (model/movegate.h). The session
+// runs over an in-process scripted link that reports narrower limits than
+// the profile's (azimuth 10..350, elevation 0..80 against 0..360, 0..90), as
+// a rotctld peer does, and stands at azimuth 350, on the reported limit.
+// Each path is then asked for a move outside those limits, and the test
+// reads the bytes that reached the link: no move may be among them.
+//
+// The paths: the session's own commands, the go-to panel, a plot click and
+// its confirmation, the jog pad, presets, park, the register editor, the
+// traffic console's raw line, the rotctld server, the tuner's step and
+// slewctl's runner. A legal go-to at the end shows that the link's record
+// does see moves, so the test can fail.
+
+#include "../common/scriptedlink.h"
+
+#include "bridge/rotctldserver.h"
+#include "configeditor.h"
+#include "console/consolecommand.h"
+#include "console/consolerunner.h"
+#include "gotopanel.h"
+#include "jogpad.h"
+#include "mainwindow.h"
+#include "parkhomepanel.h"
+#include "polarplotwidget.h"
+#include "presetpanel.h"
+#include "session/rotatorsession.h"
+#include "targetconfirmation.h"
+#include "trafficconsole.h"
+#include "tuning/stepexperiment.h"
+
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTcpSocket>
+#include <QTest>
+
+#include <functional>
+
+using slew::session::Axis;
+using slew::session::RotatorSession;
+
+class EveryMoveGatedTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        registerScriptedLinkScheme();
+        scriptedLinkReports() = slew::model::RotatorLimits{10.0, 350.0, 0.0, 80.0};
+    }
+
+    void init()
+    {
+        m_session = std::make_unique<RotatorSession>();
+        slew::model::RotatorProfile profile; // 0..360, 0..90, park at 0/90
+        m_session->setProfile(profile);
+        m_window = std::make_unique<slew::ui::MainWindow>(m_session.get());
+        m_window->show();
+        m_session->connectTo(QStringLiteral("scripted:"));
+        QTRY_VERIFY(lastScriptedLink());
+        m_device = lastScriptedLink()->scripted();
+        m_device->azimuth = 350.0;
+        m_device->elevation = 40.0;
+        QTRY_VERIFY(m_session->isConnected() && m_session->hasPosition() && m_session->reportedLimits());
+        QCOMPARE(m_session->azimuth(), 350.0);
+    }
+
+    void cleanup()
+    {
+        m_window.reset();
+        m_session.reset();
+    }
+
+    void theSessionsOwnCommands()
+    {
+        expectNothingSent("go-to past the link's azimuth", [&] { QVERIFY(!m_session->gotoPosition(355, 10)); });
+        expectNothingSent("go-to past the profile's elevation", [&] { QVERIFY(!m_session->gotoPosition(100, 95)); });
+        expectNothingSent("one axis past the link's elevation",
+                          [&] { QVERIFY(!m_session->gotoAxis(Axis::Elevation, 85)); });
+        expectNothingSent("one azimuth position past the link's limit", [&] {
+            QVERIFY(!m_session->gotoAxis(Axis::Azimuth, 5, RotatorSession::AzimuthIs::Position));
+        });
+        expectNothingSent("a drive further into the limit it stands on",
+                          [&] { QVERIFY(!m_session->moveAxis(Axis::Azimuth, 5.0)); });
+        expectNothingSent("park at an elevation past the link's limit", [&] { QVERIFY(!m_session->park()); });
+        expectNothingSent("a park azimuth register past the link's limit",
+                          [&] { QVERIFY(!m_session->writeConfig(7, QStringLiteral("355"))); });
+        for (const char *raw : {"AZ355.0 EL10.0", "EL85", "VR5000", "MR", "CW8,85", "PARK"})
+            expectNothingSent(QByteArray("raw ") + raw, [&] { QVERIFY(!m_session->sendRaw(QString::fromLatin1(raw))); });
+    }
+
+    void theOperatorWindow()
+    {
+        auto *go = m_window->gotoPanel();
+        expectNothingSent("go-to panel", [&] {
+            go->findChild<QLineEdit *>(QStringLiteral("gotoAzimuth"))->setText(QStringLiteral("355"));
+            go->findChild<QLineEdit *>(QStringLiteral("gotoElevation"))->setText(QStringLiteral("10"));
+            QVERIFY(!go->findChild<QPushButton *>(QStringLiteral("gotoButton"))->isEnabled());
+            QVERIFY(go->findChild<QLabel *>(QStringLiteral("gotoMessage"))->text().contains(QStringLiteral("link reports")));
+            QVERIFY(!go->go()); // Enter pressed all the same
+        }, false);
+        expectNothingSent("plot click", [&] { emit m_window->polarPlot()->targetPicked(355, 10); }, false);
+        expectNothingSent("a confirmed plot target",
+                          [&] { emit m_window->targetConfirmation()->accepted(355, 10); });
+        expectNothingSent("jog pad", [&] {
+            auto *right = m_window->jogPad()->findChild<QPushButton *>(QStringLiteral("jogRight"));
+            QTest::mousePress(right, Qt::LeftButton);
+            QTest::mouseRelease(right, Qt::LeftButton);
+        });
+        expectNothingSent("park button", [&] {
+            QTest::mouseClick(m_window->findChild<QPushButton *>(QStringLiteral("parkButton")), Qt::LeftButton);
+        });
+        // A preset stored where the rotator once stood, past what the link
+        // now allows.
+        m_device->azimuth = 355.0;
+        QTRY_COMPARE(m_session->azimuth(), 355.0);
+        QVERIFY(m_window->presetPanel()->storeCurrent(QStringLiteral("beyond")));
+        m_device->azimuth = 350.0;
+        QTRY_COMPARE(m_session->azimuth(), 350.0);
+        const int beyond = int(m_window->presetPanel()->presets().size()) - 1;
+        expectNothingSent("preset", [&] { QVERIFY(!m_window->presetPanel()->recall(beyond)); });
+        expectNothingSent("register editor", [&] {
+            auto *editor = m_window->configEditor();
+            auto *value = editor->findChild<QLineEdit *>(QStringLiteral("configValue7"));
+            QVERIFY(value);
+            // As typed (the field waits for the controller's value, which the
+            // scripted link never gives, so it takes no keys).
+            value->setText(QStringLiteral("355"));
+            emit value->textEdited(value->text());
+            QCOMPARE(editor->apply(), 0);
+            QCOMPARE(editor->fieldState(7), slew::ui::ConfigEditor::FieldState::Invalid);
+        }, false);
+        expectNothingSent("traffic console", [&] {
+            auto *console = m_window->trafficConsole();
+            console->findChild<QLineEdit *>(QStringLiteral("rawCommand"))->setText(QStringLiteral("AZ355"));
+            QTest::mouseClick(console->findChild<QPushButton *>(QStringLiteral("rawSend")), Qt::LeftButton);
+            QVERIFY(console->findChild<QLabel *>(QStringLiteral("rawMessage"))->text().startsWith(QStringLiteral("Not sent")));
+        });
+    }
+
+    void theRotctldServer()
+    {
+        slew::bridge::RotctldServer server(m_session.get());
+        QString error;
+        QVERIFY2(server.listen(QHostAddress::LocalHost, 0, &error), qPrintable(error));
+        QTcpSocket tracker;
+        tracker.connectToHost(QHostAddress::LocalHost, server.port());
+        QTRY_COMPARE(tracker.state(), QAbstractSocket::ConnectedState);
+        for (const char *request : {"P 355 10\n", "P 100 85\n", "M 16 50\n"}) {
+            expectNothingSent(QByteArray("rotctld ") + request, [&] {
+                tracker.write(request);
+                QTRY_VERIFY(tracker.canReadLine());
+                const QByteArray answer = tracker.readLine();
+                QVERIFY2(answer.startsWith("RPRT -"), (QByteArray(request) + " -> " + answer).constData());
+            });
+        }
+    }
+
+    void theTunerAndSlewctl()
+    {
+        slew::tuning::StepExperiment step(m_session.get());
+        expectNothingSent("tuning step ending past the link's azimuth", [&] {
+            QVERIFY(!step.start(Axis::Azimuth, 340, 355));
+            QVERIFY2(step.error().contains(QStringLiteral("link reports")), qPrintable(step.error()));
+        }, false);
+        expectNothingSent("tuning step starting past the link's elevation",
+                          [&] { QVERIFY(!step.start(Axis::Elevation, 85, 70)); });
+
+        slew::console::ConsoleRunner runner(m_session.get(), false);
+        QSignalSpy finished(&runner, &slew::console::ConsoleRunner::finished);
+        expectNothingSent("slewctl goto", [&] {
+            QString error;
+            const auto command = slew::console::parseConsoleCommand({QStringLiteral("goto"), QStringLiteral("355"),
+                                                                     QStringLiteral("10")},
+                                                                    &error);
+            QVERIFY2(command, qPrintable(error));
+            runner.run(*command);
+            QTRY_COMPARE(finished.count(), 1);
+            QCOMPARE(finished.at(0).at(0).value<slew::console::ExitCode>(), slew::console::ExitCode::Refused);
+        });
+    }
+
+    void aLegalMoveIsSeen()
+    {
+        const qsizetype mark = m_device->written.size();
+        QVERIFY(m_session->gotoPosition(100, 40));
+        const QStringList moves = m_device->movesSince(mark);
+        QVERIFY2(moves.size() == 2, qPrintable(moves.join(u' ')));
+        QCOMPARE(moves.at(0), QStringLiteral("AZ100"));
+    }
+
+private:
+    // Runs one path, then checks that no move reached the link. A refusal
+    // by the session itself is expected too unless the widget refused first
+    // (sessionRefuses false: the widget showed the gate's preview instead).
+    void expectNothingSent(const QByteArray &path, const std::function<void()> &act, bool sessionRefuses = true)
+    {
+        QSignalSpy refused(m_session.get(), &RotatorSession::moveRefused);
+        const qsizetype mark = m_device->written.size();
+        act();
+        if (QTest::currentTestFailed()) {
+            qWarning("path: %s", path.constData());
+            return;
+        }
+        QCoreApplication::processEvents();
+        const QStringList moves = m_device->movesSince(mark);
+        QVERIFY2(moves.isEmpty(), qPrintable(QStringLiteral("%1 sent %2").arg(QString::fromLatin1(path), moves.join(u' '))));
+        if (sessionRefuses)
+            QVERIFY2(refused.count() >= 1, path.constData());
+    }
+
+    std::unique_ptr<RotatorSession> m_session;
+    std::unique_ptr<slew::ui::MainWindow> m_window;
+    ScriptedDevice *m_device = nullptr;
+};
+
+QTEST_MAIN(EveryMoveGatedTest)
+#include "tst_everymovegated.moc"
