@@ -1,6 +1,7 @@
 #pragma once
-// The travel a rotator allows, and the checks every move passes before a byte
-// is sent. Azimuth may reach past 360° (a Yaesu-style 450° overlap, the Micro-2g program):
+// The travel a rotator allows, and the two checks MoveGate (movegate.h) is
+// built from. Everything else asks the gate, which also knows the limits a
+// link reports. Azimuth may reach past 360° (a Yaesu-style 450° overlap, the Micro-2g program):
 // then one bearing has two legal positions and the shortest move is chosen.
 
 #include <QString>

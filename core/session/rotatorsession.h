@@ -12,7 +12,7 @@
 #include "model/rotatorprofile.h"
 #include "protocol/parser.h"
 #include "requestqueue.h"
-#include "rotatorstate.h"
+#include "sessiontypes.h"
 
 #include <QElapsedTimer>
 #include <QHash>

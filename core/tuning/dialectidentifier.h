@@ -6,7 +6,7 @@
 // Easycomm I answers nothing, so it can only be chosen by hand.
 
 #include "protocol/dialect.h"
-#include "session/rotatorstate.h"
+#include "session/sessiontypes.h"
 
 #include <QList>
 #include <QObject>

@@ -8,7 +8,7 @@
 #include "sampleclock.h"
 #include "stepresponse.h"
 
-#include "session/rotatorstate.h"
+#include "session/sessiontypes.h"
 
 #include <QElapsedTimer>
 #include <QObject>

@@ -6,7 +6,7 @@
 #include "stepresponse.h"
 
 #include "model/rotatorprofile.h"
-#include "session/rotatorstate.h"
+#include "session/sessiontypes.h"
 
 #include <QMetaType>
 #include <QStringList>

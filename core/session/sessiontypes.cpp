@@ -1,4 +1,4 @@
-#include "rotatorstate.h"
+#include "sessiontypes.h"
 
 #include <QStringList>
 

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// What the session knows about the rotator, as plain values that signals
-// carry and widgets show.
+// The plain values the session deals in, which its signals carry and
+// widgets show: axes, status and error bits, telemetry, capabilities, a
+// pointing target and a command's result.
 
 #include <QMetaType>
 #include <QString>
