@@ -12,7 +12,7 @@
 #include "bridge/headlessstation.h"
 #include "bridge/rotctldserver.h"
 #include "protocol/dialect.h"
-#include "sim/terminationsignalwatcher.h"
+#include "cli/terminationsignalwatcher.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -106,8 +106,8 @@ int runHeadless(int argc, char *argv[])
     if (!station.start(config, &error))
         return fail(error);
 
-    slew::sim::TerminationSignalWatcher terminationSignals;
-    QObject::connect(&terminationSignals, &slew::sim::TerminationSignalWatcher::terminationRequested, &station,
+    slew::cli::TerminationSignalWatcher terminationSignals;
+    QObject::connect(&terminationSignals, &slew::cli::TerminationSignalWatcher::terminationRequested, &station,
                      [&station](int number) { station.shutdown(QStringLiteral("signal %1").arg(number)); });
     QObject::connect(&station, &slew::bridge::HeadlessStation::finished, &app, &QCoreApplication::quit);
     return app.exec();

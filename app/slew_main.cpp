@@ -18,7 +18,7 @@
 #include "bridge/rotctldserver.h"
 #include "session/rotatorsession.h"
 #include "session/stopbeforeexit.h"
-#include "sim/terminationsignalwatcher.h"
+#include "cli/terminationsignalwatcher.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -152,8 +152,8 @@ int main(int argc, char *argv[])
         slew::ui::scheduleWindowSnapshot(&window, args.screenshot, args.settleMs);
     // SIGTERM (a logout, systemd, kill) or SIGINT: as the station service
     // does, stop the rotator and let the stop leave before exiting.
-    slew::sim::TerminationSignalWatcher terminationSignals;
-    QObject::connect(&terminationSignals, &slew::sim::TerminationSignalWatcher::terminationRequested, &app,
+    slew::cli::TerminationSignalWatcher terminationSignals;
+    QObject::connect(&terminationSignals, &slew::cli::TerminationSignalWatcher::terminationRequested, &app,
                      [&session, &window, &app](int number) {
                          std::fprintf(stderr, "slew: signal %d: stopping the rotator, then exiting\n", number);
                          window.rotctldServer()->close(); // no tracker moves it again meanwhile

@@ -9,7 +9,7 @@
 #include "sim/simulator.h"
 #include "sim/simulatoroptions.h"
 #include "sim/simulatortcpserver.h"
-#include "sim/terminationsignalwatcher.h"
+#include "cli/terminationsignalwatcher.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -106,8 +106,8 @@ int main(int argc, char *argv[])
     }
     ready += QStringLiteral(" dialect %1").arg(slew::protocol::dialectName(options.dialect));
 
-    TerminationSignalWatcher terminationSignals;
-    QObject::connect(&terminationSignals, &TerminationSignalWatcher::terminationRequested, &app, &QCoreApplication::quit);
+    slew::cli::TerminationSignalWatcher terminationSignals;
+    QObject::connect(&terminationSignals, &slew::cli::TerminationSignalWatcher::terminationRequested, &app, &QCoreApplication::quit);
 
     std::printf("%s\n", qPrintable(ready));
     std::fflush(stdout);

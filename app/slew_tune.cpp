@@ -9,7 +9,7 @@
 #include "model/rotatorprofile.h"
 #include "protocol/dialect.h"
 #include "session/rotatorsession.h"
-#include "sim/terminationsignalwatcher.h"
+#include "cli/terminationsignalwatcher.h"
 #include "tuning/tuningsequence.h"
 
 #include <QCommandLineParser>
@@ -155,8 +155,8 @@ int runTune(int argc, char **argv)
                          }
                      });
     // Ctrl-C stops the rotator and puts the old gains back before leaving.
-    slew::sim::TerminationSignalWatcher terminations;
-    QObject::connect(&terminations, &slew::sim::TerminationSignalWatcher::terminationRequested, &app, [&] {
+    slew::cli::TerminationSignalWatcher terminations;
+    QObject::connect(&terminations, &slew::cli::TerminationSignalWatcher::terminationRequested, &app, [&] {
         if (!started) {
             QMetaObject::invokeMethod(&app, &QCoreApplication::quit, Qt::QueuedConnection);
             return;

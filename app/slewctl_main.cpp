@@ -10,7 +10,7 @@
 #include "model/rotatorprofile.h"
 #include "protocol/dialect.h"
 #include "session/rotatorsession.h"
-#include "sim/terminationsignalwatcher.h"
+#include "cli/terminationsignalwatcher.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -150,13 +150,13 @@ int main(int argc, char *argv[])
                      [json](const QString &l) { say(stderr, json ? l : QStringLiteral("slewctl: ") + l); });
 
     int exitCode = 0;
-    slew::sim::TerminationSignalWatcher interrupts;
+    slew::cli::TerminationSignalWatcher interrupts;
     if (once) {
         QObject::connect(&runner, &ConsoleRunner::finished, &app, [&](ExitCode code) {
             exitCode = int(code);
             app.quit();
         });
-        QObject::connect(&interrupts, &slew::sim::TerminationSignalWatcher::terminationRequested, &runner,
+        QObject::connect(&interrupts, &slew::cli::TerminationSignalWatcher::terminationRequested, &runner,
                          &ConsoleRunner::interrupt);
         session.connectTo(profile.uri);
         runner.run(*once);
@@ -218,7 +218,7 @@ int main(int argc, char *argv[])
         next();
     });
     // Ctrl-C ends what runs; at an idle prompt it leaves.
-    QObject::connect(&interrupts, &slew::sim::TerminationSignalWatcher::terminationRequested, &app, [&] {
+    QObject::connect(&interrupts, &slew::cli::TerminationSignalWatcher::terminationRequested, &app, [&] {
         if (runner.isRunning())
             runner.interrupt();
         else

@@ -1,6 +1,7 @@
 #include "connectionbar.h"
 
-#include "sim/simulatorscheme.h"
+#include "session/profilehints.h"
+#include "transport/linkfactory.h"
 #include "transport/serialports.h"
 
 #include <QComboBox>
@@ -215,9 +216,10 @@ void ConnectionBar::connectToRotator()
     model::RotatorProfile profile = m_session->profile();
     profile.uri = target;
     profile.dialect = dialect();
-    if (target.startsWith(QLatin1String("sim:"))) {
-        // The simulator's URI says what rotator it is; the window follows it.
-        profile = sim::profileForSimulator(profile, target);
+    // What the link says of its far end (a simulator's URI names the
+    // rotator and its dialect); hardware says nothing and the profile stands.
+    if (const transport::LinkHints hints = transport::linkHintsFor(target); !hints.dialect.isEmpty()) {
+        profile = session::profileWithHints(profile, hints);
         setDialect(profile.dialect);
     }
     m_session->setProfile(profile);

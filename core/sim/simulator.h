@@ -20,6 +20,7 @@ public:
     explicit Simulator(const SimulatorOptions &options, QObject *parent = nullptr);
 
     SimClock &clock() { return m_clock; }
+    const SimClock &clock() const { return m_clock; }
     SimulatedRotator &rotator() { return m_rotator; }
     const SimulatedRotator &rotator() const { return m_rotator; }
     const SimulatorOptions &options() const { return m_options; }

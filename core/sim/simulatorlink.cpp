@@ -14,6 +14,11 @@ SimulatorLink::~SimulatorLink()
     delete m_connection;
 }
 
+std::optional<double> SimulatorLink::clockSeconds() const
+{
+    return m_simulator.clock().now();
+}
+
 void SimulatorLink::open()
 {
     if (m_connection)

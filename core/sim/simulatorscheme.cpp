@@ -33,41 +33,39 @@ std::optional<SimulatorOptions> optionsOf(const QUrl &url, const QString &uri, Q
     return options;
 }
 
+// What the URI names about the simulated rotator, and the dialect it speaks
+// (named or not). Only what is named: the simulator's defaults (elevation to
+// 180) are wider than a usual profile, and a tighter profile is the safe side.
+transport::LinkHints hintsOf(const QUrl &url, const SimulatorOptions &options)
+{
+    const QUrlQuery query(url);
+    const RotatorConfig &r = options.rotator;
+    transport::LinkHints h;
+    h.dialect = protocol::dialectName(options.dialect);
+    if (query.hasQueryItem(QStringLiteral("az_max")))
+        h.azMax = r.azimuth.maxDegrees;
+    if (query.hasQueryItem(QStringLiteral("el_max")))
+        h.elMax = r.elevation.maxDegrees;
+    if (query.hasQueryItem(QStringLiteral("park_az")))
+        h.parkAz = r.parkAzimuth;
+    if (query.hasQueryItem(QStringLiteral("park_el")))
+        h.parkEl = r.parkElevation;
+    return h;
+}
+
 } // namespace
 
 void registerSimulatorScheme()
 {
     transport::registerLinkScheme(QStringLiteral("sim"), [](const QUrl &url, const QString &uri) {
         transport::LinkResult result;
-        if (const auto options = optionsOf(url, uri, &result.error))
-            result.link = std::make_unique<SimulatorLink>(uri, *options);
+        if (const auto options = optionsOf(url, uri, &result.error)) {
+            auto link = std::make_unique<SimulatorLink>(uri, *options);
+            link->setHints(hintsOf(url, *options));
+            result.link = std::move(link);
+        }
         return result;
     });
-}
-
-model::RotatorProfile profileForSimulator(model::RotatorProfile profile, const QString &uri)
-{
-    const QUrl url(uri.trimmed());
-    if (url.scheme().toLower() != QLatin1String("sim"))
-        return profile;
-    QString error;
-    const auto options = optionsOf(url, uri, &error);
-    if (!options)
-        return profile; // connecting will report the bad item
-    // Only what the URI names: the simulator's defaults (elevation to 180)
-    // are wider than a usual profile, and a tighter profile is the safe side.
-    const QUrlQuery query(url);
-    const RotatorConfig &r = options->rotator;
-    if (query.hasQueryItem(QStringLiteral("az_max")))
-        profile.limits.azMax = r.azimuth.maxDegrees;
-    if (query.hasQueryItem(QStringLiteral("el_max")))
-        profile.limits.elMax = r.elevation.maxDegrees;
-    if (query.hasQueryItem(QStringLiteral("park_az")))
-        profile.parkAz = r.parkAzimuth;
-    if (query.hasQueryItem(QStringLiteral("park_el")))
-        profile.parkEl = r.parkElevation;
-    profile.dialect = options->dialect; // what the simulator speaks, named or not
-    return profile;
 }
 
 Simulator *simulatorBehind(transport::Link *link)

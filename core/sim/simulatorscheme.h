@@ -4,9 +4,10 @@
 //   sim:?kp=30&ki=0&kd=2&az_max=450&el_max=90&dialect=satnogs&jam=az&clock=manual
 //
 // Every query item is a simulator option (simulatoroptions.h); a bad one
-// makes createLink() fail with a message naming the URI and the item.
-
-#include "model/rotatorprofile.h"
+// makes createLink() fail with a message naming the URI and the item. The
+// link's hints() say what the URI names of the rotator (az_max, el_max,
+// park_az, park_el) and the dialect it speaks; its clockSeconds() is the
+// simulator's clock.
 
 #include <QString>
 
@@ -23,11 +24,5 @@ void registerSimulatorScheme();
 // The simulator behind a link made from a `sim:` URI, for tests that step
 // its clock, read its counters or switch faults; null for any other link.
 Simulator *simulatorBehind(transport::Link *link);
-
-// The profile with what a sim: URI names about the simulated rotator
-// (az_max, el_max, park_az, park_el) and the dialect it speaks, so a window
-// connected to `sim:?az_max=450` shows a 450° rotator. Other URIs leave the
-// profile unchanged.
-model::RotatorProfile profileForSimulator(model::RotatorProfile profile, const QString &uri);
 
 } // namespace slew::sim

@@ -11,9 +11,22 @@
 #include <QObject>
 #include <QString>
 
+#include <optional>
+
 class QIODevice;
 
 namespace slew::transport {
+
+// What the far end is, known from the link before a byte is exchanged,
+// where the link can say (a simulator's URI names its dialect and travel).
+// Only what is known is set.
+struct LinkHints {
+    QString dialect; // as named in profiles and --dialect; empty: not known
+    std::optional<double> azMax;
+    std::optional<double> elMax;
+    std::optional<double> parkAz;
+    std::optional<double> parkEl;
+};
 
 class Link : public QObject {
     Q_OBJECT
@@ -30,6 +43,12 @@ public:
     virtual void open() = 0;
     virtual void close() = 0;
     virtual bool isOpen() const = 0;
+
+    virtual LinkHints hints() const { return {}; }
+    // The far end's own clock in seconds, where it keeps one (a simulator
+    // stepping simulated time, so that samples stamped with it repeat
+    // exactly); empty for hardware, which goes by the wall clock.
+    virtual std::optional<double> clockSeconds() const { return std::nullopt; }
 
 signals:
     void opened();

@@ -126,4 +126,10 @@ LinkResult createLink(const QString &uri)
     return (*maker)(url, trimmed);
 }
 
+LinkHints linkHintsFor(const QString &uri)
+{
+    const LinkResult made = createLink(uri);
+    return made.link ? made.link->hints() : LinkHints{};
+}
+
 } // namespace slew::transport

@@ -35,4 +35,8 @@ void registerLinkScheme(const QString &scheme, LinkMaker maker);
 
 bool isSchemeRegistered(const QString &scheme);
 
+// What the link a URI makes says of its far end (link.h), without opening
+// it; nothing for a URI that makes no link.
+LinkHints linkHintsFor(const QString &uri);
+
 } // namespace slew::transport

@@ -1,8 +1,7 @@
 #include "sampleclock.h"
 
 #include "session/rotatorsession.h"
-#include "sim/simulator.h"
-#include "sim/simulatorscheme.h"
+#include "transport/link.h"
 
 namespace slew::tuning {
 
@@ -14,9 +13,9 @@ SampleClock::SampleClock(const session::RotatorSession *session) : m_session(ses
 double SampleClock::now() const
 {
     // Asked every time: the session may have reconnected to another link.
-    if (m_session) {
-        if (sim::Simulator *sim = sim::simulatorBehind(m_session->link()))
-            return sim->clock().now();
+    if (m_session && m_session->link()) {
+        if (const std::optional<double> linkClock = m_session->link()->clockSeconds())
+            return *linkClock;
     }
     return double(m_wall.nsecsElapsed()) / 1e9;
 }

@@ -4,6 +4,7 @@
 #include "sim/simulator.h"
 #include "sim/simulatorconnection.h"
 #include "sim/simulatorlink.h"
+#include "session/profilehints.h"
 #include "sim/simulatorscheme.h"
 
 #include "transport/linkfactory.h"
@@ -117,6 +118,9 @@ private slots:
 
     void aProfileFollowsTheSimulatorUri()
     {
+        const auto profileForSimulator = [](const slew::model::RotatorProfile &profile, const QString &uri) {
+            return slew::session::profileWithHints(profile, slew::transport::linkHintsFor(uri));
+        };
         slew::model::RotatorProfile mine;
         mine.name = QStringLiteral("mine");
         const auto p = profileForSimulator(mine, QStringLiteral("sim:?az_max=450&el_max=180&park_az=90&park_el=10&dialect=satnogs"));
@@ -133,6 +137,20 @@ private slots:
         // What the URI does not name keeps the profile's (tighter) value.
         QCOMPARE(profileForSimulator(mine, QStringLiteral("sim:")).limits.elMax, 90.0);
         QCOMPARE(profileForSimulator(mine, QStringLiteral("sim:")).dialect, slew::protocol::Dialect::Easycomm3);
+    }
+
+    void theLinkKeepsTheSimulatorsClock()
+    {
+        auto link = openLink("sim:?clock=manual");
+        QVERIFY(link->clockSeconds());
+        const double before = *link->clockSeconds();
+        simulatorBehind(link.get())->clock().advance(2.5);
+        QCOMPARE(*link->clockSeconds(), before + 2.5);
+        // Hardware has no clock of its own to offer.
+        const auto tcp = slew::transport::createLink(QStringLiteral("tcp://127.0.0.1:1"));
+        QVERIFY(tcp.link);
+        QVERIFY(!tcp.link->clockSeconds());
+        QVERIFY(tcp.link->hints().dialect.isEmpty());
     }
 
     void badQueryItemsNameTheUri_data()

@@ -7,7 +7,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
-namespace slew::sim {
+namespace slew::cli {
 
 namespace {
 
@@ -53,4 +53,4 @@ void TerminationSignalWatcher::drain()
         emit terminationRequested(last);
 }
 
-} // namespace slew::sim
+} // namespace slew::cli

@@ -9,7 +9,7 @@
 
 class QSocketNotifier;
 
-namespace slew::sim {
+namespace slew::cli {
 
 class TerminationSignalWatcher : public QObject {
     Q_OBJECT
@@ -27,4 +27,4 @@ private:
     std::unique_ptr<QSocketNotifier> m_notifier;
 };
 
-} // namespace slew::sim
+} // namespace slew::cli
