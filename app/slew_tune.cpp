@@ -6,15 +6,13 @@
 #include "cli/slewcommandline.h"
 #include "slew_tune.h"
 
+#include "cli/terminationsignalwatcher.h"
 #include "model/rotatorprofile.h"
 #include "protocol/dialect.h"
-#include "session/rotatorsession.h"
-#include "cli/terminationsignalwatcher.h"
-#include "tuning/tuningsequence.h"
+#include "tuning/tuningrun.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
-#include <QTimer>
 
 #include <cstdio>
 #include <cstring>
@@ -47,7 +45,6 @@ bool wantsTune(int argc, char **argv)
 int runTune(int argc, char **argv)
 {
     using slew::session::Axis;
-    using slew::session::RotatorSession;
 
     QCoreApplication app(argc, argv);
     setUpSlewApplication();
@@ -78,95 +75,41 @@ int runTune(int argc, char **argv)
     if (!stepOk || !(stepDegrees >= 0.5 && stepDegrees <= 30.0))
         return fail(QStringLiteral("--step must be 0.5 to 30 degrees, not '%1'").arg(parser.value(step)));
 
-    slew::model::RotatorProfile rotator;
+    slew::tuning::TuningRun::Options options;
     if (parser.isSet(profile)) {
         QString error;
         const auto loaded = slew::model::RotatorProfile::load(parser.value(profile), &error);
         if (!loaded)
             return fail(error);
-        rotator = *loaded;
+        options.profile = *loaded;
     }
     if (parser.isSet(dialect)) {
         const auto d = slew::protocol::dialectFromName(parser.value(dialect));
         if (!d)
             return fail(QStringLiteral("unknown dialect '%1'").arg(parser.value(dialect)));
-        rotator.dialect = *d;
+        options.profile.dialect = *d;
     }
-    rotator.uri = uri;
-    rotator.pollHz = 50; // a step is measured from the polled positions: poll as often as the session allows
+    options.profile.uri = uri;
+    options.axes = axes;
+    options.apply = parser.isSet(apply);
+    options.stepDegrees = stepDegrees;
 
-    RotatorSession session;
-    session.setProfile(rotator);
-    slew::tuning::TuningSequence sequence(&session);
-    slew::tuning::TuningSettings settings;
-    settings.amplitude = stepDegrees;
-    sequence.setSettings(settings);
-
+    slew::tuning::TuningRun run(options);
     int exitCode = 1;
-    bool started = false;
-    QString lastLine;
-    QObject::connect(&sequence, &slew::tuning::TuningSequence::progress, &app,
-                     [&](const QString &axisName, int, const QString &what) {
-                         const QString line = QStringLiteral("%1: %2").arg(axisName, what);
-                         // Step progress repeats with the time; print phases only.
-                         if (!what.contains(u':') && line != lastLine)
-                             say(line);
-                         lastLine = line;
-                     });
-    QObject::connect(&sequence, &slew::tuning::TuningSequence::finished, &app,
-                     [&](const QList<slew::tuning::TuningResult> &results) {
-                         say(QString());
-                         std::fputs(qPrintable(slew::tuning::formatTuningTable(results)), stdout);
-                         for (const auto &r : results) {
-                             const int first = slew::tuning::firstGainRegister(r.axis);
-                             say(r.applied ? QStringLiteral("%1: new gains kept (CW%2..CW%3, read back)")
-                                                 .arg(slew::tuning::axisName(r.axis))
-                                                 .arg(first)
-                                                 .arg(first + 2)
-                                           : QStringLiteral("%1: old gains written back; --apply keeps the new ones")
-                                                 .arg(slew::tuning::axisName(r.axis)));
-                         }
-                         exitCode = 0;
-                         session.stop();
-                         QTimer::singleShot(100, &app, &QCoreApplication::quit); // let SA SE leave
-                     });
-    QObject::connect(&sequence, &slew::tuning::TuningSequence::failed, &app, [&](const QString &reason) {
-        std::fprintf(stderr, "slew: tuning stopped: %s\n", qPrintable(reason));
-        exitCode = 1;
-        QTimer::singleShot(100, &app, &QCoreApplication::quit);
+    QObject::connect(&run, &slew::tuning::TuningRun::output, &app, [](const QString &line) { say(line); });
+    QObject::connect(&run, &slew::tuning::TuningRun::problem, &app,
+                     [](const QString &line) { std::fprintf(stderr, "slew: %s\n", qPrintable(line)); });
+    QObject::connect(&run, &slew::tuning::TuningRun::finished, &app, [&](int code) {
+        exitCode = code;
+        QCoreApplication::quit();
     });
-    QObject::connect(&session, &RotatorSession::capabilitiesChanged, &app,
-                     [&](const slew::session::Capabilities &caps) {
-                         if (!caps.probed || started)
-                             return;
-                         started = true;
-                         if (!sequence.start(axes, parser.isSet(apply))) {
-                             std::fprintf(stderr, "slew: %s\n", qPrintable(sequence.error()));
-                             exitCode = 1;
-                             QMetaObject::invokeMethod(&app, &QCoreApplication::quit, Qt::QueuedConnection);
-                         }
-                     });
-    QObject::connect(&session, &RotatorSession::stateChanged, &app,
-                     [&](RotatorSession::State state, const QString &detail) {
-                         if (state == RotatorSession::State::Disconnected) {
-                             std::fprintf(stderr, "slew: %s\n", qPrintable(detail));
-                             exitCode = 1;
-                             QMetaObject::invokeMethod(&app, &QCoreApplication::quit, Qt::QueuedConnection);
-                         }
-                     });
     // Ctrl-C stops the rotator and puts the old gains back before leaving.
     slew::cli::TerminationSignalWatcher terminations;
-    QObject::connect(&terminations, &slew::cli::TerminationSignalWatcher::terminationRequested, &app, [&] {
-        if (!started) {
-            QMetaObject::invokeMethod(&app, &QCoreApplication::quit, Qt::QueuedConnection);
-            return;
-        }
-        session.stop();
-        sequence.cancel();
-    });
+    QObject::connect(&terminations, &slew::cli::TerminationSignalWatcher::terminationRequested, &run,
+                     &slew::tuning::TuningRun::interrupt);
 
     say(QStringLiteral("tuning %1 on %2").arg(which, uri));
-    session.connectTo(uri);
+    run.start();
     app.exec();
     return exitCode;
 }
