@@ -1,5 +1,7 @@
 #include "dialect.h"
 
+#include "operations.h"
+
 #include <QStringList>
 
 namespace slew::protocol {
@@ -53,68 +55,15 @@ std::optional<Dialect> dialectFromName(QStringView name)
 
 bool dialectSupports(Dialect d, Op op)
 {
-    if (isGs232(d)) {
-        switch (op) {
-        case Op::Azimuth:   // M (set), C (query)
-        case Op::Elevation: // B (query); set only together with azimuth (W)
-        case Op::MoveLeft:
-        case Op::MoveRight:
-        case Op::MoveUp:
-        case Op::MoveDown:
-        case Op::StopAzimuth:   // A
-        case Op::StopElevation: // E
-        case Op::Speed:         // X1..X4
-        case Op::KeepAlive:     // ?  (easycom library)
-            return true;
-        default:
-            return false;
-        }
-    }
-    switch (op) {
-    case Op::Invalid:
-    case Op::ConfigValue: // a reply, never sent by the host
-    case Op::Alarm:       // likewise
-        return false;
-    case Op::Azimuth:
-    case Op::Elevation:
-    case Op::UplinkFreq:
-    case Op::DownlinkFreq:
-    case Op::UplinkMode:
-    case Op::DownlinkMode:
-        return true; // all four carry these, Easycomm I inside its one line
-    case Op::UplinkRadio:
-    case Op::DownlinkRadio:
-    case Op::MoveLeft:
-    case Op::MoveRight:
-    case Op::MoveUp:
-    case Op::MoveDown:
-    case Op::StopAzimuth:
-    case Op::StopElevation:
-    case Op::Aos:
-    case Op::Los:
-    case Op::SetOutput:
-    case Op::ReadInput:
-    case Op::ReadAnalog:
-    case Op::Time:
-    case Op::Version:
-        return d != Dialect::Easycomm1;
-    case Op::VelocityLeft:
-    case Op::VelocityRight:
-    case Op::VelocityUp:
-    case Op::VelocityDown:
-    case Op::ConfigRead:
-    case Op::ConfigWrite:
-    case Op::Status:
-    case Op::ErrorFlags:
-        return d == Dialect::Easycomm3 || d == Dialect::SatNogs;
-    case Op::Reset:
-    case Op::Park:
-        return d != Dialect::Easycomm1; // Hamlib sends both to models 202 and 204
-    case Op::Encoders:
-        return d == Dialect::Easycomm3;
-    case Op::Speed:
-    case Op::KeepAlive:
-        return false;
+    const OperationInfo &info = operationInfo(op);
+    if (isGs232(d))
+        return info.gs232;
+    switch (info.easycomm) {
+    case EasycommReach::None: return false;
+    case EasycommReach::All: return true;
+    case EasycommReach::FromEasycomm2: return d != Dialect::Easycomm1;
+    case EasycommReach::Easycomm3AndSatNogs: return d == Dialect::Easycomm3 || d == Dialect::SatNogs;
+    case EasycommReach::Easycomm3Only: return d == Dialect::Easycomm3;
     }
     return false;
 }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "encoder.h"
 
+#include "operations.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -85,68 +87,41 @@ QByteArray encodeToken(const Message &m, Dialect d)
     if (isGs232(d))
         return encodeGs232Token(m);
     QByteArray out = mnemonic(m.op).toByteArray();
-    switch (m.op) {
-    case Op::Azimuth:
-    case Op::Elevation:
+    switch (operationInfo(m.op).argument) {
+    case Argument::Angle:
         if (m.hasValue)
             out += formatNumber(m.value, angleDecimals(d));
         break;
-    case Op::UplinkFreq:
-    case Op::DownlinkFreq:
-    case Op::UplinkRadio:
-    case Op::DownlinkRadio:
-    case Op::Status:
-    case Op::ErrorFlags:
+    case Argument::Integer:
         if (m.hasValue)
             out += integer(m.value);
         break;
-    case Op::UplinkMode:
-    case Op::DownlinkMode:
-    case Op::Time:
-    case Op::Version:
+    case Argument::Word:
         out += m.text.view();
         break;
-    case Op::VelocityLeft:
-    case Op::VelocityRight:
-    case Op::VelocityUp:
-    case Op::VelocityDown:
+    case Argument::Velocity:
         if (m.hasValue)
             out += velocity(m.value, d);
         break;
-    case Op::SetOutput:
+    case Argument::OutputValue:
         out += QByteArray::number(m.index) + ',' + integer(m.value);
         break;
-    case Op::ReadInput:
-    case Op::ReadAnalog:
+    case Argument::Index:
         out += QByteArray::number(m.index);
         break;
-    case Op::ConfigRead:
+    case Argument::Register:
         // SatNOGS firmware reads the register after a space: `CR 1`.
         if (d == Dialect::SatNogs)
             out += ' ';
         out += QByteArray::number(m.index);
         break;
-    case Op::ConfigWrite:
+    case Argument::RegisterValue:
         out += QByteArray::number(m.index) + ',';
         out += m.text.isEmpty() ? formatNumber(m.value, 3) : m.text.view().toByteArray();
         break;
-    case Op::Encoders:
-    case Op::MoveLeft:
-    case Op::MoveRight:
-    case Op::MoveUp:
-    case Op::MoveDown:
-    case Op::StopAzimuth:
-    case Op::StopElevation:
-    case Op::Aos:
-    case Op::Los:
-    case Op::Reset:
-    case Op::Park:
+    case Argument::None:
         break;
-    case Op::Invalid:
-    case Op::Alarm:
-    case Op::ConfigValue:
-    case Op::Speed:
-    case Op::KeepAlive:
+    case Argument::NeverSent:
         return {};
     }
     return out;

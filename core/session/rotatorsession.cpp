@@ -5,6 +5,7 @@
 
 #include "rotatorsession.h"
 
+#include "protocol/operations.h"
 #include "transport/link.h"
 #include "transport/linkfactory.h"
 
@@ -23,28 +24,6 @@ namespace {
 
 constexpr int kMaxReconnectDelayMs = 30000;
 constexpr qint64 kEchoWindowMs = 1000;
-// A token the controller has no reason to send: a command, or a query form.
-bool isCommandOnly(Op op)
-{
-    switch (op) {
-    case Op::MoveLeft:
-    case Op::MoveRight:
-    case Op::MoveUp:
-    case Op::MoveDown:
-    case Op::StopAzimuth:
-    case Op::StopElevation:
-    case Op::Reset:
-    case Op::Park:
-    case Op::ConfigWrite:
-    case Op::SetOutput:
-    case Op::Aos:
-    case Op::Los:
-        return true;
-    default:
-        return false;
-    }
-}
-
 } // namespace
 
 RotatorSession::RotatorSession(QObject *parent) : QObject(parent), m_queue(m_options.maxQueue)
@@ -235,7 +214,7 @@ bool RotatorSession::isEcho(const Message &m)
 {
     // Unmistakable echoes: a command, or a query form, coming back. Seeing one
     // tells us this controller echoes what it hears.
-    if (isCommandOnly(m.op)
+    if (protocol::operationInfo(m.op).commandOnly
         || (m.op != Op::Alarm && m.op != Op::Invalid && !m.hasValue && m.text.isEmpty())) {
         m_deviceEchoes = true;
         return true;

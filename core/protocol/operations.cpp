@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "operations.h"
+
+#include <iterator>
+
+namespace slew::protocol {
+
+namespace {
+
+using A = Argument;
+using R = EasycommReach;
+
+// Order matches enum Op so that a lookup is an index.
+constexpr OperationInfo kOperations[] = {
+    // op                   mnemonic  description               Easycomm                 GS-232 argument          command only
+    {Op::Invalid,           "",       "unreadable input",       R::None,                 false, A::NeverSent,     false},
+    {Op::Azimuth,           "AZ",     "azimuth",                R::All,                  true,  A::Angle,         false},
+    {Op::Elevation,         "EL",     "elevation",              R::All,                  true,  A::Angle,         false},
+    {Op::UplinkFreq,        "UP",     "uplink frequency",       R::All,                  false, A::Integer,       false},
+    {Op::DownlinkFreq,      "DN",     "downlink frequency",     R::All,                  false, A::Integer,       false},
+    {Op::UplinkMode,        "UM",     "uplink mode",            R::All,                  false, A::Word,          false},
+    {Op::DownlinkMode,      "DM",     "downlink mode",          R::All,                  false, A::Word,          false},
+    {Op::UplinkRadio,       "UR",     "uplink radio",           R::FromEasycomm2,        false, A::Integer,       false},
+    {Op::DownlinkRadio,     "DR",     "downlink radio",         R::FromEasycomm2,        false, A::Integer,       false},
+    {Op::MoveLeft,          "ML",     "move left",              R::FromEasycomm2,        true,  A::None,          true},
+    {Op::MoveRight,         "MR",     "move right",             R::FromEasycomm2,        true,  A::None,          true},
+    {Op::MoveUp,            "MU",     "move up",                R::FromEasycomm2,        true,  A::None,          true},
+    {Op::MoveDown,          "MD",     "move down",              R::FromEasycomm2,        true,  A::None,          true},
+    {Op::StopAzimuth,       "SA",     "stop azimuth",           R::FromEasycomm2,        true,  A::None,          true},
+    {Op::StopElevation,     "SE",     "stop elevation",         R::FromEasycomm2,        true,  A::None,          true},
+    {Op::Aos,               "AO",     "acquisition of signal",  R::FromEasycomm2,        false, A::None,          true},
+    {Op::Los,               "LO",     "loss of signal",         R::FromEasycomm2,        false, A::None,          true},
+    {Op::SetOutput,         "OP",     "set output",             R::FromEasycomm2,        false, A::OutputValue,   true},
+    {Op::ReadInput,         "IP",     "input",                  R::FromEasycomm2,        false, A::Index,         false},
+    {Op::ReadAnalog,        "AN",     "analogue input",         R::FromEasycomm2,        false, A::Index,         false},
+    {Op::Time,              "ST",     "time",                   R::FromEasycomm2,        false, A::Word,          false},
+    {Op::Version,           "VE",     "version",                R::FromEasycomm2,        false, A::Word,          false},
+    {Op::VelocityLeft,      "VL",     "velocity left",          R::Easycomm3AndSatNogs,  false, A::Velocity,      false},
+    {Op::VelocityRight,     "VR",     "velocity right",         R::Easycomm3AndSatNogs,  false, A::Velocity,      false},
+    {Op::VelocityUp,        "VU",     "velocity up",            R::Easycomm3AndSatNogs,  false, A::Velocity,      false},
+    {Op::VelocityDown,      "VD",     "velocity down",          R::Easycomm3AndSatNogs,  false, A::Velocity,      false},
+    {Op::ConfigRead,        "CR",     "config read",            R::Easycomm3AndSatNogs,  false, A::Register,      false},
+    {Op::ConfigWrite,       "CW",     "config write",           R::Easycomm3AndSatNogs,  false, A::RegisterValue, true},
+    {Op::Status,            "GS",     "status register",        R::Easycomm3AndSatNogs,  false, A::Integer,       false},
+    {Op::ErrorFlags,        "GE",     "error register",         R::Easycomm3AndSatNogs,  false, A::Integer,       false},
+    // Hamlib sends RESET and PARK to models 202 and 204 alike.
+    {Op::Reset,             "RESET",  "reset and home",         R::FromEasycomm2,        false, A::None,          true},
+    {Op::Park,              "PARK",   "park",                   R::FromEasycomm2,        false, A::None,          true},
+    {Op::Encoders,          "\\?ENC", "raw encoders",           R::Easycomm3Only,        false, A::None,          false},
+    {Op::Alarm,             "AL",     "alarm",                  R::None,                 false, A::NeverSent,     false},
+    {Op::ConfigValue,       "",       "config value",           R::None,                 false, A::NeverSent,     false},
+    {Op::Speed,             "X",      "speed",                  R::None,                 true,  A::NeverSent,     false},
+    {Op::KeepAlive,         "?",      "keep-alive",             R::None,                 true,  A::NeverSent,     false},
+};
+static_assert(std::size(kOperations) == size_t(Op::KeepAlive) + 1, "kOperations must list every Op");
+
+constexpr bool inOrder()
+{
+    for (size_t i = 0; i < std::size(kOperations); ++i) {
+        if (size_t(kOperations[i].op) != i)
+            return false;
+    }
+    return true;
+}
+static_assert(inOrder(), "kOperations must be in the order of enum Op");
+
+} // namespace
+
+const OperationInfo &operationInfo(Op op)
+{
+    return kOperations[size_t(op)];
+}
+
+QByteArrayView mnemonic(Op op)
+{
+    return QByteArrayView(operationInfo(op).mnemonic);
+}
+
+const char *describe(Op op)
+{
+    return operationInfo(op).description;
+}
+
+} // namespace slew::protocol
