@@ -53,6 +53,7 @@ void RotctldLink::open()
     m_pending.clear();
     m_answerLines.clear();
     m_socketBuffer.clear();
+    m_sentAz = m_sentEl = m_seenAz = m_seenEl = qQNaN();
     m_socket.abort();
     m_socket.connectToHost(m_host, m_port);
 }
@@ -140,6 +141,7 @@ void RotctldLink::translate()
     const Message *az = nullptr;
     const Message *el = nullptr;
     bool stop = false;
+    bool drove = false; // park, home or a speed
     for (const Message &m : std::as_const(m_line)) {
         switch (m.op) {
         case Op::Azimuth:
@@ -153,15 +155,17 @@ void RotctldLink::translate()
             stop = true;
             break;
         case Op::Park:
+            drove = true;
             send("K", Expect::Status);
             break;
         case Op::Reset:
+            drove = true;
             send("R 1", Expect::Status);
             break;
-        case Op::MoveLeft: send("M 8 50", Expect::Status); break;
-        case Op::MoveRight: send("M 16 50", Expect::Status); break;
-        case Op::MoveUp: send("M 2 50", Expect::Status); break;
-        case Op::MoveDown: send("M 4 50", Expect::Status); break;
+        case Op::MoveLeft: drove = true; send("M 8 50", Expect::Status); break;
+        case Op::MoveRight: drove = true; send("M 16 50", Expect::Status); break;
+        case Op::MoveUp: drove = true; send("M 2 50", Expect::Status); break;
+        case Op::MoveDown: drove = true; send("M 4 50", Expect::Status); break;
         case Op::VelocityLeft:
         case Op::VelocityRight:
         case Op::VelocityUp:
@@ -177,6 +181,7 @@ void RotctldLink::translate()
             const int direction = m.op == Op::VelocityLeft ? 8 : m.op == Op::VelocityRight ? 16
                                 : m.op == Op::VelocityUp   ? 2
                                                            : 4;
+            drove = true;
             send("M " + QByteArray::number(direction) + ' ' + QByteArray::number(speed), Expect::Status);
             break;
         }
@@ -188,17 +193,30 @@ void RotctldLink::translate()
             break; // GS, GE, IP, CR, CW, \?ENC: rotctld has nothing like them
         }
     }
+    if (stop || drove) {
+        // Stopped, parked, homing or driven at a speed: no axis is going
+        // where it was last sent any more.
+        m_sentAz = m_sentEl = qQNaN();
+    }
     if (stop)
         send("S", Expect::Status);
     if ((az && az->isQuery()) || (el && el->isQuery())) {
         send("p", Expect::Position);
     } else if (az || el) {
-        const double a = az ? az->value : qQNaN();
-        const double e = el ? el->value : m_lastEl;
-        if (el)
-            m_lastEl = el->value;
-        if (az)
+        // rotctld sets both axes at once. The axis not named keeps going
+        // where it was last sent, or stays where it was last seen; never a
+        // made-up 0, which would drive it to its stop.
+        const double a = az ? az->value : (std::isnan(m_sentAz) ? m_seenAz : m_sentAz);
+        const double e = el ? el->value : (std::isnan(m_sentEl) ? m_seenEl : m_sentEl);
+        if (std::isnan(a) || std::isnan(e)) {
+            emit notice(tr("%1: rotctld moves both axes at once, and the other axis' position is not known yet: "
+                           "not sent")
+                            .arg(uri()));
+        } else {
+            m_sentAz = a;
+            m_sentEl = e;
             send("P " + number(a) + ' ' + number(e), Expect::Status);
+        }
     }
 }
 
@@ -252,8 +270,11 @@ void RotctldLink::handleLine(const QByteArray &line)
             const double el = m_answerLines[1].toDouble(&okEl);
             m_pending.pop_front();
             m_answerLines.clear();
-            if (okAz && okEl)
+            if (okAz && okEl) {
+                m_seenAz = az;
+                m_seenEl = el;
                 reply("AZ" + number(az) + " EL" + number(el) + '\n');
+            }
             else
                 emit notice(tr("%1: rotctld sent a position that is not a number").arg(uri()));
         }

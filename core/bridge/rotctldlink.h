@@ -4,7 +4,7 @@
 //
 // The session speaks Easycomm on every link, so this link translates: the
 // session's Easycomm lines become rotctld commands (`AZ EL` -> `p`,
-// `AZ10 EL20` -> `P 10 20`, `SA SE` -> `S`, `PARK` -> `K`, `RESET` -> `R 1`,
+// `AZ10 EL20` -> `P 10 20`, `EL20` alone -> `P <where azimuth is going> 20`, `SA SE` -> `S`, `PARK` -> `K`, `RESET` -> `R 1`,
 // `VR`/`MR` -> `M 16 n`, `VE` -> `_`) and the answers come back as Easycomm
 // replies. What rotctld cannot give (GS, GE, IP, CR) gets no answer, so the
 // session's probe marks it absent. On open it reads `\dump_state` and
@@ -71,7 +71,12 @@ private:
     QElapsedTimer m_clock;
     bool m_open = false;
     bool m_opening = false;
-    double m_lastEl = 0.0; // for an azimuth-only set
+    // For a one-axis move: where each axis was last sent (NaN after a stop
+    // or before any) and last seen.
+    double m_sentAz = qQNaN();
+    double m_sentEl = qQNaN();
+    double m_seenAz = qQNaN();
+    double m_seenEl = qQNaN();
 };
 
 } // namespace slew::bridge

@@ -78,6 +78,14 @@ void RotctldLinkTest::againstHamlibDummy()
     QTRY_VERIFY(s.hasPosition());
     QVERIFY(s.gotoPosition(20, 10));
     QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.azimuth() - 20) < 0.5 && std::abs(s.elevation() - 10) < 0.5, 30000);
+    // One axis: rotctld sets both, so the other is sent where it is going.
+    // An elevation-only move was once remembered and never sent.
+    QVERIFY(s.gotoAxis(session::Axis::Elevation, 25));
+    QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.elevation() - 25) < 0.5, 30000);
+    QVERIFY(std::abs(s.azimuth() - 20) < 0.5);
+    QVERIFY(s.gotoAxis(session::Axis::Azimuth, 30));
+    QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.azimuth() - 30) < 0.5, 30000);
+    QVERIFY(std::abs(s.elevation() - 25) < 0.5);
     QVERIFY(s.stop());
     QVERIFY(s.park());
     QVERIFY(s.moveAxis(session::Axis::Azimuth, 2.0));
