@@ -10,12 +10,10 @@ namespace slew::tuning {
 
 using session::RotatorSession;
 
-BaudProbe::BaudProbe(QObject *parent) : QObject(parent)
+BaudProbe::BaudProbe(QObject *parent)
+    : QObject(parent),
+      m_attempt(this, 2000, [this] { conclude(false, tr("no answer in %1 s").arg(m_attempt.limitMs() / 1000.0)); })
 {
-    m_timer.setSingleShot(true);
-    m_timer.setInterval(2000);
-    connect(&m_timer, &QTimer::timeout, this,
-            [this] { conclude(false, tr("no answer in %1 s").arg(m_timer.interval() / 1000.0)); });
 }
 
 BaudProbe::~BaudProbe() = default;
@@ -54,12 +52,8 @@ bool BaudProbe::start(const QString &uri, protocol::Dialect dialect)
 
 void BaudProbe::cancel()
 {
-    m_timer.stop();
     m_pending.clear();
-    if (m_session) {
-        m_session->disconnect(this);
-        m_session.release()->deleteLater(); // we may be inside one of its signals
-    }
+    m_attempt.end();
 }
 
 QString BaudProbe::answeringUri() const
@@ -86,31 +80,23 @@ void BaudProbe::next()
     emit progress(100 * (m_total - int(m_pending.size()) - 1) / std::max(1, m_total),
                   baud > 0 ? tr("trying %1 baud").arg(baud) : tr("trying %1").arg(m_uri));
 
-    m_session = std::make_unique<RotatorSession>();
-    model::RotatorProfile profile;
-    profile.dialect = m_dialect;
-    m_session->setProfile(profile);
-    connect(m_session.get(), &RotatorSession::positionChanged, this, [this](double az, double el, bool stale) {
+    RotatorSession *session = m_attempt.begin(m_dialect);
+    connect(session, &RotatorSession::positionChanged, this, [this](double az, double el, bool stale) {
         if (!stale)
             conclude(true, tr("answered: azimuth %1°, elevation %2°").arg(az, 0, 'f', 2).arg(el, 0, 'f', 2));
     });
-    connect(m_session.get(), &RotatorSession::stateChanged, this,
-            [this](RotatorSession::State s, const QString &detail) {
-                if (s == RotatorSession::State::Disconnected)
-                    conclude(false, detail);
-            });
-    m_timer.start();
-    m_session->connectTo(r.uri);
+    connect(session, &RotatorSession::stateChanged, this, [this](RotatorSession::State s, const QString &detail) {
+        if (s == RotatorSession::State::Disconnected)
+            conclude(false, detail);
+    });
+    m_attempt.go(r.uri);
 }
 
 void BaudProbe::conclude(bool answered, const QString &detail)
 {
-    if (!m_session || m_results.isEmpty())
+    if (!m_attempt.isRunning() || m_results.isEmpty())
         return;
-    m_timer.stop();
-    m_session->disconnect(this);
-    m_session->disconnectFromRotator();
-    m_session.release()->deleteLater();
+    m_attempt.end();
     m_results.back().answered = answered;
     m_results.back().detail = detail;
     emit tried(m_results.back());

@@ -3,6 +3,7 @@
 // common rate in turn and asks for the position. A link with no baud rate
 // (TCP, rotctld, the simulator) is tried once as it is.
 
+#include "probeattempt.h"
 #include "protocol/dialect.h"
 
 #include <QList>
@@ -34,11 +35,11 @@ public:
     // The URI with its baud query item set (added or replaced).
     static QString withBaud(const QString &uri, qint32 baud);
 
-    void setAttemptMs(int ms) { m_timer.setInterval(ms); }
+    void setAttemptMs(int ms) { m_attempt.setLimitMs(ms); }
     // Starts; false (with error()) for an empty URI.
     bool start(const QString &uri, protocol::Dialect dialect = protocol::Dialect::Easycomm3);
     void cancel();
-    bool isRunning() const { return m_session != nullptr; }
+    bool isRunning() const { return m_attempt.isRunning(); }
     QString error() const { return m_error; }
     const QList<BaudResult> &results() const { return m_results; }
     // The first URI that answered; empty when none did.
@@ -57,8 +58,7 @@ private:
     QList<qint32> m_pending;
     QString m_uri;
     protocol::Dialect m_dialect = protocol::Dialect::Easycomm3;
-    std::unique_ptr<session::RotatorSession> m_session;
-    QTimer m_timer;
+    ProbeAttempt m_attempt;
     int m_total = 0;
     QString m_error;
 };

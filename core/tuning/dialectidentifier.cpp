@@ -34,11 +34,9 @@ QString DialectResult::describe() const
                                         answered.isEmpty() ? QObject::tr("no answer") : answered.join(QStringLiteral(", ")));
 }
 
-DialectIdentifier::DialectIdentifier(QObject *parent) : QObject(parent)
+DialectIdentifier::DialectIdentifier(QObject *parent)
+    : QObject(parent), m_attempt(this, 8000, [this] { conclude(Capabilities{}); })
 {
-    m_timer.setSingleShot(true);
-    m_timer.setInterval(8000);
-    connect(&m_timer, &QTimer::timeout, this, [this] { conclude(Capabilities{}); });
 }
 
 DialectIdentifier::~DialectIdentifier() = default;
@@ -60,12 +58,8 @@ bool DialectIdentifier::start(const QString &uri)
 
 void DialectIdentifier::cancel()
 {
-    m_timer.stop();
     m_pending.clear();
-    if (m_session) {
-        m_session->disconnect(this);
-        m_session.release()->deleteLater();
-    }
+    m_attempt.end();
 }
 
 std::optional<DialectResult> DialectIdentifier::best() const
@@ -90,32 +84,27 @@ void DialectIdentifier::next()
     DialectResult r;
     r.dialect = d;
     m_results.append(r);
-    m_session = std::make_unique<RotatorSession>();
-    model::RotatorProfile profile;
-    profile.dialect = d;
-    m_session->setProfile(profile);
-    connect(m_session.get(), &RotatorSession::capabilitiesChanged, this, [this](const Capabilities &caps) {
+    RotatorSession *session = m_attempt.begin(d);
+    connect(session, &RotatorSession::capabilitiesChanged, this, [this](const Capabilities &caps) {
         if (caps.probed)
             conclude(caps);
     });
-    connect(m_session.get(), &RotatorSession::stateChanged, this, [this](RotatorSession::State s, const QString &why) {
+    connect(session, &RotatorSession::stateChanged, this, [this](RotatorSession::State s, const QString &why) {
         if (s == RotatorSession::State::Disconnected) {
             m_error = why;
             conclude(Capabilities{});
         }
     });
-    m_timer.start();
-    m_session->connectTo(m_uri);
+    m_attempt.go(m_uri);
 }
 
 void DialectIdentifier::conclude(const Capabilities &caps)
 {
-    if (!m_session || m_results.isEmpty())
+    if (!m_attempt.isRunning() || m_results.isEmpty())
         return;
-    m_timer.stop();
     DialectResult &r = m_results.back();
     r.capabilities = caps;
-    r.version = m_session->version();
+    r.version = m_attempt.session()->version();
     // Each answer counts for the dialect and each query it left unanswered
     // against it: a richer dialect than the device speaks asks for more
     // than it gets, so the dialect that explains everything wins.
@@ -133,9 +122,7 @@ void DialectIdentifier::conclude(const Capabilities &caps)
     // SatNOGS firmware names itself at the front of VE.
     if (r.dialect == Dialect::SatNogs && r.version.startsWith(QLatin1String("SatNOGS"), Qt::CaseInsensitive))
         r.score += 1;
-    m_session->disconnect(this);
-    m_session->disconnectFromRotator();
-    m_session.release()->deleteLater();
+    m_attempt.end();
     QMetaObject::invokeMethod(this, &DialectIdentifier::next, Qt::QueuedConnection);
 }
 

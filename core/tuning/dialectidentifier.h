@@ -5,6 +5,7 @@
 // most wins; on a tie the one listed first (easycomm3, satnogs, easycomm2).
 // Easycomm I answers nothing, so it can only be chosen by hand.
 
+#include "probeattempt.h"
 #include "protocol/dialect.h"
 #include "session/sessiontypes.h"
 
@@ -35,10 +36,10 @@ public:
     explicit DialectIdentifier(QObject *parent = nullptr);
     ~DialectIdentifier() override;
 
-    void setAttemptMs(int ms) { m_timer.setInterval(ms); }
+    void setAttemptMs(int ms) { m_attempt.setLimitMs(ms); }
     bool start(const QString &uri);
     void cancel();
-    bool isRunning() const { return m_session != nullptr; }
+    bool isRunning() const { return m_attempt.isRunning(); }
     QString error() const { return m_error; }
     const QList<DialectResult> &results() const { return m_results; }
     std::optional<DialectResult> best() const;
@@ -54,8 +55,7 @@ private:
     QString m_uri;
     QList<protocol::Dialect> m_pending;
     QList<DialectResult> m_results;
-    std::unique_ptr<session::RotatorSession> m_session;
-    QTimer m_timer;
+    ProbeAttempt m_attempt;
     QString m_error;
 };
 
