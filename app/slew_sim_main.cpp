@@ -65,6 +65,7 @@ int main(int argc, char *argv[])
     ConnectionSettings settings;
     settings.dialect = options.dialect;
     settings.unsolicited = options.unsolicited;
+    settings.echo = options.echo;
     settings.baud = options.baud;
     settings.log = log.isOpen() ? &log : nullptr;
 

@@ -100,6 +100,10 @@ void SimulatorConnection::process(QByteArrayView bytes, double arrivedAt)
 {
     m_log.add(bytes);
     m_simulator.syncToNow();
+    // An echoing adapter hands the host its own bytes back as they pass,
+    // ahead of anything the controller answers.
+    if (m_settings.echo)
+        send(bytes.toByteArray(), arrivedAt);
     QByteArray out = m_firmware.receive(bytes);
     m_idleFlushAt = m_firmware.awaitingLineEnd() ? m_simulator.clock().now() + kIdleLineEnd : -1.0;
     if (!out.isEmpty())

@@ -29,6 +29,7 @@ class Simulator;
 struct ConnectionSettings {
     protocol::Dialect dialect = protocol::Dialect::Easycomm3;
     bool unsolicited = false;
+    bool echo = false;            // every received byte goes back first (an echoing adapter)
     int baud = 0;                 // 0: unpaced
     ReceivedLog *log = nullptr;   // optional record of received lines
 };

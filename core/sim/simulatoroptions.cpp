@@ -33,6 +33,7 @@ const std::vector<SimulatorOptionInfo> kOptions = {
     {"start_el", "degrees", "elevation at start"},
     {"dialect", "name", "easycomm1, easycomm2, easycomm3, satnogs, gs232a or gs232b"},
     {"unsolicited", "", "push changed fields unsolicited (easycomm3)"},
+    {"echo", "", "send every received byte back before the answer, as some serial adapters do"},
     {"baud", "rate", "pace bytes to a serial line of this rate (0: unpaced)"},
     {"clock", "mode", "wall (default) or manual: time moves only when a test advances it"},
     {"seed", "number", "seed of the noise and link fault generators"},
@@ -220,6 +221,8 @@ QString applySimulatorOption(SimulatorOptions &o, QStringView rawName, QStringVi
     }
     if (name == u"unsolicited")
         return toSwitch(value, &o.unsolicited) ? QString() : bad(name, value, QStringLiteral("expected 1 or 0"));
+    if (name == u"echo")
+        return toSwitch(value, &o.echo) ? QString() : bad(name, value, QStringLiteral("expected 1 or 0"));
     if (name == u"baud") {
         double v = 0;
         if (QString e = number(0.0, 4000000.0, &v); !e.isEmpty())

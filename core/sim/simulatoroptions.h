@@ -24,6 +24,7 @@ struct SimulatorOptions {
     LinkFaults link;
     protocol::Dialect dialect = protocol::Dialect::Easycomm3;
     bool unsolicited = false; // push changed fields as the Easycomm III derivative's controller does
+    bool echo = false;        // send every received byte back first, as some serial adapters do
     int baud = 0;             // 0: bytes move as fast as the link carries them
     bool manualClock = false; // time moves only when advanced (tests)
 };
