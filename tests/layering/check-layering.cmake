@@ -1,0 +1,53 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+# The core's areas form layers; a file may include headers of its own area
+# and of the areas below it, never above. The build alone cannot hold this:
+# every area's headers sit under the one include root (core/). This check
+# reads every #include "area/..." in core/ and fails naming the file and the
+# include that crosses a layer upwards. (That the core never includes a
+# widget header is held by the build: slewcore does not link Qt Widgets.)
+#
+#   cmake -DCORE=path/to/core -P check-layering.cmake
+
+cmake_minimum_required(VERSION 3.25)
+
+set(allowed_protocol "")
+set(allowed_transport "")
+set(allowed_sky "")
+set(allowed_model "protocol")
+set(allowed_session "model;protocol;transport")
+set(allowed_sim "model;protocol;transport")
+set(allowed_tuning "session;model;protocol;transport")
+# bridge reaches into sim only for the LoopbackPipe behind the rotctld:// link.
+set(allowed_bridge "session;sim;model;protocol;transport")
+set(allowed_console "session;tuning;model;protocol;transport")
+set(areas protocol transport sky model session sim tuning bridge console)
+
+file(GLOB_RECURSE files RELATIVE ${CORE} ${CORE}/*.h ${CORE}/*.cpp)
+set(faults "")
+set(checked 0)
+foreach(file ${files})
+    string(REGEX MATCH "^[^/]+" area "${file}")
+    if(area STREQUAL file)
+        continue() # core/linkschemes.*: the one place that wires every area
+    endif()
+    if(NOT area IN_LIST areas)
+        list(APPEND faults "${file}: area '${area}' has no place in the layers (tests/layering)")
+        continue()
+    endif()
+    file(STRINGS ${CORE}/${file} includes REGEX "^#include \"[a-z]+/")
+    foreach(line ${includes})
+        string(REGEX REPLACE "^#include \"([a-z]+)/.*" "\\1" used "${line}")
+        if(used STREQUAL area OR NOT used IN_LIST areas)
+            continue()
+        endif()
+        math(EXPR checked "${checked} + 1")
+        if(NOT used IN_LIST allowed_${area})
+            list(APPEND faults "${file}: ${line} (${area} may use: ${allowed_${area}})")
+        endif()
+    endforeach()
+endforeach()
+if(faults)
+    list(JOIN faults "\n  " text)
+    message(FATAL_ERROR "includes that cross a layer upwards:\n  ${text}")
+endif()
+message(STATUS "core layering holds: ${checked} includes across areas checked")
