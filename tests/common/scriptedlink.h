@@ -32,16 +32,18 @@ public:
     qint64 bytesAvailable() const override { return m_pending.size() + QIODevice::bytesAvailable(); }
 
     // Easycomm moves in what was written since `from`: set positions, speeds,
-    // bare moves, park, home and register writes. Queries are not moves.
+    // bare moves, park, home and register writes. Queries are not moves, and
+    // neither is a zero speed: that is the hold that follows a stop.
     QStringList movesSince(qsizetype from) const
     {
         QStringList moves;
         slew::protocol::Parser parser(slew::protocol::Dialect::Easycomm3);
         parser.feed(QByteArrayView(written).sliced(from), [&](const slew::protocol::Message &m) {
             using slew::protocol::Op;
+            const bool speed = m.op == Op::VelocityLeft || m.op == Op::VelocityRight || m.op == Op::VelocityUp
+                || m.op == Op::VelocityDown;
             const bool move = ((m.op == Op::Azimuth || m.op == Op::Elevation) && m.hasValue)
-                || m.op == Op::VelocityLeft || m.op == Op::VelocityRight || m.op == Op::VelocityUp
-                || m.op == Op::VelocityDown || m.op == Op::MoveLeft || m.op == Op::MoveRight || m.op == Op::MoveUp
+                || (speed && m.hasValue && m.value != 0.0) || m.op == Op::MoveLeft || m.op == Op::MoveRight || m.op == Op::MoveUp
                 || m.op == Op::MoveDown || m.op == Op::Park || m.op == Op::Reset || m.op == Op::ConfigWrite;
             if (move)
                 moves << QString::fromLatin1(slew::protocol::mnemonic(m.op)) + (m.hasValue ? QString::number(m.value) : QString());
@@ -70,8 +72,9 @@ protected:
     }
 
 private:
-    // Position queries get the position; everything else goes unanswered,
-    // as an older controller leaves what it does not know.
+    // Position queries get the position, and the capability probe's queries
+    // a plain answer (so the probe ends at once, not after its timeouts);
+    // commands go unanswered, as a controller leaves them.
     void answer(const QByteArray &line)
     {
         QByteArrayList out;
@@ -80,6 +83,12 @@ private:
                 out << "AZ" + QByteArray::number(azimuth, 'f', 1);
             else if (token == "EL")
                 out << "EL" + QByteArray::number(elevation, 'f', 1);
+            else if (token == "VE")
+                out << "VEScripted-1";
+            else if (token == "GS" || token == "GE")
+                out << token + "1";
+            else if ((token.startsWith("IP") || token.startsWith("CR")) && token.size() > 2 && !token.contains(','))
+                out << token + ",0";
         }
         if (out.isEmpty())
             return;

@@ -64,7 +64,11 @@ private slots:
         m_device = lastScriptedLink()->scripted();
         m_device->azimuth = 350.0;
         m_device->elevation = 40.0;
-        QTRY_VERIFY(m_session->isConnected() && m_session->hasPosition() && m_session->reportedLimits());
+        // The probe done too, so that no unanswered query holds the line
+        // while the paths are walked.
+        QTRY_VERIFY_WITH_TIMEOUT(m_session->isConnected() && m_session->capabilities().probed
+                                     && m_session->hasPosition() && m_session->reportedLimits(),
+                                 30000);
         QCOMPARE(m_session->azimuth(), 350.0);
     }
 
@@ -116,10 +120,10 @@ private slots:
         // A preset stored where the rotator once stood, past what the link
         // now allows.
         m_device->azimuth = 355.0;
-        QTRY_COMPARE(m_session->azimuth(), 355.0);
+        QTRY_COMPARE_WITH_TIMEOUT(m_session->azimuth(), 355.0, 15000);
         QVERIFY(m_window->presetPanel()->storeCurrent(QStringLiteral("beyond")));
         m_device->azimuth = 350.0;
-        QTRY_COMPARE(m_session->azimuth(), 350.0);
+        QTRY_COMPARE_WITH_TIMEOUT(m_session->azimuth(), 350.0, 15000);
         const int beyond = int(m_window->presetPanel()->presets().size()) - 1;
         expectNothingSent("preset", [&] { QVERIFY(!m_window->presetPanel()->recall(beyond)); });
         expectNothingSent("register editor", [&] {
