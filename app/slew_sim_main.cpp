@@ -79,7 +79,7 @@ int main(int argc, char *argv[])
         ConnectionSettings tcpSettings = settings;
         if (parser.isSet(listenDialect)) {
             const auto d = slew::protocol::dialectFromName(parser.value(listenDialect));
-            if (!d)
+            if (!d || *d == slew::protocol::Dialect::Rotctld) // a controller's dialect, not a network peer's
                 fail(QStringLiteral("--listen-dialect %1: unknown dialect").arg(parser.value(listenDialect)));
             tcpSettings.dialect = *d;
         }

@@ -109,32 +109,9 @@ QByteArray header(const RotctldRequest &r)
 
 QString describeHamlibError(int code)
 {
-    // A rotctld:// peer's `RPRT n` can be any int; std::abs(INT_MIN) is undefined.
-    switch (code < 0 ? -qint64(code) : qint64(code)) {
-    case 0: return QObject::tr("no error");
-    case 1: return QObject::tr("invalid argument");
-    case 2: return QObject::tr("internal error");
-    case 3: return QObject::tr("out of memory");
-    case 4: return QObject::tr("not implemented");
-    case 5: return QObject::tr("timed out");
-    case 6: return QObject::tr("input/output error");
-    case 7: return QObject::tr("internal error");
-    case 8: return QObject::tr("protocol error");
-    case 9: return QObject::tr("command rejected");
-    case 10: return QObject::tr("argument truncated");
-    case 11: return QObject::tr("not available");
-    case 12: return QObject::tr("VFO not targetable");
-    case 13: return QObject::tr("bus error");
-    case 14: return QObject::tr("bus collision");
-    case 15: return QObject::tr("null argument");
-    case 16: return QObject::tr("invalid VFO");
-    case 17: return QObject::tr("argument out of domain");
-    case 18: return QObject::tr("function deprecated");
-    case 19: return QObject::tr("security error");
-    case 20: return QObject::tr("device powered off");
-    case 21: return QObject::tr("limit exceeded");
-    default: return QObject::tr("error %1").arg(code);
-    }
+    if (const char *text = protocol::hamlibErrorText(code))
+        return QObject::tr(text);
+    return QObject::tr("error %1").arg(code);
 }
 
 RotctldRequest parseRotctldLine(QByteArrayView line)

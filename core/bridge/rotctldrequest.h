@@ -8,24 +8,19 @@
 // and key: value lines, any other leading punctuation (`;`, `|`, `,`) also
 // replaces the line breaks of the answer with itself. Pure code: no I/O.
 
+#include "protocol/hamliberrors.h"
+
 #include <QByteArray>
 #include <QByteArrayView>
 #include <QString>
 
 namespace slew::bridge {
 
-// Hamlib's error codes, which rotctld sends negated after RPRT.
-enum class HamlibError : int {
-    Ok = 0,
-    InvalidArgument = 1, // RIG_EINVAL
-    Timeout = 5,         // RIG_ETIMEOUT
-    Io = 6,              // RIG_EIO
-    Protocol = 8,        // RIG_EPROTO
-    Rejected = 9,        // RIG_ERJCTED
-    Limit = 21,          // RIG_ELIMIT
-};
+// Hamlib's error codes live with the protocol (protocol/hamliberrors.h):
+// the rotctld:// peer's refusals are read with the same table.
+using protocol::HamlibError;
 
-// "invalid argument", "rejected", ...
+// "invalid argument", "command rejected", ... (translatable)
 QString describeHamlibError(int code);
 
 struct RotctldRequest {

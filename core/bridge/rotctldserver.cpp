@@ -41,6 +41,7 @@ int hamlibModelFor(protocol::Dialect d)
     case protocol::Dialect::SatNogs: return 204;
     case protocol::Dialect::Gs232A: return 601;
     case protocol::Dialect::Gs232B: return 603;
+    case protocol::Dialect::Rotctld: return 2; // netrotctl: Slew is itself behind a rotctld
     }
     return 204;
 }

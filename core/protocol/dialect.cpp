@@ -15,6 +15,7 @@ QString dialectName(Dialect d)
     case Dialect::SatNogs: return QStringLiteral("satnogs");
     case Dialect::Gs232A: return QStringLiteral("gs232a");
     case Dialect::Gs232B: return QStringLiteral("gs232b");
+    case Dialect::Rotctld: return QStringLiteral("rotctld");
     }
     return {};
 }
@@ -22,7 +23,8 @@ QString dialectName(Dialect d)
 const QList<Dialect> &allDialects()
 {
     static const QList<Dialect> all{Dialect::Easycomm1, Dialect::Easycomm2, Dialect::Easycomm3,
-                                    Dialect::SatNogs,   Dialect::Gs232A,    Dialect::Gs232B};
+                                    Dialect::SatNogs,   Dialect::Gs232A,    Dialect::Gs232B,
+                                    Dialect::Rotctld};
     return all;
 }
 
@@ -37,6 +39,11 @@ QString dialectNameList()
 bool isGs232(Dialect d)
 {
     return d == Dialect::Gs232A || d == Dialect::Gs232B;
+}
+
+bool setsBothAxesTogether(Dialect d)
+{
+    return d == Dialect::Easycomm1 || isGs232(d) || d == Dialect::Rotctld;
 }
 
 char lineTerminator(Dialect d)
@@ -56,6 +63,8 @@ std::optional<Dialect> dialectFromName(QStringView name)
 bool dialectSupports(Dialect d, Op op)
 {
     const OperationInfo &info = operationInfo(op);
+    if (d == Dialect::Rotctld)
+        return info.rotctld;
     if (isGs232(d))
         return info.gs232;
     switch (info.easycomm) {
@@ -72,6 +81,8 @@ int angleDecimals(Dialect d)
 {
     if (isGs232(d))
         return 0; // whole degrees: W010 020
+    if (d == Dialect::Rotctld)
+        return 2; // as rotctld prints its own answers
     return d == Dialect::Easycomm3 ? 2 : 1;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
-// The flavours of Easycomm that Slew speaks. docs/protocol.md has the table of
-// every command and its wire form per dialect, and why each choice was made.
+// The command sets Slew speaks: the flavours of Easycomm, Yaesu GS-232, and
+// Hamlib's rotctld network protocol. docs/protocol.md has the table of every
+// command and its wire form per dialect, and why each choice was made.
 
 #include "message.h"
 
@@ -18,15 +19,20 @@ enum class Dialect : std::uint8_t {
     SatNogs,   // SatNOGS firmware: `CR n` answered `n,value`, VE, IP0..8 (Hamlib model 204)
     Gs232A,    // Yaesu GS-232A: W/M/C2/S/A/E/R/L/U/D/X, position `+0aaa+0eee` (Hamlib model 601)
     Gs232B,    // Yaesu GS-232B: the same commands, position `AZ=aaa  EL=eee` (Hamlib model 603)
+    Rotctld,   // Hamlib's rotctld over TCP: P, p, S, K, R, M, _; answers `RPRT n` or bare lines
 };
 
 // Every dialect, in the order the UI lists them.
 const QList<Dialect> &allDialects();
-// "easycomm1, easycomm2, ..., gs232b", for help texts and messages.
+// "easycomm1, easycomm2, ..., rotctld", for help texts and messages.
 QString dialectNameList();
 bool isGs232(Dialect d);
 
-// What ends a line Slew sends: `\n` for Easycomm, `\r` for GS-232.
+// Whether a set position always names both axes (Easycomm I's one line,
+// GS-232's W, rotctld's P): a one-axis move must then name the other too.
+bool setsBothAxesTogether(Dialect d);
+
+// What ends a line Slew sends: `\n` for Easycomm and rotctld, `\r` for GS-232.
 char lineTerminator(Dialect d);
 
 QString dialectName(Dialect d);                              // "easycomm2"

@@ -78,6 +78,45 @@ QByteArray encodeGs232Token(const Message &m)
     }
 }
 
+// rotctld's `M` takes a speed from 1 to 100 (or -1, "no change"): a share of
+// what the rotator can do, not a rate Slew could work out from degrees per
+// second. Half is what Slew asks; -1 would leave it to whatever the backend
+// last had, which after connecting nobody knows.
+constexpr int kRotctldMoveSpeed = 50;
+
+QByteArray rotctldMove(int direction)
+{
+    return "M " + QByteArray::number(direction) + ' ' + QByteArray::number(kRotctldMoveSpeed);
+}
+
+// rotctld's commands (Hamlib's rotctld(1) manual page): a letter and its
+// arguments after spaces. Its set position always names both axes, so a
+// lone angle has no form here: encodeSetPosition writes `P az el`.
+QByteArray encodeRotctldToken(const Message &m)
+{
+    switch (m.op) {
+    case Op::Azimuth:
+    case Op::Elevation: return m.hasValue ? QByteArray() : QByteArray("p"); // p answers both axes
+    case Op::MoveUp: return rotctldMove(2); // Hamlib's ROT_MOVE_UP
+    case Op::MoveDown: return rotctldMove(4);
+    case Op::MoveLeft: return rotctldMove(8);
+    case Op::MoveRight: return rotctldMove(16);
+    case Op::StopAzimuth:
+    case Op::StopElevation: return "S"; // rotctld stops both axes: more than asked, never less
+    case Op::Park: return "K";
+    case Op::Reset: return "R 1"; // ROT_RESET_ALL, the one reset type Hamlib defines
+    case Op::Version: return m.isQuery() ? QByteArray("_") : QByteArray();
+    default: return {};
+    }
+}
+
+// Whether a line holds one command (GS-232 and rotctld) rather than several
+// tokens (Easycomm).
+bool oneCommandALine(Dialect d)
+{
+    return isGs232(d) || d == Dialect::Rotctld;
+}
+
 } // namespace
 
 QByteArray encodeToken(const Message &m, Dialect d)
@@ -86,6 +125,8 @@ QByteArray encodeToken(const Message &m, Dialect d)
         return {};
     if (isGs232(d))
         return encodeGs232Token(m);
+    if (d == Dialect::Rotctld)
+        return encodeRotctldToken(m);
     QByteArray out = mnemonic(m.op).toByteArray();
     switch (operationInfo(m.op).argument) {
     case Argument::Angle:
@@ -129,6 +170,12 @@ QByteArray encodeToken(const Message &m, Dialect d)
 
 QByteArray encodeReport(const Message &m, Dialect d)
 {
+    if (d == Dialect::Rotctld) {
+        // The lines of a `p` answer: bare numbers, azimuth first.
+        if (!m.hasValue || (m.op != Op::Azimuth && m.op != Op::Elevation))
+            return {};
+        return formatNumber(m.value, angleDecimals(d));
+    }
     if (!isGs232(d))
         return encodeToken(m, d);
     // GS-232 reports differ from its commands: `+0aaa` (A) or `AZ=aaa` (B).
@@ -146,14 +193,15 @@ QByteArray reportSeparator(Dialect d)
     switch (d) {
     case Dialect::Gs232A: return {};
     case Dialect::Gs232B: return "  ";
+    case Dialect::Rotctld: return "\n"; // a `p` answer is two lines
     default: return " ";
     }
 }
 
 QByteArray encodeLine(std::initializer_list<Message> tokens, Dialect d)
 {
-    // GS-232 takes one command a line; Easycomm several, space-separated.
-    const char separator = isGs232(d) ? lineTerminator(d) : ' ';
+    // GS-232 and rotctld take one command a line; Easycomm several, space-separated.
+    const char separator = oneCommandALine(d) ? lineTerminator(d) : ' ';
     QByteArray line;
     for (const Message &m : tokens) {
         const QByteArray token = encodeToken(m, d);
@@ -184,6 +232,8 @@ QByteArray encodeSetPosition(double az, double el, Dialect d)
         return encodeEasycomm1Line(az, el);
     if (isGs232(d))
         return "W" + threeDigits(az) + ' ' + threeDigits(el) + lineTerminator(d);
+    if (d == Dialect::Rotctld)
+        return "P " + formatNumber(az, angleDecimals(d)) + ' ' + formatNumber(el, angleDecimals(d)) + lineTerminator(d);
     return encodeLine({Message::number(Op::Azimuth, az), Message::number(Op::Elevation, el)}, d);
 }
 
@@ -193,6 +243,8 @@ QByteArray encodeQueryPosition(Dialect d)
         return {}; // Easycomm I has no way to ask
     if (isGs232(d))
         return QByteArray("C2") + lineTerminator(d);
+    if (d == Dialect::Rotctld)
+        return QByteArray("p") + lineTerminator(d);
     return encodeLine({Message::query(Op::Azimuth), Message::query(Op::Elevation)}, d);
 }
 
@@ -202,6 +254,8 @@ QByteArray encodeStop(bool azimuth, bool elevation, Dialect d)
         return {};
     if (azimuth && elevation && isGs232(d))
         return QByteArray("S") + lineTerminator(d);
+    if (d == Dialect::Rotctld)
+        return QByteArray("S") + lineTerminator(d); // one stop for every axis
     if (azimuth && elevation)
         return encodeLine({Message::query(Op::StopAzimuth), Message::query(Op::StopElevation)}, d);
     return encodeLine({Message::query(azimuth ? Op::StopAzimuth : Op::StopElevation)}, d);

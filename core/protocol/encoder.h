@@ -17,13 +17,14 @@ QByteArray encodeToken(const Message &m, Dialect d);
 
 // Tokens joined by single spaces and ended with `\n`, the terminator every
 // Easycomm peer in docs/protocol.md accepts (GS-232: one command a line, each
-// ended with `\r`). Empty when any token is unsupported.
+// ended with `\r`; rotctld: one a line, ended with `\n`). Empty when any
+// token is unsupported.
 QByteArray encodeLine(std::initializer_list<Message> tokens, Dialect d);
 
 // The commands the session sends, in each dialect's own form.
-QByteArray encodeSetPosition(double az, double el, Dialect d); // Easycomm I: full line
-QByteArray encodeQueryPosition(Dialect d);                     // `AZ EL\n`; empty for Easycomm I
-QByteArray encodeStop(bool azimuth, bool elevation, Dialect d); // `SA SE\n`
+QByteArray encodeSetPosition(double az, double el, Dialect d); // Easycomm I: full line; rotctld `P az el`
+QByteArray encodeQueryPosition(Dialect d);                     // `AZ EL\n`; empty for Easycomm I; `p`
+QByteArray encodeStop(bool azimuth, bool elevation, Dialect d); // `SA SE\n`; rotctld `S` stops both
 // What holds the stopped axes with the drive engaged: a zero speed (`VL000
 // VU000\n`), which brakes a drive that would coast. Empty for a dialect
 // without speed commands.
@@ -34,7 +35,8 @@ QByteArray encodeEasycomm1Line(double az, double el, quint64 up = 0, QByteArrayV
                                quint64 down = 0, QByteArrayView downMode = "XXX");
 
 // A controller's report of a value, for the simulator's answers: the same as
-// encodeToken in Easycomm (`AZ10.0`), `+0010` / `AZ=010` in GS-232.
+// encodeToken in Easycomm (`AZ10.0`), `+0010` / `AZ=010` in GS-232, a bare
+// `10.00` (one line of a `p` answer) in rotctld.
 QByteArray encodeReport(const Message &m, Dialect d);
 // What goes between two reports on one answer line.
 QByteArray reportSeparator(Dialect d);

@@ -56,6 +56,9 @@ enum class Op : std::uint8_t {
     // GS-232 map onto Azimuth, Elevation, StopAzimuth, StopElevation, Move*.
     Speed,         // Xn, n 1..4: the speed of the manual moves
     KeepAlive,     // ?   (a keep-alive that expects no answer)
+    // rotctld only (docs/protocol.md): its other answers map onto Azimuth,
+    // Elevation, Version and Alarm.
+    Report,        // RPRT 0: a command done; value holds the code
 };
 
 // Why a token was refused, for code that counts or answers by kind; the

@@ -35,12 +35,15 @@ void Parser::reset()
     m_hasPending = false;
     m_previousOnLine = Op::Invalid;
     m_previousHadValue = false;
+    m_holdingAzimuth = false;
     m_readyCount = 0;
 }
 
 int Parser::push(char c)
 {
     m_readyCount = 0;
+    if (m_dialect == Dialect::Rotctld)
+        return pushRotctld(c);
     if (isLineEnd(c)) {
         if (m_length > 0 || m_overflow)
             finishToken(true);
@@ -147,6 +150,8 @@ Parser::Classified Parser::classify(QByteArrayView t) const
         c.first = Message::invalid(t, "empty token", Refusal::Unknown);
         return c;
     }
+    if (m_dialect == Dialect::Rotctld)
+        return classifyRotctld(t); // a whole line, spaces and all
     if (!isPrintable(t)) {
         Classified c;
         c.first = Message::invalid(t, "unprintable byte in token");

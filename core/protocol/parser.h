@@ -14,6 +14,10 @@
 // A token ended by a space is handed out when the next non-space byte arrives
 // (then Message::lineEnd tells whether its line ended). Every real peer ends
 // its lines with CR or LF, so nothing waits for long; flush() ends a line by hand.
+//
+// rotctld is read a whole line at a time instead (parser_rotctld.cpp): its
+// answers are lines (`RPRT 0`, `180.00`, a model name with spaces), and the
+// two lines of a `p` answer are handed out together once both have arrived.
 
 #include "dialect.h"
 #include "message.h"
@@ -55,14 +59,14 @@ public:
     void reset();
 
     // Bytes of a line are held that no line end has completed yet.
-    bool hasUnfinishedLine() const { return m_length > 0 || m_overflow || m_hasPending; }
+    bool hasUnfinishedLine() const { return m_length > 0 || m_overflow || m_hasPending || m_holdingAzimuth; }
 
     // Parses one token on its own, with no line context (tests, the console).
     static Message parseToken(QByteArrayView token, Dialect d);
 
 private:
     // What one token reads as: usually one message, two for GS-232's
-    // `C2`, `S` and `+0aaa+0eee`.
+    // `C2`, `S` and `+0aaa+0eee` (and for rotctld's lines `P 10 20`, `p`, `S`).
     struct Classified {
         Message first;
         Message second;
@@ -76,6 +80,9 @@ private:
     Classified classify(QByteArrayView token) const;
     Message classifyEasycomm(QByteArrayView token) const;
     Classified classifyGs232(QByteArrayView token) const;
+    int pushRotctld(char c);
+    void finishRotctldLine();
+    Classified classifyRotctld(QByteArrayView line) const;
     bool pendingWaitsForArgument() const;
 
     Dialect m_dialect;
@@ -91,6 +98,10 @@ private:
     // Line context: the mode word after UPnnn / DNnnn (Easycomm I).
     Op m_previousOnLine = Op::Invalid;
     bool m_previousHadValue = false;
+    // rotctld: the first line of a `p` answer, waiting for its second.
+    bool m_holdingAzimuth = false;
+    bool m_azimuthBroken = false; // that first line was not a number (already reported)
+    double m_heldAzimuth = 0.0;
     std::array<Message, 4> m_ready;
     int m_readyCount = 0;
 };

@@ -327,6 +327,7 @@ void SimulatorFirmware::handle(const Message &m, QByteArray &out)
     case Op::Invalid:
     case Op::Alarm:
     case Op::ConfigValue:
+    case Op::Report: // rotctld's answer; no controller is sent one
         ++m_counters.unknown;
         alarm("unknown", protocol::mnemonic(m.op), out);
         return;

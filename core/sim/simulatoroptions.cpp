@@ -216,6 +216,9 @@ QString applySimulatorOption(SimulatorOptions &o, QStringView rawName, QStringVi
         const auto d = protocol::dialectFromName(value);
         if (!d)
             return bad(name, value, QStringLiteral("expected one of: %1").arg(protocol::dialectNameList()));
+        // rotctld is a network peer in front of a controller, not one.
+        if (*d == protocol::Dialect::Rotctld)
+            return bad(name, value, QStringLiteral("the simulator plays a controller; rotctld is reached with rotctld://"));
         o.dialect = *d;
         return {};
     }

@@ -20,6 +20,9 @@ class EncoderTest : public QObject {
 private slots:
     void hamlibWireStrings();
     void gs232WireStrings();
+    void rotctldWireStrings();
+    void rotctldCannotDoWhatItLacks();
+    void rotctldCommandsReadBack();
     void tokens_data();
     void tokens();
     void unsupportedCommandsEncodeToNothing();
@@ -93,6 +96,81 @@ void EncoderTest::gs232WireStrings()
                  + encodeReport(Message::number(Op::Elevation, 20), Dialect::Gs232B),
              QByteArray("AZ=010  EL=020"));
     QCOMPARE(encodeReport(Message::number(Op::Azimuth, 10.5), Dialect::Easycomm2), QByteArray("AZ10.5"));
+}
+
+void EncoderTest::rotctldWireStrings()
+{
+    // Hamlib's rotctld(1) manual page: one command a line, ended with `\n`.
+    const auto r = Dialect::Rotctld;
+    QCOMPARE(encodeSetPosition(10.5, 20.25, r), QByteArray("P 10.50 20.25\n"));
+    QCOMPARE(encodeSetPosition(-0.001, 90, r), QByteArray("P 0.00 90.00\n"));
+    QCOMPARE(encodeQueryPosition(r), QByteArray("p\n"));
+    // S stops both axes, whichever was asked: more than asked, never less.
+    QCOMPARE(encodeStop(true, true, r), QByteArray("S\n"));
+    QCOMPARE(encodeStop(true, false, r), QByteArray("S\n"));
+    QCOMPARE(encodeStop(false, true, r), QByteArray("S\n"));
+    QVERIFY(encodeStop(false, false, r).isEmpty());
+    QVERIFY(encodeStopHold(true, true, r).isEmpty()); // no speed commands to hold with
+    QCOMPARE(encodeLine({Message::query(Op::Park)}, r), QByteArray("K\n"));
+    QCOMPARE(encodeLine({Message::query(Op::Reset)}, r), QByteArray("R 1\n"));
+    QCOMPARE(encodeLine({Message::query(Op::Version)}, r), QByteArray("_\n"));
+    // Directions as Hamlib numbers them: UP 2, DOWN 4, LEFT 8, RIGHT 16.
+    QCOMPARE(encodeLine({Message::query(Op::MoveUp)}, r), QByteArray("M 2 50\n"));
+    QCOMPARE(encodeLine({Message::query(Op::MoveDown)}, r), QByteArray("M 4 50\n"));
+    QCOMPARE(encodeLine({Message::query(Op::MoveLeft)}, r), QByteArray("M 8 50\n"));
+    QCOMPARE(encodeLine({Message::query(Op::MoveRight)}, r), QByteArray("M 16 50\n"));
+    // The answer lines of `p`, as a peer writes them.
+    QCOMPARE(encodeReport(Message::number(Op::Azimuth, 180), r) + reportSeparator(r)
+                 + encodeReport(Message::number(Op::Elevation, 45), r),
+             QByteArray("180.00\n45.00"));
+    QCOMPARE(lineTerminator(r), '\n');
+    QVERIFY(setsBothAxesTogether(r));
+    QVERIFY(!setsBothAxesTogether(Dialect::Easycomm2));
+}
+
+void EncoderTest::rotctldCannotDoWhatItLacks()
+{
+    const auto r = Dialect::Rotctld;
+    // What rotctld has no command for is unsupported in the table, so the
+    // session refuses it and the window greys it, rather than sending it.
+    for (Op op : {Op::ConfigRead, Op::ConfigWrite, Op::Status, Op::ErrorFlags, Op::ReadInput, Op::ReadAnalog,
+                  Op::Encoders, Op::VelocityLeft, Op::VelocityRight, Op::VelocityUp, Op::VelocityDown,
+                  Op::UplinkFreq, Op::SetOutput, Op::Time, Op::Speed, Op::KeepAlive}) {
+        QVERIFY2(!dialectSupports(r, op), describe(op));
+        QVERIFY(encodeToken(Message::query(op, 1), r).isEmpty());
+    }
+    for (Op op : {Op::Azimuth, Op::Elevation, Op::MoveLeft, Op::MoveRight, Op::MoveUp, Op::MoveDown,
+                  Op::StopAzimuth, Op::StopElevation, Op::Park, Op::Reset, Op::Version})
+        QVERIFY2(dialectSupports(r, op), describe(op));
+    // P always takes both axes: a lone angle has no form.
+    QVERIFY(encodeToken(Message::number(Op::Azimuth, 10), r).isEmpty());
+    QVERIFY(encodeLine({Message::number(Op::Elevation, 10)}, r).isEmpty());
+    QVERIFY(encodeToken(Message::word(Op::Version, "x"), r).isEmpty());
+}
+
+void EncoderTest::rotctldCommandsReadBack()
+{
+    // What the encoder writes, the parser reads as the same messages: the
+    // session's raw line and the tests' scripted peer both rely on it.
+    const auto r = Dialect::Rotctld;
+    struct Case {
+        QByteArray wire;
+        QStringList messages;
+    };
+    const Case cases[] = {
+        {encodeSetPosition(10.5, 20.25, r), {"azimuth=10.5", "elevation=20.25|"}},
+        {encodeQueryPosition(r), {"azimuth", "elevation|"}},
+        {encodeStop(true, true, r), {"stop azimuth", "stop elevation|"}},
+        {encodeLine({Message::query(Op::Park)}, r), {"park|"}},
+        {encodeLine({Message::query(Op::Reset)}, r), {"reset and home|"}},
+        {encodeLine({Message::query(Op::Version)}, r), {"version|"}},
+        {encodeLine({Message::query(Op::MoveRight)}, r), {"move right|"}},
+        {encodeLine({Message::query(Op::MoveDown)}, r), {"move down|"}},
+    };
+    for (const Case &c : cases) {
+        Parser parser(r);
+        QCOMPARE(parseAll(parser, c.wire), c.messages);
+    }
 }
 
 void EncoderTest::tokens_data()
@@ -238,7 +316,8 @@ void EncoderTest::dialectNames()
 {
     for (Dialect d : allDialects())
         QCOMPARE(dialectFromName(dialectName(d)), std::optional<Dialect>(d));
-    QCOMPARE(allDialects().size(), 6);
+    QCOMPARE(allDialects().size(), 7);
+    QCOMPARE(dialectFromName(u"rotctld"), std::optional<Dialect>(Dialect::Rotctld));
     QCOMPARE(dialectFromName(u"SATNOGS"), std::optional<Dialect>(Dialect::SatNogs));
     QVERIFY(!dialectFromName(u"gs232").has_value());
     QCOMPARE(dialectFromName(u"GS232B"), std::optional<Dialect>(Dialect::Gs232B));

@@ -25,6 +25,10 @@ private slots:
     void overlongTokenIsDroppedOnce();
     void nulBytesAreRefused();
     void parseTokenWithoutContext();
+    void rotctldPositionAnswerComesWhole();
+    void rotctldBadInputChangesNothing_data();
+    void rotctldBadInputChangesNothing();
+    void rotctldChunkingGivesTheSameMessages();
 };
 
 void ParserTest::vectors_data()
@@ -193,6 +197,33 @@ void ParserTest::vectors_data()
     row("gs232b single", "gs232b", "AZ=350\rEL=005\r", {"azimuth=350|", "elevation=5|"});
     row("gs232 prompt", "gs232b", "?>\r", {"unreadable input '?>'|"});
     row("gs232 garbage", "gs232a", "+0x12\rQ\r", {"unreadable input '+0x12'|", "unreadable input 'Q'|"});
+
+    // --- rotctld's answers, as Hamlib 4.5's rotctld writes them (its rotctld(1) manual page).
+    row("rotctld p", "rotctld", "180.000000\n45.000000\n", {"azimuth=180", "elevation=45|"});
+    row("rotctld p two decimals", "rotctld", "0.00\n1.81\n", {"azimuth=0", "elevation=1.81|"});
+    row("rotctld p negative", "rotctld", "-12.50\n0.00\n", {"azimuth=-12.5", "elevation=0|"});
+    row("rotctld p crlf", "rotctld", "10.00\r\n20.00\r\n", {"azimuth=10", "elevation=20|"});
+    row("rotctld done", "rotctld", "RPRT 0\n", {"rotctld report=0|"});
+    row("rotctld rejected", "rotctld", "RPRT -9\n", {"alarm=-9 'RPRT -9: command rejected (RIG_ERJCTED)'|"});
+    row("rotctld out of range", "rotctld", "RPRT -1\n", {"alarm=-1 'RPRT -1: invalid argument (RIG_EINVAL)'|"});
+    row("rotctld limit", "rotctld", "RPRT -21\n", {"alarm=-21 'RPRT -21: limit exceeded (RIG_ELIMIT)'|"});
+    row("rotctld unnamed code", "rotctld", "RPRT -42\n", {"alarm=-42 'RPRT -42: an error Hamlib does not name'|"});
+    row("rotctld info", "rotctld", "Dummy rotator\n", {"version 'Dummy rotator'|"});
+    row("rotctld answers in a row", "rotctld", "RPRT 0\n10.00\n20.00\nRPRT 0\n",
+        {"rotctld report=0|", "azimuth=10", "elevation=20|", "rotctld report=0|"});
+    // The commands Slew sends read back as their messages (the raw line's gate).
+    row("rotctld set_pos", "rotctld", "P 10.5 20,25\n\\set_pos 1 2\n",
+        {"azimuth=10.5", "elevation=20.25|", "azimuth=1", "elevation=2|"});
+    row("rotctld get_pos", "rotctld", "p\n", {"azimuth", "elevation|"});
+    row("rotctld stop park reset", "rotctld", "S\nK\nR 1\n\\park\n",
+        {"stop azimuth", "stop elevation|", "park|", "reset and home|", "park|"});
+    row("rotctld moves", "rotctld", "M 2 -1\nM 4 1\nM 8 100\n\\move 16 50\n",
+        {"move up|", "move down|", "move left|", "move right|"});
+    row("rotctld bad move", "rotctld", "M 3 50\nM 16 0\nM 16\n",
+        {"unreadable input 'M 3 50'|", "unreadable input 'M 16 0'|", "unreadable input 'M 16'|"});
+    row("rotctld unread commands", "rotctld", "\\dump_state\n+p\n;p\nq\n",
+        {"unreadable input '\\dump_state'|", "unreadable input '+p'|", "unreadable input ';p'|",
+         "unreadable input 'q'|"});
 }
 
 void ParserTest::vectors()
@@ -330,6 +361,88 @@ void ParserTest::parseTokenWithoutContext()
         QCOMPARE(empty.op, Op::Invalid);
         QCOMPARE(empty.refusal, Refusal::Unknown);
     }
+}
+
+void ParserTest::rotctldPositionAnswerComesWhole()
+{
+    // The azimuth line waits for its elevation: a half answer changes nothing.
+    Parser parser(Dialect::Rotctld);
+    QVERIFY(parseAll(parser, "180.000000\n").isEmpty());
+    QVERIFY(parser.hasUnfinishedLine());
+    QCOMPARE(parseAll(parser, "45.000000\n"), (QStringList{"azimuth=180", "elevation=45|"}));
+    QVERIFY(!parser.hasUnfinishedLine());
+    // reset() forgets a waiting azimuth.
+    QVERIFY(parseAll(parser, "1.00\n").isEmpty());
+    parser.reset();
+    QCOMPARE(parseAll(parser, "2.00\n3.00\n"), (QStringList{"azimuth=2", "elevation=3|"}));
+    // A lone number is an azimuth to parseToken, which has no line context.
+    QCOMPARE(dumpMessage(Parser::parseToken("12.5", Dialect::Rotctld)), QStringLiteral("azimuth=12.5"));
+}
+
+void ParserTest::rotctldBadInputChangesNothing_data()
+{
+    QTest::addColumn<QByteArray>("bytes");
+    QTest::addColumn<QStringList>("expected");
+    auto row = [](const char *name, QByteArray bytes, QStringList expected) {
+        QTest::newRow(name) << bytes << expected;
+    };
+    row("garbage bytes", QByteArray("\x01\x02\xff\n", 4), {QStringLiteral("unreadable input '\x01\x02") + QChar(0xff) + "'|"});
+    row("RPRT without a code", "RPRT\n", {"unreadable input 'RPRT'|"});
+    row("RPRT with letters", "RPRT x\n", {"unreadable input 'RPRT x'|"});
+    row("RPRT with a fraction", "RPRT -1.5\n", {"unreadable input 'RPRT -1.5'|"});
+    row("RPRT too big", "RPRT -99999999999\n", {"unreadable input 'RPRT -99999999999'|"});
+    row("RPRT and more", "RPRT 0 0\n", {"unreadable input 'RPRT 0 0'|"});
+    row("a number with letters", "12abc\n", {"unreadable input '12abc'|"});
+    // `p` answers with a line missing or not a number: both lines go,
+    // with one message, and the next answer pairs up again.
+    row("elevation not a number", "180.000000\nabc\n10\n20\n",
+        {"unreadable input 'abc'|", "azimuth=10", "elevation=20|"});
+    row("elevation malformed", "180.000000\n4x5\n10\n20\n",
+        {"unreadable input '4x5'|", "azimuth=10", "elevation=20|"});
+    row("azimuth malformed", "1x0\n45.000000\n10\n20\n",
+        {"unreadable input '1x0'|", "azimuth=10", "elevation=20|"});
+    row("elevation missing", "180.000000\nRPRT 0\n10\n20\n",
+        {"unreadable input 'RPRT 0'|", "rotctld report=0|", "azimuth=10", "elevation=20|"});
+    row("azimuth malformed, elevation missing", "1x0\nRPRT -1\n",
+        {"unreadable input '1x0'|", "alarm=-1 'RPRT -1: invalid argument (RIG_EINVAL)'|"});
+}
+
+void ParserTest::rotctldBadInputChangesNothing()
+{
+    QFETCH(QByteArray, bytes);
+    QFETCH(QStringList, expected);
+    Parser parser(Dialect::Rotctld);
+    QStringList reasons;
+    QStringList out;
+    parser.feed(bytes, [&](const Message &m) {
+        out << dumpMessage(m);
+        if (m.op == Op::Invalid)
+            reasons << QString::fromLatin1(m.reason);
+    });
+    QCOMPARE(out, expected);
+    // Each refusal says why, and a good line after it reads as before.
+    for (const QString &reason : std::as_const(reasons))
+        QVERIFY2(reason.size() > 10, qPrintable(reason));
+    QCOMPARE(parseAll(parser, "RPRT 0\n"), QStringList{"rotctld report=0|"});
+}
+
+void ParserTest::rotctldChunkingGivesTheSameMessages()
+{
+    const QByteArray bytes = "RPRT 0\n180.000000\n45.000000\nDummy rotator\nRPRT -9\n"
+                             "1x0\n2\nP 1 2\n" + QByteArray(300, 'Z') + "\n10.00\r\n20.00\r\n";
+    Parser whole(Dialect::Rotctld);
+    const QStringList expected = parseAll(whole, bytes);
+    QCOMPARE(expected.size(), 11);
+    QVERIFY(expected[8].startsWith("unreadable input 'ZZZ"));
+    QRandomGenerator random(11);
+    Parser chunked(Dialect::Rotctld);
+    QStringList inChunks;
+    for (qsizetype at = 0; at < bytes.size();) {
+        const qsizetype n = qMin<qsizetype>(random.bounded(1, 9), bytes.size() - at);
+        inChunks << parseAll(chunked, QByteArrayView(bytes).sliced(at, n));
+        at += n;
+    }
+    QCOMPARE(inChunks, expected);
 }
 
 QTEST_GUILESS_MAIN(ParserTest)
