@@ -10,6 +10,7 @@
 #include "model/rotatorprofile.h"
 #include "protocol/dialect.h"
 #include "session/rotatorsession.h"
+#include "transport/linkfactory.h"
 #include "cli/terminationsignalwatcher.h"
 
 #include <QCommandLineParser>
@@ -118,6 +119,9 @@ int main(int argc, char *argv[])
         profile.dialect = *dialect;
     }
     profile.uri = positional.first();
+    // A rotctld:// peer speaks one dialect whatever --dialect or the profile say.
+    if (slew::transport::linkHintsFor(profile.uri).dialect == slew::protocol::dialectName(slew::protocol::Dialect::Rotctld))
+        profile.dialect = slew::protocol::Dialect::Rotctld;
     int timeoutSeconds = 600;
     if (parser.isSet(QStringLiteral("timeout"))) {
         bool ok = false;

@@ -3,8 +3,10 @@
 
 #include "logtext.h"
 #include "rotctldserver.h"
+#include "protocol/dialect.h"
 #include "session/rotatorsession.h"
 #include "session/stopbeforeexit.h"
+#include "transport/linkfactory.h"
 
 #include <QDateTime>
 
@@ -49,7 +51,12 @@ bool HeadlessStation::start(const HeadlessConfig &config, QString *error)
     RotatorSession::Options options = m_session->options();
     options.autoReconnect = true; // a service keeps trying after a loss
     m_session->setOptions(options);
-    m_session->setProfile(config.profile);
+    model::RotatorProfile profile = config.profile;
+    // A rotctld:// peer speaks one dialect whatever the profile names (the
+    // window takes it from the link's hints the same way).
+    if (transport::linkHintsFor(profile.uri).dialect == protocol::dialectName(protocol::Dialect::Rotctld))
+        profile.dialect = protocol::Dialect::Rotctld;
+    m_session->setProfile(profile);
     if (config.rotctldEnabled) {
         m_server = std::make_unique<RotctldServer>(m_session.get());
         m_server->setAllowedClients(config.allowedClients);

@@ -2,81 +2,56 @@
 // `rotctld://host:port`: a link to a running rotctld, so Slew reaches any
 // rotator Hamlib drives.
 //
-// The session speaks Easycomm on every link, so this link translates: the
-// session's Easycomm lines become rotctld commands (`AZ EL` -> `p`,
-// `AZ10 EL20` -> `P 10 20`, `EL20` alone -> `P <where azimuth is going> 20`, `SA SE` -> `S`, `PARK` -> `K`, `RESET` -> `R 1`,
-// `VR`/`MR` -> `M 16 n`, `VE` -> `_`) and the answers come back as Easycomm
-// replies. What rotctld cannot give (GS, GE, IP, CR) gets no answer, so the
-// session's probe marks it absent. On open it reads `\dump_state` and
-// reports the limits; an error code from rotctld becomes a readable notice.
+// The link only connects. On open it asks `\dump_state` (as Hamlib's own
+// client for rotctld does), reports the limits it reads there through
+// limitsReported(), and then hands the session the socket itself: the
+// session speaks the rotctld dialect (protocol/parser_rotctld.cpp,
+// protocol/encoder.cpp) straight to the peer, with nothing in between.
+// hints() names that dialect, so a window connecting to a rotctld:// URI
+// speaks it without being told.
+//
+// The handshake is read in a slot connected in the constructor, before any
+// reader the session connects to device(): it takes every byte until `done`,
+// so the session finds nothing to read until the link has opened.
 
-#include "sim/loopbackpipe.h"
-#include "protocol/parser.h"
 #include "transport/link.h"
 
-#include <QElapsedTimer>
 #include <QTcpSocket>
 #include <QTimer>
-
-#include <deque>
 
 namespace slew::bridge {
 
 class RotctldLink : public transport::Link {
     Q_OBJECT
 public:
-    static constexpr int kMaxPending = 32;      // commands waiting for rotctld
-    static constexpr int kAnswerTimeoutMs = 3000;
+    static constexpr int kHandshakeTimeoutMs = 5000; // for the answer to \dump_state
+    static constexpr qsizetype kMaxHandshakeBytes = 4096;
 
     RotctldLink(const QString &uri, QString host, quint16 port, QObject *parent = nullptr);
 
-    QIODevice *device() override { return m_pipe.hostEnd(); }
+    QIODevice *device() override { return &m_socket; }
     void open() override;
     void close() override;
     bool isOpen() const override { return m_open; }
+    transport::LinkHints hints() const override;
 
     // Registers the `rotctld` scheme with createLink().
     static void registerScheme();
 
 private:
-    enum class Expect { Position, Status, Info, DumpState };
-    struct Pending {
-        QByteArray command; // as sent, for messages
-        Expect expect;
-        qint64 sentAtMs;
-    };
-
     void onConnected();
     void onSocketError();
-    void onSocketReadyRead();
-    void onHostBytes();
-    void translate();
-    void send(const QByteArray &command, Expect expect);
-    void handleLine(const QByteArray &line);
-    void finishDumpState();
-    void reply(const QByteArray &easycomm);
-    void checkTimeouts();
+    void onHandshakeBytes();
+    void finishHandshake();
     void fail(const QString &reason);
 
     QString m_host;
     quint16 m_port;
     QTcpSocket m_socket;
-    sim::LoopbackPipe m_pipe;
-    protocol::Parser m_parser{protocol::Dialect::SatNogs};
-    QList<protocol::Message> m_line; // the Easycomm line being read from the session
-    QByteArray m_socketBuffer;
-    std::deque<Pending> m_pending;
-    QList<QByteArray> m_answerLines; // lines of the answer being collected
-    QTimer m_timeoutTimer;
-    QElapsedTimer m_clock;
+    QTimer m_handshakeTimer;
+    QByteArray m_handshake; // the \dump_state answer read so far
     bool m_open = false;
     bool m_opening = false;
-    // For a one-axis move: where each axis was last sent (NaN after a stop
-    // or before any) and last seen.
-    double m_sentAz = qQNaN();
-    double m_sentEl = qQNaN();
-    double m_seenAz = qQNaN();
-    double m_seenEl = qQNaN();
 };
 
 } // namespace slew::bridge

@@ -81,14 +81,32 @@ CommandResult RotatorSession::gotoAxis(Axis axis, double degrees, AzimuthIs mean
     if (!check.allowed())
         return refuseMove(check.refusal);
     const double target = az ? check.azimuth : check.elevation;
-    // Easycomm I and GS-232 can only command both axes together.
-    if (d == Dialect::Easycomm1 || protocol::isGs232(d)) {
-        const double other = az ? (hasPosition() ? m_el : m_targetEl) : (hasPosition() ? m_az : m_targetAz);
-        if (std::isnan(other))
+    // Easycomm I, GS-232 and rotctld can only command both axes together:
+    // the other axis goes on to where it was last sent, or stays where it
+    // was last seen, and the pair passes the gate as the mechanical
+    // positions that are sent.
+    if (protocol::setsBothAxesTogether(d)) {
+        std::optional<double> other;
+        if (m_activeTarget)
+            other = az ? m_activeTarget->elevation : m_activeTarget->azimuth;
+        else if (hasPosition())
+            other = az ? m_el : m_az;
+        if (!other)
             return refuse(tr("%1 moves both axes at once, and the other axis' position is not known yet")
                               .arg(protocol::dialectName(d)));
-        // The chosen azimuth is a mechanical position now: sent as it is.
-        return az ? gotoPosition(target, other) : gotoPosition(other, target);
+        const double a = az ? target : *other;
+        const double e = az ? *other : target;
+        if (const model::MoveCheck both = m_gate.mechanical(a, e); !both.allowed())
+            return refuseMove(both.refusal);
+        rememberSent(Message::number(Op::Azimuth, std::round(a * 100) / 100));
+        rememberSent(Message::number(Op::Elevation, std::round(e * 100) / 100));
+        m_jogSpeed = {0.0, 0.0};
+        writeMove(protocol::encodeSetPosition(a, e, d));
+        m_activeTarget = PointingTarget{a, e};
+        m_targetAz = a;
+        m_targetEl = e;
+        emit targetChanged(a, e);
+        return {};
     }
     const Message m = Message::number(op, target);
     rememberSent(Message::number(op, std::round(target * 100) / 100));
@@ -276,6 +294,11 @@ CommandResult RotatorSession::writeConfig(int reg, const QString &value)
 
 QString RotatorSession::rawMoveRefusal(const Message &m) const
 {
+    // rotctld takes a whole line as one command, and does more than Slew
+    // reads (`w` passes bytes to the rotator): only the commands Slew reads
+    // may go, each through the gate below.
+    if (m_profile.dialect == Dialect::Rotctld && (m.op == Op::Invalid || m.op == Op::Report || !m.text.isEmpty()))
+        return tr("'%1' is not a rotctld command Slew can check").arg(QString::fromLatin1(m.text.view().toByteArray()));
     // Angles in a raw line are mechanical positions, sent as typed; speeds
     // and bare moves drive towards a limit, as a jog does.
     switch (m.op) {
@@ -339,6 +362,8 @@ CommandResult RotatorSession::sendRaw(const QString &line)
         if (error.isEmpty())
             error = rawMoveRefusal(m);
     });
+    if (error.isEmpty() && check.hasUnfinishedLine())
+        error = tr("'%1' is not a whole command").arg(line.trimmed()); // rotctld: a lone number
     if (!error.isEmpty())
         return refuseMove(error);
     writeMove(bytes + '\n');
