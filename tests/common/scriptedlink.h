@@ -2,13 +2,15 @@
 #pragma once
 // An in-process Link for session tests: no socket, no simulator. It keeps
 // every byte the session writes, answers position queries from a position
-// the test sets, and can report travel limits as a rotctld link does. The
-// session cannot tell it from a serial port (transport/link.h).
+// the test sets, and can report travel limits as a rotctld link does. It
+// answers in Easycomm, or as a rotctld peer does when told so. The session
+// cannot tell it from a serial port (transport/link.h).
 //
 //   registerScriptedLinkScheme();          // once, in initTestCase
 //   session.connectTo("scripted:");        // the last one made is lastScriptedLink()
 
 #include "model/rotatorlimits.h"
+#include "protocol/encoder.h"
 #include "protocol/message.h"
 #include "protocol/parser.h"
 #include "transport/link.h"
@@ -27,17 +29,20 @@ public:
     double azimuth = 0.0;
     double elevation = 0.0;
     QByteArray written; // everything the session wrote, in order
+    // What the session speaks to it: Easycomm (any flavour reads alike
+    // here) or rotctld.
+    slew::protocol::Dialect dialect = slew::protocol::Dialect::Easycomm3;
 
     bool isSequential() const override { return true; }
     qint64 bytesAvailable() const override { return m_pending.size() + QIODevice::bytesAvailable(); }
 
-    // Easycomm moves in what was written since `from`: set positions, speeds,
-    // bare moves, park, home and register writes. Queries are not moves, and
+    // Moves in what was written since `from`: set positions, speeds, bare
+    // moves, park, home and register writes. Queries are not moves, and
     // neither is a zero speed: that is the hold that follows a stop.
     QStringList movesSince(qsizetype from) const
     {
         QStringList moves;
-        slew::protocol::Parser parser(slew::protocol::Dialect::Easycomm3);
+        slew::protocol::Parser parser(dialect);
         parser.feed(QByteArrayView(written).sliced(from), [&](const slew::protocol::Message &m) {
             using slew::protocol::Op;
             const bool speed = m.op == Op::VelocityLeft || m.op == Op::VelocityRight || m.op == Op::VelocityUp
@@ -77,6 +82,10 @@ private:
     // commands go unanswered, as a controller leaves them.
     void answer(const QByteArray &line)
     {
+        if (dialect == slew::protocol::Dialect::Rotctld) {
+            answerAsRotctld(line.trimmed());
+            return;
+        }
         QByteArrayList out;
         for (const QByteArray &token : line.simplified().split(' ')) {
             if (token == "AZ")
@@ -92,7 +101,28 @@ private:
         }
         if (out.isEmpty())
             return;
-        m_pending += out.join(' ') + '\n';
+        reply(out.join(' ') + '\n');
+    }
+
+    // rotctld answers every command: `p` with two bare lines, `_` with the
+    // model's name, the rest with RPRT 0.
+    void answerAsRotctld(const QByteArray &line)
+    {
+        using slew::protocol::encodeReport;
+        using slew::protocol::Message;
+        using slew::protocol::Op;
+        if (line == "p")
+            reply(encodeReport(Message::number(Op::Azimuth, azimuth), dialect) + '\n'
+                  + encodeReport(Message::number(Op::Elevation, elevation), dialect) + '\n');
+        else if (line == "_")
+            reply("Scripted rotator\n");
+        else if (!line.isEmpty())
+            reply("RPRT 0\n");
+    }
+
+    void reply(const QByteArray &bytes)
+    {
+        m_pending += bytes;
         QTimer::singleShot(0, this, [this] {
             if (!m_pending.isEmpty())
                 emit readyRead();
@@ -143,11 +173,19 @@ inline std::optional<slew::model::RotatorLimits> &scriptedLinkReports()
     return reports;
 }
 
+// What the next scripted links answer in.
+inline slew::protocol::Dialect &scriptedLinkDialect()
+{
+    static slew::protocol::Dialect dialect = slew::protocol::Dialect::Easycomm3;
+    return dialect;
+}
+
 inline void registerScriptedLinkScheme()
 {
     slew::transport::registerLinkScheme(QStringLiteral("scripted"), [](const QUrl &, const QString &uri) {
         auto link = std::make_unique<ScriptedLink>(uri);
         link->reports = scriptedLinkReports();
+        link->scripted()->dialect = scriptedLinkDialect();
         lastScriptedLink() = link.get();
         return slew::transport::LinkResult{std::move(link), {}};
     });

@@ -9,8 +9,9 @@
 // The paths: the session's own commands, the go-to panel, a plot click and
 // its confirmation, the jog pad, presets, park, the register editor, the
 // traffic console's raw line, the rotctld server, the tuner's step and
-// slewctl's runner. A legal go-to at the end shows that the link's record
-// does see moves, so the test can fail.
+// slewctl's runner; and the session's commands again in the rotctld dialect,
+// which a rotctld:// link's session speaks. A legal go-to at the end shows
+// that the link's record does see moves, so the test can fail.
 
 #include "../common/scriptedlink.h"
 
@@ -54,6 +55,7 @@ private slots:
 
     void init()
     {
+        scriptedLinkDialect() = slew::protocol::Dialect::Easycomm3;
         m_session = std::make_unique<RotatorSession>();
         slew::model::RotatorProfile profile; // 0..360, 0..90, park at 0/90
         m_session->setProfile(profile);
@@ -185,6 +187,51 @@ private slots:
             QTRY_COMPARE(finished.count(), 1);
             QCOMPARE(finished.at(0).at(0).value<slew::console::ExitCode>(), slew::console::ExitCode::Refused);
         });
+    }
+
+    void theRotctldDialect()
+    {
+        // Reconnected speaking rotctld, as to a rotctld:// peer: the scripted
+        // link answers p, _ and RPRT 0 as rotctld does.
+        m_session->disconnectFromRotator();
+        scriptedLinkDialect() = slew::protocol::Dialect::Rotctld;
+        slew::model::RotatorProfile profile = m_session->profile();
+        profile.dialect = slew::protocol::Dialect::Rotctld;
+        m_session->setProfile(profile);
+        m_session->connectTo(QStringLiteral("scripted:"));
+        QVERIFY(lastScriptedLink());
+        m_device = lastScriptedLink()->scripted();
+        QCOMPARE(m_device->dialect, slew::protocol::Dialect::Rotctld);
+        m_device->azimuth = 350.0;
+        m_device->elevation = 40.0;
+        QTRY_VERIFY_WITH_TIMEOUT(m_session->isConnected() && m_session->capabilities().probed
+                                     && m_session->hasPosition() && m_session->reportedLimits(),
+                                 30000);
+        QCOMPARE(m_session->azimuth(), 350.0);
+
+        expectNothingSent("rotctld go-to past the link's azimuth", [&] { QVERIFY(!m_session->gotoPosition(355, 10)); });
+        expectNothingSent("rotctld elevation alone past the link's limit",
+                          [&] { QVERIFY(!m_session->gotoAxis(Axis::Elevation, 85)); });
+        expectNothingSent("rotctld azimuth alone past the link's limit", [&] {
+            QVERIFY(!m_session->gotoAxis(Axis::Azimuth, 5, RotatorSession::AzimuthIs::Position));
+        });
+        expectNothingSent("rotctld drive into the limit", [&] { QVERIFY(!m_session->moveAxis(Axis::Azimuth, 5.0)); });
+        expectNothingSent("rotctld park past the link's elevation", [&] { QVERIFY(!m_session->park()); });
+        // Raw lines: rotctld's moves through the gate, and what Slew cannot
+        // read (w passes bytes to the rotator, + asks another answer form,
+        // a lone number is half a command) not at all.
+        for (const char *raw : {"P 355 10", "\\set_pos 100 85", "M 16 50", "K", "w AZ355", "+P 355 10", "355"})
+            expectNothingSent(QByteArray("rotctld raw ") + raw,
+                              [&] { QVERIFY(!m_session->sendRaw(QString::fromLatin1(raw))); });
+        // What rotctld has no command for is refused, not sent.
+        QVERIFY(!m_session->readConfig(1));
+        QVERIFY(!m_session->writeConfig(7, QStringLiteral("100")));
+
+        // A legal elevation-only move goes out as P with the azimuth kept.
+        const qsizetype mark = m_device->written.size();
+        QVERIFY(m_session->gotoAxis(Axis::Elevation, 30));
+        QCOMPARE(m_device->movesSince(mark), (QStringList{QStringLiteral("AZ350"), QStringLiteral("EL30")}));
+        QVERIFY2(m_device->written.sliced(mark).contains("P 350.00 30.00\n"), m_device->written.sliced(mark).constData());
     }
 
     void aLegalMoveIsSeen()
