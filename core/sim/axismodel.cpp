@@ -21,6 +21,7 @@ constexpr double kFrozenSpeed = 1.0;      // deg/s: moving this fast must change
 constexpr double kFrozenSeconds = 0.5;
 constexpr double kIntegralZone = 2.0;     // degrees from the target where the I term works
 constexpr double kHomeClearance = 0.1;    // degrees between the lower switch edge and zero
+constexpr double kHomeBackOff = 1.0;      // degrees above the switch edge before homing turns back
 constexpr double kRestSpeed = 1e-4;       // deg/s, below which friction holds the axis
 
 double sign(double v)
@@ -87,6 +88,9 @@ void AxisModel::home()
     m_mode = DriveMode::Homing;
     m_holdError = 0.0;
     m_homingTravel = 0.0;
+    // Already on the switch (a homing cut short, a jog into it): the edge
+    // can only be found from above, so the axis first climbs off it.
+    m_homingBackOff = (limitSwitches() & LimitSwitch::Lower) != 0;
     m_stallSeconds = 0.0;
     m_frozenSeconds = 0.0;
 }
@@ -152,7 +156,9 @@ void AxisModel::step(double dt)
         case DriveMode::Released: break;
         case DriveMode::Position: drive = positionDrive(dt); break;
         case DriveMode::Velocity: drive = velocityDrive(m_velocityTarget, dt); break;
-        case DriveMode::Homing: drive = velocityDrive(-m_plant.homingSpeed, dt); break;
+        case DriveMode::Homing:
+            drive = velocityDrive(m_homingBackOff ? m_plant.homingSpeed : -m_plant.homingSpeed, dt);
+            break;
         }
     }
 
@@ -185,11 +191,19 @@ void AxisModel::step(double dt)
         // and home is where it stopped; a free drive would coast on, so its
         // loop takes over as soon as the switch trips.
         const bool stoppedOnSwitch = m_plant.driveTrain == DriveTrain::FreeRunning || m_velocity == 0.0;
-        if ((limitSwitches() & LimitSwitch::Lower) && stoppedOnSwitch) {
-            // Found home. The switch edge reads a little below the minimum,
-            // so that the minimum itself lies clear of the switch and the
-            // loop can hold it without pushing into a switch that cuts it.
-            m_encoderOffset = m_antenna - (m_plant.minDegrees - kHomeClearance);
+        if (m_homingBackOff) {
+            if (m_antenna > m_plant.minDegrees + kHomeBackOff) {
+                m_homingBackOff = false; // clear of the switch: now find its edge from above
+                m_holdError = 0.0;
+            }
+        } else if ((limitSwitches() & LimitSwitch::Lower) && stoppedOnSwitch) {
+            // Found home. The controller latched the count at the switch
+            // edge (minDegrees), not where the axis came to rest past it:
+            // the edge reads a little below the minimum, so that the
+            // minimum itself lies clear of the switch and the loop can hold
+            // it without pushing into a switch that cuts it, however far
+            // the axis ran on after the switch tripped.
+            m_encoderOffset = m_plant.minDegrees - (m_plant.minDegrees - kHomeClearance);
             m_reading = sampleEncoder();
             m_measuredVelocity = m_velocity;
             commandPosition(m_plant.minDegrees);

@@ -133,6 +133,7 @@ private:
     double m_stallSeconds = 0.0;
     double m_frozenSeconds = 0.0;
     double m_homingTravel = 0.0;
+    bool m_homingBackOff = false; // homing began on the switch and is climbing off it
 };
 
 } // namespace slew::sim

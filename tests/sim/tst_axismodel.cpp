@@ -266,6 +266,30 @@ private slots:
         QCOMPARE(axis.errors(), 0);
     }
 
+    // A homing cut short, or a jog, can leave the axis on the switch. Homing
+    // from there must not take the spot where it happens to stand for the
+    // edge: the axis climbs off, comes back, and zero lies clear of the
+    // switch, so the loop can hold it (it was stuck 0.15 deg above zero,
+    // pushing into a switch that cut it, before this was fixed).
+    void homingThatStartsOnTheSwitchFindsItsEdgeFromAbove()
+    {
+        AxisModel axis(azimuthPlant());
+        axis.placeAt(-0.6); // between the switch edge and the hard stop
+        QCOMPARE(axis.limitSwitches(), int(LimitSwitch::Lower));
+        axis.home();
+        const Trace t = run(axis, 30.0);
+        QVERIFY(t.peak > 1.0); // climbed off the switch first (antenna degrees)
+        QCOMPARE(axis.mode(), DriveMode::Position);
+        QCOMPARE(axis.errors(), 0);
+        QCOMPARE(axis.position(), 0.0);
+        QCOMPARE(axis.limitSwitches(), 0);
+        axis.commandPosition(5.0);
+        run(axis, 10.0);
+        axis.commandPosition(0.0);
+        run(axis, 10.0);
+        QCOMPARE(axis.position(), 0.0); // and the loop reaches zero again from above
+    }
+
     void missingEndStopIsAHomingError()
     {
         AxisModel axis(azimuthPlant());
