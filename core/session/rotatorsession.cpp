@@ -34,14 +34,14 @@ RotatorSession::RotatorSession(QObject *parent) : QObject(parent), m_queue(m_opt
     m_clock.start();
 
     m_replyTimer.setSingleShot(true);
-    connect(&m_replyTimer, &QTimer::timeout, this, &RotatorSession::onReplyTimeout);
+    connect(&m_replyTimer, &LinkTimer::timeout, this, &RotatorSession::onReplyTimeout);
     m_reconnectTimer.setSingleShot(true);
     connect(&m_reconnectTimer, &QTimer::timeout, this, &RotatorSession::openLink);
     m_staleTimer.setSingleShot(true);
-    connect(&m_staleTimer, &QTimer::timeout, this, &RotatorSession::onStale);
-    connect(&m_pollTimer, &QTimer::timeout, this, &RotatorSession::poll);
+    connect(&m_staleTimer, &LinkTimer::timeout, this, &RotatorSession::onStale);
+    connect(&m_pollTimer, &LinkTimer::timeout, this, &RotatorSession::poll);
     m_stopHoldTimer.setSingleShot(true);
-    connect(&m_stopHoldTimer, &QTimer::timeout, this, &RotatorSession::sendStopHold);
+    connect(&m_stopHoldTimer, &LinkTimer::timeout, this, &RotatorSession::sendStopHold);
     setProfile(m_profile);
 }
 
@@ -76,6 +76,15 @@ void RotatorSession::setOptions(const Options &options)
 void RotatorSession::setPolling(bool enabled)
 {
     m_pollingEnabled = enabled;
+}
+
+qint64 RotatorSession::nowMs() const
+{
+    if (m_link && m_link->clockIsStepped()) {
+        if (const std::optional<double> seconds = m_link->clockSeconds())
+            return qint64(*seconds * 1000.0);
+    }
+    return m_clock.elapsed();
 }
 
 // --- Connection -------------------------------------------------------------
@@ -117,6 +126,8 @@ void RotatorSession::openLink()
         return;
     }
     m_link = std::move(made.link);
+    for (LinkTimer *t : {&m_replyTimer, &m_pollTimer, &m_staleTimer, &m_stopHoldTimer})
+        t->followClockOf(m_link.get());
     connect(m_link.get(), &transport::Link::opened, this, &RotatorSession::onLinkOpened);
     connect(m_link.get(), &transport::Link::failed, this, &RotatorSession::onLinkDown);
     connect(m_link.get(), &transport::Link::lost, this, &RotatorSession::onLinkDown);
@@ -135,6 +146,7 @@ void RotatorSession::onLinkOpened()
     m_parser.reset();
     m_activeTarget.reset();
     m_deviceEchoes = false;
+    m_sent = {}; // stamped with the last link's clock
     m_reconnectAttempt = 0;
     m_failedPolls = 0;
     m_pollCount = 0;
@@ -227,7 +239,7 @@ bool RotatorSession::isEcho(const Message &m)
     // when it repeats what was sent within the last second.
     if (!m_deviceEchoes || (m.op != Op::Azimuth && m.op != Op::Elevation))
         return false;
-    const qint64 now = m_clock.elapsed();
+    const qint64 now = nowMs();
     for (const Sent &s : m_sent) {
         if (now - s.atMs <= kEchoWindowMs && s.message.op == m.op && s.message.hasValue
             && std::abs(s.message.value - m.value) < 1e-9)

@@ -8,6 +8,7 @@
 // stop, park, home, config) into the dialect's bytes after checking the
 // profile's limits. Everything is driven by signals; nothing here waits.
 
+#include "linktimer.h"
 #include "model/movegate.h"
 #include "model/rotatorprofile.h"
 #include "protocol/parser.h"
@@ -189,13 +190,13 @@ private:
 
     RequestQueue m_queue;
     bool m_onWire = false;
-    QTimer m_replyTimer;
+    LinkTimer m_replyTimer;
 
-    QTimer m_pollTimer;
+    LinkTimer m_pollTimer;
     bool m_pollingEnabled = true;
     int m_pollCount = 0;
     int m_failedPolls = 0;
-    QTimer m_staleTimer;
+    LinkTimer m_staleTimer;
 
     model::MoveGate m_gate; // the profile's limits and the link's, if it reports them
     Capabilities m_caps;
@@ -209,7 +210,7 @@ private:
     std::optional<PointingTarget> m_activeTarget;
     double m_commandedAz = kUnknown, m_commandedEl = kUnknown;
     std::array<double, 2> m_jogSpeed{0.0, 0.0}; // °/s of a running velocity move, per axis
-    QTimer m_stopHoldTimer;
+    LinkTimer m_stopHoldTimer;
     bool m_holdAzimuth = false, m_holdElevation = false;
     StatusWord m_status;
     int m_errorFlags = -1;
@@ -223,7 +224,8 @@ private:
     };
     std::array<Sent, 8> m_sent{};
     int m_sentNext = 0;
-    QElapsedTimer m_clock;
+    QElapsedTimer m_clock; // the wall clock, for links that keep no stepped clock
+    qint64 nowMs() const;  // the link's time where it is stepped, else m_clock's
     int m_echoesIgnored = 0;
     bool m_deviceEchoes = false; // this controller was seen echoing what it hears
 };

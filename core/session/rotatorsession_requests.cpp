@@ -51,7 +51,7 @@ void RotatorSession::write(const QByteArray &line)
 
 void RotatorSession::rememberSent(const Message &m)
 {
-    m_sent[size_t(m_sentNext)] = Sent{m, m_clock.elapsed()};
+    m_sent[size_t(m_sentNext)] = Sent{m, nowMs()};
     m_sentNext = (m_sentNext + 1) % int(m_sent.size());
 }
 

@@ -7,6 +7,10 @@ namespace slew::sim {
 SimulatorLink::SimulatorLink(const QString &uri, const SimulatorOptions &options, QObject *parent)
     : Link(uri, parent), m_simulator(options)
 {
+    // Connected after the simulator's own handler, so replies the step
+    // releases are already on their way when the session's timers look.
+    if (m_simulator.clock().isManual())
+        connect(&m_simulator.clock(), &SimClock::advanced, this, &Link::clockStepped);
 }
 
 SimulatorLink::~SimulatorLink()

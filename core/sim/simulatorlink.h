@@ -26,6 +26,7 @@ public:
     bool isOpen() const override { return m_connection != nullptr; }
     transport::LinkHints hints() const override { return m_hints; }
     std::optional<double> clockSeconds() const override;
+    bool clockIsStepped() const override { return m_simulator.clock().isManual(); }
     void setHints(const transport::LinkHints &hints) { m_hints = hints; }
 
     Simulator &simulator() { return m_simulator; }

@@ -49,6 +49,11 @@ public:
     // stepping simulated time, so that samples stamped with it repeat
     // exactly); empty for hardware, which goes by the wall clock.
     virtual std::optional<double> clockSeconds() const { return std::nullopt; }
+    // Whether that clock moves only when the far end is stepped (a simulator
+    // on a manual clock, in tests). The session then paces polling, reply
+    // timeouts and the stop hold by it (session/linktimer.h), so a test
+    // decides how much time passes and a busy machine changes nothing.
+    virtual bool clockIsStepped() const { return false; }
 
 signals:
     void opened();
@@ -60,6 +65,8 @@ signals:
     // Travel limits the far end reports (rotctld's \dump_state); moves
     // outside them are refused as well as those outside the profile's.
     void limitsReported(double azMin, double azMax, double elMin, double elMax);
+    // A stepped clock moved on to this many seconds.
+    void clockStepped(double seconds);
 
 private:
     QString m_uri;
