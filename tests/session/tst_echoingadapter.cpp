@@ -7,7 +7,7 @@
 // a register write read back, a stop. What the session concluded is then
 // compared; only the count of echoes it set aside may differ.
 
-#include "../tuning/simulatorpump.h"
+#include "../common/simulatorpump.h"
 #include "linkschemes.h"
 #include "session/rotatorsession.h"
 

@@ -4,6 +4,7 @@
 // opened as a serial port (QSerialPort). Probe, polling, telemetry, config
 // write then read-back, go-to, stop, park, home, and faults seen as errors.
 
+#include "../common/simulatorpump.h"
 #include "../sim/slewsimprocess.h"
 #include "linkschemes.h"
 #include "session/rotatorsession.h"
@@ -11,6 +12,8 @@
 #include "sim/simulatorscheme.h"
 
 #include <QSignalSpy>
+
+#include <algorithm>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -34,11 +37,28 @@ private slots:
     void overASerialPortToSlewSimsPty();
 
 private:
+    static SimulatorPump *pumpOf(RotatorSession &s)
+    {
+        for (QObject *child : s.children()) {
+            if (auto *pump = dynamic_cast<SimulatorPump *>(child))
+                return pump;
+        }
+        return nullptr;
+    }
     static bool connectTo(RotatorSession &s, const QString &uri, protocol::Dialect d = protocol::Dialect::Easycomm3);
 };
 
-bool SessionSimulatorTest::connectTo(RotatorSession &s, const QString &uri, protocol::Dialect d)
+// The in-process simulator runs on its manual clock, pumped from the event
+// loop: simulated seconds pass in wall milliseconds, and the session's own
+// timers keep the simulator's time, so nothing depends on the machine's speed.
+bool SessionSimulatorTest::connectTo(RotatorSession &s, const QString &uri_, protocol::Dialect d)
 {
+    QString uri = uri_;
+    if (uri.startsWith(QLatin1String("sim:"))) {
+        uri += uri.contains(u'?') ? QStringLiteral("&clock=manual") : QStringLiteral("?clock=manual");
+        auto *pump = new SimulatorPump(0.005, &s);
+        pump->follow(&s);
+    }
     model::RotatorProfile p;
     p.uri = uri;
     p.dialect = d;
@@ -88,16 +108,35 @@ void SessionSimulatorTest::gotoStopParkHome()
     QTRY_VERIFY(!commanded.isEmpty()); // CR10/CR11 polled back
     QCOMPARE(commanded.last().at(0).toDouble(), 20.0);
 
+    // Simulated time runs far faster than the test looks, so a passing state
+    // is caught as the session reports it; the clock is held there, so Stop
+    // is pressed while the rotator is on its way.
+    SimulatorPump *pump = pumpOf(s);
+    QVERIFY(pump);
+    bool sawMoving = false;
+    auto holdWhenMoving = connect(&s, &RotatorSession::statusChanged, this, [&](session::StatusWord w) {
+        if (w.anyMoving() && !sawMoving) {
+            sawMoving = true;
+            pump->pause();
+        }
+    });
     QVERIFY(s.gotoPosition(80, 40));
-    QTRY_VERIFY(s.status().anyMoving());
+    QTRY_VERIFY(sawMoving);
     QVERIFY(s.stop());
+    pump->resume();
     QTRY_VERIFY_WITH_TIMEOUT(s.status().idle(), 15000);
     QVERIFY(std::abs(s.azimuth() - 80) > 1); // stopped on the way
+    disconnect(holdWhenMoving);
 
     QVERIFY(s.park());
     QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.azimuth() - 90) < 0.2 && std::abs(s.elevation() - 10) < 0.2, 15000);
+    QSignalSpy statuses(&s, &RotatorSession::statusChanged);
     QVERIFY(s.home());
-    QTRY_VERIFY_WITH_TIMEOUT(s.status().anyMoving(), 5000);
+    QTRY_VERIFY_WITH_TIMEOUT(std::any_of(statuses.cbegin(), statuses.cend(),
+                                         [](const QList<QVariant> &a) {
+                                             return a.at(0).value<session::StatusWord>().anyMoving();
+                                         }),
+                             5000);
     QTRY_VERIFY_WITH_TIMEOUT(s.status().idle() && std::abs(s.azimuth()) < 0.2 && std::abs(s.elevation()) < 0.2, 30000);
 }
 

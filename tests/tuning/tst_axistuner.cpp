@@ -2,7 +2,7 @@
 // The tuning engine against a deliberately mistuned simulator on a stepped
 // clock: the proposal must take the overshoot under 5 % and cut the settling
 // time by at least 30 % on both axes, and cancel must leave the registers.
-#include "simulatorpump.h"
+#include "../common/simulatorpump.h"
 
 #include "linkschemes.h"
 #include "session/rotatorsession.h"

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The wizard's first steps without a window: baud-rate probing, dialect
 // identification and homing with its verdicts, against the simulator.
-#include "simulatorpump.h"
+#include "../common/simulatorpump.h"
 
 #include "linkschemes.h"
 #include "session/rotatorsession.h"

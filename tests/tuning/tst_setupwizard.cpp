@@ -3,7 +3,7 @@
 // page, cancel during homing (the rotator stops), a homing failure injected
 // in the simulator (the wizard says so), tuning with before and after, and
 // the summary's write, read-back and profile save.
-#include "simulatorpump.h"
+#include "../common/simulatorpump.h"
 
 #include "linkschemes.h"
 #include "session/rotatorsession.h"

@@ -4,7 +4,8 @@
 // through rotctld. On the default simulator (a G-5500 class rotator with a
 // self-locking worm gear) it is at rest within a second and 2° of where Stop
 // was pressed; on a free-running drive, which coasts on SA / SE, the zero
-// speed Slew sends after it brakes the drive to rest within 2 s.
+// speed Slew sends after it brakes the drive to rest within 2 s. Times are
+// the simulator's: it runs on its manual clock, pumped from the event loop.
 
 #include "windowfixture.h"
 
@@ -42,13 +43,13 @@ private slots:
                        {"parking", Motion::Parking}, {"tracker", Motion::Tracker}};
         for (const auto &m : motions) {
             QTest::addRow("worm gear, %s", m.name)
-                << QStringLiteral("sim:?park_az=200&park_el=60&start_az=100&start_el=30") << 1000 << 2.0 << m.motion;
+                << QStringLiteral("sim:?clock=manual&park_az=200&park_el=60&start_az=100&start_el=30") << 1000 << 2.0 << m.motion;
         }
         // How far a coasting drive runs before the hold brakes it is the
         // drive's business; that it comes to rest in time is Slew's.
         for (const auto &m : motions) {
             QTest::addRow("free drive, %s", m.name)
-                << QStringLiteral("sim:?drive=free&park_az=200&park_el=60&start_az=100&start_el=30") << 2000 << 360.0
+                << QStringLiteral("sim:?clock=manual&drive=free&park_az=200&park_el=60&start_az=100&start_el=30") << 2000 << 360.0
                 << m.motion;
         }
     }
@@ -81,11 +82,13 @@ private slots:
             break;
         }
         }
-        // Well under way: at full speed on at least one axis.
-        QVERIFY2(QTest::qWaitFor([&] { return std::abs(f.lastPosition().x() - start.x()) > 8.0; }, 15000),
+        // Well under way: at full speed on at least one axis. The simulated
+        // clock is held there while Stop is pressed.
+        QVERIFY2(f.holdClockWhen([&] { return std::abs(f.lastPosition().x() - start.x()) > 8.0; }),
                  qPrintable(QStringLiteral("still at %1").arg(f.lastPosition().x())));
         const QPointF pressed = f.lastPosition();
         QTest::mouseClick(f.find<QPushButton>(QStringLiteral("stopButton")), Qt::LeftButton);
+        f.releaseClock();
         const WindowFixture::AfterStop after = f.watchAfterStop(pressed, restWithinMs);
         if (motion == Motion::Jog)
             QTest::mouseRelease(jogRight, Qt::LeftButton);

@@ -7,7 +7,7 @@
 // - every wizard page, at the wizard's own default size, has no two visible
 //   widgets on top of each other, the tuning page with its figures filled in.
 
-#include "../tuning/simulatorpump.h"
+#include "../common/simulatorpump.h"
 #include "windowfixture.h"
 
 #include "alarmbanner.h"

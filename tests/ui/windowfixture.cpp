@@ -2,12 +2,15 @@
 #include "windowfixture.h"
 
 #include "sim/simulatorscheme.h"
+#include "transport/link.h"
 
 #include <QCoreApplication>
 #include <QSettings>
 #include <QTemporaryDir>
 #include <QStandardPaths>
+#include <QEventLoop>
 #include <QTest>
+#include <QTimer>
 
 #include <cmath>
 
@@ -34,18 +37,63 @@ WindowFixture::WindowFixture(const QString &uri_) : window(std::make_unique<slew
                          if (stale)
                              return;
                          recent.emplace_back(az, el);
-                         lastFreshMs = clock.elapsed();
+                         lastFreshMs = nowMs();
                          if (recent.size() > 6)
                              recent.pop_front();
                      });
     clock.start();
+    pump.follow(&session); // moves manual-clock simulators only
     window->show();
+}
+
+bool WindowFixture::waitFor(const std::function<bool()> &pred, int timeoutMs)
+{
+    if (pred())
+        return true;
+    QEventLoop loop;
+    QTimer look;
+    look.setInterval(0);
+    QObject::connect(&look, &QTimer::timeout, &loop, [&] {
+        if (pred())
+            loop.quit();
+    });
+    QTimer giveUp;
+    giveUp.setSingleShot(true);
+    QObject::connect(&giveUp, &QTimer::timeout, &loop, &QEventLoop::quit);
+    look.start();
+    giveUp.start(timeoutMs);
+    loop.exec();
+    return pred();
+}
+
+qint64 WindowFixture::nowMs() const
+{
+    if (const auto *link = session.link(); link && link->clockIsStepped())
+        return qint64(link->clockSeconds().value_or(0.0) * 1000.0);
+    return clock.elapsed();
+}
+
+bool WindowFixture::holdClockWhen(const std::function<bool()> &pred, int timeoutMs)
+{
+    bool held = pred();
+    if (held)
+        pump.pause();
+    const QMetaObject::Connection c = QObject::connect(
+        &session, &slew::session::RotatorSession::positionChanged, &session, [&](double, double, bool stale) {
+            if (!held && !stale && pred()) {
+                held = true;
+                pump.pause();
+            }
+        });
+    const bool ok = waitFor([&] { return held; }, timeoutMs);
+    QObject::disconnect(c);
+    return ok;
 }
 
 bool WindowFixture::connectAndWait(int timeoutMs)
 {
     window->connectTo(uri);
-    return QTest::qWaitFor([this] { return session.isConnected() && session.capabilities().probed && recent.size() >= 2; },
+    return waitFor([this] { return session.isConnected() && session.capabilities().probed && recent.size() >= 2; },
                            timeoutMs);
 }
 
@@ -74,12 +122,12 @@ bool WindowFixture::waitUntilStill(int timeoutMs)
 {
     // Forget positions from before the call: stillness must be seen afresh.
     recent.clear();
-    return QTest::qWaitFor([this] { return isStill(); }, timeoutMs);
+    return waitFor([this] { return isStill(); }, timeoutMs);
 }
 
 bool WindowFixture::waitUntilAt(double az, double el, double tolerance, int timeoutMs)
 {
-    return QTest::qWaitFor(
+    return waitFor(
         [&] {
             return session.hasPosition() && !session.positionStale() && std::abs(session.azimuth() - az) < tolerance
                 && std::abs(session.elevation() - el) < tolerance;
@@ -91,12 +139,12 @@ WindowFixture::AfterStop WindowFixture::watchAfterStop(QPointF pressed, int rest
 {
     AfterStop r;
     r.pressed = pressed;
-    const qint64 stoppedAt = clock.elapsed();
-    if (!QTest::qWaitFor([&] { return lastFreshMs >= stoppedAt + restWithinMs; }, restWithinMs + 10000))
+    const qint64 stoppedAt = nowMs();
+    if (!waitFor([&] { return lastFreshMs >= stoppedAt + restWithinMs; }, restWithinMs + 10000))
         return r;
     r.first = recent.back();
     const qint64 firstAt = lastFreshMs;
-    if (!QTest::qWaitFor([&] { return lastFreshMs >= firstAt + 1000; }, 11000))
+    if (!waitFor([&] { return lastFreshMs >= firstAt + 1000; }, 11000))
         return r;
     r.second = recent.back();
     r.valid = true;

@@ -4,7 +4,14 @@
 // finds widgets by objectName, keeps every line the session sent, and
 // remembers the latest positions so a test can ask whether the rotator is
 // still. Waiting is by predicate (QTest::qWaitFor), never by sleeping.
+//
+// A `sim:` URI with clock=manual runs on simulated time: the fixture pumps
+// the simulator from the event loop, the session keeps its time, and times
+// the fixture measures (restWithinMs, lastFreshMs) are simulated
+// milliseconds. As simulated time runs far faster than a test looks, a
+// passing moment is caught with holdClockWhen().
 
+#include "../common/simulatorpump.h"
 #include "mainwindow.h"
 #include "session/rotatorsession.h"
 
@@ -14,6 +21,7 @@
 #include <QStringList>
 
 #include <deque>
+#include <functional>
 #include <memory>
 
 class WindowFixture {
@@ -54,7 +62,20 @@ public:
     AfterStop watchAfterStop(QPointF pressed, int restWithinMs);
     QPointF lastPosition() const { return recent.empty() ? QPointF() : recent.back(); }
 
+    // Runs the event loop until pred() holds or timeoutMs of wall time pass.
+    // Unlike QTest::qWaitFor, which sleeps 10 ms between passes, it keeps
+    // the loop (and so a pumped simulator) running flat out.
+    static bool waitFor(const std::function<bool()> &pred, int timeoutMs);
+
+    // Waits until pred() holds on a fresh position, and holds a manual
+    // clock still from that position on, until releaseClock().
+    bool holdClockWhen(const std::function<bool()> &pred, int timeoutMs = 15000);
+    void releaseClock() { pump.resume(); }
+    // The link's stepped clock where it keeps one, else the wall clock.
+    qint64 nowMs() const;
+
     slew::session::RotatorSession session;
+    SimulatorPump pump;
     std::unique_ptr<slew::ui::MainWindow> window;
     QString uri;
     QStringList sent;

@@ -3,7 +3,12 @@
 // loop comes round, so a test runs simulated seconds in wall milliseconds
 // while every reply still travels through the event loop as it would on a
 // real line. Samples are stamped with the simulator's clock (SampleClock),
-// so the figures are the same however fast the machine is.
+// and the session's polling, reply timeouts and stop hold keep the same
+// clock (session/linktimer.h), so what happens is the same however fast or
+// busy the machine is.
+//
+// drive() pumps one simulator; follow() pumps whatever manual-clock
+// simulator is behind a session's link, through reconnects.
 
 #include "session/rotatorsession.h"
 #include "sim/simulator.h"
@@ -23,9 +28,17 @@ public:
     {
         m_timer.setInterval(0);
         QObject::connect(&m_timer, &QTimer::timeout, this, [this] {
-            if (m_sim)
-                m_sim->advance(m_slice);
+            slew::sim::Simulator *sim = m_sim;
+            if (m_session)
+                sim = slew::sim::simulatorBehind(m_session->link());
+            if (sim && sim->clock().isManual())
+                sim->advance(m_slice);
         });
+    }
+    void follow(slew::session::RotatorSession *session)
+    {
+        m_session = session;
+        m_timer.start();
     }
     void drive(slew::sim::Simulator *sim)
     {
@@ -37,6 +50,7 @@ public:
 
 private:
     QPointer<slew::sim::Simulator> m_sim;
+    QPointer<slew::session::RotatorSession> m_session;
     double m_slice;
     QTimer m_timer;
 };
