@@ -133,6 +133,8 @@ void RotatorSession::openLink()
 void RotatorSession::onLinkOpened()
 {
     m_parser.reset();
+    m_frames.reset();
+    m_checksum = m_link->hints().checksum;
     m_activeTarget.reset();
     m_deviceEchoes = false;
     m_reconnectAttempt = 0;
@@ -177,6 +179,7 @@ void RotatorSession::dropLink(const QString &reason)
     // Whatever the rotator was doing, the session no longer knows: the next
     // target, even one repeated, must go out on the new link.
     m_activeTarget.reset();
+    clearBadFrames();
     if (m_link) {
         m_link->disconnect(this);
         m_link->device()->disconnect(this);
@@ -207,7 +210,40 @@ void RotatorSession::onReadyRead()
     if (bytes.isEmpty())
         return;
     emit bytesReceived(bytes);
-    m_parser.feed(bytes, [this](const Message &m) { apply(m); });
+    if (m_checksum)
+        m_frames.feed(bytes, [this](protocol::FrameCheck check, QByteArrayView line) { onFrame(check, line); });
+    else
+        m_parser.feed(bytes, [this](const Message &m) { apply(m); });
+}
+
+void RotatorSession::onFrame(protocol::FrameCheck check, QByteArrayView line)
+{
+    if (check == protocol::FrameCheck::Good) {
+        clearBadFrames();
+        m_parser.feed(line, [this](const Message &m) { apply(m); });
+        return;
+    }
+    // Refused whole: a damaged `AZ10.0` may read as `AZ11.0`. A query left
+    // unanswered times out and is retried as if the line had been lost.
+    ++m_checksumFailures;
+    ++m_badFramesInARow;
+    const QString text = tr("refused a reply with %1: '%2'")
+                             .arg(QString::fromLatin1(protocol::describe(check)),
+                                  QString::fromLatin1(line.first(std::min<qsizetype>(line.size(), 40)).toByteArray()).trimmed());
+    if (m_badFramesInARow == 1)
+        emit errorOccurred(text); // the first of a run; the alarm speaks for the rest
+    if (m_badFramesInARow == kBadFramesAlarm)
+        emit badFramesAlarm(true, tr("%1 replies in a row failed their checksum; last: %2")
+                                      .arg(kBadFramesAlarm)
+                                      .arg(QString::fromLatin1(protocol::describe(check))));
+}
+
+void RotatorSession::clearBadFrames()
+{
+    const bool raised = m_badFramesInARow >= kBadFramesAlarm;
+    m_badFramesInARow = 0;
+    if (raised)
+        emit badFramesAlarm(false, {});
 }
 
 bool RotatorSession::isEcho(const Message &m)

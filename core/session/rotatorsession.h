@@ -10,6 +10,7 @@
 
 #include "model/movegate.h"
 #include "model/rotatorprofile.h"
+#include "protocol/checksum.h"
 #include "protocol/parser.h"
 #include "requestqueue.h"
 #include "sessiontypes.h"
@@ -87,6 +88,12 @@ public:
     QString version() const { return m_version; }
     int queuedRequests() const { return m_queue.size(); }
     int echoesIgnored() const { return m_echoesIgnored; }
+    // The link's lines carry the XOR checksum (`checksum=1`, link.h), and
+    // how many received lines were refused for a wrong or missing one.
+    bool checksumming() const { return m_checksum; }
+    int checksumFailures() const { return m_checksumFailures; }
+    // Refused frames in a row after which badFramesAlarm(true) is raised.
+    static constexpr int kBadFramesAlarm = 3;
 
     // After a stop, the zero-speed hold that brakes a free-running drive is
     // still to be sent (stopHoldSent() follows, or nothing if a move comes first).
@@ -140,6 +147,10 @@ signals:
     // A move, stop hold aside, went to the wire.
     void moveSent();
     void requestFailed(const QString &request, const QString &reason);
+    // kBadFramesAlarm received lines in a row failed their checksum (on),
+    // or a good one has arrived since (off). Nothing from a refused line is
+    // acted on; the alarm says the link itself is damaging what it carries.
+    void badFramesAlarm(bool on, const QString &text);
     void errorOccurred(const QString &message);
 
 private:
@@ -150,6 +161,8 @@ private:
     void dropLink(const QString &reason = {});
     void scheduleReconnect(const QString &reason);
     void onReadyRead();
+    void onFrame(protocol::FrameCheck check, QByteArrayView line);
+    void clearBadFrames();
     void apply(const protocol::Message &m);
     void applyPosition();
     void applyInput(int index, double value);
@@ -179,6 +192,10 @@ private:
     model::RotatorProfile m_profile;
     Options m_options;
     protocol::Parser m_parser;
+    bool m_checksum = false;
+    protocol::ChecksumReader m_frames; // checksummed lines are checked here before the parser
+    int m_checksumFailures = 0;
+    int m_badFramesInARow = 0;
 
     QString m_uri;
     std::unique_ptr<transport::Link> m_link;

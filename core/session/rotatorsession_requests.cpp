@@ -45,8 +45,11 @@ void RotatorSession::write(const QByteArray &line)
 {
     if (!m_link || line.isEmpty())
         return;
-    m_link->device()->write(line);
-    emit bytesSent(line);
+    // Requests keep their plain line (the queue compares them); the frame
+    // is added on the way out.
+    const QByteArray framed = m_checksum ? protocol::withChecksums(line) : line;
+    m_link->device()->write(framed);
+    emit bytesSent(framed);
 }
 
 void RotatorSession::rememberSent(const Message &m)
