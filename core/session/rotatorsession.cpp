@@ -40,6 +40,7 @@ RotatorSession::RotatorSession(QObject *parent) : QObject(parent), m_queue(m_opt
     m_staleTimer.setSingleShot(true);
     connect(&m_staleTimer, &QTimer::timeout, this, &RotatorSession::onStale);
     connect(&m_pollTimer, &QTimer::timeout, this, &RotatorSession::poll);
+    connect(&m_keepAliveTimer, &QTimer::timeout, this, &RotatorSession::keepAlive);
     m_stopHoldTimer.setSingleShot(true);
     connect(&m_stopHoldTimer, &QTimer::timeout, this, &RotatorSession::sendStopHold);
     setProfile(m_profile);
@@ -63,6 +64,7 @@ void RotatorSession::setProfile(const model::RotatorProfile &profile)
     m_pollTimer.setInterval(1000 / std::clamp(profile.pollHz, 1, 50));
     const int pollPeriod = m_pollTimer.interval();
     m_staleTimer.setInterval(std::max(1500, 3 * pollPeriod + m_options.replyTimeoutMs * (m_options.retries + 1)));
+    m_keepAliveTimer.setInterval(std::max(100, m_options.keepAliveMs));
     emit profileChanged();
 }
 
@@ -143,6 +145,8 @@ void RotatorSession::onLinkOpened()
     setState(State::Connected, tr("connected to %1").arg(m_uri));
     startProbe();
     m_pollTimer.start();
+    if (protocol::dialectSupports(m_profile.dialect, Op::KeepAlive))
+        m_keepAliveTimer.start();
 }
 
 void RotatorSession::onLinkDown(const QString &reason)
@@ -171,6 +175,7 @@ void RotatorSession::scheduleReconnect(const QString &reason)
 void RotatorSession::dropLink(const QString &reason)
 {
     m_pollTimer.stop();
+    m_keepAliveTimer.stop();
     m_replyTimer.stop();
     m_staleTimer.stop();
     m_stopHoldTimer.stop();

@@ -44,6 +44,9 @@ public:
         int telemetryEvery = 10;    // telemetry once per this many position polls
         bool autoReconnect = false; // retry a lost link with backoff
         int maxQueue = 64;
+        // With polling paused, a dialect that has a keep-alive (GS-232's `?`)
+        // is sent one this often, so a dead link is noticed while idle.
+        int keepAliveMs = 3000;
     };
 
     explicit RotatorSession(QObject *parent = nullptr);
@@ -186,6 +189,7 @@ private:
 
     void startProbe();
     void poll();
+    void keepAlive();
     void checkSoftLimits();
     void onStale();
 
@@ -213,6 +217,7 @@ private:
     int m_pollCount = 0;
     int m_failedPolls = 0;
     QTimer m_staleTimer;
+    QTimer m_keepAliveTimer;
 
     model::MoveGate m_gate; // the profile's limits and the link's, if it reports them
     Capabilities m_caps;
