@@ -66,6 +66,7 @@ int main(int argc, char *argv[])
     settings.dialect = options.dialect;
     settings.unsolicited = options.unsolicited;
     settings.echo = options.echo;
+    settings.checksum = options.checksum;
     settings.baud = options.baud;
     settings.log = log.isOpen() ? &log : nullptr;
 
@@ -117,10 +118,10 @@ int main(int argc, char *argv[])
     const FirmwareCounters &c = simulator.counters();
     std::fprintf(stderr,
                  "slew-sim: %llu lines, %llu commands, %llu rejected (%llu unknown, %llu malformed, %llu out of "
-                 "limits, %llu overlong)\n",
+                 "limits, %llu overlong, %llu bad checksum)\n",
                  (unsigned long long)c.lines, (unsigned long long)c.commands, (unsigned long long)c.rejected(),
                  (unsigned long long)c.unknown, (unsigned long long)c.malformed, (unsigned long long)c.outOfLimits,
-                 (unsigned long long)c.overlong);
+                 (unsigned long long)c.overlong, (unsigned long long)c.badChecksum);
     terminal.reset(); // removes the symlink
     return status;
 }

@@ -55,7 +55,7 @@ enum class Op : std::uint8_t {
     // GS-232 only (docs/protocol.md); the position and stop commands of
     // GS-232 map onto Azimuth, Elevation, StopAzimuth, StopElevation, Move*.
     Speed,         // Xn, n 1..4: the speed of the manual moves
-    KeepAlive,     // ?   (a keep-alive that expects no answer)
+    KeepAlive,     // ?   (a keep-alive), answered `OK` (docs/protocol.md: Slew's choice)
     // rotctld only (docs/protocol.md): its other answers map onto Azimuth,
     // Elevation, Version and Alarm.
     Report,        // RPRT 0: a command done; value holds the code

@@ -50,7 +50,9 @@ constexpr OperationInfo kOperations[] = {
     {Op::Alarm,             "AL",     "alarm",                  R::None,                 false, false,  A::NeverSent,     false},
     {Op::ConfigValue,       "",       "config value",           R::None,                 false, false,  A::NeverSent,     false},
     {Op::Speed,             "X",      "speed",                  R::None,                 true,  false,  A::NeverSent,     false},
-    {Op::KeepAlive,         "?",      "keep-alive",             R::None,                 true,  false,  A::NeverSent,     false},
+    // GS-232 only, as in the easycom library's table; the session sends it
+    // while polling is paused, and the simulator answers `OK`.
+    {Op::KeepAlive,         "?",      "keep-alive",             R::None,                 true,  false,  A::None,          false},
     // rotctld's answer to a command: `RPRT 0` when done (an error code
     // arrives as an alarm, see parser_rotctld.cpp).
     {Op::Report,            "RPRT",   "rotctld report",         R::None,                 false, false,  A::NeverSent,     false},

@@ -52,6 +52,10 @@ Parser::Classified Parser::classifyGs232(QByteArrayView t) const
         return two(Message::query(Op::Azimuth), Message::query(Op::Elevation));
     if (t == "?")
         return one(Message::query(Op::KeepAlive));
+    // The answer to `?`: the easycom library gives none, Slew chose `OK`.
+    // It carries text so that it is never taken for an echo of the `?`.
+    if (t == "OK" || t == "ok")
+        return one(Message::word(Op::KeepAlive, "OK"));
     if (t.size() == 1) {
         switch (first) {
         case 'C': return one(Message::query(Op::Azimuth));

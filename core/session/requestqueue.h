@@ -17,7 +17,7 @@
 
 namespace slew::session {
 
-enum class RequestPurpose : std::uint8_t { Position, Telemetry, Probe, User };
+enum class RequestPurpose : std::uint8_t { Position, Telemetry, Probe, User, KeepAlive };
 
 struct Expectation {
     protocol::Op op = protocol::Op::Invalid;

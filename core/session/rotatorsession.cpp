@@ -40,6 +40,7 @@ RotatorSession::RotatorSession(QObject *parent) : QObject(parent), m_queue(m_opt
     m_staleTimer.setSingleShot(true);
     connect(&m_staleTimer, &LinkTimer::timeout, this, &RotatorSession::onStale);
     connect(&m_pollTimer, &LinkTimer::timeout, this, &RotatorSession::poll);
+    connect(&m_keepAliveTimer, &LinkTimer::timeout, this, &RotatorSession::keepAlive);
     m_stopHoldTimer.setSingleShot(true);
     connect(&m_stopHoldTimer, &LinkTimer::timeout, this, &RotatorSession::sendStopHold);
     setProfile(m_profile);
@@ -63,6 +64,7 @@ void RotatorSession::setProfile(const model::RotatorProfile &profile)
     m_pollTimer.setInterval(1000 / std::clamp(profile.pollHz, 1, 50));
     const int pollPeriod = m_pollTimer.interval();
     m_staleTimer.setInterval(std::max(1500, 3 * pollPeriod + m_options.replyTimeoutMs * (m_options.retries + 1)));
+    m_keepAliveTimer.setInterval(std::max(100, m_options.keepAliveMs));
     emit profileChanged();
 }
 
@@ -126,7 +128,7 @@ void RotatorSession::openLink()
         return;
     }
     m_link = std::move(made.link);
-    for (LinkTimer *t : {&m_replyTimer, &m_pollTimer, &m_staleTimer, &m_stopHoldTimer})
+    for (LinkTimer *t : {&m_replyTimer, &m_pollTimer, &m_staleTimer, &m_stopHoldTimer, &m_keepAliveTimer})
         t->followClockOf(m_link.get());
     connect(m_link.get(), &transport::Link::opened, this, &RotatorSession::onLinkOpened);
     connect(m_link.get(), &transport::Link::failed, this, &RotatorSession::onLinkDown);
@@ -144,6 +146,8 @@ void RotatorSession::openLink()
 void RotatorSession::onLinkOpened()
 {
     m_parser.reset();
+    m_frames.reset();
+    m_checksum = m_link->hints().checksum;
     m_activeTarget.reset();
     m_deviceEchoes = false;
     m_sent = {}; // stamped with the last link's clock
@@ -153,6 +157,8 @@ void RotatorSession::onLinkOpened()
     setState(State::Connected, tr("connected to %1").arg(m_uri));
     startProbe();
     m_pollTimer.start();
+    if (protocol::dialectSupports(m_profile.dialect, Op::KeepAlive))
+        m_keepAliveTimer.start();
 }
 
 void RotatorSession::onLinkDown(const QString &reason)
@@ -181,6 +187,7 @@ void RotatorSession::scheduleReconnect(const QString &reason)
 void RotatorSession::dropLink(const QString &reason)
 {
     m_pollTimer.stop();
+    m_keepAliveTimer.stop();
     m_replyTimer.stop();
     m_staleTimer.stop();
     m_stopHoldTimer.stop();
@@ -189,6 +196,7 @@ void RotatorSession::dropLink(const QString &reason)
     // Whatever the rotator was doing, the session no longer knows: the next
     // target, even one repeated, must go out on the new link.
     m_activeTarget.reset();
+    clearBadFrames();
     if (m_link) {
         m_link->disconnect(this);
         m_link->device()->disconnect(this);
@@ -219,7 +227,40 @@ void RotatorSession::onReadyRead()
     if (bytes.isEmpty())
         return;
     emit bytesReceived(bytes);
-    m_parser.feed(bytes, [this](const Message &m) { apply(m); });
+    if (m_checksum)
+        m_frames.feed(bytes, [this](protocol::FrameCheck check, QByteArrayView line) { onFrame(check, line); });
+    else
+        m_parser.feed(bytes, [this](const Message &m) { apply(m); });
+}
+
+void RotatorSession::onFrame(protocol::FrameCheck check, QByteArrayView line)
+{
+    if (check == protocol::FrameCheck::Good) {
+        clearBadFrames();
+        m_parser.feed(line, [this](const Message &m) { apply(m); });
+        return;
+    }
+    // Refused whole: a damaged `AZ10.0` may read as `AZ11.0`. A query left
+    // unanswered times out and is retried as if the line had been lost.
+    ++m_checksumFailures;
+    ++m_badFramesInARow;
+    const QString text = tr("refused a reply with %1: '%2'")
+                             .arg(QString::fromLatin1(protocol::describe(check)),
+                                  QString::fromLatin1(line.first(std::min<qsizetype>(line.size(), 40)).toByteArray()).trimmed());
+    if (m_badFramesInARow == 1)
+        emit errorOccurred(text); // the first of a run; the alarm speaks for the rest
+    if (m_badFramesInARow == kBadFramesAlarm)
+        emit badFramesAlarm(true, tr("%1 replies in a row failed their checksum; last: %2")
+                                      .arg(kBadFramesAlarm)
+                                      .arg(QString::fromLatin1(protocol::describe(check))));
+}
+
+void RotatorSession::clearBadFrames()
+{
+    const bool raised = m_badFramesInARow >= kBadFramesAlarm;
+    m_badFramesInARow = 0;
+    if (raised)
+        emit badFramesAlarm(false, {});
 }
 
 bool RotatorSession::isEcho(const Message &m)

@@ -11,6 +11,7 @@
 #include "linktimer.h"
 #include "model/movegate.h"
 #include "model/rotatorprofile.h"
+#include "protocol/checksum.h"
 #include "protocol/parser.h"
 #include "requestqueue.h"
 #include "sessiontypes.h"
@@ -44,6 +45,9 @@ public:
         int telemetryEvery = 10;    // telemetry once per this many position polls
         bool autoReconnect = false; // retry a lost link with backoff
         int maxQueue = 64;
+        // With polling paused, a dialect that has a keep-alive (GS-232's `?`)
+        // is sent one this often, so a dead link is noticed while idle.
+        int keepAliveMs = 3000;
     };
 
     explicit RotatorSession(QObject *parent = nullptr);
@@ -88,6 +92,12 @@ public:
     QString version() const { return m_version; }
     int queuedRequests() const { return m_queue.size(); }
     int echoesIgnored() const { return m_echoesIgnored; }
+    // The link's lines carry the XOR checksum (`checksum=1`, link.h), and
+    // how many received lines were refused for a wrong or missing one.
+    bool checksumming() const { return m_checksum; }
+    int checksumFailures() const { return m_checksumFailures; }
+    // Refused frames in a row after which badFramesAlarm(true) is raised.
+    static constexpr int kBadFramesAlarm = 3;
 
     // After a stop, the zero-speed hold that brakes a free-running drive is
     // still to be sent (stopHoldSent() follows, or nothing if a move comes first).
@@ -141,6 +151,10 @@ signals:
     // A move, stop hold aside, went to the wire.
     void moveSent();
     void requestFailed(const QString &request, const QString &reason);
+    // kBadFramesAlarm received lines in a row failed their checksum (on),
+    // or a good one has arrived since (off). Nothing from a refused line is
+    // acted on; the alarm says the link itself is damaging what it carries.
+    void badFramesAlarm(bool on, const QString &text);
     void errorOccurred(const QString &message);
 
 private:
@@ -151,6 +165,8 @@ private:
     void dropLink(const QString &reason = {});
     void scheduleReconnect(const QString &reason);
     void onReadyRead();
+    void onFrame(protocol::FrameCheck check, QByteArrayView line);
+    void clearBadFrames();
     void apply(const protocol::Message &m);
     void applyPosition();
     void applyInput(int index, double value);
@@ -174,12 +190,17 @@ private:
 
     void startProbe();
     void poll();
+    void keepAlive();
     void checkSoftLimits();
     void onStale();
 
     model::RotatorProfile m_profile;
     Options m_options;
     protocol::Parser m_parser;
+    bool m_checksum = false;
+    protocol::ChecksumReader m_frames; // checksummed lines are checked here before the parser
+    int m_checksumFailures = 0;
+    int m_badFramesInARow = 0;
 
     QString m_uri;
     std::unique_ptr<transport::Link> m_link;
@@ -197,6 +218,7 @@ private:
     int m_pollCount = 0;
     int m_failedPolls = 0;
     LinkTimer m_staleTimer;
+    LinkTimer m_keepAliveTimer;
 
     model::MoveGate m_gate; // the profile's limits and the link's, if it reports them
     Capabilities m_caps;

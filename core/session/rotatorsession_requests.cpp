@@ -45,8 +45,11 @@ void RotatorSession::write(const QByteArray &line)
 {
     if (!m_link || line.isEmpty())
         return;
-    m_link->device()->write(line);
-    emit bytesSent(line);
+    // Requests keep their plain line (the queue compares them); the frame
+    // is added on the way out.
+    const QByteArray framed = m_checksum ? protocol::withChecksums(line) : line;
+    m_link->device()->write(framed);
+    emit bytesSent(framed);
 }
 
 void RotatorSession::rememberSent(const Message &m)
@@ -101,7 +104,7 @@ void RotatorSession::finishFront(bool ok, const QString &reason)
     if (m_queue.isEmpty())
         return;
     Request r = m_queue.takeFront();
-    if (!ok && r.purpose == RequestPurpose::Position)
+    if (!ok && (r.purpose == RequestPurpose::Position || r.purpose == RequestPurpose::KeepAlive))
         ++m_failedPolls;
     if (r.done)
         r.done(ok, reason);
@@ -220,6 +223,31 @@ void RotatorSession::poll()
         ask(Op::ConfigRead, 10);
         ask(Op::ConfigRead, 11);
     }
+}
+
+void RotatorSession::keepAlive()
+{
+    // Polling already proves the link alive; the keep-alive only fills in
+    // while it is paused.
+    if (m_pollingEnabled || m_state != State::Connected || !m_link || !m_link->isOpen() || !m_caps.probed)
+        return;
+    const QByteArray line = protocol::encodeLine({Message::query(Op::KeepAlive)}, m_profile.dialect);
+    if (line.isEmpty() || m_queue.contains(line))
+        return;
+    Request r;
+    r.line = line;
+    r.expects[0] = Expectation{Op::KeepAlive, -1};
+    r.expectCount = 1;
+    r.attemptsLeft = m_options.retries + 1;
+    r.purpose = RequestPurpose::KeepAlive;
+    r.done = [this](bool ok, const QString &reason) {
+        if (ok)
+            return;
+        // As with an unanswered poll: nothing vouches for the position now.
+        onStale();
+        emit errorOccurred(tr("no answer to the keep-alive: %1").arg(reason));
+    };
+    enqueue(std::move(r));
 }
 
 void RotatorSession::checkSoftLimits()

@@ -13,8 +13,9 @@ struct FirmwareCounters {
     std::uint64_t malformed = 0;   // a known command with an unreadable argument
     std::uint64_t outOfLimits = 0; // an angle or register value the rotator refused
     std::uint64_t overlong = 0;    // tokens dropped for length
+    std::uint64_t badChecksum = 0; // lines refused unread: wrong or missing `*HH` (checksum=1)
 
-    std::uint64_t rejected() const { return unknown + malformed + outOfLimits + overlong; }
+    std::uint64_t rejected() const { return unknown + malformed + outOfLimits + overlong + badChecksum; }
 };
 
 } // namespace slew::sim

@@ -104,16 +104,56 @@ void SimulatorConnection::process(QByteArrayView bytes, double arrivedAt)
     // ahead of anything the controller answers.
     if (m_settings.echo)
         send(bytes.toByteArray(), arrivedAt);
-    QByteArray out = m_firmware.receive(bytes);
+    QByteArray out;
+    if (m_settings.checksum) {
+        // A line that does not check is not read at all, and not answered:
+        // the controller cannot tell what was meant, so it does nothing.
+        m_frames.feed(bytes, [&](protocol::FrameCheck check, QByteArrayView line) {
+            if (check == protocol::FrameCheck::Good)
+                out += m_firmware.receive(line);
+            else
+                ++m_simulator.counters().badChecksum;
+        });
+    } else {
+        out = m_firmware.receive(bytes);
+    }
     m_idleFlushAt = m_firmware.awaitingLineEnd() ? m_simulator.clock().now() + kIdleLineEnd : -1.0;
     if (!out.isEmpty())
-        send(std::move(out), arrivedAt);
+        answer(std::move(out), arrivedAt);
     schedule();
+}
+
+void SimulatorConnection::answer(QByteArray bytes, double at)
+{
+    send(m_settings.checksum ? protocol::withChecksums(bytes) : std::move(bytes), at);
+}
+
+void SimulatorConnection::corrupt(QByteArray &bytes)
+{
+    // One bit of one byte a line, never a line end: the damage stays inside
+    // the line it hits, as a bit error on a serial line usually does.
+    std::uniform_real_distribution<double> chance(0.0, 1.0);
+    qsizetype start = 0;
+    for (qsizetype i = 0; i <= bytes.size(); ++i) {
+        const bool end = i == bytes.size() || bytes[i] == '\r' || bytes[i] == '\n';
+        if (!end)
+            continue;
+        if (i > start && chance(m_rng) < m_simulator.linkFaults().corruptRate) {
+            std::uniform_int_distribution<qsizetype> at(start, i - 1);
+            char &c = bytes[at(m_rng)];
+            c = char(c ^ 0x01);
+            if (c == '\r' || c == '\n') // 0x0C and 0x0B flip to line ends: flip another bit
+                c = char(c ^ 0x41);
+        }
+        start = i + 1;
+    }
 }
 
 void SimulatorConnection::send(QByteArray bytes, double at)
 {
     const LinkFaults faults = m_simulator.linkFaults();
+    if (faults.corruptRate > 0.0)
+        corrupt(bytes);
     if (faults.dropRate > 0.0 || faults.garbageRate > 0.0) {
         std::uniform_real_distribution<double> chance(0.0, 1.0);
         std::uniform_int_distribution<int> anyByte(0, 255);
@@ -176,7 +216,7 @@ QByteArray SimulatorConnection::takeFinalOutput(QByteArrayView lastBytes)
         process(lastBytes, at);
     if (m_firmware.hasUnfinishedLine()) {
         m_simulator.syncToNow();
-        send(m_firmware.endLine(), at);
+        answer(m_firmware.endLine(), at);
     }
     m_finalOutput = nullptr;
     // Replies already waiting leave before the ones just made.
@@ -215,7 +255,7 @@ void SimulatorConnection::service()
         m_idleFlushAt = -1.0;
         m_simulator.syncToNow();
         if (QByteArray out = m_firmware.endLine(); !out.isEmpty())
-            send(std::move(out), now);
+            answer(std::move(out), now);
     }
     QByteArray ready;
     while (!m_outbound.empty() && m_outbound.front().due <= now) {
@@ -263,7 +303,7 @@ void SimulatorConnection::onTick()
         return;
     if (m_settings.unsolicited) {
         if (QByteArray out = m_firmware.unsolicitedChanges(); !out.isEmpty())
-            send(std::move(out), m_simulator.clock().now());
+            answer(std::move(out), m_simulator.clock().now());
     }
     service();
 }

@@ -11,6 +11,7 @@
 #include "receivedlog.h"
 #include "simulatorfirmware.h"
 
+#include "protocol/checksum.h"
 #include "protocol/dialect.h"
 
 #include <QObject>
@@ -30,6 +31,7 @@ struct ConnectionSettings {
     protocol::Dialect dialect = protocol::Dialect::Easycomm3;
     bool unsolicited = false;
     bool echo = false;            // every received byte goes back first (an echoing adapter)
+    bool checksum = false;        // lines framed `*HH` both ways; bad frames refused unread
     int baud = 0;                 // 0: unpaced
     ReceivedLog *log = nullptr;   // optional record of received lines
 };
@@ -72,6 +74,8 @@ private:
     // manual clock can be earlier than the tick that handles them.
     void process(QByteArrayView bytes, double arrivedAt);
     void send(QByteArray bytes, double at);
+    void answer(QByteArray bytes, double at); // the firmware's words: framed, then sent
+    void corrupt(QByteArray &bytes);
     void service();
     void schedule();
     void onTick();
@@ -83,6 +87,7 @@ private:
     ConnectionSettings m_settings;
     SimulatorFirmware m_firmware;
     LineCollector m_log;
+    protocol::ChecksumReader m_frames; // checksum=1: received lines are checked here first
     std::mt19937 m_rng;
 
     std::deque<Timed> m_inbound;

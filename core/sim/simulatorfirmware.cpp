@@ -243,7 +243,10 @@ void SimulatorFirmware::handle(const Message &m, QByteArray &out)
     case Op::Los:
         break; // pass markers: nothing for a rotator to do
     case Op::KeepAlive:
-        break; // expects no answer
+        if (!m.text.isEmpty())
+            return readOnly(); // `OK` is the controller's word, not a command
+        answer("OK");
+        break;
     case Op::Speed:
         m_manualSpeedShare = std::clamp(m.value, 1.0, 4.0) / 4.0;
         break;

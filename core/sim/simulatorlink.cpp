@@ -39,6 +39,7 @@ void SimulatorLink::open()
             settings.dialect = m_simulator.options().dialect;
             settings.unsolicited = m_simulator.options().unsolicited;
             settings.echo = m_simulator.options().echo;
+            settings.checksum = m_simulator.options().checksum;
             settings.baud = m_simulator.options().baud;
             m_connection = new SimulatorConnection(m_simulator, m_pipe.deviceEnd(), settings, this);
             connect(m_connection, &SimulatorConnection::dropRequested, this, &SimulatorLink::drop,

@@ -24,10 +24,8 @@ public:
     void open() override;
     void close() override;
     bool isOpen() const override { return m_connection != nullptr; }
-    transport::LinkHints hints() const override { return m_hints; }
     std::optional<double> clockSeconds() const override;
     bool clockIsStepped() const override { return m_simulator.clock().isManual(); }
-    void setHints(const transport::LinkHints &hints) { m_hints = hints; }
 
     Simulator &simulator() { return m_simulator; }
     // The firmware of the open connection (counters, dialect); null when closed.
@@ -39,7 +37,6 @@ private:
     Simulator m_simulator;
     LoopbackPipe m_pipe;
     SimulatorConnection *m_connection = nullptr;
-    transport::LinkHints m_hints;
 };
 
 } // namespace slew::sim

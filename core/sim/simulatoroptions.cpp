@@ -34,6 +34,7 @@ const std::vector<SimulatorOptionInfo> kOptions = {
     {"dialect", "name", "easycomm1, easycomm2, easycomm3, satnogs, gs232a or gs232b"},
     {"unsolicited", "", "push changed fields unsolicited (easycomm3)"},
     {"echo", "", "send every received byte back before the answer, as some serial adapters do"},
+    {"checksum", "", "frame every reply with the XOR checksum *HH and refuse received lines without a good one"},
     {"baud", "rate", "pace bytes to a serial line of this rate (0: unpaced)"},
     {"clock", "mode", "wall (default) or manual: time moves only when a test advances it"},
     {"seed", "number", "seed of the noise and link fault generators"},
@@ -50,6 +51,7 @@ const std::vector<SimulatorOptionInfo> kOptions = {
     {"latency_ms", "ms", "delay before every reply"},
     {"drop_rate", "share", "share of reply bytes lost, 0..1"},
     {"garbage_rate", "share", "share of reply bytes followed by a random byte, 0..1"},
+    {"corrupt_rate", "share", "share of reply lines with one bit flipped, 0..1"},
     {"drop_after", "seconds", "cut each connection this long after it opened"},
 };
 
@@ -226,6 +228,8 @@ QString applySimulatorOption(SimulatorOptions &o, QStringView rawName, QStringVi
         return toSwitch(value, &o.unsolicited) ? QString() : bad(name, value, QStringLiteral("expected 1 or 0"));
     if (name == u"echo")
         return toSwitch(value, &o.echo) ? QString() : bad(name, value, QStringLiteral("expected 1 or 0"));
+    if (name == u"checksum")
+        return toSwitch(value, &o.checksum) ? QString() : bad(name, value, QStringLiteral("expected 1 or 0"));
     if (name == u"baud") {
         double v = 0;
         if (QString e = number(0.0, 4000000.0, &v); !e.isEmpty())
@@ -285,6 +289,8 @@ QString applySimulatorOption(SimulatorOptions &o, QStringView rawName, QStringVi
         return number(0.0, 1.0, &o.link.dropRate);
     if (name == u"garbage_rate")
         return number(0.0, 1.0, &o.link.garbageRate);
+    if (name == u"corrupt_rate")
+        return number(0.0, 1.0, &o.link.corruptRate);
     if (name == u"drop_after")
         return number(0.0, big, &o.link.dropAfter);
     return QStringLiteral("unknown option %1").arg(rawName);

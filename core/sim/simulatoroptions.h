@@ -25,6 +25,7 @@ struct SimulatorOptions {
     protocol::Dialect dialect = protocol::Dialect::Easycomm3;
     bool unsolicited = false; // push changed fields as the Easycomm III derivative's controller does
     bool echo = false;        // send every received byte back first, as some serial adapters do
+    bool checksum = false;    // every line `*HH`-framed both ways (docs/protocol.md, "Checksum")
     int baud = 0;             // 0: bytes move as fast as the link carries them
     bool manualClock = false; // time moves only when advanced (tests)
 };

@@ -42,6 +42,7 @@ transport::LinkHints hintsOf(const QUrl &url, const SimulatorOptions &options)
     const RotatorConfig &r = options.rotator;
     transport::LinkHints h;
     h.dialect = protocol::dialectName(options.dialect);
+    h.checksum = options.checksum; // the session frames its side as the simulator does
     if (query.hasQueryItem(QStringLiteral("az_max")))
         h.azMax = r.azimuth.maxDegrees;
     if (query.hasQueryItem(QStringLiteral("el_max")))

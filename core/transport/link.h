@@ -26,6 +26,10 @@ struct LinkHints {
     std::optional<double> elMax;
     std::optional<double> parkAz;
     std::optional<double> parkEl;
+    // Every line carries the XOR checksum `*HH` both ways (`checksum=1` on
+    // the URI; docs/protocol.md, "Checksum"). Not a guess about the far end
+    // but a choice the operator made, so the session always follows it.
+    bool checksum = false;
 };
 
 class Link : public QObject {
@@ -44,7 +48,8 @@ public:
     virtual void close() = 0;
     virtual bool isOpen() const = 0;
 
-    virtual LinkHints hints() const { return {}; }
+    virtual LinkHints hints() const { return m_hints; }
+    void setHints(const LinkHints &hints) { m_hints = hints; }
     // The far end's own clock in seconds, where it keeps one (a simulator
     // stepping simulated time, so that samples stamped with it repeat
     // exactly); empty for hardware, which goes by the wall clock.
@@ -70,6 +75,7 @@ signals:
 
 private:
     QString m_uri;
+    LinkHints m_hints;
 };
 
 } // namespace slew::transport

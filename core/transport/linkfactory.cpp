@@ -21,8 +21,30 @@ LinkResult fail(const QString &uri, const QString &why)
     return {nullptr, QObject::tr("%1: %2").arg(uri, why)};
 }
 
+// `checksum=1` (or 0) turns the XOR checksum on for the link (link.h).
+// Returns an error for any other value.
+QString readChecksum(QStringView value, LinkHints *hints)
+{
+    if (value == u"1" || value == u"on" || value == u"true" || value == u"yes") {
+        hints->checksum = true;
+        return {};
+    }
+    if (value == u"0" || value == u"off" || value == u"false" || value == u"no") {
+        hints->checksum = false;
+        return {};
+    }
+    return QObject::tr("checksum must be 1 or 0, not '%1'").arg(value);
+}
+
+LinkResult withHints(std::unique_ptr<Link> link, const LinkHints &hints)
+{
+    link->setHints(hints);
+    return {std::move(link), {}};
+}
+
 LinkResult makeSerial(const QUrl &url, const QString &uri)
 {
+    LinkHints hints;
     SerialSettings s;
     s.portName = url.path();
     if (s.portName.isEmpty())
@@ -65,11 +87,14 @@ LinkResult makeSerial(const QUrl &url, const QString &uri)
                 s.flow = QSerialPort::SoftwareControl;
             else
                 return fail(uri, QObject::tr("flow must be none, rtscts or xonxoff, not '%1'").arg(value));
+        } else if (key == QLatin1String("checksum")) {
+            if (const QString e = readChecksum(value, &hints); !e.isEmpty())
+                return fail(uri, e);
         } else {
             return fail(uri, QObject::tr("unknown serial option '%1'").arg(key));
         }
     }
-    return {std::make_unique<SerialLink>(uri, s), {}};
+    return withHints(std::make_unique<SerialLink>(uri, s), hints);
 }
 
 LinkResult makeTcp(const QUrl &url, const QString &uri)
@@ -78,7 +103,14 @@ LinkResult makeTcp(const QUrl &url, const QString &uri)
         return fail(uri, QObject::tr("no host named (expected tcp://host:port)"));
     if (url.port() <= 0)
         return fail(uri, QObject::tr("no port named (expected tcp://host:port)"));
-    return {std::make_unique<TcpLink>(uri, url.host(), quint16(url.port())), {}};
+    LinkHints hints;
+    for (const auto &[key, value] : QUrlQuery(url).queryItems()) {
+        if (key != QLatin1String("checksum"))
+            return fail(uri, QObject::tr("unknown tcp option '%1' (known: checksum)").arg(key));
+        if (const QString e = readChecksum(value, &hints); !e.isEmpty())
+            return fail(uri, e);
+    }
+    return withHints(std::make_unique<TcpLink>(uri, url.host(), quint16(url.port())), hints);
 }
 
 void registerBuiltIns()

@@ -3,6 +3,7 @@
 //
 //   serial:/dev/ttyUSB0?baud=19200&data=8&parity=none&stop=1&flow=none
 //   tcp://host:port
+//   ...?checksum=1                      (serial, tcp and sim: every line framed `*HH`)
 //   sim:?kp=..&az_max=450...            (core/sim registers this scheme)
 //   rotctld://host:port                 (core/bridge registers this scheme)
 //

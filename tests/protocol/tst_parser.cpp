@@ -190,6 +190,7 @@ void ParserTest::vectors_data()
     row("gs232 speed", "gs232b", "X2\rX5\r", {"speed=2|", "unreadable input 'X5'|"});
     row("the easycom library A E set", "gs232a", "A090\rE045\r", {"azimuth=90|", "elevation=45|"});
     row("the easycom library keep-alive", "gs232a", "?\r", {"keep-alive|"});
+    row("keep-alive answer (Slew's choice)", "gs232b", "OK\r\n", {"keep-alive 'OK'|"});
     // --- GS-232 reports.
     row("gs232a C2 report", "gs232a", "+0123+0045\r", {"azimuth=123", "elevation=45|"});
     row("gs232a C report", "gs232a", "+0359\r\n", {"azimuth=359|"});
