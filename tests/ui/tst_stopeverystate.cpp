@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Stop works from every state: it never throws the window, sends SA SE on
-// any open link, halts whatever is moving, and ends jogs and homing.
+// any open link, halts whatever is moving, and ends jogs and homing. The
+// simulator runs on its manual clock, pumped by the fixture; the moment a
+// motion is under way is caught as the session reports it, and the clock is
+// held while Stop is pressed.
 
 #include "windowfixture.h"
 
@@ -23,7 +26,7 @@ private slots:
 
     void disconnectedStopSaysWhyAndSendsNothing()
     {
-        WindowFixture f;
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QTest::mouseClick(f.find<QPushButton>(QStringLiteral("stopButton")), Qt::LeftButton);
         QCOMPARE(f.sent.size(), 0);
         QVERIFY(f.find<QWidget>(QStringLiteral("eventLog"))->property("plainText").toString().contains(
@@ -32,7 +35,7 @@ private slots:
 
     void connectingStopIsSafe()
     {
-        WindowFixture f;
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         f.window->connectTo(f.uri);
         QTest::mouseClick(f.find<QPushButton>(QStringLiteral("stopButton")), Qt::LeftButton);
         QVERIFY(f.connectAndWait()); // and the connection still comes up
@@ -40,7 +43,7 @@ private slots:
 
     void idleStopSendsStop()
     {
-        WindowFixture f;
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
         QVERIFY(f.window->stopButton()->stopAll());
         QCOMPARE(f.sentCount(kStopLine), 1);
@@ -48,28 +51,26 @@ private slots:
 
     void stopHaltsAGoto()
     {
-        // A slow rotator: 80 degrees take about 27 s, so however long a busy
-        // machine holds this process between seeing it move and pressing
-        // Stop, the goto cannot finish first. At the default 30 deg/s it took
-        // under 3 s and did, under load.
-        WindowFixture f(QStringLiteral("sim:?max_speed=3"));
+        WindowFixture f(QStringLiteral("sim:?max_speed=3&clock=manual"));
         QVERIFY(f.connectAndWait());
         QVERIFY(f.session.gotoPosition(300, 80));
-        QTRY_VERIFY_WITH_TIMEOUT(f.session.elevation() > 5, 10000);
+        QVERIFY(f.holdClockWhen([&] { return f.session.elevation() > 5; }));
         QTest::mouseClick(f.find<QPushButton>(QStringLiteral("stopButton")), Qt::LeftButton);
+        f.releaseClock();
         QVERIFY(f.waitUntilStill());
         QVERIFY(f.session.elevation() < 75); // it stopped short of the target
     }
 
     void stopEndsAJogEvenWhileTheButtonIsHeld()
     {
-        WindowFixture f;
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
         auto *left = f.find<QPushButton>(QStringLiteral("jogUp"));
         QTest::mousePress(left, Qt::LeftButton);
         const double start = f.session.elevation();
-        QTRY_VERIFY_WITH_TIMEOUT(f.session.elevation() > start + 1, 10000);
+        QVERIFY(f.holdClockWhen([&] { return f.session.elevation() > start + 1; }));
         QTest::keyClick(f.window.get(), Qt::Key_Escape);
+        f.releaseClock();
         QVERIFY(!f.window->jogPad()->isHeld(slew::ui::JogPad::Up));
         QVERIFY(f.sentCount(kStopLine) >= 1);
         QVERIFY(f.waitUntilStill());
@@ -78,7 +79,7 @@ private slots:
 
     void stopEndsHoming()
     {
-        WindowFixture f;
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
         QVERIFY(f.session.gotoPosition(120, 40));
         QVERIFY(f.waitUntilAt(120, 40, 1.0));
@@ -86,8 +87,9 @@ private slots:
         QVERIFY(panel->home());
         QVERIFY(panel->isHoming());
         QVERIFY(f.session.hasPosition());
-        QTRY_VERIFY_WITH_TIMEOUT(f.session.azimuth() < 115, 10000); // heading for the switch
+        QVERIFY(f.holdClockWhen([&] { return f.session.azimuth() < 115; })); // heading for the switch
         QTest::mouseClick(f.find<QPushButton>(QStringLiteral("homeCancel")), Qt::LeftButton);
+        f.releaseClock();
         QVERIFY(!panel->isHoming());
         QVERIFY(f.sentCount(kStopLine) >= 1);
         QVERIFY(f.waitUntilStill());
@@ -96,7 +98,7 @@ private slots:
 
     void spaceStopsUnlessTypingEscAlways()
     {
-        WindowFixture f;
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
         f.find<QWidget>(QStringLiteral("polarPlot"))->setFocus();
         QTest::keyClick(f.window.get(), Qt::Key_Space);

@@ -32,6 +32,7 @@ public:
     // The fast SatNOGS-class simulator unless a test names another: most
     // window tests are about the window, and a fast rotator keeps them short.
     static constexpr const char *fastSim = "sim:?model=satnogs";
+    static constexpr const char *fastSimOnItsClock = "sim:?model=satnogs&clock=manual";
     explicit WindowFixture(const QString &uri = QString::fromLatin1(fastSim));
 
     // Connects through the connection bar and waits for the probe and a position.
