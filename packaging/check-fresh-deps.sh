@@ -60,18 +60,23 @@ sort -u "$work/files" -o "$work/files"
 # 3. Owners. A file is looked up as named, then with symlinks resolved
 # (alternatives, /bin -> /usr/bin), then under the other half of the /usr
 # merge, since dpkg records the path the package shipped.
-candidates() {
-    local f=$1 real
-    real=$(readlink -f "$f" 2>/dev/null) || real=$f
-    for p in "$f" "$real"; do
-        printf '%s\t%s\n' "$f" "$p"
-        case $p in
-        /usr/lib/*|/usr/bin/*|/usr/sbin/*) printf '%s\t%s\n' "$f" "${p#/usr}" ;;
-        /lib/*|/bin/*|/sbin/*) printf '%s\t%s\n' "$f" "/usr$p" ;;
-        esac
-    done
-}
-while read -r f; do candidates "$f"; done < "$work/files" > "$work/candidates"
+# realpath runs once over every file (-m: one line per file, existing or not),
+# not once per file: a fork per header made this the slowest step of the suite.
+tr '\n' '\0' < "$work/files" | xargs -0 realpath -m -- > "$work/resolved"
+paste "$work/files" "$work/resolved" | awk -F'\t' '
+    function other_half(p) {
+        if (p ~ /^\/usr\/(lib|bin|sbin)\//) return substr(p, 5)
+        if (p ~ /^\/(lib|bin|sbin)\//) return "/usr" p
+        return ""
+    }
+    {
+        f = $1; real = ($2 == "" ? $1 : $2)
+        n = split(f SUBSEP real, ps, SUBSEP)
+        for (i = 1; i <= n; ++i) {
+            print f "\t" ps[i]
+            o = other_half(ps[i]); if (o != "") print f "\t" o
+        }
+    }' > "$work/candidates"
 # One pass over dpkg's lists: path -> package, then each file's first
 # candidate that a package owns.
 awk -F'\t' -v owners="$work/owners" -v unowned="$work/unowned" '
@@ -88,9 +93,7 @@ touch "$work/owners" "$work/unowned"
 
 status=0
 : > "$work/outside"
-while read -r pkg f; do
-    grep -qx "$pkg" "$work/closure" || echo "$pkg $f" >> "$work/outside"
-done < "$work/owners"
+awk 'FNR == NR { inside[$1] = 1; next } !($1 in inside)' "$work/closure" "$work/owners" > "$work/outside"
 if [ -s "$work/outside" ]; then
     echo "debian-packages.txt misses packages the build used; a fresh machine would not have them:"
     sort -u -k1,1 "$work/outside" | awk '{printf "  %-28s e.g. %s\n", $1, $2}'
