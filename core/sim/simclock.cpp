@@ -2,7 +2,8 @@
 
 namespace slew::sim {
 
-SimClock::SimClock(Mode mode, QObject *parent) : QObject(parent), m_mode(mode)
+SimClock::SimClock(Mode mode, double timeScale, QObject *parent)
+    : QObject(parent), m_mode(mode), m_timeScale(mode == Mode::WallClock ? timeScale : 1.0)
 {
     if (m_mode == Mode::WallClock) {
         m_elapsed.start();
@@ -17,7 +18,7 @@ double SimClock::now() const
 {
     if (m_mode == Mode::Manual)
         return m_manualNow;
-    return double(m_elapsed.nsecsElapsed()) / 1e9;
+    return m_timeScale * double(m_elapsed.nsecsElapsed()) / 1e9;
 }
 
 void SimClock::advance(double seconds)

@@ -2,7 +2,9 @@
 // Simulated time. In Manual mode time moves only when someone calls
 // advance(), so a test decides exactly how much happens between two checks
 // and never sleeps. In WallClock mode it follows a monotonic clock and ticks
-// on its own every tickMilliseconds, which is what the servers use.
+// on its own every tickMilliseconds, which is what the servers use; a time
+// scale above 1 makes simulated time run that many times faster than the
+// wall clock (a demo, or a test that waits on a long slew, need not wait).
 
 #include <QElapsedTimer>
 #include <QObject>
@@ -18,10 +20,14 @@ public:
     // the Easycomm III derivative's simulator steps every 25 ms; the physics below substeps at 1 ms.
     static constexpr int tickMilliseconds = 25;
 
-    explicit SimClock(Mode mode, QObject *parent = nullptr);
+    static constexpr double maxTimeScale = 20.0;
+
+    // timeScale: simulated seconds per wall-clock second (WallClock mode only).
+    explicit SimClock(Mode mode, double timeScale = 1.0, QObject *parent = nullptr);
 
     Mode mode() const { return m_mode; }
     bool isManual() const { return m_mode == Mode::Manual; }
+    double timeScale() const { return m_timeScale; }
 
     // Seconds since the clock started.
     double now() const;
@@ -35,6 +41,7 @@ signals:
 
 private:
     Mode m_mode;
+    double m_timeScale = 1.0;
     double m_manualNow = 0.0;
     QElapsedTimer m_elapsed;
     QTimer m_tick;

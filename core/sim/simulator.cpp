@@ -5,7 +5,7 @@ namespace slew::sim {
 Simulator::Simulator(const SimulatorOptions &options, QObject *parent)
     : QObject(parent),
       m_options(options),
-      m_clock(options.manualClock ? SimClock::Mode::Manual : SimClock::Mode::WallClock),
+      m_clock(options.manualClock ? SimClock::Mode::Manual : SimClock::Mode::WallClock, options.timeScale),
       m_rotator(options.rotator),
       m_linkFaults(options.link)
 {

@@ -291,7 +291,8 @@ void SimulatorConnection::schedule()
     if (wait <= 0.0) {
         m_timer.start(0);
     } else if (!m_simulator.clock().isManual()) {
-        m_timer.start(int(std::ceil(wait * 1000.0)));
+        // wait is simulated time; the timer runs on the wall clock.
+        m_timer.start(int(std::ceil(wait * 1000.0 / m_simulator.clock().timeScale())));
     } else {
         m_timer.stop(); // a manual clock releases it from onTick()
     }

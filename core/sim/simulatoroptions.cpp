@@ -2,6 +2,7 @@
 #include "simulatoroptions.h"
 
 #include "rotatormodels.h"
+#include "simclock.h"
 
 #include <QStringList>
 
@@ -37,6 +38,9 @@ const std::vector<SimulatorOptionInfo> kOptions = {
     {"checksum", "", "frame every reply with the XOR checksum *HH and refuse received lines without a good one"},
     {"baud", "rate", "pace bytes to a serial line of this rate (0: unpaced)"},
     {"clock", "mode", "wall (default) or manual: time moves only when a test advances it"},
+    {"time_scale", "factor",
+     "wall clock: simulated seconds per real second, 1 (default) to 20; everything simulated (motion, latency, "
+     "line pacing) runs that much faster"},
     {"seed", "number", "seed of the noise and link fault generators"},
     {"jam", "axes", "az, el or both: the axis jams; a motor error follows"},
     {"jam_after", "seconds", "how long a driven jammed axis takes to become a motor error"},
@@ -244,6 +248,13 @@ QString applySimulatorOption(SimulatorOptions &o, QStringView rawName, QStringVi
             o.manualClock = false;
         else
             return bad(name, value, QStringLiteral("expected manual or wall"));
+        return {};
+    }
+    if (name == u"time_scale") {
+        double v = 0;
+        if (QString e = number(1.0, SimClock::maxTimeScale, &v); !e.isEmpty())
+            return e;
+        o.timeScale = v;
         return {};
     }
     if (name == u"seed") {

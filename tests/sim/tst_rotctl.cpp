@@ -4,6 +4,9 @@
 // (Easycomm II) and 204 (Easycomm III / SatNOGS), and the two Yaesu GS-232
 // models 601 (GS-232A) and 603 (GS-232B). Both what rotctl reads back and
 // what the simulator received are checked.
+//
+// The simulator runs ten times faster than the wall clock (--time-scale):
+// what is tested is what goes over the wire, not how long the slews take.
 #include "../common/hamlibprocess.h"
 #include "slewsimprocess.h"
 
@@ -64,7 +67,7 @@ private slots:
     void model202Easycomm2()
     {
         SlewSimProcess sim;
-        QVERIFY2(sim.start({"--model", "satnogs", "--pty", ptyPath(202), "--dialect", "easycomm2", "--baud", "19200", "--log-received",
+        QVERIFY2(sim.start({"--model", "satnogs", "--time-scale", "10", "--pty", ptyPath(202), "--dialect", "easycomm2", "--baud", "19200", "--log-received",
                             logPath(202)}),
                  qPrintable(sim.error()));
         QVERIFY(sim.readyLine().contains(ptyPath(202)));
@@ -88,7 +91,7 @@ private slots:
     void model204SatNogs()
     {
         SlewSimProcess sim;
-        QVERIFY2(sim.start({"--model", "satnogs", "--pty", ptyPath(204), "--dialect", "satnogs", "--baud", "19200", "--log-received",
+        QVERIFY2(sim.start({"--model", "satnogs", "--time-scale", "10", "--pty", ptyPath(204), "--dialect", "satnogs", "--baud", "19200", "--log-received",
                             logPath(204)}),
                  qPrintable(sim.error()));
         QCOMPARE(rotctl(204, ptyPath(204), {"P", "15", "30"}).exitCode, 0);
@@ -116,7 +119,7 @@ private slots:
         QFETCH(int, model);
         QFETCH(QString, dialect);
         SlewSimProcess sim;
-        QVERIFY2(sim.start({"--model", "satnogs", "--pty", ptyPath(model), "--dialect", dialect, "--baud", "9600", "--log-received",
+        QVERIFY2(sim.start({"--model", "satnogs", "--time-scale", "10", "--pty", ptyPath(model), "--dialect", dialect, "--baud", "9600", "--log-received",
                             logPath(model)}),
                  qPrintable(sim.error()));
         QCOMPARE(rotctl(model, ptyPath(model), {"P", "40", "25"}).exitCode, 0);
@@ -136,7 +139,7 @@ private slots:
         // Easycomm I has no way to ask, so a TCP monitor in Easycomm III
         // watches the same rotator.
         SlewSimProcess sim;
-        QVERIFY2(sim.start({"--model", "satnogs", "--pty", ptyPath(201), "--dialect", "easycomm1", "--listen", "127.0.0.1:0",
+        QVERIFY2(sim.start({"--model", "satnogs", "--time-scale", "10", "--pty", ptyPath(201), "--dialect", "easycomm1", "--listen", "127.0.0.1:0",
                             "--listen-dialect", "easycomm3", "--log-received", logPath(201)}),
                  qPrintable(sim.error()));
         QVERIFY(sim.port() != 0);

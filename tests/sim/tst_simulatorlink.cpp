@@ -9,6 +9,7 @@
 
 #include "transport/linkfactory.h"
 
+#include <QElapsedTimer>
 #include <QIODevice>
 #include <QSignalSpy>
 #include <QTest>
@@ -153,6 +154,35 @@ private slots:
         QVERIFY(tcp.link->hints().dialect.isEmpty());
     }
 
+    // A scaled wall clock: simulated time is the wall time between two
+    // readings taken around it, times the scale, so the check cannot race.
+    void aTimeScaleRunsTheWallClockFaster()
+    {
+        auto link = openLink("sim:?time_scale=8");
+        QVERIFY(link);
+        const SimClock &clock = simulatorBehind(link.get())->clock();
+        QVERIFY(!clock.isManual());
+        QCOMPARE(clock.timeScale(), 8.0);
+        // Wall readings bracket each clock reading: w0 <= start <= w1 and
+        // w2 <= end <= w3, so 8 (w2 - w1) <= simulated <= 8 (w3 - w0).
+        QElapsedTimer wall;
+        wall.start();
+        const auto wallNow = [&] { return double(wall.nsecsElapsed()) / 1e9; };
+        const double w0 = wallNow();
+        const double simStart = clock.now();
+        const double w1 = wallNow();
+        QTest::qWait(50);
+        const double w2 = wallNow();
+        const double simulated = clock.now() - simStart;
+        const double w3 = wallNow();
+        QVERIFY2(simulated >= 8.0 * (w2 - w1) && simulated <= 8.0 * (w3 - w0),
+                 qPrintable(QStringLiteral("%1 s simulated in %2..%3 s").arg(simulated).arg(w2 - w1).arg(w3 - w0)));
+        // A manual clock ignores the scale: it moves only when stepped.
+        SimClock manual(SimClock::Mode::Manual, 8.0);
+        manual.advance(1.5);
+        QCOMPARE(manual.now(), 1.5);
+    }
+
     void badQueryItemsNameTheUri_data()
     {
         QTest::addColumn<QString>("uri");
@@ -165,6 +195,8 @@ private slots:
         QTest::newRow("jam") << "sim:?jam=roll" << "jam";
         QTest::newRow("model") << "sim:?model=g9999" << "model";
         QTest::newRow("drive") << "sim:?drive=belt" << "drive";
+        QTest::newRow("time_scale too fast") << "sim:?time_scale=50" << "time_scale";
+        QTest::newRow("time_scale backwards") << "sim:?time_scale=0.5" << "time_scale";
     }
     void badQueryItemsNameTheUri()
     {
