@@ -8,6 +8,7 @@
 #include <QString>
 #include <QStringList>
 #include <QTcpSocket>
+#include <QTest>
 
 #include <functional>
 #include <memory>
@@ -31,14 +32,14 @@ public:
         m_process->setProcessChannelMode(QProcess::SeparateChannels);
         if (childSetup)
             m_process->setChildProcessModifier(childSetup);
-        QSignalSpy ready(m_process.get(), &QProcess::readyReadStandardOutput);
-        QSignalSpy finished(m_process.get(), &QProcess::finished);
         m_process->start();
-        while (!m_process->canReadLine()) {
-            if (finished.count() > 0 || (!ready.wait(5000) && !m_process->canReadLine())) {
-                m_error = "slew-sim did not start: " + QString::fromLocal8Bit(m_process->readAllStandardError());
-                return false;
-            }
+        // Ready line or exit, whichever comes first: a refused flag ends it
+        // at once, and waiting on the ready line alone would sit out the limit.
+        const bool settled = QTest::qWaitFor(
+            [&] { return m_process->canReadLine() || m_process->state() == QProcess::NotRunning; }, 10000);
+        if (!settled || !m_process->canReadLine()) {
+            m_error = "slew-sim did not start: " + QString::fromLocal8Bit(m_process->readAllStandardError());
+            return false;
         }
         m_readyLine = QString::fromLocal8Bit(m_process->readLine()).trimmed();
         const QStringList words = m_readyLine.split(' ');

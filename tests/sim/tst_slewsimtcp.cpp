@@ -52,7 +52,9 @@ class TestSlewSimTcp : public QObject {
 private slots:
     void initTestCase()
     {
-        QVERIFY2(m_sim.start({"--listen", "127.0.0.1:0", "--dialect", "easycomm3", "--model", "satnogs"}),
+        // Four times the wall clock: these check answers, not how long slews take.
+        QVERIFY2(m_sim.start({"--listen", "127.0.0.1:0", "--dialect", "easycomm3", "--model", "satnogs",
+                              "--time-scale", "4"}),
                  qPrintable(m_sim.error()));
         QVERIFY2(m_sim.readyLine().contains("tcp 127.0.0.1:"), qPrintable(m_sim.readyLine()));
         QVERIFY(m_sim.port() != 0);
@@ -370,7 +372,7 @@ private slots:
         QFETCH(QByteArray, error);
         QFETCH(QByteArray, status);
         SlewSimProcess sim;
-        QVERIFY2(sim.start(QStringList{"--listen", "127.0.0.1:0"} + flags), qPrintable(sim.error()));
+        QVERIFY2(sim.start(QStringList{"--listen", "127.0.0.1:0", "--time-scale", "4"} + flags), qPrintable(sim.error()));
         SimClient c;
         QVERIFY(c.connectTo(sim.port()));
         c.socket().write(command);
