@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Link loss, operator disconnects and homing, each against a simulator set
 // up to produce the situation (drop_after, start position, missing switch).
+// Every simulator runs on its manual clock, pumped by the fixture: staleness,
+// homing and parking take simulated seconds, not wall-clock ones.
 
 #include "windowfixture.h"
 
@@ -25,7 +27,7 @@ private slots:
 
     void aLostLinkRaisesTheBannerAndShowsLost()
     {
-        WindowFixture f;
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
         // The cut comes once the link is up. drop_after counts from when the
         // link opened, so `sim:?drop_after=1` raced the probe and the first
@@ -35,18 +37,18 @@ private slots:
         slew::sim::LinkFaults faults;
         faults.dropAfter = 0.001;
         simulator->setLinkFaults(faults);
-        QTRY_VERIFY_WITH_TIMEOUT(f.window->alarmBanner()->text().contains(QStringLiteral("Link lost")), 10000);
+        QVERIFY(f.waitFor([&] { return f.window->alarmBanner()->text().contains(QStringLiteral("Link lost")); }, 10000));
         QVERIFY(f.window->alarmBanner()->isSevere());
         QCOMPARE(f.find<QLabel>(QStringLiteral("connectionState"))->text(), QStringLiteral("lost"));
     }
 
     void aSilentControllerMakesThePositionStale()
     {
-        WindowFixture f;
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
         QVERIFY(f.session.gotoPosition(20, 10));
         QVERIFY(f.waitUntilAt(20, 10));
-        QTRY_VERIFY_WITH_TIMEOUT(f.window->alarmBanner()->isHidden(), 5000);
+        QVERIFY(f.waitFor([&] { return f.window->alarmBanner()->isHidden(); }, 5000));
         // The link stays up but every answer is lost, as with a dead controller
         // behind a live serial adapter.
         slew::sim::Simulator *simulator = slew::sim::simulatorBehind(f.session.link());
@@ -54,21 +56,21 @@ private slots:
         slew::sim::LinkFaults faults;
         faults.dropRate = 1.0;
         simulator->setLinkFaults(faults);
-        QTRY_VERIFY_WITH_TIMEOUT(f.window->alarmBanner()->text().contains(QStringLiteral("stale")), 10000);
+        QVERIFY(f.waitFor([&] { return f.window->alarmBanner()->text().contains(QStringLiteral("stale")); }, 10000));
         QVERIFY(f.window->alarmBanner()->isSevere());
         QVERIFY(f.session.positionStale());
         // Answers come back: the alarm clears.
         simulator->setLinkFaults({});
-        QTRY_VERIFY_WITH_TIMEOUT(!f.window->alarmBanner()->text().contains(QStringLiteral("stale")), 10000);
+        QVERIFY(f.waitFor([&] { return !f.window->alarmBanner()->text().contains(QStringLiteral("stale")); }, 10000));
     }
 
     void anOperatorDisconnectIsNotAnAlarm()
     {
-        WindowFixture f;
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
         QVERIFY(f.session.gotoPosition(20, 10)); // off the end stops, so no warning holds
         QVERIFY(f.waitUntilAt(20, 10));
-        QTRY_VERIFY_WITH_TIMEOUT(f.window->alarmBanner()->isHidden(), 5000);
+        QVERIFY(f.waitFor([&] { return f.window->alarmBanner()->isHidden(); }, 5000));
         QTest::mouseClick(f.find<QPushButton>(QStringLiteral("connectButton")), Qt::LeftButton);
         QCOMPARE(f.session.state(), slew::session::RotatorSession::State::Disconnected);
         QVERIFY(f.window->alarmBanner()->isHidden());
@@ -80,10 +82,10 @@ private slots:
     {
         // It rests at 0/0 on both lower limit switches, as many rotators park:
         // a state for the status line, not an alarm.
-        WindowFixture f(QStringLiteral("sim:"));
+        WindowFixture f(QStringLiteral("sim:?clock=manual"));
         QVERIFY(f.connectAndWait());
         auto *resting = f.find<QLabel>(QStringLiteral("limitSwitchState"));
-        QTRY_VERIFY_WITH_TIMEOUT(resting->text().contains(QStringLiteral("limit switch")), 5000);
+        QVERIFY(f.waitFor([&] { return resting->text().contains(QStringLiteral("limit switch")); }, 5000));
         QVERIFY(f.window->alarmBanner()->isHidden());
         QVERIFY(f.window->alarmBanner()->text().isEmpty());
         // Said once, at the foot, not also as a passing message beside it.
@@ -92,22 +94,22 @@ private slots:
         // Moving off the switches ends the quiet state too.
         QVERIFY(f.session.gotoPosition(3, 2));
         QVERIFY(f.waitUntilAt(3, 2, 0.2));
-        QTRY_VERIFY_WITH_TIMEOUT(resting->text().isEmpty(), 5000);
+        QVERIFY(f.waitFor([&] { return resting->text().isEmpty(); }, 5000));
         QVERIFY(f.window->alarmBanner()->isHidden());
     }
 
     void aMoveIntoTheStopItRestsOnRaisesTheBannerUntilTheNextMove()
     {
-        WindowFixture f(QStringLiteral("sim:"));
+        WindowFixture f(QStringLiteral("sim:?clock=manual"));
         QVERIFY(f.connectAndWait());
         auto *resting = f.find<QLabel>(QStringLiteral("limitSwitchState"));
-        QTRY_VERIFY_WITH_TIMEOUT(resting->text().contains(QStringLiteral("limit switch")), 5000);
+        QVERIFY(f.waitFor([&] { return resting->text().contains(QStringLiteral("limit switch")); }, 5000));
         QVERIFY(f.window->alarmBanner()->isHidden());
         // At rest on the counter-clockwise stop, the operator holds ◀.
         const QRegularExpression jogLeft(QStringLiteral("^VL"));
         auto *left = f.find<QPushButton>(QStringLiteral("jogLeft"));
         QTest::mousePress(left, Qt::LeftButton);
-        QTRY_VERIFY_WITH_TIMEOUT(!f.window->alarmBanner()->isHidden(), 5000);
+        QVERIFY(f.waitFor([&] { return !f.window->alarmBanner()->isHidden(); }, 5000));
         QTest::mouseRelease(left, Qt::LeftButton);
         QVERIFY2(f.window->alarmBanner()->text().contains(QStringLiteral("Move refused: azimuth is already at its lower limit")),
                  qPrintable(f.window->alarmBanner()->text()));
@@ -115,25 +117,25 @@ private slots:
         QCOMPARE(f.sentCount(jogLeft), 0);
         // A move the session sends clears it.
         QVERIFY(f.session.gotoPosition(2, 1));
-        QTRY_VERIFY_WITH_TIMEOUT(f.window->alarmBanner()->isHidden(), 5000);
+        QVERIFY(f.waitFor([&] { return f.window->alarmBanner()->isHidden(); }, 5000));
 
         // A tracker's target beyond the limits is refused the same way.
         QVERIFY(!f.session.gotoPosition(10, 95));
         QVERIFY2(f.window->alarmBanner()->text().contains(QStringLiteral("Move refused")),
                  qPrintable(f.window->alarmBanner()->text()));
         QVERIFY(f.session.gotoPosition(3, 2));
-        QTRY_VERIFY_WITH_TIMEOUT(f.window->alarmBanner()->isHidden(), 5000);
+        QVERIFY(f.waitFor([&] { return f.window->alarmBanner()->isHidden(); }, 5000));
     }
 
     void drivingIntoAnEndStopRaisesTheBanner()
     {
-        WindowFixture f(QStringLiteral("sim:?model=satnogs&start_az=330&start_el=20"));
+        WindowFixture f(QStringLiteral("sim:?model=satnogs&start_az=330&start_el=20&clock=manual"));
         QVERIFY(f.connectAndWait());
         QVERIFY(f.window->alarmBanner()->isHidden());
         // A raw speed command the profile's soft limits cannot stop: the
         // switch at 360 has to.
         QVERIFY(f.session.sendRaw(QStringLiteral("VR20000")));
-        QTRY_VERIFY_WITH_TIMEOUT(f.window->alarmBanner()->text().contains(QStringLiteral("end stop")), 30000);
+        QVERIFY(f.waitFor([&] { return f.window->alarmBanner()->text().contains(QStringLiteral("end stop")); }, 30000));
         QVERIFY(!f.window->alarmBanner()->isHidden());
         QVERIFY(!f.window->alarmBanner()->isSevere()); // a warning, not a fault
         f.session.stop();
@@ -141,14 +143,14 @@ private slots:
 
     void homingShowsProgressUntilIdle()
     {
-        WindowFixture f(QStringLiteral("sim:?start_az=6&start_el=4"));
+        WindowFixture f(QStringLiteral("sim:?start_az=6&start_el=4&clock=manual"));
         QVERIFY(f.connectAndWait());
         QTest::mouseClick(f.find<QPushButton>(QStringLiteral("homeButton")), Qt::LeftButton);
         auto *panel = f.window->parkHomePanel();
         QVERIFY(panel->isHoming());
         QVERIFY(!f.find<QProgressBar>(QStringLiteral("homeProgress"))->isHidden());
         QVERIFY(f.sentCount(QRegularExpression(QStringLiteral("^RESET$"))) == 1);
-        QTRY_VERIFY_WITH_TIMEOUT(!panel->isHoming(), 30000);
+        QVERIFY(f.waitFor([&] { return !panel->isHoming(); }, 30000));
         QCOMPARE(f.find<QLabel>(QStringLiteral("homeMessage"))->text(), QStringLiteral("Homed."));
         QVERIFY(f.find<QProgressBar>(QStringLiteral("homeProgress"))->isHidden());
         QCOMPARE_LE(f.session.azimuth(), 0.5);
@@ -157,7 +159,7 @@ private slots:
 
     void parkGoesToThePark()
     {
-        WindowFixture f(QStringLiteral("sim:?park_az=45&park_el=10"));
+        WindowFixture f(QStringLiteral("sim:?park_az=45&park_el=10&clock=manual"));
         QVERIFY(f.connectAndWait());
         QTest::mouseClick(f.find<QPushButton>(QStringLiteral("parkButton")), Qt::LeftButton);
         QCOMPARE(f.sentCount(QRegularExpression(QStringLiteral("^PARK$"))), 1);
@@ -170,14 +172,14 @@ private slots:
         // only every five seconds: the homing starts and ends between two
         // status answers, which a loaded machine makes likely at the usual
         // rate too. The moving position shows it ran.
-        WindowFixture f(QStringLiteral("sim:?start_az=6&start_el=4"));
+        WindowFixture f(QStringLiteral("sim:?start_az=6&start_el=4&clock=manual"));
         slew::session::RotatorSession::Options options = f.session.options();
         options.telemetryEvery = 50;
         f.session.setOptions(options);
         QVERIFY(f.connectAndWait());
         auto *panel = f.window->parkHomePanel();
         QVERIFY(panel->home());
-        QTRY_VERIFY_WITH_TIMEOUT(!panel->isHoming(), 60000);
+        QVERIFY(f.waitFor([&] { return !panel->isHoming(); }, 60000));
         QCOMPARE(f.find<QLabel>(QStringLiteral("homeMessage"))->text(), QStringLiteral("Homed."));
         QCOMPARE_LE(f.session.azimuth(), 0.5);
         QCOMPARE_LE(f.session.elevation(), 0.5);
