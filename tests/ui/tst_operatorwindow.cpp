@@ -1,5 +1,6 @@
 // The operator window driven the way an operator drives it (clicks, typing,
-// keys), against the in-process simulator.
+// keys), against the in-process simulator on its manual clock, which the
+// fixture pumps: moves, jogs and polls take simulated time, not wall time.
 
 #include "windowfixture.h"
 
@@ -46,13 +47,13 @@ private slots:
 
     void jogRightMovesThenStopsTheAzimuth()
     {
-        WindowFixture f;
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
         const double start = f.session.azimuth();
         auto *right = f.find<QPushButton>(QStringLiteral("jogRight"));
         QVERIFY(right);
         QTest::mousePress(right, Qt::LeftButton);
-        QTRY_VERIFY_WITH_TIMEOUT(f.session.azimuth() > start + 2.0, 10000);
+        QVERIFY(f.waitFor([&] { return f.session.azimuth() > start + 2.0; }, 10000));
         QVERIFY(f.sentCount(QRegularExpression(QStringLiteral("^VR\\d"))) >= 1);
         QTest::mouseRelease(right, Qt::LeftButton);
         QVERIFY(f.sentCount(QRegularExpression(QStringLiteral("^SA"))) >= 1);
@@ -65,13 +66,13 @@ private slots:
 
     void arrowKeysJogWhileHeld()
     {
-        WindowFixture f;
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
         f.window->activateWindow();
         f.find<QWidget>(QStringLiteral("polarPlot"))->setFocus();
         const double start = f.session.elevation();
         QTest::keyPress(f.window.get(), Qt::Key_Up);
-        QTRY_VERIFY_WITH_TIMEOUT(f.session.elevation() > start + 2.0, 10000);
+        QVERIFY(f.waitFor([&] { return f.session.elevation() > start + 2.0; }, 10000));
         QTest::keyRelease(f.window.get(), Qt::Key_Up);
         QVERIFY(f.sentCount(QRegularExpression(QStringLiteral("^SE|^SA SE"))) >= 1);
         QVERIFY(f.waitUntilStill());
@@ -79,7 +80,7 @@ private slots:
 
     void gotoReachesTheTarget()
     {
-        WindowFixture f;
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
         typeInto(f.find<QLineEdit>(QStringLiteral("gotoAzimuth")), QStringLiteral("40"));
         typeInto(f.find<QLineEdit>(QStringLiteral("gotoElevation")), QStringLiteral("20,5"));
@@ -105,7 +106,7 @@ private slots:
     {
         QFETCH(QString, az);
         QFETCH(QString, el);
-        WindowFixture f;
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
         auto *azField = f.find<QLineEdit>(QStringLiteral("gotoAzimuth"));
         typeInto(azField, az);
@@ -117,17 +118,17 @@ private slots:
         QTest::keyClick(azField, Qt::Key_Return);
         QVERIFY(!f.window->gotoPanel()->go());
         const int polls = int(f.sent.size());
-        QTRY_VERIFY(f.sent.size() > polls + 3); // the link is alive and still polling
+        QVERIFY(f.waitFor([&] { return f.sent.size() > polls + 3; }, 5000)); // the link is alive and still polling
         QCOMPARE(f.sentCount(kPositionCommand), 0);
     }
 
     void configApplyIsReadBackEqual()
     {
-        WindowFixture f;
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
         ConfigEditor *editor = f.window->configEditor();
         f.window->tabs()->setCurrentWidget(editor); // opening it reads the device
-        QTRY_VERIFY_WITH_TIMEOUT(!editor->deviceValue(1).isEmpty() && !editor->deviceValue(8).isEmpty(), 10000);
+        QVERIFY(f.waitFor([&] { return !editor->deviceValue(1).isEmpty() && !editor->deviceValue(8).isEmpty(); }, 10000));
         QCOMPARE(editor->fieldState(1), ConfigEditor::FieldState::Same);
 
         auto *kp = f.find<QLineEdit>(QStringLiteral("configValue1"));
@@ -140,19 +141,19 @@ private slots:
 
         QTest::mouseClick(f.find<QPushButton>(QStringLiteral("configApply")), Qt::LeftButton);
         QCOMPARE(f.sentCount(QRegularExpression(QStringLiteral("^CW"))), 2); // only what changed
-        QTRY_COMPARE_WITH_TIMEOUT(editor->fieldState(1), ConfigEditor::FieldState::Confirmed, 10000);
-        QTRY_COMPARE_WITH_TIMEOUT(editor->fieldState(7), ConfigEditor::FieldState::Confirmed, 10000);
+        QVERIFY(f.waitFor([&] { return editor->fieldState(1) == ConfigEditor::FieldState::Confirmed; }, 10000));
+        QVERIFY(f.waitFor([&] { return editor->fieldState(7) == ConfigEditor::FieldState::Confirmed; }, 10000));
         QCOMPARE(editor->deviceValue(1).toDouble(), 12.5);
         QCOMPARE(editor->deviceValue(7).toDouble(), 123.25);
     }
 
     void invalidConfigWritesNothing()
     {
-        WindowFixture f;
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
         ConfigEditor *editor = f.window->configEditor();
         f.window->tabs()->setCurrentWidget(editor);
-        QTRY_VERIFY_WITH_TIMEOUT(!editor->deviceValue(8).isEmpty(), 10000);
+        QVERIFY(f.waitFor([&] { return !editor->deviceValue(8).isEmpty(); }, 10000));
         typeInto(f.find<QLineEdit>(QStringLiteral("configValue2")), QStringLiteral("0.25"));
         typeInto(f.find<QLineEdit>(QStringLiteral("configValue8")), QStringLiteral("120")); // park el above 90
         QCOMPARE(editor->fieldState(8), ConfigEditor::FieldState::Invalid);
@@ -163,11 +164,11 @@ private slots:
 
     void profileExportAndImportRoundTrip()
     {
-        WindowFixture f;
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
         ConfigEditor *editor = f.window->configEditor();
         f.window->tabs()->setCurrentWidget(editor);
-        QTRY_VERIFY_WITH_TIMEOUT(!editor->deviceValue(6).isEmpty(), 10000);
+        QVERIFY(f.waitFor([&] { return !editor->deviceValue(6).isEmpty(); }, 10000));
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("rotator.json"));
         QString error;
@@ -180,14 +181,14 @@ private slots:
 
     void chartsReceiveSamples()
     {
-        WindowFixture f;
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
         f.session.gotoPosition(30, 10);
         auto *charts = f.window->telemetryCharts();
-        QTRY_VERIFY_WITH_TIMEOUT(charts->series(TelemetryRecorder::AzActual)->count() > 5, 10000);
-        QTRY_VERIFY_WITH_TIMEOUT(charts->series(TelemetryRecorder::AzVelocity)->count() > 0, 10000);
-        QTRY_VERIFY_WITH_TIMEOUT(charts->series(TelemetryRecorder::AzCommanded)->count() > 0, 10000);
-        QTRY_VERIFY_WITH_TIMEOUT(charts->series(TelemetryRecorder::AzStatus)->count() > 0, 10000);
+        QVERIFY(f.waitFor([&] { return charts->series(TelemetryRecorder::AzActual)->count() > 5; }, 10000));
+        QVERIFY(f.waitFor([&] { return charts->series(TelemetryRecorder::AzVelocity)->count() > 0; }, 10000));
+        QVERIFY(f.waitFor([&] { return charts->series(TelemetryRecorder::AzCommanded)->count() > 0; }, 10000));
+        QVERIFY(f.waitFor([&] { return charts->series(TelemetryRecorder::AzStatus)->count() > 0; }, 10000));
         const double lastAz = charts->series(TelemetryRecorder::AzActual)->points().back().y();
         QVERIFY(lastAz >= 0 && lastAz <= 30.5);
 
@@ -211,12 +212,12 @@ private slots:
 
     void aJamRaisesTheAlarmBanner()
     {
-        WindowFixture f(QStringLiteral("sim:?jam=az&jam_after=0.3"));
+        WindowFixture f(QStringLiteral("sim:?jam=az&jam_after=0.3&clock=manual"));
         QVERIFY(f.connectAndWait());
         auto *banner = f.window->alarmBanner();
         QVERIFY(!banner->isSevere());
         QVERIFY(f.session.gotoPosition(90, 0));
-        QTRY_VERIFY_WITH_TIMEOUT(banner->text().contains(QStringLiteral("motor"), Qt::CaseInsensitive), 15000);
+        QVERIFY(f.waitFor([&] { return banner->text().contains(QStringLiteral("motor"), Qt::CaseInsensitive); }, 15000));
         QVERIFY(!banner->isHidden());
         QVERIFY(banner->isSevere());
         const QString log = f.window->findChild<QWidget *>(QStringLiteral("eventLog"))->property("plainText").toString();
@@ -225,7 +226,7 @@ private slots:
 
     void plotClickAsksThenMoves()
     {
-        WindowFixture f;
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
         auto *plot = f.window->polarPlot();
         const QPoint at = plot->pointFor(90, 45).toPoint();
@@ -245,7 +246,7 @@ private slots:
 
     void presetsStoreAndRecallByNumberKey()
     {
-        WindowFixture f;
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
         QVERIFY(f.session.gotoPosition(50, 25));
         QVERIFY(f.waitUntilAt(50, 25, 0.2));
@@ -263,10 +264,10 @@ private slots:
 
     void trafficConsoleShowsAndSendsRaw()
     {
-        WindowFixture f;
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
         auto *console = f.window->trafficConsole();
-        QTRY_VERIFY(console->entries().size() > 4);
+        QVERIFY(f.waitFor([&] { return console->entries().size() > 4; }, 5000));
         QVERIFY(std::any_of(console->entries().begin(), console->entries().end(),
                             [](const auto &e) { return !e.sent && e.line.startsWith("AZ"); }));
         QVERIFY(console->sendRaw(QStringLiteral("VE")));
