@@ -8,6 +8,7 @@
 #include "bridge/rotctldserver.h"
 #include "../common/halfclose.h"
 #include "../common/hamlibprocess.h"
+#include "../common/simulatorpump.h"
 #include "linkschemes.h"
 #include "session/rotatorsession.h"
 #include "sim/simulator.h"
@@ -15,6 +16,7 @@
 
 #include <QElapsedTimer>
 #include <QPointF>
+#include <QScopeGuard>
 #include <QTcpSocket>
 #include <QTest>
 
@@ -66,7 +68,8 @@ void RotctldServerTest::init()
     session = new session::RotatorSession;
     server = new bridge::RotctldServer(session);
     model::RotatorProfile p;
-    p.uri = "sim:?model=satnogs"; // a fast rotator: these cases are about the protocol
+    // A fast rotator, at ten times the wall clock: these cases are about the protocol.
+    p.uri = "sim:?model=satnogs&time_scale=10";
     QVERIFY(connectSession(p));
     QString error;
     QVERIFY2(server->listen(QHostAddress::LocalHost, 0, &error), qPrintable(error));
@@ -142,8 +145,9 @@ void RotctldServerTest::stopBringsTheAntennaToRest_data()
     QTest::addColumn<QString>("uri");
     QTest::addColumn<int>("restWithinMs");
     QTest::addColumn<double>("maxTravel");
-    QTest::newRow("default worm gear") << QStringLiteral("sim:") << 1000 << 2.0;
-    QTest::newRow("free drive") << QStringLiteral("sim:?drive=free") << 2000 << 360.0;
+    // On the simulator's clock, pumped: the times below are simulated.
+    QTest::newRow("default worm gear") << QStringLiteral("sim:?clock=manual") << 1000 << 2.0;
+    QTest::newRow("free drive") << QStringLiteral("sim:?drive=free&clock=manual") << 2000 << 360.0;
 }
 
 void RotctldServerTest::stopBringsTheAntennaToRest()
@@ -153,20 +157,39 @@ void RotctldServerTest::stopBringsTheAntennaToRest()
     QFETCH(double, maxTravel);
     model::RotatorProfile p;
     p.uri = uri;
+    SimulatorPump pump;
+    pump.follow(session);
     QVERIFY(connectSession(p));
+    const sim::Simulator *simulator = sim::simulatorBehind(session->link());
+    QVERIFY(simulator && simulator->clock().isManual());
+    const auto simulatedMs = [&] { return qint64(simulator->clock().now() * 1000.0); };
+    // The session's view once a fresh position has come after a moment.
+    int fresh = 0;
+    const QMetaObject::Connection counting = connect(
+        session, &session::RotatorSession::positionChanged, this, [&](double, double, bool stale) { fresh += stale ? 0 : 1; });
+    const auto forget = qScopeGuard([&] { disconnect(counting); });
+    const auto positionAfter = [&](qint64 ms) -> std::optional<QPointF> {
+        if (!runEventLoopUntil([&] { return simulatedMs() >= ms; }, 10000))
+            return std::nullopt;
+        const int seen = fresh;
+        if (!runEventLoopUntil([&] { return fresh > seen; }, 10000))
+            return std::nullopt;
+        return QPointF(session->azimuth(), session->elevation());
+    };
     QTcpSocket s;
     s.connectToHost(QHostAddress::LocalHost, server->port());
-    QTRY_COMPARE(s.state(), QAbstractSocket::ConnectedState);
+    QVERIFY(runEventLoopUntil([&] { return s.state() == QAbstractSocket::ConnectedState; }, 5000));
     QCOMPARE(ask(s, "P 300 80"), QByteArray("RPRT 0\n"));
-    QTRY_VERIFY_WITH_TIMEOUT(session->azimuth() > 10.0, 15000);
+    QVERIFY(runEventLoopUntil([&] { return session->azimuth() > 10.0; }, 15000));
     const QPointF pressed(session->azimuth(), session->elevation());
     QCOMPARE(ask(s, "S"), QByteArray("RPRT 0\n"));
-    QElapsedTimer sinceStop;
-    sinceStop.start();
-    QVERIFY(QTest::qWaitFor([&] { return sinceStop.elapsed() >= restWithinMs; }, restWithinMs + 5000));
-    const QPointF first(session->azimuth(), session->elevation());
-    QVERIFY(QTest::qWaitFor([&] { return sinceStop.elapsed() >= restWithinMs + 1000; }, 6000));
-    const QPointF second(session->azimuth(), session->elevation());
+    const qint64 stoppedAt = simulatedMs();
+    const auto firstSeen = positionAfter(stoppedAt + restWithinMs);
+    QVERIFY(firstSeen);
+    const QPointF first = *firstSeen;
+    const auto secondSeen = positionAfter(simulatedMs() + 1000);
+    QVERIFY(secondSeen);
+    const QPointF second = *secondSeen;
     const QString trace = QStringLiteral("S at %1/%2, then %3/%4, a second later %5/%6")
                               .arg(pressed.x())
                               .arg(pressed.y())
@@ -395,7 +418,7 @@ void RotctldServerTest::repeatedTargetGoesOutAfterTheLinkReturns()
 void RotctldServerTest::overlapPicksTheShortestLegalPath()
 {
     model::RotatorProfile p;
-    p.uri = "sim:?model=satnogs&az_max=450&el_max=180";
+    p.uri = "sim:?model=satnogs&az_max=450&el_max=180&time_scale=10";
     p.limits.azMax = 450;
     p.limits.elMax = 180;
     QVERIFY(connectSession(p));

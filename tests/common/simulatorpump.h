@@ -14,11 +14,13 @@
 #include "sim/simulator.h"
 #include "sim/simulatorscheme.h"
 
+#include <QEventLoop>
 #include <QObject>
 #include <QPointer>
 #include <QTest>
 #include <QTimer>
 
+#include <functional>
 #include <memory>
 
 class SimulatorPump : public QObject {
@@ -54,6 +56,29 @@ private:
     double m_slice;
     QTimer m_timer;
 };
+
+// Runs the event loop until pred() holds or timeoutMs of wall time pass.
+// Unlike QTest::qWaitFor, which sleeps 10 ms between passes, it keeps the
+// loop (and so a pump) running flat out.
+inline bool runEventLoopUntil(const std::function<bool()> &pred, int timeoutMs)
+{
+    if (pred())
+        return true;
+    QEventLoop loop;
+    QTimer look;
+    look.setInterval(0);
+    QObject::connect(&look, &QTimer::timeout, &loop, [&] {
+        if (pred())
+            loop.quit();
+    });
+    QTimer giveUp;
+    giveUp.setSingleShot(true);
+    QObject::connect(&giveUp, &QTimer::timeout, &loop, &QEventLoop::quit);
+    look.start();
+    giveUp.start(timeoutMs);
+    loop.exec();
+    return pred();
+}
 
 // Makes a session on a manual-clock sim: URI, waits for the probe and a
 // position, then lets the pump run the simulator's clock.

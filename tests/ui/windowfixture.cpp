@@ -8,9 +8,7 @@
 #include <QSettings>
 #include <QTemporaryDir>
 #include <QStandardPaths>
-#include <QEventLoop>
 #include <QTest>
-#include <QTimer>
 
 #include <cmath>
 
@@ -48,22 +46,7 @@ WindowFixture::WindowFixture(const QString &uri_) : window(std::make_unique<slew
 
 bool WindowFixture::waitFor(const std::function<bool()> &pred, int timeoutMs)
 {
-    if (pred())
-        return true;
-    QEventLoop loop;
-    QTimer look;
-    look.setInterval(0);
-    QObject::connect(&look, &QTimer::timeout, &loop, [&] {
-        if (pred())
-            loop.quit();
-    });
-    QTimer giveUp;
-    giveUp.setSingleShot(true);
-    QObject::connect(&giveUp, &QTimer::timeout, &loop, &QEventLoop::quit);
-    look.start();
-    giveUp.start(timeoutMs);
-    loop.exec();
-    return pred();
+    return runEventLoopUntil(pred, timeoutMs);
 }
 
 qint64 WindowFixture::nowMs() const

@@ -63,9 +63,7 @@ public:
     AfterStop watchAfterStop(QPointF pressed, int restWithinMs);
     QPointF lastPosition() const { return recent.empty() ? QPointF() : recent.back(); }
 
-    // Runs the event loop until pred() holds or timeoutMs of wall time pass.
-    // Unlike QTest::qWaitFor, which sleeps 10 ms between passes, it keeps
-    // the loop (and so a pumped simulator) running flat out.
+    // runEventLoopUntil (simulatorpump.h): the loop, and so the pump, runs flat out.
     static bool waitFor(const std::function<bool()> &pred, int timeoutMs);
 
     // Waits until pred() holds on a fresh position, and holds a manual
