@@ -123,8 +123,9 @@ void RotctldLinkTest::againstHamlibDummy()
     QVERIFY(s.capabilities().moveCommands);
     QCOMPARE(s.version(), QStringLiteral("Dummy rotator"));
     QTRY_VERIFY(s.hasPosition());
-    QVERIFY(s.gotoPosition(20, 10));
-    QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.azimuth() - 20) < 0.5 && std::abs(s.elevation() - 10) < 0.5, 30000);
+    // Near targets: Hamlib's dummy turns at 6°/s.
+    QVERIFY(s.gotoPosition(6, 3));
+    QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.azimuth() - 6) < 0.5 && std::abs(s.elevation() - 3) < 0.5, 30000);
     QVERIFY(s.stop());
     QVERIFY(s.park());
     QVERIFY(s.home());
@@ -134,7 +135,7 @@ void RotctldLinkTest::againstHamlibDummy()
     QByteArray wire;
     for (const QList<QVariant> &args : std::as_const(sent))
         wire += args.at(0).toByteArray();
-    for (const char *command : {"p\n", "_\n", "P 20.00 10.00\n", "S\n", "K\n", "R 1\n", "M 16 50\n"})
+    for (const char *command : {"p\n", "_\n", "P 6.00 3.00\n", "S\n", "K\n", "R 1\n", "M 16 50\n"})
         QVERIFY2(wire.contains(command), wire.constData());
     QVERIFY2(!wire.contains("AZ") && !wire.contains("GS") && !wire.contains("CR"), wire.constData());
     s.disconnectFromRotator();
@@ -151,23 +152,24 @@ void RotctldLinkTest::oneAxisMovesReachRotctld()
     QSignalSpy sent(&s, &session::RotatorSession::bytesSent);
     connectSession(s, port);
     QTRY_VERIFY_WITH_TIMEOUT(s.isConnected() && s.hasPosition(), 15000);
-    QVERIFY(s.gotoPosition(20, 10));
-    QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.azimuth() - 20) < 0.5 && std::abs(s.elevation() - 10) < 0.5, 30000);
+    // Near targets: Hamlib's dummy turns at 6°/s.
+    QVERIFY(s.gotoPosition(6, 3));
+    QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.azimuth() - 6) < 0.5 && std::abs(s.elevation() - 3) < 0.5, 30000);
     // rotctld's P takes both axes: an elevation-only move sends the azimuth
     // where it was going. It once was remembered and never sent.
     sent.clear();
-    QVERIFY(s.gotoAxis(session::Axis::Elevation, 25));
+    QVERIFY(s.gotoAxis(session::Axis::Elevation, 8));
     QCOMPARE(sent.count(), 1);
-    QCOMPARE(sent.at(0).at(0).toByteArray(), QByteArray("P 20.00 25.00\n"));
-    QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.elevation() - 25) < 0.5, 30000);
+    QCOMPARE(sent.at(0).at(0).toByteArray(), QByteArray("P 6.00 8.00\n"));
+    QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.elevation() - 8) < 0.5, 30000);
     // rotctld itself, asked on a connection of its own, is there.
     std::optional<std::pair<double, double>> there;
-    QTRY_VERIFY_WITH_TIMEOUT((there = rotctldPosition(port)) && std::abs(there->second - 25) < 0.5, 30000);
-    QVERIFY2(std::abs(there->first - 20) < 0.5, qPrintable(QString::number(there->first)));
+    QTRY_VERIFY_WITH_TIMEOUT((there = rotctldPosition(port)) && std::abs(there->second - 8) < 0.5, 30000);
+    QVERIFY2(std::abs(there->first - 6) < 0.5, qPrintable(QString::number(there->first)));
     // And azimuth alone keeps the elevation.
-    QVERIFY(s.gotoAxis(session::Axis::Azimuth, 30));
-    QTRY_VERIFY_WITH_TIMEOUT((there = rotctldPosition(port)) && std::abs(there->first - 30) < 0.5, 30000);
-    QVERIFY(std::abs(there->second - 25) < 0.5);
+    QVERIFY(s.gotoAxis(session::Axis::Azimuth, 10));
+    QTRY_VERIFY_WITH_TIMEOUT((there = rotctldPosition(port)) && std::abs(there->first - 10) < 0.5, 30000);
+    QVERIFY(std::abs(there->second - 8) < 0.5);
     // A one-axis move outside rotctld's limits stops at the gate.
     sent.clear();
     QVERIFY(!s.gotoAxis(session::Axis::Elevation, 95));
@@ -182,7 +184,7 @@ void RotctldLinkTest::againstHamlibEasycommOnTheSimulator()
     QTemporaryDir dir;
     const QString pty = dir.filePath("rotator");
     SlewSimProcess sim;
-    QVERIFY2(sim.start({"--model", "satnogs", "--pty", pty, "--dialect", "easycomm2", "--log-received",
+    QVERIFY2(sim.start({"--model", "satnogs", "--time-scale", "4", "--pty", pty, "--dialect", "easycomm2", "--log-received",
                         dir.filePath("received.log")}),
              qPrintable(sim.error()));
     QProcess rotctld;
