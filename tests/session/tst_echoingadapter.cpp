@@ -92,21 +92,22 @@ private:
                 values << QStringLiteral("CR%1 = %2").arg(reg).arg(value);
         });
         session.connectTo(uri);
-        if (!QTest::qWaitFor([&] { return session.capabilities().probed && session.hasPosition(); }, 10000)) {
+        if (!runEventLoopUntil([&] { return session.capabilities().probed && session.hasPosition(); }, 10000)) {
             QTest::qFail(qPrintable(QStringLiteral("%1: no probe or position").arg(uri)), __FILE__, __LINE__);
             return out;
         }
         out.facts << describe(session.capabilities()) << QStringLiteral("version %1").arg(session.version());
         out.facts << QStringLiteral("at %1 %2").arg(session.azimuth(), 0, 'f', 1).arg(session.elevation(), 0, 'f', 1);
 
-        // 50 ms of simulated time each time the event loop comes round: the
-        // go-to's few simulated seconds pass in about a wall second.
+        // 50 ms of simulated time each time the event loop comes round, and
+        // runEventLoopUntil keeps it coming round: the go-to's few simulated
+        // seconds pass in a blink.
         SimulatorPump pump(0.05);
         pump.drive(slew::sim::simulatorBehind(session.link()));
         const bool registers = session.capabilities().config;
         if (registers) {
             session.readConfig(1);
-            if (!QTest::qWaitFor([&] { return !values.filter(QStringLiteral("CR1 =")).isEmpty(); }, 5000))
+            if (!runEventLoopUntil([&] { return !values.filter(QStringLiteral("CR1 =")).isEmpty(); }, 5000))
                 out.facts << QStringLiteral("CR1 unanswered");
         }
         // An echoed `AZ30 EL20` taken for a report would put the antenna at
@@ -118,7 +119,7 @@ private:
         });
         if (!session.gotoPosition(30, 20))
             out.facts << QStringLiteral("go-to refused");
-        const bool arrived = QTest::qWaitFor(
+        const bool arrived = runEventLoopUntil(
             [&] {
                 return !session.positionStale() && std::abs(session.azimuth() - 30) < 0.2
                     && std::abs(session.elevation() - 20) < 0.2;
@@ -133,7 +134,7 @@ private:
         if (registers) {
             session.writeConfig(7, QStringLiteral("45"));
             session.readConfig(7);
-            if (!QTest::qWaitFor([&] { return !values.filter(QStringLiteral("CR7 =")).isEmpty(); }, 5000))
+            if (!runEventLoopUntil([&] { return !values.filter(QStringLiteral("CR7 =")).isEmpty(); }, 5000))
                 out.facts << QStringLiteral("CR7 unanswered");
         }
         out.facts << values;
