@@ -1,17 +1,82 @@
 #pragma once
-// A scripted rotator controller on a real local socket (QTcpServer on
-// 127.0.0.1, port 0), for the session's unit tests. By default it answers like
-// a small SatNOGS-style controller; a test can replace the answer for any
-// line, stay silent, echo what it hears, or drop the connection.
+// A scripted rotator controller behind an in-process link (`fake:N`), for
+// the session's unit tests: no socket and no simulator, and a clock of its
+// own that moves 5 ms each time the event loop comes round, so polling,
+// reply timeouts and the stop hold run on it (session/linktimer.h) and a
+// busy machine changes nothing. By default it answers like a small
+// SatNOGS-style controller; a test can replace the answer for any line,
+// stay silent, echo what it hears, drop the connection or refuse new ones.
+//
+// Wait with runEventLoopUntil (tests/common/simulatorpump.h), not QTRY_*:
+// those sleep 10 ms between looks, and the clock would crawl.
+
+#include "transport/link.h"
+#include "transport/linkfactory.h"
 
 #include <QByteArray>
-#include <QHostAddress>
+#include <QIODevice>
 #include <QList>
+#include <QMap>
 #include <QPointer>
-#include <QTcpServer>
-#include <QTcpSocket>
+#include <QTimer>
 
 #include <functional>
+#include <memory>
+
+class FakeDevice;
+
+// The controller's end of the line, as the session's link sees it: what is
+// written goes to the FakeDevice, what it answers is read back.
+class FakePort : public QIODevice {
+public:
+    explicit FakePort(FakeDevice *device) : m_device(device) {}
+    bool isSequential() const override { return true; }
+    qint64 bytesAvailable() const override { return m_pending.size() + QIODevice::bytesAvailable(); }
+    void deliver(const QByteArray &bytes)
+    {
+        m_pending += bytes;
+        QTimer::singleShot(0, this, [this] {
+            if (isOpen() && !m_pending.isEmpty())
+                emit readyRead();
+        });
+    }
+
+protected:
+    qint64 readData(char *data, qint64 maxSize) override
+    {
+        const qint64 n = std::min<qint64>(maxSize, m_pending.size());
+        std::copy_n(m_pending.constData(), n, data);
+        m_pending.remove(0, n);
+        return n;
+    }
+    qint64 writeData(const char *data, qint64 size) override;
+
+private:
+    QPointer<FakeDevice> m_device;
+    QByteArray m_pending;
+};
+
+class FakeLink : public slew::transport::Link {
+public:
+    FakeLink(const QString &uri, FakeDevice *device);
+    QIODevice *device() override { return &m_port; }
+    void open() override;
+    void close() override { m_port.close(); }
+    bool isOpen() const override { return m_port.isOpen(); }
+    std::optional<double> clockSeconds() const override;
+    bool clockIsStepped() const override { return true; }
+    void dropped() // the controller hung up
+    {
+        m_port.close();
+        emit lost(QStringLiteral("%1: connection closed by the controller").arg(uri()));
+    }
+    void stepped(double seconds) { emit clockStepped(seconds); }
+    FakePort &port() { return m_port; }
+
+private:
+    QPointer<FakeDevice> m_device;
+    FakePort m_port;
+};
 
 class FakeDevice : public QObject {
     Q_OBJECT
@@ -26,46 +91,55 @@ public:
     // Return a non-empty answer to override the default for a line.
     std::function<QByteArray(const QByteArray &line)> script;
 
-    FakeDevice()
-    {
-        m_server.listen(QHostAddress::LocalHost, 0);
-        connect(&m_server, &QTcpServer::newConnection, this, [this] {
-            while (QTcpSocket *s = m_server.nextPendingConnection()) {
-                if (m_socket)
-                    m_socket->deleteLater();
-                m_socket = s;
-                connect(s, &QTcpSocket::readyRead, this, [this, s] { onRead(s); });
-                emit clientConnected();
-            }
-        });
-    }
+    static constexpr double kSliceSeconds = 0.005;
 
-    QString uri() const { return QStringLiteral("tcp://127.0.0.1:%1").arg(m_server.serverPort()); }
-    quint16 port() const { return m_server.serverPort(); }
-    bool hasClient() const { return m_socket && m_socket->state() == QAbstractSocket::ConnectedState; }
+    FakeDevice() : m_id(++lastId())
+    {
+        registerScheme();
+        devices().insert(m_id, this);
+        m_pump.setInterval(0);
+        connect(&m_pump, &QTimer::timeout, this, [this] {
+            m_now += kSliceSeconds;
+            if (m_link)
+                m_link->stepped(m_now);
+        });
+        m_pump.start();
+    }
+    ~FakeDevice() override { devices().remove(m_id); }
+
+    QString uri() const { return QStringLiteral("fake:%1").arg(m_id); }
+    double now() const { return m_now; }
+    bool hasClient() const { return m_link && m_link->isOpen(); }
 
     void push(const QByteArray &bytes)
     {
-        if (m_socket)
-            m_socket->write(bytes);
+        if (hasClient())
+            m_link->port().deliver(bytes);
     }
     void dropClient()
     {
-        if (m_socket)
-            m_socket->abort();
+        if (hasClient())
+            QTimer::singleShot(0, m_link.data(), &FakeLink::dropped);
     }
-    void stopListening() { m_server.close(); }
-    void listenAgain(quint16 port) { m_server.listen(QHostAddress::LocalHost, port); }
+    // While refusing, a link that opens fails as a refused connection would.
+    void refuseConnections(bool refuse) { m_refusing = refuse; }
     int count(const QByteArray &line) const { return int(received.count(line)); }
 
-signals:
-    void clientConnected();
-    void lineReceived(const QByteArray &line);
-
-private:
-    void onRead(QTcpSocket *s)
+    // The link side.
+    bool accept(FakeLink *link)
     {
-        m_buffer += s->readAll();
+        if (m_refusing)
+            return false;
+        if (m_link && m_link != link)
+            m_link->close();
+        m_link = link;
+        m_buffer.clear();
+        emit clientConnected();
+        return true;
+    }
+    void bytesWritten(const QByteArray &bytes)
+    {
+        m_buffer += bytes;
         qsizetype end;
         while ((end = m_buffer.indexOf('\n')) >= 0) {
             const QByteArray line = m_buffer.left(end).trimmed();
@@ -73,7 +147,7 @@ private:
             received << line;
             emit lineReceived(line);
             if (echo)
-                s->write(line + "\n");
+                push(line + "\n");
             if (silent)
                 continue;
             if (ignoreNext > 0) {
@@ -83,10 +157,17 @@ private:
             QByteArray answer = script ? script(line) : QByteArray();
             if (answer.isEmpty())
                 answer = defaultAnswer(line);
-            s->write(answer);
+            push(answer);
         }
     }
 
+    static FakeDevice *find(int id) { return devices().value(id); }
+
+signals:
+    void clientConnected();
+    void lineReceived(const QByteArray &line);
+
+private:
     QByteArray defaultAnswer(const QByteArray &line)
     {
         const QByteArray a = QByteArray::number(az, 'f', 1);
@@ -117,7 +198,60 @@ private:
         return {};
     }
 
-    QTcpServer m_server;
-    QPointer<QTcpSocket> m_socket;
+    static int &lastId()
+    {
+        static int id = 0;
+        return id;
+    }
+    static QMap<int, FakeDevice *> &devices()
+    {
+        static QMap<int, FakeDevice *> all;
+        return all;
+    }
+    static void registerScheme()
+    {
+        static bool done = false;
+        if (done)
+            return;
+        done = true;
+        slew::transport::registerLinkScheme(QStringLiteral("fake"), [](const QUrl &url, const QString &uri) {
+            FakeDevice *device = find(url.path().toInt());
+            if (!device)
+                return slew::transport::LinkResult{nullptr, QStringLiteral("%1: no such fake device").arg(uri)};
+            return slew::transport::LinkResult{std::make_unique<FakeLink>(uri, device), {}};
+        });
+    }
+
+    int m_id;
+    double m_now = 0.0;
+    bool m_refusing = false;
+    QTimer m_pump;
+    QPointer<FakeLink> m_link;
     QByteArray m_buffer;
 };
+
+inline qint64 FakePort::writeData(const char *data, qint64 size)
+{
+    if (m_device)
+        m_device->bytesWritten(QByteArray(data, size));
+    return size;
+}
+
+inline FakeLink::FakeLink(const QString &uri, FakeDevice *device) : Link(uri), m_device(device), m_port(device) {}
+
+inline void FakeLink::open()
+{
+    QTimer::singleShot(0, this, [this] {
+        if (!m_device || !m_device->accept(this)) {
+            emit failed(QStringLiteral("%1: connection refused").arg(uri()));
+            return;
+        }
+        m_port.open(QIODevice::ReadWrite);
+        emit opened();
+    });
+}
+
+inline std::optional<double> FakeLink::clockSeconds() const
+{
+    return m_device ? std::optional<double>(m_device->now()) : std::nullopt;
+}
