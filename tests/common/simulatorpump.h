@@ -80,6 +80,22 @@ inline bool runEventLoopUntil(const std::function<bool()> &pred, int timeoutMs)
     return pred();
 }
 
+// QTRY_*'s counterparts for a pumped clock: QTRY_* sleep 10 ms between
+// looks, in which a pumped clock stands still; these keep the loop running.
+#define TRY_VERIFY_WITH_TIMEOUT(expr, ms) QVERIFY2(runEventLoopUntil([&] { return bool(expr); }, ms), #expr)
+#define TRY_VERIFY2_WITH_TIMEOUT(expr, message, ms)                                                                    \
+    do {                                                                                                               \
+        runEventLoopUntil([&] { return bool(expr); }, ms);                                                             \
+        QVERIFY2(expr, message);                                                                                       \
+    } while (false)
+#define TRY_VERIFY(expr) TRY_VERIFY_WITH_TIMEOUT(expr, 10000)
+#define TRY_COMPARE_WITH_TIMEOUT(actual, expected, ms)                                                                 \
+    do {                                                                                                               \
+        runEventLoopUntil([&] { return (actual) == (expected); }, ms);                                                 \
+        QCOMPARE(actual, expected);                                                                                    \
+    } while (false)
+#define TRY_COMPARE(actual, expected) TRY_COMPARE_WITH_TIMEOUT(actual, expected, 10000)
+
 // Makes a session on a manual-clock sim: URI, waits for the probe and a
 // position, then lets the pump run the simulator's clock.
 inline bool connectPumped(const QString &uri, std::unique_ptr<slew::session::RotatorSession> &session,

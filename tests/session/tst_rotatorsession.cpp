@@ -13,15 +13,7 @@
 #include <QTcpServer>
 #include <QTest>
 
-// QTRY_* sleep 10 ms between looks, in which the fake's clock stands still;
-// these keep the loop, and so the clock, running.
-#define TRY_VERIFY_WITH_TIMEOUT(expr, ms) QVERIFY2(runEventLoopUntil([&] { return bool(expr); }, ms), #expr)
-#define TRY_VERIFY(expr) TRY_VERIFY_WITH_TIMEOUT(expr, 10000)
-#define TRY_COMPARE(actual, expected)                                                                                 \
-    do {                                                                                                               \
-        runEventLoopUntil([&] { return (actual) == (expected); }, 10000);                                              \
-        QCOMPARE(actual, expected);                                                                                    \
-    } while (false)
+// The TRY_* waits (simulatorpump.h) keep the loop, and so the fake's clock, running.
 
 using namespace slew;
 using session::RotatorSession;

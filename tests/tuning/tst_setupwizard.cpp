@@ -49,7 +49,9 @@ private slots:
         SetupWizard wizard(&session);
         wizard.resize(900, 760);
         wizard.show();
-        SimulatorPump pump;
+        // 20 ms slices: the two tuning runs are many simulated seconds, and
+        // the figures are the 5 ms pump's (rise 0.38 s, overshoot 47.5 %).
+        SimulatorPump pump(0.02);
 
         // Connect: probe the link.
         QCOMPARE(wizard.currentId(), int(SetupWizard::ConnectPageId));
@@ -57,13 +59,13 @@ private slots:
             QStringLiteral("sim:?clock=manual&unsolicited=1&kp=12&ki=1&kd=1&start_az=12&start_el=6"));
         QVERIFY(!canGoOn(wizard));
         QTest::mouseClick(find<QPushButton>(wizard, "probe"), Qt::LeftButton);
-        QTRY_VERIFY_WITH_TIMEOUT(canGoOn(wizard), 10000);
+        TRY_VERIFY_WITH_TIMEOUT(canGoOn(wizard), 10000);
         QVERIFY(find<QListWidget>(wizard, "baudResults")->item(0)->text().contains(QStringLiteral("answered")));
         wizard.next();
 
         // Identify: easycomm3, and the session is connected with it.
         QCOMPARE(wizard.currentId(), int(SetupWizard::IdentifyPageId));
-        QTRY_VERIFY_WITH_TIMEOUT(canGoOn(wizard), 30000);
+        TRY_VERIFY_WITH_TIMEOUT(canGoOn(wizard), 30000);
         QVERIFY(find<QLabel>(wizard, "dialectResult")->text().contains(QStringLiteral("easycomm3")));
         sim::Simulator *sim = sim::simulatorBehind(session.link());
         QVERIFY(sim);
@@ -74,7 +76,7 @@ private slots:
         QCOMPARE(wizard.currentId(), int(SetupWizard::MechanicsPageId));
         QVERIFY(!canGoOn(wizard));
         QTest::mouseClick(find<QPushButton>(wizard, "jog"), Qt::LeftButton);
-        QTRY_VERIFY_WITH_TIMEOUT(std::fabs(session.azimuth() - 17.0) < 0.2, 10000);
+        TRY_VERIFY_WITH_TIMEOUT(std::fabs(session.azimuth() - 17.0) < 0.2, 10000);
         find<QCheckBox>(wizard, "jogConfirmed")->setChecked(true);
         QVERIFY(canGoOn(wizard));
         wizard.next();
@@ -89,9 +91,9 @@ private slots:
                 QTest::mouseClick(cancelHoming, Qt::LeftButton);
         });
         QTest::mouseClick(find<QPushButton>(wizard, "home"), Qt::LeftButton);
-        QTRY_VERIFY_WITH_TIMEOUT(result->text().contains(QStringLiteral("cancelled")), 10000);
+        TRY_VERIFY_WITH_TIMEOUT(result->text().contains(QStringLiteral("cancelled")), 10000);
         disconnect(cancelAt);
-        QTRY_VERIFY_WITH_TIMEOUT(sim->rotator().axis(sim::Axis::Azimuth).isStopped(), 5000);
+        TRY_VERIFY_WITH_TIMEOUT(sim->rotator().axis(sim::Axis::Azimuth).isStopped(), 5000);
         QVERIFY(sim->rotator().axis(sim::Axis::Elevation).isStopped());
         QVERIFY(session.azimuth() > 5.0);
         QVERIFY(!canGoOn(wizard));
@@ -101,14 +103,14 @@ private slots:
         broken.missingEndStop = true;
         sim->setAxisFaults(sim::Axis::Azimuth, broken);
         QTest::mouseClick(find<QPushButton>(wizard, "home"), Qt::LeftButton);
-        QTRY_VERIFY_WITH_TIMEOUT(result->text().contains(QStringLiteral("homing error")), 20000);
+        TRY_VERIFY_WITH_TIMEOUT(result->text().contains(QStringLiteral("homing error")), 20000);
         QVERIFY(result->text().contains(QStringLiteral("end stop")));
         QVERIFY(!canGoOn(wizard));
 
         // Homing: switch repaired, it homes.
         sim->setAxisFaults(sim::Axis::Azimuth, sim::AxisFaults{});
         QTest::mouseClick(find<QPushButton>(wizard, "home"), Qt::LeftButton);
-        QTRY_VERIFY_WITH_TIMEOUT(canGoOn(wizard), 20000);
+        TRY_VERIFY_WITH_TIMEOUT(canGoOn(wizard), 20000);
         QVERIFY(result->text().contains(QStringLiteral("Homed")));
         wizard.next();
 
@@ -116,7 +118,7 @@ private slots:
         QCOMPARE(wizard.currentId(), int(SetupWizard::TuningPageId));
         auto *accept = find<QPushButton>(wizard, "accept");
         QTest::mouseClick(find<QPushButton>(wizard, "tune"), Qt::LeftButton);
-        QTRY_VERIFY2_WITH_TIMEOUT(accept->isEnabled(), qPrintable(find<QLabel>(wizard, "tuningStatus")->text()), 60000);
+        TRY_VERIFY2_WITH_TIMEOUT(accept->isEnabled(), qPrintable(find<QLabel>(wizard, "tuningStatus")->text()), 60000);
         QVERIFY(!canGoOn(wizard));
         QVERIFY(find<QLabel>(wizard, "beforeFigures")->text().contains(QStringLiteral("overshoot")));
         QVERIFY(find<QLabel>(wizard, "afterFigures")->text().contains(QStringLiteral("settling time")));
@@ -124,15 +126,15 @@ private slots:
         QDir().mkpath(QStringLiteral(SLEW_SCREENSHOT_DIR));
         QVERIFY(wizard.grab().save(shot));
         QTest::mouseClick(accept, Qt::LeftButton);
-        QTRY_VERIFY_WITH_TIMEOUT(canGoOn(wizard), 5000);
+        TRY_VERIFY_WITH_TIMEOUT(canGoOn(wizard), 5000);
         const double acceptedKd = sim->rotator().axis(sim::Axis::Azimuth).gains().kd;
         QVERIFY(acceptedKd > 2.0);
 
         find<QComboBox>(wizard, "axis")->setCurrentIndex(1);
         QTest::mouseClick(find<QPushButton>(wizard, "tune"), Qt::LeftButton);
-        QTRY_VERIFY_WITH_TIMEOUT(accept->isEnabled(), 60000);
+        TRY_VERIFY_WITH_TIMEOUT(accept->isEnabled(), 60000);
         QTest::mouseClick(find<QPushButton>(wizard, "keepOld"), Qt::LeftButton);
-        QTRY_VERIFY_WITH_TIMEOUT(canGoOn(wizard), 5000);
+        TRY_VERIFY_WITH_TIMEOUT(canGoOn(wizard), 5000);
         QCOMPARE(sim->rotator().axis(sim::Axis::Elevation).gains().kd, 1.0);
         wizard.next();
 
@@ -148,7 +150,7 @@ private slots:
         QVERIFY(find<QLabel>(wizard, "plan")->text().contains(QStringLiteral("CW7,180")));
         QTest::mouseClick(find<QPushButton>(wizard, "write"), Qt::LeftButton);
         auto *list = find<QListWidget>(wizard, "writeResults");
-        QTRY_COMPARE_WITH_TIMEOUT(list->count(), 8, 10000);
+        TRY_COMPARE_WITH_TIMEOUT(list->count(), 8, 10000);
         for (int i = 0; i < list->count(); ++i)
             QVERIFY2(list->item(i)->text().endsWith(QStringLiteral("ok")), qPrintable(list->item(i)->text()));
         QCOMPARE(sim->rotator().config().parkAzimuth, 180.0);
@@ -174,16 +176,16 @@ private slots:
     {
         RotatorSession session;
         session.connectTo(QStringLiteral("sim:?clock=manual&unsolicited=1&start_az=40&start_el=20"));
-        QTRY_VERIFY_WITH_TIMEOUT(session.capabilities().probed && session.hasPosition(), 5000);
+        TRY_VERIFY_WITH_TIMEOUT(session.capabilities().probed && session.hasPosition(), 5000);
         SimulatorPump pump;
         sim::Simulator *sim = sim::simulatorBehind(session.link());
         pump.drive(sim);
         SetupWizard wizard(&session);
         wizard.show();
         session.gotoPosition(100, 50);
-        QTRY_VERIFY_WITH_TIMEOUT(session.azimuth() > 45.0, 5000);
+        TRY_VERIFY_WITH_TIMEOUT(session.azimuth() > 45.0, 5000);
         wizard.reject();
-        QTRY_VERIFY_WITH_TIMEOUT(sim->rotator().axis(sim::Axis::Azimuth).isStopped(), 5000);
+        TRY_VERIFY_WITH_TIMEOUT(sim->rotator().axis(sim::Axis::Azimuth).isStopped(), 5000);
     }
 };
 

@@ -157,7 +157,7 @@ private slots:
         QVERIFY(f.connectAndWait());
         auto *charts = f.window->telemetryCharts();
         const int before = charts->redrawCount();
-        QTRY_VERIFY_WITH_TIMEOUT(charts->redrawCount() > before + 2, 10000);
+        TRY_VERIFY_WITH_TIMEOUT(charts->redrawCount() > before + 2, 10000);
         QVERIFY(f.window->alarmBanner()->isHidden());
 
         const auto views = charts->findChildren<QChartView *>();
@@ -188,7 +188,7 @@ private slots:
         SimulatorPump pump;
         auto pageIsClean = [&] {
             QWizardPage *page = wizard.currentPage();
-            QTRY_VERIFY(page->isVisible());
+            TRY_VERIFY(page->isVisible());
             QCoreApplication::processEvents(); // let the layout settle
             const QStringList faults = overlapsOn(page);
             QVERIFY2(faults.isEmpty(), qPrintable(QStringLiteral("%1 at %2x%3: %4")
@@ -209,23 +209,23 @@ private slots:
         find<QLineEdit>(wizard, "uri")->setText(
             QStringLiteral("sim:?clock=manual&unsolicited=1&kp=12&ki=1&kd=1&start_az=12&start_el=6"));
         QTest::mouseClick(find<QPushButton>(wizard, "probe"), Qt::LeftButton);
-        QTRY_VERIFY_WITH_TIMEOUT(next(), 10000);
+        TRY_VERIFY_WITH_TIMEOUT(next(), 10000);
         PAGE_IS_CLEAN();
         wizard.next();
 
-        QTRY_VERIFY_WITH_TIMEOUT(next(), 30000); // identified
+        TRY_VERIFY_WITH_TIMEOUT(next(), 30000); // identified
         pump.drive(slew::sim::simulatorBehind(session.link()));
         PAGE_IS_CLEAN();
         wizard.next();
 
         QTest::mouseClick(find<QPushButton>(wizard, "jog"), Qt::LeftButton);
-        QTRY_VERIFY_WITH_TIMEOUT(std::fabs(session.azimuth() - 17.0) < 0.2, 10000);
+        TRY_VERIFY_WITH_TIMEOUT(std::fabs(session.azimuth() - 17.0) < 0.2, 10000);
         find<QCheckBox>(wizard, "jogConfirmed")->setChecked(true);
         PAGE_IS_CLEAN();
         wizard.next();
 
         QTest::mouseClick(find<QPushButton>(wizard, "home"), Qt::LeftButton);
-        QTRY_VERIFY_WITH_TIMEOUT(next(), 30000);
+        TRY_VERIFY_WITH_TIMEOUT(next(), 30000);
         // Homing drove the rotator to its lower limits: that is the target now.
         QCOMPARE(session.targetAzimuth(), 0.0);
         QCOMPARE(session.targetElevation(), 0.0);
@@ -233,7 +233,7 @@ private slots:
         wizard.next();
 
         QTest::mouseClick(find<QPushButton>(wizard, "tune"), Qt::LeftButton);
-        QTRY_VERIFY_WITH_TIMEOUT(find<QPushButton>(wizard, "accept")->isEnabled(), 60000);
+        TRY_VERIFY_WITH_TIMEOUT(find<QPushButton>(wizard, "accept")->isEnabled(), 60000);
         QVERIFY(find<QLabel>(wizard, "beforeFigures")->text().contains(QStringLiteral("overshoot")));
         PAGE_IS_CLEAN();
         // For a person to look at: the page as X11 drew it.
@@ -245,19 +245,19 @@ private slots:
             const QSize full = wizard.size();
             wizard.resize(560, 420);
             auto *scroll = wizard.currentPage()->findChild<QScrollArea *>(QStringLiteral("pageScroll"));
-            QTRY_VERIFY(scroll->verticalScrollBar()->isVisible());
-            QTRY_VERIFY(wizard.height() < 500);
+            TRY_VERIFY(scroll->verticalScrollBar()->isVisible());
+            TRY_VERIFY(wizard.height() < 500);
             const QStringList faults = overlapsOn(wizard.currentPage(), true);
             QVERIFY2(faults.isEmpty(), qPrintable(faults.join(QStringLiteral("; "))));
             QVERIFY(wizard.grab().save(QStringLiteral(SLEW_SCREENSHOT_DIR "/wizard-tuning-small-x11.png")));
             wizard.resize(full);
         }
         QTest::mouseClick(find<QPushButton>(wizard, "accept"), Qt::LeftButton);
-        QTRY_VERIFY_WITH_TIMEOUT(next(), 5000);
+        TRY_VERIFY_WITH_TIMEOUT(next(), 5000);
         wizard.next();
 
         PAGE_IS_CLEAN(); // park
-        QTRY_VERIFY_WITH_TIMEOUT(next(), 10000);
+        TRY_VERIFY_WITH_TIMEOUT(next(), 10000);
         wizard.next();
         PAGE_IS_CLEAN(); // summary
 #undef PAGE_IS_CLEAN
