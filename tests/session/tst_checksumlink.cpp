@@ -47,7 +47,7 @@ private slots:
         QCOMPARE(s.checksumming(), checksum);
 
         QVERIFY(s.gotoPosition(30, 20));
-        QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.azimuth() - 30) < 1.0 && std::abs(s.elevation() - 20) < 1.0, 15000);
+        TRY_VERIFY_WITH_TIMEOUT(std::abs(s.azimuth() - 30) < 1.0 && std::abs(s.elevation() - 20) < 1.0, 15000);
 
         // Every line on the wire, both ways, carries the frame exactly when asked.
         for (const auto &args : sent)
@@ -73,7 +73,7 @@ private slots:
         faults.corruptRate = 1.0;
         sim->setLinkFaults(faults);
         const double azBefore = s.azimuth();
-        QTRY_VERIFY_WITH_TIMEOUT(alarm.count() >= 1, 10000);
+        TRY_VERIFY_WITH_TIMEOUT(alarm.count() >= 1, 10000);
         QCOMPARE(alarm.at(0).at(0).toBool(), true);
         QVERIFY(s.checksumFailures() >= RotatorSession::kBadFramesAlarm);
         for (const auto &args : positions)
@@ -83,9 +83,9 @@ private slots:
         // The line heals: the alarm clears and positions are fresh again.
         faults.corruptRate = 0.0;
         sim->setLinkFaults(faults);
-        QTRY_VERIFY_WITH_TIMEOUT(alarm.count() >= 2, 10000);
+        TRY_VERIFY_WITH_TIMEOUT(alarm.count() >= 2, 10000);
         QCOMPARE(alarm.last().at(0).toBool(), false);
-        QTRY_VERIFY_WITH_TIMEOUT(!s.positionStale() && !positions.isEmpty() && !positions.last().at(2).toBool(), 10000);
+        TRY_VERIFY_WITH_TIMEOUT(!s.positionStale() && !positions.isEmpty() && !positions.last().at(2).toBool(), 10000);
     }
 
     void damagedCommandsNeverMoveTheRotator()
@@ -103,12 +103,12 @@ private slots:
         s.link()->device()->write("AZ100.00 EL40.00*00\n");
         s.link()->device()->write("AZ100.00 EL40.00\n");
         s.link()->device()->write(flipped);
-        QTRY_COMPARE(sim->counters().badChecksum, std::uint64_t(3));
+        TRY_COMPARE(sim->counters().badChecksum, std::uint64_t(3));
         sim->advance(1.0);
         QCOMPARE(commanded(), before);
         // The same command framed right is carried out.
         s.link()->device()->write(good);
-        QTRY_COMPARE(commanded(), 100.0);
+        TRY_COMPARE(commanded(), 100.0);
     }
 
     void checksumOnOtherLinksIsAnOption()
@@ -137,7 +137,7 @@ private:
         s.connectTo(uri);
         // The session keeps the simulator's clock; this pump moves it on.
         (new SimulatorPump(0.005, &s))->follow(&s);
-        if (!QTest::qWaitFor([&] { return s.capabilities().probed && s.hasPosition(); }, 10000))
+        if (!runEventLoopUntil([&] { return s.capabilities().probed && s.hasPosition(); }, 10000))
             return nullptr;
         return slew::sim::simulatorBehind(s.link());
     }

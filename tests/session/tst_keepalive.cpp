@@ -49,7 +49,7 @@ private slots:
         QSignalSpy received(&s, &RotatorSession::bytesReceived);
         QSignalSpy errors(&s, &RotatorSession::errorOccurred);
         s.setPolling(false);
-        QTRY_VERIFY(keepAlivesIn(sent) >= 3);
+        TRY_VERIFY(keepAlivesIn(sent) >= 3);
         QByteArray all;
         for (const auto &args : received)
             all += args.at(0).toByteArray();
@@ -67,7 +67,7 @@ private slots:
         slew::sim::LinkFaults faults;
         faults.dropRate = 1.0; // every reply byte lost
         sim->setLinkFaults(faults);
-        QTRY_VERIFY_WITH_TIMEOUT(!errors.isEmpty(), 10000);
+        TRY_VERIFY_WITH_TIMEOUT(!errors.isEmpty(), 10000);
         QVERIFY2(errors.first().at(0).toString().contains(QStringLiteral("keep-alive")),
                  qPrintable(errors.first().at(0).toString()));
         QVERIFY(s.positionStale());
@@ -80,7 +80,7 @@ private slots:
         QSignalSpy sent(&s, &RotatorSession::bytesSent);
         QSignalSpy positions(&s, &RotatorSession::positionChanged);
         // Several keep-alive periods' worth of polls.
-        QTRY_VERIFY_WITH_TIMEOUT(positions.count() >= 8, 10000);
+        TRY_VERIFY_WITH_TIMEOUT(positions.count() >= 8, 10000);
         QCOMPARE(keepAlivesIn(sent), 0);
     }
 
@@ -98,7 +98,7 @@ private:
         // The session keeps the simulator's clock (polls, keep-alives,
         // timeouts), which this pump moves on from the event loop.
         (new SimulatorPump(0.005, &s))->follow(&s);
-        return QTest::qWaitFor([&] { return s.capabilities().probed && s.hasPosition(); }, 10000);
+        return runEventLoopUntil([&] { return s.capabilities().probed && s.hasPosition(); }, 10000);
     }
 };
 

@@ -66,7 +66,7 @@ private slots:
         QSignalSpy ready(&tuner, &AxisTuner::resultReady);
         QSignalSpy failed(&tuner, &AxisTuner::failed);
         QVERIFY2(tuner.start(axis), qPrintable(tuner.error()));
-        QTRY_VERIFY2_WITH_TIMEOUT(ready.count() == 1 || failed.count() == 1, "no result", 60000);
+        TRY_VERIFY2_WITH_TIMEOUT(ready.count() == 1 || failed.count() == 1, "no result", 60000);
         QVERIFY2(failed.isEmpty(), failed.isEmpty() ? "" : qPrintable(failed.front().front().toString()));
         const TuningResult r = tuner.result();
         qInfo().noquote() << "\n" << tuning::formatTuningTable({r});
@@ -94,11 +94,11 @@ private slots:
         AxisTuner tuner(m_session.get());
         QSignalSpy ready(&tuner, &AxisTuner::resultReady);
         QVERIFY(tuner.start(Axis::Azimuth));
-        QTRY_COMPARE_WITH_TIMEOUT(ready.count(), 1, 60000);
+        TRY_COMPARE_WITH_TIMEOUT(ready.count(), 1, 60000);
         QVERIFY(simGains(*m_session, Axis::Azimuth).kd != 1.0);
         QSignalSpy finished(&tuner, &AxisTuner::finished);
         tuner.keepOldGains();
-        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 10000);
+        TRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 10000);
         QVERIFY(!tuner.result().applied);
         const sim::PidGains g = simGains(*m_session, Axis::Azimuth);
         QCOMPARE(g.kp, 12.0);
@@ -122,7 +122,7 @@ private slots:
                 tuner.cancel();
             }
         });
-        QTRY_COMPARE_WITH_TIMEOUT(cancelled.count(), 1, 10000);
+        TRY_COMPARE_WITH_TIMEOUT(cancelled.count(), 1, 10000);
         const sim::PidGains g = simGains(*m_session, Axis::Elevation);
         QCOMPARE(g.kp, 12.0);
         QCOMPARE(g.ki, 1.0);

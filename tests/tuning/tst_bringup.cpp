@@ -101,7 +101,7 @@ private slots:
         QSignalSpy ok(&homing, &HomingRun::succeeded);
         QSignalSpy failed(&homing, &HomingRun::failed);
         QVERIFY(homing.start(60));
-        QTRY_VERIFY_WITH_TIMEOUT(ok.count() + failed.count() == 1, 20000);
+        TRY_VERIFY_WITH_TIMEOUT(ok.count() + failed.count() == 1, 20000);
         QCOMPARE(ok.count(), 1);
         QVERIFY(std::fabs(m_session->azimuth()) < 0.5);
     }
@@ -114,7 +114,7 @@ private slots:
         HomingRun homing(m_session.get());
         QSignalSpy failed(&homing, &HomingRun::failed);
         QVERIFY(homing.start(120));
-        QTRY_COMPARE_WITH_TIMEOUT(failed.count(), 1, 20000);
+        TRY_COMPARE_WITH_TIMEOUT(failed.count(), 1, 20000);
         const QString why = failed.front().front().toString();
         QVERIFY2(why.contains(QStringLiteral("homing error")), qPrintable(why));
         QVERIFY2(why.contains(QStringLiteral("end stop")), qPrintable(why));
@@ -136,10 +136,10 @@ private slots:
                 homing.cancel();
         });
         QVERIFY(homing.start(120));
-        QTRY_COMPARE_WITH_TIMEOUT(cancelled.count() + failed.count() + ok.count(), 1, 20000);
+        TRY_COMPARE_WITH_TIMEOUT(cancelled.count() + failed.count() + ok.count(), 1, 20000);
         QVERIFY2(failed.isEmpty(), failed.isEmpty() ? "" : qPrintable(failed.front().front().toString()));
         QCOMPARE(cancelled.count(), 1);
-        QTRY_VERIFY_WITH_TIMEOUT(rotator().axis(sim::Axis::Azimuth).isStopped(), 5000);
+        TRY_VERIFY_WITH_TIMEOUT(rotator().axis(sim::Axis::Azimuth).isStopped(), 5000);
         QVERIFY(rotator().axis(sim::Axis::Elevation).isStopped());
         QVERIFY(m_session->azimuth() > 10.0);
     }
