@@ -82,6 +82,8 @@ inline bool runEventLoopUntil(const std::function<bool()> &pred, int timeoutMs)
 
 // QTRY_*'s counterparts for a pumped clock: QTRY_* sleep 10 ms between
 // looks, in which a pumped clock stands still; these keep the loop running.
+// Being a nested loop, they do not carry out a deleteLater() made outside
+// them: wait for a deletion with QTRY_*, which does.
 #define TRY_VERIFY_WITH_TIMEOUT(expr, ms) QVERIFY2(runEventLoopUntil([&] { return bool(expr); }, ms), #expr)
 #define TRY_VERIFY2_WITH_TIMEOUT(expr, message, ms)                                                                    \
     do {                                                                                                               \

@@ -38,7 +38,7 @@ private:
 
 void TrackersTest::trackerSteersUntilTheOperatorStops()
 {
-    WindowFixture f;
+    WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
     QVERIFY(f.connectAndWait());
     auto *panel = f.window->rotctldPanel();
     QVERIFY(panel->startListening(QStringLiteral("127.0.0.1"), 0));
@@ -47,13 +47,13 @@ void TrackersTest::trackerSteersUntilTheOperatorStops()
 
     QTcpSocket tracker;
     tracker.connectToHost(QHostAddress::LocalHost, f.window->rotctldServer()->port());
-    QTRY_COMPARE(tracker.state(), QAbstractSocket::ConnectedState);
+    TRY_COMPARE(tracker.state(), QAbstractSocket::ConnectedState);
     QCOMPARE(ask(tracker, "P 70 20"), QByteArray("RPRT 0\n"));
     QVERIFY(f.waitUntilAt(70, 20));
     // The panel lists the client and its last command.
     auto *clients = f.find<QTreeWidget>(QStringLiteral("rotctldClients"));
-    QTRY_COMPARE(clients->topLevelItemCount(), 1);
-    QTRY_COMPARE(clients->topLevelItem(0)->text(1), QStringLiteral("P 70 20"));
+    TRY_COMPARE(clients->topLevelItemCount(), 1);
+    TRY_COMPARE(clients->topLevelItem(0)->text(1), QStringLiteral("P 70 20"));
 
     // The operator's Stop: remote moves are refused until handed back.
     QTest::mouseClick(f.find<QPushButton>(QStringLiteral("stopButton")), Qt::LeftButton);
