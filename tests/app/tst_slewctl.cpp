@@ -76,15 +76,17 @@ private:
 void SlewctlTest::initTestCase()
 {
     QVERIFY(!qEnvironmentVariable("SLEWCTL_BIN").isEmpty());
-    QVERIFY2(m_tcpSim.start({"--listen", "127.0.0.1:0", "--log-received", m_dir.filePath("tcp.log")}),
+    // The simulators run at 4x: slewctl's commands are under test, not the slews.
+    QVERIFY2(m_tcpSim.start({"--listen", "127.0.0.1:0", "--time-scale", "4", "--log-received", m_dir.filePath("tcp.log")}),
              qPrintable(m_tcpSim.error()));
-    QVERIFY2(m_ptySim.start({"--pty", m_dir.filePath("rotator"), "--dialect", "easycomm2"}), qPrintable(m_ptySim.error()));
+    QVERIFY2(m_ptySim.start({"--pty", m_dir.filePath("rotator"), "--dialect", "easycomm2", "--time-scale", "4"}),
+             qPrintable(m_ptySim.error()));
 }
 
 void SlewctlTest::everyLinkKind_data()
 {
     QTest::addColumn<QStringList>("link");
-    QTest::newRow("sim:") << QStringList{"sim:"};
+    QTest::newRow("sim:") << QStringList{"sim:?time_scale=4"};
     QTest::newRow("tcp") << QStringList{QStringLiteral("tcp://127.0.0.1:%1").arg(m_tcpSim.port())};
     QTest::newRow("pty") << QStringList{"--dialect", "easycomm2", "serial:" + m_dir.filePath("rotator")};
 }
