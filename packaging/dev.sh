@@ -112,10 +112,8 @@ test)
     install_missing
     configure_and_build
     cd "$build"
-    # One test per core. The tests that time real replies hold up with the
-    # other core busy: on 2 cores the suite passed three times in a row two
-    # at a time (3.3 min each, against 6 min one at a time), and three times
-    # one at a time beside a busy loop on one core (README).
+    # One test per core. Most tests run on simulated time, and those that
+    # time real processes hold up with the other core busy (README).
     # The summary line ("100% tests passed, 0 tests failed out of N") is
     # ctest's last line; --output-on-failure shows what a failing test printed.
     ctest --output-on-failure --timeout 600 -j "$jobs" "$@"
