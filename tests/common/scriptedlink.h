@@ -15,6 +15,7 @@
 #include "protocol/parser.h"
 #include "transport/link.h"
 #include "transport/linkfactory.h"
+#include "queuedreaddevice.h"
 
 #include <QIODevice>
 #include <QPointer>
@@ -24,7 +25,7 @@
 
 // The byte stream behind the link: what the session writes is kept and
 // answered; answers are read back as a device's would be.
-class ScriptedDevice : public QIODevice {
+class ScriptedDevice : public QueuedReadDevice {
 public:
     double azimuth = 0.0;
     double elevation = 0.0;
@@ -32,9 +33,6 @@ public:
     // What the session speaks to it: Easycomm (any flavour reads alike
     // here) or rotctld.
     slew::protocol::Dialect dialect = slew::protocol::Dialect::Easycomm3;
-
-    bool isSequential() const override { return true; }
-    qint64 bytesAvailable() const override { return m_pending.size() + QIODevice::bytesAvailable(); }
 
     // Moves in what was written since `from`: set positions, speeds, bare
     // moves, park, home and register writes. Queries are not moves, and
@@ -57,14 +55,6 @@ public:
     }
 
 protected:
-    qint64 readData(char *data, qint64 maxSize) override
-    {
-        const qint64 n = std::min<qint64>(maxSize, m_pending.size());
-        std::copy_n(m_pending.constData(), n, data);
-        m_pending.remove(0, n);
-        return n;
-    }
-
     qint64 writeData(const char *data, qint64 size) override
     {
         written.append(data, size);
@@ -101,7 +91,7 @@ private:
         }
         if (out.isEmpty())
             return;
-        reply(out.join(' ') + '\n');
+        deliver(out.join(' ') + '\n');
     }
 
     // rotctld answers every command: `p` with two bare lines, `_` with the
@@ -112,24 +102,14 @@ private:
         using slew::protocol::Message;
         using slew::protocol::Op;
         if (line == "p")
-            reply(encodeReport(Message::number(Op::Azimuth, azimuth), dialect) + '\n'
+            deliver(encodeReport(Message::number(Op::Azimuth, azimuth), dialect) + '\n'
                   + encodeReport(Message::number(Op::Elevation, elevation), dialect) + '\n');
         else if (line == "_")
-            reply("Scripted rotator\n");
+            deliver("Scripted rotator\n");
         else if (!line.isEmpty())
-            reply("RPRT 0\n");
+            deliver("RPRT 0\n");
     }
 
-    void reply(const QByteArray &bytes)
-    {
-        m_pending += bytes;
-        QTimer::singleShot(0, this, [this] {
-            if (!m_pending.isEmpty())
-                emit readyRead();
-        });
-    }
-
-    QByteArray m_pending;
     QByteArray m_line;
 };
 

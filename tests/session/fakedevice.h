@@ -12,6 +12,7 @@
 
 #include "transport/link.h"
 #include "transport/linkfactory.h"
+#include "../common/queuedreaddevice.h"
 
 #include <QByteArray>
 #include <QIODevice>
@@ -27,33 +28,15 @@ class FakeDevice;
 
 // The controller's end of the line, as the session's link sees it: what is
 // written goes to the FakeDevice, what it answers is read back.
-class FakePort : public QIODevice {
+class FakePort : public QueuedReadDevice {
 public:
     explicit FakePort(FakeDevice *device) : m_device(device) {}
-    bool isSequential() const override { return true; }
-    qint64 bytesAvailable() const override { return m_pending.size() + QIODevice::bytesAvailable(); }
-    void deliver(const QByteArray &bytes)
-    {
-        m_pending += bytes;
-        QTimer::singleShot(0, this, [this] {
-            if (isOpen() && !m_pending.isEmpty())
-                emit readyRead();
-        });
-    }
 
 protected:
-    qint64 readData(char *data, qint64 maxSize) override
-    {
-        const qint64 n = std::min<qint64>(maxSize, m_pending.size());
-        std::copy_n(m_pending.constData(), n, data);
-        m_pending.remove(0, n);
-        return n;
-    }
     qint64 writeData(const char *data, qint64 size) override;
 
 private:
     QPointer<FakeDevice> m_device;
-    QByteArray m_pending;
 };
 
 class FakeLink : public slew::transport::Link {
