@@ -4,6 +4,7 @@
 #include "alarmbanner.h"
 #include "alarmmonitor.h"
 #include "configeditor.h"
+#include "elementsetsdialog.h"
 #include "connectionbar.h"
 #include "eventlog.h"
 #include "gotopanel.h"
@@ -23,12 +24,14 @@
 #include "wizard/setupwizard.h"
 
 #include "bridge/rotctldserver.h"
+#include "sky/tlesources.h"
 
 #include <QDateTime>
 #include <QGroupBox>
 #include <QMenuBar>
 #include <QLabel>
 #include <QSplitter>
+#include <QStandardPaths>
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QVBoxLayout>
@@ -144,6 +147,11 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
     wirePlot();
     showProfile();
     m_keys = new KeyboardControl(this, m_stop, m_jog, m_presets, this);
+    // Offline first: the last good copies, no network until asked.
+    m_elementSets = new sky::TleSources(
+        QStandardPaths::writableLocation(QStandardPaths::CacheLocation) + QStringLiteral("/element-sets"), this);
+    m_elementSets->setUrls(ElementSetsDialog::savedUrls());
+    m_elementSets->loadFromCache();
     buildMenus();
     resize(1440, 900);
 }
@@ -167,6 +175,19 @@ void MainWindow::buildMenus()
         });
         dialog->open(); // window-modal, the event loop keeps running
     });
+    QAction *sets = sky->addAction(tr("&Element sets…"));
+    sets->setObjectName(QStringLiteral("actionElementSets"));
+    connect(sets, &QAction::triggered, this, &MainWindow::openElementSets);
+}
+
+void MainWindow::openElementSets()
+{
+    auto *dialog = new ElementSetsDialog(m_elementSets, this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(m_elementSets, &sky::TleSources::finished, dialog, [this] {
+        logInfo(tr("element sets refreshed: %1 in all").arg(m_elementSets->sets().size()));
+    });
+    dialog->open();
 }
 
 void MainWindow::openSetupWizard()

@@ -36,6 +36,14 @@ class TelemetryCharts;
 class TelemetryRecorder;
 class TrafficConsole;
 
+}
+
+namespace slew::sky {
+class TleSources;
+}
+
+namespace slew::ui {
+
 class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
@@ -58,12 +66,16 @@ public:
     QTabWidget *tabs() const { return m_tabs; }
     bridge::RotctldServer *rotctldServer() const { return m_rotctld; }
     RotctldPanel *rotctldPanel() const { return m_trackers; }
+    // The element sets Slew knows, loaded from the cache at start.
+    sky::TleSources *elementSets() const { return m_elementSets; }
 
 public slots:
     // Fills the connection bar with this URI (and dialect) and connects.
     void connectTo(const QString &uri, std::optional<slew::protocol::Dialect> dialect = std::nullopt);
     // Opens the setup and tuning wizard on this window's session.
     void openSetupWizard();
+    // Sky → Element sets…
+    void openElementSets();
 
 private:
     QWidget *buildControlColumn();
@@ -94,6 +106,7 @@ private:
     KeyboardControl *m_keys;
     bridge::RotctldServer *m_rotctld;
     RotctldPanel *m_trackers;
+    sky::TleSources *m_elementSets;
 };
 
 } // namespace slew::ui

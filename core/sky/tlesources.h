@@ -45,6 +45,8 @@ public:
     bool isRefreshing() const { return m_pending > 0; }
 
     QList<Tle> sets() const;
+    // The sets the index-th source holds now, as it gave them.
+    QList<Tle> setsFrom(qsizetype index) const { return m_sets.value(index); }
     QList<TleSourceStatus> status() const { return m_status; }
     QString cacheFile(const QUrl &url) const;
 

@@ -4,11 +4,10 @@
 // later fetch fails or brings no sets, merged by catalogue number, and
 // loaded offline from the cache. Ages are checked against a limit.
 
+#include "../common/tinyhttpserver.h"
 #include "sky/tlesources.h"
 
 #include <QSignalSpy>
-#include <QTcpServer>
-#include <QTcpSocket>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -24,39 +23,6 @@ const QByteArray kIss = "ISS (ZARYA)\n"
 const QByteArray kNoaa = "NOAA 19\n"
                          "1 33591U 09005A   18020.91958580  .00000107  00000-0  83477-4 0  9992\n"
                          "2 33591  99.1238 356.1693 0014450  24.0615 336.1228 14.12247534461122\n";
-
-// Answers GET /PATH from a table; anything else is a 404. Counts requests.
-class TinyHttpServer : public QTcpServer {
-public:
-    QHash<QByteArray, QByteArray> pages;
-    int requests = 0;
-
-    TinyHttpServer()
-    {
-        connect(this, &QTcpServer::newConnection, this, [this] {
-            while (QTcpSocket *socket = nextPendingConnection()) {
-                connect(socket, &QTcpSocket::readyRead, socket, [this, socket] {
-                    const QByteArray request = socket->readAll();
-                    if (!request.contains("\r\n\r\n"))
-                        return;
-                    ++requests;
-                    const QByteArray path = request.split(' ').value(1);
-                    const bool found = pages.contains(path);
-                    const QByteArray body = found ? pages.value(path) : QByteArray("not here");
-                    socket->write((found ? "HTTP/1.1 200 OK\r\n" : "HTTP/1.1 404 Not Found\r\n")
-                                  + QByteArray("Content-Type: text/plain\r\nConnection: close\r\nContent-Length: ")
-                                  + QByteArray::number(body.size()) + "\r\n\r\n" + body);
-                    socket->disconnectFromHost();
-                });
-                connect(socket, &QTcpSocket::disconnected, socket, &QObject::deleteLater);
-            }
-        });
-    }
-    QUrl url(const char *path) const
-    {
-        return QUrl(QStringLiteral("http://127.0.0.1:%1%2").arg(serverPort()).arg(QLatin1String(path)));
-    }
-};
 
 bool refreshAndWait(TleSources &sources)
 {

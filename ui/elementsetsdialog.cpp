@@ -1,0 +1,252 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "elementsetsdialog.h"
+
+#include "sky/skyvector.h"
+#include "sky/tlesources.h"
+
+#include <QDateTime>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QSettings>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+namespace slew::ui {
+namespace {
+
+constexpr char kUrlsKey[] = "sky/elementSetUrls";
+constexpr char kAgeLimitKey[] = "sky/elementSetAgeLimitDays";
+constexpr double kDefaultAgeLimitDays = 7.0; // a LEO set a week old can be minutes off
+
+// "1 element set", "2 element sets" (no translator supplies plural forms).
+QString count(qsizetype n, const QString &one, const QString &many)
+{
+    return QStringLiteral("%1 %2").arg(n).arg(n == 1 ? one : many);
+}
+
+enum Column { SourceColumn, StateColumn, SetsColumn, AgeColumn, RefusedColumn };
+
+QString describeAge(const QDateTime &cachedAt)
+{
+    if (!cachedAt.isValid())
+        return QObject::tr("no copy");
+    const double days = cachedAt.secsTo(QDateTime::currentDateTimeUtc()) / 86400.0;
+    return days < 1.0 ? QObject::tr("%1 h").arg(days * 24.0, 0, 'f', 1) : QObject::tr("%1 days").arg(days, 0, 'f', 1);
+}
+
+QString describeState(const sky::TleSourceStatus &s)
+{
+    if (s.fetched)
+        return QObject::tr("fetched");
+    if (s.fromCache)
+        return s.error.isEmpty() ? QObject::tr("from the cache") : QObject::tr("from the cache: %1").arg(s.error);
+    return s.error.isEmpty() ? QObject::tr("not fetched yet") : s.error;
+}
+
+} // namespace
+
+ElementSetsDialog::ElementSetsDialog(sky::TleSources *sources, QWidget *parent)
+    : QDialog(parent), m_sources(sources)
+{
+    setWindowTitle(tr("Element sets"));
+    setObjectName(QStringLiteral("elementSetsDialog"));
+    resize(820, 480);
+    auto *layout = new QVBoxLayout(this);
+    layout->addWidget(new QLabel(tr("Sources, one per line: group files over HTTP(S), such as CelesTrak's, "
+                                    "or local files (file:///…). Slew keeps the last good copy of each and "
+                                    "works from it offline.")));
+    m_urls = new QPlainTextEdit;
+    m_urls->setObjectName(QStringLiteral("elementSetUrls"));
+    m_urls->setPlaceholderText(QStringLiteral("https://celestrak.org/NORAD/elements/gp.php?GROUP=amateur&FORMAT=tle"));
+    m_urls->setMaximumHeight(110);
+    QStringList lines;
+    for (const QUrl &url : sources->urls().isEmpty() ? savedUrls() : sources->urls())
+        lines << url.toString();
+    m_urls->setPlainText(lines.join(u'\n'));
+    layout->addWidget(m_urls);
+
+    auto *form = new QFormLayout;
+    m_ageLimit = new QDoubleSpinBox;
+    m_ageLimit->setObjectName(QStringLiteral("elementSetAgeLimit"));
+    m_ageLimit->setRange(0.5, 365.0);
+    m_ageLimit->setDecimals(1);
+    m_ageLimit->setSuffix(tr(" days"));
+    m_ageLimit->setValue(savedAgeLimitDays());
+    m_ageLimit->setMaximumWidth(140);
+    form->addRow(tr("Warn about sets older than"), m_ageLimit);
+    layout->addLayout(form);
+
+    auto *buttons = new QHBoxLayout;
+    m_refresh = new QPushButton(tr("&Refresh now"));
+    m_refresh->setObjectName(QStringLiteral("elementSetRefresh"));
+    auto *addFile = new QPushButton(tr("Add a &file…"));
+    addFile->setObjectName(QStringLiteral("elementSetAddFile"));
+    buttons->addWidget(m_refresh);
+    buttons->addWidget(addFile);
+    buttons->addStretch();
+    layout->addLayout(buttons);
+
+    m_message = new QLabel;
+    m_message->setObjectName(QStringLiteral("elementSetMessage"));
+    m_message->setWordWrap(true);
+    layout->addWidget(m_message);
+
+    m_status = new QTreeWidget;
+    m_status->setObjectName(QStringLiteral("elementSetStatus"));
+    m_status->setHeaderLabels(
+        {tr("Source / satellite"), tr("State / epoch"), tr("Sets / number"), tr("Age"), tr("Refused")});
+    m_status->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_status->header()->setSectionResizeMode(SourceColumn, QHeaderView::Stretch);
+    layout->addWidget(m_status, 1);
+
+    m_staleWarning = new QLabel;
+    m_staleWarning->setObjectName(QStringLiteral("elementSetStaleWarning"));
+    m_staleWarning->setWordWrap(true);
+    m_staleWarning->setProperty("refused", true); // the theme's warning colour
+    layout->addWidget(m_staleWarning);
+
+    auto *close = new QDialogButtonBox(QDialogButtonBox::Close);
+    layout->addWidget(close);
+    connect(close, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    connect(m_refresh, &QPushButton::clicked, this, &ElementSetsDialog::refresh);
+    connect(addFile, &QPushButton::clicked, this, [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Element sets"), QString(),
+                                                          tr("Element sets (*.txt *.tle);;All files (*)"));
+        if (!path.isEmpty())
+            this->addFile(path);
+    });
+    connect(m_ageLimit, &QDoubleSpinBox::valueChanged, this, [this](double days) {
+        QSettings().setValue(QLatin1String(kAgeLimitKey), days);
+        showStatus();
+    });
+    connect(m_sources, &sky::TleSources::finished, this, [this] {
+        m_refresh->setEnabled(true);
+        m_message->setText(
+            tr("Refreshed: %1 in all.").arg(count(m_sources->sets().size(), tr("element set"), tr("element sets"))));
+        showStatus();
+    });
+    showStatus();
+}
+
+QList<QUrl> ElementSetsDialog::savedUrls()
+{
+    QList<QUrl> urls;
+    for (const QString &text : QSettings().value(QLatin1String(kUrlsKey)).toStringList())
+        urls << QUrl(text);
+    return urls;
+}
+
+double ElementSetsDialog::savedAgeLimitDays()
+{
+    bool ok = false;
+    const double days = QSettings().value(QLatin1String(kAgeLimitKey)).toDouble(&ok);
+    return ok && days > 0 ? days : kDefaultAgeLimitDays;
+}
+
+bool ElementSetsDialog::readUrls(QList<QUrl> *urls, QString *error) const
+{
+    const QStringList lines = m_urls->toPlainText().split(u'\n');
+    for (int i = 0; i < lines.size(); ++i) {
+        const QString line = lines[i].trimmed();
+        if (line.isEmpty())
+            continue;
+        const QUrl url(line, QUrl::StrictMode);
+        const QString scheme = url.scheme().toLower();
+        if (!url.isValid() || (scheme != u"http" && scheme != u"https" && scheme != u"file")
+            || (scheme != u"file" && url.host().isEmpty())) {
+            *error = tr("Line %1 is not an http, https or file URL: %2").arg(i + 1).arg(line);
+            return false;
+        }
+        if (!urls->contains(url))
+            urls->append(url);
+    }
+    return true;
+}
+
+bool ElementSetsDialog::refresh()
+{
+    QList<QUrl> urls;
+    QString error;
+    if (!readUrls(&urls, &error)) {
+        m_message->setText(error);
+        return false;
+    }
+    if (urls.isEmpty()) {
+        m_message->setText(tr("No sources: add a URL or a file first."));
+        return false;
+    }
+    QStringList texts;
+    for (const QUrl &url : urls)
+        texts << url.toString();
+    QSettings().setValue(QLatin1String(kUrlsKey), texts);
+    m_sources->setUrls(urls);
+    m_refresh->setEnabled(false);
+    m_message->setText(tr("Fetching %1…").arg(count(urls.size(), tr("source"), tr("sources"))));
+    m_sources->refresh();
+    return true;
+}
+
+void ElementSetsDialog::addFile(const QString &path)
+{
+    QString text = m_urls->toPlainText().trimmed();
+    if (!text.isEmpty())
+        text += u'\n';
+    m_urls->setPlainText(text + QUrl::fromLocalFile(path).toString());
+}
+
+void ElementSetsDialog::showStatus()
+{
+    m_status->clear();
+    for (const sky::TleSourceStatus &s : m_sources->status()) {
+        auto *item = new QTreeWidgetItem(m_status);
+        item->setText(SourceColumn, s.url.toString());
+        item->setText(StateColumn, describeState(s));
+        item->setText(SetsColumn, QString::number(s.setCount));
+        item->setText(AgeColumn, describeAge(s.cachedAt));
+        item->setText(RefusedColumn, QString::number(s.refusals.size()));
+        QStringList refusals;
+        for (const sky::TleRefusal &r : s.refusals)
+            refusals << tr("line %1: %2").arg(r.line).arg(r.reason);
+        item->setToolTip(RefusedColumn, refusals.join(u'\n'));
+        item->setToolTip(StateColumn, describeState(s));
+        item->setToolTip(AgeColumn, tr("how long ago this copy was downloaded"));
+        // Each set under its source, with the age of its elements.
+        const double now = sky::julianFromUnixSeconds(QDateTime::currentMSecsSinceEpoch() / 1000.0);
+        for (const sky::Tle &t : m_sources->setsFrom(m_status->topLevelItemCount() - 1)) {
+            auto *child = new QTreeWidgetItem(item);
+            child->setText(SourceColumn, t.name.isEmpty() ? tr("(no name)") : t.name);
+            const QDateTime epoch = QDateTime::fromMSecsSinceEpoch(
+                qint64((t.epochJulian() - sky::kUnixEpochJulian) * sky::kSecondsPerDay * 1000.0), Qt::UTC);
+            child->setText(StateColumn, epoch.toString(QStringLiteral("yyyy-MM-dd hh:mm 'UTC'")));
+            child->setText(SetsColumn, QString::number(t.catalogueNumber));
+            child->setText(AgeColumn, tr("%1 days").arg(now - t.epochJulian(), 0, 'f', 1));
+            child->setToolTip(AgeColumn, tr("the age of the elements: predictions drift as it grows"));
+        }
+    }
+    m_status->expandAll();
+    const QList<sky::Tle> sets = m_sources->sets();
+    const double now = sky::julianFromUnixSeconds(QDateTime::currentMSecsSinceEpoch() / 1000.0);
+    const QList<sky::ElementAge> stale = sky::staleElements(sets, now, m_ageLimit->value());
+    if (stale.isEmpty()) {
+        m_staleWarning->clear();
+        return;
+    }
+    QStringList named;
+    for (qsizetype i = 0; i < stale.size() && i < 5; ++i) {
+        const sky::Tle &t = *stale[i].tle;
+        named << tr("%1 (%2 days)")
+                     .arg(t.name.isEmpty() ? QString::number(t.catalogueNumber) : t.name)
+                     .arg(stale[i].ageDays, 0, 'f', 0);
+    }
+    m_staleWarning->setText(tr("%1 older than the limit; predictions from them drift: %2%3")
+                                .arg(count(stale.size(), tr("element set"), tr("element sets")),
+                                     named.join(QStringLiteral(", ")), stale.size() > 5 ? tr(", …") : QString()));
+}
+
+} // namespace slew::ui
