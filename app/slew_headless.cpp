@@ -102,6 +102,13 @@ int runHeadless(int argc, char *argv[])
         config.rotctldMaxClients = *n;
     }
 
+    if (parser.isSet(QStringLiteral("qth"))) {
+        slew::sky::Station where;
+        if (!slew::sky::parseStation(parser.value(QStringLiteral("qth")), &where, &error))
+            return fail(QStringLiteral("--qth %1: %2").arg(parser.value(QStringLiteral("qth")), error));
+        config.station = where;
+    }
+
     slew::bridge::HeadlessStation station;
     if (!station.start(config, &error))
         return fail(error);

@@ -18,10 +18,12 @@
 #include "bridge/rotctldserver.h"
 #include "session/rotatorsession.h"
 #include "session/stopbeforeexit.h"
+#include "sky/station.h"
 #include "cli/terminationsignalwatcher.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QSettings>
 
 #include <cstdio>
 #include <cstring>
@@ -36,6 +38,7 @@ struct Arguments {
     int settleMs = 3000;
     std::optional<std::pair<QHostAddress, quint16>> rotctldListen;
     std::optional<int> rotctldMaxClients;
+    QString station; // --qth, checked: kept as Sky → Station… keeps it
 };
 
 // Returns an error message, or empty when the arguments are usable.
@@ -74,6 +77,13 @@ QString parse(QCommandLineParser &parser, const QStringList &argv, Arguments &ou
         if (!out.rotctldMaxClients)
             return QStringLiteral("--rotctld-max-clients %1: expected a number from 1 to 100000")
                 .arg(parser.value(maxClients));
+    }
+    if (parser.isSet(QStringLiteral("qth"))) {
+        slew::sky::Station station;
+        QString error;
+        if (!slew::sky::parseStation(parser.value(QStringLiteral("qth")), &station, &error))
+            return QStringLiteral("--qth: %1").arg(error);
+        out.station = parser.value(QStringLiteral("qth")).trimmed();
     }
     out.screenshot = parser.value(screenshot);
     if (parser.isSet(settle)) {
@@ -118,6 +128,9 @@ int main(int argc, char *argv[])
         std::fprintf(stderr, "slew: %s\n", qPrintable(error));
         return 2;
     }
+
+    if (!args.station.isEmpty())
+        QSettings().setValue(QLatin1String(slew::sky::kStationSettingsKey), args.station);
 
     slew::session::RotatorSession session;
     slew::ui::MainWindow window(&session);

@@ -8,23 +8,8 @@
 #include <QSettings>
 #include <QVBoxLayout>
 
-#include <cmath>
 
 namespace slew::ui {
-namespace {
-
-QString describe(const sky::Station &s)
-{
-    return QObject::tr("%1° %2, %3° %4, %5 m above the ellipsoid — locator %6")
-        .arg(std::fabs(s.latitudeDeg), 0, 'f', 4)
-        .arg(s.latitudeDeg >= 0 ? QStringLiteral("N") : QStringLiteral("S"))
-        .arg(std::fabs(s.longitudeDeg), 0, 'f', 4)
-        .arg(s.longitudeDeg >= 0 ? QStringLiteral("E") : QStringLiteral("W"))
-        .arg(s.heightM, 0, 'f', 0)
-        .arg(sky::stationLocator(s.latitudeDeg, s.longitudeDeg));
-}
-
-} // namespace
 
 StationDialog::StationDialog(QWidget *parent)
     : QDialog(parent)
@@ -70,7 +55,7 @@ void StationDialog::check()
     const bool ok = sky::parseStation(m_edit->text(), &parsed, &error);
     if (ok)
         m_station = parsed;
-    m_feedback->setText(ok ? describe(parsed) : error);
+    m_feedback->setText(ok ? sky::describeStation(parsed) : error);
     m_feedback->setProperty("refused", !ok);
     m_buttons->button(QDialogButtonBox::Ok)->setEnabled(ok);
 }

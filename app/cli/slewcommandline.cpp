@@ -43,6 +43,11 @@ ProgramOption rotctldListenOption()
             true};
 }
 
+ProgramOption stationOption(const QString &description, bool inConfigFile = false)
+{
+    return {{QStringLiteral("qth")}, QStringLiteral("station"), description, inConfigFile};
+}
+
 ProgramOption rotctldMaxClientsOption()
 {
     return {{QStringLiteral("rotctld-max-clients")},
@@ -72,6 +77,8 @@ ProgramMode makeWindowMode()
         rotctldListenOption(),
         rotctldMaxClientsOption(),
         {{QStringLiteral("goto")}, QStringLiteral("az,el"), QStringLiteral("Once connected, move to this position.")},
+        stationOption(QStringLiteral("Set the station (as Sky, Station does, and kept): LAT,LON or LAT,LON,HEIGHT_M, "
+                                     "or a Maidenhead locator of 4, 6 or 8 characters (JO65hq).")),
         {{QStringLiteral("screenshot")},
          QStringLiteral("FILE.png"),
          QStringLiteral("Render the window to a PNG after the settle time, then exit. Needs no display.")},
@@ -98,7 +105,7 @@ ProgramMode makeHeadlessMode()
         {{QStringLiteral("config")},
          QStringLiteral("file"),
          QStringLiteral("Read settings from FILE, one `name = value` a line, where name is one of connect, dialect, "
-                        "profile, rotctld-listen, rotctld-allow, rotctld-max-clients. Options on the command line win over the file.")},
+                        "profile, rotctld-listen, rotctld-allow, rotctld-max-clients, qth. Options on the command line win over the file.")},
         connectOption(QStringLiteral("The rotator's link URI (default sim:, the built-in simulator).")),
         dialectOption(),
         profileOption(),
@@ -108,6 +115,10 @@ ProgramMode makeHeadlessMode()
          QStringLiteral("Comma-separated client addresses the rotctld server accepts (default: any)."),
          true},
         rotctldMaxClientsOption(),
+        stationOption(QStringLiteral("Where the antenna stands: LAT,LON or LAT,LON,HEIGHT_M (degrees north and east, "
+                                     "metres above the WGS-84 ellipsoid), or a Maidenhead locator of 4, 6 or 8 "
+                                     "characters (JO65hq). Checked at start and logged."),
+                      true),
     };
     return mode;
 }
@@ -137,11 +148,10 @@ ProgramMode makeTuneMode()
 
 ProgramOption qthOption()
 {
-    return {{QStringLiteral("qth")},
-            QStringLiteral("station"),
-            QStringLiteral("Where the station is: LAT,LON or LAT,LON,HEIGHT_M (degrees north and east, metres above "
-                           "the WGS-84 ellipsoid), or a Maidenhead locator of 4, 6 or 8 characters (JO65hq). Without it, the "
-                           "station set in the window (Sky, Station) is used.")};
+    return stationOption(
+        QStringLiteral("Where the station is: LAT,LON or LAT,LON,HEIGHT_M (degrees north and east, metres above "
+                       "the WGS-84 ellipsoid), or a Maidenhead locator of 4, 6 or 8 characters (JO65hq). Without it, the "
+                       "station set in the window (Sky, Station) is used."));
 }
 
 ProgramOption tleOption(const QString &description)

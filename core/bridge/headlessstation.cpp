@@ -48,6 +48,8 @@ void HeadlessStation::log(const QString &line)
 
 bool HeadlessStation::start(const HeadlessConfig &config, QString *error)
 {
+    if (config.station)
+        log(tr("station: %1").arg(sky::describeStation(*config.station)));
     RotatorSession::Options options = m_session->options();
     options.autoReconnect = true; // a service keeps trying after a loss
     m_session->setOptions(options);

@@ -6,6 +6,7 @@
 // stops the rotator before it exits.
 
 #include "model/rotatorprofile.h"
+#include "sky/station.h"
 
 #include <QHostAddress>
 #include <QList>
@@ -13,6 +14,7 @@
 
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 namespace slew::session {
 class RotatorSession;
@@ -29,6 +31,7 @@ struct HeadlessConfig {
     bool rotctldEnabled = false;
     QList<QHostAddress> allowedClients; // empty: any
     int rotctldMaxClients = 32;         // RotctldServer::kDefaultMaxClients
+    std::optional<sky::Station> station; // --qth / `qth =`: where the antenna stands
 };
 
 class HeadlessStation : public QObject {

@@ -132,4 +132,15 @@ bool parseStation(const QString &text, Station *out, QString *error)
     return true;
 }
 
+QString describeStation(const Station &s)
+{
+    return QStringLiteral("%1° %2, %3° %4, %5 m above the ellipsoid — locator %6")
+        .arg(std::fabs(s.latitudeDeg), 0, 'f', 4)
+        .arg(s.latitudeDeg >= 0 ? QStringLiteral("N") : QStringLiteral("S"))
+        .arg(std::fabs(s.longitudeDeg), 0, 'f', 4)
+        .arg(s.longitudeDeg >= 0 ? QStringLiteral("E") : QStringLiteral("W"))
+        .arg(s.heightM, 0, 'f', 0)
+        .arg(stationLocator(s.latitudeDeg, s.longitudeDeg));
+}
+
 } // namespace slew::sky

@@ -30,4 +30,8 @@ bool locatorToStation(const QString &locator, Station *out, QString *error);
 // The 6-character locator of a position.
 QString stationLocator(double latitudeDeg, double longitudeDeg);
 
+// "55.6875° N, 12.6250° E, 20 m above the ellipsoid — locator JO65hq",
+// for the window and the station service's log.
+QString describeStation(const Station &station);
+
 } // namespace slew::sky

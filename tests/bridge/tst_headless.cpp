@@ -37,8 +37,11 @@ private slots:
     void hostileClientCannotFloodTheLog();
 
 private:
+    // Starts `slew --headless ARGS` and reads its log up to the rotctld
+    // server's ready line (kept in m_startupLog) for the port.
     bool startSlew(QProcess &slew, const QStringList &args, quint16 *rotctldPort,
                    const std::function<void()> &childSetup = {});
+    QByteArray m_startupLog;
     static QByteArray ask(QTcpSocket &s, const QByteArray &line);
     static QPointF positionOf(const QByteArray &reply); // "AZ12.00 EL3.00"
 };
@@ -73,6 +76,7 @@ bool HeadlessTest::startSlew(QProcess &slew, const QStringList &args, quint16 *r
         10000);
     if (!ready || slew.state() == QProcess::NotRunning)
         return false;
+    m_startupLog = out;
     const qsizetype at = out.indexOf("rotctld listening on");
     const QByteArray line = out.mid(at, out.indexOf('\n', at) - at);
     *rotctldPort = quint16(line.mid(line.lastIndexOf(':') + 1).toUInt());
@@ -97,7 +101,7 @@ void HeadlessTest::servesTrackersAndStopsOnSigterm()
     QProcess slew;
     quint16 port = 0;
     QVERIFY2(startSlew(slew, {"--connect", QStringLiteral("tcp://127.0.0.1:%1").arg(sim.port()), "--rotctld-listen",
-                               "127.0.0.1:0"},
+                               "127.0.0.1:0", "--qth", "JO65hq"},
                        &port),
              slew.readAllStandardError().constData());
 
@@ -125,6 +129,9 @@ void HeadlessTest::servesTrackersAndStopsOnSigterm()
     QTRY_VERIFY(log().count("SA SE") > before);
     const QByteArray out = slew.readAllStandardOutput();
     QVERIFY2(out.contains("rotator stopped"), out.constData());
+    // The station it was given, checked and logged.
+    QVERIFY2(m_startupLog.contains("station: 55.6875° N, 12.6250° E, 0 m above the ellipsoid — locator JO65hq"),
+             m_startupLog.constData());
 }
 
 void HeadlessTest::sigtermLeavesTheAntennaAtRest_data()

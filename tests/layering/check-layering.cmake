@@ -17,7 +17,7 @@ set(allowed_model "protocol")
 set(allowed_session "model;protocol;transport")
 set(allowed_sim "model;protocol;transport")
 set(allowed_tuning "session;model;protocol;transport")
-set(allowed_bridge "session;model;protocol;transport")
+set(allowed_bridge "session;model;protocol;transport;sky")
 set(allowed_console "session;tuning;model;protocol;transport")
 set(areas protocol transport sky model session sim tuning bridge console)
 

@@ -71,6 +71,8 @@ private slots:
     void refusals();
     void helpDescribesTheMode();
     void savedStationWhenNoQth();
+    void qthGivenToTheWindowIsKept();
+    void qthInTheStationServiceConfig();
 };
 
 void TestSlewSky::initTestCase()
@@ -300,6 +302,47 @@ void TestSlewSky::savedStationWhenNoQth()
     const Run bad = runSlew(where, home.path());
     QCOMPARE(bad.exitCode, 2);
     QVERIFY2(bad.err.contains("give --qth"), bad.err.constData());
+}
+
+void TestSlewSky::qthGivenToTheWindowIsKept()
+{
+    // `slew --qth` sets the station as Sky → Station… does; the sky
+    // commands then find it without --qth.
+    QTemporaryDir home;
+    const QStringList where{QStringLiteral("--where"), QStringLiteral("sun"), QStringLiteral("--time"),
+                            QStringLiteral("2024-06-20T12:00:00Z"), QStringLiteral("--json")};
+    QCOMPARE(runSlew(where, home.path()).exitCode, 2); // no station yet
+    const Run window = runSlew({QStringLiteral("--qth"), QStringLiteral("FN31pr"), QStringLiteral("--screenshot"),
+                                home.filePath(QStringLiteral("w.png")), QStringLiteral("--settle-ms"), QStringLiteral("0")},
+                               home.path());
+    QVERIFY2(window.exitCode == 0, window.err.constData());
+    const Run saved = runSlew(where, home.path());
+    QVERIFY2(saved.exitCode == 0, saved.err.constData());
+    QCOMPARE(saved.out, runSlew(where + QStringList{QStringLiteral("--qth"), QStringLiteral("FN31pr")}).out);
+
+    // A bad one is refused before the window opens, and the kept one stays.
+    const Run bad = runSlew({QStringLiteral("--qth"), QStringLiteral("91,10"), QStringLiteral("--screenshot"),
+                             home.filePath(QStringLiteral("x.png"))},
+                            home.path());
+    QCOMPARE(bad.exitCode, 2);
+    QVERIFY2(bad.err.contains("--qth: latitude"), bad.err.constData());
+    QVERIFY(!QFile::exists(home.filePath(QStringLiteral("x.png"))));
+    QCOMPARE(runSlew(where, home.path()).out, saved.out);
+}
+
+void TestSlewSky::qthInTheStationServiceConfig()
+{
+    // `qth =` in a --config file is checked at start: a bad one stops the
+    // service with the reason, before any link opens.
+    QTemporaryDir dir;
+    QFile conf(dir.filePath(QStringLiteral("station.conf")));
+    QVERIFY(conf.open(QIODevice::WriteOnly));
+    conf.write("connect = sim:\nqth = JO65zz\n");
+    conf.close();
+    const Run bad = runSlew({QStringLiteral("--headless"), QStringLiteral("--config"), conf.fileName()});
+    QCOMPARE(bad.exitCode, 2);
+    QVERIFY2(bad.err.contains("--qth JO65zz"), bad.err.constData());
+    QVERIFY2(bad.out.isEmpty(), bad.out.constData());
 }
 
 QTEST_GUILESS_MAIN(TestSlewSky)
