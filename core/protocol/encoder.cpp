@@ -248,6 +248,18 @@ QByteArray encodeQueryPosition(Dialect d)
     return encodeLine({Message::query(Op::Azimuth), Message::query(Op::Elevation)}, d);
 }
 
+QByteArray encodeOffset(double azimuth, double elevation, Dialect d)
+{
+    if (!dialectSupports(d, Op::Offset))
+        return {};
+    auto signedThree = [](double v) {
+        char buffer[32];
+        const int n = std::snprintf(buffer, sizeof buffer, "%+04lld", wholeNumber(v));
+        return QByteArray(buffer, n);
+    };
+    return "O" + signedThree(azimuth) + signedThree(elevation) + lineTerminator(d);
+}
+
 QByteArray encodeStop(bool azimuth, bool elevation, Dialect d)
 {
     if (d == Dialect::Easycomm1 || (!azimuth && !elevation))

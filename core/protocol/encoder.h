@@ -24,6 +24,9 @@ QByteArray encodeLine(std::initializer_list<Message> tokens, Dialect d);
 // The commands the session sends, in each dialect's own form.
 QByteArray encodeSetPosition(double az, double el, Dialect d); // Easycomm I: full line; rotctld `P az el`
 QByteArray encodeQueryPosition(Dialect d);                     // `AZ EL\n`; empty for Easycomm I; `p`
+// GS-232's relative move `O+010-005`, whole degrees, each offset signed;
+// empty in every other dialect.
+QByteArray encodeOffset(double azimuth, double elevation, Dialect d);
 QByteArray encodeStop(bool azimuth, bool elevation, Dialect d); // `SA SE\n`; rotctld `S` stops both
 // What holds the stopped axes with the drive engaged: a zero speed (`VL000
 // VU000\n`), which brakes a drive that would coast. Empty for a dialect

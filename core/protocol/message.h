@@ -56,6 +56,8 @@ enum class Op : std::uint8_t {
     // GS-232 map onto Azimuth, Elevation, StopAzimuth, StopElevation, Move*.
     Speed,         // Xn, n 1..4: the speed of the manual moves
     KeepAlive,     // ?   (a keep-alive), answered `OK` (docs/protocol.md: Slew's choice)
+    Offset,        // O+aaa-eee: a relative move. One message per axis, index 0 azimuth, 1
+                   // elevation, value the signed offset in degrees (GS-232's O, the easycom library)
     // rotctld only (docs/protocol.md): its other answers map onto Azimuth,
     // Elevation, Version and Alarm.
     Report,        // RPRT 0: a command done; value holds the code

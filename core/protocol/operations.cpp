@@ -53,6 +53,10 @@ constexpr OperationInfo kOperations[] = {
     // GS-232 only, as in the easycom library's table; the session sends it
     // while polling is paused, and the simulator answers `OK`.
     {Op::KeepAlive,         "?",      "keep-alive",             R::None,                 true,  false,  A::None,          false},
+    // GS-232's relative move, as in the easycom library's table. The
+    // session's own relative move sends an absolute W instead
+    // (docs/protocol.md); a raw `O` line is gated against the last position.
+    {Op::Offset,            "O",      "relative move",          R::None,                 true,  false,  A::NeverSent,     true},
     // rotctld's answer to a command: `RPRT 0` when done (an error code
     // arrives as an alarm, see parser_rotctld.cpp).
     {Op::Report,            "RPRT",   "rotctld report",         R::None,                 false, false,  A::NeverSent,     false},

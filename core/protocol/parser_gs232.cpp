@@ -10,6 +10,33 @@ namespace slew::protocol {
 
 using namespace text;
 
+namespace {
+
+// One signed offset: a sign or none, up to three digits (a decimal is
+// tolerated), at most 450 either way since no rotator turns further.
+bool offset(QByteArrayView s, double *out)
+{
+    const QByteArrayView digits = (!s.isEmpty() && (s[0] == '+' || s[0] == '-')) ? s.sliced(1) : s;
+    return !digits.isEmpty() && digits.size() <= 6 && isDigit(digits[0]) && parseDecimal(s, out)
+        && *out >= -450 && *out <= 450;
+}
+
+// `+010-005`, `010+005`, `-5+0`: the second offset starts at the first sign
+// after the first byte, so it must carry one.
+bool offsetPair(QByteArrayView s, double *az, double *el)
+{
+    qsizetype split = -1;
+    for (qsizetype i = 1; i < s.size(); ++i) {
+        if (s[i] == '+' || s[i] == '-') {
+            split = i;
+            break;
+        }
+    }
+    return split > 0 && offset(s.first(split), az) && offset(s.sliced(split), el);
+}
+
+} // namespace
+
 Parser::Classified Parser::classifyGs232(QByteArrayView t) const
 {
     Classified c;
@@ -81,6 +108,12 @@ Parser::Classified Parser::classifyGs232(QByteArrayView t) const
         if (!degrees(rest, &a))
             return one(Message::invalid(t, "malformed GS-232 angle"));
         return one(Message::number(Op::Elevation, a));
+    case 'O': { // O+aaa-eee: a relative move (the easycom library's table)
+        double da = 0, de = 0;
+        if (!offsetPair(rest, &da, &de))
+            return one(Message::invalid(t, "malformed GS-232 relative move (O+010-005)"));
+        return two(Message::number(Op::Offset, da, 0), Message::number(Op::Offset, de, 1));
+    }
     case 'X': {
         if (rest.size() != 1 || rest[0] < '1' || rest[0] > '4')
             return one(Message::invalid(t, "speed must be X1 to X4"));

@@ -120,6 +120,11 @@ public slots:
     // exactly that mechanical angle (a tuning step).
     CommandResult gotoAxis(slew::session::Axis axis, double degrees, AzimuthIs meaning = AzimuthIs::Bearing);
     CommandResult moveAxis(slew::session::Axis axis, double degreesPerSecond); // + is right (CW) / up
+    // A move by offsets from the present (polled) position, as GS-232's
+    // `O+aaa-eee`: the target is worked out here, passes the gate as the
+    // mechanical positions it names, and goes out as an absolute set
+    // position in every dialect (docs/protocol.md says why not `O`).
+    CommandResult moveBy(double azimuthOffset, double elevationOffset);
     CommandResult stop(slew::session::Axes axes = slew::session::Axes::Both);
     CommandResult park();
     CommandResult home();

@@ -247,6 +247,11 @@ void SimulatorFirmware::handle(const Message &m, QByteArray &out)
             return readOnly(); // `OK` is the controller's word, not a command
         answer("OK");
         break;
+    case Op::Offset:
+        // GS-232's relative move: from where the axis is now.
+        if (m.index == 0 ? !m_rotator.pointAzimuth(az + m.value) : !m_rotator.pointElevation(el + m.value))
+            return refuse(m, out);
+        break;
     case Op::Speed:
         m_manualSpeedShare = std::clamp(m.value, 1.0, 4.0) / 4.0;
         break;

@@ -191,6 +191,15 @@ void ParserTest::vectors_data()
     row("the easycom library A E set", "gs232a", "A090\rE045\r", {"azimuth=90|", "elevation=45|"});
     row("the easycom library keep-alive", "gs232a", "?\r", {"keep-alive|"});
     row("keep-alive answer (Slew's choice)", "gs232b", "OK\r\n", {"keep-alive 'OK'|"});
+    // The easycom library's relative move O+nnn+nnn, and the variants read.
+    row("gs232 relative move", "gs232a", "O+010-005\r", {"relative move#0=10", "relative move#1=-5|"});
+    row("gs232 relative move, short and unsigned first", "gs232b", "o10+5\r",
+        {"relative move#0=10", "relative move#1=5|"});
+    row("gs232 relative move, zero", "gs232b", "O+000+000\r", {"relative move#0=0", "relative move#1=0|"});
+    row("gs232 relative move, one offset", "gs232a", "O+010\r", {"unreadable input 'O+010'|"});
+    row("gs232 relative move, beyond 450", "gs232a", "O+500+000\r", {"unreadable input 'O+500+000'|"});
+    row("gs232 relative move, no digits", "gs232a", "O+-5\rO++\r",
+        {"unreadable input 'O+-5'|", "unreadable input 'O++'|"});
     // --- GS-232 reports.
     row("gs232a C2 report", "gs232a", "+0123+0045\r", {"azimuth=123", "elevation=45|"});
     row("gs232a C report", "gs232a", "+0359\r\n", {"azimuth=359|"});
