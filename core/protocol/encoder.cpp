@@ -74,6 +74,7 @@ QByteArray encodeGs232Token(const Message &m)
     case Op::StopElevation: return "E";
     case Op::Speed: return "X" + QByteArray::number(std::clamp(int(m.value), 1, 4));
     case Op::KeepAlive: return "?";
+    case Op::Status: return m.hasValue ? QByteArray() : QByteArray("GS");
     default: return {};
     }
 }
@@ -178,6 +179,10 @@ QByteArray encodeReport(const Message &m, Dialect d)
     }
     if (!isGs232(d))
         return encodeToken(m, d);
+    // GS-232's status answer (Slew's choice, docs/protocol.md): `ST=` and
+    // the status bits in decimal, as Easycomm's GS carries them.
+    if (m.op == Op::Status)
+        return m.hasValue ? "ST=" + integer(m.value) : QByteArray();
     // GS-232 reports differ from its commands: `+0aaa` (A) or `AZ=aaa` (B).
     if (!m.hasValue || (m.op != Op::Azimuth && m.op != Op::Elevation))
         return {};

@@ -41,7 +41,8 @@ constexpr OperationInfo kOperations[] = {
     {Op::VelocityDown,      "VD",     "velocity down",          R::Easycomm3AndSatNogs,  false, false,  A::Velocity,      false},
     {Op::ConfigRead,        "CR",     "config read",            R::Easycomm3AndSatNogs,  false, false,  A::Register,      false},
     {Op::ConfigWrite,       "CW",     "config write",           R::Easycomm3AndSatNogs,  false, false,  A::RegisterValue, true},
-    {Op::Status,            "GS",     "status register",        R::Easycomm3AndSatNogs,  false, false,  A::Integer,       false},
+    // GS-232 too (the easycom library's table), answered `ST=n` (docs/protocol.md).
+    {Op::Status,            "GS",     "status register",        R::Easycomm3AndSatNogs,  true,  false,  A::Integer,       false},
     {Op::ErrorFlags,        "GE",     "error register",         R::Easycomm3AndSatNogs,  false, false,  A::Integer,       false},
     // Hamlib sends RESET and PARK to models 202 and 204 alike.
     {Op::Reset,             "RESET",  "reset and home",         R::FromEasycomm2,        false, true,   A::None,          true},

@@ -291,8 +291,11 @@ void SimulatorFirmware::handle(const Message &m, QByteArray &out)
     case Op::Status:
         if (m.hasValue)
             return readOnly();
-        answer("GS" + QByteArray::number(m_dialect == Dialect::Easycomm3 ? m_rotator.status()
-                                                                           : m_rotator.combinedStatus()));
+        if (protocol::isGs232(m_dialect)) // `ST=n`, one status for both axes (docs/protocol.md)
+            answer(protocol::encodeReport(Message::number(Op::Status, m_rotator.combinedStatus()), m_dialect));
+        else
+            answer("GS" + QByteArray::number(m_dialect == Dialect::Easycomm3 ? m_rotator.status()
+                                                                               : m_rotator.combinedStatus()));
         break;
     case Op::ErrorFlags:
         if (m.hasValue)

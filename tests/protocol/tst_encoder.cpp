@@ -86,6 +86,10 @@ void EncoderTest::gs232WireStrings()
         // The easycom library's relative move: each offset signed, three digits.
         QCOMPARE(encodeOffset(10, -5, d), QByteArray("O+010-005\r"));
         QCOMPARE(encodeOffset(-120.4, 0, d), QByteArray("O-120+000\r"));
+        // The easycom library's status query, and the answer Slew chose.
+        QCOMPARE(encodeLine({Message::query(Op::Status)}, d), QByteArray("GS\r"));
+        QCOMPARE(encodeReport(Message::number(Op::Status, 6), d), QByteArray("ST=6"));
+        QVERIFY(!dialectSupports(d, Op::ErrorFlags)); // no GE on a GS-232
         // No park, reset, config or velocity commands on a GS-232.
         QVERIFY(encodeLine({Message::query(Op::Park)}, d).isEmpty());
         QVERIFY(encodeLine({Message::number(Op::VelocityRight, 100)}, d).isEmpty());

@@ -124,6 +124,19 @@ private slots:
         QCOMPARE(b.send("C2\r"), QByteArray("AZ=130  EL=015\r\n"));
     }
 
+    void gs232StatusIsAnsweredAsST()
+    {
+        // GS (the easycom library's table) -> ST=n, the bits of SatNOGS' GS.
+        Bench b(Dialect::Gs232A);
+        QCOMPARE(b.send("GS\r"), QByteArray("ST=1\r\n")); // idle
+        b.rotator.pointAzimuth(90.0);
+        b.rotator.advanceBy(0.5);
+        const QByteArray moving = b.send("GS\r");
+        QVERIFY2(moving.startsWith("ST=") && (moving.mid(3).trimmed().toInt() & 2), moving.constData());
+        // A status sent to the controller is not a command.
+        QCOMPARE(b.send("ST=1\r"), QByteArray("?>\r\n"));
+    }
+
     void refusedInputMovesNothingIsCountedAndRaisesAnAlarm_data()
     {
         QTest::addColumn<QByteArray>("input");
