@@ -111,11 +111,42 @@ QByteArray encodeRotctldToken(const Message &m)
     }
 }
 
-// Whether a line holds one command (GS-232 and rotctld) rather than several
-// tokens (Easycomm).
+// The Micro-2g program's commands (its header comment): a letter, the
+// rotor's digit when one is named (index 1..4), then the argument. Mqqq has
+// no rotor digit, as it turns the default rotor: a named rotor is made the
+// default first (`2\rM035`). A bearing goes out as 0..359: the program
+// picks the shorter way inside its overlap itself.
+QByteArray encodeMicro2gToken(const Message &m)
+{
+    const bool named = m.index >= 1 && m.index <= 4;
+    const QByteArray rotor = named ? QByteArray::number(m.index) : QByteArray();
+    switch (m.op) {
+    case Op::Azimuth: {
+        if (!m.hasValue)
+            return "C" + rotor;
+        const long long bearing = ((wholeNumber(m.value) % 360) + 360) % 360;
+        return (named ? rotor + '\r' : QByteArray()) + "M" + threeDigits(double(bearing));
+    }
+    case Op::StopAzimuth: return "S" + rotor;
+    case Op::Preset:
+    case Op::StorePreset:
+        if (!m.hasValue || m.value < 1 || m.value > 3)
+            return {};
+        return (m.op == Op::Preset ? "P" : "L") + rotor + integer(m.value);
+    case Op::SelectRotor:
+        if (!m.hasValue || m.value < 1 || m.value > 4)
+            return {};
+        return integer(m.value);
+    case Op::Version: return m.isQuery() ? QByteArray("?") : QByteArray();
+    default: return {};
+    }
+}
+
+// Whether a line holds one command (GS-232, rotctld, Micro-2g) rather than
+// several tokens (Easycomm).
 bool oneCommandALine(Dialect d)
 {
-    return isGs232(d) || d == Dialect::Rotctld;
+    return isGs232(d) || d == Dialect::Rotctld || d == Dialect::Micro2g;
 }
 
 } // namespace
@@ -128,6 +159,8 @@ QByteArray encodeToken(const Message &m, Dialect d)
         return encodeGs232Token(m);
     if (d == Dialect::Rotctld)
         return encodeRotctldToken(m);
+    if (d == Dialect::Micro2g)
+        return encodeMicro2gToken(m);
     QByteArray out = mnemonic(m.op).toByteArray();
     switch (operationInfo(m.op).argument) {
     case Argument::Angle:
@@ -231,8 +264,10 @@ QByteArray encodeEasycomm1Line(double az, double el, quint64 up, QByteArrayView 
     return line;
 }
 
-QByteArray encodeSetPosition(double az, double el, Dialect d)
+QByteArray encodeSetPosition(double az, double el, Dialect d, int rotor)
 {
+    if (d == Dialect::Micro2g) // azimuth only: the elevation has no command
+        return encodeLine({Message::number(Op::Azimuth, az, rotor > 0 ? rotor : -1)}, d);
     if (d == Dialect::Easycomm1)
         return encodeEasycomm1Line(az, el);
     if (isGs232(d))
@@ -242,8 +277,10 @@ QByteArray encodeSetPosition(double az, double el, Dialect d)
     return encodeLine({Message::number(Op::Azimuth, az), Message::number(Op::Elevation, el)}, d);
 }
 
-QByteArray encodeQueryPosition(Dialect d)
+QByteArray encodeQueryPosition(Dialect d, int rotor)
 {
+    if (d == Dialect::Micro2g)
+        return encodeLine({Message::query(Op::Azimuth, rotor > 0 ? rotor : -1)}, d);
     if (d == Dialect::Easycomm1)
         return {}; // Easycomm I has no way to ask
     if (isGs232(d))
@@ -265,8 +302,10 @@ QByteArray encodeOffset(double azimuth, double elevation, Dialect d)
     return "O" + signedThree(azimuth) + signedThree(elevation) + lineTerminator(d);
 }
 
-QByteArray encodeStop(bool azimuth, bool elevation, Dialect d)
+QByteArray encodeStop(bool azimuth, bool elevation, Dialect d, int rotor)
 {
+    if (d == Dialect::Micro2g) // one axis: a stop of elevation alone has nothing to stop
+        return azimuth ? encodeLine({Message::query(Op::StopAzimuth, rotor > 0 ? rotor : -1)}, d) : QByteArray();
     if (d == Dialect::Easycomm1 || (!azimuth && !elevation))
         return {};
     if (azimuth && elevation && isGs232(d))

@@ -58,6 +58,10 @@ enum class Op : std::uint8_t {
     KeepAlive,     // ?   (a keep-alive), answered `OK` (docs/protocol.md: Slew's choice)
     Offset,        // O+aaa-eee: a relative move. One message per axis, index 0 azimuth, 1
                    // elevation, value the signed offset in degrees (GS-232's O, the easycom library)
+    // Micro-2g only (docs/protocol.md): index is the rotor, -1 for the default one.
+    SelectRotor,   // n: make rotor n (value) the default rotor
+    Preset,        // Pm / Pnm: turn to preset m (value, 1..3)
+    StorePreset,   // Lm / Lnm: store the present heading as preset m
     // rotctld only (docs/protocol.md): its other answers map onto Azimuth,
     // Elevation, Version and Alarm.
     Report,        // RPRT 0: a command done; value holds the code

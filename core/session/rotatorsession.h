@@ -95,6 +95,9 @@ public:
     // The link's lines carry the XOR checksum (`checksum=1`, link.h), and
     // how many received lines were refused for a wrong or missing one.
     bool checksumming() const { return m_checksum; }
+    // The rotor of a multi-rotor controller this session drives (`rotor=n`
+    // on the link's URI; 0: the controller's default rotor).
+    int rotor() const { return m_rotor; }
     int checksumFailures() const { return m_checksumFailures; }
     // Refused frames in a row after which badFramesAlarm(true) is raised.
     static constexpr int kBadFramesAlarm = 3;
@@ -203,6 +206,7 @@ private:
     Options m_options;
     protocol::Parser m_parser;
     bool m_checksum = false;
+    int m_rotor = 0; // from the link's hints when it opens
     protocol::ChecksumReader m_frames; // checksummed lines are checked here before the parser
     int m_checksumFailures = 0;
     int m_badFramesInARow = 0;

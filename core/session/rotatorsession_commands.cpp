@@ -56,7 +56,7 @@ CommandResult RotatorSession::gotoPosition(double az, double el)
     if (!check.allowed())
         return refuseMove(check.refusal);
     const double targetAz = check.azimuth;
-    const QByteArray line = protocol::encodeSetPosition(targetAz, el, m_profile.dialect);
+    const QByteArray line = protocol::encodeSetPosition(targetAz, el, m_profile.dialect, m_rotor);
     rememberSent(Message::number(Op::Azimuth, std::round(targetAz * 100) / 100));
     rememberSent(Message::number(Op::Elevation, std::round(el * 100) / 100));
     m_jogSpeed = {0.0, 0.0};
@@ -101,7 +101,7 @@ CommandResult RotatorSession::gotoAxis(Axis axis, double degrees, AzimuthIs mean
         rememberSent(Message::number(Op::Azimuth, std::round(a * 100) / 100));
         rememberSent(Message::number(Op::Elevation, std::round(e * 100) / 100));
         m_jogSpeed = {0.0, 0.0};
-        writeMove(protocol::encodeSetPosition(a, e, d));
+        writeMove(protocol::encodeSetPosition(a, e, d, m_rotor));
         m_activeTarget = PointingTarget{a, e};
         m_targetAz = a;
         m_targetEl = e;
@@ -137,7 +137,7 @@ CommandResult RotatorSession::moveBy(double azimuthOffset, double elevationOffse
     const model::MoveCheck check = m_gate.mechanical(a, e);
     if (!check.allowed())
         return refuseMove(check.refusal);
-    const QByteArray line = protocol::encodeSetPosition(a, e, m_profile.dialect);
+    const QByteArray line = protocol::encodeSetPosition(a, e, m_profile.dialect, m_rotor);
     if (line.isEmpty())
         return refuse(tr("%1 has no command to set a position").arg(protocol::dialectName(m_profile.dialect)));
     rememberSent(Message::number(Op::Azimuth, std::round(a * 100) / 100));
@@ -196,7 +196,7 @@ CommandResult RotatorSession::stop(Axes axes)
         m_jogSpeed[0] = 0.0;
     if (el)
         m_jogSpeed[1] = 0.0;
-    const QByteArray line = protocol::encodeStop(az, el, m_profile.dialect);
+    const QByteArray line = protocol::encodeStop(az, el, m_profile.dialect, m_rotor);
     if (line.isEmpty())
         return refuse(tr("%1 has no stop command").arg(protocol::dialectName(m_profile.dialect)));
     m_activeTarget.reset();
@@ -336,6 +336,22 @@ QString RotatorSession::rawMoveRefusal(const Message &m) const
         && (m.text.view()[0] == 'O' || m.text.view()[0] == 'o'))
         return tr("'%1' is not a relative move Slew can check (O+010-005)")
             .arg(QString::fromLatin1(m.text.view().toByteArray()));
+    // Micro-2g (docs/protocol.md): Mqqq is a bearing the program reaches the
+    // short way, so it is checked as one; a preset goes to a bearing only
+    // the controller knows, which is safe only where every bearing is.
+    if (m_profile.dialect == Dialect::Micro2g) {
+        if (m.op == Op::Azimuth && m.hasValue)
+            return m_gate.azimuthBearing(m.value, knownAzimuth()).refusal;
+        if (m.op == Op::Preset) {
+            const model::RotatorLimits l = m_gate.limits();
+            if (l.azMax - l.azMin < 360.0)
+                return tr("a Micro-2g preset goes to a bearing only the controller knows, and the limits "
+                          "(%1°..%2°) do not allow every bearing")
+                    .arg(l.azMin, 0, 'f', 0)
+                    .arg(l.azMax, 0, 'f', 0);
+        }
+        return {};
+    }
     // Angles in a raw line are mechanical positions, sent as typed; speeds
     // and bare moves drive towards a limit, as a jog does.
     switch (m.op) {

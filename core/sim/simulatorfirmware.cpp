@@ -339,6 +339,9 @@ void SimulatorFirmware::handle(const Message &m, QByteArray &out)
     case Op::Alarm:
     case Op::ConfigValue:
     case Op::Report: // rotctld's answer; no controller is sent one
+    case Op::SelectRotor: // the Micro-2g's own commands: served by its controller program
+    case Op::Preset:
+    case Op::StorePreset:
         ++m_counters.unknown;
         alarm("unknown", protocol::mnemonic(m.op), out);
         return;

@@ -221,6 +221,8 @@ QString applySimulatorOption(SimulatorOptions &o, QStringView rawName, QStringVi
         // rotctld is a network peer in front of a controller, not one.
         if (*d == protocol::Dialect::Rotctld)
             return bad(name, value, QStringLiteral("the simulator plays a controller; rotctld is reached with rotctld://"));
+        if (*d == protocol::Dialect::Micro2g)
+            return bad(name, value, QStringLiteral("the simulator does not serve the Micro-2g controller yet"));
         o.dialect = *d;
         return {};
     }
