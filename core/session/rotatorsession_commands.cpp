@@ -342,6 +342,14 @@ QString RotatorSession::rawMoveRefusal(const Message &m) const
     if (m_profile.dialect == Dialect::Micro2g) {
         if (m.op == Op::Azimuth && m.hasValue)
             return m_gate.azimuthBearing(m.value, knownAzimuth()).refusal;
+        // A go-to or preset that does not read (M400, X4rM, P9) might still
+        // turn a lenient controller somewhere nobody checked.
+        if (m.op == Op::Invalid && !m.text.isEmpty()) {
+            const char c = m.text.view()[0];
+            if (c == 'M' || c == 'm' || c == 'X' || c == 'x' || c == 'P' || c == 'p')
+                return tr("'%1' is not a Micro-2g go-to Slew can check (M035, P1)")
+                    .arg(QString::fromLatin1(m.text.view().toByteArray()));
+        }
         if (m.op == Op::Preset) {
             const model::RotatorLimits l = m_gate.limits();
             if (l.azMax - l.azMin < 360.0)

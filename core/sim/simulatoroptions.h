@@ -28,6 +28,7 @@ struct SimulatorOptions {
     bool checksum = false;    // every line `*HH`-framed both ways (docs/protocol.md, "Checksum")
     int baud = 0;             // 0: bytes move as fast as the link carries them
     bool manualClock = false; // time moves only when advanced (tests)
+    QString stateFile;        // micro2g: where calibration, presets and tolerances are kept; empty: lost at exit
 };
 
 struct SimulatorOptionInfo {
