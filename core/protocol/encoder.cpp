@@ -138,6 +138,21 @@ QByteArray encodeMicro2gToken(const Message &m)
             return {};
         return integer(m.value);
     case Op::Version: return m.isQuery() ? QByteArray("?") : QByteArray();
+    case Op::Tolerance:
+        if (m.isQuery() && !named)
+            return "T";
+        if (!named || !m.hasValue || m.value < 1 || m.value > 500)
+            return {};
+        return "T" + rotor + ' ' + integer(m.value); // Tn x
+    case Op::Calibration:
+        if (m.isQuery() && !named)
+            return "Z";
+        // ZnL mmm, ZnR xxxx=yyy, ZnD mmm: the text is what follows the rotor.
+        if (!named || m.text.isEmpty())
+            return {};
+        return "Z" + rotor + m.text.view().toByteArray();
+    case Op::AdcReadings: return m.isQuery() && !named ? QByteArray("V") : QByteArray();
+    case Op::RelayBits: return m.isQuery() && !named ? QByteArray("R") : QByteArray();
     default: return {};
     }
 }

@@ -64,6 +64,10 @@ constexpr OperationInfo kOperations[] = {
     {Op::SelectRotor,       "",       "select rotor",           R::None,                 false, false,  true ,   A::NeverSent,     true},
     {Op::Preset,            "P",      "go to preset",           R::None,                 false, false,  true ,   A::NeverSent,     true},
     {Op::StorePreset,       "L",      "store preset",           R::None,                 false, false,  true ,   A::NeverSent,     true},
+    {Op::Tolerance,         "T",      "tolerance",              R::None,                 false, false,  true ,   A::NeverSent,     false},
+    {Op::Calibration,       "Z",      "calibration",            R::None,                 false, false,  true ,   A::NeverSent,     false},
+    {Op::AdcReadings,       "V",      "A/D readings",           R::None,                 false, false,  true ,   A::NeverSent,     false},
+    {Op::RelayBits,         "R",      "relay bits",             R::None,                 false, false,  true ,   A::NeverSent,     false},
     // rotctld's answer to a command: `RPRT 0` when done (an error code
     // arrives as an alarm, see parser_rotctld.cpp).
     {Op::Report,            "RPRT",   "rotctld report",         R::None,                 false, false,  false,   A::NeverSent,     false},

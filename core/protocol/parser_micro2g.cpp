@@ -12,18 +12,28 @@
 //   Lm, Lnm        store the heading as preset m    -> StorePreset, value m
 //   S, Sn          stop                             -> StopAzimuth
 //   ?              some information                 -> Version query
+//   T, Z, V, R     the listings                     -> Tolerance, Calibration, AdcReadings, RelayBits queries
+//   Tn x           rotor n's tolerance, A/D counts  -> Tolerance, index n, value x
+//   ZnL mmm, ZnR mmm, ZnD mmm, ZnL xxxx=yyy, ZnR xxxx=yyy
+//                  calibrate rotor n                -> Calibration, index n, text `L mmm` (after Zn)
 // Answers:
 //   +0123          a heading (also +123, 123, 123.5, C1=123, +0123 with spaces around)
 //                  -> Azimuth 123 and Elevation 0: a Micro-2g rotor has no
 //                     elevation axis, and a position needs both
 //   ?> text        the controller refused a command -> Alarm with the text
 //   other text     the answer to `?`                -> Version with the line
-// T, Z, V, R and the calibration commands are not read yet: they arrive as
-// Invalid ("not read by Slew") and change nothing.
+//   T1=20 T2=20 .. the listings of T, V and R       -> Tolerance, AdcReadings, RelayBits with the
+//                  (any case, blanks or commas between, any number of rotors), text as Slew writes it
+//   Z1L 3990=000 Z1R 2440=090 Z1D 450
+//                  a rotor's calibration            -> Calibration, index 1, text the line
 
 #include "parser.h"
 
 #include "tokentext.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
 
 namespace slew::protocol {
 
@@ -63,6 +73,51 @@ bool heading(QByteArrayView s, double *out)
     return !s.isEmpty() && isDigit(s[0]) && s.size() <= 6 && parseDecimal(s, out) && *out >= 0 && *out <= 360;
 }
 
+// `T1=20 T2=20 T3=20 T4=20`, `V1=3990 ...`, `R1=- R2=L ...`: one item per
+// rotor, each the listing's letter, the rotor, `=` and a value. Written
+// back into out in Slew's form (upper case, one space between).
+bool listing(QByteArrayView line, char letter, InlineText *out)
+{
+    char buffer[InlineText::Capacity];
+    int length = 0;
+    int items = 0;
+    qsizetype i = 0;
+    while (i < line.size()) {
+        while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == ','))
+            ++i;
+        if (i == line.size())
+            break;
+        const qsizetype start = i;
+        while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != ',')
+            ++i;
+        const QByteArrayView item = line.sliced(start, i - start);
+        if (item.size() < 4 || upper(item[0]) != letter || !isRotor(item[1]) || item[2] != '=')
+            return false;
+        const QByteArrayView value = item.sliced(3);
+        const bool ok = letter == 'R' ? value.size() == 1 && (upper(value[0]) == 'L' || upper(value[0]) == 'R' || value[0] == '-')
+                                      : allDigits(value) && value.size() <= 4;
+        if (!ok || length + item.size() + 1 > int(sizeof buffer))
+            return false;
+        if (length > 0)
+            buffer[length++] = ' ';
+        for (char c : item)
+            buffer[length++] = upper(c);
+        ++items;
+    }
+    out->assign(QByteArrayView(buffer, length));
+    return items > 0;
+}
+
+// What follows `ZnL ` / `ZnR `: a bearing `mmm`, or `xxxx=yyy` (a reading
+// and its bearing); after `ZnD `, a degree range.
+bool calibrationValue(char which, QByteArrayView v)
+{
+    const qsizetype equals = v.indexOf('=');
+    if (which == 'D' || equals < 0)
+        return allDigits(v) && v.size() <= 3;
+    return allDigits(v.first(equals)) && equals <= 4 && allDigits(v.sliced(equals + 1)) && v.size() - equals - 1 <= 3;
+}
+
 } // namespace
 
 int Parser::pushMicro2g(char c)
@@ -88,6 +143,50 @@ int Parser::pushMicro2g(char c)
     }
     return m_readyCount;
 }
+
+namespace {
+
+// `ZnL mmm` and the like (one group) is a calibration command; `ZnL ..
+// ZnR .. ZnD ..` of one rotor is the answer to Z.
+Message calibration(QByteArrayView line)
+{
+    std::array<QByteArrayView, 6> words{};
+    int n = 0;
+    for (qsizetype i = 0; i < line.size();) {
+        while (i < line.size() && (line[i] == ' ' || line[i] == '\t'))
+            ++i;
+        const qsizetype start = i;
+        while (i < line.size() && line[i] != ' ' && line[i] != '\t')
+            ++i;
+        if (i == start)
+            continue;
+        if (n == int(words.size()))
+            return Message::invalid(line, "too many words for a Micro-2g calibration");
+        words[size_t(n++)] = line.sliced(start, i - start);
+    }
+    const char rotor = line[1];
+    if (!isRotor(rotor))
+        return Message::invalid(line, "rotors are 1 to 4");
+    auto group = [&](int w, char expected) {
+        const QByteArrayView head = words[size_t(w)];
+        const char which = head.size() == 3 ? upper(head[2]) : '?';
+        return head.size() == 3 && upper(head[0]) == 'Z' && head[1] == rotor
+            && (expected ? which == expected : (which == 'L' || which == 'R' || which == 'D'))
+            && calibrationValue(which, words[size_t(w + 1)]);
+    };
+    if (n == 2 && group(0, 0)) {
+        char text[16];
+        const int len = std::snprintf(text, sizeof text, "%c %.*s", upper(words[0][2]), int(words[1].size()),
+                                      words[1].data());
+        return Message::word(Op::Calibration, QByteArrayView(text, std::clamp(len, 0, int(sizeof text) - 1)),
+                             rotor - '0');
+    }
+    if (n == 6 && group(0, 'L') && group(2, 'R') && group(4, 'D'))
+        return Message::word(Op::Calibration, line, rotor - '0');
+    return Message::invalid(line, "ZnL mmm, ZnR mmm, ZnD mmm or ZnL/ZnR xxxx=yyy, rotor n 1 to 4");
+}
+
+} // namespace
 
 Parser::Classified Parser::classifyMicro2g(QByteArrayView line) const
 {
@@ -154,6 +253,28 @@ Parser::Classified Parser::classifyMicro2g(QByteArrayView line) const
         if (!m.isEmpty() && upper(m[0]) == 'M')
             return classifyMicro2g(m);
     }
+    // The listings, the tolerance and the calibration.
+    if (line.size() == 1 && (first == 'T' || first == 'Z' || first == 'V' || first == 'R')) {
+        const Op op = first == 'T' ? Op::Tolerance : first == 'Z' ? Op::Calibration
+            : first == 'V' ? Op::AdcReadings : Op::RelayBits;
+        return one(Message::query(op));
+    }
+    if ((first == 'T' || first == 'V' || first == 'R') && line.size() > 3 && isRotor(line[1]) && line[2] == '=') {
+        const Op op = first == 'T' ? Op::Tolerance : first == 'V' ? Op::AdcReadings : Op::RelayBits;
+        Message m = Message::word(op, {});
+        if (!listing(line, first, &m.text))
+            return one(Message::invalid(line, "malformed Micro-2g listing (T1=20 T2=20 ...)"));
+        return one(m);
+    }
+    // `T` or `Z` and a digit is a tolerance or calibration command, good or not.
+    if (first == 'T' && line.size() > 3 && isDigit(line[1]) && (line[2] == ' ' || line[2] == '\t')) {
+        const QByteArrayView counts = trimmedLine(line.sliced(3));
+        if (!isRotor(line[1]) || !parseUnsigned(counts, 3, &v) || v < 1 || v > 500)
+            return one(Message::invalid(line, "Tn x: rotor n 1 to 4, tolerance x 1 to 500"));
+        return one(Message::number(Op::Tolerance, v, line[1] - '0'));
+    }
+    if (first == 'Z' && line.size() > 1 && isDigit(line[1]))
+        return one(calibration(line));
     // A line of words is the answer to `?` (its text is free); the
     // listings of T, Z, V and R hold `=` and are not read yet.
     if (line.contains(' ') && !line.contains('=') && first >= 'A' && first <= 'Z')

@@ -384,6 +384,10 @@ void SimulatorFirmware::handle(const Message &m, QByteArray &out)
     case Op::SelectRotor: // the Micro-2g's own commands: served by its controller program
     case Op::Preset:
     case Op::StorePreset:
+    case Op::Tolerance:
+    case Op::Calibration:
+    case Op::AdcReadings:
+    case Op::RelayBits:
         ++m_counters.unknown;
         alarm("unknown", protocol::mnemonic(m.op), out);
         return;

@@ -28,7 +28,8 @@ private slots:
     void supportsWhatTheProgramHas()
     {
         const Dialect m = Dialect::Micro2g;
-        for (Op op : {Op::Azimuth, Op::StopAzimuth, Op::Preset, Op::StorePreset, Op::SelectRotor, Op::Version})
+        for (Op op : {Op::Azimuth, Op::StopAzimuth, Op::Preset, Op::StorePreset, Op::SelectRotor, Op::Version,
+                      Op::Tolerance, Op::Calibration, Op::AdcReadings, Op::RelayBits})
             QVERIFY2(dialectSupports(m, op), describe(op));
         // No elevation axis, no speeds, no registers, no park or homing.
         for (Op op : {Op::Elevation, Op::StopElevation, Op::VelocityLeft, Op::VelocityUp, Op::MoveLeft, Op::MoveUp,
@@ -57,6 +58,17 @@ private slots:
         QCOMPARE(encodeLine({Message::number(Op::StorePreset, 1, 4)}, m), QByteArray("L41\r"));
         QCOMPARE(encodeLine({Message::number(Op::SelectRotor, 3)}, m), QByteArray("3\r"));
         QCOMPARE(encodeLine({Message::query(Op::Version)}, m), QByteArray("?\r"));
+        QCOMPARE(encodeLine({Message::query(Op::Tolerance)}, m), QByteArray("T\r"));
+        QCOMPARE(encodeLine({Message::number(Op::Tolerance, 20, 1)}, m), QByteArray("T1 20\r"));
+        QCOMPARE(encodeLine({Message::query(Op::Calibration)}, m), QByteArray("Z\r"));
+        // The document's examples: the north-stop setup.
+        QCOMPARE(encodeLine({Message::word(Op::Calibration, "L 3990=000", 1)}, m), QByteArray("Z1L 3990=000\r"));
+        QCOMPARE(encodeLine({Message::word(Op::Calibration, "R 2440=090", 1)}, m), QByteArray("Z1R 2440=090\r"));
+        QCOMPARE(encodeLine({Message::word(Op::Calibration, "D 450", 1)}, m), QByteArray("Z1D 450\r"));
+        QCOMPARE(encodeLine({Message::query(Op::AdcReadings)}, m), QByteArray("V\r"));
+        QCOMPARE(encodeLine({Message::query(Op::RelayBits)}, m), QByteArray("R\r"));
+        QVERIFY(encodeLine({Message::number(Op::Tolerance, 501, 1)}, m).isEmpty());
+        QVERIFY(encodeLine({Message::number(Op::Tolerance, 20)}, m).isEmpty()); // Tn x names the rotor
         // Out of the program's ranges: nothing.
         QVERIFY(encodeLine({Message::number(Op::Preset, 4)}, m).isEmpty());
         QVERIFY(encodeLine({Message::number(Op::SelectRotor, 5)}, m).isEmpty());
@@ -83,7 +95,26 @@ private slots:
         row("bare refusal", "?>\r", {"alarm '?>'|"});
         row("information", "Micro-2g rotor controller: 4 rotors, default rotor 1, 0 turning, 9600 8N1\r\n",
             {"version 'Micro-2g rotor controller: 4 rotors, default rotor 1, 0 turning, 9600 8N1'|"});
-        row("listings not read yet", "T1=20 T2=20 T3=20 T4=20\r", {"unreadable input 'T1=20 T2=20 T3=20 T4=20'|"});
+        // The listings (Slew's forms, and the variants read).
+        row("tolerances", "T1=20 T2=20 T3=20 T4=20\r", {"tolerance 'T1=20 T2=20 T3=20 T4=20'|"});
+        row("tolerances, lower case and commas", "t1=20,t2=35, t3=5\r", {"tolerance 'T1=20 T2=35 T3=5'|"});
+        row("A/D readings", "V1=3990 V2=2440 V3=0 V4=4095\r", {"A/D readings 'V1=3990 V2=2440 V3=0 V4=4095'|"});
+        row("relay bits", "R1=- R2=L R3=r R4=-\r", {"relay bits 'R1=- R2=L R3=R R4=-'|"});
+        row("listings malformed", "T1=x\rV5=1\rR1=Q\r",
+            {"unreadable input 'T1=x'|", "unreadable input 'V5=1'|", "unreadable input 'R1=Q'|"});
+        row("calibration answer", "Z1L 3990=000 Z1R 2440=090 Z1D 450\r",
+            {"calibration#1 'Z1L 3990=000 Z1R 2440=090 Z1D 450'|"});
+        // The document's setups, as commands.
+        row("north stop setup", "Z1L 3990=000\rZ1R 2440=090\rZ1D 450\r",
+            {"calibration#1 'L 3990=000'|", "calibration#1 'R 2440=090'|", "calibration#1 'D 450'|"});
+        row("south stop setup", "Z1L 3990=180\rZ1R 2440=270\r", {"calibration#1 'L 3990=180'|", "calibration#1 'R 2440=270'|"});
+        row("calibrate at the present reading", "z2l 045\rZ2R 135\r", {"calibration#2 'L 045'|", "calibration#2 'R 135'|"});
+        row("calibration malformed", "Z5L 000\rZ1Q 000\rZ1D 4500\rZ1L 39900=000\r",
+            {"unreadable input 'Z5L 000'|", "unreadable input 'Z1Q 000'|", "unreadable input 'Z1D 4500'|",
+             "unreadable input 'Z1L 39900=000'|"});
+        row("listing queries", "T\rZ\rV\rR\r", {"tolerance|", "calibration|", "A/D readings|", "relay bits|"});
+        row("set tolerance", "T1 20\rT4 500\rT2 0\rT9 5\r",
+            {"tolerance#1=20|", "tolerance#4=500|", "unreadable input 'T2 0'|", "unreadable input 'T9 5'|"});
         // Commands, as a host sends them (the raw-line gate reads these).
         row("select rotor", "2\r5\r", {"select rotor=2|", "unreadable input '5'|"});
         row("heading queries", "C\rC3\rc\r", {"azimuth|", "azimuth#3|", "azimuth|"});
