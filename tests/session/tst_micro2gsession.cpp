@@ -116,6 +116,27 @@ private slots:
         QVERIFY2(refused.error().contains(QStringLiteral("micro2g.json")), qPrintable(refused.error()));
     }
 
+    void slewSimOverItsPty()
+    {
+        // The controller's own line settings: 9600 8N1, paced by slew-sim.
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString path = dir.filePath(QStringLiteral("micro2g"));
+        SlewSimProcess sim;
+        QVERIFY2(sim.start({"--pty", path, "--dialect", "micro2g", "--baud", "9600"}), qPrintable(sim.error()));
+        RotatorSession s;
+        QVERIFY(open(s, QStringLiteral("serial:%1?baud=9600&rotor=4").arg(path), false));
+        QVERIFY2(s.version().startsWith(QStringLiteral("Micro-2g")), qPrintable(s.version()));
+        QSignalSpy sent(&s, &RotatorSession::bytesSent);
+        QVERIFY(s.gotoPosition(30, 0));
+        QCOMPARE(sent.first().at(0).toByteArray(), QByteArray("4\rM030\r"));
+        QTRY_VERIFY_WITH_TIMEOUT(s.azimuth() > 10, 15000); // rotor 4 turns, at 6 degrees a second
+        QVERIFY(wrote(sent, "C4\r"));
+        QVERIFY(s.stop());
+        s.disconnectFromRotator();
+        QCOMPARE(sim.stop(), 0);
+    }
+
 private:
     static bool open(RotatorSession &s, const QString &uri, bool manualClock = true)
     {
