@@ -62,6 +62,8 @@ int main(int argc, char *argv[])
         fail(log.error());
 
     Simulator simulator(options);
+    if (!simulator.stateFileError().isEmpty())
+        fail(QStringLiteral("--state-file %1").arg(simulator.stateFileError()));
     ConnectionSettings settings;
     settings.dialect = options.dialect;
     settings.unsolicited = options.unsolicited;

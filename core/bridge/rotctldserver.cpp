@@ -42,6 +42,7 @@ int hamlibModelFor(protocol::Dialect d)
     case protocol::Dialect::Gs232A: return 601;
     case protocol::Dialect::Gs232B: return 603;
     case protocol::Dialect::Rotctld: return 2; // netrotctl: Slew is itself behind a rotctld
+    case protocol::Dialect::Micro2g: return 1; // Hamlib has no Micro-2g backend: its dummy
     }
     return 204;
 }

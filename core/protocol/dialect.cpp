@@ -16,6 +16,7 @@ QString dialectName(Dialect d)
     case Dialect::Gs232A: return QStringLiteral("gs232a");
     case Dialect::Gs232B: return QStringLiteral("gs232b");
     case Dialect::Rotctld: return QStringLiteral("rotctld");
+    case Dialect::Micro2g: return QStringLiteral("micro2g");
     }
     return {};
 }
@@ -24,7 +25,7 @@ const QList<Dialect> &allDialects()
 {
     static const QList<Dialect> all{Dialect::Easycomm1, Dialect::Easycomm2, Dialect::Easycomm3,
                                     Dialect::SatNogs,   Dialect::Gs232A,    Dialect::Gs232B,
-                                    Dialect::Rotctld};
+                                    Dialect::Rotctld,   Dialect::Micro2g};
     return all;
 }
 
@@ -41,14 +42,21 @@ bool isGs232(Dialect d)
     return d == Dialect::Gs232A || d == Dialect::Gs232B;
 }
 
+bool isAzimuthOnly(Dialect d)
+{
+    return d == Dialect::Micro2g;
+}
+
+// Micro-2g counts here too: its go-to names one rotor's azimuth, and the
+// session then treats the (always 0) elevation as the other axis.
 bool setsBothAxesTogether(Dialect d)
 {
-    return d == Dialect::Easycomm1 || isGs232(d) || d == Dialect::Rotctld;
+    return d == Dialect::Easycomm1 || isGs232(d) || d == Dialect::Rotctld || d == Dialect::Micro2g;
 }
 
 char lineTerminator(Dialect d)
 {
-    return isGs232(d) ? '\r' : '\n';
+    return isGs232(d) || d == Dialect::Micro2g ? '\r' : '\n';
 }
 
 std::optional<Dialect> dialectFromName(QStringView name)
@@ -65,6 +73,8 @@ bool dialectSupports(Dialect d, Op op)
     const OperationInfo &info = operationInfo(op);
     if (d == Dialect::Rotctld)
         return info.rotctld;
+    if (d == Dialect::Micro2g)
+        return info.micro2g;
     if (isGs232(d))
         return info.gs232;
     switch (info.easycomm) {
@@ -79,8 +89,8 @@ bool dialectSupports(Dialect d, Op op)
 
 int angleDecimals(Dialect d)
 {
-    if (isGs232(d))
-        return 0; // whole degrees: W010 020
+    if (isGs232(d) || d == Dialect::Micro2g)
+        return 0; // whole degrees: W010 020, M035
     if (d == Dialect::Rotctld)
         return 2; // as rotctld prints its own answers
     return d == Dialect::Easycomm3 ? 2 : 1;

@@ -1,6 +1,6 @@
 #pragma once
 // The command sets Slew speaks: the flavours of Easycomm, Yaesu GS-232, and
-// Hamlib's rotctld network protocol. docs/protocol.md has the table of every
+// Hamlib's rotctld network protocol, and the Micro-2g rotor controller. docs/protocol.md has the table of every
 // command and its wire form per dialect, and why each choice was made.
 
 #include "message.h"
@@ -20,6 +20,7 @@ enum class Dialect : std::uint8_t {
     Gs232A,    // Yaesu GS-232A: W/M/C2/S/A/E/R/L/U/D/X, position `+0aaa+0eee` (Hamlib model 601)
     Gs232B,    // Yaesu GS-232B: the same commands, position `AZ=aaa  EL=eee` (Hamlib model 603)
     Rotctld,   // Hamlib's rotctld over TCP: P, p, S, K, R, M, _; answers `RPRT n` or bare lines
+    Micro2g,   // the Micro-2g program: four azimuth rotors, Cn, Mqqq, Sn, Pnm, Lnm; heading `+0123`
 };
 
 // Every dialect, in the order the UI lists them.
@@ -27,12 +28,16 @@ const QList<Dialect> &allDialects();
 // "easycomm1, easycomm2, ..., rotctld", for help texts and messages.
 QString dialectNameList();
 bool isGs232(Dialect d);
+// A controller of azimuth rotors only (Micro-2g): no elevation to command,
+// and its position reads as elevation 0.
+bool isAzimuthOnly(Dialect d);
 
 // Whether a set position always names both axes (Easycomm I's one line,
 // GS-232's W, rotctld's P): a one-axis move must then name the other too.
 bool setsBothAxesTogether(Dialect d);
 
-// What ends a line Slew sends: `\n` for Easycomm and rotctld, `\r` for GS-232.
+// What ends a line Slew sends: `\n` for Easycomm and rotctld, `\r` for GS-232
+// and Micro-2g.
 char lineTerminator(Dialect d);
 
 QString dialectName(Dialect d);                              // "easycomm2"

@@ -74,6 +74,7 @@ QByteArray encodeGs232Token(const Message &m)
     case Op::StopElevation: return "E";
     case Op::Speed: return "X" + QByteArray::number(std::clamp(int(m.value), 1, 4));
     case Op::KeepAlive: return "?";
+    case Op::Status: return m.hasValue ? QByteArray() : QByteArray("GS");
     default: return {};
     }
 }
@@ -110,11 +111,57 @@ QByteArray encodeRotctldToken(const Message &m)
     }
 }
 
-// Whether a line holds one command (GS-232 and rotctld) rather than several
-// tokens (Easycomm).
+// The Micro-2g program's commands (its header comment): a letter, the
+// rotor's digit when one is named (index 1..4), then the argument. Mqqq has
+// no rotor digit, as it turns the default rotor: a named rotor is made the
+// default first (`2\rM035`). A bearing goes out as 0..359: the program
+// picks the shorter way inside its overlap itself.
+QByteArray encodeMicro2gToken(const Message &m)
+{
+    const bool named = m.index >= 1 && m.index <= 4;
+    const QByteArray rotor = named ? QByteArray::number(m.index) : QByteArray();
+    switch (m.op) {
+    case Op::Azimuth: {
+        if (!m.hasValue)
+            return "C" + rotor;
+        const long long bearing = ((wholeNumber(m.value) % 360) + 360) % 360;
+        return (named ? rotor + '\r' : QByteArray()) + "M" + threeDigits(double(bearing));
+    }
+    case Op::StopAzimuth: return "S" + rotor;
+    case Op::Preset:
+    case Op::StorePreset:
+        if (!m.hasValue || m.value < 1 || m.value > 3)
+            return {};
+        return (m.op == Op::Preset ? "P" : "L") + rotor + integer(m.value);
+    case Op::SelectRotor:
+        if (!m.hasValue || m.value < 1 || m.value > 4)
+            return {};
+        return integer(m.value);
+    case Op::Version: return m.isQuery() ? QByteArray("?") : QByteArray();
+    case Op::Tolerance:
+        if (m.isQuery() && !named)
+            return "T";
+        if (!named || !m.hasValue || m.value < 1 || m.value > 500)
+            return {};
+        return "T" + rotor + ' ' + integer(m.value); // Tn x
+    case Op::Calibration:
+        if (m.isQuery() && !named)
+            return "Z";
+        // ZnL mmm, ZnR xxxx=yyy, ZnD mmm: the text is what follows the rotor.
+        if (!named || m.text.isEmpty())
+            return {};
+        return "Z" + rotor + m.text.view().toByteArray();
+    case Op::AdcReadings: return m.isQuery() && !named ? QByteArray("V") : QByteArray();
+    case Op::RelayBits: return m.isQuery() && !named ? QByteArray("R") : QByteArray();
+    default: return {};
+    }
+}
+
+// Whether a line holds one command (GS-232, rotctld, Micro-2g) rather than
+// several tokens (Easycomm).
 bool oneCommandALine(Dialect d)
 {
-    return isGs232(d) || d == Dialect::Rotctld;
+    return isGs232(d) || d == Dialect::Rotctld || d == Dialect::Micro2g;
 }
 
 } // namespace
@@ -127,6 +174,8 @@ QByteArray encodeToken(const Message &m, Dialect d)
         return encodeGs232Token(m);
     if (d == Dialect::Rotctld)
         return encodeRotctldToken(m);
+    if (d == Dialect::Micro2g)
+        return encodeMicro2gToken(m);
     QByteArray out = mnemonic(m.op).toByteArray();
     switch (operationInfo(m.op).argument) {
     case Argument::Angle:
@@ -178,6 +227,10 @@ QByteArray encodeReport(const Message &m, Dialect d)
     }
     if (!isGs232(d))
         return encodeToken(m, d);
+    // GS-232's status answer (Slew's choice, docs/protocol.md): `ST=` and
+    // the status bits in decimal, as Easycomm's GS carries them.
+    if (m.op == Op::Status)
+        return m.hasValue ? "ST=" + integer(m.value) : QByteArray();
     // GS-232 reports differ from its commands: `+0aaa` (A) or `AZ=aaa` (B).
     if (!m.hasValue || (m.op != Op::Azimuth && m.op != Op::Elevation))
         return {};
@@ -226,8 +279,10 @@ QByteArray encodeEasycomm1Line(double az, double el, quint64 up, QByteArrayView 
     return line;
 }
 
-QByteArray encodeSetPosition(double az, double el, Dialect d)
+QByteArray encodeSetPosition(double az, double el, Dialect d, int rotor)
 {
+    if (d == Dialect::Micro2g) // azimuth only: the elevation has no command
+        return encodeLine({Message::number(Op::Azimuth, az, rotor > 0 ? rotor : -1)}, d);
     if (d == Dialect::Easycomm1)
         return encodeEasycomm1Line(az, el);
     if (isGs232(d))
@@ -237,8 +292,10 @@ QByteArray encodeSetPosition(double az, double el, Dialect d)
     return encodeLine({Message::number(Op::Azimuth, az), Message::number(Op::Elevation, el)}, d);
 }
 
-QByteArray encodeQueryPosition(Dialect d)
+QByteArray encodeQueryPosition(Dialect d, int rotor)
 {
+    if (d == Dialect::Micro2g)
+        return encodeLine({Message::query(Op::Azimuth, rotor > 0 ? rotor : -1)}, d);
     if (d == Dialect::Easycomm1)
         return {}; // Easycomm I has no way to ask
     if (isGs232(d))
@@ -248,8 +305,22 @@ QByteArray encodeQueryPosition(Dialect d)
     return encodeLine({Message::query(Op::Azimuth), Message::query(Op::Elevation)}, d);
 }
 
-QByteArray encodeStop(bool azimuth, bool elevation, Dialect d)
+QByteArray encodeOffset(double azimuth, double elevation, Dialect d)
 {
+    if (!dialectSupports(d, Op::Offset))
+        return {};
+    auto signedThree = [](double v) {
+        char buffer[32];
+        const int n = std::snprintf(buffer, sizeof buffer, "%+04lld", wholeNumber(v));
+        return QByteArray(buffer, n);
+    };
+    return "O" + signedThree(azimuth) + signedThree(elevation) + lineTerminator(d);
+}
+
+QByteArray encodeStop(bool azimuth, bool elevation, Dialect d, int rotor)
+{
+    if (d == Dialect::Micro2g) // one axis: a stop of elevation alone has nothing to stop
+        return azimuth ? encodeLine({Message::query(Op::StopAzimuth, rotor > 0 ? rotor : -1)}, d) : QByteArray();
     if (d == Dialect::Easycomm1 || (!azimuth && !elevation))
         return {};
     if (azimuth && elevation && isGs232(d))

@@ -21,10 +21,15 @@ QByteArray encodeToken(const Message &m, Dialect d);
 // token is unsupported.
 QByteArray encodeLine(std::initializer_list<Message> tokens, Dialect d);
 
-// The commands the session sends, in each dialect's own form.
-QByteArray encodeSetPosition(double az, double el, Dialect d); // Easycomm I: full line; rotctld `P az el`
-QByteArray encodeQueryPosition(Dialect d);                     // `AZ EL\n`; empty for Easycomm I; `p`
-QByteArray encodeStop(bool azimuth, bool elevation, Dialect d); // `SA SE\n`; rotctld `S` stops both
+// The commands the session sends, in each dialect's own form. rotor names
+// one rotor of a multi-rotor controller (Micro-2g: 1..4); 0 addresses the
+// controller's default rotor, and every other dialect ignores it.
+QByteArray encodeSetPosition(double az, double el, Dialect d, int rotor = 0); // Easycomm I: full line; rotctld `P az el`; Micro-2g `Mqqq`
+QByteArray encodeQueryPosition(Dialect d, int rotor = 0);                     // `AZ EL\n`; empty for Easycomm I; `p`; `Cn`
+// GS-232's relative move `O+010-005`, whole degrees, each offset signed;
+// empty in every other dialect.
+QByteArray encodeOffset(double azimuth, double elevation, Dialect d);
+QByteArray encodeStop(bool azimuth, bool elevation, Dialect d, int rotor = 0); // `SA SE\n`; rotctld `S` stops both; `Sn`
 // What holds the stopped axes with the drive engaged: a zero speed (`VL000
 // VU000\n`), which brakes a drive that would coast. Empty for a dialect
 // without speed commands.

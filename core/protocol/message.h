@@ -56,6 +56,16 @@ enum class Op : std::uint8_t {
     // GS-232 map onto Azimuth, Elevation, StopAzimuth, StopElevation, Move*.
     Speed,         // Xn, n 1..4: the speed of the manual moves
     KeepAlive,     // ?   (a keep-alive), answered `OK` (docs/protocol.md: Slew's choice)
+    Offset,        // O+aaa-eee: a relative move. One message per axis, index 0 azimuth, 1
+                   // elevation, value the signed offset in degrees (GS-232's O, the easycom library)
+    // Micro-2g only (docs/protocol.md): index is the rotor, -1 for the default one.
+    SelectRotor,   // n: make rotor n (value) the default rotor
+    Preset,        // Pm / Pnm: turn to preset m (value, 1..3)
+    StorePreset,   // Lm / Lnm: store the present heading as preset m
+    Tolerance,     // T (query) / Tn x (set rotor n to x A/D counts); answered `T1=20 T2=20 ...` (text)
+    Calibration,   // Z (query) / ZnL mmm, ZnR xxxx=yyy, ZnD mmm (text after Zn); answered a line per rotor
+    AdcReadings,   // V: answered `V1=3990 V2=...` (text)
+    RelayBits,     // R: answered `R1=- R2=L ...` (text)
     // rotctld only (docs/protocol.md): its other answers map onto Azimuth,
     // Elevation, Version and Alarm.
     Report,        // RPRT 0: a command done; value holds the code

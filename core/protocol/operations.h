@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // One table of what each operation is: its Easycomm mnemonic, which dialects
-// send it (the Easycomm flavours, GS-232, rotctld), what follows the mnemonic on the wire, and whether it is a bare
+// send it (the Easycomm flavours, GS-232, rotctld, Micro-2g), what follows the mnemonic on the wire, and whether it is a bare
 // command that no controller answers with a value. The encoder, the dialect
 // checks and the session's echo filter all read this table; docs/protocol.md
 // has a row for every entry.
@@ -42,6 +42,7 @@ struct OperationInfo {
     EasycommReach easycomm;
     bool gs232;              // GS-232 A/B has a command for it (docs/protocol.md)
     bool rotctld;            // rotctld has a command for it (the encoder writes its form)
+    bool micro2g;            // the Micro-2g program has a command for it (docs/protocol.md)
     Argument argument;
     bool commandOnly;        // never answered with a value: an echo of it is only an echo
 };

@@ -44,6 +44,8 @@ int Parser::push(char c)
     m_readyCount = 0;
     if (m_dialect == Dialect::Rotctld)
         return pushRotctld(c);
+    if (m_dialect == Dialect::Micro2g)
+        return pushMicro2g(c);
     if (isLineEnd(c)) {
         if (m_length > 0 || m_overflow)
             finishToken(true);
@@ -152,6 +154,8 @@ Parser::Classified Parser::classify(QByteArrayView t) const
     }
     if (m_dialect == Dialect::Rotctld)
         return classifyRotctld(t); // a whole line, spaces and all
+    if (m_dialect == Dialect::Micro2g)
+        return classifyMicro2g(t);
     if (!isPrintable(t)) {
         Classified c;
         c.first = Message::invalid(t, "unprintable byte in token");

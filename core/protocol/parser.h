@@ -18,6 +18,8 @@
 // rotctld is read a whole line at a time instead (parser_rotctld.cpp): its
 // answers are lines (`RPRT 0`, `180.00`, a model name with spaces), and the
 // two lines of a `p` answer are handed out together once both have arrived.
+// Micro-2g is read a whole line at a time too (parser_micro2g.cpp): its
+// answers are lines with spaces in them.
 
 #include "dialect.h"
 #include "message.h"
@@ -83,6 +85,8 @@ private:
     int pushRotctld(char c);
     void finishRotctldLine();
     Classified classifyRotctld(QByteArrayView line) const;
+    int pushMicro2g(char c);
+    Classified classifyMicro2g(QByteArrayView line) const;
     bool pendingWaitsForArgument() const;
 
     Dialect m_dialect;

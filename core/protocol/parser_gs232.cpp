@@ -6,9 +6,63 @@
 
 #include "tokentext.h"
 
+#include <cstring>
+#include <optional>
+
 namespace slew::protocol {
 
 using namespace text;
+
+namespace {
+
+// One signed offset: a sign or none, up to three digits (a decimal is
+// tolerated), at most 450 either way since no rotator turns further.
+bool offset(QByteArrayView s, double *out)
+{
+    const QByteArrayView digits = (!s.isEmpty() && (s[0] == '+' || s[0] == '-')) ? s.sliced(1) : s;
+    return !digits.isEmpty() && digits.size() <= 6 && isDigit(digits[0]) && parseDecimal(s, out)
+        && *out >= -450 && *out <= 450;
+}
+
+// `+010-005`, `010+005`, `-5+0`: the second offset starts at the first sign
+// after the first byte, so it must carry one.
+bool offsetPair(QByteArrayView s, double *az, double *el)
+{
+    qsizetype split = -1;
+    for (qsizetype i = 1; i < s.size(); ++i) {
+        if (s[i] == '+' || s[i] == '-') {
+            split = i;
+            break;
+        }
+    }
+    return split > 0 && offset(s.first(split), az) && offset(s.sliced(split), el);
+}
+
+// The status after `ST=`: a number of at most 16 bits (decimal, or hex
+// after 0x) or a word for one state, in the bits of Easycomm's GS.
+std::optional<int> statusBits(QByteArrayView s)
+{
+    struct Word {
+        const char *name;
+        int bits;
+    };
+    static constexpr Word kWords[] = {{"IDLE", 1}, {"MOVING", 2}, {"POINTING", 4}, {"ERROR", 8}};
+    for (const Word &w : kWords) {
+        if (s.size() == qsizetype(std::strlen(w.name)) && startsWithMnemonic(s, w.name))
+            return w.bits;
+    }
+    if (s.size() > 2 && s[0] == '0' && upper(s[1]) == 'X') {
+        bool ok = false;
+        const int v = s.sliced(2).toInt(&ok, 16);
+        return ok && s.size() <= 6 && v >= 0 ? std::optional<int>(v) : std::nullopt;
+    }
+    double v = 0;
+    if (!parseUnsigned(s, 5, &v) || v > 0xFFFF)
+        return std::nullopt;
+    return int(v);
+}
+
+} // namespace
 
 Parser::Classified Parser::classifyGs232(QByteArrayView t) const
 {
@@ -48,6 +102,15 @@ Parser::Classified Parser::classifyGs232(QByteArrayView t) const
     }
     if (t == "?>")
         return one(Message::invalid(t, "the controller did not understand the command (?>)", Refusal::Unknown));
+    if (t.size() == 2 && upper(t[0]) == 'G' && upper(t[1]) == 'S')
+        return one(Message::query(Op::Status));
+    // The answer to GS: `ST=6` (Slew's choice); `ST6`, `ST=006`, `ST=0x06`
+    // and the words IDLE, MOVING, POINTING, ERROR are read too.
+    if (t.size() > 2 && startsWithMnemonic(t, "ST")) {
+        if (const std::optional<int> bits = statusBits(t.sliced(t[2] == '=' ? 3 : 2)))
+            return one(Message::number(Op::Status, *bits));
+        return one(Message::invalid(t, "malformed GS-232 status (ST=n)"));
+    }
     if (t == "C2" || t == "c2")
         return two(Message::query(Op::Azimuth), Message::query(Op::Elevation));
     if (t == "?")
@@ -81,6 +144,12 @@ Parser::Classified Parser::classifyGs232(QByteArrayView t) const
         if (!degrees(rest, &a))
             return one(Message::invalid(t, "malformed GS-232 angle"));
         return one(Message::number(Op::Elevation, a));
+    case 'O': { // O+aaa-eee: a relative move (the easycom library's table)
+        double da = 0, de = 0;
+        if (!offsetPair(rest, &da, &de))
+            return one(Message::invalid(t, "malformed GS-232 relative move (O+010-005)"));
+        return two(Message::number(Op::Offset, da, 0), Message::number(Op::Offset, de, 1));
+    }
     case 'X': {
         if (rest.size() != 1 || rest[0] < '1' || rest[0] > '4')
             return one(Message::invalid(t, "speed must be X1 to X4"));

@@ -59,7 +59,12 @@ RotatorSession::~RotatorSession()
 void RotatorSession::setProfile(const model::RotatorProfile &profile)
 {
     m_profile = profile;
-    m_gate.setProfileLimits(profile.limits);
+    // An azimuth-only controller (Micro-2g) has no elevation to go to: the
+    // gate allows elevation 0 alone, so every path refuses any other there.
+    model::RotatorLimits limits = profile.limits;
+    if (protocol::isAzimuthOnly(profile.dialect))
+        limits.elMin = limits.elMax = 0.0;
+    m_gate.setProfileLimits(limits);
     m_parser.setDialect(profile.dialect);
     m_pollTimer.setInterval(1000 / std::clamp(profile.pollHz, 1, 50));
     const int pollPeriod = m_pollTimer.interval();
@@ -148,6 +153,7 @@ void RotatorSession::onLinkOpened()
     m_parser.reset();
     m_frames.reset();
     m_checksum = m_link->hints().checksum;
+    m_rotor = m_link->hints().rotor.value_or(0);
     m_activeTarget.reset();
     m_deviceEchoes = false;
     m_sent = {}; // stamped with the last link's clock

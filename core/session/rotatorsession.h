@@ -95,6 +95,9 @@ public:
     // The link's lines carry the XOR checksum (`checksum=1`, link.h), and
     // how many received lines were refused for a wrong or missing one.
     bool checksumming() const { return m_checksum; }
+    // The rotor of a multi-rotor controller this session drives (`rotor=n`
+    // on the link's URI; 0: the controller's default rotor).
+    int rotor() const { return m_rotor; }
     int checksumFailures() const { return m_checksumFailures; }
     // Refused frames in a row after which badFramesAlarm(true) is raised.
     static constexpr int kBadFramesAlarm = 3;
@@ -120,6 +123,11 @@ public slots:
     // exactly that mechanical angle (a tuning step).
     CommandResult gotoAxis(slew::session::Axis axis, double degrees, AzimuthIs meaning = AzimuthIs::Bearing);
     CommandResult moveAxis(slew::session::Axis axis, double degreesPerSecond); // + is right (CW) / up
+    // A move by offsets from the present (polled) position, as GS-232's
+    // `O+aaa-eee`: the target is worked out here, passes the gate as the
+    // mechanical positions it names, and goes out as an absolute set
+    // position in every dialect (docs/protocol.md says why not `O`).
+    CommandResult moveBy(double azimuthOffset, double elevationOffset);
     CommandResult stop(slew::session::Axes axes = slew::session::Axes::Both);
     CommandResult park();
     CommandResult home();
@@ -198,6 +206,7 @@ private:
     Options m_options;
     protocol::Parser m_parser;
     bool m_checksum = false;
+    int m_rotor = 0; // from the link's hints when it opens
     protocol::ChecksumReader m_frames; // checksummed lines are checked here before the parser
     int m_checksumFailures = 0;
     int m_badFramesInARow = 0;

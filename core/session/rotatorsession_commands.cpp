@@ -56,7 +56,7 @@ CommandResult RotatorSession::gotoPosition(double az, double el)
     if (!check.allowed())
         return refuseMove(check.refusal);
     const double targetAz = check.azimuth;
-    const QByteArray line = protocol::encodeSetPosition(targetAz, el, m_profile.dialect);
+    const QByteArray line = protocol::encodeSetPosition(targetAz, el, m_profile.dialect, m_rotor);
     rememberSent(Message::number(Op::Azimuth, std::round(targetAz * 100) / 100));
     rememberSent(Message::number(Op::Elevation, std::round(el * 100) / 100));
     m_jogSpeed = {0.0, 0.0};
@@ -101,7 +101,7 @@ CommandResult RotatorSession::gotoAxis(Axis axis, double degrees, AzimuthIs mean
         rememberSent(Message::number(Op::Azimuth, std::round(a * 100) / 100));
         rememberSent(Message::number(Op::Elevation, std::round(e * 100) / 100));
         m_jogSpeed = {0.0, 0.0};
-        writeMove(protocol::encodeSetPosition(a, e, d));
+        writeMove(protocol::encodeSetPosition(a, e, d, m_rotor));
         m_activeTarget = PointingTarget{a, e};
         m_targetAz = a;
         m_targetEl = e;
@@ -117,6 +117,37 @@ CommandResult RotatorSession::gotoAxis(Axis axis, double degrees, AzimuthIs mean
         (az ? m_activeTarget->azimuth : m_activeTarget->elevation) = target;
     (az ? m_targetAz : m_targetEl) = target;
     emit targetChanged(m_targetAz, m_targetEl);
+    return {};
+}
+
+CommandResult RotatorSession::moveBy(double azimuthOffset, double elevationOffset)
+{
+    if (auto linked = requireLink(); !linked)
+        return linked;
+    if (!std::isfinite(azimuthOffset) || !std::isfinite(elevationOffset))
+        return refuse(tr("an offset is not a number"));
+    if (!hasPosition())
+        return refuse(tr("a relative move needs the present position, which is not known yet"));
+    // The offsets are added to the mechanical position the session last
+    // read, and the sum is checked and sent as such: the controller is told
+    // where to go, not how far, so it cannot end up anywhere the gate did
+    // not see even if it has moved since the last poll.
+    const double a = m_az + azimuthOffset;
+    const double e = m_el + elevationOffset;
+    const model::MoveCheck check = m_gate.mechanical(a, e);
+    if (!check.allowed())
+        return refuseMove(check.refusal);
+    const QByteArray line = protocol::encodeSetPosition(a, e, m_profile.dialect, m_rotor);
+    if (line.isEmpty())
+        return refuse(tr("%1 has no command to set a position").arg(protocol::dialectName(m_profile.dialect)));
+    rememberSent(Message::number(Op::Azimuth, std::round(a * 100) / 100));
+    rememberSent(Message::number(Op::Elevation, std::round(e * 100) / 100));
+    m_jogSpeed = {0.0, 0.0};
+    writeMove(line);
+    m_activeTarget = PointingTarget{a, e};
+    m_targetAz = a;
+    m_targetEl = e;
+    emit targetChanged(a, e);
     return {};
 }
 
@@ -165,7 +196,7 @@ CommandResult RotatorSession::stop(Axes axes)
         m_jogSpeed[0] = 0.0;
     if (el)
         m_jogSpeed[1] = 0.0;
-    const QByteArray line = protocol::encodeStop(az, el, m_profile.dialect);
+    const QByteArray line = protocol::encodeStop(az, el, m_profile.dialect, m_rotor);
     if (line.isEmpty())
         return refuse(tr("%1 has no stop command").arg(protocol::dialectName(m_profile.dialect)));
     m_activeTarget.reset();
@@ -299,6 +330,36 @@ QString RotatorSession::rawMoveRefusal(const Message &m) const
     // may go, each through the gate below.
     if (m_profile.dialect == Dialect::Rotctld && (m.op == Op::Invalid || m.op == Op::Report || !m.text.isEmpty()))
         return tr("'%1' is not a rotctld command Slew can check").arg(QString::fromLatin1(m.text.view().toByteArray()));
+    // A GS-232 line that starts like a relative move but does not read as
+    // one might still move a lenient controller by an amount nobody checked.
+    if (protocol::isGs232(m_profile.dialect) && m.op == Op::Invalid && !m.text.isEmpty()
+        && (m.text.view()[0] == 'O' || m.text.view()[0] == 'o'))
+        return tr("'%1' is not a relative move Slew can check (O+010-005)")
+            .arg(QString::fromLatin1(m.text.view().toByteArray()));
+    // Micro-2g (docs/protocol.md): Mqqq is a bearing the program reaches the
+    // short way, so it is checked as one; a preset goes to a bearing only
+    // the controller knows, which is safe only where every bearing is.
+    if (m_profile.dialect == Dialect::Micro2g) {
+        if (m.op == Op::Azimuth && m.hasValue)
+            return m_gate.azimuthBearing(m.value, knownAzimuth()).refusal;
+        // A go-to or preset that does not read (M400, X4rM, P9) might still
+        // turn a lenient controller somewhere nobody checked.
+        if (m.op == Op::Invalid && !m.text.isEmpty()) {
+            const char c = m.text.view()[0];
+            if (c == 'M' || c == 'm' || c == 'X' || c == 'x' || c == 'P' || c == 'p')
+                return tr("'%1' is not a Micro-2g go-to Slew can check (M035, P1)")
+                    .arg(QString::fromLatin1(m.text.view().toByteArray()));
+        }
+        if (m.op == Op::Preset) {
+            const model::RotatorLimits l = m_gate.limits();
+            if (l.azMax - l.azMin < 360.0)
+                return tr("a Micro-2g preset goes to a bearing only the controller knows, and the limits "
+                          "(%1°..%2°) do not allow every bearing")
+                    .arg(l.azMin, 0, 'f', 0)
+                    .arg(l.azMax, 0, 'f', 0);
+        }
+        return {};
+    }
     // Angles in a raw line are mechanical positions, sent as typed; speeds
     // and bare moves drive towards a limit, as a jog does.
     switch (m.op) {
@@ -306,6 +367,14 @@ QString RotatorSession::rawMoveRefusal(const Message &m) const
         return m.hasValue ? m_gate.azimuthPosition(m.value).refusal : QString();
     case Op::Elevation:
         return m.hasValue ? m_gate.elevation(m.value).refusal : QString();
+    case Op::Offset: {
+        // GS-232's `O+aaa-eee`, sent as typed: the controller adds it to
+        // where it is, which the session knows as the last position read.
+        if (!hasPosition())
+            return tr("a relative move needs the present position, which is not known yet");
+        return m.index == 0 ? m_gate.azimuthPosition(m_az + m.value).refusal
+                            : m_gate.elevation(m_el + m.value).refusal;
+    }
     case Op::VelocityLeft:
     case Op::VelocityRight:
     case Op::VelocityUp:

@@ -143,7 +143,7 @@ void RotatorSession::startProbe()
         Request r;
         r.purpose = RequestPurpose::Probe;
         if (p.op == Op::Azimuth) {
-            r.line = protocol::encodeQueryPosition(d);
+            r.line = protocol::encodeQueryPosition(d, m_rotor);
             r.expects = {Expectation{Op::Azimuth, -1}, Expectation{Op::Elevation, -1}};
             r.expectCount = 2;
             r.attemptsLeft = m_options.retries + 1;
@@ -179,7 +179,7 @@ void RotatorSession::poll()
         return;
     const Dialect d = m_profile.dialect;
     if (m_caps.positionFeedback) {
-        const QByteArray line = protocol::encodeQueryPosition(d);
+        const QByteArray line = protocol::encodeQueryPosition(d, m_rotor);
         if (!m_queue.contains(line)) {
             Request r;
             r.line = line;

@@ -1,5 +1,7 @@
 #include "simulator.h"
 
+#include "micro2g/micro2gstatefile.h"
+
 namespace slew::sim {
 
 Simulator::Simulator(const SimulatorOptions &options, QObject *parent)
@@ -13,13 +15,49 @@ Simulator::Simulator(const SimulatorOptions &options, QObject *parent)
     m_rotator.setFaults(Axis::Elevation, options.elevationFaults);
     connect(&m_clock, &SimClock::advanced, this, [this](double now) {
         m_rotator.advanceTo(now);
+        if (m_micro2g) {
+            m_micro2g->advance(now - m_micro2gAt);
+            m_micro2gAt = now;
+        }
         emit ticked();
     });
+    // Load a kept state now, so that a bad file is known before a host connects.
+    if (options.dialect == protocol::Dialect::Micro2g || !options.stateFile.isEmpty())
+        micro2g();
 }
 
 void Simulator::syncToNow()
 {
-    m_rotator.advanceTo(m_clock.now());
+    const double now = m_clock.now();
+    m_rotator.advanceTo(now);
+    if (m_micro2g && now > m_micro2gAt) {
+        m_micro2g->advance(now - m_micro2gAt);
+        m_micro2gAt = now;
+    }
+}
+
+Micro2gController &Simulator::micro2g()
+{
+    if (!m_micro2g) {
+        m_micro2g = std::make_unique<Micro2gController>();
+        m_micro2gAt = m_clock.now();
+        if (!m_options.stateFile.isEmpty())
+            m_stateFileError = loadMicro2gState(m_options.stateFile, *m_micro2g);
+    }
+    return *m_micro2g;
+}
+
+QStringList Simulator::handleMicro2g(const QString &line)
+{
+    syncToNow();
+    Micro2gController &controller = micro2g();
+    const QJsonObject before = controller.settings();
+    const QStringList replies = controller.handle(line);
+    // Only a changed calibration, preset or tolerance is written: a poll
+    // every second must not rewrite the file every second.
+    if (!m_options.stateFile.isEmpty() && controller.settings() != before)
+        m_stateFileError = saveMicro2gState(m_options.stateFile, controller);
+    return replies;
 }
 
 void Simulator::setAxisFaults(Axis axis, const AxisFaults &faults)

@@ -5,12 +5,15 @@
 // talk to the same Simulator when they serve the same rotator.
 
 #include "firmwarecounters.h"
+#include "micro2g/micro2gcontroller.h"
 #include "linkfaults.h"
 #include "simclock.h"
 #include "simulatedrotator.h"
 #include "simulatoroptions.h"
 
 #include <QObject>
+
+#include <memory>
 
 namespace slew::sim {
 
@@ -39,6 +42,16 @@ public:
     // Cuts every open connection now, as if the cable were pulled.
     void dropConnections() { emit connectionsDropped(); }
 
+    // The Micro-2g controller program, for connections in the micro2g
+    // dialect: made on first use and run on this simulator's clock. Its
+    // settings are read from options().stateFile when the simulator starts
+    // and written back after every command that changes them.
+    Micro2gController &micro2g();
+    // One command line to that program, at the clock's present; its replies.
+    QStringList handleMicro2g(const QString &line);
+    // What went wrong reading or writing the state file, if anything.
+    QString stateFileError() const { return m_stateFileError; }
+
     // Shared by every connection's firmware.
     FirmwareCounters &counters() { return m_counters; }
     const FirmwareCounters &counters() const { return m_counters; }
@@ -54,6 +67,9 @@ private:
     SimulatedRotator m_rotator;
     LinkFaults m_linkFaults;
     FirmwareCounters m_counters;
+    std::unique_ptr<Micro2gController> m_micro2g;
+    double m_micro2gAt = 0.0; // the clock time the controller has been run up to
+    QString m_stateFileError;
 };
 
 } // namespace slew::sim

@@ -34,6 +34,10 @@ SimulatorConnection::SimulatorConnection(Simulator &simulator, QIODevice *device
       m_rng(simulator.options().rotator.seed + 7u)
 {
     m_openedAt = m_simulator.clock().now();
+    if (settings.dialect == protocol::Dialect::Micro2g) {
+        m_simulator.micro2g(); // made now, on this simulator's clock
+        m_firmware.serveMicro2g([this](const QString &line) { return m_simulator.handleMicro2g(line); });
+    }
     m_timer.setSingleShot(true);
     m_timer.setTimerType(Qt::PreciseTimer);
     connect(&m_timer, &QTimer::timeout, this, &SimulatorConnection::service);

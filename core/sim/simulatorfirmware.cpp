@@ -7,6 +7,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <utility>
 
 namespace slew::sim {
 
@@ -53,8 +54,47 @@ bool SimulatorFirmware::sendsAlarms() const
     return m_dialect == Dialect::Easycomm2 || m_dialect == Dialect::Easycomm3;
 }
 
+QByteArray SimulatorFirmware::receiveMicro2g(QByteArrayView bytes)
+{
+    // The program reads a line up to CR or LF; one longer than any command
+    // is dropped whole, as the Easycomm reader does.
+    constexpr qsizetype kLongestLine = protocol::InlineText::Capacity;
+    QByteArray out;
+    for (char c : bytes) {
+        if (c != '\r' && c != '\n') {
+            if (m_micro2gLine.size() < kLongestLine)
+                m_micro2gLine += c;
+            else
+                m_micro2gOverlong = true;
+            continue;
+        }
+        const QByteArray line = std::exchange(m_micro2gLine, {});
+        if (std::exchange(m_micro2gOverlong, false)) {
+            ++m_counters.overlong;
+            out += "?> line too long\r\n";
+            continue;
+        }
+        if (line.trimmed().isEmpty())
+            continue; // the LF of a CR LF
+        ++m_counters.lines;
+        const QStringList replies = m_micro2g(QString::fromLatin1(line));
+        bool refused = false;
+        for (const QString &reply : replies) {
+            refused = refused || reply.startsWith(QLatin1String("?>"));
+            out += reply.toLatin1() + "\r\n";
+        }
+        if (refused)
+            ++m_counters.malformed;
+        else
+            ++m_counters.commands;
+    }
+    return out;
+}
+
 QByteArray SimulatorFirmware::receive(QByteArrayView bytes)
 {
+    if (m_micro2g)
+        return receiveMicro2g(bytes);
     QByteArray out;
     m_alarmsThisChunk = 0;
     m_suppressedAlarms = 0;
@@ -74,6 +114,8 @@ QByteArray SimulatorFirmware::receive(QByteArrayView bytes)
 
 QByteArray SimulatorFirmware::endLine()
 {
+    if (m_micro2g)
+        return receiveMicro2g("\r"); // a line the host never ended
     QByteArray out;
     m_awaitingLineEnd = false;
     m_parser.flush([&](const Message &m) { handle(m, out); });
@@ -247,6 +289,11 @@ void SimulatorFirmware::handle(const Message &m, QByteArray &out)
             return readOnly(); // `OK` is the controller's word, not a command
         answer("OK");
         break;
+    case Op::Offset:
+        // GS-232's relative move: from where the axis is now.
+        if (m.index == 0 ? !m_rotator.pointAzimuth(az + m.value) : !m_rotator.pointElevation(el + m.value))
+            return refuse(m, out);
+        break;
     case Op::Speed:
         m_manualSpeedShare = std::clamp(m.value, 1.0, 4.0) / 4.0;
         break;
@@ -286,8 +333,11 @@ void SimulatorFirmware::handle(const Message &m, QByteArray &out)
     case Op::Status:
         if (m.hasValue)
             return readOnly();
-        answer("GS" + QByteArray::number(m_dialect == Dialect::Easycomm3 ? m_rotator.status()
-                                                                           : m_rotator.combinedStatus()));
+        if (protocol::isGs232(m_dialect)) // `ST=n`, one status for both axes (docs/protocol.md)
+            answer(protocol::encodeReport(Message::number(Op::Status, m_rotator.combinedStatus()), m_dialect));
+        else
+            answer("GS" + QByteArray::number(m_dialect == Dialect::Easycomm3 ? m_rotator.status()
+                                                                               : m_rotator.combinedStatus()));
         break;
     case Op::ErrorFlags:
         if (m.hasValue)
@@ -331,6 +381,13 @@ void SimulatorFirmware::handle(const Message &m, QByteArray &out)
     case Op::Alarm:
     case Op::ConfigValue:
     case Op::Report: // rotctld's answer; no controller is sent one
+    case Op::SelectRotor: // the Micro-2g's own commands: served by its controller program
+    case Op::Preset:
+    case Op::StorePreset:
+    case Op::Tolerance:
+    case Op::Calibration:
+    case Op::AdcReadings:
+    case Op::RelayBits:
         ++m_counters.unknown;
         alarm("unknown", protocol::mnemonic(m.op), out);
         return;

@@ -21,6 +21,9 @@
 
 #include <QByteArray>
 #include <QHash>
+#include <QStringList>
+
+#include <functional>
 
 namespace slew::sim {
 
@@ -29,6 +32,13 @@ public:
     SimulatorFirmware(SimulatedRotator &rotator, FirmwareCounters &counters, protocol::Dialect dialect);
 
     protocol::Dialect dialect() const { return m_dialect; }
+
+    // The Micro-2g dialect is served by its own controller program
+    // (micro2g/micro2gcontroller.h), shared by every connection: this
+    // firmware then only cuts the bytes into lines, hands each to
+    // `controller` and ends every reply line with CR LF.
+    using LineHandler = std::function<QStringList(const QString &line)>;
+    void serveMicro2g(LineHandler controller) { m_micro2g = std::move(controller); }
 
     // Feeds bytes from the host; returns what the device answers to them
     // (possibly nothing, possibly several lines). At most a few alarms per
@@ -40,7 +50,7 @@ public:
     // endLine() rather than wait for a line end that may never come.
     bool awaitingLineEnd() const { return m_awaitingLineEnd; }
     // Bytes of a line wait for its end (the host may never send it).
-    bool hasUnfinishedLine() const { return m_parser.hasUnfinishedLine(); }
+    bool hasUnfinishedLine() const { return m_micro2g ? !m_micro2gLine.isEmpty() : m_parser.hasUnfinishedLine(); }
     QByteArray endLine();
 
     // the Easycomm III derivative's unsolicited reports: every field whose text differs from
@@ -51,6 +61,7 @@ public:
     QByteArray version() const;
 
 private:
+    QByteArray receiveMicro2g(QByteArrayView bytes);
     void handle(const protocol::Message &m, QByteArray &out);
     void answer(const QByteArray &token);
     void alarm(const char *kind, QByteArrayView what, QByteArray &out);
@@ -80,6 +91,10 @@ private:
     double m_manualSpeedShare = 1.0; // GS-232's X1..X4: a quarter to all of the manual speed
 
     QHash<QByteArray, QByteArray> m_pushed; // field -> last text pushed
+
+    LineHandler m_micro2g;
+    QByteArray m_micro2gLine;
+    bool m_micro2gOverlong = false;
 };
 
 } // namespace slew::sim

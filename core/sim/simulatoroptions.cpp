@@ -32,7 +32,8 @@ const std::vector<SimulatorOptionInfo> kOptions = {
     {"park_el", "degrees", "elevation park position (CW8)"},
     {"start_az", "degrees", "azimuth at start"},
     {"start_el", "degrees", "elevation at start"},
-    {"dialect", "name", "easycomm1, easycomm2, easycomm3, satnogs, gs232a or gs232b"},
+    {"dialect", "name", "easycomm1, easycomm2, easycomm3, satnogs, gs232a, gs232b or micro2g (the four-rotor Micro-2g controller)"},
+    {"state_file", "path", "micro2g: keep the controller's calibration, presets and tolerances in this file across restarts"},
     {"unsolicited", "", "push changed fields unsolicited (easycomm3)"},
     {"echo", "", "send every received byte back before the answer, as some serial adapters do"},
     {"checksum", "", "frame every reply with the XOR checksum *HH and refuse received lines without a good one"},
@@ -226,6 +227,12 @@ QString applySimulatorOption(SimulatorOptions &o, QStringView rawName, QStringVi
         if (*d == protocol::Dialect::Rotctld)
             return bad(name, value, QStringLiteral("the simulator plays a controller; rotctld is reached with rotctld://"));
         o.dialect = *d;
+        return {};
+    }
+    if (name == u"state_file") {
+        if (value.isEmpty())
+            return bad(name, value, QStringLiteral("expected a file path"));
+        o.stateFile = value.toString();
         return {};
     }
     if (name == u"unsolicited")

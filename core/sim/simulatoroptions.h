@@ -29,6 +29,7 @@ struct SimulatorOptions {
     int baud = 0;             // 0: bytes move as fast as the link carries them
     bool manualClock = false; // time moves only when advanced (tests)
     double timeScale = 1.0;   // wall clock: simulated seconds per real second
+    QString stateFile;        // micro2g: where calibration, presets and tolerances are kept; empty: lost at exit
 };
 
 struct SimulatorOptionInfo {

@@ -25,6 +25,16 @@ std::optional<SimulatorOptions> optionsOf(const QUrl &url, const QString &uri, Q
     std::stable_partition(items.begin(), items.end(),
                           [](const auto &item) { return item.first.compare(u"model", Qt::CaseInsensitive) == 0; });
     for (const auto &[name, value] : items) {
+        // `rotor=n` names which rotor the link drives, as on any link: a
+        // hint for the session (hintsOf), not a property of the simulator.
+        if (name == u"rotor") {
+            const int n = value.toInt();
+            if (n < 1 || n > 4) {
+                *error = QStringLiteral("%1: rotor must be 1 to 4, not '%2'").arg(uri, value);
+                return std::nullopt;
+            }
+            continue;
+        }
         if (const QString e = applySimulatorOption(options, name, value); !e.isEmpty()) {
             *error = QStringLiteral("%1: %2").arg(uri, e);
             return std::nullopt;
@@ -51,6 +61,8 @@ transport::LinkHints hintsOf(const QUrl &url, const SimulatorOptions &options)
         h.parkAz = r.parkAzimuth;
     if (query.hasQueryItem(QStringLiteral("park_el")))
         h.parkEl = r.parkElevation;
+    if (query.hasQueryItem(QStringLiteral("rotor")))
+        h.rotor = query.queryItemValue(QStringLiteral("rotor")).toInt();
     return h;
 }
 

@@ -30,6 +30,9 @@ struct LinkHints {
     // the URI; docs/protocol.md, "Checksum"). Not a guess about the far end
     // but a choice the operator made, so the session always follows it.
     bool checksum = false;
+    // Which rotor of a multi-rotor controller the link drives (`rotor=2` on
+    // the URI; Micro-2g: 1..4). Empty: the controller's default rotor.
+    std::optional<int> rotor;
 };
 
 class Link : public QObject {

@@ -36,6 +36,17 @@ QString readChecksum(QStringView value, LinkHints *hints)
     return QObject::tr("checksum must be 1 or 0, not '%1'").arg(value);
 }
 
+// `rotor=n`: the rotor of a multi-rotor controller this link drives (link.h).
+QString readRotor(QStringView value, LinkHints *hints)
+{
+    bool ok = false;
+    const int n = value.toInt(&ok);
+    if (!ok || n < 1 || n > 4)
+        return QObject::tr("rotor must be 1 to 4, not '%1'").arg(value);
+    hints->rotor = n;
+    return {};
+}
+
 LinkResult withHints(std::unique_ptr<Link> link, const LinkHints &hints)
 {
     link->setHints(hints);
@@ -90,6 +101,9 @@ LinkResult makeSerial(const QUrl &url, const QString &uri)
         } else if (key == QLatin1String("checksum")) {
             if (const QString e = readChecksum(value, &hints); !e.isEmpty())
                 return fail(uri, e);
+        } else if (key == QLatin1String("rotor")) {
+            if (const QString e = readRotor(value, &hints); !e.isEmpty())
+                return fail(uri, e);
         } else {
             return fail(uri, QObject::tr("unknown serial option '%1'").arg(key));
         }
@@ -105,9 +119,14 @@ LinkResult makeTcp(const QUrl &url, const QString &uri)
         return fail(uri, QObject::tr("no port named (expected tcp://host:port)"));
     LinkHints hints;
     for (const auto &[key, value] : QUrlQuery(url).queryItems()) {
-        if (key != QLatin1String("checksum"))
-            return fail(uri, QObject::tr("unknown tcp option '%1' (known: checksum)").arg(key));
-        if (const QString e = readChecksum(value, &hints); !e.isEmpty())
+        QString e;
+        if (key == QLatin1String("checksum"))
+            e = readChecksum(value, &hints);
+        else if (key == QLatin1String("rotor"))
+            e = readRotor(value, &hints);
+        else
+            return fail(uri, QObject::tr("unknown tcp option '%1' (known: checksum, rotor)").arg(key));
+        if (!e.isEmpty())
             return fail(uri, e);
     }
     return withHints(std::make_unique<TcpLink>(uri, url.host(), quint16(url.port())), hints);

@@ -83,10 +83,22 @@ void EncoderTest::gs232WireStrings()
         QCOMPARE(encodeLine({Message::query(Op::MoveDown)}, d), QByteArray("D\r"));
         QCOMPARE(encodeLine({Message::number(Op::Azimuth, 45)}, d), QByteArray("M045\r"));
         QCOMPARE(encodeLine({Message::query(Op::Elevation)}, d), QByteArray("B\r"));
+        // The easycom library's relative move: each offset signed, three digits.
+        QCOMPARE(encodeOffset(10, -5, d), QByteArray("O+010-005\r"));
+        QCOMPARE(encodeOffset(-120.4, 0, d), QByteArray("O-120+000\r"));
+        // The easycom library's status query, and the answer Slew chose.
+        QCOMPARE(encodeLine({Message::query(Op::Status)}, d), QByteArray("GS\r"));
+        QCOMPARE(encodeReport(Message::number(Op::Status, 6), d), QByteArray("ST=6"));
+        QVERIFY(!dialectSupports(d, Op::ErrorFlags)); // no GE on a GS-232
         // No park, reset, config or velocity commands on a GS-232.
         QVERIFY(encodeLine({Message::query(Op::Park)}, d).isEmpty());
         QVERIFY(encodeLine({Message::number(Op::VelocityRight, 100)}, d).isEmpty());
         QVERIFY(encodeLine({Message::query(Op::ConfigRead, 1)}, d).isEmpty());
+    }
+    // Only GS-232 has a relative move on the wire.
+    for (Dialect d : {Dialect::Easycomm1, Dialect::Easycomm2, Dialect::Easycomm3, Dialect::SatNogs, Dialect::Rotctld}) {
+        QVERIFY(!dialectSupports(d, Op::Offset));
+        QVERIFY(encodeOffset(10, -5, d).isEmpty());
     }
     // Reports, as the simulator answers.
     QCOMPARE(encodeReport(Message::number(Op::Azimuth, 10), Dialect::Gs232A) + reportSeparator(Dialect::Gs232A)
@@ -316,7 +328,7 @@ void EncoderTest::dialectNames()
 {
     for (Dialect d : allDialects())
         QCOMPARE(dialectFromName(dialectName(d)), std::optional<Dialect>(d));
-    QCOMPARE(allDialects().size(), 7);
+    QCOMPARE(allDialects().size(), 8);
     QCOMPARE(dialectFromName(u"rotctld"), std::optional<Dialect>(Dialect::Rotctld));
     QCOMPARE(dialectFromName(u"SATNOGS"), std::optional<Dialect>(Dialect::SatNogs));
     QVERIFY(!dialectFromName(u"gs232").has_value());

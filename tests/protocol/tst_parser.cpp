@@ -191,6 +191,24 @@ void ParserTest::vectors_data()
     row("the easycom library A E set", "gs232a", "A090\rE045\r", {"azimuth=90|", "elevation=45|"});
     row("the easycom library keep-alive", "gs232a", "?\r", {"keep-alive|"});
     row("keep-alive answer (Slew's choice)", "gs232b", "OK\r\n", {"keep-alive 'OK'|"});
+    // The easycom library's relative move O+nnn+nnn, and the variants read.
+    row("gs232 relative move", "gs232a", "O+010-005\r", {"relative move#0=10", "relative move#1=-5|"});
+    row("gs232 relative move, short and unsigned first", "gs232b", "o10+5\r",
+        {"relative move#0=10", "relative move#1=5|"});
+    row("gs232 relative move, zero", "gs232b", "O+000+000\r", {"relative move#0=0", "relative move#1=0|"});
+    row("gs232 relative move, one offset", "gs232a", "O+010\r", {"unreadable input 'O+010'|"});
+    row("gs232 relative move, beyond 450", "gs232a", "O+500+000\r", {"unreadable input 'O+500+000'|"});
+    row("gs232 relative move, no digits", "gs232a", "O+-5\rO++\r",
+        {"unreadable input 'O+-5'|", "unreadable input 'O++'|"});
+    // The easycom library's status query GS; its answer ST=n is Slew's choice.
+    row("gs232 status query", "gs232a", "GS\rgs\r", {"status register|", "status register|"});
+    row("gs232 status answer", "gs232b", "ST=6\r\n", {"status register=6|"});
+    row("gs232 status variants", "gs232a", "ST6\rst=006\rST=0x0A\rST=moving\rST=Idle\r",
+        {"status register=6|", "status register=6|", "status register=10|", "status register=2|",
+         "status register=1|"});
+    row("gs232 status malformed", "gs232b", "ST=\rST=70000\rST=busy\rST=0x\r",
+        {"unreadable input 'ST='|", "unreadable input 'ST=70000'|", "unreadable input 'ST=busy'|",
+         "unreadable input 'ST=0x'|"});
     // --- GS-232 reports.
     row("gs232a C2 report", "gs232a", "+0123+0045\r", {"azimuth=123", "elevation=45|"});
     row("gs232a C report", "gs232a", "+0359\r\n", {"azimuth=359|"});

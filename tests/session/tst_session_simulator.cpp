@@ -231,10 +231,15 @@ void SessionSimulatorTest::gs232Dialects()
     RotatorSession s;
     QVERIFY(connectTo(s, "sim:?model=satnogs&dialect=" + name, dialect));
     QVERIFY(s.capabilities().positionFeedback);
-    QVERIFY(!s.capabilities().status && !s.capabilities().config && !s.capabilities().velocity);
+    // GS answered ST=n: the session reads the status as from Easycomm's GS.
+    QVERIFY(s.capabilities().status);
+    QVERIFY(!s.capabilities().errors && !s.capabilities().config && !s.capabilities().velocity);
+    TRY_VERIFY(s.status().valid);
     QSignalSpy sent(&s, &RotatorSession::bytesSent);
+    QSignalSpy status(&s, &RotatorSession::statusChanged);
     QVERIFY(s.gotoPosition(42, 17));
     TRY_VERIFY_WITH_TIMEOUT(std::abs(s.azimuth() - 42) < 0.6 && std::abs(s.elevation() - 17) < 0.6, 15000);
+    TRY_VERIFY_WITH_TIMEOUT(!status.isEmpty(), 15000); // it moved: the status changed
     const double start = s.azimuth();
     QVERIFY(s.moveAxis(session::Axis::Azimuth, 3.0));
     TRY_VERIFY_WITH_TIMEOUT(s.azimuth() > start + 2, 10000);
@@ -242,7 +247,8 @@ void SessionSimulatorTest::gs232Dialects()
     QStringList wire;
     for (const auto &b : sent)
         wire << QString::fromLatin1(b.at(0).toByteArray());
-    QVERIFY2(wire.contains("W042 017\r") && wire.contains("C2\r") && wire.contains("R\r") && wire.contains("S\r"),
+    QVERIFY2(wire.contains("W042 017\r") && wire.contains("C2\r") && wire.contains("R\r") && wire.contains("S\r")
+                 && wire.contains("GS\r"),
              qPrintable(wire.join('|')));
     QVERIFY(!s.home()); // GS-232 has no homing command: refused, nothing sent
 }

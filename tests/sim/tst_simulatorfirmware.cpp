@@ -107,6 +107,36 @@ private slots:
         QCOMPARE(b.send("VL\n"), QByteArray("VL2000\n"));
     }
 
+    void gs232RelativeMoveIsFromThePresentPosition()
+    {
+        // The easycom library's O+aaa-eee: offsets from where the axes are.
+        Bench b(Dialect::Gs232B);
+        b.rotator.pointAzimuth(100.0);
+        b.rotator.pointElevation(20.0);
+        b.rotator.advanceBy(15.0);
+        QCOMPARE(b.send("O+030-005\r"), QByteArray());
+        b.rotator.advanceBy(15.0);
+        QCOMPARE(b.send("C2\r"), QByteArray("AZ=130  EL=015\r\n"));
+        // Past a limit: the Yaesu prompt, and nothing moves.
+        QCOMPARE(b.send("O+000-030\r"), QByteArray("?>\r\n"));
+        QCOMPARE(b.counters.outOfLimits, std::uint64_t(1));
+        b.rotator.advanceBy(5.0);
+        QCOMPARE(b.send("C2\r"), QByteArray("AZ=130  EL=015\r\n"));
+    }
+
+    void gs232StatusIsAnsweredAsST()
+    {
+        // GS (the easycom library's table) -> ST=n, the bits of SatNOGS' GS.
+        Bench b(Dialect::Gs232A);
+        QCOMPARE(b.send("GS\r"), QByteArray("ST=1\r\n")); // idle
+        b.rotator.pointAzimuth(90.0);
+        b.rotator.advanceBy(0.5);
+        const QByteArray moving = b.send("GS\r");
+        QVERIFY2(moving.startsWith("ST=") && (moving.mid(3).trimmed().toInt() & 2), moving.constData());
+        // A status sent to the controller is not a command.
+        QCOMPARE(b.send("ST=1\r"), QByteArray("?>\r\n"));
+    }
+
     void refusedInputMovesNothingIsCountedAndRaisesAnAlarm_data()
     {
         QTest::addColumn<QByteArray>("input");
@@ -154,7 +184,7 @@ private slots:
     {
         Bench b(Dialect::SatNogs);
         QCOMPARE(b.send("AZ500 FOO\n"), QByteArray());
-        QCOMPARE(b.counters.outOfLimits, 1u);
+        QCOMPARE(b.counters.outOfLimits, std::uint64_t(1));
         QCOMPARE(b.counters.unknown, 1u);
     }
 
