@@ -38,7 +38,7 @@ private slots:
         QVERIFY(s.gotoPosition(35, 0));
         QCOMPARE(sent.first().at(0).toByteArray(), QByteArray("2\rM035\r"));
         // It stops within its tolerance (20 counts, about 6 degrees) of 35.
-        QTRY_VERIFY_WITH_TIMEOUT(sim->micro2g().drive(2) == slew::sim::Micro2gController::Drive::Off
+        TRY_VERIFY_WITH_TIMEOUT(sim->micro2g().drive(2) == slew::sim::Micro2gController::Drive::Off
                                      && std::abs(s.azimuth() - 35) <= 6.5 && !s.positionStale(),
                                  20000);
         QCOMPARE(sim->micro2g().travel(1), 0.0); // the other rotors stayed where they were
@@ -80,7 +80,7 @@ private slots:
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
         const QString state = dir.filePath(QStringLiteral("micro2g.json"));
-        const QStringList args{"--listen", "127.0.0.1:0", "--dialect", "micro2g", "--state-file", state};
+        const QStringList args{"--listen", "127.0.0.1:0", "--dialect", "micro2g", "--state-file", state, "--time-scale", "4"};
         {
             SlewSimProcess sim;
             QVERIFY2(sim.start(args), qPrintable(sim.error()));
@@ -89,9 +89,9 @@ private slots:
             QSignalSpy received(&s, &RotatorSession::bytesReceived);
             QVERIFY(s.sendRaw(QStringLiteral("T3 35")));      // rotor 3's tolerance
             QVERIFY(s.gotoPosition(45, 0));
-            QTRY_VERIFY_WITH_TIMEOUT(s.azimuth() > 20, 15000); // turning, at 6 degrees a second
+            TRY_VERIFY_WITH_TIMEOUT(s.azimuth() > 20, 15000); // turning, at 6 degrees a second
             QVERIFY(s.sendRaw(QStringLiteral("T")));
-            QTRY_VERIFY(joined(received).contains("T1=20 T2=20 T3=35 T4=20"));
+            TRY_VERIFY(joined(received).contains("T1=20 T2=20 T3=35 T4=20"));
             s.disconnectFromRotator();
             QCOMPARE(sim.stop(), 0);
         }
@@ -103,7 +103,7 @@ private slots:
         QVERIFY(open(s, QStringLiteral("tcp://127.0.0.1:%1?rotor=3").arg(sim.port()), false));
         QSignalSpy received(&s, &RotatorSession::bytesReceived);
         QVERIFY(s.sendRaw(QStringLiteral("T")));
-        QTRY_VERIFY(joined(received).contains("T3=35"));
+        TRY_VERIFY(joined(received).contains("T3=35"));
         QCOMPARE(sim.stop(), 0);
 
         // A file that is not a state is refused at start, naming the file.
@@ -123,14 +123,14 @@ private slots:
         QVERIFY(dir.isValid());
         const QString path = dir.filePath(QStringLiteral("micro2g"));
         SlewSimProcess sim;
-        QVERIFY2(sim.start({"--pty", path, "--dialect", "micro2g", "--baud", "9600"}), qPrintable(sim.error()));
+        QVERIFY2(sim.start({"--pty", path, "--dialect", "micro2g", "--baud", "9600", "--time-scale", "4"}), qPrintable(sim.error()));
         RotatorSession s;
         QVERIFY(open(s, QStringLiteral("serial:%1?baud=9600&rotor=4").arg(path), false));
         QVERIFY2(s.version().startsWith(QStringLiteral("Micro-2g")), qPrintable(s.version()));
         QSignalSpy sent(&s, &RotatorSession::bytesSent);
         QVERIFY(s.gotoPosition(30, 0));
         QCOMPARE(sent.first().at(0).toByteArray(), QByteArray("4\rM030\r"));
-        QTRY_VERIFY_WITH_TIMEOUT(s.azimuth() > 10, 15000); // rotor 4 turns, at 6 degrees a second
+        TRY_VERIFY_WITH_TIMEOUT(s.azimuth() > 10, 15000); // rotor 4 turns, at 6 degrees a second
         QVERIFY(wrote(sent, "C4\r"));
         QVERIFY(s.stop());
         s.disconnectFromRotator();
@@ -146,7 +146,7 @@ private:
         s.connectTo(uri);
         if (manualClock)
             (new SimulatorPump(0.005, &s))->follow(&s);
-        return QTest::qWaitFor([&] { return s.capabilities().probed && s.hasPosition(); }, 10000);
+        return runEventLoopUntil([&] { return s.capabilities().probed && s.hasPosition(); }, 10000);
     }
 
     static bool wrote(const QSignalSpy &sent, const QByteArray &bytes)

@@ -32,7 +32,7 @@ private slots:
         QVERIFY(s.moveBy(20, -3));
         QCOMPARE(sent.count(), 1);
         QCOMPARE(sent.at(0).at(0).toByteArray(), QByteArray("W120 007\r"));
-        QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.azimuth() - 120) < 0.6 && std::abs(s.elevation() - 7) < 0.6, 20000);
+        TRY_VERIFY_WITH_TIMEOUT(std::abs(s.azimuth() - 120) < 0.6 && std::abs(s.elevation() - 7) < 0.6, 20000);
     }
 
     void everyOutOfRangeRelativeMoveIsRefusedUnsent_data() { dialects(); }
@@ -63,7 +63,7 @@ private slots:
         QVERIFY(s.sendRaw(QStringLiteral("O-030+015")));
         QVERIFY(!sent.isEmpty());
         QCOMPARE(sent.at(0).at(0).toByteArray(), QByteArray("O-030+015\n"));
-        QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.azimuth() - 70) < 0.6 && std::abs(s.elevation() - 25) < 0.6, 20000);
+        TRY_VERIFY_WITH_TIMEOUT(std::abs(s.azimuth() - 70) < 0.6 && std::abs(s.elevation() - 25) < 0.6, 20000);
     }
 
     void refusedWithoutAPosition()
@@ -103,7 +103,7 @@ private:
         s.setProfile(profile);
         s.connectTo(QStringLiteral("sim:?clock=manual&model=satnogs&dialect=%1&start_az=100&start_el=10").arg(dialect));
         (new SimulatorPump(0.005, &s))->follow(&s);
-        return QTest::qWaitFor([&] { return s.capabilities().probed && s.hasPosition(); }, 10000)
+        return runEventLoopUntil([&] { return s.capabilities().probed && s.hasPosition(); }, 10000)
             && std::abs(s.azimuth() - 100) < 0.6;
     }
 };
