@@ -91,6 +91,8 @@ private slots:
         });
         expectNothingSent("a drive further into the limit it stands on",
                           [&] { QVERIFY(!m_session->moveAxis(Axis::Azimuth, 5.0)); });
+        expectNothingSent("a relative move past the link's azimuth", [&] { QVERIFY(!m_session->moveBy(5, 0)); });
+        expectNothingSent("a relative move past the profile's elevation", [&] { QVERIFY(!m_session->moveBy(0, 55)); });
         expectNothingSent("park at an elevation past the link's limit", [&] { QVERIFY(!m_session->park()); });
         expectNothingSent("a park azimuth register past the link's limit",
                           [&] { QVERIFY(!m_session->writeConfig(7, QStringLiteral("355"))); });
