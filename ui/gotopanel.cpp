@@ -65,6 +65,18 @@ GotoPanel::GotoPanel(session::RotatorSession *session, QWidget *parent) : QWidge
     connect(m_el, &QLineEdit::returnPressed, this, &GotoPanel::go);
     connect(m_go, &QPushButton::clicked, this, &GotoPanel::go);
     connect(session, &session::RotatorSession::stateChanged, this, &GotoPanel::revalidate);
+    connect(session, &session::RotatorSession::profileChanged, this, &GotoPanel::followAxes);
+    followAxes();
+}
+
+void GotoPanel::followAxes()
+{
+    // An azimuth-only rotator: elevation is 0 and not the operator's to set.
+    const bool azimuthOnly = m_session->isAzimuthOnly();
+    if (azimuthOnly)
+        m_el->setText(QStringLiteral("0"));
+    m_el->setEnabled(!azimuthOnly);
+    m_el->setToolTip(azimuthOnly ? tr("This rotator turns azimuth only.") : QString());
     revalidate();
 }
 

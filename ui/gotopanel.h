@@ -35,6 +35,7 @@ public slots:
     bool go(); // false, with the reason shown, when the fields are not a legal position
 
 private:
+    void followAxes(); // an azimuth-only rotator fixes elevation at 0
     void revalidate();
 
     session::RotatorSession *m_session;

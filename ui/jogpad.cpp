@@ -48,6 +48,21 @@ JogPad::JogPad(session::RotatorSession *session, QWidget *parent) : QWidget(pare
     hint->setAlignment(Qt::AlignCenter);
     hint->setEnabled(false);
     grid->addWidget(hint, 3, 0, 1, 3);
+    connect(session, &session::RotatorSession::profileChanged, this, &JogPad::followAxes);
+    followAxes();
+}
+
+void JogPad::followAxes()
+{
+    // An azimuth-only rotator has nothing to jog up or down.
+    const bool azimuthOnly = m_session->isAzimuthOnly();
+    for (Direction d : {Up, Down}) {
+        if (azimuthOnly)
+            release(d);
+        m_buttons[d]->setEnabled(!azimuthOnly);
+        m_buttons[d]->setToolTip(azimuthOnly ? tr("This rotator turns azimuth only.")
+                                             : (d == Up ? tr("Elevation up") : tr("Elevation down")));
+    }
 }
 
 QPushButton *JogPad::makeButton(Direction d, const QString &text, const QString &name)
@@ -72,7 +87,7 @@ double JogPad::speed() const
 
 void JogPad::press(Direction d)
 {
-    if (m_held[d])
+    if (m_held[d] || !m_buttons[d]->isEnabled()) // the arrow keys come here too
         return;
     m_held[d] = true;
     m_buttons[d]->setDown(true);

@@ -29,6 +29,7 @@ public slots:
     void releaseAll(); // the window lost focus: nothing may keep moving
 
 private:
+    void followAxes(); // an azimuth-only rotator has no up and down
     QPushButton *makeButton(Direction d, const QString &text, const QString &name);
 
     session::RotatorSession *m_session;

@@ -267,6 +267,7 @@ void MainWindow::showProfile()
     const auto &p = m_session->profile();
     m_plot->setLimits(p.limits);
     m_plot->setPark(p.parkAz, p.parkEl);
+    m_charts->setElevationShown(!m_session->isAzimuthOnly());
 }
 
 void MainWindow::connectTo(const QString &uri, std::optional<protocol::Dialect> dialect)

@@ -100,6 +100,16 @@ TelemetryCharts::TelemetryCharts(const model::TelemetryHistory *history, QWidget
     setWindowMs(m_windowMs);
 }
 
+void TelemetryCharts::setElevationShown(bool shown)
+{
+    for (Panel &panel : m_panels) {
+        for (const Plotted &p : panel.plotted) {
+            if (TelemetryRecorder::isElevation(p.id))
+                p.line->setVisible(shown);
+        }
+    }
+}
+
 void TelemetryCharts::addPanel(const QString &title, const QString &unit,
                                std::initializer_list<std::pair<Series, QColor>> series, bool step)
 {

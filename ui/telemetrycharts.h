@@ -39,6 +39,10 @@ public:
     // UTC time, ms since the epoch, series, value), atomically.
     bool exportCsv(const QString &path, QString *error) const;
 
+    // An azimuth-only rotator: the elevation lines (and their legend
+    // entries) are hidden rather than drawn as a flat 0.
+    void setElevationShown(bool shown);
+
 public slots:
     void setPaused(bool paused);
     void redraw();

@@ -29,6 +29,10 @@ public:
 
     const model::TelemetryHistory &history() const { return m_history; }
     static QString seriesLabel(Series s);
+    static bool isElevation(Series s)
+    {
+        return s == ElActual || s == ElCommanded || s == ElVelocity || s == ElLoad || s == ElStatus;
+    }
 
 signals:
     void recorded(); // something was added

@@ -293,6 +293,8 @@ QByteArray RotctldServer::answer(Client &c, const QByteArray &line)
         return formatPosition(r, az, m_session->elevation());
     }
     case Kind::SetPosition:
+        if (const int refused = refuseElevation(c, r.el != 0.0); refused != 0)
+            return formatStatus(r, refused);
         return formatStatus(r, setPosition(r));
     case Kind::Stop:
         return formatStatus(r, m_session->stop() ? 0 : int(HamlibError::Io));
@@ -316,6 +318,8 @@ QByteArray RotctldServer::answer(Client &c, const QByteArray &line)
             return formatStatus(r, int(HamlibError::Io));
         return formatStatus(r, m_session->home() ? 0 : int(HamlibError::InvalidArgument));
     case Kind::Move:
+        if (const int refused = refuseElevation(c, (r.direction & (2 | 4 | 32 | 64 | 128 | 256)) != 0); refused != 0)
+            return formatStatus(r, refused);
         return formatStatus(r, move(r));
     case Kind::GetInfo: {
         QString info = QStringLiteral("Slew rotator bridge");
@@ -323,9 +327,12 @@ QByteArray RotctldServer::answer(Client &c, const QByteArray &line)
             info += QStringLiteral(" (%1)").arg(m_session->version());
         return formatInfo(r, info);
     }
-    case Kind::DumpState:
-        return formatDumpState({profile.limits.azMin, profile.limits.azMax, profile.limits.elMin, profile.limits.elMax,
-                                hamlibModelFor(profile.dialect)});
+    case Kind::DumpState: {
+        // An azimuth-only rotator's elevation range is the single value 0.
+        const bool azOnly = m_session->isAzimuthOnly();
+        return formatDumpState({profile.limits.azMin, profile.limits.azMax, azOnly ? 0.0 : profile.limits.elMin,
+                                azOnly ? 0.0 : profile.limits.elMax, hamlibModelFor(profile.dialect)});
+    }
     case Kind::Quit:
         return {};
     case Kind::Unknown:
@@ -363,6 +370,17 @@ void RotctldServer::reportAllSuppressed()
     }
     if (!any)
         m_suppressedReport.stop();
+}
+
+int RotctldServer::refuseElevation(Client &c, bool wantsElevation)
+{
+    if (!wantsElevation || !m_session->isAzimuthOnly())
+        return 0;
+    // Hamlib's "feature not available" (RPRT -11): the rotator has no such
+    // axis, which is not a position out of range (RPRT -1).
+    logClient(c, tr("rotctld client %1: '%2' refused: this rotator turns azimuth only (send elevation 0)")
+                     .arg(c.info.peer, c.info.lastCommand));
+    return int(HamlibError::NotAvailable);
 }
 
 int RotctldServer::setPosition(const RotctldRequest &r)

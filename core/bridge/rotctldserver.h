@@ -118,6 +118,9 @@ private:
     void finishInput(Client &client);
     void onDisconnected(QTcpSocket *socket);
     QByteArray answer(Client &client, const QByteArray &line);
+    // Non-zero (RIG_ENAVAIL) when the request wants elevation from an
+    // azimuth-only rotator, which is then logged as refused.
+    int refuseElevation(Client &c, bool wantsElevation);
     int setPosition(const RotctldRequest &r);
     void logClient(Client &client, const QString &text);
     void reportSuppressed(Client &client);

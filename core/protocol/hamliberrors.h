@@ -14,6 +14,7 @@ enum class HamlibError : int {
     Io = 6,              // RIG_EIO
     Protocol = 8,        // RIG_EPROTO
     Rejected = 9,        // RIG_ERJCTED
+    NotAvailable = 11,   // RIG_ENAVAIL
     Limit = 21,          // RIG_ELIMIT
 };
 

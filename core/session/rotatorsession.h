@@ -98,6 +98,9 @@ public:
     // The rotor of a multi-rotor controller this session drives (`rotor=n`
     // on the link's URI; 0: the controller's default rotor).
     int rotor() const { return m_rotor; }
+    // The controller turns azimuth only (the Micro-2g): elevation reads 0,
+    // and the gate allows no elevation but 0.
+    bool isAzimuthOnly() const { return protocol::isAzimuthOnly(m_profile.dialect); }
     int checksumFailures() const { return m_checksumFailures; }
     // Refused frames in a row after which badFramesAlarm(true) is raised.
     static constexpr int kBadFramesAlarm = 3;

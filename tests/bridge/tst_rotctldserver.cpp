@@ -42,6 +42,7 @@ private slots:
     void repeatedTargetGoesOutAfterTheLinkReturns();
     void overlapPicksTheShortestLegalPath();
     void operatorHoldRefusesRemoteMovesButNotStop();
+    void azimuthOnlyRotatorRefusesElevation();
     void badClientsDoNotDisturbOthers();
     void allowedClientList();
     void halfClosedClientsAreAnswered();
@@ -437,6 +438,41 @@ void RotctldServerTest::overlapPicksTheShortestLegalPath()
     QTRY_VERIFY_WITH_TIMEOUT(std::abs(session->azimuth() - 370) < 0.5, 30000);
     const QList<QByteArray> lines = ask(s, "p").trimmed().split('\n');
     QVERIFY(std::abs(lines[0].toDouble() - 10) < 0.6);
+}
+
+void RotctldServerTest::azimuthOnlyRotatorRefusesElevation()
+{
+    // One rotor of a Micro-2g controller: azimuth only.
+    model::RotatorProfile p;
+    p.uri = "sim:?dialect=micro2g&rotor=2&time_scale=10";
+    p.dialect = protocol::Dialect::Micro2g;
+    QVERIFY(connectSession(p));
+    QVERIFY(session->isAzimuthOnly());
+    QTcpSocket s;
+    s.connectToHost(QHostAddress::LocalHost, server->port());
+    QTRY_COMPARE(s.state(), QAbstractSocket::ConnectedState);
+    QSignalSpy sent(session, &session::RotatorSession::bytesSent);
+    QSignalSpy logged(server, &bridge::RotctldServer::logMessage);
+
+    // Trackers read an elevation range of 0..0 and an elevation of 0.
+    const QList<QByteArray> state = ask(s, "\\dump_state").split('\n');
+    QVERIFY2(state.size() > 6 && state[4].toDouble() == 0.0 && state[5].toDouble() == 0.0,
+             state.join('|').constData());
+    const QByteArray position = ask(s, "p");
+    QVERIFY2(position.endsWith("\n0.00\n"), position.constData());
+
+    // Elevation wanted: Hamlib's "feature not available", logged, nothing sent.
+    QCOMPARE(ask(s, "P 120 30"), QByteArray("RPRT -11\n"));
+    QCOMPARE(ask(s, "M 2 50"), QByteArray("RPRT -11\n"));
+    QCOMPARE(sent.count(), 0);
+    QTRY_VERIFY(std::any_of(logged.cbegin(), logged.cend(), [](const QList<QVariant> &a) {
+        return a.at(0).toString().contains(QStringLiteral("turns azimuth only"));
+    }));
+    // Azimuth alone goes out, to rotor 2.
+    QCOMPARE(ask(s, "P 120 0"), QByteArray("RPRT 0\n"));
+    QVERIFY(std::any_of(sent.cbegin(), sent.cend(),
+                        [](const QList<QVariant> &a) { return a.at(0).toByteArray() == "2\rM120\r"; }));
+    QTRY_VERIFY_WITH_TIMEOUT(std::abs(session->azimuth() - 120) < 7.0, 20000); // within its tolerance
 }
 
 void RotctldServerTest::operatorHoldRefusesRemoteMovesButNotStop()

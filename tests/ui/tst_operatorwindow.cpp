@@ -262,6 +262,41 @@ private slots:
         QVERIFY(!panel->recall(5)); // no such preset: nothing sent
     }
 
+    void anAzimuthOnlyRotatorHasNoElevationControls()
+    {
+        // One rotor of a Micro-2g controller; the link names the dialect.
+        WindowFixture f(QStringLiteral("sim:?dialect=micro2g&rotor=3&clock=manual"));
+        QVERIFY(f.connectAndWait());
+        QVERIFY(f.session.isAzimuthOnly());
+        // No up and down, neither as buttons nor as keys.
+        QVERIFY(!f.find<QPushButton>(QStringLiteral("jogUp"))->isEnabled());
+        QVERIFY(!f.find<QPushButton>(QStringLiteral("jogDown"))->isEnabled());
+        QVERIFY(f.find<QPushButton>(QStringLiteral("jogLeft"))->isEnabled());
+        const int before = int(f.sent.size());
+        f.find<QWidget>(QStringLiteral("polarPlot"))->setFocus();
+        QTest::keyPress(f.window.get(), Qt::Key_Up);
+        QTest::keyRelease(f.window.get(), Qt::Key_Up);
+        QVERIFY(f.sent.mid(before).filter(QRegularExpression(QStringLiteral("^M|^S"))).isEmpty());
+        // Elevation is 0 and not the operator's to change; azimuth goes.
+        auto *el = f.find<QLineEdit>(QStringLiteral("gotoElevation"));
+        QVERIFY(!el->isEnabled());
+        QCOMPARE(el->text(), QStringLiteral("0"));
+        typeInto(f.find<QLineEdit>(QStringLiteral("gotoAzimuth")), QStringLiteral("90"));
+        QTest::mouseClick(f.find<QPushButton>(QStringLiteral("gotoButton")), Qt::LeftButton);
+        QVERIFY(f.sent.contains(QStringLiteral("3\rM090")));
+        QVERIFY(f.waitUntilAt(90, 0, 7.0)); // within the controller's tolerance
+        // The charts draw no flat elevation line.
+        auto *charts = f.window->telemetryCharts();
+        QVERIFY(!charts->series(TelemetryRecorder::ElActual)->isVisible());
+        QVERIFY(charts->series(TelemetryRecorder::AzActual)->isVisible());
+        // Back on a two-axis rotator, everything returns.
+        f.window->connectTo(QString::fromLatin1(WindowFixture::fastSimOnItsClock), slew::protocol::Dialect::Easycomm3);
+        QVERIFY(f.waitFor([&] { return f.session.isConnected() && !f.session.isAzimuthOnly(); }, 10000));
+        QVERIFY(f.find<QPushButton>(QStringLiteral("jogUp"))->isEnabled());
+        QVERIFY(el->isEnabled());
+        QVERIFY(charts->series(TelemetryRecorder::ElActual)->isVisible());
+    }
+
     void trafficConsoleShowsAndSendsRaw()
     {
         WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
