@@ -64,6 +64,11 @@ int main(int argc, char *argv[])
     Simulator simulator(options);
     if (!simulator.stateFileError().isEmpty())
         fail(QStringLiteral("--state-file %1").arg(simulator.stateFileError()));
+    // Said each time a write fails, so an operator sees why a calibration
+    // did not survive a restart.
+    QObject::connect(&simulator, &Simulator::stateFileFailed, [](const QString &error) {
+        std::fprintf(stderr, "slew-sim: --state-file %s (the new settings are kept until exit only)\n", qPrintable(error));
+    });
     ConnectionSettings settings;
     settings.dialect = options.dialect;
     settings.unsolicited = options.unsolicited;

@@ -55,8 +55,11 @@ QStringList Simulator::handleMicro2g(const QString &line)
     const QStringList replies = controller.handle(line);
     // Only a changed calibration, preset or tolerance is written: a poll
     // every second must not rewrite the file every second.
-    if (!m_options.stateFile.isEmpty() && controller.settings() != before)
+    if (!m_options.stateFile.isEmpty() && controller.settings() != before) {
         m_stateFileError = saveMicro2gState(m_options.stateFile, controller);
+        if (!m_stateFileError.isEmpty())
+            emit stateFileFailed(m_stateFileError);
+    }
     return replies;
 }
 

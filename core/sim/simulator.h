@@ -60,6 +60,9 @@ signals:
     void ticked();                // the rotator advanced; push and release what is due
     void linkFaultsChanged();
     void connectionsDropped();
+    // The state file could not be written while running: the settings the
+    // controller was just given will not survive a restart.
+    void stateFileFailed(const QString &error);
 
 private:
     SimulatorOptions m_options;

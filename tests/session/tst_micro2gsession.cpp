@@ -7,8 +7,9 @@
 #include "../common/simulatorpump.h"
 #include "../sim/slewsimprocess.h"
 #include "linkschemes.h"
-#include "session/rotatorsession.h"
 #include "sim/simulator.h"
+#include "sim/simulatoroptions.h"
+#include "session/rotatorsession.h"
 
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -114,6 +115,28 @@ private slots:
         SlewSimProcess refused;
         QVERIFY(!refused.start(args));
         QVERIFY2(refused.error().contains(QStringLiteral("micro2g.json")), qPrintable(refused.error()));
+    }
+
+    void aStateFileThatCannotBeWrittenIsSaid()
+    {
+        // Nowhere to write: the directory does not exist. A missing file at
+        // start is a fresh controller, not an error.
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("gone/micro2g.json"));
+        slew::sim::SimulatorOptions options;
+        QVERIFY(slew::sim::applySimulatorOption(options, u"dialect", u"micro2g").isEmpty());
+        QVERIFY(slew::sim::applySimulatorOption(options, u"clock", u"manual").isEmpty());
+        QVERIFY(slew::sim::applySimulatorOption(options, u"state_file", path).isEmpty());
+        slew::sim::Simulator sim(options);
+        sim.micro2g();
+        QCOMPARE(sim.stateFileError(), QString());
+        QSignalSpy failed(&sim, &slew::sim::Simulator::stateFileFailed);
+        sim.handleMicro2g(QStringLiteral("T1 30")); // a setting changes: it is written
+        QCOMPARE(failed.count(), 1);
+        QVERIFY2(failed.first().at(0).toString().contains(path), qPrintable(failed.first().at(0).toString()));
+        QCOMPARE(sim.micro2g().tolerance(1), 30); // kept while running all the same
+        sim.handleMicro2g(QStringLiteral("C1"));   // a poll changes nothing, writes nothing
+        QCOMPARE(failed.count(), 1);
     }
 
     void slewSimOverItsPty()
