@@ -259,6 +259,9 @@ private:
     std::array<Sent, 8> m_sent{};
     int m_sentNext = 0;
     QElapsedTimer m_clock; // the wall clock, for links that keep no stepped clock
+    // Writes a set-position the gate has already passed, and makes it the
+    // active target; go-to and relative moves share it.
+    CommandResult sendSetPosition(double az, double el);
     qint64 nowMs() const;  // the link's time where it is stepped, else m_clock's
     int m_echoesIgnored = 0;
     bool m_deviceEchoes = false; // this controller was seen echoing what it hears

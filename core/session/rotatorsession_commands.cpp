@@ -55,17 +55,7 @@ CommandResult RotatorSession::gotoPosition(double az, double el)
     const model::MoveCheck check = m_gate.pointing(az, el, knownAzimuth());
     if (!check.allowed())
         return refuseMove(check.refusal);
-    const double targetAz = check.azimuth;
-    const QByteArray line = protocol::encodeSetPosition(targetAz, el, m_profile.dialect, m_rotor);
-    rememberSent(Message::number(Op::Azimuth, std::round(targetAz * 100) / 100));
-    rememberSent(Message::number(Op::Elevation, std::round(el * 100) / 100));
-    m_jogSpeed = {0.0, 0.0};
-    writeMove(line);
-    m_activeTarget = PointingTarget{targetAz, el};
-    m_targetAz = targetAz;
-    m_targetEl = el;
-    emit targetChanged(targetAz, el);
-    return {};
+    return sendSetPosition(check.azimuth, el);
 }
 
 CommandResult RotatorSession::gotoAxis(Axis axis, double degrees, AzimuthIs meaning)
@@ -137,17 +127,22 @@ CommandResult RotatorSession::moveBy(double azimuthOffset, double elevationOffse
     const model::MoveCheck check = m_gate.mechanical(a, e);
     if (!check.allowed())
         return refuseMove(check.refusal);
-    const QByteArray line = protocol::encodeSetPosition(a, e, m_profile.dialect, m_rotor);
+    return sendSetPosition(a, e);
+}
+
+CommandResult RotatorSession::sendSetPosition(double az, double el)
+{
+    const QByteArray line = protocol::encodeSetPosition(az, el, m_profile.dialect, m_rotor);
     if (line.isEmpty())
         return refuse(tr("%1 has no command to set a position").arg(protocol::dialectName(m_profile.dialect)));
-    rememberSent(Message::number(Op::Azimuth, std::round(a * 100) / 100));
-    rememberSent(Message::number(Op::Elevation, std::round(e * 100) / 100));
+    rememberSent(Message::number(Op::Azimuth, std::round(az * 100) / 100));
+    rememberSent(Message::number(Op::Elevation, std::round(el * 100) / 100));
     m_jogSpeed = {0.0, 0.0};
     writeMove(line);
-    m_activeTarget = PointingTarget{a, e};
-    m_targetAz = a;
-    m_targetEl = e;
-    emit targetChanged(a, e);
+    m_activeTarget = PointingTarget{az, el};
+    m_targetAz = az;
+    m_targetEl = el;
+    emit targetChanged(az, el);
     return {};
 }
 

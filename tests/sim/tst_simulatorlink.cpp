@@ -171,7 +171,8 @@ private slots:
         const double w0 = wallNow();
         const double simStart = clock.now();
         const double w1 = wallNow();
-        QTest::qWait(50);
+        // Wall time has to pass for a wall clock: wait on it, not a nap.
+        QVERIFY(QTest::qWaitFor([&] { return wallNow() >= w1 + 0.05; }, 5000));
         const double w2 = wallNow();
         const double simulated = clock.now() - simStart;
         const double w3 = wallNow();
