@@ -125,7 +125,7 @@ void RotatorSession::disconnectFromRotator()
 
 void RotatorSession::openLink()
 {
-    transport::LinkResult made = transport::createLink(m_uri);
+    transport::LinkResult made = m_linkMaker ? m_linkMaker(m_uri) : transport::createLink(m_uri);
     if (!made.link) {
         m_wantConnected = false;
         setState(State::Disconnected, made.error);

@@ -14,6 +14,7 @@
 #include "protocol/checksum.h"
 #include "protocol/parser.h"
 #include "requestqueue.h"
+#include "transport/linkfactory.h"
 #include "sessiontypes.h"
 
 #include <QElapsedTimer>
@@ -22,6 +23,7 @@
 #include <QTimer>
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -57,6 +59,12 @@ public:
     const model::RotatorProfile &profile() const { return m_profile; }
     void setOptions(const Options &options);
     const Options &options() const { return m_options; }
+
+    // Where the session gets its link from a URI: createLink() unless set.
+    // A controller with several rotors on one line gives each rotor's
+    // session a link from one SharedLine (transport/sharedline.h).
+    using LinkMaker = std::function<transport::LinkResult(const QString &uri)>;
+    void setLinkMaker(LinkMaker maker) { m_linkMaker = std::move(maker); }
 
     State state() const { return m_state; }
     bool isConnected() const { return m_state == State::Connected; }
@@ -215,6 +223,7 @@ private:
     int m_badFramesInARow = 0;
 
     QString m_uri;
+    LinkMaker m_linkMaker;
     std::unique_ptr<transport::Link> m_link;
     State m_state = State::Disconnected;
     bool m_wantConnected = false;

@@ -80,6 +80,7 @@ void RotatorSession::sendNext()
         return;
     front->satisfied = 0;
     m_onWire = true;
+    m_link->setAwaitingReply(true); // a shared line holds the wire for the answer
     write(front->line);
     m_replyTimer.start(m_options.replyTimeoutMs);
 }
@@ -101,6 +102,8 @@ void RotatorSession::finishFront(bool ok, const QString &reason)
 {
     m_replyTimer.stop();
     m_onWire = false;
+    if (m_link)
+        m_link->setAwaitingReply(false);
     if (m_queue.isEmpty())
         return;
     Request r = m_queue.takeFront();

@@ -2,6 +2,8 @@
 #include "simulatorscheme.h"
 
 #include "simulatorlink.h"
+#include "transport/sharedline.h"
+#include "transport/sharedlinelink.h"
 #include "simulatoroptions.h"
 
 #include "transport/linkfactory.h"
@@ -83,6 +85,9 @@ void registerSimulatorScheme()
 
 Simulator *simulatorBehind(transport::Link *link)
 {
+    // One rotor's share of a simulated multi-rotor line: the line's simulator.
+    if (auto *shared = qobject_cast<transport::SharedLineLink *>(link))
+        link = shared->sharedLine() ? shared->sharedLine()->line() : nullptr;
     auto *sim = qobject_cast<SimulatorLink *>(link);
     return sim ? &sim->simulator() : nullptr;
 }

@@ -62,6 +62,11 @@ public:
     // timeouts and the stop hold by it (session/linktimer.h), so a test
     // decides how much time passes and a busy machine changes nothing.
     virtual bool clockIsStepped() const { return false; }
+    // The session calls this with true just before it writes a query it
+    // will wait an answer to, and with false once that query is answered,
+    // given up or abandoned. Only a link that shares its wire with other
+    // sessions (sharedline.h) needs to know; the rest ignore it.
+    virtual void setAwaitingReply(bool awaiting) { Q_UNUSED(awaiting); }
 
 signals:
     void opened();
