@@ -102,6 +102,14 @@ int runHeadless(int argc, char *argv[])
         config.rotctldMaxClients = *n;
     }
 
+    if (parser.isSet(QStringLiteral("rotors"))) {
+        const QString list = parser.value(QStringLiteral("rotors"));
+        const auto rotors = slew::bridge::parseRotorList(list, &error);
+        if (!rotors)
+            return fail(QStringLiteral("--rotors %1: %2").arg(list, error));
+        config.rotors = *rotors;
+    }
+
     if (parser.isSet(QStringLiteral("qth"))) {
         slew::sky::Station where;
         if (!slew::sky::parseStation(parser.value(QStringLiteral("qth")), &where, &error))

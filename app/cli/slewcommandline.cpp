@@ -94,7 +94,7 @@ ProgramMode makeHeadlessMode()
     ProgramMode mode;
     mode.title = QStringLiteral("Station service");
     mode.synopsis = QStringLiteral("slew --headless [--config FILE] [--connect URI] [--dialect NAME] "
-                                   "[--profile FILE] [--rotctld-listen ADDRESS:PORT] [--rotctld-allow ADDRESSES]");
+                                   "[--profile FILE] [--rotctld-listen ADDRESS:PORT] [--rotctld-allow ADDRESSES] [--rotors LIST]");
     mode.description = QStringLiteral(
         "Runs Slew with no window and no display, as a station service: it keeps the link to the rotator open "
         "and reconnects after a loss, serves the rotctld protocol to trackers, and logs one line per event on "
@@ -105,7 +105,7 @@ ProgramMode makeHeadlessMode()
         {{QStringLiteral("config")},
          QStringLiteral("file"),
          QStringLiteral("Read settings from FILE, one `name = value` a line, where name is one of connect, dialect, "
-                        "profile, rotctld-listen, rotctld-allow, rotctld-max-clients, qth. Options on the command line win over the file.")},
+                        "profile, rotctld-listen, rotctld-allow, rotctld-max-clients, rotors, qth. Options on the command line win over the file.")},
         connectOption(QStringLiteral("The rotator's link URI (default sim:, the built-in simulator).")),
         dialectOption(),
         profileOption(),
@@ -115,6 +115,14 @@ ProgramMode makeHeadlessMode()
          QStringLiteral("Comma-separated client addresses the rotctld server accepts (default: any)."),
          true},
         rotctldMaxClientsOption(),
+        {{QStringLiteral("rotors")},
+         QStringLiteral("list"),
+         QStringLiteral("Serve these rotors of a multi-rotor controller (the Micro-2g's 1 to 4, as 1,2,4 or 1-4) over "
+                        "the one link, each with a session and a rotctld port of its own: the first rotor on "
+                        "--rotctld-listen's port, the next on the port after it, and so on (each a free port of its "
+                        "own with port 0). The --connect URI then names no rotor. Log lines say which rotor they "
+                        "are about."),
+         true},
         stationOption(QStringLiteral("Where the antenna stands: LAT,LON or LAT,LON,HEIGHT_M (degrees north and east, "
                                      "metres above the WGS-84 ellipsoid), or a Maidenhead locator of 4, 6 or 8 "
                                      "characters (JO65hq). Checked at start and logged."),

@@ -7,6 +7,7 @@
 #include "session/rotatorsession.h"
 #include "session/stopbeforeexit.h"
 #include "transport/linkfactory.h"
+#include "transport/sharedline.h"
 
 #include <QDateTime>
 
@@ -14,24 +15,91 @@ namespace slew::bridge {
 
 using session::RotatorSession;
 
-HeadlessStation::HeadlessStation(std::FILE *logFile, QObject *parent)
-    : QObject(parent), m_log(logFile), m_session(std::make_unique<RotatorSession>())
+std::optional<QList<int>> parseRotorList(const QString &text, QString *error)
 {
-    RotatorSession *s = m_session.get();
-    connect(s, &RotatorSession::stateChanged, this, [this](RotatorSession::State, const QString &detail) {
-        log(tr("link: %1").arg(detail));
+    QList<int> rotors;
+    auto add = [&](int n) {
+        if (n < 1 || n > 4) {
+            *error = QObject::tr("rotors are 1 to 4, not %1").arg(n);
+            return false;
+        }
+        if (rotors.contains(n)) {
+            *error = QObject::tr("rotor %1 is named twice").arg(n);
+            return false;
+        }
+        rotors.append(n);
+        return true;
+    };
+    for (const QString &item : text.split(u',')) {
+        const QStringList range = item.trimmed().split(u'-');
+        bool okFirst = false, okLast = false;
+        const int first = range.front().trimmed().toInt(&okFirst);
+        const int last = range.size() == 2 ? range.back().trimmed().toInt(&okLast) : first;
+        if (range.size() > 2 || !okFirst || (range.size() == 2 && !okLast) || last < first) {
+            *error = QObject::tr("'%1' is not a rotor or a range of rotors (as in 1,2,4 or 1-4)").arg(item.trimmed());
+            return std::nullopt;
+        }
+        for (int n = first; n <= last; ++n) {
+            if (!add(n))
+                return std::nullopt;
+        }
+    }
+    return rotors;
+}
+
+HeadlessStation::HeadlessStation(std::FILE *logFile, QObject *parent) : QObject(parent), m_log(logFile) {}
+
+HeadlessStation::Rotor &HeadlessStation::addRotor(int number, const model::RotatorProfile &profile)
+{
+    Rotor &rotor = m_rotors.emplace_back();
+    rotor.number = number;
+    rotor.session = std::make_unique<RotatorSession>();
+    RotatorSession *s = rotor.session.get();
+    RotatorSession::Options options = s->options();
+    options.autoReconnect = true; // a service keeps trying after a loss
+    s->setOptions(options);
+    s->setProfile(profile);
+    if (m_line)
+        s->setLinkMaker([line = m_line.get()](const QString &uri) { return line->makeLink(uri); });
+
+    // With several rotors every line says whose it is.
+    const QString who = number > 0 ? tr("rotor %1: ").arg(number) : QString();
+    auto say = [this, who](const QString &line) { log(who + line); };
+    connect(s, &RotatorSession::stateChanged, this, [say](RotatorSession::State, const QString &detail) {
+        say(tr("link: %1").arg(detail));
     });
-    connect(s, &RotatorSession::errorOccurred, this, [this](const QString &m) { log(tr("error: %1").arg(m)); });
-    connect(s, &RotatorSession::commandRefused, this, [this](const QString &m) { log(tr("refused: %1").arg(m)); });
-    connect(s, &RotatorSession::alarmReceived, this, [this](const QString &m) { log(tr("alarm: %1").arg(m)); });
-    connect(s, &RotatorSession::versionChanged, this, [this](const QString &v) { log(tr("controller: %1").arg(v)); });
-    connect(s, &RotatorSession::targetChanged, this, [this](double az, double el) {
-        log(tr("target: az %1 el %2").arg(az, 0, 'f', 1).arg(el, 0, 'f', 1));
+    connect(s, &RotatorSession::errorOccurred, this, [say](const QString &m) { say(tr("error: %1").arg(m)); });
+    connect(s, &RotatorSession::commandRefused, this, [say](const QString &m) { say(tr("refused: %1").arg(m)); });
+    connect(s, &RotatorSession::alarmReceived, this, [say](const QString &m) { say(tr("alarm: %1").arg(m)); });
+    connect(s, &RotatorSession::versionChanged, this, [say](const QString &v) { say(tr("controller: %1").arg(v)); });
+    connect(s, &RotatorSession::targetChanged, this, [say](double az, double el) {
+        say(tr("target: az %1 el %2").arg(az, 0, 'f', 1).arg(el, 0, 'f', 1));
     });
-    connect(s, &RotatorSession::errorFlagsChanged, this, [this](int flags) {
+    connect(s, &RotatorSession::errorFlagsChanged, this, [say](int flags) {
         const QString text = session::describeErrorFlags(flags);
-        log(tr("error register: %1").arg(text.isEmpty() ? tr("no error") : text));
+        say(tr("error register: %1").arg(text.isEmpty() ? tr("no error") : text));
     });
+    return rotor;
+}
+
+bool HeadlessStation::listen(Rotor &rotor, const HeadlessConfig &config, quint16 port, QString *error)
+{
+    rotor.server = std::make_unique<RotctldServer>(rotor.session.get());
+    RotctldServer *server = rotor.server.get();
+    server->setAllowedClients(config.allowedClients);
+    server->setMaxClients(config.rotctldMaxClients);
+    server->setDeadband(config.profile.deadbandDeg);
+    const QString who = rotor.number > 0 ? tr("rotor %1: ").arg(rotor.number) : QString();
+    connect(server, &RotctldServer::logMessage, this, [this, who](const QString &m) { log(who + m); });
+    server->setLogCommands(true); // polls excepted, escaped and rate-limited per client
+    if (!server->listen(config.rotctldAddress, port, error)) {
+        if (rotor.number > 0)
+            *error = who + *error;
+        return false;
+    }
+    // The ready line scripts wait for, with the real port.
+    log(who + tr("rotctld listening on %1:%2").arg(server->address().toString()).arg(server->port()));
+    return true;
 }
 
 HeadlessStation::~HeadlessStation() = default;
@@ -50,29 +118,41 @@ bool HeadlessStation::start(const HeadlessConfig &config, QString *error)
 {
     if (config.station)
         log(tr("station: %1").arg(sky::describeStation(*config.station)));
-    RotatorSession::Options options = m_session->options();
-    options.autoReconnect = true; // a service keeps trying after a loss
-    m_session->setOptions(options);
     model::RotatorProfile profile = config.profile;
     // A rotctld:// peer speaks one dialect whatever the profile names (the
     // window takes it from the link's hints the same way).
     if (transport::linkHintsFor(profile.uri).dialect == protocol::dialectName(protocol::Dialect::Rotctld))
         profile.dialect = protocol::Dialect::Rotctld;
-    m_session->setProfile(profile);
-    if (config.rotctldEnabled) {
-        m_server = std::make_unique<RotctldServer>(m_session.get());
-        m_server->setAllowedClients(config.allowedClients);
-        m_server->setMaxClients(config.rotctldMaxClients);
-        m_server->setDeadband(config.profile.deadbandDeg);
-        connect(m_server.get(), &RotctldServer::logMessage, this, [this](const QString &m) { log(m); });
-        m_server->setLogCommands(true); // polls excepted, escaped and rate-limited per client
-        if (!m_server->listen(config.rotctldAddress, config.rotctldPort, error))
+
+    QList<int> numbers = config.rotors;
+    if (!numbers.isEmpty()) {
+        if (config.rotctldEnabled && config.rotctldPort != 0 && int(config.rotctldPort) + numbers.size() - 1 > 65535) {
+            *error = tr("--rotors: %1 ports from %2 run past 65535").arg(numbers.size()).arg(config.rotctldPort);
             return false;
-        // The ready line scripts wait for, with the real port.
-        log(tr("rotctld listening on %1:%2").arg(m_server->address().toString()).arg(m_server->port()));
+        }
+        m_line = std::make_unique<transport::SharedLine>(profile.uri);
+        if (!m_line->isValid()) {
+            *error = m_line->error();
+            return false;
+        }
+    } else {
+        numbers = {0};
     }
-    log(tr("connecting to %1").arg(config.profile.uri));
-    m_session->connectTo(config.profile.uri);
+    for (int n : numbers)
+        addRotor(n, profile);
+
+    if (config.rotctldEnabled) {
+        for (size_t i = 0; i < m_rotors.size(); ++i) {
+            const quint16 port = config.rotctldPort == 0 ? 0 : quint16(config.rotctldPort + i);
+            if (!listen(m_rotors[i], config, port, error))
+                return false;
+        }
+    }
+    for (Rotor &rotor : m_rotors) {
+        const QString uri = m_line ? transport::SharedLine::rotorUri(m_line->uri(), rotor.number) : profile.uri;
+        log((rotor.number > 0 ? tr("rotor %1: ").arg(rotor.number) : QString()) + tr("connecting to %1").arg(uri));
+        rotor.session->connectTo(uri);
+    }
     return true;
 }
 
@@ -82,10 +162,24 @@ void HeadlessStation::shutdown(const QString &why)
         return;
     m_stopping = true;
     log(tr("stopping: %1").arg(why));
-    if (m_server)
-        m_server->close();
-    if (session::stopThenCall(*m_session, this, [this] { emit finished(); }))
-        log(tr("rotator stopped"));
+    for (Rotor &rotor : m_rotors) {
+        if (rotor.server)
+            rotor.server->close();
+    }
+    // Every rotor stops; the service ends once every stop has left the link.
+    m_stillStopping = int(m_rotors.size());
+    if (m_stillStopping == 0) {
+        emit finished();
+        return;
+    }
+    for (Rotor &rotor : m_rotors) {
+        const QString who = rotor.number > 0 ? tr("rotor %1: ").arg(rotor.number) : QString();
+        if (session::stopThenCall(*rotor.session, this, [this] {
+                if (--m_stillStopping == 0)
+                    emit finished();
+            }))
+            log(who + tr("rotator stopped"));
+    }
 }
 
 } // namespace slew::bridge

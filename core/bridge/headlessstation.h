@@ -4,6 +4,10 @@
 // reconnects after a loss, a rotctld-compatible server for the trackers, and
 // a log line on stdout for everything that happens. On SIGINT or SIGTERM it
 // stops the rotator before it exits.
+//
+// A controller with several rotors on one line (the Micro-2g) is served as
+// several stations in one: a session and a rotctld port per rotor, all on
+// the one link (transport/sharedline.h), so a tracker per antenna can steer.
 
 #include "model/rotatorprofile.h"
 #include "sky/station.h"
@@ -14,10 +18,14 @@
 
 #include <cstdio>
 #include <memory>
+#include <vector>
 #include <optional>
 
 namespace slew::session {
 class RotatorSession;
+}
+namespace slew::transport {
+class SharedLine;
 }
 
 namespace slew::bridge {
@@ -32,7 +40,16 @@ struct HeadlessConfig {
     QList<QHostAddress> allowedClients; // empty: any
     int rotctldMaxClients = 32;         // RotctldServer::kDefaultMaxClients
     std::optional<sky::Station> station; // --qth / `qth =`: where the antenna stands
+    // --rotors: the rotors of a multi-rotor controller to serve, each with a
+    // session and a rotctld port of its own: rotctldPort, the next port, and
+    // so on (each a free port of its own when rotctldPort is 0). Empty: the
+    // one rotor the URI names, or the controller's default.
+    QList<int> rotors;
 };
+
+// "1,2,4" or "1-4" as rotor numbers 1..4, each once, in the order given;
+// nothing (and why in *error) for anything else.
+std::optional<QList<int>> parseRotorList(const QString &text, QString *error);
 
 class HeadlessStation : public QObject {
     Q_OBJECT
@@ -47,18 +64,28 @@ public:
     // Stops the rotator, lets the stop leave the link, then emits finished().
     void shutdown(const QString &why);
 
-    session::RotatorSession *session() const { return m_session.get(); }
-    RotctldServer *server() const { return m_server.get(); }
+    // The first rotor's session and server (the only ones without --rotors).
+    session::RotatorSession *session() const { return m_rotors.empty() ? nullptr : m_rotors.front().session.get(); }
+    RotctldServer *server() const { return m_rotors.empty() ? nullptr : m_rotors.front().server.get(); }
+    int rotorCount() const { return int(m_rotors.size()); }
 
 signals:
     void finished();
 
 private:
+    struct Rotor {
+        int number = 0; // 0: the one rotor of an ordinary rotator
+        std::unique_ptr<session::RotatorSession> session;
+        std::unique_ptr<RotctldServer> server;
+    };
     void log(const QString &line);
+    Rotor &addRotor(int number, const model::RotatorProfile &profile);
+    bool listen(Rotor &rotor, const HeadlessConfig &config, quint16 port, QString *error);
 
     std::FILE *m_log;
-    std::unique_ptr<session::RotatorSession> m_session;
-    std::unique_ptr<RotctldServer> m_server;
+    std::unique_ptr<transport::SharedLine> m_line; // with --rotors: the one link they share
+    std::vector<Rotor> m_rotors;
+    int m_stillStopping = 0;
     bool m_stopping = false;
 };
 

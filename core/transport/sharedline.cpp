@@ -23,6 +23,12 @@ QString SharedLine::lineUri(const QString &uri)
     return text;
 }
 
+QString SharedLine::rotorUri(const QString &lineUri, int rotor)
+{
+    const QString line = SharedLine::lineUri(lineUri);
+    return line + (line.contains(u'?') ? u'&' : u'?') + QStringLiteral("rotor=%1").arg(rotor);
+}
+
 SharedLine::SharedLine(const QString &uri, QObject *parent) : QObject(parent), m_uri(lineUri(uri))
 {
     LinkResult made = createLink(m_uri);

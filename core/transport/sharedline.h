@@ -62,6 +62,8 @@ public:
 
     // `uri` without its `rotor=` item: the line it is on.
     static QString lineUri(const QString &uri);
+    // The line's URI with `rotor=n` (1..4) added: one rotor on it.
+    static QString rotorUri(const QString &lineUri, int rotor);
 
 private:
     friend class SharedLineLink;

@@ -21,6 +21,12 @@ bool SharedLineDevice::deliver(const QByteArray &bytes)
     return true;
 }
 
+qint64 SharedLineDevice::bytesToWrite() const
+{
+    const SharedLine *line = m_link->sharedLine();
+    return line && line->line() && line->isOpen() ? line->line()->device()->bytesToWrite() : 0;
+}
+
 qint64 SharedLineDevice::readData(char *data, qint64 maxSize)
 {
     const qint64 n = std::min<qint64>(maxSize, m_received.size());
@@ -46,6 +52,10 @@ SharedLineLink::SharedLineLink(const QString &uri, int rotor, SharedLine *line, 
         connect(real, &Link::clockStepped, this, &Link::clockStepped);
         connect(real, &Link::notice, this, &Link::notice);
         connect(real, &Link::limitsReported, this, &Link::limitsReported);
+        connect(real->device(), &QIODevice::bytesWritten, &m_device, [this](qint64 n) {
+            if (m_open)
+                emit m_device.bytesWritten(n);
+        });
     }
 }
 

@@ -20,6 +20,9 @@ public:
 
     bool isSequential() const override { return true; }
     qint64 bytesAvailable() const override { return m_received.size() + QIODevice::bytesAvailable(); }
+    // What the line has still to send, this rotor's or not: a stop before
+    // exit waits for it all (session/stopbeforeexit.h).
+    qint64 bytesToWrite() const override;
 
     // Bytes from the line for this rotor; false if the session has left
     // more than kMaxUnread unread, and they were dropped.

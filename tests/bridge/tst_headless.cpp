@@ -11,6 +11,7 @@
 #include <QElapsedTimer>
 #include <QFile>
 #include <QPointF>
+#include <QSet>
 #include <QTcpSocket>
 #include <QTemporaryDir>
 #include <QTest>
@@ -20,6 +21,7 @@
 #include <QTimer>
 
 #include <csignal>
+#include <array>
 #include <functional>
 #include <list>
 #include <sys/resource.h>
@@ -33,6 +35,8 @@ private slots:
     void reconnectsAfterTheRotatorReturns();
     void repeatedTargetReachesTheRotatorAfterStopAndReconnect();
     void refusesABadListenAddress();
+    void servesOneRotctldPortPerRotor();
+    void refusesABadRotorList();
     void runningOutOfDescriptorsDoesNotSpin();
     void hostileClientCannotFloodTheLog();
 
@@ -294,6 +298,83 @@ void HeadlessTest::refusesABadListenAddress()
     QVERIFY(finished.wait(10000));
     QCOMPARE(slew.exitCode(), 2);
     QVERIFY(slew.readAllStandardError().contains("expected ADDRESS:PORT"));
+}
+
+void HeadlessTest::servesOneRotctldPortPerRotor()
+{
+    // A Micro-2g with four rotors on one line, and a tracker per rotor.
+    QTemporaryDir dir;
+    const QString received = dir.filePath("received.log");
+    SlewSimProcess sim;
+    QVERIFY2(sim.start({"--listen", "127.0.0.1:0", "--dialect", "micro2g", "--time-scale", "4", "--log-received", received}),
+             qPrintable(sim.error()));
+    QProcess slew;
+    quint16 first = 0;
+    QVERIFY2(startSlew(slew, {"--connect", QStringLiteral("tcp://127.0.0.1:%1").arg(sim.port()), "--dialect", "micro2g",
+                               "--rotctld-listen", "127.0.0.1:0", "--rotors", "1-4"},
+                       &first),
+             slew.readAllStandardError().constData());
+    // Every rotor says which port is its own.
+    QByteArray out = m_startupLog;
+    QVERIFY(QTest::qWaitFor([&] {
+        out += slew.readAllStandardOutput();
+        return out.count("rotctld listening on") == 4;
+    }, 10000));
+    QMap<int, quint16> ports;
+    const QRegularExpression ready(QStringLiteral("rotor (\\d): rotctld listening on 127.0.0.1:(\\d+)"));
+    for (auto m = ready.globalMatch(QString::fromUtf8(out)); m.hasNext();) {
+        const auto match = m.next();
+        ports[match.captured(1).toInt()] = quint16(match.captured(2).toUInt());
+    }
+    QCOMPARE(ports.keys(), (QList<int>{1, 2, 3, 4}));
+    QCOMPARE(ports[1], first);
+    QCOMPARE(QSet<quint16>(ports.begin(), ports.end()).size(), 4);
+
+    std::array<QTcpSocket, 4> trackers;
+    for (int n = 1; n <= 4; ++n) {
+        trackers[size_t(n - 1)].connectToHost(QHostAddress::LocalHost, ports[n]);
+        QTRY_COMPARE(trackers[size_t(n - 1)].state(), QAbstractSocket::ConnectedState);
+        QVERIFY(QTest::qWaitFor([&] { return ask(trackers[size_t(n - 1)], "p").count('\n') == 2; }, 10000));
+    }
+    QCOMPARE(ask(trackers[1], "P 30 0"), QByteArray("RPRT 0\n"));
+    QCOMPARE(ask(trackers[3], "P 60 0"), QByteArray("RPRT 0\n"));
+    // Azimuth only: an elevation is refused, with Hamlib's "not available".
+    QCOMPARE(ask(trackers[2], "P 10 20"), QByteArray("RPRT -11\n"));
+
+    // Each port turns its own rotor: 2 and 4 move, 1 and 3 stay at the north stop.
+    auto azimuthOf = [&](int n) { return ask(trackers[size_t(n - 1)], "p").split('\n').front().toDouble(); };
+    QVERIFY(QTest::qWaitFor([&] { return azimuthOf(2) > 15 && azimuthOf(4) > 30; }, 15000));
+    QCOMPARE(azimuthOf(1), 0.0);
+    QCOMPARE(azimuthOf(3), 0.0);
+
+    // SIGTERM stops every rotor before Slew exits.
+    for (QTcpSocket &t : trackers)
+        t.disconnectFromHost();
+    QSignalSpy finished(&slew, &QProcess::finished);
+    ::kill(pid_t(slew.processId()), SIGTERM);
+    QVERIFY(finished.wait(10000));
+    QCOMPARE(slew.exitCode(), 0);
+    out += slew.readAllStandardOutput();
+    QFile log(received);
+    QVERIFY(log.open(QIODevice::ReadOnly));
+    const QByteArray wire = log.readAll();
+    for (int n = 1; n <= 4; ++n) {
+        QVERIFY2(out.contains(QStringLiteral("rotor %1: rotator stopped").arg(n).toUtf8()), out.constData());
+        QVERIFY2(wire.contains(QStringLiteral("S%1").arg(n).toUtf8()), wire.constData());
+    }
+}
+
+void HeadlessTest::refusesABadRotorList()
+{
+    for (const char *list : {"5", "1,1", "2-1", "one"}) {
+        QProcess slew;
+        QSignalSpy finished(&slew, &QProcess::finished);
+        slew.start(qEnvironmentVariable("SLEW_BIN"), {"--headless", "--connect", "sim:?dialect=micro2g", "--rotors", list});
+        QVERIFY(finished.wait(10000));
+        QCOMPARE(slew.exitCode(), 2);
+        const QByteArray err = slew.readAllStandardError();
+        QVERIFY2(err.contains("--rotors"), err.constData());
+    }
 }
 
 void HeadlessTest::runningOutOfDescriptorsDoesNotSpin()
