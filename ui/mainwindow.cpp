@@ -15,6 +15,7 @@
 #include "positionreadout.h"
 #include "presetpanel.h"
 #include "rotctldpanel.h"
+#include "rotorspanel.h"
 #include "stationdialog.h"
 #include "stopbutton.h"
 #include "targetconfirmation.h"
@@ -24,6 +25,7 @@
 #include "wizard/setupwizard.h"
 
 #include "bridge/rotctldserver.h"
+#include "session/controllerrotors.h"
 #include "sky/tlesources.h"
 
 #include <QDateTime>
@@ -75,6 +77,10 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
     m_log = new EventLog;
     m_rotctld = new bridge::RotctldServer(session, this);
     m_trackers = new RotctldPanel(m_rotctld);
+    // Before the first connection: a multi-rotor controller's line is shared
+    // from the start.
+    m_controllerRotors = new session::ControllerRotors(session, this);
+    m_rotorsPanel = new RotorsPanel(m_controllerRotors);
 
     m_tabs = new QTabWidget;
     m_tabs->setObjectName(QStringLiteral("mainTabs"));
@@ -89,6 +95,7 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
     plotLayout->setContentsMargins(0, 0, 0, 0);
     plotLayout->addWidget(m_plot, 1);
     plotLayout->addWidget(m_confirm);
+    plotLayout->addWidget(m_rotorsPanel);
 
     auto *splitter = new QSplitter(Qt::Horizontal);
     splitter->setObjectName(QStringLiteral("mainSplitter"));
@@ -129,6 +136,8 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
     connect(m_stop, &StopButton::stopped, m_jog, &JogPad::releaseAll);
     connect(m_stop, &StopButton::stopped, m_parkHome, &ParkHomePanel::abandonHoming);
     connect(m_stop, &StopButton::stopped, m_confirm, &TargetConfirmation::cancel);
+    // Stop (the button, Space, Esc) stops every rotor on the controller.
+    connect(m_stop, &StopButton::stopped, m_controllerRotors, &session::ControllerRotors::stopOthers);
     // The operator stays in charge: after a local Stop, trackers may not
     // move the rotator until the operator hands control back.
     connect(m_stop, &StopButton::stopped, m_rotctld, [this] {

@@ -30,6 +30,7 @@ class PolarPlotWidget;
 class PositionReadout;
 class PresetPanel;
 class RotctldPanel;
+class RotorsPanel;
 class StopButton;
 class TargetConfirmation;
 class TelemetryCharts;
@@ -40,6 +41,10 @@ class TrafficConsole;
 
 namespace slew::sky {
 class TleSources;
+}
+
+namespace slew::session {
+class ControllerRotors;
 }
 
 namespace slew::ui {
@@ -66,6 +71,9 @@ public:
     QTabWidget *tabs() const { return m_tabs; }
     bridge::RotctldServer *rotctldServer() const { return m_rotctld; }
     RotctldPanel *rotctldPanel() const { return m_trackers; }
+    // The other rotors of a multi-rotor controller, and their tiles.
+    session::ControllerRotors *controllerRotors() const { return m_controllerRotors; }
+    RotorsPanel *rotorsPanel() const { return m_rotorsPanel; }
     // The element sets Slew knows, loaded from the cache at start.
     sky::TleSources *elementSets() const { return m_elementSets; }
 
@@ -106,6 +114,8 @@ private:
     KeyboardControl *m_keys;
     bridge::RotctldServer *m_rotctld;
     RotctldPanel *m_trackers;
+    session::ControllerRotors *m_controllerRotors;
+    RotorsPanel *m_rotorsPanel;
     sky::TleSources *m_elementSets;
 };
 

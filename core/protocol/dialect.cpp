@@ -47,6 +47,11 @@ bool isAzimuthOnly(Dialect d)
     return d == Dialect::Micro2g;
 }
 
+int rotorsOnLine(Dialect d)
+{
+    return d == Dialect::Micro2g ? 4 : 1;
+}
+
 // Micro-2g counts here too: its go-to names one rotor's azimuth, and the
 // session then treats the (always 0) elevation as the other axis.
 bool setsBothAxesTogether(Dialect d)

@@ -31,6 +31,9 @@ bool isGs232(Dialect d);
 // A controller of azimuth rotors only (Micro-2g): no elevation to command,
 // and its position reads as elevation 0.
 bool isAzimuthOnly(Dialect d);
+// How many rotors one controller of this dialect drives on its one line
+// (the Micro-2g: 4); 1 for every other dialect.
+int rotorsOnLine(Dialect d);
 
 // Whether a set position always names both axes (Easycomm I's one line,
 // GS-232's W, rotctld's P): a one-axis move must then name the other too.

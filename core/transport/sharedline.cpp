@@ -61,7 +61,9 @@ LinkResult SharedLine::makeLink(const QString &uri)
         return {nullptr, m_error};
     if (lineUri(uri) != m_uri)
         return {nullptr, tr("%1 is not on the shared line %2").arg(uri, m_uri)};
-    int rotor = 0;
+    // On a shared line every rotor is named: "the controller's default
+    // rotor" changes whenever another rotor is sent a go-to.
+    int rotor = 1;
     const QUrlQuery query{QUrl(uri.trimmed())};
     if (query.hasQueryItem(QStringLiteral("rotor"))) {
         bool ok = false;

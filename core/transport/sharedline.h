@@ -49,7 +49,9 @@ public:
 
     // A link to one rotor on this line, unopened, for
     // RotatorSession::setLinkMaker. Its URI must name this line (any
-    // `rotor=` aside); the caller owns the link.
+    // `rotor=` aside); without a `rotor=` it drives rotor 1, since the
+    // controller's default rotor moves with every other rotor's go-to. The
+    // caller owns the link.
     LinkResult makeLink(const QString &uri);
 
     // The real link, for diagnostics and tests (the simulator behind a

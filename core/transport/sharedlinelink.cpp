@@ -91,8 +91,7 @@ void SharedLineLink::close()
 LinkHints SharedLineLink::hints() const
 {
     LinkHints h = m_line && m_line->line() ? m_line->line()->hints() : LinkHints{};
-    if (m_rotor > 0)
-        h.rotor = m_rotor;
+    h.rotor = m_rotor;
     return h;
 }
 

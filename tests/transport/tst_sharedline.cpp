@@ -111,6 +111,10 @@ private slots:
         const std::unique_ptr<Link> two = rotorLink(line, 2);
         QVERIFY(two);
         QCOMPARE(two->hints().rotor, std::optional<int>(2));
+        // Unnamed, it is rotor 1: another rotor's go-to moves the controller's default.
+        const LinkResult unnamed = line.makeLink(QStringLiteral("testline:one"));
+        QVERIFY(unnamed.link);
+        QCOMPARE(unnamed.link->hints().rotor, std::optional<int>(1));
 
         SharedLine broken(QStringLiteral("nosuchscheme:x"));
         QVERIFY(!broken.isValid());
