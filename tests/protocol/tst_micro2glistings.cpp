@@ -21,9 +21,12 @@ private slots:
         QTest::addColumn<int>("rightAdc");
         QTest::addColumn<int>("rightBearing");
         QTest::addColumn<int>("range");
-        QTest::newRow("north stop") << QByteArray("Z1L 3990=000 Z1R 2440=090 Z1D 450") << 1 << 3990 << 0 << 2440 << 90 << 450;
-        QTest::newRow("south stop") << QByteArray("Z2L 3990=180 Z2R 2440=270 Z2D 450") << 2 << 3990 << 180 << 2440 << 270 << 450;
-        QTest::newRow("lower case, blanks") << QByteArray("  z4l 12=5\tz4r  4095=359 z4d 90 ") << 4 << 12 << 5 << 4095 << 359 << 90;
+        QTest::newRow("north stop") << QByteArray("Z1L 3990=000 Z1R 2440=090 Z1D 450")
+                                    << 1 << 3990 << 0 << 2440 << 90 << 450;
+        QTest::newRow("south stop") << QByteArray("Z2L 3990=180 Z2R 2440=270 Z2D 450")
+                                    << 2 << 3990 << 180 << 2440 << 270 << 450;
+        QTest::newRow("lower case, blanks") << QByteArray("  z4l 12=5\tz4r  4095=359 z4d 90 ")
+                                            << 4 << 12 << 5 << 4095 << 359 << 90;
     }
     void readsACalibrationLine()
     {

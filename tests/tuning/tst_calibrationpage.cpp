@@ -35,6 +35,8 @@ using Drive = Micro2gController::Drive;
 namespace {
 
 constexpr int kWaitMs = 20000;
+// What the page says once the controller has taken a setting.
+const QString kTaken = QStringLiteral("holds what was sent so far");
 // The controller stops within its tolerance of a target: 20 counts, 5.8° on
 // 1550 counts for 450°, and a count more for the reading's rounding.
 constexpr double kToleranceDegrees = 6.5;
@@ -100,7 +102,8 @@ class CalibrationPageTest : public QObject {
         c.setHandDrive(rotor, way);
         const bool there = runEventLoopUntil([&] { return c.travel(rotor) == stop; }, kWaitMs);
         c.setHandDrive(rotor, Drive::Off);
-        return there && runEventLoopUntil([&] { return b.text("adcReading").contains(QStringLiteral("at rest")); }, kWaitMs);
+        return there
+            && runEventLoopUntil([&] { return b.text("adcReading").contains(QStringLiteral("at rest")); }, kWaitMs);
     }
 
     // The page's four steps with these bearings and range.
@@ -109,7 +112,7 @@ class CalibrationPageTest : public QObject {
         QVERIFY(turnToStop(b, rotor, Drive::Left));
         b.find<QSpinBox>("leftBearing")->setValue(left);
         QTest::mouseClick(b.find<QPushButton>("setLeft"), Qt::LeftButton);
-        TRY_VERIFY_WITH_TIMEOUT(b.text("calibrationStatus").contains(QStringLiteral("holds what was sent so far")), kWaitMs);
+        TRY_VERIFY_WITH_TIMEOUT(b.text("calibrationStatus").contains(kTaken), kWaitMs);
 
         // Turning: the page says so and will not take a stop meanwhile.
         b.controller().setHandDrive(rotor, Drive::Right);
@@ -118,7 +121,7 @@ class CalibrationPageTest : public QObject {
         QVERIFY(turnToStop(b, rotor, Drive::Right));
         b.find<QSpinBox>("rightBearing")->setValue(right);
         QTest::mouseClick(b.find<QPushButton>("setRight"), Qt::LeftButton);
-        TRY_VERIFY_WITH_TIMEOUT(b.text("calibrationStatus").contains(QStringLiteral("holds what was sent so far")), kWaitMs);
+        TRY_VERIFY_WITH_TIMEOUT(b.text("calibrationStatus").contains(kTaken), kWaitMs);
 
         b.find<QSpinBox>("degreeRange")->setValue(range);
         QTest::mouseClick(b.find<QPushButton>("setRange"), Qt::LeftButton);
@@ -136,7 +139,8 @@ class CalibrationPageTest : public QObject {
                                 kWaitMs);
         QVERIFY(b.session.gotoPosition(bearing, 0));
         TRY_VERIFY_WITH_TIMEOUT(c.drive(rotor) != Drive::Off, kWaitMs);
-        TRY_VERIFY2_WITH_TIMEOUT(c.drive(rotor) == Drive::Off && angleBetween(c.trueBearing(rotor), bearing) <= kToleranceDegrees,
+        TRY_VERIFY2_WITH_TIMEOUT(c.drive(rotor) == Drive::Off
+                                     && angleBetween(c.trueBearing(rotor), bearing) <= kToleranceDegrees,
                                  qPrintable(QStringLiteral("went to %1 for %2").arg(c.trueBearing(rotor)).arg(bearing)),
                                  kWaitMs);
         TRY_VERIFY_WITH_TIMEOUT(angleBetween(b.session.azimuth(), c.trueBearing(rotor)) <= kToleranceDegrees, kWaitMs);
