@@ -340,6 +340,11 @@ void RotatorSession::apply(const Message &m)
     case Op::Encoders:
         emit encodersChanged(m.encoders[0], m.encoders[1], m.encoders[2], m.encoders[3]);
         break;
+    case Op::Calibration:
+    case Op::AdcReadings:
+        if (!applyMicro2gListing(m))
+            return;
+        break;
     case Op::Alarm: {
         const QString text = QString::fromLatin1(m.text.view().toByteArray());
         // The controller may have refused the target, or stopped: resend it.

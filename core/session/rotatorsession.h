@@ -12,6 +12,7 @@
 #include "model/movegate.h"
 #include "model/rotatorprofile.h"
 #include "protocol/checksum.h"
+#include "protocol/micro2glistings.h"
 #include "protocol/parser.h"
 #include "requestqueue.h"
 #include "transport/linkfactory.h"
@@ -120,6 +121,20 @@ public:
     bool isPolling() const { return m_pollingEnabled; }
     void setPolling(bool enabled);
 
+    // The Micro-2g program's two-point calibration (docs/protocol.md,
+    // "Micro-2g"; rotatorsession_micro2g.cpp). Each goes through the request
+    // queue like any query, so it never cuts into a poll's answer. Every
+    // `Z` line that comes back is handed on by calibrationReceived(), every
+    // `V` item by adcReadingReceived(); a calibration request the controller
+    // refuses (`?>`) or leaves unanswered ends in calibrationFailed().
+    enum class CalibrationPoint { LeftStop, RightStop, DegreeRange };
+    CommandResult requestCalibration(int rotor); // `Z`, done when rotor's line is in
+    CommandResult requestAdcReadings();          // `V`
+    // `ZnL mmm` / `ZnR mmm` (the present reading is that stop, at bearing
+    // mmm, 0..359) or `ZnD mmm` (90..540 degrees of travel), and `Z` after
+    // it on the same request, so what the controller now holds comes back.
+    CommandResult setCalibration(int rotor, CalibrationPoint point, int value);
+
 public slots:
     void connectTo(const QString &uri);
     void disconnectFromRotator();
@@ -175,6 +190,10 @@ signals:
     // acted on; the alarm says the link itself is damaging what it carries.
     void badFramesAlarm(bool on, const QString &text);
     void errorOccurred(const QString &message);
+    // The Micro-2g listings, read (requestCalibration() and the rest above).
+    void calibrationReceived(int rotor, const slew::protocol::Micro2gCalibration &calibration);
+    void adcReadingReceived(int rotor, int counts);
+    void calibrationFailed(int rotor, const QString &reason);
 
 private:
     void setState(State s, const QString &detail = {});
@@ -190,6 +209,9 @@ private:
     void applyPosition();
     void applyInput(int index, double value);
     void applyConfig(int reg, const QString &text, bool numeric, double value);
+    // A Z or V listing: handed on; false when it is a command's echo instead.
+    bool applyMicro2gListing(const protocol::Message &m);
+    CommandResult enqueueCalibration(const QByteArray &line, int rotor);
     bool isEcho(const protocol::Message &m);
 
     CommandResult refuse(const QString &reason);

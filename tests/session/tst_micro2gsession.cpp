@@ -76,6 +76,61 @@ private slots:
         QCOMPARE(sent.last().at(0).toByteArray(), QByteArray("M090\r"));
     }
 
+    void asksForAndSetsTheCalibrationThroughTheQueue()
+    {
+        RotatorSession s;
+        QVERIFY(open(s, QStringLiteral("sim:?clock=manual&dialect=micro2g&rotor=2")));
+        slew::sim::Simulator *sim = slew::sim::simulatorBehind(s.link());
+        QSignalSpy sent(&s, &RotatorSession::bytesSent);
+        QSignalSpy calibrations(&s, &RotatorSession::calibrationReceived);
+        QSignalSpy readings(&s, &RotatorSession::adcReadingReceived);
+        QSignalSpy failed(&s, &RotatorSession::calibrationFailed);
+
+        // `Z` lists every rotor; each line is handed on.
+        QVERIFY(s.requestCalibration(2));
+        TRY_COMPARE(calibrations.count(), 4);
+        QCOMPARE(calibrations.at(1).at(0).toInt(), 2);
+        QCOMPARE(calibrations.at(1).at(1).value<slew::protocol::Micro2gCalibration>(),
+                 (slew::protocol::Micro2gCalibration{2, 3990, 0, 2440, 90, 450}));
+        QVERIFY(s.requestAdcReadings());
+        TRY_COMPARE(readings.count(), 4);
+        QCOMPARE(readings.at(1).at(0).toInt(), 2);
+        QCOMPARE(readings.at(1).at(1).toInt(), 3990);
+
+        // A setting goes out with `Z` after it on one request, and what the
+        // controller now holds comes back.
+        sent.clear();
+        calibrations.clear();
+        QVERIFY(s.setCalibration(2, RotatorSession::CalibrationPoint::LeftStop, 180));
+        TRY_VERIFY(calibrations.count() == 4);
+        QVERIFY(wrote(sent, "Z2L 180\rZ\r"));
+        QCOMPARE(sim->micro2g().calibration(2).leftBearing, 180.0);
+        QCOMPARE(failed.count(), 0);
+
+        // Refused before a byte: out of range, or another rotor number.
+        sent.clear();
+        QVERIFY(!s.setCalibration(2, RotatorSession::CalibrationPoint::DegreeRange, 600));
+        QVERIFY(!s.setCalibration(2, RotatorSession::CalibrationPoint::RightStop, 360));
+        QVERIFY(!s.setCalibration(5, RotatorSession::CalibrationPoint::LeftStop, 0));
+        QVERIFY(!s.requestCalibration(0));
+        for (const auto &args : sent)
+            QVERIFY2(!args.at(0).toByteArray().startsWith('Z'), args.at(0).toByteArray().constData());
+
+        // Refused by the controller: the right stop on the left stop's
+        // reading. The request fails with the controller's words, and its
+        // calibration is as it was.
+        QVERIFY(s.setCalibration(2, RotatorSession::CalibrationPoint::RightStop, 270));
+        TRY_COMPARE(failed.count(), 1);
+        QCOMPARE(failed.first().at(0).toInt(), 2);
+        QVERIFY2(failed.first().at(1).toString().contains(QStringLiteral("10 counts")),
+                 qPrintable(failed.first().at(1).toString()));
+        QCOMPARE(sim->micro2g().calibration(2).rightAdc, 2440);
+        QCOMPARE(sim->micro2g().calibration(2).rightBearing, 90.0);
+        // Polling goes on as before.
+        const int polls = int(sent.count());
+        TRY_VERIFY(sent.count() > polls + 2 && !s.positionStale());
+    }
+
     void slewSimOverTcpKeepsItsStateFile()
     {
         QTemporaryDir dir;

@@ -1,6 +1,8 @@
 #pragma once
 // The setup and tuning wizard: from "plugged in" to "tuned, parked and
-// saved". Connect → Identify → Mechanics → Homing → Tuning → Park → Summary.
+// saved". Connect → Identify → Mechanics → Homing → Tuning → Park → Summary,
+// with Calibration after Identify for a controller that calibrates by its
+// end stops (the Micro-2g program).
 // It works on the operator window's session (no second connection to the
 // rotator) and builds the profile that the summary writes and saves.
 
@@ -17,16 +19,27 @@ namespace slew::ui {
 class SetupWizard : public QWizard {
     Q_OBJECT
 public:
-    enum PageId { ConnectPageId, IdentifyPageId, MechanicsPageId, HomingPageId, TuningPageId, ParkPageId, SummaryPageId };
+    enum PageId {
+        ConnectPageId,
+        IdentifyPageId,
+        MechanicsPageId,
+        HomingPageId,
+        TuningPageId,
+        ParkPageId,
+        SummaryPageId,
+        CalibrationPageId, // between Identify and Mechanics, where it applies
+    };
 
     explicit SetupWizard(session::RotatorSession *session, QWidget *parent = nullptr);
 
     session::RotatorSession *session() const { return m_session; }
     // The profile being built; pages fill it in as the operator goes.
     model::RotatorProfile &profile() { return m_profile; }
+    const model::RotatorProfile &profile() const { return m_profile; }
 
     // Esc, Cancel or closing: every long action stops, and so does the rotator.
     void reject() override;
+    int nextId() const override;
 
 signals:
     void profileSaved(const QString &path);

@@ -94,6 +94,27 @@ const Micro2gCalibration &Micro2gController::calibration(int n) const
     return rotor(n).calibration;
 }
 
+void Micro2gController::setHandDrive(int n, Drive drive)
+{
+    Rotor &r = rotor(n);
+    r.handDrive = drive;
+    if (drive != Drive::Off) {
+        r.targetAdc.reset();
+        r.drive = Drive::Off;
+    }
+}
+
+Micro2gController::Drive Micro2gController::handDrive(int n) const
+{
+    return rotor(n).handDrive;
+}
+
+void Micro2gController::setMechanics(int n, const Mechanics &mechanics)
+{
+    rotor(n).mechanics = mechanics;
+    rotor(n).travel = std::clamp(rotor(n).travel, 0.0, mechanics.travelDegrees);
+}
+
 QString Micro2gController::turnTo(int n, double bearing)
 {
     Rotor &r = rotor(n);
@@ -122,6 +143,13 @@ void Micro2gController::advance(double seconds)
         seconds -= dt;
         for (int n = 1; n <= kRotors; ++n) {
             Rotor &r = rotor(n);
+            if (r.handDrive != Drive::Off) {
+                // The switch turns the motor directly; the stop holds it.
+                const double sign = r.handDrive == Drive::Right ? 1.0 : -1.0;
+                r.travel = std::clamp(r.travel + sign * r.mechanics.degreesPerSecond * dt, 0.0,
+                                      r.mechanics.travelDegrees);
+                continue;
+            }
             if (!r.targetAdc) {
                 r.drive = Drive::Off;
                 continue;

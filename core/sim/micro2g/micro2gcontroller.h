@@ -61,6 +61,16 @@ public:
     int tolerance(int rotor) const;
     const Micro2gCalibration &calibration(int rotor) const;
 
+    // The switch on the rotator's own control box, which turns the motor
+    // without the program: held Left or Right, the rotor turns until it is
+    // released (Off) or meets its mechanical stop. While it is held the
+    // program's own target is dropped, as an operator would expect.
+    void setHandDrive(int rotor, Drive drive);
+    Drive handDrive(int rotor) const;
+    // The rotor as built, for tests of other installations (a south stop,
+    // another potentiometer); it keeps its travel.
+    void setMechanics(int rotor, const Mechanics &mechanics);
+
     // Calibration, presets and tolerances: lost at power-off like the real
     // program, unless the simulator keeps them in a file.
     QJsonObject settings() const;
@@ -73,6 +83,7 @@ private:
         double travel = 0;
         std::optional<int> targetAdc;
         Drive drive = Drive::Off;
+        Drive handDrive = Drive::Off; // the control box's switch
         int tolerance = 20;
         std::array<double, 3> presets{45, 90, 180};
         double stalledSeconds = 0;
