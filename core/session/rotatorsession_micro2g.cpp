@@ -110,7 +110,10 @@ CommandResult RotatorSession::enqueueCalibration(const QByteArray &line, int rot
         return refuse(tr("the controller is not keeping up: %1 requests already waiting").arg(m_queue.size()));
     Request r;
     r.line = line;
-    r.expects[0] = Expectation{Op::Calibration, rotor};
+    // The answer is a line per rotor, 1 to 4 (docs/protocol.md): the request
+    // ends with the last, so that on a line shared by the rotors' sessions
+    // (transport/sharedline.h) none of it reaches another rotor's.
+    r.expects[0] = Expectation{Op::Calibration, kRotors};
     r.expectCount = 1;
     // Sent once: a setting repeated after a lost answer would record the
     // reading of that later moment, not the one the operator saw.
