@@ -51,7 +51,8 @@ bool DialectIdentifier::start(const QString &uri)
     cancel();
     m_uri = uri.trimmed();
     m_results.clear();
-    m_pending = {Dialect::Easycomm3, Dialect::SatNogs, Dialect::Easycomm2};
+    m_pending = {Dialect::Easycomm3, Dialect::SatNogs, Dialect::Easycomm2, Dialect::Micro2g};
+    m_total = int(m_pending.size());
     next();
     return true;
 }
@@ -80,7 +81,13 @@ void DialectIdentifier::next()
         return;
     }
     const Dialect d = m_pending.takeFirst();
-    emit progress(100 * int(m_results.size()) / 3, tr("asking in %1").arg(protocol::dialectName(d)));
+    // A controller that answered an Easycomm position is no Micro-2g: asking
+    // would only wait out its silence.
+    if (d == Dialect::Micro2g && best()) {
+        next();
+        return;
+    }
+    emit progress(100 * int(m_results.size()) / m_total, tr("asking in %1").arg(protocol::dialectName(d)));
     DialectResult r;
     r.dialect = d;
     m_results.append(r);
@@ -88,6 +95,16 @@ void DialectIdentifier::next()
     connect(session, &RotatorSession::capabilitiesChanged, this, [this](const Capabilities &caps) {
         if (caps.probed)
             conclude(caps);
+    });
+    // The probe asks for the position first. A dialect that gets none cannot
+    // win (best() needs a position), so once the session moves on to its next
+    // question without one, the rest of its questions are not worth the wait:
+    // a Micro-2g asked in Easycomm would leave each of them to time out.
+    connect(session, &RotatorSession::bytesSent, this, [this, session, first = QByteArray()](const QByteArray &bytes) mutable {
+        if (first.isEmpty())
+            first = bytes;
+        else if (bytes != first && !session->hasPosition())
+            conclude(Capabilities{});
     });
     connect(session, &RotatorSession::stateChanged, this, [this](RotatorSession::State s, const QString &why) {
         if (s == RotatorSession::State::Disconnected) {
@@ -121,6 +138,9 @@ void DialectIdentifier::conclude(const Capabilities &caps)
     }
     // SatNOGS firmware names itself at the front of VE.
     if (r.dialect == Dialect::SatNogs && r.version.startsWith(QLatin1String("SatNOGS"), Qt::CaseInsensitive))
+        r.score += 1;
+    // So does the Micro-2g program, in its `?` line (docs/protocol.md).
+    if (r.dialect == Dialect::Micro2g && r.version.startsWith(QLatin1String("Micro-2g"), Qt::CaseInsensitive))
         r.score += 1;
     m_attempt.end();
     QMetaObject::invokeMethod(this, &DialectIdentifier::next, Qt::QueuedConnection);

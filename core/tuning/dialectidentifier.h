@@ -1,8 +1,10 @@
 #pragma once
-// Works out which Easycomm flavour a controller speaks by talking to it in
-// each one and counting what it answers (position, VE, GS, GE, IP, CR,
-// \?ENC) against what it leaves unanswered. The dialect that explains the
-// most wins; on a tie the one listed first (easycomm3, satnogs, easycomm2).
+// Works out which Easycomm flavour a controller speaks, or whether it is a
+// Micro-2g, by talking to it in each one and counting what it answers
+// (position, VE, GS, GE, IP, CR, \?ENC; the Micro-2g's heading and `?`)
+// against what it leaves unanswered. The dialect that explains the most
+// wins; on a tie the one listed first (easycomm3, satnogs, easycomm2, micro2g).
+// The Micro-2g is asked only when no Easycomm flavour got a position.
 // Easycomm I answers nothing, so it can only be chosen by hand.
 
 #include "probeattempt.h"
@@ -55,6 +57,7 @@ private:
     QString m_uri;
     QList<protocol::Dialect> m_pending;
     QList<DialectResult> m_results;
+    int m_total = 1; // dialects asked in this run
     ProbeAttempt m_attempt;
     QString m_error;
 };

@@ -172,6 +172,29 @@ private slots:
         QCOMPARE(profile->dialect, protocol::Dialect::Easycomm3);
     }
 
+    void aMicro2gIsWalkedToItsCalibrationPage()
+    {
+        // From Connect, as an operator would: the probe and the
+        // identification learn the Micro-2g, and its calibration page follows.
+        RotatorSession session;
+        SetupWizard wizard(&session);
+        wizard.show();
+        // On the wall clock: the three Easycomm attempts must time out, and
+        // nothing here pumps the simulators the attempts open.
+        find<QLineEdit>(wizard, "uri")->setText(QStringLiteral("sim:?dialect=micro2g&rotor=3"));
+        QTest::mouseClick(find<QPushButton>(wizard, "probe"), Qt::LeftButton);
+        TRY_VERIFY_WITH_TIMEOUT(canGoOn(wizard), 10000);
+        QVERIFY(find<QListWidget>(wizard, "baudResults")->item(0)->text().contains(QStringLiteral("answered")));
+        wizard.next();
+        QCOMPARE(wizard.currentId(), int(SetupWizard::IdentifyPageId));
+        TRY_VERIFY_WITH_TIMEOUT(canGoOn(wizard), 60000);
+        const QString identified = find<QLabel>(wizard, "dialectResult")->text();
+        QVERIFY2(identified.contains(QStringLiteral("micro2g")), qPrintable(identified));
+        QCOMPARE(session.profile().dialect, protocol::Dialect::Micro2g);
+        wizard.next();
+        QCOMPARE(wizard.currentId(), int(SetupWizard::CalibrationPageId));
+    }
+
     void cancellingTheWizardStopsTheRotator()
     {
         RotatorSession session;

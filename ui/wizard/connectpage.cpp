@@ -3,6 +3,8 @@
 #include "pagebody.h"
 #include "setupwizard.h"
 
+#include "protocol/dialect.h"
+#include "transport/linkfactory.h"
 #include "transport/serialports.h"
 
 #include <QComboBox>
@@ -76,7 +78,12 @@ ConnectPage::ConnectPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizard(wi
 void ConnectPage::probe()
 {
     m_results->clear();
-    if (!m_probe.start(m_uri->text())) {
+    // Ask in the dialect the link names (a simulator's URI) or the window is
+    // set to: a Micro-2g answers no Easycomm query at any baud rate.
+    protocol::Dialect dialect = m_wizard->profile().dialect;
+    if (const auto named = protocol::dialectFromName(transport::linkHintsFor(m_uri->text()).dialect))
+        dialect = *named;
+    if (!m_probe.start(m_uri->text(), dialect)) {
         m_status->setText(m_probe.error());
         return;
     }
