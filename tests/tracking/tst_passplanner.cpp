@@ -1,0 +1,325 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The pass planner on its own: made-up passes over the north and the south
+// stop on 360°, 450° and 180° rotators, a north- and a south-stop
+// installation, random passes that must never leave the travel, and three
+// real passes (low, 60°, within 3° of the zenith) from an element set.
+
+#include "sky/passes.h"
+#include "sky/tle.h"
+#include "tracking/passplanner.h"
+#include "tracking/skytrack.h"
+
+#include <QFile>
+#include <QRandomGenerator>
+#include <QTest>
+
+#include <cmath>
+
+using namespace slew::tracking;
+using slew::model::RotatorLimits;
+
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+// A made-up pass: the target moves along a great circle of the sky at
+// `rateDegS`, highest (maxEl) at bearing `culminationAz`, heading towards
+// culminationAz + 90° (clockwise) or - 90°.
+QList<SkyPoint> greatCirclePass(double culminationAz, double maxEl, bool clockwise, double rateDegS = 0.5)
+{
+    auto vec = [](double az, double el) {
+        return std::array<double, 3>{std::cos(el * kDeg) * std::sin(az * kDeg), std::cos(el * kDeg) * std::cos(az * kDeg),
+                                     std::sin(el * kDeg)};
+    };
+    const auto top = vec(culminationAz, maxEl);
+    const auto along = vec(culminationAz + (clockwise ? 90.0 : -90.0), 0);
+    QList<SkyPoint> points;
+    // Where the circle meets the horizon: sin(maxEl) cos(theta) = 0 only at
+    // 90°; the pass is the part above the horizon.
+    for (double theta = -90.0; theta <= 90.0; theta += rateDegS) {
+        const double c = std::cos(theta * kDeg), s = std::sin(theta * kDeg);
+        const double e = c * top[0] + s * along[0], n = c * top[1] + s * along[1], u = c * top[2] + s * along[2];
+        const double el = std::asin(std::clamp(u, -1.0, 1.0)) / kDeg;
+        if (el < 0)
+            continue;
+        double az = std::atan2(e, n) / kDeg;
+        if (az < 0)
+            az += 360.0;
+        points.append(SkyPoint{(theta + 90.0) / rateDegS, az, el});
+    }
+    return points;
+}
+
+RotatorReach reach(double azMin, double azMax, double elMax, double rate = 6.0)
+{
+    RotatorReach r;
+    r.limits = RotatorLimits{azMin, azMax, 0.0, elMax};
+    r.azimuthRateDegS = rate;
+    r.elevationRateDegS = rate;
+    return r;
+}
+
+bool staysInside(const PassPlan &plan, const RotatorLimits &l)
+{
+    for (const PathPoint &p : plan.path) {
+        if (p.azimuth < l.azMin - 1e-9 || p.azimuth > l.azMax + 1e-9 || p.elevation < l.elMin - 1e-9
+            || p.elevation > l.elMax + 1e-9)
+            return false;
+    }
+    return true;
+}
+
+// Mid-pass unwinds seen in the path itself: a step of more than half a turn.
+int jumpsIn(const PassPlan &plan)
+{
+    int jumps = 0;
+    for (int i = 1; i < plan.path.size(); ++i) {
+        if (std::abs(plan.path[i].azimuth - plan.path[i - 1].azimuth) > 180.0)
+            ++jumps;
+    }
+    return jumps;
+}
+
+} // namespace
+
+class PassPlannerTest : public QObject {
+    Q_OBJECT
+private slots:
+    void skyAngles()
+    {
+        QCOMPARE(std::round(skyAngleDeg(90, 0, 0, 90) * 1e9) / 1e9, 90.0);
+        // The flip points the same way.
+        for (double az : {0.0, 37.0, 181.0, 359.0}) {
+            for (double el : {0.0, 12.5, 60.0, 89.9})
+                QVERIFY(skyAngleDeg(az, el, az + 180.0, 180.0 - el) < 1e-9);
+        }
+        // At the zenith the azimuth means nothing; near it, little.
+        QVERIFY(skyAngleDeg(0, 90, 180, 90) < 1e-9);
+        QVERIFY(std::abs(skyAngleDeg(0, 89, 90, 89) - 1.4142) < 1e-3);
+        // Tiny angles stay accurate.
+        QVERIFY(std::abs(skyAngleDeg(10, 20, 10, 20.001) - 0.001) < 1e-9);
+    }
+
+    void refusesWhatCannotBePlanned()
+    {
+        QVERIFY(!planPass({}, reach(0, 360, 90)).isValid());
+        const QList<SkyPoint> pass = greatCirclePass(100, 30, true);
+        const PassPlan short_ = planPass(pass, reach(0, 300, 90));
+        QVERIFY(!short_.isValid());
+        QVERIFY2(short_.refusal.contains(QStringLiteral("every bearing")), qPrintable(short_.refusal));
+        QVERIFY(!planPass(pass, reach(0, 360, 90, 0.0)).isValid());
+        QVERIFY(planPass(pass, reach(0, 360, 90)).describe().contains(QStringLiteral("follows the whole pass")));
+    }
+
+    void aPassOverTheNorthStop()
+    {
+        // From the north-west to the north-east, 40° high over north.
+        const QList<SkyPoint> pass = greatCirclePass(0, 40, true);
+        QVERIFY(pass.front().azimuthDeg > 269 && pass.back().azimuthDeg < 91);
+
+        // 360°/90° with the stop at north: no way round it but one unwind,
+        // and the plan says so before AOS, with where and how far behind.
+        const PassPlan plain = planPass(pass, reach(0, 360, 90));
+        QVERIFY(plain.isValid());
+        QCOMPARE(plain.unwinds, 1);
+        QCOMPARE(jumpsIn(plain), 1);
+        QVERIFY(!plain.followable());
+        QCOMPARE(plain.lags.size(), 1);
+        QVERIFY(plain.lags.front().worstDeg > 20);
+        QVERIFY(plain.describe().contains(QStringLiteral("lags behind")));
+        QVERIFY(staysInside(plain, reach(0, 360, 90).limits));
+
+        // 450°: the overlap takes it, no unwind.
+        const PassPlan overlap = planPass(pass, reach(0, 450, 90));
+        QCOMPARE(overlap.unwinds, 0);
+        QCOMPARE(jumpsIn(overlap), 0);
+        QVERIFY(overlap.usesOverlap);
+        QVERIFY(!overlap.flipped);
+        QVERIFY(overlap.followable());
+        QVERIFY2(overlap.predictedWorstDeg < 0.2, qPrintable(overlap.describe()));
+        QVERIFY(staysInside(overlap, reach(0, 450, 90).limits));
+
+        // 360°/180°: the flip moves the crossing to the south.
+        const PassPlan flip = planPass(pass, reach(0, 360, 180));
+        QVERIFY(flip.flipped);
+        QCOMPARE(flip.unwinds, 0);
+        QVERIFY(flip.followable());
+        for (const PathPoint &p : flip.path) {
+            QVERIFY(p.azimuth >= 89.9 && p.azimuth <= 270.1);
+            QVERIFY(p.elevation >= 90);
+        }
+
+        // A south-stop installation (-180..180) crosses north without a thought.
+        const PassPlan southStop = planPass(pass, reach(-180, 180, 90));
+        QCOMPARE(southStop.unwinds, 0);
+        QVERIFY(!southStop.flipped);
+        QVERIFY(!southStop.usesOverlap);
+        QVERIFY(southStop.followable());
+        QVERIFY(southStop.path.front().azimuth < 0 && southStop.path.back().azimuth > 0);
+    }
+
+    void aPassOverTheSouthStop()
+    {
+        const QList<SkyPoint> pass = greatCirclePass(180, 35, false);
+        // From the west over the south to the east.
+        QVERIFY(pass.front().azimuthDeg > 269 && pass.back().azimuthDeg < 91);
+        // North stop: nothing to avoid.
+        const PassPlan north = planPass(pass, reach(0, 360, 90));
+        QVERIFY(north.followable());
+        QCOMPARE(north.unwinds, 0);
+        // South stop, 360°: an unwind, said before AOS; with the flip, none.
+        QCOMPARE(planPass(pass, reach(-180, 180, 90)).unwinds, 1);
+        const PassPlan flip = planPass(pass, reach(-180, 180, 180));
+        QVERIFY(flip.flipped);
+        QVERIFY(flip.followable());
+        // South stop with an overlap (-180..270): the overlap.
+        const PassPlan overlap = planPass(pass, reach(-180, 270, 90));
+        QVERIFY(overlap.usesOverlap);
+        QVERIFY(overlap.followable());
+    }
+
+    void theStartDecidesBetweenEqualPaths()
+    {
+        // The top of a low pass in the north-east, above 18°: it fits a 450°
+        // rotator twice, once in the overlap; the start nearer the antenna wins.
+        QList<SkyPoint> pass = greatCirclePass(45, 20, true);
+        pass.removeIf([](const SkyPoint &p) { return p.elevationDeg < 18; });
+        QVERIFY(pass.front().azimuthDeg > 0 && pass.back().azimuthDeg < 90);
+        PlannerOptions nearHigh;
+        nearHigh.startAzimuth = 440;
+        PlannerOptions nearLow;
+        nearLow.startAzimuth = 10;
+        const PassPlan high = planPass(pass, reach(0, 450, 90), nearHigh);
+        const PassPlan low = planPass(pass, reach(0, 450, 90), nearLow);
+        QVERIFY2(high.followable() && low.followable(), qPrintable(high.describe() + " / " + low.describe()));
+        QVERIFY2(high.path.front().azimuth > 360, qPrintable(QString::number(high.path.front().azimuth)));
+        QVERIFY(low.path.front().azimuth < 360);
+    }
+
+    void randomPassesNeverLeaveTheTravel()
+    {
+        QRandomGenerator random(20261123);
+        const QList<RotatorReach> rotators{reach(0, 360, 90), reach(0, 450, 90), reach(0, 360, 180), reach(0, 450, 180),
+                                           reach(-180, 180, 90), reach(-180, 270, 180)};
+        for (int n = 0; n < 300; ++n) {
+            const QList<SkyPoint> pass = greatCirclePass(random.bounded(360.0), 1 + random.bounded(84.0), random.bounded(2) == 0);
+            for (const RotatorReach &r : rotators) {
+                const PassPlan plan = planPass(pass, r);
+                QVERIFY(plan.isValid());
+                QVERIFY(staysInside(plan, r.limits));
+                QCOMPARE(jumpsIn(plan), plan.unwinds);
+                // With the flip nothing unwinds: a half turn of azimuth
+                // either fits the travel or does once flipped.
+                if (r.limits.elMax > 90)
+                    QCOMPARE(plan.unwinds, 0);
+                QVERIFY(plan.unwinds <= 1);
+                // The same input, the same plan.
+                const PassPlan again = planPass(pass, r);
+                QCOMPARE(again.path.size(), plan.path.size());
+                QCOMPARE(again.path.back().azimuth, plan.path.back().azimuth);
+                QCOMPARE(again.predictedWorstDeg, plan.predictedWorstDeg);
+            }
+        }
+    }
+
+    void realPasses_data()
+    {
+        QTest::addColumn<QString>("kind");
+        QTest::newRow("low") << QStringLiteral("low");
+        QTest::newRow("60 degrees") << QStringLiteral("sixty");
+        QTest::newRow("near the zenith") << QStringLiteral("zenith");
+    }
+
+    void realPasses()
+    {
+        QFETCH(QString, kind);
+        const std::optional<Found> found = findPass(kind);
+        QVERIFY2(found, "no such pass in the element sets");
+        const slew::sky::Sgp4 satellite(found->tle);
+        const QList<SkyPoint> points = sampleSatellitePass(satellite, station(), found->pass, 1.0);
+        QVERIFY(points.size() > 60);
+
+        const RotatorReach small = reach(0, 360, 90), large = reach(0, 450, 180);
+        const PassPlan onSmall = planPass(points, small), onLarge = planPass(points, large);
+        qInfo("%s pass, %s, max el %.1f°, %d s", qPrintable(kind), qPrintable(found->tle.name),
+              found->pass.maxElevationDeg(), int(points.size()));
+        qInfo("  360/90:  %s (RMS %.3f°)", qPrintable(onSmall.describe()), onSmall.predictedRmsDeg);
+        qInfo("  450/180: %s (RMS %.3f°)", qPrintable(onLarge.describe()), onLarge.predictedRmsDeg);
+        for (const auto &[plan, r] : {std::pair{onSmall, small}, std::pair{onLarge, large}}) {
+            QVERIFY(staysInside(plan, r.limits));
+            QCOMPARE(jumpsIn(plan), plan.unwinds);
+        }
+        QCOMPARE(onLarge.unwinds, 0);
+        if (kind == QLatin1String("zenith")) {
+            // No rotator of this class keeps up with the swing at the top;
+            // the plan says when, and by how much, before AOS.
+            QVERIFY(!onSmall.followable());
+            const double tca = (found->pass.tca.julian - found->pass.aos.julian) * slew::sky::kSecondsPerDay;
+            bool aroundTheTop = false;
+            for (const LagSpan &s : onSmall.lags)
+                aroundTheTop = aroundTheTop || (s.fromSeconds <= tca + 1 && s.toSeconds >= tca - 1);
+            QVERIFY2(aroundTheTop, qPrintable(onSmall.describe()));
+        } else {
+            QVERIFY2(onSmall.followable() && onSmall.predictedWorstDeg < 0.5, qPrintable(onSmall.describe()));
+            QVERIFY2(onLarge.followable() && onLarge.predictedWorstDeg < 0.5, qPrintable(onLarge.describe()));
+        }
+    }
+
+private:
+    struct Found {
+        slew::sky::Tle tle;
+        slew::sky::Pass pass;
+    };
+
+    static slew::sky::Station station()
+    {
+        slew::sky::Station s;
+        s.latitudeDeg = 55.6875; // JO65hq
+        s.longitudeDeg = 12.625;
+        return s;
+    }
+
+    static bool crossesNorth(const slew::sky::Sgp4 &sat, const slew::sky::Pass &p)
+    {
+        const QList<SkyPoint> points = sampleSatellitePass(sat, station(), p, 5.0);
+        for (int i = 1; i < points.size(); ++i) {
+            if (std::abs(points[i].azimuthDeg - points[i - 1].azimuthDeg) > 180)
+                return true;
+        }
+        return false;
+    }
+
+    // The first pass of the kind in the two days after the snapshot's epoch.
+    static std::optional<Found> findPass(const QString &kind)
+    {
+        QFile file(QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"));
+        if (!file.open(QIODevice::ReadOnly))
+            return std::nullopt;
+        const QList<slew::sky::Tle> sets = slew::sky::readTleText(QString::fromLatin1(file.readAll())).sets;
+        if (sets.isEmpty())
+            return std::nullopt;
+        double epoch = 0;
+        for (const slew::sky::Tle &t : sets)
+            epoch = std::max(epoch, t.epochJulian());
+        const slew::sky::PassWindow window{epoch, epoch + 2.0, 0.0};
+        for (const slew::sky::Tle &t : sets) {
+            const slew::sky::Sgp4 sat(t);
+            for (const slew::sky::Pass &p : slew::sky::predictPasses(sat, station(), window)) {
+                if (p.aosClipped || p.losClipped)
+                    continue;
+                const double el = p.maxElevationDeg();
+                const bool fits = kind == QLatin1String("low") ? el > 8 && el < 15
+                                  : kind == QLatin1String("sixty") ? el > 57 && el < 63
+                                                                    : el > 87;
+                // The low and the 60° pass must not cross the north stop:
+                // a 360° rotator could only follow those by unwinding.
+                if (fits && (kind == QLatin1String("zenith") || !crossesNorth(sat, p)))
+                    return Found{t, p};
+            }
+        }
+        return std::nullopt;
+    }
+};
+
+QTEST_MAIN(PassPlannerTest)
+#include "tst_passplanner.moc"
