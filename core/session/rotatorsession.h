@@ -154,6 +154,10 @@ public slots:
     // mechanical positions it names, and goes out as an absolute set
     // position in every dialect (docs/protocol.md says why not `O`).
     CommandResult moveBy(double azimuthOffset, double elevationOffset);
+    // Exactly these mechanical positions: an azimuth past 360° (the overlap)
+    // or below 0° (a south stop), an elevation past 90° (the flip), as a
+    // planned path names them (tracking/passplanner.h). Gated as positions.
+    CommandResult gotoMechanical(double azimuth, double elevation);
     CommandResult stop(slew::session::Axes axes = slew::session::Axes::Both);
     CommandResult park();
     CommandResult home();
@@ -175,6 +179,9 @@ signals:
     void versionChanged(const QString &version);
     void capabilitiesChanged(const slew::session::Capabilities &capabilities);
     void stopHoldSent();
+    // A stop went to the wire, whoever asked (the window, a rotctld client,
+    // shutdown): whatever was driving the rotator ends here.
+    void stopSent();
     void bytesSent(const QByteArray &bytes);
     void bytesReceived(const QByteArray &bytes);
     void alarmReceived(const QString &text);

@@ -130,6 +130,18 @@ CommandResult RotatorSession::moveBy(double azimuthOffset, double elevationOffse
     return sendSetPosition(a, e);
 }
 
+CommandResult RotatorSession::gotoMechanical(double azimuth, double elevation)
+{
+    if (auto linked = requireLink(); !linked)
+        return linked;
+    if (!std::isfinite(azimuth) || !std::isfinite(elevation))
+        return refuse(tr("a position is not a number"));
+    const model::MoveCheck check = m_gate.mechanical(azimuth, elevation);
+    if (!check.allowed())
+        return refuseMove(check.refusal);
+    return sendSetPosition(azimuth, elevation);
+}
+
 CommandResult RotatorSession::sendSetPosition(double az, double el)
 {
     const QByteArray line = protocol::encodeSetPosition(az, el, m_profile.dialect, m_rotor);
@@ -196,6 +208,7 @@ CommandResult RotatorSession::stop(Axes axes)
         return refuse(tr("%1 has no stop command").arg(protocol::dialectName(m_profile.dialect)));
     m_activeTarget.reset();
     write(line);
+    emit stopSent();
     // SA / SE only let go of the drive. Where the dialect has speed commands,
     // a zero speed follows to brake a drive that would coast (spur gear,
     // direct drive) and hold it there.

@@ -8,6 +8,7 @@
 #include "sky/tle.h"
 #include "tracking/passplanner.h"
 #include "tracking/skytrack.h"
+#include "syntheticpass.h"
 
 #include <QFile>
 #include <QRandomGenerator>
@@ -19,36 +20,6 @@ using namespace slew::tracking;
 using slew::model::RotatorLimits;
 
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
-
-// A made-up pass: the target moves along a great circle of the sky at
-// `rateDegS`, highest (maxEl) at bearing `culminationAz`, heading towards
-// culminationAz + 90° (clockwise) or - 90°.
-QList<SkyPoint> greatCirclePass(double culminationAz, double maxEl, bool clockwise, double rateDegS = 0.5)
-{
-    auto vec = [](double az, double el) {
-        return std::array<double, 3>{std::cos(el * kDeg) * std::sin(az * kDeg), std::cos(el * kDeg) * std::cos(az * kDeg),
-                                     std::sin(el * kDeg)};
-    };
-    const auto top = vec(culminationAz, maxEl);
-    const auto along = vec(culminationAz + (clockwise ? 90.0 : -90.0), 0);
-    QList<SkyPoint> points;
-    // Where the circle meets the horizon: sin(maxEl) cos(theta) = 0 only at
-    // 90°; the pass is the part above the horizon.
-    for (double theta = -90.0; theta <= 90.0; theta += rateDegS) {
-        const double c = std::cos(theta * kDeg), s = std::sin(theta * kDeg);
-        const double e = c * top[0] + s * along[0], n = c * top[1] + s * along[1], u = c * top[2] + s * along[2];
-        const double el = std::asin(std::clamp(u, -1.0, 1.0)) / kDeg;
-        if (el < 0)
-            continue;
-        double az = std::atan2(e, n) / kDeg;
-        if (az < 0)
-            az += 360.0;
-        points.append(SkyPoint{(theta + 90.0) / rateDegS, az, el});
-    }
-    return points;
-}
 
 RotatorReach reach(double azMin, double azMax, double elMax, double rate = 6.0)
 {

@@ -1,0 +1,206 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "tracker.h"
+
+#include "session/rotatorsession.h"
+#include "sky/skyvector.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace slew::tracking {
+
+using session::RotatorSession;
+
+Tracker::Tracker(RotatorSession *session, QObject *parent) : QObject(parent), m_session(session)
+{
+    connect(&m_timer, &session::LinkTimer::timeout, this, &Tracker::tick);
+    connect(session, &RotatorSession::stopSent, this, [this] {
+        if (!m_sending)
+            stopTracking(tr("stopped"));
+    });
+    connect(session, &RotatorSession::stateChanged, this, [this](RotatorSession::State s, const QString &detail) {
+        if (s != RotatorSession::State::Connected)
+            stopTracking(tr("the link went down: %1").arg(detail));
+    });
+    connect(session, &RotatorSession::positionChanged, this, &Tracker::onPosition);
+}
+
+Tracker::~Tracker() = default;
+
+bool Tracker::track(const QList<SkyPoint> &pass, double aosJulian, const RotatorReach &reach,
+                    std::function<double()> now)
+{
+    stopTracking(tr("a new pass"));
+    m_error.clear();
+    if (!m_session->isConnected()) {
+        m_error = tr("not connected to a rotator");
+        return false;
+    }
+    PlannerOptions options;
+    if (m_session->hasPosition())
+        options.startAzimuth = m_session->azimuth();
+    m_plan = planPass(pass, reach, options);
+    if (!m_plan.isValid()) {
+        m_error = m_plan.refusal;
+        return false;
+    }
+    m_pass = pass;
+    m_reach = reach;
+    m_aosJulian = aosJulian;
+    m_now = std::move(now);
+    m_prepositioned = false;
+    m_lastSent.reset();
+    m_figures = TrackingFigures{};
+    m_sumSquares = 0;
+    m_timer.followClockOf(m_session->link());
+    m_timer.setSingleShot(false);
+    m_timer.start(m_settings.tickMs);
+    setState(State::Waiting, m_plan.describe());
+    tick();
+    return true;
+}
+
+void Tracker::stopTracking(const QString &why)
+{
+    m_timer.stop();
+    if (m_state == State::Waiting || m_state == State::Tracking)
+        setState(State::Idle, why);
+}
+
+void Tracker::setState(State state, const QString &why)
+{
+    m_state = state;
+    emit stateChanged(state, why);
+}
+
+double Tracker::secondsFromAos() const
+{
+    return m_now ? (m_now() - m_aosJulian) * sky::kSecondsPerDay : 0.0;
+}
+
+PathPoint Tracker::pathAt(double seconds) const
+{
+    const QList<PathPoint> &path = m_plan.path;
+    if (seconds <= path.front().seconds)
+        return path.front();
+    if (seconds >= path.back().seconds)
+        return path.back();
+    const auto next = std::upper_bound(path.begin(), path.end(), seconds,
+                                       [](double s, const PathPoint &p) { return s < p.seconds; });
+    const PathPoint &b = *next, &a = *(next - 1);
+    const double f = (seconds - a.seconds) / (b.seconds - a.seconds);
+    PathPoint p = a;
+    p.seconds = seconds;
+    // An unwind is a jump: the rotator is sent to its far side, not between.
+    if (std::abs(b.azimuth - a.azimuth) < 180.0)
+        p.azimuth = a.azimuth + f * (b.azimuth - a.azimuth);
+    p.elevation = a.elevation + f * (b.elevation - a.elevation);
+    return p;
+}
+
+SkyPoint Tracker::skyAt(double seconds) const
+{
+    if (seconds <= m_pass.front().seconds)
+        return m_pass.front();
+    if (seconds >= m_pass.back().seconds)
+        return m_pass.back();
+    const auto next = std::upper_bound(m_pass.begin(), m_pass.end(), seconds,
+                                       [](double s, const SkyPoint &p) { return s < p.seconds; });
+    const SkyPoint &b = *next, &a = *(next - 1);
+    const double f = (seconds - a.seconds) / (b.seconds - a.seconds);
+    double turn = std::fmod(b.azimuthDeg - a.azimuthDeg + 540.0, 360.0) - 180.0; // the short way
+    double az = std::fmod(a.azimuthDeg + f * turn + 360.0, 360.0);
+    return SkyPoint{seconds, az, a.elevationDeg + f * (b.elevationDeg - a.elevationDeg)};
+}
+
+SkyPoint Tracker::targetNow() const
+{
+    return m_pass.isEmpty() ? SkyPoint{} : skyAt(secondsFromAos());
+}
+
+bool Tracker::send(double az, double el, bool duringPass)
+{
+    m_sending = true;
+    const session::CommandResult sent = m_session->gotoMechanical(az, el);
+    m_sending = false;
+    if (!sent) {
+        // Never pushed on blindly: the planned point should always pass the
+        // gate, so a refusal means the limits changed under the plan.
+        stopTracking(tr("the rotator refused the planned point: %1").arg(sent.refusal));
+        return false;
+    }
+    m_lastSent = std::pair{az, el};
+    if (duringPass)
+        ++m_figures.commands;
+    return true;
+}
+
+void Tracker::tick()
+{
+    if (m_state != State::Waiting && m_state != State::Tracking)
+        return;
+    const double t = secondsFromAos();
+    const double end = m_plan.path.back().seconds;
+    if (m_state == State::Waiting) {
+        const PathPoint &aos = m_plan.path.front();
+        if (!m_prepositioned) {
+            // From the measured speeds: how long the move to the AOS point takes.
+            double needed = m_settings.arriveEarlySeconds;
+            if (m_session->hasPosition()) {
+                needed += std::max(std::abs(aos.azimuth - m_session->azimuth()) / m_reach.azimuthRateDegS,
+                                   std::abs(aos.elevation - m_session->elevation()) / m_reach.elevationRateDegS);
+            } else {
+                needed += 360.0 / m_reach.azimuthRateDegS;
+            }
+            if (t >= -needed) {
+                if (!send(aos.azimuth, aos.elevation, false))
+                    return;
+                m_prepositioned = true;
+                // Started too late to be there on time: say so, with by how much.
+                const double travel = needed - m_settings.arriveEarlySeconds;
+                if (t > -travel)
+                    setState(State::Waiting, tr("the AOS point is %1 s away at this rotator's speed and AOS is in %2 s: "
+                                                "tracking starts late")
+                                                 .arg(travel, 0, 'f', 0)
+                                                 .arg(std::max(0.0, -t), 0, 'f', 0));
+            }
+        }
+        if (t < 0)
+            return;
+        setState(State::Tracking, tr("AOS"));
+    }
+    if (t > end) {
+        m_timer.stop();
+        m_figures.passSeconds = end - m_plan.path.front().seconds;
+        if (m_settings.afterPass == TrackerSettings::AfterPass::Park) {
+            m_sending = true;
+            m_session->park();
+            m_sending = false;
+        }
+        setState(State::Done, tr("LOS"));
+        return;
+    }
+    const PathPoint want = pathAt(std::min(t + m_settings.leadSeconds, end));
+    const bool moved = !m_lastSent || std::abs(want.azimuth - m_lastSent->first) > m_settings.minimumStepDeg
+                       || std::abs(want.elevation - m_lastSent->second) > m_settings.minimumStepDeg;
+    if (moved)
+        send(want.azimuth, want.elevation, true);
+}
+
+void Tracker::onPosition(double az, double el, bool stale)
+{
+    if (m_state != State::Tracking || stale)
+        return;
+    const double t = secondsFromAos();
+    const SkyPoint target = skyAt(t);
+    const double error = skyAngleDeg(az, el, target.azimuthDeg, target.elevationDeg);
+    emit pointingError(error, t);
+    if (t < kSettleSeconds)
+        return;
+    ++m_figures.samples;
+    m_sumSquares += error * error;
+    m_figures.rmsDeg = std::sqrt(m_sumSquares / m_figures.samples);
+    m_figures.worstDeg = std::max(m_figures.worstDeg, error);
+}
+
+} // namespace slew::tracking

@@ -1,0 +1,121 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The tracker: follows one planned pass with the session's rotator.
+//
+// Before AOS it plans the pass (passplanner.h) and moves to the planned AOS
+// point early enough for this rotator's speed. During the pass it commands
+// where the plan will be one response delay ahead (lead-ahead), but only
+// when that is more than the minimum step from what was last sent (a
+// deadband: relays do not chatter on tiny updates). After LOS it parks or
+// stays. A stop, from anywhere (the window, Space, Esc, a rotctld `S`,
+// shutdown), ends tracking at once, as does a lost link or a refused move.
+//
+// It measures as it goes: the pointing error, as an angle on the sky between
+// where the antenna points and where the target is, and the commands sent.
+// Its timer keeps the link's clock, so a simulator on a manual clock runs a
+// whole pass in moments of test time.
+
+#include "passplanner.h"
+#include "session/linktimer.h"
+
+#include <QObject>
+
+#include <functional>
+
+namespace slew::session {
+class RotatorSession;
+}
+
+namespace slew::tracking {
+
+struct TrackerSettings {
+    // How far ahead to command: the rotator's response delay (measured).
+    double leadSeconds = 1.0;
+    // The deadband: a new target goes out only when the path has moved this
+    // far from the last one sent, on either axis. Relays wear; servos do not.
+    double minimumStepDeg = 0.5;
+    enum class AfterPass { Park, Stay };
+    AfterPass afterPass = AfterPass::Park;
+    // Arrive at the AOS point this long before AOS.
+    double arriveEarlySeconds = 10.0;
+    int tickMs = 200;
+};
+
+// The default minimum step for a drive: relays switch power to a motor and
+// should switch seldom; a servo loop follows fine steps smoothly.
+inline constexpr double kRelayMinimumStepDeg = 2.0;
+inline constexpr double kServoMinimumStepDeg = 0.5;
+
+struct TrackingFigures {
+    int samples = 0;          // position readings after AOS + the settling time
+    double rmsDeg = 0;
+    double worstDeg = 0;
+    int commands = 0;         // go-tos sent during the pass (pre-positioning not counted)
+    double passSeconds = 0;
+    double commandsPerSecond() const { return passSeconds > 0 ? commands / passSeconds : 0; }
+};
+
+class Tracker : public QObject {
+    Q_OBJECT
+public:
+    enum class State { Idle, Waiting, Tracking, Done };
+    Q_ENUM(State)
+
+    // Error figures start this long after AOS: the antenna arrives at the
+    // AOS point ahead of time, but the first seconds include the lead.
+    static constexpr double kSettleSeconds = 5.0;
+
+    explicit Tracker(session::RotatorSession *session, QObject *parent = nullptr);
+    ~Tracker() override;
+
+    void setSettings(const TrackerSettings &settings) { m_settings = settings; }
+    const TrackerSettings &settings() const { return m_settings; }
+
+    // Plans `pass` (sky points in seconds from AOS, at `aosJulian`) for
+    // `reach` and starts: waiting and pre-positioning, then tracking. `now`
+    // gives the station's time as a Julian date. False, with the reason in
+    // error(), if there is no plan or no link.
+    bool track(const QList<SkyPoint> &pass, double aosJulian, const RotatorReach &reach,
+               std::function<double()> now);
+    void stopTracking(const QString &why);
+
+    State state() const { return m_state; }
+    QString error() const { return m_error; }
+    const PassPlan &plan() const { return m_plan; }
+    const TrackingFigures &figures() const { return m_figures; }
+    // Seconds from AOS now (negative before it).
+    double secondsFromAos() const;
+    // Where the target is on the sky now, from the pass.
+    SkyPoint targetNow() const;
+
+signals:
+    void stateChanged(slew::tracking::Tracker::State state, const QString &why);
+    void pointingError(double degrees, double secondsFromAos);
+
+private:
+    void tick();
+    void onPosition(double az, double el, bool stale);
+    void setState(State state, const QString &why);
+    // Path positions at a time (linear between points, the ends held).
+    PathPoint pathAt(double seconds) const;
+    SkyPoint skyAt(double seconds) const;
+    bool send(double az, double el, bool duringPass);
+
+    session::RotatorSession *m_session;
+    TrackerSettings m_settings;
+    session::LinkTimer m_timer;
+    QList<SkyPoint> m_pass;
+    PassPlan m_plan;
+    RotatorReach m_reach;
+    double m_aosJulian = 0;
+    std::function<double()> m_now;
+    State m_state = State::Idle;
+    QString m_error;
+    bool m_prepositioned = false;
+    bool m_sending = false; // our own commands are not someone else's stop
+    std::optional<std::pair<double, double>> m_lastSent;
+    TrackingFigures m_figures;
+    double m_sumSquares = 0;
+};
+
+} // namespace slew::tracking

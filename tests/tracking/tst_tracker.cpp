@@ -1,0 +1,193 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The tracker on the simulator's manual clock: a whole pass in about a
+// second of test time. It arrives at the AOS point early, follows the plan
+// inside the limits, sends fewer than one command a second, parks after
+// LOS, and a stop from anywhere ends it at once.
+
+#include "../common/simulatorpump.h"
+#include "linkschemes.h"
+#include "session/rotatorsession.h"
+#include "sim/simulator.h"
+#include "sim/simulatorscheme.h"
+#include "syntheticpass.h"
+#include "tracking/tracker.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+using slew::session::RotatorSession;
+using namespace slew::tracking;
+
+namespace {
+
+struct Rig {
+    RotatorSession session;
+    SimulatorPump pump{0.02};
+    slew::sim::Simulator *sim = nullptr;
+    RotatorReach reach;
+    QList<QPointF> targets; // every go-to the session sent, in mechanical positions
+
+    bool open(double azMax, double elMax)
+    {
+        slew::model::RotatorProfile profile;
+        profile.limits = slew::model::RotatorLimits{0, azMax, 0, elMax};
+        profile.parkAz = 180;
+        profile.parkEl = 90;
+        session.setProfile(profile);
+        session.connectTo(QStringLiteral("sim:?clock=manual&az_max=%1&el_max=%2").arg(azMax).arg(elMax));
+        pump.follow(&session);
+        QObject::connect(&session, &RotatorSession::targetChanged, &session,
+                         [this](double az, double el) { targets.append(QPointF(az, el)); });
+        if (!runEventLoopUntil([&] { return session.capabilities().probed && session.hasPosition(); }, 10000))
+            return false;
+        sim = slew::sim::simulatorBehind(session.link());
+        reach.limits = profile.limits;
+        reach.azimuthRateDegS = 6.2; // the G-5500 class simulator (docs/simulator.md)
+        reach.elevationRateDegS = 2.7;
+        return sim != nullptr;
+    }
+
+    // A station clock that keeps the simulator's: AOS `lead` simulated seconds from now.
+    std::function<double()> clockWithAosIn(double lead, double aosJulian)
+    {
+        const double startSim = sim->clock().now();
+        return [this, startSim, lead, aosJulian] {
+            return aosJulian + (sim->clock().now() - startSim - lead) / 86400.0;
+        };
+    }
+};
+
+constexpr double kAos = 2461000.5; // any Julian date: the pass is made up
+
+} // namespace
+
+class TrackerTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { slew::registerLinkSchemes(); }
+
+    void followsAPassOverTheNorthStopWithTheOverlap()
+    {
+        Rig rig;
+        QVERIFY(rig.open(450, 180));
+        const QList<SkyPoint> pass = greatCirclePass(0, 40, true); // north-west to north-east
+        Tracker tracker(&rig.session);
+        QSignalSpy states(&tracker, &Tracker::stateChanged);
+        std::optional<double> errorAtAos;
+        connect(&tracker, &Tracker::pointingError, this, [&](double deg, double) {
+            if (!errorAtAos)
+                errorAtAos = deg;
+        });
+        QVERIFY2(tracker.track(pass, kAos, rig.reach, rig.clockWithAosIn(120, kAos)), qPrintable(tracker.error()));
+        QCOMPARE(tracker.state(), Tracker::State::Waiting);
+        QVERIFY(!tracker.plan().flipped); // the overlap takes the crossing
+        QVERIFY(tracker.plan().usesOverlap);
+
+        QVERIFY(runEventLoopUntil([&] { return tracker.state() == Tracker::State::Done; }, 30000));
+        const TrackingFigures &f = tracker.figures();
+        qInfo("north crossing, 450/180: RMS %.3f°, worst %.3f°, %d commands in %.0f s (%.2f/s), %d samples",
+              f.rmsDeg, f.worstDeg, f.commands, f.passSeconds, f.commandsPerSecond(), f.samples);
+        // It was at the AOS point when the pass began.
+        QVERIFY(errorAtAos && *errorAtAos < 1.0);
+        QVERIFY(f.samples > 100);
+        QVERIFY2(f.rmsDeg < 0.2, qPrintable(QString::number(f.rmsDeg)));
+        QVERIFY2(f.worstDeg < 1.0, qPrintable(QString::number(f.worstDeg)));
+        QVERIFY(f.commandsPerSecond() < 1.0);
+        // Every command inside the travel, no unwind: never more than half a
+        // turn between two (the park after LOS aside).
+        for (int i = 0; i + 1 < rig.targets.size(); ++i) {
+            QVERIFY(rig.targets[i].x() >= 0 && rig.targets[i].x() <= 450);
+            QVERIFY(rig.targets[i].y() >= 0 && rig.targets[i].y() <= 180);
+            if (i > 0)
+                QVERIFY(std::abs(rig.targets[i].x() - rig.targets[i - 1].x()) < 180);
+        }
+        // After LOS it parks.
+        QCOMPARE(rig.targets.last(), QPointF(180, 90));
+        QCOMPARE(states.last().at(0).value<Tracker::State>(), Tracker::State::Done);
+    }
+
+    void theFlipOnA360Rotator()
+    {
+        Rig rig;
+        QVERIFY(rig.open(360, 180));
+        Tracker tracker(&rig.session);
+        TrackerSettings settings;
+        settings.afterPass = TrackerSettings::AfterPass::Stay;
+        tracker.setSettings(settings);
+        // From the horizon to 180° of elevation takes 67 s at 2.7°/s: AOS is far enough off.
+        QVERIFY(tracker.track(greatCirclePass(0, 40, true), kAos, rig.reach, rig.clockWithAosIn(120, kAos)));
+        QVERIFY(tracker.plan().flipped);
+        QVERIFY(runEventLoopUntil([&] { return tracker.state() == Tracker::State::Done; }, 30000));
+        const TrackingFigures &f = tracker.figures();
+        qInfo("north crossing, 360/180 (flip): RMS %.3f°, worst %.3f°, %.2f commands/s", f.rmsDeg, f.worstDeg,
+              f.commandsPerSecond());
+        QVERIFY(f.rmsDeg < 0.2 && f.worstDeg < 1.0);
+        for (const QPointF &t : rig.targets)
+            QVERIFY(t.y() >= 90); // over the top the whole pass
+        // Stay: the last command is the pass's own.
+        QVERIFY(rig.targets.last() != QPointF(180, 90));
+    }
+
+    void aStopEndsTrackingAtOnce()
+    {
+        Rig rig;
+        QVERIFY(rig.open(450, 180));
+        Tracker tracker(&rig.session);
+        QVERIFY(tracker.track(greatCirclePass(90, 50, true), kAos, rig.reach, rig.clockWithAosIn(30, kAos)));
+        QVERIFY(runEventLoopUntil([&] { return tracker.secondsFromAos() > 60; }, 10000));
+        QCOMPARE(tracker.state(), Tracker::State::Tracking);
+        QVERIFY(rig.session.stop()); // the window's Stop, Space, Esc, rotctld S, shutdown: all end here
+        QCOMPARE(tracker.state(), Tracker::State::Idle);
+        const qsizetype sent = rig.targets.size();
+        const double then = rig.sim->clock().now();
+        QVERIFY(runEventLoopUntil([&] { return rig.sim->clock().now() > then + 20; }, 10000));
+        QCOMPARE(rig.targets.size(), sent); // nothing more went out
+    }
+
+    void aLostLinkEndsTracking()
+    {
+        Rig rig;
+        QVERIFY(rig.open(450, 180));
+        Tracker tracker(&rig.session);
+        QVERIFY(tracker.track(greatCirclePass(90, 50, true), kAos, rig.reach, rig.clockWithAosIn(30, kAos)));
+        QSignalSpy states(&tracker, &Tracker::stateChanged);
+        rig.session.disconnectFromRotator();
+        QCOMPARE(tracker.state(), Tracker::State::Idle);
+        QVERIFY(states.last().at(1).toString().contains(QStringLiteral("link")));
+    }
+
+    void refusesWithoutALinkOrAPlan()
+    {
+        RotatorSession session;
+        Tracker tracker(&session);
+        QVERIFY(!tracker.track(greatCirclePass(90, 50, true), kAos, RotatorReach{}, [] { return kAos; }));
+        QVERIFY(tracker.error().contains(QStringLiteral("not connected")));
+        Rig rig;
+        QVERIFY(rig.open(450, 180));
+        Tracker planless(&rig.session);
+        QVERIFY(!planless.track({}, kAos, rig.reach, [] { return kAos; }));
+        QVERIFY(!planless.error().isEmpty());
+    }
+
+    void predictedLagOnA360Rotator()
+    {
+        // 360°/90° and a pass over the north stop: the plan unwinds and says
+        // how far behind it will be; the rotator then is about that far behind.
+        Rig rig;
+        QVERIFY(rig.open(360, 90));
+        Tracker tracker(&rig.session);
+        QVERIFY(tracker.track(greatCirclePass(0, 40, true), kAos, rig.reach, rig.clockWithAosIn(60, kAos)));
+        QCOMPARE(tracker.plan().unwinds, 1);
+        QVERIFY(!tracker.plan().followable());
+        QVERIFY(runEventLoopUntil([&] { return tracker.state() == Tracker::State::Done; }, 30000));
+        const TrackingFigures &f = tracker.figures();
+        qInfo("north crossing, 360/90 (unwind): predicted worst %.2f°, measured %.2f° (RMS %.2f°)",
+              tracker.plan().predictedWorstDeg, f.worstDeg, f.rmsDeg);
+        QVERIFY(f.worstDeg > 20);
+        // The plan's prediction, made before AOS, holds to half a degree.
+        QVERIFY(std::abs(f.worstDeg - tracker.plan().predictedWorstDeg) < 0.5);
+    }
+};
+
+QTEST_MAIN(TrackerTest)
+#include "tst_tracker.moc"
