@@ -67,36 +67,101 @@ Run makeRun(const QList<SkyPoint> &pass, bool flipped)
     return run;
 }
 
+// One axis of the rotator as the planner imagines it: it heads for the
+// target at up to `rate`, speeding up and braking at `accel` (0: at once)
+// so that it stops on the target rather than past it.
+struct AxisFollower {
+    double position = 0, velocity = 0;
+    double rate = 1, accel = 0;
+
+    void step(double target, double dt)
+    {
+        const double distance = target - position;
+        if (accel <= 0) {
+            const double move = std::clamp(distance, -rate * dt, rate * dt);
+            position += move;
+            velocity = dt > 0 ? move / dt : 0;
+            return;
+        }
+        // The speed from which it can still stop at the target.
+        const double stoppable = std::sqrt(2.0 * accel * std::abs(distance));
+        const double wanted = std::copysign(std::min(rate, stoppable), distance);
+        velocity += std::clamp(wanted - velocity, -accel * dt, accel * dt);
+        position += velocity * dt;
+    }
+};
+
 // Drives the path at the rotator's full rate from its first point and
 // fills in the predicted error, the lags and the figures.
 void predict(const QList<SkyPoint> &pass, const RotatorReach &reach, double threshold, PassPlan &plan)
 {
-    double az = plan.path.front().azimuth, el = plan.path.front().elevation;
+    constexpr double kSubStep = 0.05; // seconds: fine enough for the acceleration
+    AxisFollower az{plan.path.front().azimuth, 0, reach.azimuthRateDegS, reach.azimuthAccelDegS2};
+    AxisFollower el{plan.path.front().elevation, 0, reach.elevationRateDegS, reach.elevationAccelDegS2};
     double sumSquares = 0;
     plan.predictedWorstDeg = 0;
     plan.lags.clear();
     bool lagging = false;
     for (int i = 0; i < plan.path.size(); ++i) {
         PathPoint &p = plan.path[i];
+        // The worst between two points counts too: a reading can come at any moment.
+        double worstHere = 0;
         if (i > 0) {
             const double dt = p.seconds - plan.path[i - 1].seconds;
-            const double azStep = reach.azimuthRateDegS * dt, elStep = reach.elevationRateDegS * dt;
-            az += std::clamp(p.azimuth - az, -azStep, azStep);
-            el += std::clamp(p.elevation - el, -elStep, elStep);
+            const int steps = std::max(1, int(std::ceil(dt / kSubStep)));
+            const SkyPoint &from = pass[i - 1], &to = pass[i];
+            const double turn = shortTurn(from.azimuthDeg, to.azimuthDeg);
+            for (int s = 1; s <= steps; ++s) {
+                az.step(p.azimuth, dt / steps);
+                el.step(p.elevation, dt / steps);
+                const double f = double(s) / steps;
+                worstHere = std::max(worstHere, skyAngleDeg(az.position, el.position, from.azimuthDeg + f * turn,
+                                                            from.elevationDeg + f * (to.elevationDeg - from.elevationDeg)));
+            }
         }
-        p.predictedErrorDeg = skyAngleDeg(az, el, pass[i].azimuthDeg, pass[i].elevationDeg);
-        sumSquares += p.predictedErrorDeg * p.predictedErrorDeg;
-        plan.predictedWorstDeg = std::max(plan.predictedWorstDeg, p.predictedErrorDeg);
-        const bool over = p.predictedErrorDeg > threshold;
+        p.predictedErrorDeg = skyAngleDeg(az.position, el.position, pass[i].azimuthDeg, pass[i].elevationDeg);
+        worstHere = std::max(worstHere, p.predictedErrorDeg);
+        sumSquares += worstHere * worstHere; // the RMS of each second's worst: on the safe side
+        plan.predictedWorstDeg = std::max(plan.predictedWorstDeg, worstHere);
+        const bool over = worstHere > threshold;
         if (over && !lagging)
             plan.lags.append(LagSpan{p.seconds, p.seconds, 0});
         if (over) {
             plan.lags.back().toSeconds = p.seconds;
-            plan.lags.back().worstDeg = std::max(plan.lags.back().worstDeg, p.predictedErrorDeg);
+            plan.lags.back().worstDeg = std::max(plan.lags.back().worstDeg, worstHere);
         }
         lagging = over;
     }
     plan.predictedRmsDeg = std::sqrt(sumSquares / plan.path.size());
+}
+
+// Where the sky asks for more speed than the axis has (the azimuth swing
+// near the zenith), a path that only chases falls behind and is worst just
+// after the swing. Averaging a forward and a backward rate-limited copy of
+// the path gives one that is still within the rate (a mean of two such
+// paths is) and starts the swing early by as much as it ends late: the
+// error is shared before and after, and its worst about halved. Where the
+// axis keeps up, both copies are the path itself and nothing changes.
+// Points [from, to) of the path; an unwind is left a jump, done at full
+// speed, rather than spread over minutes.
+void shareTheLag(QList<PathPoint> &path, int from, int to, double PathPoint::*axis, double rate)
+{
+    if (to - from < 2)
+        return;
+    const int n = to - from;
+    QList<double> forward(n), backward(n);
+    forward.front() = path[from].*axis;
+    for (int i = 1; i < n; ++i) {
+        const double step = rate * (path[from + i].seconds - path[from + i - 1].seconds);
+        forward[i] = forward[i - 1] + std::clamp(path[from + i].*axis - forward[i - 1], -step, step);
+    }
+    backward.back() = path[to - 1].*axis;
+    for (int i = n - 2; i >= 0; --i) {
+        const double step = rate * (path[from + i + 1].seconds - path[from + i].seconds);
+        backward[i] = backward[i + 1] + std::clamp(path[from + i].*axis - backward[i + 1], -step, step);
+    }
+    for (int i = 0; i < n; ++i)
+        path[from + i].*axis = 0.5 * (forward[i] + backward[i]);
 }
 
 // One path along `run`, starting `turns` whole turns from its first
@@ -109,6 +174,7 @@ Candidate placeRun(const QList<SkyPoint> &pass, const Run &run, int turns, const
     Candidate c;
     c.plan.flipped = run.flipped;
     int k = turns;
+    QList<int> turnChanges; // where the path unwinds
     for (int i = 0; i < run.azimuth.size(); ++i) {
         if (!inside(run.azimuth[i] + 360.0 * k, l.azMin, l.azMax)) {
             // The nearest turn that fits (there is one: the travel spans 360°).
@@ -122,7 +188,7 @@ Candidate placeRun(const QList<SkyPoint> &pass, const Run &run, int turns, const
                 }
             }
             if (best != k)
-                ++c.plan.unwinds;
+                turnChanges.append(i);
             k = best;
         }
         PathPoint p;
@@ -139,6 +205,22 @@ Candidate placeRun(const QList<SkyPoint> &pass, const Run &run, int turns, const
     }
     if (options.startAzimuth)
         c.travel += std::abs(c.plan.path.front().azimuth - *options.startAzimuth);
+    // A little under full rate: the rotator also has to get up to speed.
+    int from = 0;
+    for (int to : turnChanges + QList<int>{int(c.plan.path.size())}) {
+        shareTheLag(c.plan.path, from, to, &PathPoint::azimuth, 0.95 * reach.azimuthRateDegS);
+        shareTheLag(c.plan.path, from, to, &PathPoint::elevation, 0.95 * reach.elevationRateDegS);
+        from = to;
+    }
+    // Unwinds: whole turns the path travels beyond what the sky does. A
+    // change of turn where the sky itself swings half a turn (through the
+    // zenith) only picks the other way round, and is none.
+    double pathTravel = 0, skyTravel = 0;
+    for (int i = 1; i < c.plan.path.size(); ++i) {
+        pathTravel += std::abs(c.plan.path[i].azimuth - c.plan.path[i - 1].azimuth);
+        skyTravel += std::abs(shortTurn(pass[i - 1].azimuthDeg, pass[i].azimuthDeg));
+    }
+    c.plan.unwinds = std::max(0, int(std::floor((pathTravel - skyTravel + 180.0) / 360.0)));
     predict(pass, reach, options.lagThresholdDeg, c.plan);
     return c;
 }

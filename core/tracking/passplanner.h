@@ -46,6 +46,11 @@ struct RotatorReach {
     model::RotatorLimits limits;
     double azimuthRateDegS = 6.0; // the fastest each axis turns
     double elevationRateDegS = 6.0;
+    // How fast each axis gets up to speed and brakes; 0: at once. A G-5500
+    // takes half a second to reach full speed, which costs a degree and a
+    // half of lag at the start of every long move.
+    double azimuthAccelDegS2 = 0;
+    double elevationAccelDegS2 = 0;
 };
 
 // One point of the path: the positions to command, in the rotator's own

@@ -180,7 +180,17 @@ void Tracker::tick()
         setState(State::Done, tr("LOS"));
         return;
     }
-    const PathPoint want = pathAt(std::min(t + m_settings.leadSeconds, end));
+    // Lead by the response delay, and by half a minimum step more: between
+    // two commands the target then swings from half a step behind the
+    // antenna to half a step ahead, not from nothing to a whole step behind.
+    const PathPoint now = pathAt(std::min(t + m_settings.leadSeconds, end));
+    const PathPoint soon = pathAt(std::min(t + m_settings.leadSeconds + 1.0, end));
+    // An unwind in between is a jump, not a speed: it must not move where
+    // the lead lands, or the commands would flip back and forth across it.
+    const double azimuthRate = std::abs(soon.azimuth - now.azimuth) > 180.0 ? 0.0 : std::abs(soon.azimuth - now.azimuth);
+    const double rate = std::max(azimuthRate, std::abs(soon.elevation - now.elevation));
+    const double halfStep = rate > 1e-6 ? std::min(0.5 * m_settings.minimumStepDeg / rate, 10.0) : 0.0;
+    const PathPoint want = pathAt(std::min(t + m_settings.leadSeconds + halfStep, end));
     const bool moved = !m_lastSent || std::abs(want.azimuth - m_lastSent->first) > m_settings.minimumStepDeg
                        || std::abs(want.elevation - m_lastSent->second) > m_settings.minimumStepDeg;
     if (moved)

@@ -29,8 +29,10 @@ class RotatorSession;
 namespace slew::tracking {
 
 struct TrackerSettings {
-    // How far ahead to command: the rotator's response delay (measured).
-    double leadSeconds = 1.0;
+    // How far ahead to command: the rotator's response delay. 0.5 s is what
+    // the simulated G-5500 class rotator needs (bench_tracking: of 0, 0.5, 1
+    // and 1.5 s, 0.5 s gave the smallest RMS on every pass).
+    double leadSeconds = 0.5;
     // The deadband: a new target goes out only when the path has moved this
     // far from the last one sent, on either axis. Relays wear; servos do not.
     double minimumStepDeg = 0.5;
