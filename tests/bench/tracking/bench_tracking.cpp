@@ -313,5 +313,18 @@ int main(int argc, char *argv[])
             print("Gpredict-style", runGpredictStyle(c, azMax, elMax));
         }
     }
+    // How fast an azimuth axis must be to follow the zenith pass within 1°.
+    const PassCase &zenith = passes[2];
+    std::printf("%s: the planner's predicted worst by azimuth speed (450°/180°, half a second to full speed)\n", zenith.name);
+    for (double rate : {6.2, 8.0, 10.0, 12.0, 14.0, 16.0, 20.0}) {
+        tracking::RotatorReach reach;
+        reach.limits = model::RotatorLimits{0, 450, 0, 180};
+        reach.azimuthRateDegS = rate;
+        reach.elevationRateDegS = 2.7;
+        reach.azimuthAccelDegS2 = rate / 0.5;
+        reach.elevationAccelDegS2 = 6.0;
+        const tracking::PassPlan plan = tracking::planPass(zenith.points, reach);
+        std::printf("  %5.1f°/s: worst %5.2f°\n", rate, plan.predictedWorstDeg);
+    }
     return 0;
 }
