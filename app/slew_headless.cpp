@@ -13,6 +13,10 @@
 #include "bridge/rotctldserver.h"
 #include "protocol/dialect.h"
 #include "cli/terminationsignalwatcher.h"
+#include "sky/tle.h"
+#include "sky/utctime.h"
+
+#include <QFile>
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -26,6 +30,63 @@ int fail(const QString &message)
 {
     std::fprintf(stderr, "slew: %s\n", qPrintable(message));
     return 2;
+}
+
+// --track and what goes with it: the target (a satellite from --tle, the
+// sun or the moon), --min-el, --clock-start, --clock-rate.
+std::optional<slew::bridge::HeadlessConfig::Track> readTrack(const QCommandLineParser &parser, QString *error)
+{
+    using slew::tracking::TrackTarget;
+    slew::bridge::HeadlessConfig::Track track;
+    const QString what = parser.value(QStringLiteral("track")).trimmed();
+    if (what.compare(QLatin1String("sun"), Qt::CaseInsensitive) == 0) {
+        track.target.kind = TrackTarget::Kind::Sun;
+    } else if (what.compare(QLatin1String("moon"), Qt::CaseInsensitive) == 0) {
+        track.target.kind = TrackTarget::Kind::Moon;
+    } else {
+        if (!parser.isSet(QStringLiteral("tle"))) {
+            *error = QStringLiteral("--track %1 needs --tle FILE with its element set").arg(what);
+            return std::nullopt;
+        }
+        QFile file(parser.value(QStringLiteral("tle")));
+        if (!file.open(QIODevice::ReadOnly)) {
+            *error = QStringLiteral("--tle %1: %2").arg(file.fileName(), file.errorString());
+            return std::nullopt;
+        }
+        const QList<slew::sky::Tle> sets = slew::sky::readTleText(QString::fromLatin1(file.readAll())).sets;
+        const QList<const slew::sky::Tle *> found = slew::sky::findTles(sets, what);
+        if (found.isEmpty()) {
+            *error = QStringLiteral("--track %1: no such satellite in %2").arg(what, file.fileName());
+            return std::nullopt;
+        }
+        track.target.elements = *found.first();
+    }
+    if (parser.isSet(QStringLiteral("min-el"))) {
+        bool ok = false;
+        track.minElevationDeg = parser.value(QStringLiteral("min-el")).toDouble(&ok);
+        if (!ok || track.minElevationDeg < -5 || track.minElevationDeg > 90) {
+            *error = QStringLiteral("--min-el %1: expected degrees from -5 to 90").arg(parser.value(QStringLiteral("min-el")));
+            return std::nullopt;
+        }
+    }
+    if (parser.isSet(QStringLiteral("clock-start"))) {
+        track.clockStartJulian = slew::sky::julianFromIso(parser.value(QStringLiteral("clock-start")));
+        if (!track.clockStartJulian) {
+            *error = QStringLiteral("--clock-start %1: expected an ISO 8601 time, as 2024-06-20T12:00:00Z")
+                         .arg(parser.value(QStringLiteral("clock-start")));
+            return std::nullopt;
+        }
+    }
+    if (parser.isSet(QStringLiteral("clock-rate"))) {
+        bool ok = false;
+        track.clockRate = parser.value(QStringLiteral("clock-rate")).toDouble(&ok);
+        if (!ok || track.clockRate < 1 || track.clockRate > 20 || !track.clockStartJulian) {
+            *error = QStringLiteral("--clock-rate %1: expected 1 to 20, with --clock-start")
+                         .arg(parser.value(QStringLiteral("clock-rate")));
+            return std::nullopt;
+        }
+    }
+    return track;
 }
 
 } // namespace
@@ -110,11 +171,33 @@ int runHeadless(int argc, char *argv[])
         config.rotors = *rotors;
     }
 
+    if (parser.isSet(QStringLiteral("limits"))) {
+        const QString text = parser.value(QStringLiteral("limits"));
+        const auto limits = slew::bridge::parseLimits(text, &error);
+        if (!limits)
+            return fail(QStringLiteral("--limits %1: %2").arg(text, error));
+        config.profile.limits = *limits;
+    }
+
     if (parser.isSet(QStringLiteral("qth"))) {
         slew::sky::Station where;
         if (!slew::sky::parseStation(parser.value(QStringLiteral("qth")), &where, &error))
             return fail(QStringLiteral("--qth %1: %2").arg(parser.value(QStringLiteral("qth")), error));
         config.station = where;
+    }
+
+    if (parser.isSet(QStringLiteral("track"))) {
+        auto track = readTrack(parser, &error);
+        if (!track)
+            return fail(error);
+        if (!config.station)
+            return fail(QStringLiteral("--track needs --qth: where the antenna stands"));
+        config.track = *track;
+    } else {
+        for (const char *option : {"tle", "min-el", "clock-start", "clock-rate"}) {
+            if (parser.isSet(QString::fromLatin1(option)))
+                return fail(QStringLiteral("--%1 goes with --track").arg(QString::fromLatin1(option)));
+        }
     }
 
     slew::bridge::HeadlessStation station;

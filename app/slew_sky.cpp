@@ -9,6 +9,7 @@
 
 #include "sky/observation.h"
 #include "sky/passes.h"
+#include "sky/utctime.h"
 #include "sky/sgp4.h"
 #include "sky/station.h"
 #include "sky/sunmoon.h"
@@ -54,13 +55,12 @@ bool hasOption(int argc, char **argv, const char *name)
 
 QDateTime fromJulian(double julian)
 {
-    // Qt::UTC, not a UTC time zone: ISO 8601 output then ends in "Z".
-    return QDateTime::fromMSecsSinceEpoch(qint64(std::llround(unixSecondsFromJulian(julian) * 1000.0)), Qt::UTC);
+    return utcFromJulian(julian);
 }
 
 QString isoTime(double julian)
 {
-    return fromJulian(julian).toString(Qt::ISODate);
+    return isoUtc(julian);
 }
 
 QString tableTime(double julian)
@@ -68,22 +68,14 @@ QString tableTime(double julian)
     return fromJulian(julian).toString(QStringLiteral("yyyy-MM-dd HH:mm:ss"));
 }
 
-// ISO 8601; a time without a zone is UTC.
 std::optional<double> parseTime(const QString &text)
 {
-    QDateTime t = QDateTime::fromString(text.trimmed(), Qt::ISODateWithMs);
-    if (!t.isValid())
-        t = QDateTime::fromString(text.trimmed(), Qt::ISODate);
-    if (!t.isValid())
-        return std::nullopt;
-    if (t.timeSpec() == Qt::LocalTime)
-        t.setTimeZone(QTimeZone::utc());
-    return julianFromUnixSeconds(t.toMSecsSinceEpoch() / 1000.0);
+    return julianFromIso(text);
 }
 
 double nowJulian()
 {
-    return julianFromUnixSeconds(QDateTime::currentMSecsSinceEpoch() / 1000.0);
+    return julianNow();
 }
 
 struct Common {

@@ -94,7 +94,9 @@ ProgramMode makeHeadlessMode()
     ProgramMode mode;
     mode.title = QStringLiteral("Station service");
     mode.synopsis = QStringLiteral("slew --headless [--config FILE] [--connect URI] [--dialect NAME] "
-                                   "[--profile FILE] [--rotctld-listen ADDRESS:PORT] [--rotctld-allow ADDRESSES] [--rotors LIST]");
+                                   "[--profile FILE] [--limits AZMIN:AZMAX,ELMIN:ELMAX] [--rotctld-listen ADDRESS:PORT] "
+                                   "[--rotctld-allow ADDRESSES] [--rotors LIST] [--qth STATION --tle FILE "
+                                   "--track CATNR|NAME|sun|moon [--min-el DEG] [--clock-start ISO8601] [--clock-rate N]]");
     mode.description = QStringLiteral(
         "Runs Slew with no window and no display, as a station service: it keeps the link to the rotator open "
         "and reconnects after a loss, serves the rotctld protocol to trackers, and logs one line per event on "
@@ -105,7 +107,8 @@ ProgramMode makeHeadlessMode()
         {{QStringLiteral("config")},
          QStringLiteral("file"),
          QStringLiteral("Read settings from FILE, one `name = value` a line, where name is one of connect, dialect, "
-                        "profile, rotctld-listen, rotctld-allow, rotctld-max-clients, rotors, qth. Options on the command line win over the file.")},
+                        "profile, limits, rotctld-listen, rotctld-allow, rotctld-max-clients, rotors, qth, tle, track, min-el. Options on the "
+                        "command line win over the file.")},
         connectOption(QStringLiteral("The rotator's link URI (default sim:, the built-in simulator).")),
         dialectOption(),
         profileOption(),
@@ -115,6 +118,36 @@ ProgramMode makeHeadlessMode()
          QStringLiteral("Comma-separated client addresses the rotctld server accepts (default: any)."),
          true},
         rotctldMaxClientsOption(),
+        {{QStringLiteral("limits")},
+         QStringLiteral("travel"),
+         QStringLiteral("The rotator's travel for this run, AZMIN:AZMAX,ELMIN:ELMAX: 0:450,0:180 for an overlap and "
+                        "flip rotator, -180:180,0:90 for a south stop. It replaces the profile's, and every move is "
+                        "checked against it."),
+         true},
+        {{QStringLiteral("track")},
+         QStringLiteral("target"),
+         QStringLiteral("Track every pass of a satellite (a catalogue number or the start of a name in --tle), the sun "
+                        "or the moon until SIGTERM: plan each pass before AOS (never the long way round, the flip or "
+                        "the overlap where the travel has them), pre-position, follow, and log the plan, AOS, and at "
+                        "LOS the pointing error (RMS and worst). Needs --qth. Remote trackers on the rotctld port are "
+                        "held off while a pass is tracked."),
+         true},
+        {{QStringLiteral("tle")},
+         QStringLiteral("file"),
+         QStringLiteral("Two- or three-line element sets (CelesTrak's format) for --track."),
+         true},
+        {{QStringLiteral("min-el")},
+         QStringLiteral("degrees"),
+         QStringLiteral("With --track: passes must climb above this, -5 to 90 (default 0)."),
+         true},
+        {{QStringLiteral("clock-start")},
+         QStringLiteral("time"),
+         QStringLiteral("With --track: start the station clock at this UTC instant (ISO 8601) and let it run, to "
+                        "rehearse a pass on the simulator or on the rotator.")},
+        {{QStringLiteral("clock-rate")},
+         QStringLiteral("n"),
+         QStringLiteral("With --clock-start: run the station clock n times faster, 1 to 20 (default 1), to keep pace "
+                        "with a simulator at the same time scale (sim:?time_scale=n, slew-sim --time-scale n).")},
         {{QStringLiteral("rotors")},
          QStringLiteral("list"),
          QStringLiteral("Serve these rotors of a multi-rotor controller (the Micro-2g's 1 to 4, as 1,2,4 or 1-4) over "

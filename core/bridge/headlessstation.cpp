@@ -47,6 +47,30 @@ std::optional<QList<int>> parseRotorList(const QString &text, QString *error)
     return rotors;
 }
 
+std::optional<model::RotatorLimits> parseLimits(const QString &text, QString *error)
+{
+    const QStringList axes = text.split(u',');
+    auto range = [](const QString &part, double *low, double *high) {
+        const QStringList ends = part.split(u':');
+        bool okLow = false, okHigh = false;
+        if (ends.size() != 2)
+            return false;
+        *low = ends[0].trimmed().toDouble(&okLow);
+        *high = ends[1].trimmed().toDouble(&okHigh);
+        return okLow && okHigh;
+    };
+    model::RotatorLimits limits;
+    if (axes.size() != 2 || !range(axes[0], &limits.azMin, &limits.azMax) || !range(axes[1], &limits.elMin, &limits.elMax)) {
+        *error = QObject::tr("expected AZMIN:AZMAX,ELMIN:ELMAX, as 0:450,0:180");
+        return std::nullopt;
+    }
+    if (const QString why = limits.validate(); !why.isEmpty()) {
+        *error = why;
+        return std::nullopt;
+    }
+    return limits;
+}
+
 HeadlessStation::HeadlessStation(std::FILE *logFile, QObject *parent) : QObject(parent), m_log(logFile) {}
 
 HeadlessStation::Rotor &HeadlessStation::addRotor(int number, const model::RotatorProfile &profile)
@@ -72,7 +96,11 @@ HeadlessStation::Rotor &HeadlessStation::addRotor(int number, const model::Rotat
     connect(s, &RotatorSession::commandRefused, this, [say](const QString &m) { say(tr("refused: %1").arg(m)); });
     connect(s, &RotatorSession::alarmReceived, this, [say](const QString &m) { say(tr("alarm: %1").arg(m)); });
     connect(s, &RotatorSession::versionChanged, this, [say](const QString &v) { say(tr("controller: %1").arg(v)); });
-    connect(s, &RotatorSession::targetChanged, this, [say](double az, double el) {
+    connect(s, &RotatorSession::targetChanged, this, [this, say](double az, double el) {
+        // A tracked pass sends a target every second or two: its plan and
+        // figures are logged instead.
+        if (m_runner && m_runner->holdsRotator())
+            return;
         say(tr("target: az %1 el %2").arg(az, 0, 'f', 1).arg(el, 0, 'f', 1));
     });
     connect(s, &RotatorSession::errorFlagsChanged, this, [say](int flags) {
@@ -148,6 +176,28 @@ bool HeadlessStation::start(const HeadlessConfig &config, QString *error)
                 return false;
         }
     }
+    if (config.track) {
+        if (!config.station) {
+            *error = tr("--track needs the station (--qth)");
+            return false;
+        }
+        m_clock = std::make_unique<tracking::StationClock>(config.track->clockStartJulian, config.track->clockRate);
+        m_runner = std::make_unique<tracking::PassRunner>(m_rotors.front().session.get());
+        connect(m_runner.get(), &tracking::PassRunner::logLine, this, [this](const QString &line) { log(tr("track: %1").arg(line)); });
+        // While Slew tracks, trackers on the rotctld port are held off.
+        connect(m_runner.get(), &tracking::PassRunner::activeChanged, this, [this](bool active) {
+            if (RotctldServer *server = m_rotors.front().server.get())
+                active ? server->holdRemote(tr("Slew's own tracking")) : server->releaseRemote();
+        });
+        // Speeds are not in profiles yet: a G-5500 class rotator's.
+        tracking::RotatorReach reach;
+        reach.limits = profile.limits;
+        reach.azimuthRateDegS = 6.2;
+        reach.elevationRateDegS = 2.7;
+        reach.azimuthAccelDegS2 = 12.0;
+        reach.elevationAccelDegS2 = 6.0;
+        m_runner->start(config.track->target, *config.station, config.track->minElevationDeg, reach, m_clock.get());
+    }
     for (Rotor &rotor : m_rotors) {
         const QString uri = m_line ? transport::SharedLine::rotorUri(m_line->uri(), rotor.number) : profile.uri;
         log((rotor.number > 0 ? tr("rotor %1: ").arg(rotor.number) : QString()) + tr("connecting to %1").arg(uri));
@@ -162,6 +212,8 @@ void HeadlessStation::shutdown(const QString &why)
         return;
     m_stopping = true;
     log(tr("stopping: %1").arg(why));
+    if (m_runner)
+        m_runner->stop(why);
     for (Rotor &rotor : m_rotors) {
         if (rotor.server)
             rotor.server->close();

@@ -11,6 +11,7 @@
 
 #include "model/rotatorprofile.h"
 #include "sky/station.h"
+#include "tracking/passrunner.h"
 
 #include <QHostAddress>
 #include <QList>
@@ -45,7 +46,20 @@ struct HeadlessConfig {
     // so on (each a free port of its own when rotctldPort is 0). Empty: the
     // one rotor the URI names, or the controller's default.
     QList<int> rotors;
+    // --track: follow every pass of a satellite, the sun or the moon with
+    // the (first) rotor until SIGTERM. Needs the station.
+    struct Track {
+        tracking::TrackTarget target;
+        double minElevationDeg = 0;
+        std::optional<double> clockStartJulian; // --clock-start: a rehearsal
+        double clockRate = 1.0;                 // --clock-rate
+    };
+    std::optional<Track> track;
 };
+
+// "AZMIN:AZMAX,ELMIN:ELMAX" (`--limits 0:450,0:180`) as limits, checked;
+// nothing (and why in *error) otherwise.
+std::optional<model::RotatorLimits> parseLimits(const QString &text, QString *error);
 
 // "1,2,4" or "1-4" as rotor numbers 1..4, each once, in the order given;
 // nothing (and why in *error) for anything else.
@@ -67,6 +81,7 @@ public:
     // The first rotor's session and server (the only ones without --rotors).
     session::RotatorSession *session() const { return m_rotors.empty() ? nullptr : m_rotors.front().session.get(); }
     RotctldServer *server() const { return m_rotors.empty() ? nullptr : m_rotors.front().server.get(); }
+    tracking::PassRunner *passRunner() const { return m_runner.get(); }
     int rotorCount() const { return int(m_rotors.size()); }
 
 signals:
@@ -85,6 +100,8 @@ private:
     std::FILE *m_log;
     std::unique_ptr<transport::SharedLine> m_line; // with --rotors: the one link they share
     std::vector<Rotor> m_rotors;
+    std::unique_ptr<tracking::StationClock> m_clock;
+    std::unique_ptr<tracking::PassRunner> m_runner;
     int m_stillStopping = 0;
     bool m_stopping = false;
 };

@@ -95,13 +95,14 @@ void RotctldServer::close()
         emit clientsChanged();
 }
 
-void RotctldServer::holdRemote()
+void RotctldServer::holdRemote(const QString &holder)
 {
     if (m_remoteHeld)
         return;
     m_remoteHeld = true;
     emit remoteHeldChanged(true);
-    emit logMessage(tr("remote control held by the operator: remote moves are refused"));
+    emit logMessage(tr("remote control held by %1: remote moves are refused")
+                        .arg(holder.isEmpty() ? tr("the operator") : holder));
 }
 
 void RotctldServer::releaseRemote()

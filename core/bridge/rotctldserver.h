@@ -75,7 +75,8 @@ public:
     // The operator stays in charge: while held, remote moves are refused
     // (RPRT -9); a remote stop is always obeyed.
     bool isRemoteHeld() const { return m_remoteHeld; }
-    void holdRemote();
+    // `holder` says who has the rotator, for the log (the operator by default).
+    void holdRemote(const QString &holder = QString());
     void releaseRemote();
 
     // Also log every command but position polls (the station service does;

@@ -23,4 +23,20 @@ QList<SkyPoint> sampleSatellitePass(const sky::Sgp4 &satellite, const sky::Stati
     return points;
 }
 
+QList<SkyPoint> sampleBodyPass(sky::SkyBody body, const sky::Station &station, double fromJulian, double toJulian,
+                               double stepSeconds)
+{
+    QList<SkyPoint> points;
+    const double duration = (toJulian - fromJulian) * sky::kSecondsPerDay;
+    if (!(stepSeconds > 0) || !(duration >= 0))
+        return points;
+    const int steps = int(std::ceil(duration / stepSeconds));
+    for (int i = 0; i <= steps; ++i) {
+        const double seconds = std::min(i * stepSeconds, duration);
+        const sky::BodyPosition p = sky::bodyPosition(body, station, fromJulian + seconds / sky::kSecondsPerDay);
+        points.append(SkyPoint{seconds, p.azimuthDeg, p.elevationDeg});
+    }
+    return points;
+}
+
 } // namespace slew::tracking

@@ -5,6 +5,7 @@
 
 #include "passplanner.h"
 #include "sky/passes.h"
+#include "sky/sunmoon.h"
 
 namespace slew::tracking {
 
@@ -13,5 +14,10 @@ namespace slew::tracking {
 // cannot be propagated at are left out.
 QList<SkyPoint> sampleSatellitePass(const sky::Sgp4 &satellite, const sky::Station &station, const sky::Pass &pass,
                                     double stepSeconds = 1.0);
+
+// The same for the sun or the moon, from `fromJulian` (at or after the
+// pass's rise) to its set; seconds count from `fromJulian`.
+QList<SkyPoint> sampleBodyPass(sky::SkyBody body, const sky::Station &station, double fromJulian, double toJulian,
+                               double stepSeconds = 1.0);
 
 } // namespace slew::tracking

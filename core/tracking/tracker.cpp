@@ -158,7 +158,9 @@ void Tracker::tick()
                 m_prepositioned = true;
                 // Started too late to be there on time: say so, with by how much.
                 const double travel = needed - m_settings.arriveEarlySeconds;
-                if (t > -travel)
+                if (t <= -travel)
+                    setState(State::Waiting, tr("moving to the AOS point"));
+                else
                     setState(State::Waiting, tr("the AOS point is %1 s away at this rotator's speed and AOS is in %2 s: "
                                                 "tracking starts late")
                                                  .arg(travel, 0, 'f', 0)

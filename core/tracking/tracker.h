@@ -82,6 +82,9 @@ public:
     void stopTracking(const QString &why);
 
     State state() const { return m_state; }
+    // The rotator is the tracker's: moving to the AOS point, or tracking.
+    // Hours before a pass it is not yet.
+    bool hasRotator() const { return m_state == State::Tracking || (m_state == State::Waiting && m_prepositioned); }
     QString error() const { return m_error; }
     const PassPlan &plan() const { return m_plan; }
     const TrackingFigures &figures() const { return m_figures; }

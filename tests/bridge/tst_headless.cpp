@@ -37,6 +37,8 @@ private slots:
     void refusesABadListenAddress();
     void servesOneRotctldPortPerRotor();
     void refusesABadRotorList();
+    void tracksAPassAndHoldsOffRemoteTrackers();
+    void refusesABadTrack();
     void runningOutOfDescriptorsDoesNotSpin();
     void hostileClientCannotFloodTheLog();
 
@@ -374,6 +376,71 @@ void HeadlessTest::refusesABadRotorList()
         QCOMPARE(slew.exitCode(), 2);
         const QByteArray err = slew.readAllStandardError();
         QVERIFY2(err.contains("--rotors"), err.constData());
+    }
+}
+
+void HeadlessTest::tracksAPassAndHoldsOffRemoteTrackers()
+{
+    // A rehearsal: FLOCK 2P-1's pass over JO65hq on 2018-01-22 (LOS 07:51:03
+    // UTC) joined a minute before LOS, station clock and simulator both 20x.
+    QProcess slew;
+    quint16 port = 0;
+    QVERIFY2(startSlew(slew, {"--connect", "sim:?time_scale=20&az_max=450&el_max=180", "--limits", "0:450,0:180", "--qth",
+                               "JO65hq", "--tle", SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle", "--track",
+                               "FLOCK 2P-1", "--clock-start", "2018-01-22T07:50:00Z", "--clock-rate", "20",
+                               "--rotctld-listen", "127.0.0.1:0"},
+                       &port),
+             slew.readAllStandardError().constData());
+    QByteArray out = m_startupLog;
+    auto logged = [&](const char *text) {
+        return QTest::qWaitFor([&] {
+            out += slew.readAllStandardOutput();
+            return out.contains(text);
+        }, 20000);
+    };
+    QVERIFY2(logged("track: plan: "), out.constData());
+    QVERIFY(out.contains("track: next pass: FLOCK 2P-1, AOS 2018-01-22T"));
+    QVERIFY2(logged("remote control held by Slew's own tracking"), out.constData());
+    // While Slew tracks, a remote tracker's move is refused (Hamlib's -9, rejected).
+    QTcpSocket tracker;
+    tracker.connectToHost(QHostAddress::LocalHost, port);
+    QTRY_COMPARE(tracker.state(), QAbstractSocket::ConnectedState);
+    QCOMPARE(ask(tracker, "P 10 10"), QByteArray("RPRT -9\n"));
+    // At LOS: the figures, then control handed back.
+    QVERIFY2(logged("track: LOS: pointing error RMS "), out.constData());
+    QVERIFY2(logged("remote control handed back"), out.constData());
+    const QByteArray after = ask(tracker, "P 10 10");
+    QVERIFY2(after == "RPRT 0\n", (after + out).constData());
+    // And the next pass is planned.
+    QVERIFY2(logged("track: next pass: FLOCK 2P-1, AOS 2018-01-22T09:15:45Z"), out.constData());
+    QSignalSpy finished(&slew, &QProcess::finished);
+    ::kill(pid_t(slew.processId()), SIGTERM);
+    QVERIFY(finished.wait(10000));
+    QCOMPARE(slew.exitCode(), 0);
+}
+
+void HeadlessTest::refusesABadTrack()
+{
+    const QString tle = QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle");
+    const QList<QPair<QStringList, QByteArray>> cases{
+        {{"--track", "FLOCK 2P-1", "--tle", tle}, "--track needs --qth"},
+        {{"--track", "FLOCK 2P-1", "--qth", "JO65hq"}, "needs --tle"},
+        {{"--track", "NO SUCH BIRD", "--qth", "JO65hq", "--tle", tle}, "no such satellite"},
+        {{"--track", "sun", "--qth", "JO65hq", "--clock-rate", "5"}, "--clock-rate"},
+        {{"--track", "sun", "--qth", "JO65hq", "--clock-start", "yesterday"}, "--clock-start"},
+        {{"--track", "moon", "--qth", "JO65hq", "--min-el", "95"}, "--min-el"},
+        {{"--limits", "0:500,0:90"}, "--limits"},
+        {{"--limits", "0-450"}, "AZMIN:AZMAX,ELMIN:ELMAX"},
+        {{"--tle", tle}, "goes with --track"},
+    };
+    for (const auto &[args, message] : cases) {
+        QProcess slew;
+        QSignalSpy finished(&slew, &QProcess::finished);
+        slew.start(qEnvironmentVariable("SLEW_BIN"), QStringList{"--headless", "--connect", "sim:"} + args);
+        QVERIFY(finished.wait(10000));
+        QCOMPARE(slew.exitCode(), 2);
+        const QByteArray err = slew.readAllStandardError();
+        QVERIFY2(err.contains(message), (args.join(' ') + ": " + err).toUtf8().constData());
     }
 }
 

@@ -1,0 +1,176 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "passrunner.h"
+
+#include "skytrack.h"
+
+#include "session/rotatorsession.h"
+#include "sky/passes.h"
+#include "sky/utctime.h"
+
+
+namespace slew::tracking {
+
+using session::RotatorSession;
+
+namespace {
+constexpr double kLookAheadDays = 2.0;
+constexpr int kRetryMs = 3600 * 1000; // no pass in two days: look again in an hour
+}
+
+QString TrackTarget::name() const
+{
+    switch (kind) {
+    case Kind::Sun: return QObject::tr("the sun");
+    case Kind::Moon: return QObject::tr("the moon");
+    case Kind::Satellite: break;
+    }
+    return elements.name.isEmpty() ? QString::number(elements.catalogueNumber) : elements.name;
+}
+
+PassRunner::PassRunner(RotatorSession *session, QObject *parent) : QObject(parent), m_session(session), m_tracker(session)
+{
+    m_retry.setSingleShot(true);
+    connect(&m_retry, &QTimer::timeout, this, &PassRunner::nextPass);
+    connect(&m_tracker, &Tracker::stateChanged, this, &PassRunner::onTrackerState);
+    connect(session, &RotatorSession::stateChanged, this, [this](RotatorSession::State s) {
+        // The link is back: the next pass (or the rest of this one).
+        if (s == RotatorSession::State::Connected && m_running && !isActive())
+            QMetaObject::invokeMethod(this, &PassRunner::nextPass, Qt::QueuedConnection);
+    });
+}
+
+PassRunner::~PassRunner() = default;
+
+QString PassRunner::isoTime(double julian)
+{
+    return sky::isoUtc(julian);
+}
+
+bool PassRunner::isActive() const
+{
+    return m_tracker.state() == Tracker::State::Waiting || m_tracker.state() == Tracker::State::Tracking;
+}
+
+void PassRunner::start(const TrackTarget &target, const sky::Station &station, double minElevationDeg,
+                       const RotatorReach &reach, const StationClock *clock)
+{
+    m_target = target;
+    m_satellite.reset();
+    if (target.kind == TrackTarget::Kind::Satellite)
+        m_satellite.emplace(target.elements);
+    m_station = station;
+    m_minElevation = minElevationDeg;
+    m_reach = reach;
+    m_clock = clock;
+    m_running = true;
+    emit logLine(tr("tracking %1 above %2°%3").arg(target.name()).arg(minElevationDeg)
+                     .arg(clock->isRehearsal() ? tr(", rehearsal clock from %1 at %2x").arg(isoTime(clock->nowJulian())).arg(clock->rate())
+                                               : QString()));
+    if (m_session->isConnected())
+        nextPass();
+}
+
+void PassRunner::stop(const QString &why)
+{
+    if (!m_running)
+        return;
+    m_running = false;
+    m_retry.stop();
+    m_tracker.stopTracking(why);
+}
+
+void PassRunner::nextPass()
+{
+    if (!m_running || isActive() || !m_session->isConnected())
+        return;
+    const double now = m_clock->nowJulian();
+    const sky::PassWindow window{now, now + kLookAheadDays, m_minElevation};
+    const QList<sky::Pass> passes = m_satellite ? sky::predictPasses(*m_satellite, m_station, window)
+                                                : sky::predictBodyPasses(m_target.kind == TrackTarget::Kind::Sun
+                                                                             ? sky::SkyBody::Sun
+                                                                             : sky::SkyBody::Moon,
+                                                                         m_station, window);
+    const sky::Pass *next = nullptr;
+    for (const sky::Pass &p : passes) {
+        if (p.los.julian > now + 5.0 / sky::kSecondsPerDay) {
+            next = &p;
+            break;
+        }
+    }
+    if (!next) {
+        emit logLine(tr("no pass of %1 above %2° in the next %3 days; looking again in an hour")
+                         .arg(m_target.name()).arg(m_minElevation).arg(kLookAheadDays));
+        m_retry.start(kRetryMs);
+        return;
+    }
+    // A pass already under way is tracked from now.
+    const double from = std::max(next->aos.julian, now);
+    sky::Pass rest = *next;
+    rest.aos.julian = from;
+    // A second apart for a satellite; the sun and moon move slowly.
+    const QList<SkyPoint> points = m_satellite ? sampleSatellitePass(*m_satellite, m_station, rest, 1.0)
+                                               : sampleBodyPass(m_target.kind == TrackTarget::Kind::Sun ? sky::SkyBody::Sun
+                                                                                                          : sky::SkyBody::Moon,
+                                                                m_station, from, next->los.julian, 10.0);
+    emit logLine(tr("next pass: %1, AOS %2 at %3°, highest %4° at %5, LOS %6 at %7°%8")
+                     .arg(m_target.name(), isoTime(next->aos.julian))
+                     .arg(next->aos.azimuthDeg, 0, 'f', 1)
+                     .arg(next->maxElevationDeg(), 0, 'f', 1)
+                     .arg(isoTime(next->tca.julian), isoTime(next->los.julian))
+                     .arg(next->los.azimuthDeg, 0, 'f', 1)
+                     .arg(from > next->aos.julian ? tr(" (under way: from %1)").arg(isoTime(from)) : QString()));
+    const StationClock *clock = m_clock;
+    if (!m_tracker.track(points, from, m_reach, [clock] { return clock->nowJulian(); })) {
+        emit logLine(tr("cannot track this pass: %1; trying the next one after its LOS").arg(m_tracker.error()));
+        const double wait = (next->los.julian - now) * sky::kSecondsPerDay / std::max(1.0, m_clock->rate());
+        m_retry.start(int(std::min(wait * 1000.0 + 1000.0, double(kRetryMs))));
+        return;
+    }
+}
+
+void PassRunner::onTrackerState(Tracker::State state, const QString &why)
+{
+    const bool active = holdsRotator();
+    if (active != m_wasActive) {
+        m_wasActive = active;
+        emit activeChanged(active);
+    }
+    switch (state) {
+    case Tracker::State::Waiting:
+        // The first word from a new pass is its plan.
+        emit logLine(why == m_tracker.plan().describe() ? tr("plan: %1").arg(why) : tr("waiting for AOS: %1").arg(why));
+        break;
+    case Tracker::State::Tracking:
+        emit logLine(tr("AOS: tracking %1").arg(m_target.name()));
+        break;
+    case Tracker::State::Done: {
+        const TrackingFigures &f = m_tracker.figures();
+        ++m_passesDone;
+        emit logLine(tr("LOS: pointing error RMS %1°, worst %2° over %3 readings from AOS + %4 s; %5 commands "
+                        "(%6 a second); the plan predicted worst %7°")
+                         .arg(f.rmsDeg, 0, 'f', 3)
+                         .arg(f.worstDeg, 0, 'f', 2)
+                         .arg(f.samples)
+                         .arg(Tracker::kSettleSeconds, 0, 'f', 0)
+                         .arg(f.commands)
+                         .arg(f.commandsPerSecond(), 0, 'f', 2)
+                         .arg(m_tracker.plan().predictedWorstDeg, 0, 'f', 2));
+        QMetaObject::invokeMethod(this, &PassRunner::nextPass, Qt::QueuedConnection);
+        break;
+    }
+    case Tracker::State::Idle:
+        if (!m_running)
+            break;
+        if (m_session->isConnected()) {
+            // A stop from anywhere, or a refused point: tracking ends here.
+            m_running = false;
+            m_retry.stop();
+            emit logLine(tr("tracking ended: %1").arg(why));
+        } else {
+            emit logLine(tr("tracking paused: %1; the next pass is planned when the link is back").arg(why));
+        }
+        break;
+    }
+}
+
+} // namespace slew::tracking

@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Tracks every pass of one target, one after another, until told to stop:
+// the station service's `--track`. For each pass it predicts the next one
+// from the station clock, plans it, hands it to the Tracker, and logs the
+// plan, AOS, and at LOS the pointing figures. A stop from anywhere ends it
+// for good; a lost link ends the pass, and the next pass is planned once
+// the link is back.
+
+#include "stationclock.h"
+#include "tracker.h"
+
+#include "sky/sgp4.h"
+#include "sky/station.h"
+#include "sky/sunmoon.h"
+#include "sky/tle.h"
+
+#include <QObject>
+#include <QTimer>
+
+#include <optional>
+
+namespace slew::tracking {
+
+struct TrackTarget {
+    enum class Kind { Satellite, Sun, Moon };
+    Kind kind = Kind::Satellite;
+    sky::Tle elements; // a satellite's
+    QString name() const;
+};
+
+class PassRunner : public QObject {
+    Q_OBJECT
+public:
+    explicit PassRunner(session::RotatorSession *session, QObject *parent = nullptr);
+    ~PassRunner() override;
+
+    void setSettings(const TrackerSettings &settings) { m_tracker.setSettings(settings); }
+    // Starts with the next pass (or the one in progress). The clock must
+    // outlive the runner.
+    void start(const TrackTarget &target, const sky::Station &station, double minElevationDeg, const RotatorReach &reach,
+               const StationClock *clock);
+    void stop(const QString &why);
+
+    bool isRunning() const { return m_running; }
+    // A pass is being waited for or tracked.
+    bool isActive() const;
+    // The rotator is the tracker's (moving to the AOS point, or tracking):
+    // remote trackers are held off.
+    bool holdsRotator() const { return m_tracker.hasRotator(); }
+    const Tracker &tracker() const { return m_tracker; }
+    int passesDone() const { return m_passesDone; }
+
+signals:
+    void logLine(const QString &line);
+    // holdsRotator() changed.
+    void activeChanged(bool holdsRotator);
+
+private:
+    void nextPass();
+    void onTrackerState(Tracker::State state, const QString &why);
+    static QString isoTime(double julian);
+
+    session::RotatorSession *m_session;
+    Tracker m_tracker;
+    TrackTarget m_target;
+    std::optional<sky::Sgp4> m_satellite;
+    sky::Station m_station;
+    double m_minElevation = 0;
+    RotatorReach m_reach;
+    const StationClock *m_clock = nullptr;
+    bool m_running = false;
+    bool m_wasActive = false;
+    int m_passesDone = 0;
+    QTimer m_retry; // no pass found: look again later
+};
+
+} // namespace slew::tracking
