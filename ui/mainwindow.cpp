@@ -22,6 +22,7 @@
 #include "telemetrycharts.h"
 #include "telemetryrecorder.h"
 #include "trafficconsole.h"
+#include "trackingpanel.h"
 #include "wizard/setupwizard.h"
 
 #include "bridge/rotctldserver.h"
@@ -34,6 +35,7 @@
 #include <QLabel>
 #include <QSplitter>
 #include <QStandardPaths>
+#include <QSettings>
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QVBoxLayout>
@@ -82,9 +84,17 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
     m_controllerRotors = new session::ControllerRotors(session, this);
     m_rotorsPanel = new RotorsPanel(m_controllerRotors);
 
+    // Offline first: the last good copies, no network until asked.
+    m_elementSets = new sky::TleSources(
+        QStandardPaths::writableLocation(QStandardPaths::CacheLocation) + QStringLiteral("/element-sets"), this);
+    m_elementSets->setUrls(ElementSetsDialog::savedUrls());
+    m_elementSets->loadFromCache();
+    m_tracking = new TrackingPanel(session, m_elementSets);
+
     m_tabs = new QTabWidget;
     m_tabs->setObjectName(QStringLiteral("mainTabs"));
     m_tabs->addTab(m_charts, tr("Telemetry"));
+    m_tabs->addTab(m_tracking, tr("Tracking"));
     m_tabs->addTab(m_config, tr("Configuration"));
     m_tabs->addTab(m_traffic, tr("Traffic"));
     m_tabs->addTab(m_trackers, tr("Trackers"));
@@ -145,6 +155,23 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
             m_rotctld->holdRemote();
     });
     connect(m_trackers, &RotctldPanel::message, this, &MainWindow::logInfo);
+    connect(m_tracking, &TrackingPanel::message, this, &MainWindow::logInfo);
+    connect(m_tracking, &TrackingPanel::passOverlayChanged, m_plot, &PolarPlotWidget::setPassOverlay);
+    connect(m_tracking, &TrackingPanel::passTargetMoved, m_plot, &PolarPlotWidget::setPassTarget);
+    // While Slew tracks, trackers on the rotctld port are held off.
+    connect(m_tracking, &TrackingPanel::trackingActiveChanged, m_rotctld, [this](bool active) {
+        if (active)
+            m_rotctld->holdRemote(tr("Slew's own tracking"));
+        else
+            m_rotctld->releaseRemote();
+    });
+    {
+        sky::Station station;
+        QString ignored;
+        const QString saved = QSettings().value(QLatin1String(sky::kStationSettingsKey)).toString();
+        if (!saved.isEmpty() && sky::parseStation(saved, &station, &ignored))
+            m_tracking->setStation(station);
+    }
     connect(session, &RotatorSession::stateChanged, this, [this](RotatorSession::State s) {
         if (s == RotatorSession::State::Disconnected)
             m_jog->releaseAll();
@@ -156,11 +183,6 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
     wirePlot();
     showProfile();
     m_keys = new KeyboardControl(this, m_stop, m_jog, m_presets, this);
-    // Offline first: the last good copies, no network until asked.
-    m_elementSets = new sky::TleSources(
-        QStandardPaths::writableLocation(QStandardPaths::CacheLocation) + QStringLiteral("/element-sets"), this);
-    m_elementSets->setUrls(ElementSetsDialog::savedUrls());
-    m_elementSets->loadFromCache();
     buildMenus();
     resize(1440, 900);
 }
@@ -179,6 +201,7 @@ void MainWindow::buildMenus()
         auto *dialog = new StationDialog(this);
         dialog->setAttribute(Qt::WA_DeleteOnClose);
         connect(dialog, &QDialog::accepted, this, [this, dialog] {
+            m_tracking->setStation(dialog->station());
             logInfo(tr("station set to %1").arg(sky::stationLocator(dialog->station().latitudeDeg,
                                                                     dialog->station().longitudeDeg)));
         });

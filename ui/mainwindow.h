@@ -36,6 +36,7 @@ class TargetConfirmation;
 class TelemetryCharts;
 class TelemetryRecorder;
 class TrafficConsole;
+class TrackingPanel;
 
 }
 
@@ -74,6 +75,7 @@ public:
     // The other rotors of a multi-rotor controller, and their tiles.
     session::ControllerRotors *controllerRotors() const { return m_controllerRotors; }
     RotorsPanel *rotorsPanel() const { return m_rotorsPanel; }
+    TrackingPanel *trackingPanel() const { return m_tracking; }
     // The element sets Slew knows, loaded from the cache at start.
     sky::TleSources *elementSets() const { return m_elementSets; }
 
@@ -116,6 +118,7 @@ private:
     RotctldPanel *m_trackers;
     session::ControllerRotors *m_controllerRotors;
     RotorsPanel *m_rotorsPanel;
+    TrackingPanel *m_tracking;
     sky::TleSources *m_elementSets;
 };
 

@@ -101,6 +101,20 @@ void PolarPlotWidget::clearPositions()
     update();
 }
 
+void PolarPlotWidget::setPassOverlay(std::optional<PassOverlay> overlay)
+{
+    m_pass = std::move(overlay);
+    update();
+}
+
+void PolarPlotWidget::setPassTarget(std::optional<QPointF> azEl)
+{
+    if (!m_pass)
+        return;
+    m_pass->targetNow = azEl;
+    update();
+}
+
 QPointF PolarPlotWidget::centre() const
 {
     return QPointF(width() / 2.0, height() / 2.0);
@@ -143,6 +157,8 @@ void PolarPlotWidget::paintEvent(QPaintEvent *)
     p.fillRect(rect(), kBackground);
     paintGrid(p);
     paintTravel(p);
+    if (m_pass)
+        paintPassOverlay(p, *m_pass, [this](double az, double el) { return pointFor(az, el); });
     paintTrail(p);
     paintMarkers(p);
     paintLegend(p);

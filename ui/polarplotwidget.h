@@ -6,6 +6,7 @@
 // (targetPicked) and never moves anything itself.
 
 #include "model/rotatorlimits.h"
+#include "passoverlay.h"
 
 #include <QElapsedTimer>
 #include <QPointF>
@@ -32,6 +33,10 @@ public:
     void setTarget(double az, double el);
     void setPendingTarget(std::optional<QPointF> azEl); // awaiting the operator's confirmation
     void clearPositions();                              // a new connection: forget the old rotator
+    // A planned pass to draw (the Tracking tab's selection); none clears it.
+    void setPassOverlay(std::optional<PassOverlay> overlay);
+    void setPassTarget(std::optional<QPointF> azEl);
+    const std::optional<PassOverlay> &passOverlay() const { return m_pass; }
 
     bool isStale() const { return m_stale; }
     std::optional<QPointF> actual() const { return m_actual; }
@@ -67,6 +72,7 @@ private:
     std::optional<QPointF> m_park, m_actual, m_commanded, m_target, m_pending, m_drag, m_hover;
     bool m_stale = true;
     std::deque<QPointF> m_trail; // az, el; oldest first
+    std::optional<PassOverlay> m_pass;
 };
 
 } // namespace slew::ui

@@ -1,0 +1,73 @@
+#include "passoverlay.h"
+
+#include <QObject>
+#include <QPainter>
+
+#include <cmath>
+
+namespace slew::ui {
+namespace {
+
+const QColor kSkyTrack(0x3c, 0xb4, 0xf2);   // the plot's target blue
+const QColor kPlanned(0xf2, 0xc0, 0x3c);    // the plot's commanded amber
+const QColor kOverlap(0xf2, 0x9a, 0x3c);
+const QColor kLabel(0x9a, 0xa5, 0xb4);
+
+void label(QPainter &p, const QPointF &at, const QString &text, const QColor &colour)
+{
+    p.setPen(colour);
+    p.drawText(at + QPointF(8, -6), text);
+}
+
+} // namespace
+
+void paintPassOverlay(QPainter &p, const PassOverlay &o, const std::function<QPointF(double, double)> &pointFor)
+{
+    if (o.sky.size() < 2)
+        return;
+    QColor track = kSkyTrack;
+    track.setAlphaF(0.55f);
+    p.setPen(QPen(track, 2));
+    for (int i = 1; i < o.sky.size(); ++i)
+        p.drawLine(pointFor(o.sky[i - 1].x(), o.sky[i - 1].y()), pointFor(o.sky[i].x(), o.sky[i].y()));
+
+    std::optional<QPointF> overlapAt, unwindAt;
+    for (int i = 1; i < o.planned.size(); ++i) {
+        const QPointF &a = o.planned[i - 1], &b = o.planned[i];
+        if (std::abs(b.x() - a.x()) > 180.0) { // an unwind: no line across the sky
+            unwindAt = b;
+            continue;
+        }
+        const bool overlap = b.x() > o.azimuthTurnEnd || b.x() < o.azimuthTurnStart;
+        if (overlap && !overlapAt)
+            overlapAt = b;
+        p.setPen(QPen(overlap ? kOverlap : kPlanned, 1.5, Qt::DotLine));
+        p.drawLine(pointFor(a.x(), a.y()), pointFor(b.x(), b.y()));
+    }
+    QFont f = p.font();
+    f.setPointSizeF(f.pointSizeF() * 0.85);
+    p.setFont(f);
+    const QPointF aos = pointFor(o.sky.front().x(), o.sky.front().y());
+    const QPointF los = pointFor(o.sky.back().x(), o.sky.back().y());
+    p.setPen(QPen(kSkyTrack, 2));
+    p.setBrush(Qt::NoBrush);
+    p.drawEllipse(aos, 4, 4);
+    p.drawRect(QRectF(los.x() - 4, los.y() - 4, 8, 8));
+    label(p, aos, QObject::tr("AOS"), kLabel);
+    label(p, los, QObject::tr("LOS"), kLabel);
+    if (overlapAt)
+        label(p, pointFor(overlapAt->x(), overlapAt->y()), QObject::tr("overlap"), kOverlap);
+    if (unwindAt)
+        label(p, pointFor(unwindAt->x(), unwindAt->y()), QObject::tr("unwind"), QColor(0xe5, 0x48, 0x48));
+    if (o.flipped && !o.planned.isEmpty()) {
+        const QPointF mid = o.planned[o.planned.size() / 2];
+        label(p, pointFor(mid.x(), mid.y()), QObject::tr("flip"), kPlanned);
+    }
+    if (o.targetNow) {
+        p.setPen(Qt::NoPen);
+        p.setBrush(kSkyTrack);
+        p.drawEllipse(pointFor(o.targetNow->x(), o.targetNow->y()), 5, 5);
+    }
+}
+
+} // namespace slew::ui

@@ -1,0 +1,362 @@
+#include "trackingpanel.h"
+
+#include "session/rotatorsession.h"
+#include "sky/observation.h"
+#include "sky/sunmoon.h"
+#include "sky/tlesources.h"
+#include "sky/utctime.h"
+#include "tracking/skytrack.h"
+
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace slew::ui {
+
+using tracking::TrackTarget;
+
+namespace {
+
+constexpr double kLookAheadDays = 1.0;
+constexpr int kMostTargetsListed = 300; // a full catalogue is searched, not scrolled
+constexpr double kDopplerReferenceHz = 435e6;
+
+QString hms(double seconds)
+{
+    const qint64 s = qint64(std::max(0.0, seconds));
+    return QStringLiteral("%1:%2:%3").arg(s / 3600).arg((s / 60) % 60, 2, 10, QLatin1Char('0')).arg(s % 60, 2, 10, QLatin1Char('0'));
+}
+
+QString badge(const tracking::PassPlan &plan)
+{
+    if (!plan.isValid())
+        return QObject::tr("no plan: %1").arg(plan.refusal);
+    QStringList parts;
+    if (plan.flipped)
+        parts << QObject::tr("flip");
+    if (plan.usesOverlap)
+        parts << QObject::tr("overlap");
+    if (plan.unwinds > 0)
+        parts << QObject::tr("unwind");
+    if (!plan.followable())
+        parts << QObject::tr("lags %1°").arg(plan.predictedWorstDeg, 0, 'f', 1);
+    return parts.isEmpty() ? QObject::tr("plain") : parts.join(QStringLiteral(", "));
+}
+
+} // namespace
+
+TrackingPanel::TrackingPanel(session::RotatorSession *session, sky::TleSources *sets, QWidget *parent)
+    : QWidget(parent), m_session(session), m_sets(sets), m_runner(std::make_unique<tracking::PassRunner>(session))
+{
+    setObjectName(QStringLiteral("trackingPanel"));
+    m_stationLine = new QLabel;
+    m_stationLine->setObjectName(QStringLiteral("trackingStation"));
+    m_setsLine = new QLabel;
+    m_search = new QLineEdit;
+    m_search->setObjectName(QStringLiteral("targetSearch"));
+    m_search->setPlaceholderText(tr("satellite name or number, sun, moon"));
+    m_targets = new QListWidget;
+    m_targets->setObjectName(QStringLiteral("targets"));
+    m_passes = new QTableWidget(0, 6);
+    m_passes->setObjectName(QStringLiteral("passes"));
+    m_passes->setHorizontalHeaderLabels({tr("AOS (UTC)"), tr("AOS az"), tr("Max el"), tr("LOS (UTC)"), tr("LOS az"), tr("Plan")});
+    m_passes->horizontalHeader()->setStretchLastSection(true);
+    m_passes->verticalHeader()->hide();
+    m_passes->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_passes->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_passes->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_countdown = new QLabel;
+    m_countdown->setObjectName(QStringLiteral("countdown"));
+    QFont big = m_countdown->font();
+    big.setPointSizeF(big.pointSizeF() * 1.3);
+    big.setBold(true);
+    m_countdown->setFont(big);
+    m_live = new QLabel;
+    m_live->setObjectName(QStringLiteral("trackingLive"));
+    m_live->setWordWrap(true);
+    m_track = new QPushButton(tr("Track"));
+    m_track->setObjectName(QStringLiteral("track"));
+    m_stopTracking = new QPushButton(tr("Stop tracking"));
+    m_stopTracking->setObjectName(QStringLiteral("stopTracking"));
+    m_stopTracking->setEnabled(false);
+
+    auto *top = new QFormLayout;
+    top->addRow(tr("Station"), m_stationLine);
+    top->addRow(tr("Element sets"), m_setsLine);
+    top->addRow(tr("Target"), m_search);
+    auto *buttons = new QHBoxLayout;
+    buttons->addWidget(m_countdown, 1);
+    buttons->addWidget(m_track);
+    buttons->addWidget(m_stopTracking);
+    auto *layout = new QVBoxLayout(this);
+    layout->addLayout(top);
+    layout->addWidget(m_targets, 1);
+    layout->addWidget(m_passes, 2);
+    layout->addLayout(buttons);
+    layout->addWidget(m_live);
+
+    connect(m_search, &QLineEdit::textChanged, this, &TrackingPanel::fillTargets);
+    connect(m_targets, &QListWidget::currentRowChanged, this, &TrackingPanel::onTargetChosen);
+    connect(m_passes, &QTableWidget::itemSelectionChanged, this, &TrackingPanel::onPassChosen);
+    connect(m_track, &QPushButton::clicked, this, &TrackingPanel::startTracking);
+    connect(m_stopTracking, &QPushButton::clicked, this, [this] { m_runner->stop(tr("stopped from the Tracking tab")); });
+    connect(m_sets, &sky::TleSources::finished, this, &TrackingPanel::fillTargets);
+    connect(m_session, &session::RotatorSession::profileChanged, this, &TrackingPanel::showPasses);
+    connect(m_runner.get(), &tracking::PassRunner::logLine, this, &TrackingPanel::message);
+    connect(m_runner.get(), &tracking::PassRunner::activeChanged, this, &TrackingPanel::trackingActiveChanged);
+    connect(&m_runner->tracker(), &tracking::Tracker::stateChanged, this, [this] {
+        m_stopTracking->setEnabled(m_runner->isRunning());
+        m_track->setEnabled(!m_runner->isRunning());
+    });
+    connect(&m_tick, &QTimer::timeout, this, &TrackingPanel::refreshLive);
+    m_tick.start(1000);
+    setStation(std::nullopt);
+    fillTargets();
+}
+
+TrackingPanel::~TrackingPanel()
+{
+    m_runner->stop(tr("the window is closing"));
+}
+
+void TrackingPanel::setStation(const std::optional<sky::Station> &station)
+{
+    m_station = station;
+    m_stationLine->setText(station ? sky::describeStation(*station) : tr("not set: Sky → Station…"));
+    showPasses();
+}
+
+void TrackingPanel::setClock(const tracking::StationClock *clock)
+{
+    m_clock = clock ? clock : &m_systemClock;
+    showPasses();
+}
+
+void TrackingPanel::fillTargets()
+{
+    const QString wanted = m_search->text().trimmed();
+    const QList<sky::Tle> sets = m_sets->sets();
+    m_setsLine->setText(tr("%n set(s) loaded", nullptr, int(sets.size())));
+    const QString current = m_targets->currentItem() ? m_targets->currentItem()->text() : QString();
+    m_targets->clear();
+    for (const QString &body : {tr("Sun"), tr("Moon")}) {
+        if (wanted.isEmpty() || body.startsWith(wanted, Qt::CaseInsensitive))
+            m_targets->addItem(body);
+    }
+    const QList<const sky::Tle *> found = wanted.isEmpty() ? QList<const sky::Tle *>() : sky::findTles(sets, wanted);
+    QList<sky::Tle> shown;
+    if (wanted.isEmpty()) {
+        shown = sets.mid(0, kMostTargetsListed);
+    } else {
+        for (const sky::Tle *t : found.mid(0, kMostTargetsListed))
+            shown.append(*t);
+    }
+    for (const sky::Tle &t : shown) {
+        auto *item = new QListWidgetItem(t.name.isEmpty() ? QString::number(t.catalogueNumber) : t.name);
+        item->setData(Qt::UserRole, t.catalogueNumber);
+        m_targets->addItem(item);
+    }
+    const QList<QListWidgetItem *> again = m_targets->findItems(current, Qt::MatchExactly);
+    if (!again.isEmpty())
+        m_targets->setCurrentItem(again.first());
+}
+
+bool TrackingPanel::selectTarget(const QString &name)
+{
+    m_search->setText(name);
+    if (m_targets->count() == 0)
+        return false;
+    m_targets->setCurrentRow(0);
+    return true;
+}
+
+std::optional<TrackTarget> TrackingPanel::chosenTarget() const
+{
+    const QListWidgetItem *item = m_targets->currentItem();
+    if (!item)
+        return std::nullopt;
+    TrackTarget target;
+    if (item->text() == tr("Sun")) {
+        target.kind = TrackTarget::Kind::Sun;
+        return target;
+    }
+    if (item->text() == tr("Moon")) {
+        target.kind = TrackTarget::Kind::Moon;
+        return target;
+    }
+    const int number = item->data(Qt::UserRole).toInt();
+    for (const sky::Tle &t : m_sets->sets()) {
+        if (t.catalogueNumber == number) {
+            target.elements = t;
+            return target;
+        }
+    }
+    return std::nullopt;
+}
+
+tracking::RotatorReach TrackingPanel::reach() const
+{
+    // Profiles hold no speeds yet: a G-5500 class rotator's (docs/tracking.md).
+    tracking::RotatorReach r;
+    r.limits = m_session->profile().limits;
+    r.azimuthRateDegS = 6.2;
+    r.elevationRateDegS = 2.7;
+    r.azimuthAccelDegS2 = 12.0;
+    r.elevationAccelDegS2 = 6.0;
+    return r;
+}
+
+QList<tracking::SkyPoint> TrackingPanel::sample(const sky::Pass &pass) const
+{
+    const auto target = chosenTarget();
+    if (!target || !m_station)
+        return {};
+    if (target->kind == TrackTarget::Kind::Satellite)
+        return tracking::sampleSatellitePass(sky::Sgp4(target->elements), *m_station, pass, 1.0);
+    return tracking::sampleBodyPass(target->kind == TrackTarget::Kind::Sun ? sky::SkyBody::Sun : sky::SkyBody::Moon,
+                                    *m_station, pass.aos.julian, pass.los.julian, 10.0);
+}
+
+void TrackingPanel::onTargetChosen()
+{
+    showPasses();
+}
+
+void TrackingPanel::showPasses()
+{
+    m_passes->setRowCount(0);
+    m_passList.clear();
+    m_plans.clear();
+    const auto target = chosenTarget();
+    if (!target || !m_station) {
+        emit passOverlayChanged(std::nullopt);
+        return;
+    }
+    const double now = m_clock->nowJulian();
+    const sky::PassWindow window{now, now + kLookAheadDays, 0.0};
+    if (target->kind == TrackTarget::Kind::Satellite)
+        m_passList = sky::predictPasses(sky::Sgp4(target->elements), *m_station, window);
+    else
+        m_passList = sky::predictBodyPasses(target->kind == TrackTarget::Kind::Sun ? sky::SkyBody::Sun : sky::SkyBody::Moon,
+                                            *m_station, window);
+    const tracking::RotatorReach r = reach();
+    for (const sky::Pass &p : m_passList) {
+        const tracking::PassPlan plan = tracking::planPass(sample(p), r);
+        m_plans.append(plan);
+        const int row = m_passes->rowCount();
+        m_passes->insertRow(row);
+        const QStringList cells{sky::utcFromJulian(p.aos.julian).toString(QStringLiteral("MM-dd HH:mm:ss")),
+                                QStringLiteral("%1°").arg(p.aos.azimuthDeg, 0, 'f', 0),
+                                QStringLiteral("%1°").arg(p.maxElevationDeg(), 0, 'f', 1),
+                                sky::utcFromJulian(p.los.julian).toString(QStringLiteral("MM-dd HH:mm:ss")),
+                                QStringLiteral("%1°").arg(p.los.azimuthDeg, 0, 'f', 0), badge(plan)};
+        for (int c = 0; c < cells.size(); ++c) {
+            auto *item = new QTableWidgetItem(cells[c]);
+            item->setToolTip(plan.describe());
+            m_passes->setItem(row, c, item);
+        }
+    }
+    m_passes->resizeColumnsToContents();
+    if (!m_passList.isEmpty())
+        m_passes->selectRow(0);
+    else
+        emit passOverlayChanged(std::nullopt);
+    refreshLive();
+}
+
+void TrackingPanel::onPassChosen()
+{
+    const QList<QTableWidgetItem *> chosen = m_passes->selectedItems();
+    if (chosen.isEmpty() || chosen.first()->row() >= m_plans.size())
+        return;
+    const int row = chosen.first()->row();
+    const QList<tracking::SkyPoint> points = sample(m_passList[row]);
+    const tracking::PassPlan &plan = m_plans[row];
+    PassOverlay overlay;
+    for (const tracking::SkyPoint &p : points)
+        overlay.sky.append(QPointF(p.azimuthDeg, p.elevationDeg));
+    for (const tracking::PathPoint &p : plan.path)
+        overlay.planned.append(QPointF(p.azimuth, p.elevation));
+    overlay.azimuthTurnStart = m_session->profile().limits.azMin;
+    overlay.azimuthTurnEnd = m_session->profile().limits.azMin + 360.0;
+    overlay.flipped = plan.flipped;
+    overlay.unwinds = plan.unwinds;
+    emit passOverlayChanged(overlay);
+}
+
+void TrackingPanel::startTracking()
+{
+    const auto target = chosenTarget();
+    if (!target || !m_station) {
+        emit message(tr("tracking needs a target and the station (Sky → Station…)"));
+        return;
+    }
+    if (!m_session->isConnected()) {
+        emit message(tr("tracking needs a rotator: connect first"));
+        return;
+    }
+    m_runner->start(*target, *m_station, 0.0, reach(), m_clock);
+    m_track->setEnabled(false);
+    m_stopTracking->setEnabled(true);
+}
+
+void TrackingPanel::refreshLive()
+{
+    const double now = m_clock->nowJulian();
+    const sky::Pass *next = nullptr;
+    for (const sky::Pass &p : m_passList) {
+        if (p.los.julian > now) {
+            next = &p;
+            break;
+        }
+    }
+    if (!next) {
+        m_countdown->setText(m_passList.isEmpty() && chosenTarget() ? tr("no pass in the next day") : QString());
+    } else if (next->aos.julian > now) {
+        m_countdown->setText(tr("AOS in %1").arg(hms((next->aos.julian - now) * sky::kSecondsPerDay)));
+    } else {
+        m_countdown->setText(tr("up now: LOS in %1").arg(hms((next->los.julian - now) * sky::kSecondsPerDay)));
+    }
+
+    const auto target = chosenTarget();
+    if (!target || !m_station) {
+        m_live->clear();
+        return;
+    }
+    QString where;
+    if (target->kind == TrackTarget::Kind::Satellite) {
+        sky::LookAngles look;
+        if (sky::observeSatellite(sky::Sgp4(target->elements), *m_station, now, &look)) {
+            where = tr("az %1°, el %2°, range %3 km, range-rate %4 km/s, Doppler %5 kHz at 435 MHz")
+                        .arg(look.azimuthDeg, 0, 'f', 1)
+                        .arg(look.elevationDeg, 0, 'f', 1)
+                        .arg(look.rangeKm, 0, 'f', 0)
+                        .arg(look.rangeRateKmS, 0, 'f', 3)
+                        .arg(sky::dopplerShiftHz(kDopplerReferenceHz, look.rangeRateKmS) / 1000.0, 0, 'f', 2);
+            emit passTargetMoved(look.elevationDeg >= 0 ? std::optional<QPointF>(QPointF(look.azimuthDeg, look.elevationDeg))
+                                                        : std::nullopt);
+        }
+    } else {
+        const sky::BodyPosition b = sky::bodyPosition(
+            target->kind == TrackTarget::Kind::Sun ? sky::SkyBody::Sun : sky::SkyBody::Moon, *m_station, now);
+        where = tr("az %1°, el %2°").arg(b.azimuthDeg, 0, 'f', 1).arg(b.elevationDeg, 0, 'f', 1);
+        emit passTargetMoved(b.elevationDeg >= 0 ? std::optional<QPointF>(QPointF(b.azimuthDeg, b.elevationDeg)) : std::nullopt);
+    }
+    QString pointing;
+    if (m_runner->tracker().state() == tracking::Tracker::State::Tracking && m_session->hasPosition()) {
+        const tracking::SkyPoint t = m_runner->tracker().targetNow();
+        pointing = tr("; pointing error %1°").arg(
+            tracking::skyAngleDeg(m_session->azimuth(), m_session->elevation(), t.azimuthDeg, t.elevationDeg), 0, 'f', 2);
+    }
+    m_live->setText(where + pointing);
+}
+
+} // namespace slew::ui

@@ -1,0 +1,99 @@
+#pragma once
+// The Tracking tab: the station and the element sets, a target (a satellite
+// found by name, the sun or the moon), its passes in the next day with the
+// plan each would get on this rotator (a badge for the overlap, the flip, an
+// unwind or a lag), a countdown to AOS, Track and Stop tracking, and while
+// it runs the target's place, range, range-rate and Doppler and the
+// pointing error. The selected pass is drawn on the polar plot.
+
+#include "passoverlay.h"
+
+#include "sky/passes.h"
+#include "sky/station.h"
+#include "tracking/passrunner.h"
+#include "tracking/stationclock.h"
+
+#include <QTimer>
+#include <QWidget>
+
+#include <memory>
+#include <optional>
+
+class QLabel;
+class QLineEdit;
+class QListWidget;
+class QPushButton;
+class QTableWidget;
+
+namespace slew::session {
+class RotatorSession;
+}
+namespace slew::sky {
+class TleSources;
+}
+
+namespace slew::ui {
+
+class TrackingPanel : public QWidget {
+    Q_OBJECT
+public:
+    TrackingPanel(session::RotatorSession *session, sky::TleSources *sets, QWidget *parent = nullptr);
+    ~TrackingPanel() override;
+
+    // The station to plan for (the window's, from Sky → Station…).
+    void setStation(const std::optional<sky::Station> &station);
+    // The clock passes are predicted and tracked by; the system's UTC unless
+    // set (a rehearsal). It must outlive the panel.
+    void setClock(const tracking::StationClock *clock);
+
+    // Selects the target whose name starts with `name` ("sun", "moon" too).
+    bool selectTarget(const QString &name);
+    QTableWidget *passTable() const { return m_passes; }
+    QPushButton *trackButton() const { return m_track; }
+    QPushButton *stopTrackingButton() const { return m_stopTracking; }
+    QLabel *countdown() const { return m_countdown; }
+    QLabel *live() const { return m_live; }
+    tracking::PassRunner *runner() const { return m_runner.get(); }
+    const QList<sky::Pass> &passes() const { return m_passList; }
+
+signals:
+    // The pass to draw on the plot, or none.
+    void passOverlayChanged(std::optional<slew::ui::PassOverlay> overlay);
+    void passTargetMoved(std::optional<QPointF> azEl);
+    void message(const QString &text);
+    // holdsRotator() of the runner changed: the window holds off trackers.
+    void trackingActiveChanged(bool active);
+
+private:
+    void fillTargets();
+    void onTargetChosen();
+    void showPasses();
+    void onPassChosen();
+    void refreshLive();
+    void startTracking();
+    tracking::RotatorReach reach() const;
+    std::optional<tracking::TrackTarget> chosenTarget() const;
+    QList<tracking::SkyPoint> sample(const sky::Pass &pass) const;
+
+    session::RotatorSession *m_session;
+    sky::TleSources *m_sets;
+    std::optional<sky::Station> m_station;
+    tracking::StationClock m_systemClock;
+    const tracking::StationClock *m_clock = &m_systemClock;
+    std::unique_ptr<tracking::PassRunner> m_runner;
+    QList<sky::Pass> m_passList;
+    QList<tracking::PassPlan> m_plans;
+
+    QLabel *m_stationLine;
+    QLabel *m_setsLine;
+    QLineEdit *m_search;
+    QListWidget *m_targets;
+    QTableWidget *m_passes;
+    QLabel *m_countdown;
+    QLabel *m_live;
+    QPushButton *m_track;
+    QPushButton *m_stopTracking;
+    QTimer m_tick;
+};
+
+} // namespace slew::ui
