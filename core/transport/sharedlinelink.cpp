@@ -150,8 +150,11 @@ void SharedLineLink::lineGone()
     m_line = nullptr;
     m_open = false;
     m_device.close();
+    // From the event loop: the line goes while its owner is being torn down
+    // (a window closing), and whoever listens to this link's session may be
+    // half destroyed by then. If the link itself goes first, nothing is said.
     if (wasOpen)
-        emit lost(tr("%1: the shared line was closed").arg(uri()));
+        QTimer::singleShot(0, this, [this] { emit lost(tr("%1: the shared line was closed").arg(uri())); });
 }
 
 } // namespace slew::transport
