@@ -188,9 +188,9 @@ QString ConfigEditor::validate(int reg, const QString &text) const
         return tr("gains are not negative");
     // The gate the session will ask when the value is written.
     if (reg == 7)
-        return m_session->moveGate().azimuthPosition(v).refusal;
+        return m_session->previewParkRegister(7, v).refusal;
     if (reg == 8)
-        return m_session->moveGate().elevation(v).refusal;
+        return m_session->previewParkRegister(8, v).refusal;
     return {};
 }
 

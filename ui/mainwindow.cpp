@@ -272,8 +272,10 @@ void MainWindow::wirePlot()
         const double v = text.toDouble(&ok);
         if (!ok || (reg != 7 && reg != 8))
             return;
-        const auto &p = m_session->profile();
-        m_plot->setPark(reg == 7 ? v : p.parkAz, reg == 8 ? v : p.parkEl);
+        // The registers hold the controller's own angles; the plot shows
+        // where the antenna points (the calibration offsets added).
+        m_plot->setPark(reg == 7 ? v + m_session->azimuthOffset() : m_session->parkAzimuth(),
+                        reg == 8 ? v + m_session->elevationOffset() : m_session->parkElevation());
     });
     connect(m_plot, &PolarPlotWidget::targetPicked, this, &MainWindow::onTargetPicked);
     connect(m_confirm, &TargetConfirmation::pendingChanged, m_plot, &PolarPlotWidget::setPendingTarget);
@@ -296,9 +298,9 @@ void MainWindow::onTargetPicked(double az, double el)
 
 void MainWindow::showProfile()
 {
-    const auto &p = m_session->profile();
-    m_plot->setLimits(p.limits);
-    m_plot->setPark(p.parkAz, p.parkEl);
+    // Both in the pointing frame, as the position is.
+    m_plot->setLimits(m_session->moveGate().limits());
+    m_plot->setPark(m_session->parkAzimuth(), m_session->parkElevation());
     m_charts->setElevationShown(!m_session->isAzimuthOnly());
 }
 

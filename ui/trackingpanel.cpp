@@ -5,6 +5,7 @@
 #include "sky/sunmoon.h"
 #include "sky/tlesources.h"
 #include "sky/utctime.h"
+#include "tracking/rotatorreach.h"
 #include "tracking/skytrack.h"
 
 #include <QFormLayout>
@@ -204,14 +205,7 @@ std::optional<TrackTarget> TrackingPanel::chosenTarget() const
 
 tracking::RotatorReach TrackingPanel::reach() const
 {
-    // Profiles hold no speeds yet: a G-5500 class rotator's (docs/tracking.md).
-    tracking::RotatorReach r;
-    r.limits = m_session->profile().limits;
-    r.azimuthRateDegS = 6.2;
-    r.elevationRateDegS = 2.7;
-    r.azimuthAccelDegS2 = 12.0;
-    r.elevationAccelDegS2 = 6.0;
-    return r;
+    return tracking::reachOf(*m_session);
 }
 
 QList<tracking::SkyPoint> TrackingPanel::sample(const sky::Pass &pass) const
@@ -285,8 +279,8 @@ void TrackingPanel::onPassChosen()
         overlay.sky.append(QPointF(p.azimuthDeg, p.elevationDeg));
     for (const tracking::PathPoint &p : plan.path)
         overlay.planned.append(QPointF(p.azimuth, p.elevation));
-    overlay.azimuthTurnStart = m_session->profile().limits.azMin;
-    overlay.azimuthTurnEnd = m_session->profile().limits.azMin + 360.0;
+    overlay.azimuthTurnStart = reach().limits.azMin;
+    overlay.azimuthTurnEnd = reach().limits.azMin + 360.0;
     overlay.flipped = plan.flipped;
     overlay.unwinds = plan.unwinds;
     emit passOverlayChanged(overlay);
@@ -303,7 +297,7 @@ void TrackingPanel::startTracking()
         emit message(tr("tracking needs a rotator: connect first"));
         return;
     }
-    m_runner->start(*target, *m_station, 0.0, reach(), m_clock);
+    m_runner->start(*target, *m_station, 0.0, m_clock);
     m_track->setEnabled(false);
     m_stopTracking->setEnabled(true);
 }

@@ -189,14 +189,7 @@ bool HeadlessStation::start(const HeadlessConfig &config, QString *error)
             if (RotctldServer *server = m_rotors.front().server.get())
                 active ? server->holdRemote(tr("Slew's own tracking")) : server->releaseRemote();
         });
-        // Speeds are not in profiles yet: a G-5500 class rotator's.
-        tracking::RotatorReach reach;
-        reach.limits = profile.limits;
-        reach.azimuthRateDegS = 6.2;
-        reach.elevationRateDegS = 2.7;
-        reach.azimuthAccelDegS2 = 12.0;
-        reach.elevationAccelDegS2 = 6.0;
-        m_runner->start(config.track->target, *config.station, config.track->minElevationDeg, reach, m_clock.get());
+        m_runner->start(config.track->target, *config.station, config.track->minElevationDeg, m_clock.get());
     }
     for (Rotor &rotor : m_rotors) {
         const QString uri = m_line ? transport::SharedLine::rotorUri(m_line->uri(), rotor.number) : profile.uri;

@@ -329,10 +329,10 @@ QByteArray RotctldServer::answer(Client &c, const QByteArray &line)
         return formatInfo(r, info);
     }
     case Kind::DumpState: {
-        // An azimuth-only rotator's elevation range is the single value 0.
-        const bool azOnly = m_session->isAzimuthOnly();
-        return formatDumpState({profile.limits.azMin, profile.limits.azMax, azOnly ? 0.0 : profile.limits.elMin,
-                                azOnly ? 0.0 : profile.limits.elMax, hamlibModelFor(profile.dialect)});
+        // The travel a client may command: the gate's, in the pointing frame
+        // (an azimuth-only rotator's elevation range is the single value 0).
+        const model::RotatorLimits l = m_session->moveGate().limits();
+        return formatDumpState({l.azMin, l.azMax, l.elMin, l.elMax, hamlibModelFor(profile.dialect)});
     }
     case Kind::Quit:
         return {};

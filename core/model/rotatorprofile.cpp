@@ -61,6 +61,19 @@ QString RotatorProfile::validate() const
         return QObject::tr("deadband must be 0° to 10°");
     if (pollHz < 1 || pollHz > 50)
         return QObject::tr("poll rate must be 1 to 50 Hz");
+    if (!(std::abs(azOffsetDeg) <= 180.0))
+        return QObject::tr("azimuth offset must be -180° to 180°");
+    if (!(std::abs(elOffsetDeg) <= 20.0))
+        return QObject::tr("elevation offset must be -20° to 20°");
+    const RotatorMotion &m = motion;
+    if (!(m.azSpeedDegS > 0.05 && m.azSpeedDegS <= 100.0 && m.elSpeedDegS > 0.05 && m.elSpeedDegS <= 100.0))
+        return QObject::tr("axis speeds must be 0.05 to 100 °/s");
+    if (!(m.azAccelDegS2 >= 0.0 && m.azAccelDegS2 <= 1000.0 && m.elAccelDegS2 >= 0.0 && m.elAccelDegS2 <= 1000.0))
+        return QObject::tr("axis accelerations must be 0 to 1000 °/s²");
+    if (!(m.responseDelayS >= 0.0 && m.responseDelayS <= 10.0))
+        return QObject::tr("response delay must be 0 to 10 s");
+    if (!(m.trackStepDeg >= 0.0 && m.trackStepDeg <= 10.0))
+        return QObject::tr("tracking step must be 0° to 10°");
     return {};
 }
 
@@ -77,6 +90,12 @@ QJsonObject RotatorProfile::toJson() const
         {"southStop", southStop},
         {"deadbandDeg", deadbandDeg},
         {"pollHz", pollHz},
+        {"offsets", QJsonObject{{"az", azOffsetDeg}, {"el", elOffsetDeg}}},
+        {"motion", QJsonObject{{"azSpeedDegS", motion.azSpeedDegS}, {"elSpeedDegS", motion.elSpeedDegS},
+                               {"azAccelDegS2", motion.azAccelDegS2}, {"elAccelDegS2", motion.elAccelDegS2},
+                               {"responseDelayS", motion.responseDelayS},
+                               {"drive", motion.drive == RotatorMotion::Drive::Relay ? "relay" : "servo"},
+                               {"trackStepDeg", motion.trackStepDeg}}},
     };
     if (azGains)
         o.insert("azGains", gainsToJson(*azGains));
@@ -104,15 +123,31 @@ std::optional<RotatorProfile> RotatorProfile::fromJson(const QJsonObject &o, QSt
     }
     const QJsonObject lim = o.value("limits").toObject();
     const QJsonObject park = o.value("park").toObject();
+    const QJsonObject offsets = o.value("offsets").toObject();
+    const QJsonObject motion = o.value("motion").toObject();
+    RotatorMotion &m = p.motion;
     double poll = p.pollHz;
     if (!readNumber(lim, "azMin", &p.limits.azMin, &err) || !readNumber(lim, "azMax", &p.limits.azMax, &err)
         || !readNumber(lim, "elMin", &p.limits.elMin, &err) || !readNumber(lim, "elMax", &p.limits.elMax, &err)
         || !readNumber(park, "az", &p.parkAz, &err) || !readNumber(park, "el", &p.parkEl, &err)
+        || !readNumber(offsets, "az", &p.azOffsetDeg, &err) || !readNumber(offsets, "el", &p.elOffsetDeg, &err)
+        || !readNumber(motion, "azSpeedDegS", &m.azSpeedDegS, &err)
+        || !readNumber(motion, "elSpeedDegS", &m.elSpeedDegS, &err)
+        || !readNumber(motion, "azAccelDegS2", &m.azAccelDegS2, &err)
+        || !readNumber(motion, "elAccelDegS2", &m.elAccelDegS2, &err)
+        || !readNumber(motion, "responseDelayS", &m.responseDelayS, &err)
+        || !readNumber(motion, "trackStepDeg", &m.trackStepDeg, &err)
         || !readNumber(o, "deadbandDeg", &p.deadbandDeg, &err) || !readNumber(o, "pollHz", &poll, &err)
         || !readGains(o, "azGains", &p.azGains, &err) || !readGains(o, "elGains", &p.elGains, &err))
         return std::nullopt;
     p.pollHz = int(poll);
     p.southStop = o.value("southStop").toBool(false);
+    if (const QString drive = motion.value("drive").toString(QStringLiteral("servo")); drive == QLatin1String("relay"))
+        m.drive = RotatorMotion::Drive::Relay;
+    else if (drive != QLatin1String("servo")) {
+        err = QObject::tr("drive must be 'servo' or 'relay', not '%1'").arg(drive);
+        return std::nullopt;
+    }
     if (QString e = p.validate(); !e.isEmpty()) {
         err = e;
         return std::nullopt;

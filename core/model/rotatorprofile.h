@@ -21,6 +21,22 @@ struct PidGains {
     friend bool operator==(const PidGains &, const PidGains &) = default;
 };
 
+// How the rotator moves, for the tracker (docs/tracking.md): what the setup
+// wizard's tuning steps measured, or a G-5500's figures until it has.
+struct RotatorMotion {
+    enum class Drive { Servo, Relay };
+    double azSpeedDegS = 6.2;    // the fastest each axis turns
+    double elSpeedDegS = 2.7;
+    double azAccelDegS2 = 12.0;  // how fast it gets up to speed
+    double elAccelDegS2 = 6.0;
+    double responseDelayS = 0.5; // from a command sent to the axis answering it
+    // A relay drive switches its motor on and off; a servo follows a speed.
+    Drive drive = Drive::Servo;
+    // The tracker's minimum step (deadband); 0: the drive's default.
+    double trackStepDeg = 0.0;
+    friend bool operator==(const RotatorMotion &, const RotatorMotion &) = default;
+};
+
 struct RotatorProfile {
     QString name = QStringLiteral("Simulator");
     QString uri = QStringLiteral("sim:");
@@ -33,6 +49,14 @@ struct RotatorProfile {
     std::optional<PidGains> elGains; // CW4..CW6
     double deadbandDeg = 0.5;        // a remote target this close to the last one is not re-sent
     int pollHz = 10;
+
+    // Calibration: where the antenna points is the controller's reading plus
+    // these (found by aligning on the sun or the moon). The session applies
+    // them to every reading and every move; the limits stay the controller's
+    // own (docs/tracking.md, "Calibration offsets").
+    double azOffsetDeg = 0.0; // -180..180
+    double elOffsetDeg = 0.0; // -20..20
+    RotatorMotion motion;
 
     // Empty when usable, else why not.
     QString validate() const;

@@ -59,12 +59,7 @@ RotatorSession::~RotatorSession()
 void RotatorSession::setProfile(const model::RotatorProfile &profile)
 {
     m_profile = profile;
-    // An azimuth-only controller (Micro-2g) has no elevation to go to: the
-    // gate allows elevation 0 alone, so every path refuses any other there.
-    model::RotatorLimits limits = profile.limits;
-    if (protocol::isAzimuthOnly(profile.dialect))
-        limits.elMin = limits.elMax = 0.0;
-    m_gate.setProfileLimits(limits);
+    updateGateLimits();
     m_parser.setDialect(profile.dialect);
     m_pollTimer.setInterval(1000 / std::clamp(profile.pollHz, 1, 50));
     const int pollPeriod = m_pollTimer.interval();
@@ -142,7 +137,8 @@ void RotatorSession::openLink()
     connect(m_link.get(), &transport::Link::notice, this, &RotatorSession::errorOccurred);
     connect(m_link.get(), &transport::Link::limitsReported, this,
             [this](double azMin, double azMax, double elMin, double elMax) {
-                m_gate.setReportedLimits(model::RotatorLimits{azMin, azMax, elMin, elMax});
+                m_linkLimits = model::RotatorLimits{azMin, azMax, elMin, elMax};
+                updateGateLimits();
             });
     setState(m_reconnectAttempt > 0 ? State::Reconnecting : State::Connecting, tr("opening %1").arg(m_uri));
     m_link->open();
@@ -219,7 +215,8 @@ void RotatorSession::dropLink(const QString &reason)
     }
     m_stale = true;
     m_caps = Capabilities{};
-    m_gate.setReportedLimits(std::nullopt);
+    m_linkLimits.reset();
+    updateGateLimits();
     emit capabilitiesChanged(m_caps);
 }
 
@@ -303,13 +300,13 @@ void RotatorSession::apply(const Message &m)
     }
     switch (m.op) {
     case Op::Azimuth:
-        m_az = m.value;
+        m_az = m.value + azimuthOffset();
         m_azFresh = true;
         if (m.lineEnd || m_elFresh)
             applyPosition();
         break;
     case Op::Elevation:
-        m_el = m.value;
+        m_el = m.value + elevationOffset();
         m_elFresh = true;
         applyPosition();
         break;
@@ -405,9 +402,9 @@ void RotatorSession::applyConfig(int reg, const QString &text, bool numeric, dou
     if (!numeric)
         return;
     if (reg == 10)
-        m_commandedAz = value;
+        m_commandedAz = value + azimuthOffset();
     else if (reg == 11)
-        m_commandedEl = value;
+        m_commandedEl = value + elevationOffset();
     else
         return;
     emit commandedChanged(m_commandedAz, m_commandedEl);

@@ -79,8 +79,26 @@ public:
     std::optional<model::RotatorLimits> reportedLimits() const { return m_gate.reportedLimits(); }
     // The gate every move passes (model/movegate.h), and what it would say
     // now to a go-to: for widgets that show a target before it is sent.
+    // It works in the pointing frame (below): its limits are the travel
+    // shifted by the calibration offsets.
     const model::MoveGate &moveGate() const { return m_gate; }
     model::MoveCheck previewPointing(double az, double el) const;
+    // What the gate says to a value for park register 7 (azimuth) or 8
+    // (elevation), which holds the controller's own, uncalibrated angle.
+    model::MoveCheck previewParkRegister(int reg, double value) const;
+
+    // The pointing frame. The antenna points at the controller's reading
+    // plus the profile's calibration offsets (azOffsetDeg, elOffsetDeg), and
+    // every position this session takes or gives is in that frame: readings,
+    // targets, go-tos, the gate's limits. Only what is the controller's own
+    // stays uncorrected: the bytes on the wire, raw lines, the registers and
+    // the park position they hold. An azimuth-only controller has no
+    // elevation offset.
+    double azimuthOffset() const { return m_profile.azOffsetDeg; }
+    double elevationOffset() const { return isAzimuthOnly() ? 0.0 : m_profile.elOffsetDeg; }
+    // The park position (the controller's registers) in the pointing frame.
+    double parkAzimuth() const { return m_profile.parkAz + azimuthOffset(); }
+    double parkElevation() const { return m_profile.parkEl + elevationOffset(); }
 
     bool hasPosition() const { return !std::isnan(m_az) && !std::isnan(m_el); }
     double azimuth() const { return m_az; }
@@ -154,10 +172,11 @@ public slots:
     // mechanical positions it names, and goes out as an absolute set
     // position in every dialect (docs/protocol.md says why not `O`).
     CommandResult moveBy(double azimuthOffset, double elevationOffset);
-    // Exactly these mechanical positions: an azimuth past 360° (the overlap)
-    // or below 0° (a south stop), an elevation past 90° (the flip), as a
-    // planned path names them (tracking/passplanner.h). Gated as positions.
-    CommandResult gotoMechanical(double azimuth, double elevation);
+    // Exactly these positions on the rotator's own scale (in the pointing
+    // frame): an azimuth past 360° (the overlap) or below 0° (a south stop),
+    // an elevation past 90° (the flip), as a planned path names them
+    // (tracking/passplanner.h). Gated as positions.
+    CommandResult gotoUnwrapped(double azimuth, double elevation);
     CommandResult stop(slew::session::Axes axes = slew::session::Axes::Both);
     CommandResult park();
     CommandResult home();
@@ -227,6 +246,13 @@ private:
     // The gate's answer to one message of a raw line, empty when it may go.
     QString rawMoveRefusal(const protocol::Message &m) const;
     std::optional<double> knownAzimuth() const;
+    // The gate's limits: the profile's (or the link's) travel moved into the
+    // pointing frame.
+    void updateGateLimits();
+    // An elevation the profile's travel allows but the offset moves just out
+    // of reach (90° with a -1° offset on a 0..90° rotator) is taken to the
+    // nearest reachable one; any other is left for the gate to judge.
+    double withinOffsetReach(double elevation) const;
     void write(const QByteArray &line);
     void writeMove(const QByteArray &line); // a new move: the pending stop hold is void
     void sendStopHold();
@@ -271,6 +297,7 @@ private:
     LinkTimer m_keepAliveTimer;
 
     model::MoveGate m_gate; // the profile's limits and the link's, if it reports them
+    std::optional<model::RotatorLimits> m_linkLimits; // as reported, uncorrected
     Capabilities m_caps;
     int m_probesOutstanding = 0;
     QHash<QByteArray, int> m_telemetryFailures; // consecutive misses per telemetry query
@@ -298,7 +325,8 @@ private:
     int m_sentNext = 0;
     QElapsedTimer m_clock; // the wall clock, for links that keep no stepped clock
     // Writes a set-position the gate has already passed, and makes it the
-    // active target; go-to and relative moves share it.
+    // active target; go-to and relative moves share it. Pointing frame in,
+    // the controller's angles out.
     CommandResult sendSetPosition(double az, double el);
     qint64 nowMs() const;  // the link's time where it is stepped, else m_clock's
     int m_echoesIgnored = 0;

@@ -7,6 +7,7 @@
 #include "protocol/encoder.h"
 #include "transport/link.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace slew::session {
@@ -43,15 +44,59 @@ std::optional<double> RotatorSession::knownAzimuth() const
     return hasPosition() ? std::optional<double>(m_az) : std::nullopt;
 }
 
+namespace {
+
+model::RotatorLimits shifted(model::RotatorLimits l, double az, double el)
+{
+    l.azMin += az;
+    l.azMax += az;
+    l.elMin += el;
+    l.elMax += el;
+    return l;
+}
+
+} // namespace
+
+void RotatorSession::updateGateLimits()
+{
+    // An azimuth-only controller (Micro-2g) has no elevation to go to: the
+    // gate allows elevation 0 alone, so every path refuses any other there.
+    model::RotatorLimits limits = m_profile.limits;
+    if (isAzimuthOnly())
+        limits.elMin = limits.elMax = 0.0;
+    m_gate.setProfileLimits(shifted(limits, azimuthOffset(), elevationOffset()));
+    m_gate.setReportedLimits(m_linkLimits ? std::optional(shifted(*m_linkLimits, azimuthOffset(), elevationOffset()))
+                                          : std::nullopt);
+}
+
+double RotatorSession::withinOffsetReach(double el) const
+{
+    const double offset = elevationOffset();
+    if (offset == 0.0 || !std::isfinite(el))
+        return el;
+    const model::RotatorLimits reach = m_gate.limits();
+    const model::RotatorLimits travel = shifted(reach, 0.0, -offset); // the controller's own
+    if (el < travel.elMin || el > travel.elMax)
+        return el; // beyond the travel itself: the gate says why
+    return std::clamp(el, reach.elMin, reach.elMax);
+}
+
 model::MoveCheck RotatorSession::previewPointing(double az, double el) const
 {
-    return m_gate.pointing(az, el, knownAzimuth());
+    return m_gate.pointing(az, withinOffsetReach(el), knownAzimuth());
+}
+
+model::MoveCheck RotatorSession::previewParkRegister(int reg, double value) const
+{
+    return reg == 7 ? m_gate.azimuthPosition(value + azimuthOffset())
+                    : m_gate.elevation(value + elevationOffset());
 }
 
 CommandResult RotatorSession::gotoPosition(double az, double el)
 {
     if (auto linked = requireLink(); !linked)
         return linked;
+    el = withinOffsetReach(el);
     const model::MoveCheck check = m_gate.pointing(az, el, knownAzimuth());
     if (!check.allowed())
         return refuseMove(check.refusal);
@@ -65,6 +110,8 @@ CommandResult RotatorSession::gotoAxis(Axis axis, double degrees, AzimuthIs mean
     const bool az = axis == Axis::Azimuth;
     const Op op = az ? Op::Azimuth : Op::Elevation;
     const Dialect d = m_profile.dialect;
+    if (!az)
+        degrees = withinOffsetReach(degrees);
     const model::MoveCheck check = !az ? m_gate.elevation(degrees)
         : meaning == AzimuthIs::Bearing ? m_gate.azimuthBearing(degrees, knownAzimuth())
                                         : m_gate.azimuthPosition(degrees);
@@ -88,18 +135,11 @@ CommandResult RotatorSession::gotoAxis(Axis axis, double degrees, AzimuthIs mean
         const double e = az ? *other : target;
         if (const model::MoveCheck both = m_gate.mechanical(a, e); !both.allowed())
             return refuseMove(both.refusal);
-        rememberSent(Message::number(Op::Azimuth, std::round(a * 100) / 100));
-        rememberSent(Message::number(Op::Elevation, std::round(e * 100) / 100));
-        m_jogSpeed = {0.0, 0.0};
-        writeMove(protocol::encodeSetPosition(a, e, d, m_rotor));
-        m_activeTarget = PointingTarget{a, e};
-        m_targetAz = a;
-        m_targetEl = e;
-        emit targetChanged(a, e);
-        return {};
+        return sendSetPosition(a, e);
     }
-    const Message m = Message::number(op, target);
-    rememberSent(Message::number(op, std::round(target * 100) / 100));
+    const double wire = target - (az ? azimuthOffset() : elevationOffset());
+    const Message m = Message::number(op, wire);
+    rememberSent(Message::number(op, std::round(wire * 100) / 100));
     m_jogSpeed[az ? 0 : 1] = 0.0;
     writeMove(protocol::encodeLine({m}, d));
     // The other axis keeps going where it was going, if that is known.
@@ -118,8 +158,8 @@ CommandResult RotatorSession::moveBy(double azimuthOffset, double elevationOffse
         return refuse(tr("an offset is not a number"));
     if (!hasPosition())
         return refuse(tr("a relative move needs the present position, which is not known yet"));
-    // The offsets are added to the mechanical position the session last
-    // read, and the sum is checked and sent as such: the controller is told
+    // The offsets are added to the position the session last read, and the
+    // sum is checked and sent as such: the controller is told
     // where to go, not how far, so it cannot end up anywhere the gate did
     // not see even if it has moved since the last poll.
     const double a = m_az + azimuthOffset;
@@ -130,12 +170,13 @@ CommandResult RotatorSession::moveBy(double azimuthOffset, double elevationOffse
     return sendSetPosition(a, e);
 }
 
-CommandResult RotatorSession::gotoMechanical(double azimuth, double elevation)
+CommandResult RotatorSession::gotoUnwrapped(double azimuth, double elevation)
 {
     if (auto linked = requireLink(); !linked)
         return linked;
     if (!std::isfinite(azimuth) || !std::isfinite(elevation))
         return refuse(tr("a position is not a number"));
+    elevation = withinOffsetReach(elevation);
     const model::MoveCheck check = m_gate.mechanical(azimuth, elevation);
     if (!check.allowed())
         return refuseMove(check.refusal);
@@ -144,11 +185,13 @@ CommandResult RotatorSession::gotoMechanical(double azimuth, double elevation)
 
 CommandResult RotatorSession::sendSetPosition(double az, double el)
 {
-    const QByteArray line = protocol::encodeSetPosition(az, el, m_profile.dialect, m_rotor);
+    const double wireAz = az - azimuthOffset();
+    const double wireEl = el - elevationOffset();
+    const QByteArray line = protocol::encodeSetPosition(wireAz, wireEl, m_profile.dialect, m_rotor);
     if (line.isEmpty())
         return refuse(tr("%1 has no command to set a position").arg(protocol::dialectName(m_profile.dialect)));
-    rememberSent(Message::number(Op::Azimuth, std::round(az * 100) / 100));
-    rememberSent(Message::number(Op::Elevation, std::round(el * 100) / 100));
+    rememberSent(Message::number(Op::Azimuth, std::round(wireAz * 100) / 100));
+    rememberSent(Message::number(Op::Elevation, std::round(wireEl * 100) / 100));
     m_jogSpeed = {0.0, 0.0};
     writeMove(line);
     m_activeTarget = PointingTarget{az, el};
@@ -240,21 +283,21 @@ CommandResult RotatorSession::park()
     if (auto linked = requireLink(); !linked)
         return linked;
     if (!protocol::dialectSupports(m_profile.dialect, Op::Park)) {
-        const CommandResult sent = gotoPosition(m_profile.parkAz, m_profile.parkEl);
+        const CommandResult sent = gotoPosition(parkAzimuth(), parkElevation());
         m_activeTarget.reset(); // parking is the operator's move, not a tracker target
         return sent;
     }
     // The controller parks where its own registers say; the profile's park
     // position is what was written there (CW7/CW8 pass the gate), and it is
     // checked again against the limits in force now.
-    const model::MoveCheck check = m_gate.mechanical(m_profile.parkAz, m_profile.parkEl);
+    const model::MoveCheck check = m_gate.mechanical(parkAzimuth(), parkElevation());
     if (!check.allowed())
         return refuseMove(tr("the park position: %1").arg(check.refusal));
     m_jogSpeed = {0.0, 0.0};
     writeMove(protocol::encodeLine({Message::query(Op::Park)}, m_profile.dialect));
     m_activeTarget.reset();
-    m_targetAz = m_profile.parkAz;
-    m_targetEl = m_profile.parkEl;
+    m_targetAz = parkAzimuth();
+    m_targetEl = parkElevation();
     emit targetChanged(m_targetAz, m_targetEl);
     return {};
 }
@@ -272,8 +315,8 @@ CommandResult RotatorSession::home()
     m_activeTarget.reset();
     // Homing ends at the lower limits: that is where the rotator is going
     // now, not the last go-to.
-    m_targetAz = m_profile.limits.azMin;
-    m_targetEl = m_profile.limits.elMin;
+    m_targetAz = m_profile.limits.azMin + azimuthOffset();
+    m_targetEl = m_profile.limits.elMin + elevationOffset();
     emit targetChanged(m_targetAz, m_targetEl);
     return {};
 }
@@ -323,7 +366,7 @@ CommandResult RotatorSession::writeConfig(int reg, const QString &value)
         const double angle = value.toDouble(&ok);
         if (!ok)
             return refuse(tr("park position must be a number"));
-        const model::MoveCheck check = reg == 7 ? m_gate.azimuthPosition(angle) : m_gate.elevation(angle);
+        const model::MoveCheck check = previewParkRegister(reg, angle);
         if (!check.allowed())
             return refuseMove(check.refusal);
     }
@@ -349,7 +392,7 @@ QString RotatorSession::rawMoveRefusal(const Message &m) const
     // the controller knows, which is safe only where every bearing is.
     if (m_profile.dialect == Dialect::Micro2g) {
         if (m.op == Op::Azimuth && m.hasValue)
-            return m_gate.azimuthBearing(m.value, knownAzimuth()).refusal;
+            return m_gate.azimuthBearing(m.value + azimuthOffset(), knownAzimuth()).refusal;
         // A go-to or preset that does not read (M400, X4rM, P9) might still
         // turn a lenient controller somewhere nobody checked.
         if (m.op == Op::Invalid && !m.text.isEmpty()) {
@@ -368,13 +411,14 @@ QString RotatorSession::rawMoveRefusal(const Message &m) const
         }
         return {};
     }
-    // Angles in a raw line are mechanical positions, sent as typed; speeds
+    // Angles in a raw line are the controller's own positions, sent as
+    // typed (the gate sees them with the calibration offsets added); speeds
     // and bare moves drive towards a limit, as a jog does.
     switch (m.op) {
     case Op::Azimuth:
-        return m.hasValue ? m_gate.azimuthPosition(m.value).refusal : QString();
+        return m.hasValue ? m_gate.azimuthPosition(m.value + azimuthOffset()).refusal : QString();
     case Op::Elevation:
-        return m.hasValue ? m_gate.elevation(m.value).refusal : QString();
+        return m.hasValue ? m_gate.elevation(m.value + elevationOffset()).refusal : QString();
     case Op::Offset: {
         // GS-232's `O+aaa-eee`, sent as typed: the controller adds it to
         // where it is, which the session knows as the last position read.
@@ -402,7 +446,7 @@ QString RotatorSession::rawMoveRefusal(const Message &m) const
         return m_gate.drive(az, positive, at).refusal;
     }
     case Op::Park: {
-        const model::MoveCheck check = m_gate.mechanical(m_profile.parkAz, m_profile.parkEl);
+        const model::MoveCheck check = m_gate.mechanical(parkAzimuth(), parkElevation());
         return check.allowed() ? QString() : tr("the park position: %1").arg(check.refusal);
     }
     case Op::ConfigWrite:
@@ -411,7 +455,7 @@ QString RotatorSession::rawMoveRefusal(const Message &m) const
             const double angle = QString::fromLatin1(m.text.view()).toDouble(&ok);
             if (!ok)
                 return tr("park position must be a number");
-            return (m.index == 7 ? m_gate.azimuthPosition(angle) : m_gate.elevation(angle)).refusal;
+            return previewParkRegister(m.index, angle).refusal;
         }
         return {};
     default:

@@ -257,7 +257,7 @@ void RotatorSession::checkSoftLimits()
 {
     // A velocity move runs until told otherwise; the profile's limits may be
     // tighter than the controller's own, so stop the axis at them.
-    const auto &lim = m_profile.limits;
+    const model::RotatorLimits lim = m_gate.limits();
     if ((m_jogSpeed[0] > 0 && m_az >= lim.azMax) || (m_jogSpeed[0] < 0 && m_az <= lim.azMin)) {
         stop(Axes::Azimuth);
         emit errorOccurred(tr("azimuth reached the profile limit at %1°; stopped").arg(m_az, 0, 'f', 1));

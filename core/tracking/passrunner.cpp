@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "passrunner.h"
 
+#include "rotatorreach.h"
 #include "skytrack.h"
 
 #include "session/rotatorsession.h"
@@ -52,7 +53,7 @@ bool PassRunner::isActive() const
 }
 
 void PassRunner::start(const TrackTarget &target, const sky::Station &station, double minElevationDeg,
-                       const RotatorReach &reach, const StationClock *clock)
+                       const StationClock *clock)
 {
     m_target = target;
     m_satellite.reset();
@@ -60,7 +61,6 @@ void PassRunner::start(const TrackTarget &target, const sky::Station &station, d
         m_satellite.emplace(target.elements);
     m_station = station;
     m_minElevation = minElevationDeg;
-    m_reach = reach;
     m_clock = clock;
     m_running = true;
     emit logLine(tr("tracking %1 above %2°%3").arg(target.name()).arg(minElevationDeg)
@@ -120,7 +120,10 @@ void PassRunner::nextPass()
                      .arg(next->los.azimuthDeg, 0, 'f', 1)
                      .arg(from > next->aos.julian ? tr(" (under way: from %1)").arg(isoTime(from)) : QString()));
     const StationClock *clock = m_clock;
-    if (!m_tracker.track(points, from, m_reach, [clock] { return clock->nowJulian(); })) {
+    TrackerSettings settings = trackerSettingsFor(m_session->profile().motion, m_tracker.settings());
+    settings.afterPass = m_afterPass;
+    m_tracker.setSettings(settings);
+    if (!m_tracker.track(points, from, reachOf(*m_session), [clock] { return clock->nowJulian(); })) {
         emit logLine(tr("cannot track this pass: %1; trying the next one after its LOS").arg(m_tracker.error()));
         const double wait = (next->los.julian - now) * sky::kSecondsPerDay / std::max(1.0, m_clock->rate());
         m_retry.start(int(std::min(wait * 1000.0 + 1000.0, double(kRetryMs))));

@@ -35,10 +35,13 @@ public:
     explicit PassRunner(session::RotatorSession *session, QObject *parent = nullptr);
     ~PassRunner() override;
 
-    void setSettings(const TrackerSettings &settings) { m_tracker.setSettings(settings); }
+    // What to do after LOS. The lead, the minimum step and the rotator's
+    // reach come from the session's profile as each pass is planned
+    // (rotatorreach.h), so a profile changed between passes applies to the next.
+    void setAfterPass(TrackerSettings::AfterPass afterPass) { m_afterPass = afterPass; }
     // Starts with the next pass (or the one in progress). The clock must
     // outlive the runner.
-    void start(const TrackTarget &target, const sky::Station &station, double minElevationDeg, const RotatorReach &reach,
+    void start(const TrackTarget &target, const sky::Station &station, double minElevationDeg,
                const StationClock *clock);
     void stop(const QString &why);
 
@@ -67,7 +70,7 @@ private:
     std::optional<sky::Sgp4> m_satellite;
     sky::Station m_station;
     double m_minElevation = 0;
-    RotatorReach m_reach;
+    TrackerSettings::AfterPass m_afterPass = TrackerSettings::AfterPass::Park;
     const StationClock *m_clock = nullptr;
     bool m_running = false;
     bool m_wasActive = false;

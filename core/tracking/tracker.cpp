@@ -121,7 +121,7 @@ SkyPoint Tracker::targetNow() const
 bool Tracker::send(double az, double el, bool duringPass)
 {
     m_sending = true;
-    const session::CommandResult sent = m_session->gotoMechanical(az, el);
+    const session::CommandResult sent = m_session->gotoUnwrapped(az, el);
     m_sending = false;
     if (!sent) {
         // Never pushed on blindly: the planned point should always pass the

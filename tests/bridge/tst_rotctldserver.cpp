@@ -48,6 +48,7 @@ private slots:
     void halfClosedClientsAreAnswered();
     void clientsBeyondTheLimitAreRefused();
     void resetTakesOnlyResetAll();
+    void clientsSeeTheCalibratedPointing();
 
 private:
     QByteArray ask(QTcpSocket &s, const QByteArray &line);
@@ -606,6 +607,41 @@ void RotctldServerTest::resetTakesOnlyResetAll()
     QCOMPARE(ask(s, "R 1"), QByteArray("RPRT 0\n"));
     QCOMPARE(timesSent(sent, "RESET\n"), 1);
     session->stop();
+}
+
+void RotctldServerTest::clientsSeeTheCalibratedPointing()
+{
+    // The profile's calibration offsets apply to a remote tracker as to the
+    // window: Hamlib's rotctl commands and reads where the antenna points,
+    // and the controller gets its own angles.
+    model::RotatorProfile p = session->profile();
+    p.azOffsetDeg = 4.0;
+    p.elOffsetDeg = -1.0;
+    session->setProfile(p);
+    const QString where = QStringLiteral("127.0.0.1:%1").arg(server->port());
+    QSignalSpy sent(session, &session::RotatorSession::bytesSent);
+    const RotctlResult r = runRotctl({"-m", "2", "-r", where, "P", "30", "20"});
+    QVERIFY2(r.finished && r.exitCode == 0, r.err.constData());
+    QVERIFY(timesSent(sent, "AZ26.00 EL21.00\n") == 1);
+    double az = -1, el = -1;
+    QVERIFY(QTest::qWaitFor(
+        [&] {
+            const RotctlResult got = runRotctl({"-m", "2", "-r", where, "p"});
+            const QList<QByteArray> lines = got.out.trimmed().split('\n');
+            if (lines.size() < 2)
+                return false;
+            az = lines[0].toDouble();
+            el = lines[1].toDouble();
+            return std::abs(az - 30) < 0.5 && std::abs(el - 20) < 0.5;
+        },
+        20000));
+    // \dump_state gives the travel in the same frame.
+    QTcpSocket s;
+    s.connectToHost(QHostAddress::LocalHost, server->port());
+    QVERIFY(runEventLoopUntil([&] { return s.state() == QAbstractSocket::ConnectedState; }, 5000));
+    const QByteArray state = ask(s, "\\dump_state");
+    QVERIFY2(state.contains("min_az=4.000000\nmax_az=364.000000\nmin_el=-1.000000\nmax_el=89.000000\n"),
+             state.constData());
 }
 
 QTEST_MAIN(RotctldServerTest)

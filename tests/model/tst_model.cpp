@@ -108,6 +108,14 @@ void ModelTest::profileRoundTrip()
     p.azGains = PidGains{1.5, 0.1, 0.05};
     p.deadbandDeg = 1.0;
     p.pollHz = 5;
+    p.azOffsetDeg = -2.5;
+    p.elOffsetDeg = 0.75;
+    p.motion.azSpeedDegS = 3.1;
+    p.motion.elSpeedDegS = 1.9;
+    p.motion.azAccelDegS2 = 0;
+    p.motion.responseDelayS = 1.25;
+    p.motion.drive = slew::model::RotatorMotion::Drive::Relay;
+    p.motion.trackStepDeg = 1.5;
     QString error;
     const auto back = RotatorProfile::fromJson(p.toJson(), &error);
     QVERIFY2(back, qPrintable(error));
@@ -123,6 +131,15 @@ void ModelTest::profileRoundTrip()
     QVERIFY(!back->elGains);
     QCOMPARE(back->deadbandDeg, 1.0);
     QCOMPARE(back->pollHz, 5);
+    QCOMPARE(back->azOffsetDeg, -2.5);
+    QCOMPARE(back->elOffsetDeg, 0.75);
+    QVERIFY(back->motion == p.motion);
+    // A profile written before offsets and motion existed reads with none
+    // and a G-5500's figures.
+    const auto old = RotatorProfile::fromJson(QJsonDocument::fromJson(R"({"name":"old"})").object(), &error);
+    QVERIFY(old);
+    QCOMPARE(old->azOffsetDeg, 0.0);
+    QVERIFY(old->motion == slew::model::RotatorMotion{});
 }
 
 void ModelTest::profileRefusesBadValues_data()
@@ -135,6 +152,12 @@ void ModelTest::profileRefusesBadValues_data()
     QTest::newRow("park outside") << QByteArray(R"({"park":{"az":10,"el":120}})") << "park position";
     QTest::newRow("gains") << QByteArray(R"({"azGains":[1,2,3]})") << "kp, ki, kd";
     QTest::newRow("poll") << QByteArray(R"({"pollHz":500})") << "poll rate";
+    QTest::newRow("az offset") << QByteArray(R"({"offsets":{"az":200}})") << "azimuth offset";
+    QTest::newRow("el offset") << QByteArray(R"({"offsets":{"el":-25}})") << "elevation offset";
+    QTest::newRow("speed") << QByteArray(R"({"motion":{"azSpeedDegS":0}})") << "axis speeds";
+    QTest::newRow("delay") << QByteArray(R"({"motion":{"responseDelayS":-1}})") << "response delay";
+    QTest::newRow("drive") << QByteArray(R"({"motion":{"drive":"stepper"}})") << "drive must be";
+    QTest::newRow("step") << QByteArray(R"({"motion":{"trackStepDeg":20}})") << "tracking step";
 }
 
 void ModelTest::profileRefusesBadValues()

@@ -6,10 +6,12 @@
 
 #include "../common/simulatorpump.h"
 #include "linkschemes.h"
+#include "protocol/parser.h"
 #include "session/rotatorsession.h"
 #include "sim/simulator.h"
 #include "sim/simulatorscheme.h"
 #include "syntheticpass.h"
+#include "tracking/rotatorreach.h"
 #include "tracking/tracker.h"
 
 #include <QSignalSpy>
@@ -27,12 +29,14 @@ struct Rig {
     RotatorReach reach;
     QList<QPointF> targets; // every go-to the session sent, in mechanical positions
 
-    bool open(double azMax, double elMax)
+    bool open(double azMax, double elMax, double azOffset = 0, double elOffset = 0)
     {
         slew::model::RotatorProfile profile;
         profile.limits = slew::model::RotatorLimits{0, azMax, 0, elMax};
         profile.parkAz = 180;
         profile.parkEl = 90;
+        profile.azOffsetDeg = azOffset;
+        profile.elOffsetDeg = elOffset;
         session.setProfile(profile);
         session.connectTo(QStringLiteral("sim:?clock=manual&az_max=%1&el_max=%2").arg(azMax).arg(elMax));
         pump.follow(&session);
@@ -41,9 +45,8 @@ struct Rig {
         if (!runEventLoopUntil([&] { return session.capabilities().probed && session.hasPosition(); }, 10000))
             return false;
         sim = slew::sim::simulatorBehind(session.link());
-        reach.limits = profile.limits;
-        reach.azimuthRateDegS = 6.2; // the G-5500 class simulator (docs/simulator.md)
-        reach.elevationRateDegS = 2.7;
+        // The profile's motion is the G-5500 class simulator's (docs/simulator.md).
+        reach = reachOf(session);
         return sim != nullptr;
     }
 
@@ -104,6 +107,55 @@ private slots:
         // After LOS it parks.
         QCOMPARE(rig.targets.last(), QPointF(180, 90));
         QCOMPARE(states.last().at(0).value<Tracker::State>(), Tracker::State::Done);
+    }
+
+    void followsAPassWithCalibrationOffsets()
+    {
+        // A rotator whose readings are 4° east and 1.5° high of where the
+        // antenna points: the plan, the commands and the error all work in
+        // where it points, and the controller gets its own angles.
+        Rig rig;
+        QVERIFY(rig.open(450, 180, 4.0, -1.5));
+        QCOMPARE(rig.reach.limits.azMin, 4.0);
+        QCOMPARE(rig.reach.limits.elMax, 178.5);
+        QSignalSpy sent(&rig.session, &RotatorSession::bytesSent);
+        Tracker tracker(&rig.session);
+        QVERIFY(tracker.track(greatCirclePass(0, 40, true), kAos, rig.reach, rig.clockWithAosIn(120, kAos)));
+        QVERIFY(runEventLoopUntil([&] { return tracker.state() == Tracker::State::Done; }, 30000));
+        const TrackingFigures &f = tracker.figures();
+        qInfo("north crossing, 450/180, offsets +4/-1.5: RMS %.3f°, worst %.3f°", f.rmsDeg, f.worstDeg);
+        QVERIFY2(f.rmsDeg < 0.2 && f.worstDeg < 1.0, qPrintable(QStringLiteral("%1 %2").arg(f.rmsDeg).arg(f.worstDeg)));
+        // The last go-to of the pass, as sent and as the session names it.
+        const QPointF named = rig.targets[rig.targets.size() - 2];
+        slew::protocol::Parser parser(rig.session.profile().dialect);
+        std::optional<QPointF> wire;
+        std::optional<double> az;
+        for (const auto &args : sent)
+            parser.feed(args.at(0).toByteArray(), [&](const slew::protocol::Message &m) {
+                if (m.op == slew::protocol::Op::Azimuth && m.hasValue)
+                    az = m.value;
+                if (m.op == slew::protocol::Op::Elevation && m.hasValue && az && !(*az == 180 && m.value == 90))
+                    wire = QPointF(*az, m.value);
+            });
+        QVERIFY(wire);
+        QVERIFY2(std::abs(wire->x() - (named.x() - 4.0)) < 0.011 && std::abs(wire->y() - (named.y() + 1.5)) < 0.011,
+                 qPrintable(QStringLiteral("%1/%2 sent for %3/%4").arg(wire->x()).arg(wire->y()).arg(named.x()).arg(named.y())));
+    }
+
+    void settingsFollowTheProfilesMotion()
+    {
+        slew::model::RotatorMotion motion;
+        motion.responseDelayS = 0.8;
+        TrackerSettings base;
+        base.afterPass = TrackerSettings::AfterPass::Stay;
+        TrackerSettings s = trackerSettingsFor(motion, base);
+        QCOMPARE(s.leadSeconds, 0.8);
+        QCOMPARE(s.minimumStepDeg, kServoMinimumStepDeg);
+        QCOMPARE(s.afterPass, TrackerSettings::AfterPass::Stay); // kept from the base
+        motion.drive = slew::model::RotatorMotion::Drive::Relay;
+        QCOMPARE(trackerSettingsFor(motion).minimumStepDeg, kRelayMinimumStepDeg);
+        motion.trackStepDeg = 1.25; // the operator's own step wins
+        QCOMPARE(trackerSettingsFor(motion).minimumStepDeg, 1.25);
     }
 
     void theFlipOnA360Rotator()
