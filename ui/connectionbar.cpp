@@ -1,5 +1,6 @@
 #include "connectionbar.h"
 
+#include "model/savedcalibration.h"
 #include "session/profilehints.h"
 #include "transport/linkfactory.h"
 #include "transport/serialports.h"
@@ -221,6 +222,14 @@ void ConnectionBar::connectToRotator()
     if (const transport::LinkHints hints = transport::linkHintsFor(target); !hints.dialect.isEmpty()) {
         profile = session::profileWithHints(profile, hints);
         setDialect(profile.dialect);
+    }
+    // The calibration found for this rotator before (sun or moon alignment);
+    // another rotator does not inherit this one's.
+    if (const auto saved = model::savedCalibration(target)) {
+        profile.azOffsetDeg = saved->azDeg;
+        profile.elOffsetDeg = saved->elDeg;
+    } else if (target != m_session->uri() && !m_session->uri().isEmpty()) {
+        profile.azOffsetDeg = profile.elOffsetDeg = 0.0;
     }
     m_session->setProfile(profile);
     m_operatorDisconnected = false;

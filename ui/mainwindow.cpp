@@ -24,6 +24,7 @@
 #include "trafficconsole.h"
 #include "trackingpanel.h"
 #include "wizard/setupwizard.h"
+#include "alignmentpanel.h"
 
 #include "bridge/rotctldserver.h"
 #include "session/controllerrotors.h"
@@ -90,11 +91,18 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
     m_elementSets->setUrls(ElementSetsDialog::savedUrls());
     m_elementSets->loadFromCache();
     m_tracking = new TrackingPanel(session, m_elementSets);
+    m_alignment = new AlignmentPanel(session);
+    // The Tracking tab: passes and tracking, and below them the calibration
+    // that tracking depends on.
+    auto *trackingTab = new QWidget;
+    auto *trackingLayout = new QVBoxLayout(trackingTab);
+    trackingLayout->addWidget(m_tracking, 1);
+    trackingLayout->addWidget(m_alignment);
 
     m_tabs = new QTabWidget;
     m_tabs->setObjectName(QStringLiteral("mainTabs"));
     m_tabs->addTab(m_charts, tr("Telemetry"));
-    m_tabs->addTab(m_tracking, tr("Tracking"));
+    m_tabs->addTab(trackingTab, tr("Tracking"));
     m_tabs->addTab(m_config, tr("Configuration"));
     m_tabs->addTab(m_traffic, tr("Traffic"));
     m_tabs->addTab(m_trackers, tr("Trackers"));
@@ -156,6 +164,7 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
     });
     connect(m_trackers, &RotctldPanel::message, this, &MainWindow::logInfo);
     connect(m_tracking, &TrackingPanel::message, this, &MainWindow::logInfo);
+    connect(m_alignment, &AlignmentPanel::message, this, &MainWindow::logInfo);
     connect(m_tracking, &TrackingPanel::passOverlayChanged, m_plot, &PolarPlotWidget::setPassOverlay);
     connect(m_tracking, &TrackingPanel::passTargetMoved, m_plot, &PolarPlotWidget::setPassTarget);
     // While Slew tracks, trackers on the rotctld port are held off.
@@ -169,8 +178,10 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
         sky::Station station;
         QString ignored;
         const QString saved = QSettings().value(QLatin1String(sky::kStationSettingsKey)).toString();
-        if (!saved.isEmpty() && sky::parseStation(saved, &station, &ignored))
+        if (!saved.isEmpty() && sky::parseStation(saved, &station, &ignored)) {
             m_tracking->setStation(station);
+            m_alignment->setStation(station);
+        }
     }
     connect(session, &RotatorSession::stateChanged, this, [this](RotatorSession::State s) {
         if (s == RotatorSession::State::Disconnected)
@@ -202,6 +213,7 @@ void MainWindow::buildMenus()
         dialog->setAttribute(Qt::WA_DeleteOnClose);
         connect(dialog, &QDialog::accepted, this, [this, dialog] {
             m_tracking->setStation(dialog->station());
+            m_alignment->setStation(dialog->station());
             logInfo(tr("station set to %1").arg(sky::stationLocator(dialog->station().latitudeDeg,
                                                                     dialog->station().longitudeDeg)));
         });

@@ -18,6 +18,7 @@ class RotctldServer;
 namespace slew::ui {
 
 class AlarmBanner;
+class AlignmentPanel;
 class AlarmMonitor;
 class ConfigEditor;
 class ConnectionBar;
@@ -76,6 +77,7 @@ public:
     session::ControllerRotors *controllerRotors() const { return m_controllerRotors; }
     RotorsPanel *rotorsPanel() const { return m_rotorsPanel; }
     TrackingPanel *trackingPanel() const { return m_tracking; }
+    AlignmentPanel *alignmentPanel() const { return m_alignment; }
     // The element sets Slew knows, loaded from the cache at start.
     sky::TleSources *elementSets() const { return m_elementSets; }
 
@@ -119,6 +121,7 @@ private:
     session::ControllerRotors *m_controllerRotors;
     RotorsPanel *m_rotorsPanel;
     TrackingPanel *m_tracking;
+    AlignmentPanel *m_alignment;
     sky::TleSources *m_elementSets;
 };
 

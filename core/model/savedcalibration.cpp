@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "savedcalibration.h"
+
+#include <QSettings>
+#include <QUrl>
+
+#include <cmath>
+
+namespace slew::model {
+
+namespace {
+
+// A URI has slashes, which QSettings reads as groups: percent-encode it.
+QString keyFor(const QString &uri)
+{
+    return QStringLiteral("calibration/") + QString::fromLatin1(QUrl::toPercentEncoding(uri));
+}
+
+} // namespace
+
+std::optional<CalibrationOffsets> savedCalibration(const QString &uri)
+{
+    const QStringList parts = QSettings().value(keyFor(uri)).toStringList();
+    if (parts.size() != 2)
+        return std::nullopt;
+    bool azOk = false, elOk = false;
+    const CalibrationOffsets o{parts[0].toDouble(&azOk), parts[1].toDouble(&elOk)};
+    // A hand-edited settings file must not carry an offset the profile refuses.
+    if (!azOk || !elOk || !(std::abs(o.azDeg) <= 180.0) || !(std::abs(o.elDeg) <= 20.0))
+        return std::nullopt;
+    return o;
+}
+
+void saveCalibration(const QString &uri, const CalibrationOffsets &offsets)
+{
+    QSettings().setValue(keyFor(uri), QStringList{QString::number(offsets.azDeg, 'f', 4),
+                                                  QString::number(offsets.elDeg, 'f', 4)});
+}
+
+} // namespace slew::model
