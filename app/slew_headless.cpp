@@ -33,13 +33,20 @@ int fail(const QString &message)
 }
 
 // --track and what goes with it: the target (a satellite from --tle, the
-// sun or the moon), --min-el, --clock-start, --clock-rate.
+// sun, the moon, azel:AZ,EL or radec:RA,DEC), --min-el, --clock-start,
+// --clock-rate.
 std::optional<slew::bridge::HeadlessConfig::Track> readTrack(const QCommandLineParser &parser, QString *error)
 {
     using slew::tracking::TrackTarget;
     slew::bridge::HeadlessConfig::Track track;
     const QString what = parser.value(QStringLiteral("track")).trimmed();
-    if (what.compare(QLatin1String("sun"), Qt::CaseInsensitive) == 0) {
+    QString badFixed;
+    if (const auto fixed = TrackTarget::parseFixedOrCelestial(what, &badFixed)) {
+        track.target = *fixed;
+    } else if (!badFixed.isEmpty()) {
+        *error = QStringLiteral("--track %1").arg(badFixed);
+        return std::nullopt;
+    } else if (what.compare(QLatin1String("sun"), Qt::CaseInsensitive) == 0) {
         track.target.kind = TrackTarget::Kind::Sun;
     } else if (what.compare(QLatin1String("moon"), Qt::CaseInsensitive) == 0) {
         track.target.kind = TrackTarget::Kind::Moon;

@@ -96,7 +96,7 @@ ProgramMode makeHeadlessMode()
     mode.synopsis = QStringLiteral("slew --headless [--config FILE] [--connect URI] [--dialect NAME] "
                                    "[--profile FILE] [--limits AZMIN:AZMAX,ELMIN:ELMAX] [--rotctld-listen ADDRESS:PORT] "
                                    "[--rotctld-allow ADDRESSES] [--rotors LIST] [--qth STATION --tle FILE "
-                                   "--track CATNR|NAME|sun|moon [--min-el DEG] [--clock-start ISO8601] [--clock-rate N]]");
+                                   "--track CATNR|NAME|sun|moon|azel:AZ,EL|radec:RA,DEC [--min-el DEG] [--clock-start ISO8601] [--clock-rate N]]");
     mode.description = QStringLiteral(
         "Runs Slew with no window and no display, as a station service: it keeps the link to the rotator open "
         "and reconnects after a loss, serves the rotctld protocol to trackers, and logs one line per event on "
@@ -129,7 +129,9 @@ ProgramMode makeHeadlessMode()
          QStringLiteral("Track every pass of a satellite (a catalogue number or the start of a name in --tle), the sun "
                         "or the moon until SIGTERM: plan each pass before AOS (never the long way round, the flip or "
                         "the overlap where the travel has them), pre-position, follow, and log the plan, AOS, and at "
-                        "LOS the pointing error (RMS and worst). Needs --qth. Remote trackers on the rotctld port are "
+                        "LOS the pointing error (RMS and worst). Also azel:AZ,EL (hold a fixed direction) and "
+                        "radec:RA,DEC (a radio source: RA in hours, or degrees with a d; Dec in degrees; J2000; "
+                        "23:23:24 style accepted). Needs --qth. Remote trackers on the rotctld port are "
                         "held off while a pass is tracked."),
          true},
         {{QStringLiteral("tle")},

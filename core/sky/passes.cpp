@@ -257,10 +257,14 @@ QList<Pass> predictPasses(const QList<Tle> &satellites, const Station &station, 
     return all;
 }
 
-QList<Pass> predictBodyPasses(SkyBody body, const Station &station, const PassWindow &window)
+namespace {
+
+// Anything that turns with the sky: it rises no faster than the sky turns.
+QList<Pass> skyPasses(const std::function<BodyPosition(double)> &position, const QString &name,
+                      const PassWindow &window)
 {
     const ElevationFunction f = [&](double julian) {
-        const BodyPosition p = bodyPosition(body, station, julian);
+        const BodyPosition p = position(julian);
         return ElevationSample{p.elevationDeg, p.azimuthDeg};
     };
     PassScan scan;
@@ -270,10 +274,24 @@ QList<Pass> predictBodyPasses(SkyBody body, const Station &station, const PassWi
     scan.maxStepS = 3600.0;
     QList<Pass> passes = scanPasses(f, window, scan);
     for (Pass &p : passes) {
-        p.name = body == SkyBody::Sun ? QStringLiteral("Sun") : QStringLiteral("Moon");
+        p.name = name;
         p.sunlit = true;
     }
     return passes;
+}
+
+} // namespace
+
+QList<Pass> predictBodyPasses(SkyBody body, const Station &station, const PassWindow &window)
+{
+    return skyPasses([&](double julian) { return bodyPosition(body, station, julian); },
+                     body == SkyBody::Sun ? QStringLiteral("Sun") : QStringLiteral("Moon"), window);
+}
+
+QList<Pass> predictCelestialPasses(double ra, double dec, const Station &station, const PassWindow &window)
+{
+    return skyPasses([&](double julian) { return celestialPosition(ra, dec, station, julian); },
+                     QStringLiteral("RA %1° Dec %2°").arg(ra, 0, 'f', 3).arg(dec, 0, 'f', 3), window);
 }
 
 } // namespace slew::sky

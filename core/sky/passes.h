@@ -62,6 +62,10 @@ QList<Pass> predictPasses(const QList<Tle> &satellites, const Station &station, 
 // refraction.
 inline constexpr double kRiseSetElevationDeg = -0.8333;
 QList<Pass> predictBodyPasses(SkyBody body, const Station &station, const PassWindow &window);
+// Rise, culmination and set of a fixed point of the sky (sunmoon.h,
+// celestialPosition), its centre on the window's minimum elevation.
+QList<Pass> predictCelestialPasses(double rightAscensionJ2000Deg, double declinationJ2000Deg, const Station &station,
+                                   const PassWindow &window);
 
 // The engine, on any elevation function: exposed for tests.
 struct ElevationSample {

@@ -90,6 +90,21 @@ Geocentric geocentric(SkyBody body, double julianDateUtc)
     return g;
 }
 
+// Where an apparent position of date stands in the station's sky.
+BodyPosition horizontalOf(const ln_equ_posn &topocentric, const Station &station, double julianDate)
+{
+    ln_lnlat_posn observer{station.longitudeDeg, station.latitudeDeg};
+    // Apparent sidereal time, since the positions include nutation.
+    ln_hrz_posn horizontal{};
+    ln_equ_posn object = topocentric;
+    ln_get_hrz_from_equ_sidereal_time(&object, &observer, ln_get_apparent_sidereal_time(julianDate), &horizontal);
+    BodyPosition p;
+    // libnova counts azimuth from the south.
+    p.azimuthDeg = wrap360(horizontal.az + 180.0);
+    p.elevationDeg = horizontal.alt;
+    return p;
+}
+
 } // namespace
 
 BodyPosition bodyPosition(SkyBody body, const Station &station, double julianDate)
@@ -102,19 +117,22 @@ BodyPosition bodyPosition(SkyBody body, const Station &station, double julianDat
     ln_equ_posn shift{};
     ln_equ_posn object = g.equatorial;
     ln_get_parallax(&object, g.distanceKm / kAstronomicalUnitKm, &observer, station.heightM, julianDate, &shift);
-    ln_equ_posn topocentric{object.ra + shift.ra, object.dec + shift.dec};
-
-    // Apparent sidereal time, since the positions include nutation.
-    ln_hrz_posn horizontal{};
-    ln_get_hrz_from_equ_sidereal_time(&topocentric, &observer, ln_get_apparent_sidereal_time(julianDate),
-                                      &horizontal);
-    BodyPosition p;
-    // libnova counts azimuth from the south.
-    p.azimuthDeg = wrap360(horizontal.az + 180.0);
-    p.elevationDeg = horizontal.alt;
+    BodyPosition p = horizontalOf({object.ra + shift.ra, object.dec + shift.dec}, station, julianDate);
     p.distanceKm = g.distanceKm;
     p.rightAscensionDeg = g.equatorial.ra;
     p.declinationDeg = g.equatorial.dec;
+    return p;
+}
+
+BodyPosition celestialPosition(double raJ2000Deg, double decJ2000Deg, const Station &station, double julianDate)
+{
+    ln_equ_posn j2000{wrap360(raJ2000Deg), decJ2000Deg};
+    ln_equ_posn noProperMotion{0, 0};
+    ln_equ_posn ofDate{};
+    ln_get_apparent_posn(&j2000, &noProperMotion, dynamicalJulian(julianDate), &ofDate);
+    BodyPosition p = horizontalOf(ofDate, station, julianDate);
+    p.rightAscensionDeg = ofDate.ra;
+    p.declinationDeg = ofDate.dec;
     return p;
 }
 

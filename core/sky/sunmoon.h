@@ -25,6 +25,13 @@ BodyPosition bodyPosition(SkyBody body, const Station &station, double julianDat
 inline BodyPosition sunPosition(const Station &s, double jd) { return bodyPosition(SkyBody::Sun, s, jd); }
 inline BodyPosition moonPosition(const Station &s, double jd) { return bodyPosition(SkyBody::Moon, s, jd); }
 
+// A fixed point of the sky (a radio source, a star) given by its J2000
+// right ascension and declination, as the station sees it now: precession,
+// nutation and aberration applied; at infinity, so no parallax. The
+// distance is 0.
+BodyPosition celestialPosition(double rightAscensionJ2000Deg, double declinationJ2000Deg, const Station &station,
+                               double julianDate);
+
 // Geocentric direction to the sun in the equatorial frame of date (close
 // enough to TEME for the shadow test), in km.
 Vec3 sunVectorEquatorial(double julianDate);

@@ -18,16 +18,6 @@ constexpr double kLookAheadDays = 2.0;
 constexpr int kRetryMs = 3600 * 1000; // no pass in two days: look again in an hour
 }
 
-QString TrackTarget::name() const
-{
-    switch (kind) {
-    case Kind::Sun: return QObject::tr("the sun");
-    case Kind::Moon: return QObject::tr("the moon");
-    case Kind::Satellite: break;
-    }
-    return elements.name.isEmpty() ? QString::number(elements.catalogueNumber) : elements.name;
-}
-
 PassRunner::PassRunner(RotatorSession *session, QObject *parent) : QObject(parent), m_session(session), m_tracker(session)
 {
     m_retry.setSingleShot(true);
@@ -56,9 +46,7 @@ void PassRunner::start(const TrackTarget &target, const sky::Station &station, d
                        const StationClock *clock)
 {
     m_target = target;
-    m_satellite.reset();
-    if (target.kind == TrackTarget::Kind::Satellite)
-        m_satellite.emplace(target.elements);
+    m_sky.emplace(target);
     m_station = station;
     m_minElevation = minElevationDeg;
     m_clock = clock;
@@ -85,11 +73,7 @@ void PassRunner::nextPass()
         return;
     const double now = m_clock->nowJulian();
     const sky::PassWindow window{now, now + kLookAheadDays, m_minElevation};
-    const QList<sky::Pass> passes = m_satellite ? sky::predictPasses(*m_satellite, m_station, window)
-                                                : sky::predictBodyPasses(m_target.kind == TrackTarget::Kind::Sun
-                                                                             ? sky::SkyBody::Sun
-                                                                             : sky::SkyBody::Moon,
-                                                                         m_station, window);
+    const QList<sky::Pass> passes = m_sky->passes(m_station, window);
     const sky::Pass *next = nullptr;
     for (const sky::Pass &p : passes) {
         if (p.los.julian > now + 5.0 / sky::kSecondsPerDay) {
@@ -105,14 +89,11 @@ void PassRunner::nextPass()
     }
     // A pass already under way is tracked from now.
     const double from = std::max(next->aos.julian, now);
-    sky::Pass rest = *next;
-    rest.aos.julian = from;
-    // A second apart for a satellite; the sun and moon move slowly.
-    const QList<SkyPoint> points = m_satellite ? sampleSatellitePass(*m_satellite, m_station, rest, 1.0)
-                                               : sampleBodyPass(m_target.kind == TrackTarget::Kind::Sun ? sky::SkyBody::Sun
-                                                                                                          : sky::SkyBody::Moon,
-                                                                m_station, from, next->los.julian, 10.0);
-    emit logLine(tr("next pass: %1, AOS %2 at %3°, highest %4° at %5, LOS %6 at %7°%8")
+    const QList<SkyPoint> points = m_sky->sample(m_station, *next, from);
+    if (m_target.isFixed())
+        emit logLine(tr("holding %1 until %2").arg(m_target.name(), isoTime(next->los.julian)));
+    else
+        emit logLine(tr("next pass: %1, AOS %2 at %3°, highest %4° at %5, LOS %6 at %7°%8")
                      .arg(m_target.name(), isoTime(next->aos.julian))
                      .arg(next->aos.azimuthDeg, 0, 'f', 1)
                      .arg(next->maxElevationDeg(), 0, 'f', 1)
@@ -121,7 +102,8 @@ void PassRunner::nextPass()
                      .arg(from > next->aos.julian ? tr(" (under way: from %1)").arg(isoTime(from)) : QString()));
     const StationClock *clock = m_clock;
     TrackerSettings settings = trackerSettingsFor(m_session->profile().motion, m_tracker.settings());
-    settings.afterPass = m_afterPass;
+    // A fixed target's next stretch follows at once: nothing to park between.
+    settings.afterPass = m_target.isFixed() ? TrackerSettings::AfterPass::Stay : m_afterPass;
     m_tracker.setSettings(settings);
     if (!m_tracker.track(points, from, reachOf(*m_session), [clock] { return clock->nowJulian(); })) {
         emit logLine(tr("cannot track this pass: %1; trying the next one after its LOS").arg(m_tracker.error()));

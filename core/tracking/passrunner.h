@@ -9,6 +9,7 @@
 
 #include "stationclock.h"
 #include "tracker.h"
+#include "tracktarget.h"
 
 #include "sky/sgp4.h"
 #include "sky/station.h"
@@ -21,13 +22,6 @@
 #include <optional>
 
 namespace slew::tracking {
-
-struct TrackTarget {
-    enum class Kind { Satellite, Sun, Moon };
-    Kind kind = Kind::Satellite;
-    sky::Tle elements; // a satellite's
-    QString name() const;
-};
 
 class PassRunner : public QObject {
     Q_OBJECT
@@ -67,7 +61,7 @@ private:
     session::RotatorSession *m_session;
     Tracker m_tracker;
     TrackTarget m_target;
-    std::optional<sky::Sgp4> m_satellite;
+    std::optional<TargetSky> m_sky;
     sky::Station m_station;
     double m_minElevation = 0;
     TrackerSettings::AfterPass m_afterPass = TrackerSettings::AfterPass::Park;

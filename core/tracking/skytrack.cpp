@@ -26,6 +26,13 @@ QList<SkyPoint> sampleSatellitePass(const sky::Sgp4 &satellite, const sky::Stati
 QList<SkyPoint> sampleBodyPass(sky::SkyBody body, const sky::Station &station, double fromJulian, double toJulian,
                                double stepSeconds)
 {
+    return sampleSkyPass([&](double julian) { return sky::bodyPosition(body, station, julian); }, fromJulian, toJulian,
+                         stepSeconds);
+}
+
+QList<SkyPoint> sampleSkyPass(const std::function<sky::BodyPosition(double julian)> &position, double fromJulian,
+                              double toJulian, double stepSeconds)
+{
     QList<SkyPoint> points;
     const double duration = (toJulian - fromJulian) * sky::kSecondsPerDay;
     if (!(stepSeconds > 0) || !(duration >= 0))
@@ -33,7 +40,7 @@ QList<SkyPoint> sampleBodyPass(sky::SkyBody body, const sky::Station &station, d
     const int steps = int(std::ceil(duration / stepSeconds));
     for (int i = 0; i <= steps; ++i) {
         const double seconds = std::min(i * stepSeconds, duration);
-        const sky::BodyPosition p = sky::bodyPosition(body, station, fromJulian + seconds / sky::kSecondsPerDay);
+        const sky::BodyPosition p = position(fromJulian + seconds / sky::kSecondsPerDay);
         points.append(SkyPoint{seconds, p.azimuthDeg, p.elevationDeg});
     }
     return points;

@@ -7,6 +7,8 @@
 #include "sky/passes.h"
 #include "sky/sunmoon.h"
 
+#include <functional>
+
 namespace slew::tracking {
 
 // The satellite's look angles every `stepSeconds` from the pass's AOS to
@@ -19,5 +21,9 @@ QList<SkyPoint> sampleSatellitePass(const sky::Sgp4 &satellite, const sky::Stati
 // pass's rise) to its set; seconds count from `fromJulian`.
 QList<SkyPoint> sampleBodyPass(sky::SkyBody body, const sky::Station &station, double fromJulian, double toJulian,
                                double stepSeconds = 1.0);
+
+// The same for anything whose position a function gives (tracktarget.h).
+QList<SkyPoint> sampleSkyPass(const std::function<sky::BodyPosition(double julian)> &position, double fromJulian,
+                              double toJulian, double stepSeconds);
 
 } // namespace slew::tracking

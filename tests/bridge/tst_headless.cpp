@@ -38,6 +38,7 @@ private slots:
     void servesOneRotctldPortPerRotor();
     void refusesABadRotorList();
     void tracksAPassAndHoldsOffRemoteTrackers();
+    void holdsAFixedDirection();
     void refusesABadTrack();
     void runningOutOfDescriptorsDoesNotSpin();
     void hostileClientCannotFloodTheLog();
@@ -382,10 +383,15 @@ void HeadlessTest::refusesABadRotorList()
 void HeadlessTest::tracksAPassAndHoldsOffRemoteTrackers()
 {
     // A rehearsal: FLOCK 2P-1's pass over JO65hq on 2018-01-22 (LOS 07:51:03
-    // UTC) joined a minute before LOS, station clock and simulator both 20x.
+    // UTC) joined a minute before LOS, station clock and slew-sim both 20x,
+    // slew-sim as a real process on its pseudo-terminal, opened as a serial port.
+    QTemporaryDir dir;
+    const QString pty = dir.filePath("rotator");
+    SlewSimProcess sim;
+    QVERIFY2(sim.start({"--pty", pty, "--time-scale", "20", "--az-max", "450", "--el-max", "180"}), qPrintable(sim.error()));
     QProcess slew;
     quint16 port = 0;
-    QVERIFY2(startSlew(slew, {"--connect", "sim:?time_scale=20&az_max=450&el_max=180", "--limits", "0:450,0:180", "--qth",
+    QVERIFY2(startSlew(slew, {"--connect", "serial:" + pty + "?baud=9600", "--limits", "0:450,0:180", "--qth",
                                "JO65hq", "--tle", SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle", "--track",
                                "FLOCK 2P-1", "--clock-start", "2018-01-22T07:50:00Z", "--clock-rate", "20",
                                "--rotctld-listen", "127.0.0.1:0"},
@@ -419,6 +425,39 @@ void HeadlessTest::tracksAPassAndHoldsOffRemoteTrackers()
     QCOMPARE(slew.exitCode(), 0);
 }
 
+void HeadlessTest::holdsAFixedDirection()
+{
+    // A fixed azimuth and elevation (a drift scan, a beacon) through
+    // slew-sim over TCP, 20x: held until SIGTERM, remote trackers held off.
+    SlewSimProcess sim;
+    QVERIFY2(sim.start({"--listen", "127.0.0.1:0", "--time-scale", "20"}), qPrintable(sim.error()));
+    QProcess slew;
+    quint16 port = 0;
+    QVERIFY2(startSlew(slew, {"--connect", QStringLiteral("tcp://127.0.0.1:%1").arg(sim.port()), "--qth", "JO65hq",
+                               "--track", "azel:123.5,41", "--rotctld-listen", "127.0.0.1:0"},
+                       &port),
+             slew.readAllStandardError().constData());
+    QByteArray out = m_startupLog;
+    QVERIFY2(QTest::qWaitFor([&] {
+        out += slew.readAllStandardOutput();
+        return out.contains("track: holding azimuth 123.50°, elevation 41.00° until ");
+    }, 10000), out.constData());
+    QTcpSocket client;
+    client.connectToHost(QHostAddress::LocalHost, port);
+    QTRY_COMPARE(client.state(), QAbstractSocket::ConnectedState);
+    QPointF at;
+    QVERIFY2(QTest::qWaitFor([&] {
+        const QList<QByteArray> lines = ask(client, "p").trimmed().split('\n');
+        at = lines.size() == 2 ? QPointF(lines[0].toDouble(), lines[1].toDouble()) : QPointF();
+        return std::abs(at.x() - 123.5) < 0.3 && std::abs(at.y() - 41) < 0.3;
+    }, 20000), qPrintable(QStringLiteral("at %1, %2").arg(at.x()).arg(at.y())));
+    QCOMPARE(ask(client, "P 10 10"), QByteArray("RPRT -9\n"));
+    QSignalSpy finished(&slew, &QProcess::finished);
+    ::kill(pid_t(slew.processId()), SIGTERM);
+    QVERIFY(finished.wait(10000));
+    QCOMPARE(slew.exitCode(), 0);
+}
+
 void HeadlessTest::refusesABadTrack()
 {
     const QString tle = QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle");
@@ -432,6 +471,9 @@ void HeadlessTest::refusesABadTrack()
         {{"--limits", "0:500,0:90"}, "--limits"},
         {{"--limits", "0-450"}, "AZMIN:AZMAX,ELMIN:ELMAX"},
         {{"--tle", tle}, "goes with --track"},
+        {{"--track", "azel:400,10", "--qth", "JO65hq"}, "azimuth 0..360"},
+        {{"--track", "radec:25,10", "--qth", "JO65hq"}, "right ascension is in hours"},
+        {{"--track", "radec:12:30:00", "--qth", "JO65hq"}, "radec:RA,DEC"},
     };
     for (const auto &[args, message] : cases) {
         QProcess slew;
