@@ -103,7 +103,7 @@ bool PresetPanel::storeCurrent(const QString &name)
         return false;
     }
     const QString error =
-        m_presets.store(model::Preset{name, m_session->azimuth(), m_session->elevation()}, m_session->profile().limits);
+        m_presets.store(model::Preset{name, m_session->azimuth(), m_session->elevation()}, m_session->moveGate().profileLimits());
     if (!error.isEmpty()) {
         say(error, true);
         return false;

@@ -29,7 +29,7 @@ struct RotatorMotion {
     double elSpeedDegS = 2.7;
     double azAccelDegS2 = 12.0;  // how fast it gets up to speed
     double elAccelDegS2 = 6.0;
-    double responseDelayS = 0.5; // from a command sent to the axis answering it
+    double responseDelayS = 0.1; // from a command sent to the axis starting to move
     // A relay drive switches its motor on and off; a servo follows a speed.
     Drive drive = Drive::Servo;
     // The tracker's minimum step (deadband); 0: the drive's default.

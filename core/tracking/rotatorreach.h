@@ -20,6 +20,10 @@ namespace slew::tracking {
 RotatorReach reachOf(const session::RotatorSession &session);
 
 // The lead and the minimum step for this motion; the rest as `base` has it.
+// The lead is the response delay and the time one minimum step takes.
 TrackerSettings trackerSettingsFor(const model::RotatorMotion &motion, TrackerSettings base = {});
+
+// How long an axis of this speed and acceleration takes to move `step` degrees.
+double stepSeconds(double step, double speed, double accel);
 
 } // namespace slew::tracking

@@ -72,7 +72,8 @@ bool AxisTuner::start(Axis axis)
         m_error = tr("the step size must be a positive number of degrees");
         return false;
     }
-    const auto &lim = m_session->profile().limits;
+    // The gate's travel: positions here are in the pointing frame, as its are.
+    const model::RotatorLimits lim = m_session->moveGate().limits();
     const double lo = axis == Axis::Azimuth ? lim.azMin : lim.elMin;
     const double hi = axis == Axis::Azimuth ? lim.azMax : lim.elMax;
     double here = std::round((axis == Axis::Azimuth ? m_session->azimuth() : m_session->elevation()) * 100) / 100;
@@ -140,6 +141,7 @@ void AxisTuner::onStepFinished(const StepResponse &response)
     if (m_phase == Phase::MeasuringBefore) {
         m_result.before = response;
         m_result.beforeMetrics = analyzer.analyze(response);
+        m_result.motion = measureAxisMotion(response, m_settings.step.band);
         setPhase(Phase::Proposing, 50, tr("fitting a model to the step"));
         m_result.fit = fitAxisPlant(response, m_result.oldGains);
         if (!m_result.fit.ok) {

@@ -32,7 +32,9 @@ HomingRun::HomingRun(RotatorSession *session, QObject *parent) : QObject(parent)
 
 double HomingRun::distanceLeft() const
 {
-    const auto &lim = m_session->profile().limits;
+    // Homing ends at the lower limits, which the readings (pointing frame) see
+    // shifted by the calibration offsets, as the gate does.
+    const model::RotatorLimits lim = m_session->moveGate().limits();
     return std::fabs(m_session->azimuth() - lim.azMin) + std::fabs(m_session->elevation() - lim.elMin);
 }
 

@@ -1,5 +1,7 @@
 #include "tuningresult.h"
 
+#include <algorithm>
+
 namespace slew::tuning {
 
 QString axisName(session::Axis axis)
@@ -49,7 +51,28 @@ QString formatTuningTable(const QList<TuningResult> &results)
         figures(QStringLiteral("before"), r.beforeMetrics, r.oldGains);
         figures(QStringLiteral("after"), r.afterMetrics, r.newGains);
     }
+    for (const TuningResult &r : results) {
+        const AxisMotion &m = r.motion;
+        out += m.ok ? QStringLiteral("%1 motion: %2°/s, %3°/s², response delay %4 s\n")
+                          .arg(axisName(r.axis))
+                          .arg(m.speedDegS, 0, 'f', 2)
+                          .arg(m.accelDegS2, 0, 'f', 1)
+                          .arg(m.responseDelayS, 0, 'f', 2)
+                    : QStringLiteral("%1 motion: not measured (%2)\n").arg(axisName(r.axis), m.error);
+    }
     return out;
+}
+
+model::RotatorMotion withMeasuredMotion(model::RotatorMotion motion, const TuningResult &result)
+{
+    const AxisMotion &m = result.motion;
+    if (!m.ok)
+        return motion;
+    const bool az = result.axis == session::Axis::Azimuth;
+    (az ? motion.azSpeedDegS : motion.elSpeedDegS) = m.speedDegS;
+    (az ? motion.azAccelDegS2 : motion.elAccelDegS2) = m.accelDegS2;
+    motion.responseDelayS = m.responseDelayS;
+    return motion;
 }
 
 } // namespace slew::tuning

@@ -149,13 +149,17 @@ private slots:
         TrackerSettings base;
         base.afterPass = TrackerSettings::AfterPass::Stay;
         TrackerSettings s = trackerSettingsFor(motion, base);
-        QCOMPARE(s.leadSeconds, 0.8);
+        // The delay, and 0.41 s for a 0.5° step at 12°/s² (never at full speed).
+        QVERIFY(std::abs(s.leadSeconds - (0.8 + 2 * std::sqrt(0.5 / 12.0))) < 1e-9);
         QCOMPARE(s.minimumStepDeg, kServoMinimumStepDeg);
         QCOMPARE(s.afterPass, TrackerSettings::AfterPass::Stay); // kept from the base
         motion.drive = slew::model::RotatorMotion::Drive::Relay;
         QCOMPARE(trackerSettingsFor(motion).minimumStepDeg, kRelayMinimumStepDeg);
         motion.trackStepDeg = 1.25; // the operator's own step wins
         QCOMPARE(trackerSettingsFor(motion).minimumStepDeg, 1.25);
+        // A long step reaches full speed: 10° at 6.2°/s and 12°/s².
+        QVERIFY(std::abs(stepSeconds(10, 6.2, 12) - (10 / 6.2 + 6.2 / 12)) < 1e-9);
+        QCOMPARE(stepSeconds(3, 6, 0), 0.5);
     }
 
     void theFlipOnA360Rotator()

@@ -136,6 +136,12 @@ private slots:
         QTest::mouseClick(find<QPushButton>(wizard, "keepOld"), Qt::LeftButton);
         TRY_VERIFY_WITH_TIMEOUT(canGoOn(wizard), 5000);
         QCOMPARE(sim->rotator().axis(sim::Axis::Elevation).gains().kd, 1.0);
+
+        // The elevation's speed for the tracker: a 30° move, measured.
+        QTest::mouseClick(find<QPushButton>(wizard, "measureSpeed"), Qt::LeftButton);
+        TRY_VERIFY2_WITH_TIMEOUT(find<QLabel>(wizard, "tuningStatus")->text().contains(QStringLiteral("turns at")),
+                                 qPrintable(find<QLabel>(wizard, "tuningStatus")->text()), 60000);
+        TRY_VERIFY_WITH_TIMEOUT(canGoOn(wizard), 5000);
         wizard.next();
 
         // Park: from the present position, nudged by hand.
@@ -170,6 +176,13 @@ private slots:
         QCOMPARE(profile->azGains->kd, acceptedKd);
         QCOMPARE(profile->elGains->kd, 1.0);
         QCOMPARE(profile->dialect, protocol::Dialect::Easycomm3);
+        // The simulated G-5500's elevation, as measured: its speed, and how
+        // fast these (stiff) gains get it there, in place of the profile's
+        // own 6°/s². (The delay depends on when the polls land.)
+        QVERIFY2(std::abs(profile->motion.elSpeedDegS - 2.7) < 0.1, qPrintable(QString::number(profile->motion.elSpeedDegS)));
+        QVERIFY2(profile->motion.elAccelDegS2 > 0 && profile->motion.elAccelDegS2 != 6.0,
+                 qPrintable(QString::number(profile->motion.elAccelDegS2)));
+        QVERIFY(profile->motion.responseDelayS < 0.5);
     }
 
     void aMicro2gIsWalkedToItsCalibrationPage()

@@ -129,7 +129,11 @@ private slots:
         const QString table = formatTuningTable({r});
         for (const char *word : {"rise time", "overshoot", "settling time", "ss error", "kp", "47.3 %", "4.76 s", "6.29"})
             QVERIFY2(table.contains(QLatin1String(word)), word);
-        QCOMPARE(table.count(u'\n'), 3);
+        // The header, before and after, and the axis' motion (not measured here).
+        QCOMPARE(table.count(u'\n'), 4);
+        QVERIFY(table.contains(QLatin1String("az motion: not measured")));
+        r.motion = AxisMotion{6.2, 11.5, 0.25, true, {}};
+        QVERIFY(formatTuningTable({r}).contains(QStringLiteral("az motion: 6.20°/s, 11.5°/s², response delay 0.25 s")));
     }
 };
 

@@ -95,7 +95,7 @@ void MechanicsPage::jog()
     }
     const double az = s->azimuth();
     // Clockwise unless that would run into the stop; then the note says so.
-    const bool clockwise = az + kJogDegrees <= s->profile().limits.azMax;
+    const bool clockwise = az + kJogDegrees <= s->moveGate().limits().azMax;
     const double target = clockwise ? az + kJogDegrees : az - kJogDegrees;
     if (!s->gotoPosition(target, s->elevation())) {
         m_status->setText(tr("The jog was refused."));

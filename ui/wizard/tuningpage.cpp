@@ -22,7 +22,8 @@ namespace {
 constexpr int kFigureLines = 7; // title, four figures, the gains, and a spare for a wrapped line
 }
 
-TuningPage::TuningPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizard(wizard), m_tuner(wizard->session())
+TuningPage::TuningPage(SetupWizard *wizard)
+    : QWizardPage(wizard), m_wizard(wizard), m_tuner(wizard->session()), m_motionRun(wizard->session())
 {
     setTitle(tr("Tuning"));
     setSubTitle(tr("Each axis makes a small step with its present gains; Slew fits a model to it, proposes "
@@ -33,6 +34,10 @@ TuningPage::TuningPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizard(wiza
     m_axis->addItem(tr("Elevation"), int(Axis::Elevation));
     m_tune = new QPushButton(tr("Tune"), this);
     m_tune->setObjectName(QStringLiteral("tune"));
+    m_measureSpeed = new QPushButton(tr("Measure speed"), this);
+    m_measureSpeed->setObjectName(QStringLiteral("measureSpeed"));
+    m_measureSpeed->setToolTip(tr("Moves the axis %1° and records its speed, acceleration and response delay: "
+                                  "what the tracker plans passes with.").arg(tuning::kMotionStepDeg, 0, 'f', 0));
     m_cancel = new QPushButton(tr("Cancel"), this);
     m_cancel->setObjectName(QStringLiteral("cancelTuning"));
     m_cancel->setEnabled(false);
@@ -66,6 +71,7 @@ TuningPage::TuningPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizard(wiza
     auto *top = new QHBoxLayout;
     top->addWidget(m_axis);
     top->addWidget(m_tune);
+    top->addWidget(m_measureSpeed);
     top->addWidget(m_cancel);
     auto *figuresRow = new QHBoxLayout;
     figuresRow->addWidget(m_before);
@@ -84,6 +90,27 @@ TuningPage::TuningPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizard(wiza
 
     connect(m_tune, &QPushButton::clicked, this, &TuningPage::start);
     connect(m_cancel, &QPushButton::clicked, &m_tuner, &AxisTuner::cancel);
+    connect(m_cancel, &QPushButton::clicked, &m_motionRun, &tuning::MotionRun::cancel);
+    connect(m_measureSpeed, &QPushButton::clicked, this, &TuningPage::measureSpeed);
+    connect(&m_motionRun.experiment(), &tuning::StepExperiment::sampleRecorded, m_chart,
+            [this](const tuning::PositionSample &sample) { m_chart->addSample(false, sample); });
+    connect(&m_motionRun, &tuning::MotionRun::measured, this, [this](Axis axis, const tuning::AxisMotion &m) {
+        model::RotatorMotion &motion = m_wizard->profile().motion;
+        (axis == Axis::Azimuth ? motion.azSpeedDegS : motion.elSpeedDegS) = m.speedDegS;
+        (axis == Axis::Azimuth ? motion.azAccelDegS2 : motion.elAccelDegS2) = m.accelDegS2;
+        motion.responseDelayS = m.responseDelayS;
+        m_status->setText(tr("%1 turns at %2°/s, gets up to speed at %3°/s² and answers in %4 s; "
+                             "the profile keeps it for tracking.")
+                              .arg(axis == Axis::Azimuth ? tr("Azimuth") : tr("Elevation"))
+                              .arg(m.speedDegS, 0, 'f', 2)
+                              .arg(m.accelDegS2, 0, 'f', 1)
+                              .arg(m.responseDelayS, 0, 'f', 2));
+        setDeciding(false);
+    });
+    connect(&m_motionRun, &tuning::MotionRun::failed, this, [this](const QString &why) {
+        m_status->setText(tr("Speed not measured: %1.").arg(why));
+        setDeciding(false);
+    });
     connect(m_accept, &QPushButton::clicked, &m_tuner, &AxisTuner::accept);
     connect(m_keepOld, &QPushButton::clicked, &m_tuner, &AxisTuner::keepOldGains);
     connect(m_retry, &QPushButton::clicked, this, [this] {
@@ -101,6 +128,7 @@ TuningPage::TuningPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizard(wiza
         model::RotatorProfile &p = m_wizard->profile();
         const model::PidGains kept = r.applied ? r.newGains : r.oldGains;
         (r.axis == Axis::Azimuth ? p.azGains : p.elGains) = kept;
+        p.motion = tuning::withMeasuredMotion(p.motion, r); // what the tracker plans with
         setDeciding(false);
         m_status->setText(r.applied ? tr("New %1 gains kept on the controller.").arg(tuning::axisName(r.axis))
                                     : tr("Old %1 gains written back.").arg(tuning::axisName(r.axis)));
@@ -114,6 +142,20 @@ TuningPage::TuningPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizard(wiza
     connect(&m_tuner, &AxisTuner::failed, this, ended);
     connect(&m_tuner, &AxisTuner::cancelled, this, ended);
     connect(wizard, &SetupWizard::stopRequested, &m_tuner, &AxisTuner::cancel);
+    connect(wizard, &SetupWizard::stopRequested, &m_motionRun, &tuning::MotionRun::cancel);
+}
+
+void TuningPage::measureSpeed()
+{
+    m_chart->clear();
+    if (!m_motionRun.start(Axis(m_axis->currentData().toInt()))) {
+        m_status->setText(m_motionRun.error());
+        return;
+    }
+    m_status->setText(tr("Measuring: a %1° move.").arg(tuning::kMotionStepDeg, 0, 'f', 0));
+    m_tune->setEnabled(false);
+    m_measureSpeed->setEnabled(false);
+    m_cancel->setEnabled(true);
 }
 
 void TuningPage::start()
@@ -154,11 +196,12 @@ void TuningPage::showResult(const tuning::TuningResult &r)
 
 void TuningPage::setDeciding(bool deciding)
 {
-    const bool running = m_tuner.isRunning() && !deciding;
+    const bool running = (m_tuner.isRunning() || m_motionRun.isRunning()) && !deciding;
     m_accept->setEnabled(deciding);
     m_retry->setEnabled(deciding);
     m_keepOld->setEnabled(deciding);
     m_tune->setEnabled(!running && !deciding);
+    m_measureSpeed->setEnabled(!running && !deciding);
     m_axis->setEnabled(!running && !deciding);
     m_cancel->setEnabled(running || deciding);
 }
@@ -166,7 +209,7 @@ void TuningPage::setDeciding(bool deciding)
 bool TuningPage::isComplete() const
 {
     // Tuning is optional, but not half done: no trial gains left undecided.
-    return !m_tuner.isRunning();
+    return !m_tuner.isRunning() && !m_motionRun.isRunning();
 }
 
 } // namespace slew::ui

@@ -4,6 +4,7 @@
 // accepts, retries, or keeps the old gains.
 
 #include "tuning/axistuner.h"
+#include "tuning/motionrun.h"
 
 #include <QWizardPage>
 
@@ -25,14 +26,17 @@ public:
 
 private:
     void start();
+    void measureSpeed();
     void showResult(const tuning::TuningResult &r);
     void setDeciding(bool deciding);
     static QString figures(const QString &title, const tuning::StepMetrics &m, const model::PidGains &g);
 
     SetupWizard *m_wizard;
     tuning::AxisTuner m_tuner;
+    tuning::MotionRun m_motionRun; // the axis' speed for the tracker
     QComboBox *m_axis;
     QPushButton *m_tune;
+    QPushButton *m_measureSpeed;
     QPushButton *m_cancel;
     QProgressBar *m_progress;
     QLabel *m_status;

@@ -10,7 +10,7 @@
 // two and the figures do not depend on how busy the machine is.
 //
 //  - Slew: the pass planned before AOS, pre-positioned, followed with the
-//    default lead (1 s) and minimum step (0.5°).
+//    lead and minimum step the profile's motion gives (0.51 s, 0.5°).
 //  - Gpredict-style: no planner; once a second the pass's bearing and
 //    elevation go through Slew's rotctld server as `P az el` when either
 //    differs from the rotator's reading by more than Gpredict's default
@@ -29,6 +29,7 @@
 #include "sky/passes.h"
 #include "sky/tle.h"
 #include "tracking/skytrack.h"
+#include "tracking/rotatorreach.h"
 #include "tracking/tracker.h"
 
 #include <QCoreApplication>
@@ -159,11 +160,9 @@ public:
         pump.follow(&session);
         runEventLoopUntil([&] { return session.capabilities().probed && session.hasPosition(); }, 10000);
         sim = sim::simulatorBehind(session.link());
-        reach.limits = profile.limits;
-        reach.azimuthRateDegS = 6.2; // the g5500 model (docs/simulator.md)
-        reach.elevationRateDegS = 2.7;
-        reach.azimuthAccelDegS2 = 12.0;
-        reach.elevationAccelDegS2 = 6.0;
+        // The profile's motion is the g5500 model's (docs/simulator.md), as
+        // the tuning step measures it.
+        reach = tracking::reachOf(session);
         QObject::connect(&session, &RotatorSession::targetChanged, &session, [this](double az, double) {
             if (measuring && lastTarget)
                 commandedTravel += std::abs(az - *lastTarget);
@@ -233,7 +232,7 @@ Figures runSlew(const PassCase &c, double azMax, double elMax, tracking::PassPla
     tracking::Tracker tracker(&rig.session);
     tracking::TrackerSettings settings;
     settings.afterPass = tracking::TrackerSettings::AfterPass::Stay;
-    tracker.setSettings(settings);
+    tracker.setSettings(tracking::trackerSettingsFor(rig.session.profile().motion, settings));
     const double aosJulian = c.pass.aos.julian;
     tracker.track(c.points, aosJulian, rig.reach, [&rig, aosJulian] { return aosJulian + rig.seconds() / 86400.0; });
     *plan = tracker.plan();
