@@ -9,7 +9,7 @@
 // Favourites come first in the target list, persist in the settings and
 // outlive a reload that lacks them (shown as missing); each element-set
 // source says how old its newest elements are, in the warning colour past
-// the age limit.
+// the age limit; and the pointing error is charted while a pass is tracked.
 
 #include "windowfixture.h"
 
@@ -20,6 +20,7 @@
 #include "sky/utctime.h"
 #include "stopbutton.h"
 #include "targetpicker.h"
+#include "telemetrycharts.h"
 #include "trackingpanel.h"
 
 #include <QFile>
@@ -32,7 +33,9 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolButton>
+#include <QXYSeries>
 
+using slew::ui::TelemetryRecorder;
 using slew::ui::TrackingPanel;
 
 namespace {
@@ -243,6 +246,45 @@ private slots:
         QVERIFY2(line->text().contains(QStringLiteral("older than 7 days")), qPrintable(line->text()));
         QVERIFY(slew::ui::ElementSetAges::isStale(line));
         QVERIFY(!line->styleSheet().isEmpty());
+    }
+
+    void chartsThePointingErrorWhileTracking()
+    {
+        WindowFixture f(kOverlapAndFlip);
+        QVERIFY(connectWithOverlapAndFlip(f));
+        QVERIFY(loadSets(f.window->elementSets(), kAllSets));
+        TrackingPanel *panel = f.window->trackingPanel();
+        // A minute into the pass: tracking starts at once.
+        const slew::tracking::StationClock clock(slew::sky::julianFromIso(QStringLiteral("2018-01-22T07:44:00Z")), 1.0);
+        rehearse(panel, clock);
+        QVERIFY(panel->selectTarget(QStringLiteral("FLOCK 2P-1")));
+
+        slew::ui::TelemetryCharts *charts = f.window->telemetryCharts();
+        QXYSeries *pointing = charts->series(TelemetryRecorder::PointingError);
+        QVERIFY(pointing);
+        auto plotted = [&] {
+            charts->redraw();
+            return pointing->count();
+        };
+        QCOMPARE(plotted(), 0); // positions, but nothing tracked yet
+
+        QTest::mouseClick(panel->trackButton(), Qt::LeftButton);
+        TRY_VERIFY(panel->runner()->tracker().state() == slew::tracking::Tracker::State::Tracking);
+        TRY_VERIFY(plotted() > 10);
+        for (const QPointF &p : pointing->points())
+            QVERIFY2(p.y() >= 0.0 && p.y() < 180.0, qPrintable(QString::number(p.y())));
+
+        // Stopped: positions go on, the pointing error does not.
+        QTest::mouseClick(panel->stopTrackingButton(), Qt::LeftButton);
+        const int afterStop = plotted();
+        int positions = 0;
+        QObject::connect(&f.session, &slew::session::RotatorSession::positionChanged, panel, [&] { ++positions; });
+        TRY_VERIFY(positions > 20);
+        QCOMPARE(plotted(), afterStop);
+
+        f.window->tabs()->setCurrentWidget(charts);
+        QDir().mkpath(QStringLiteral("screenshots"));
+        QVERIFY(f.window->grab().save(QStringLiteral("screenshots/telemetry-pointing-error.png")));
     }
 
     void saysWhatIsMissing()
