@@ -29,6 +29,8 @@ QString sourceName(const QUrl &url)
 
 QString describeAgeDays(double days)
 {
+    if (days < 1.0 / 24.0)
+        return QObject::tr("%1 min").arg(std::max(0.0, days * 24.0 * 60.0), 0, 'f', 0);
     return days < 1.0 ? QObject::tr("%1 h").arg(days * 24.0, 0, 'f', 1) : QObject::tr("%1 days").arg(days, 0, 'f', 1);
 }
 
@@ -60,6 +62,7 @@ void ElementSetAges::refresh(double julianNow, double limitDays)
         auto *line = new QLabel;
         line->setObjectName(QStringLiteral("elementSetAge%1").arg(m_lines.size()));
         line->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        line->setWordWrap(true); // a long file name must not push the tab wider
         m_layout->addWidget(line);
         m_lines.append(line);
     }

@@ -27,7 +27,8 @@ class TleSources;
 
 namespace slew::ui {
 
-// "5.2 h" under a day, "3.4 days" above: how the window says an age.
+// "12 min" under an hour, "5.2 h" under a day, "3.4 days" above: how the
+// window says an age.
 QString describeAgeDays(double days);
 // The hours or days from `then` to now, or "no copy" without one.
 QString describeAgeSince(const QDateTime &then);

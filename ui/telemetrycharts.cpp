@@ -92,6 +92,8 @@ TelemetryCharts::TelemetryCharts(const model::TelemetryHistory *history, QWidget
              {{Series::AzStatus, az}, {Series::ElStatus, el}, {Series::ErrorFlags, QColor(0xe5, 0x48, 0x48)}},
              Drawn::Steps);
     addPanel(tr("Pointing"), QStringLiteral("°"), {{Series::PointingError, QColor(0xf2, 0x6b, 0x9a)}}, Drawn::Dots);
+    m_panels.back().hiddenUntilRecorded = true;
+    m_panels.back().view->hide();
     for (Panel &p : m_panels)
         layout->addWidget(p.view, 1);
 
@@ -215,8 +217,16 @@ void TelemetryCharts::redraw()
         return;
     const qint64 to = QDateTime::currentMSecsSinceEpoch();
     const qint64 from = to - m_windowMs;
-    for (Panel &p : m_panels)
+    for (Panel &p : m_panels) {
+        if (p.hiddenUntilRecorded && p.view->isHidden()) {
+            const bool recorded = std::any_of(p.plotted.begin(), p.plotted.end(),
+                                              [this](const Plotted &pl) { return m_history->sampleCount(pl.id) > 0; });
+            if (!recorded)
+                continue;
+            p.view->show();
+        }
         redrawPanel(p, from, to);
+    }
     ++m_redraws;
 }
 

@@ -2,7 +2,8 @@
 // Live charts of the recorded telemetry: position actual vs commanded, speed
 // (IP7/IP8), load (IP5/IP6), temperature (IP0), GS/GE as step lines, and the
 // pointing error while Slew tracks, as dots: a line would join one pass to
-// the next across the hours between them.
+// the next across the hours between them. That panel appears once there is
+// a pointing error to show, so a window that never tracks keeps its room.
 // The window runs from one minute to 24 hours; each redraw asks the history
 // for at most two points per pixel column, so a day of 10 Hz samples costs
 // no more to draw than a minute. Pausing freezes the view, not the record.
@@ -62,6 +63,7 @@ private:
         QDateTimeAxis *time;
         QValueAxis *value;
         std::vector<Plotted> plotted;
+        bool hiddenUntilRecorded = false;
     };
     void addPanel(const QString &title, const QString &unit,
                   std::initializer_list<std::pair<TelemetryRecorder::Series, QColor>> series, Drawn drawn = Drawn::Lines);

@@ -267,10 +267,12 @@ private slots:
             return pointing->count();
         };
         QCOMPARE(plotted(), 0); // positions, but nothing tracked yet
+        QVERIFY(charts->findChild<QWidget *>(QStringLiteral("chartPointing"))->isHidden());
 
         QTest::mouseClick(panel->trackButton(), Qt::LeftButton);
         TRY_VERIFY(panel->runner()->tracker().state() == slew::tracking::Tracker::State::Tracking);
         TRY_VERIFY(plotted() > 10);
+        QVERIFY(!charts->findChild<QWidget *>(QStringLiteral("chartPointing"))->isHidden());
         for (const QPointF &p : pointing->points())
             QVERIFY2(p.y() >= 0.0 && p.y() < 180.0, qPrintable(QString::number(p.y())));
 
