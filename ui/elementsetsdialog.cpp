@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "elementsetsdialog.h"
 
+#include "elementsetages.h"
+
 #include "sky/skyvector.h"
 #include "sky/tlesources.h"
 
@@ -31,14 +33,6 @@ QString count(qsizetype n, const QString &one, const QString &many)
 }
 
 enum Column { SourceColumn, StateColumn, SetsColumn, AgeColumn, RefusedColumn };
-
-QString describeAge(const QDateTime &cachedAt)
-{
-    if (!cachedAt.isValid())
-        return QObject::tr("no copy");
-    const double days = cachedAt.secsTo(QDateTime::currentDateTimeUtc()) / 86400.0;
-    return days < 1.0 ? QObject::tr("%1 h").arg(days * 24.0, 0, 'f', 1) : QObject::tr("%1 days").arg(days, 0, 'f', 1);
-}
 
 QString describeState(const sky::TleSourceStatus &s)
 {
@@ -208,7 +202,7 @@ void ElementSetsDialog::showStatus()
         item->setText(SourceColumn, s.url.toString());
         item->setText(StateColumn, describeState(s));
         item->setText(SetsColumn, QString::number(s.setCount));
-        item->setText(AgeColumn, describeAge(s.cachedAt));
+        item->setText(AgeColumn, describeAgeSince(s.cachedAt));
         item->setText(RefusedColumn, QString::number(s.refusals.size()));
         QStringList refusals;
         for (const sky::TleRefusal &r : s.refusals)

@@ -167,6 +167,9 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
     connect(m_alignment, &AlignmentPanel::message, this, &MainWindow::logInfo);
     connect(m_tracking, &TrackingPanel::passOverlayChanged, m_plot, &PolarPlotWidget::setPassOverlay);
     connect(m_tracking, &TrackingPanel::passTargetMoved, m_plot, &PolarPlotWidget::setPassTarget);
+    // What the tracker measures while it tracks is charted with the rest.
+    connect(&m_tracking->runner()->tracker(), &tracking::Tracker::pointingError, m_recorder,
+            &TelemetryRecorder::recordPointingError);
     // While Slew tracks, trackers on the rotctld port are held off.
     connect(m_tracking, &TrackingPanel::trackingActiveChanged, m_rotctld, [this](bool active) {
         if (active)

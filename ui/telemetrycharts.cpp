@@ -15,6 +15,7 @@
 #include <QMetaEnum>
 #include <QPushButton>
 #include <QSaveFile>
+#include <QScatterSeries>
 #include <QValueAxis>
 #include <QVBoxLayout>
 
@@ -88,7 +89,11 @@ TelemetryCharts::TelemetryCharts(const model::TelemetryHistory *history, QWidget
     addPanel(tr("Load"), QString(), {{Series::AzLoad, az}, {Series::ElLoad, el}});
     addPanel(tr("Temp"), QStringLiteral("°C"), {{Series::Temperature, QColor(0xf2, 0x9a, 0x3c)}});
     addPanel(tr("Status"), QString(),
-             {{Series::AzStatus, az}, {Series::ElStatus, el}, {Series::ErrorFlags, QColor(0xe5, 0x48, 0x48)}}, true);
+             {{Series::AzStatus, az}, {Series::ElStatus, el}, {Series::ErrorFlags, QColor(0xe5, 0x48, 0x48)}},
+             Drawn::Steps);
+    addPanel(tr("Pointing"), QStringLiteral("°"), {{Series::PointingError, QColor(0xf2, 0x6b, 0x9a)}}, Drawn::Dots);
+    m_panels.back().hiddenUntilRecorded = true;
+    m_panels.back().view->hide();
     for (Panel &p : m_panels)
         layout->addWidget(p.view, 1);
 
@@ -111,7 +116,7 @@ void TelemetryCharts::setElevationShown(bool shown)
 }
 
 void TelemetryCharts::addPanel(const QString &title, const QString &unit,
-                               std::initializer_list<std::pair<Series, QColor>> series, bool step)
+                               std::initializer_list<std::pair<Series, QColor>> series, Drawn drawn)
 {
     Panel p;
     p.chart = new QChart;
@@ -139,17 +144,26 @@ void TelemetryCharts::addPanel(const QString &title, const QString &unit,
     p.chart->addAxis(p.value, Qt::AlignLeft);
     const QMetaEnum names = QMetaEnum::fromType<Series>();
     for (const auto &[id, colour] : series) {
-        auto *line = new QLineSeries;
+        QXYSeries *line = nullptr;
+        if (drawn == Drawn::Dots) {
+            auto *dots = new QScatterSeries;
+            dots->setMarkerSize(4);
+            dots->setColor(colour);
+            dots->setBorderColor(colour);
+            line = dots;
+        } else {
+            line = new QLineSeries;
+            QPen pen(colour, 1.5);
+            if (id == Series::AzCommanded || id == Series::ElCommanded)
+                pen.setStyle(Qt::DashLine);
+            line->setPen(pen);
+        }
         line->setObjectName(QStringLiteral("series%1").arg(QLatin1String(names.valueToKey(id))));
         line->setName(TelemetryRecorder::seriesLabel(id));
-        QPen pen(colour, 1.5);
-        if (id == Series::AzCommanded || id == Series::ElCommanded)
-            pen.setStyle(Qt::DashLine);
-        line->setPen(pen);
         p.chart->addSeries(line);
         line->attachAxis(p.time);
         line->attachAxis(p.value);
-        p.plotted.push_back({id, line, step});
+        p.plotted.push_back({id, line, drawn == Drawn::Steps});
     }
     p.view = new QChartView(p.chart);
     p.view->setObjectName(QStringLiteral("chart%1").arg(QString(title).remove(QLatin1Char('/'))));
@@ -158,7 +172,7 @@ void TelemetryCharts::addPanel(const QString &title, const QString &unit,
     m_panels.push_back(p);
 }
 
-QLineSeries *TelemetryCharts::series(Series s) const
+QXYSeries *TelemetryCharts::series(Series s) const
 {
     for (const Panel &p : m_panels)
         for (const Plotted &pl : p.plotted)
@@ -203,8 +217,16 @@ void TelemetryCharts::redraw()
         return;
     const qint64 to = QDateTime::currentMSecsSinceEpoch();
     const qint64 from = to - m_windowMs;
-    for (Panel &p : m_panels)
+    for (Panel &p : m_panels) {
+        if (p.hiddenUntilRecorded && p.view->isHidden()) {
+            const bool recorded = std::any_of(p.plotted.begin(), p.plotted.end(),
+                                              [this](const Plotted &pl) { return m_history->sampleCount(pl.id) > 0; });
+            if (!recorded)
+                continue;
+            p.view->show();
+        }
         redrawPanel(p, from, to);
+    }
     ++m_redraws;
 }
 

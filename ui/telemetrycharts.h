@@ -1,6 +1,9 @@
 #pragma once
 // Live charts of the recorded telemetry: position actual vs commanded, speed
-// (IP7/IP8), load (IP5/IP6), temperature (IP0), and GS/GE as step lines.
+// (IP7/IP8), load (IP5/IP6), temperature (IP0), GS/GE as step lines, and the
+// pointing error while Slew tracks, as dots: a line would join one pass to
+// the next across the hours between them. That panel appears once there is
+// a pointing error to show, so a window that never tracks keeps its room.
 // The window runs from one minute to 24 hours; each redraw asks the history
 // for at most two points per pixel column, so a day of 10 Hz samples costs
 // no more to draw than a minute. Pausing freezes the view, not the record.
@@ -14,7 +17,7 @@
 
 class QComboBox;
 class QLabel;
-class QLineSeries;
+class QXYSeries;
 class QPushButton;
 class QChart;
 class QChartView;
@@ -32,7 +35,7 @@ public:
     qint64 windowMs() const { return m_windowMs; }
     void setWindowMs(qint64 ms); // clamped to 1 min .. 24 h
     bool isPaused() const { return m_paused; }
-    QLineSeries *series(TelemetryRecorder::Series s) const;
+    QXYSeries *series(TelemetryRecorder::Series s) const;
     int redrawCount() const { return m_redraws; }
 
     // Writes every sample of the current window as CSV (one row per sample:
@@ -48,9 +51,10 @@ public slots:
     void redraw();
 
 private:
+    enum class Drawn { Lines, Steps, Dots };
     struct Plotted {
         TelemetryRecorder::Series id;
-        QLineSeries *line;
+        QXYSeries *line;
         bool step;
     };
     struct Panel {
@@ -59,9 +63,10 @@ private:
         QDateTimeAxis *time;
         QValueAxis *value;
         std::vector<Plotted> plotted;
+        bool hiddenUntilRecorded = false;
     };
     void addPanel(const QString &title, const QString &unit,
-                  std::initializer_list<std::pair<TelemetryRecorder::Series, QColor>> series, bool step = false);
+                  std::initializer_list<std::pair<TelemetryRecorder::Series, QColor>> series, Drawn drawn = Drawn::Lines);
     void redrawPanel(Panel &panel, qint64 from, qint64 to);
     void chooseExportFile();
 

@@ -58,6 +58,7 @@ QString TelemetryRecorder::seriesLabel(Series s)
     case AzStatus: return tr("GS az");
     case ElStatus: return tr("GS el");
     case ErrorFlags: return tr("GE");
+    case PointingError: return tr("Pointing error");
     default: return {};
     }
 }
@@ -72,6 +73,12 @@ void TelemetryRecorder::record(Series s, qint64 now, double value, bool onlyOnCh
     m_lastValue[s] = value;
     m_lastTime[s] = now;
     m_history.append(s, now, value);
+}
+
+void TelemetryRecorder::recordPointingError(double degrees)
+{
+    record(PointingError, QDateTime::currentMSecsSinceEpoch(), degrees, false);
+    emit recorded();
 }
 
 void TelemetryRecorder::onTelemetry(const session::Telemetry &t)

@@ -1,7 +1,8 @@
 #pragma once
 // Writes what the session reports into a TelemetryHistory: position, the
 // commanded position (CR10/CR11), speed, load, temperature, and the status
-// and error registers. Recording goes on while the charts are paused.
+// and error registers; and, while Slew tracks, the pointing error the
+// tracker measures. Recording goes on while the charts are paused.
 
 #include "model/telemetryhistory.h"
 #include "session/rotatorsession.h"
@@ -17,7 +18,7 @@ class TelemetryRecorder : public QObject {
 public:
     enum Series {
         AzActual, ElActual, AzCommanded, ElCommanded, AzVelocity, ElVelocity,
-        AzLoad, ElLoad, Temperature, AzStatus, ElStatus, ErrorFlags, SeriesCount
+        AzLoad, ElLoad, Temperature, AzStatus, ElStatus, ErrorFlags, PointingError, SeriesCount
     };
     Q_ENUM(Series)
 
@@ -33,6 +34,12 @@ public:
     {
         return s == ElActual || s == ElCommanded || s == ElVelocity || s == ElLoad || s == ElStatus;
     }
+
+public slots:
+    // The angle on the sky between antenna and target, in degrees, as the
+    // tracker measures it on each position while it tracks. Between passes
+    // nothing is recorded: the series has a gap, not zeros.
+    void recordPointingError(double degrees);
 
 signals:
     void recorded(); // something was added

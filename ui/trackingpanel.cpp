@@ -1,4 +1,9 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "trackingpanel.h"
+
+#include "elementsetages.h"
+#include "elementsetsdialog.h"
+#include "targetpicker.h"
 
 #include "session/rotatorsession.h"
 #include "sky/observation.h"
@@ -12,8 +17,6 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
-#include <QLineEdit>
-#include <QListWidget>
 #include <QPushButton>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -27,7 +30,6 @@ using tracking::TrackTarget;
 namespace {
 
 constexpr double kLookAheadDays = 1.0;
-constexpr int kMostTargetsListed = 300; // a full catalogue is searched, not scrolled
 constexpr double kDopplerReferenceHz = 435e6;
 
 QString hms(double seconds)
@@ -60,12 +62,8 @@ TrackingPanel::TrackingPanel(session::RotatorSession *session, sky::TleSources *
     setObjectName(QStringLiteral("trackingPanel"));
     m_stationLine = new QLabel;
     m_stationLine->setObjectName(QStringLiteral("trackingStation"));
-    m_setsLine = new QLabel;
-    m_search = new QLineEdit;
-    m_search->setObjectName(QStringLiteral("targetSearch"));
-    m_search->setPlaceholderText(tr("satellite name or number, sun, moon"));
-    m_targets = new QListWidget;
-    m_targets->setObjectName(QStringLiteral("targets"));
+    m_setAges = new ElementSetAges(m_sets);
+    m_picker = new TargetPicker(m_sets);
     m_passes = new QTableWidget(0, 6);
     m_passes->setObjectName(QStringLiteral("passes"));
     m_passes->setHorizontalHeaderLabels({tr("AOS (UTC)"), tr("AOS az"), tr("Max el"), tr("LOS (UTC)"), tr("LOS az"), tr("Plan")});
@@ -91,25 +89,23 @@ TrackingPanel::TrackingPanel(session::RotatorSession *session, sky::TleSources *
 
     auto *top = new QFormLayout;
     top->addRow(tr("Station"), m_stationLine);
-    top->addRow(tr("Element sets"), m_setsLine);
-    top->addRow(tr("Target"), m_search);
+    top->addRow(tr("Element sets"), m_setAges);
     auto *buttons = new QHBoxLayout;
     buttons->addWidget(m_countdown, 1);
     buttons->addWidget(m_track);
     buttons->addWidget(m_stopTracking);
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(top);
-    layout->addWidget(m_targets, 1);
+    layout->addWidget(m_picker, 1);
     layout->addWidget(m_passes, 2);
     layout->addLayout(buttons);
     layout->addWidget(m_live);
 
-    connect(m_search, &QLineEdit::textChanged, this, &TrackingPanel::fillTargets);
-    connect(m_targets, &QListWidget::currentRowChanged, this, &TrackingPanel::onTargetChosen);
+    connect(m_picker, &TargetPicker::chosenChanged, this, &TrackingPanel::showPasses);
     connect(m_passes, &QTableWidget::itemSelectionChanged, this, &TrackingPanel::onPassChosen);
     connect(m_track, &QPushButton::clicked, this, &TrackingPanel::startTracking);
     connect(m_stopTracking, &QPushButton::clicked, this, [this] { m_runner->stop(tr("stopped from the Tracking tab")); });
-    connect(m_sets, &sky::TleSources::finished, this, &TrackingPanel::fillTargets);
+    connect(m_sets, &sky::TleSources::finished, this, &TrackingPanel::showSetAges);
     connect(m_session, &session::RotatorSession::profileChanged, this, &TrackingPanel::showPasses);
     connect(m_runner.get(), &tracking::PassRunner::logLine, this, &TrackingPanel::message);
     connect(m_runner.get(), &tracking::PassRunner::activeChanged, this, &TrackingPanel::trackingActiveChanged);
@@ -120,7 +116,6 @@ TrackingPanel::TrackingPanel(session::RotatorSession *session, sky::TleSources *
     connect(&m_tick, &QTimer::timeout, this, &TrackingPanel::refreshLive);
     m_tick.start(1000);
     setStation(std::nullopt);
-    fillTargets();
 }
 
 TrackingPanel::~TrackingPanel()
@@ -141,61 +136,29 @@ void TrackingPanel::setClock(const tracking::StationClock *clock)
     showPasses();
 }
 
-void TrackingPanel::fillTargets()
+void TrackingPanel::showSetAges()
 {
-    const QString wanted = m_search->text().trimmed();
-    const QList<sky::Tle> sets = m_sets->sets();
-    m_setsLine->setText(tr("%n set(s) loaded", nullptr, int(sets.size())));
-    const QString current = m_targets->currentItem() ? m_targets->currentItem()->text() : QString();
-    m_targets->clear();
-    for (const QString &body : {tr("Sun"), tr("Moon")}) {
-        if (wanted.isEmpty() || body.startsWith(wanted, Qt::CaseInsensitive))
-            m_targets->addItem(body);
-    }
-    const QList<const sky::Tle *> found = wanted.isEmpty() ? QList<const sky::Tle *>() : sky::findTles(sets, wanted);
-    QList<sky::Tle> shown;
-    if (wanted.isEmpty()) {
-        shown = sets.mid(0, kMostTargetsListed);
-    } else {
-        for (const sky::Tle *t : found.mid(0, kMostTargetsListed))
-            shown.append(*t);
-    }
-    for (const sky::Tle &t : shown) {
-        auto *item = new QListWidgetItem(t.name.isEmpty() ? QString::number(t.catalogueNumber) : t.name);
-        item->setData(Qt::UserRole, t.catalogueNumber);
-        m_targets->addItem(item);
-    }
-    const QList<QListWidgetItem *> again = m_targets->findItems(current, Qt::MatchExactly);
-    if (!again.isEmpty())
-        m_targets->setCurrentItem(again.first());
+    m_setAges->refresh(m_clock->nowJulian(), ElementSetsDialog::savedAgeLimitDays());
 }
 
 bool TrackingPanel::selectTarget(const QString &name)
 {
-    m_search->setText(name);
-    if (m_targets->count() == 0)
-        return false;
-    m_targets->setCurrentRow(0);
-    return true;
+    return m_picker->selectTarget(name);
 }
 
 std::optional<TrackTarget> TrackingPanel::chosenTarget() const
 {
-    const QListWidgetItem *item = m_targets->currentItem();
-    if (!item)
+    const std::optional<sky::FavouriteTarget> chosen = m_picker->chosen();
+    if (!chosen || m_picker->chosenIsMissing())
         return std::nullopt;
     TrackTarget target;
-    if (item->text() == tr("Sun")) {
-        target.kind = TrackTarget::Kind::Sun;
-        return target;
+    switch (chosen->kind) {
+    case sky::FavouriteTarget::Kind::Sun: target.kind = TrackTarget::Kind::Sun; return target;
+    case sky::FavouriteTarget::Kind::Moon: target.kind = TrackTarget::Kind::Moon; return target;
+    case sky::FavouriteTarget::Kind::Satellite: break;
     }
-    if (item->text() == tr("Moon")) {
-        target.kind = TrackTarget::Kind::Moon;
-        return target;
-    }
-    const int number = item->data(Qt::UserRole).toInt();
     for (const sky::Tle &t : m_sets->sets()) {
-        if (t.catalogueNumber == number) {
+        if (t.catalogueNumber == chosen->catalogueNumber) {
             target.elements = t;
             return target;
         }
@@ -219,11 +182,6 @@ QList<tracking::SkyPoint> TrackingPanel::sample(const sky::Pass &pass) const
                                     *m_station, pass.aos.julian, pass.los.julian, 10.0);
 }
 
-void TrackingPanel::onTargetChosen()
-{
-    showPasses();
-}
-
 void TrackingPanel::showPasses()
 {
     m_passes->setRowCount(0);
@@ -232,6 +190,7 @@ void TrackingPanel::showPasses()
     const auto target = chosenTarget();
     if (!target || !m_station) {
         emit passOverlayChanged(std::nullopt);
+        refreshLive();
         return;
     }
     const double now = m_clock->nowJulian();
@@ -304,6 +263,7 @@ void TrackingPanel::startTracking()
 
 void TrackingPanel::refreshLive()
 {
+    showSetAges(); // the elements age as the station's clock runs
     const double now = m_clock->nowJulian();
     const sky::Pass *next = nullptr;
     for (const sky::Pass &p : m_passList) {
@@ -312,7 +272,9 @@ void TrackingPanel::refreshLive()
             break;
         }
     }
-    if (!next) {
+    if (m_picker->chosenIsMissing()) {
+        m_countdown->setText(tr("not in the loaded element sets"));
+    } else if (!next) {
         m_countdown->setText(m_passList.isEmpty() && chosenTarget() ? tr("no pass in the next day") : QString());
     } else if (next->aos.julian > now) {
         m_countdown->setText(tr("AOS in %1").arg(hms((next->aos.julian - now) * sky::kSecondsPerDay)));

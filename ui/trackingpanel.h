@@ -1,6 +1,7 @@
 #pragma once
-// The Tracking tab: the station and the element sets, a target (a satellite
-// found by name, the sun or the moon), its passes in the next day with the
+// The Tracking tab: the station and the element sets with their age, a
+// target (a satellite found by name, the sun or the moon, favourites first:
+// targetpicker.h), its passes in the next day with the
 // plan each would get on this rotator (a badge for the overlap, the flip, an
 // unwind or a lag), a countdown to AOS, Track and Stop tracking, and while
 // it runs the target's place, range, range-rate and Doppler and the
@@ -20,8 +21,6 @@
 #include <optional>
 
 class QLabel;
-class QLineEdit;
-class QListWidget;
 class QPushButton;
 class QTableWidget;
 
@@ -33,6 +32,9 @@ class TleSources;
 }
 
 namespace slew::ui {
+
+class ElementSetAges;
+class TargetPicker;
 
 class TrackingPanel : public QWidget {
     Q_OBJECT
@@ -54,6 +56,8 @@ public:
     QLabel *countdown() const { return m_countdown; }
     QLabel *live() const { return m_live; }
     tracking::PassRunner *runner() const { return m_runner.get(); }
+    TargetPicker *targetPicker() const { return m_picker; }
+    ElementSetAges *elementSetAges() const { return m_setAges; }
     const QList<sky::Pass> &passes() const { return m_passList; }
 
 signals:
@@ -65,8 +69,7 @@ signals:
     void trackingActiveChanged(bool active);
 
 private:
-    void fillTargets();
-    void onTargetChosen();
+    void showSetAges();
     void showPasses();
     void onPassChosen();
     void refreshLive();
@@ -85,9 +88,8 @@ private:
     QList<tracking::PassPlan> m_plans;
 
     QLabel *m_stationLine;
-    QLabel *m_setsLine;
-    QLineEdit *m_search;
-    QListWidget *m_targets;
+    ElementSetAges *m_setAges;
+    TargetPicker *m_picker;
     QTableWidget *m_passes;
     QLabel *m_countdown;
     QLabel *m_live;

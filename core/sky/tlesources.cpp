@@ -11,6 +11,8 @@
 #include <QNetworkRequest>
 #include <QSaveFile>
 
+#include <algorithm>
+
 namespace slew::sky {
 
 TleSources::TleSources(const QString &cacheDirectory, QObject *parent)
@@ -141,6 +143,14 @@ QList<ElementAge> staleElements(const QList<Tle> &sets, double julianNow, double
             stale.append({&t, age});
     }
     return stale;
+}
+
+std::optional<double> newestEpochJulian(const QList<Tle> &sets)
+{
+    std::optional<double> newest;
+    for (const Tle &t : sets)
+        newest = std::max(newest.value_or(t.epochJulian()), t.epochJulian());
+    return newest;
 }
 
 } // namespace slew::sky

@@ -13,6 +13,8 @@
 #include <QString>
 #include <QUrl>
 
+#include <optional>
+
 class QNetworkAccessManager;
 class QNetworkReply;
 
@@ -73,5 +75,9 @@ struct ElementAge {
     double ageDays = 0;
 };
 QList<ElementAge> staleElements(const QList<Tle> &sets, double julianNow, double limitDays);
+
+// The epoch of the newest set (a Julian date), none for no sets: how current
+// a source is, as a group file holds sets of many ages.
+std::optional<double> newestEpochJulian(const QList<Tle> &sets);
 
 } // namespace slew::sky

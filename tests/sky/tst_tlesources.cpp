@@ -118,6 +118,10 @@ void TestTleSources::staleElements()
     QCOMPARE(veryStale.size(), 1);
     QCOMPARE(veryStale[0].tle->catalogueNumber, 25544);
     QVERIFY(veryStale[0].ageDays > 3400);
+
+    // A source is as current as its newest set: NOAA 19's.
+    QVERIFY(!slew::sky::newestEpochJulian({}).has_value());
+    QCOMPARE(slew::sky::newestEpochJulian(read.sets).value(), read.sets[1].epochJulian());
 }
 
 QTEST_GUILESS_MAIN(TestTleSources)

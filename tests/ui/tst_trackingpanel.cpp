@@ -5,23 +5,83 @@
 // tracking, with remote trackers held off while Slew has the rotator. A
 // rehearsal clock puts the station on 2018-01-22, eleven seconds before a
 // pass of FLOCK 2P-1 over JO65hq, in the element sets' time.
+//
+// Favourites come first in the target list, persist in the settings and
+// outlive a reload that lacks them (shown as missing); each element-set
+// source says how old its newest elements are, in the warning colour past
+// the age limit; and the pointing error is charted while a pass is tracked.
 
 #include "windowfixture.h"
 
 #include "bridge/rotctldserver.h"
+#include "elementsetages.h"
 #include "polarplotwidget.h"
 #include "sky/tlesources.h"
 #include "sky/utctime.h"
 #include "stopbutton.h"
+#include "targetpicker.h"
+#include "telemetrycharts.h"
 #include "trackingpanel.h"
 
+#include <QFile>
 #include <QLabel>
+#include <QListWidget>
 #include <QPushButton>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QTableWidget>
+#include <QTemporaryDir>
 #include <QTest>
+#include <QToolButton>
+#include <QXYSeries>
 
+using slew::ui::TelemetryRecorder;
 using slew::ui::TrackingPanel;
+
+namespace {
+
+const QString kAllSets = QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle");
+
+bool loadSets(slew::sky::TleSources *sets, const QString &file)
+{
+    sets->setUrls({QUrl::fromLocalFile(file)});
+    QSignalSpy loaded(sets, &slew::sky::TleSources::finished);
+    sets->refresh();
+    return loaded.count() > 0 || loaded.wait(5000);
+}
+
+// The rehearsal station, JO65hq, on a clock that starts at `iso`.
+void rehearse(TrackingPanel *panel, const slew::tracking::StationClock &clock)
+{
+    slew::sky::Station station;
+    QString error;
+    QVERIFY(slew::sky::parseStation(QStringLiteral("JO65hq"), &station, &error));
+    panel->setClock(&clock);
+    panel->setStation(station);
+}
+
+// The overlap and flip rotator (450°/180°) on a manual-clock simulator.
+const QString kOverlapAndFlip = QStringLiteral("sim:?clock=manual&az_max=450&el_max=180");
+
+bool connectWithOverlapAndFlip(WindowFixture &f)
+{
+    if (!f.connectAndWait())
+        return false;
+    slew::model::RotatorProfile profile = f.session.profile();
+    profile.limits = slew::model::RotatorLimits{0, 450, 0, 180};
+    f.session.setProfile(profile);
+    return true;
+}
+
+QStringList rows(const QListWidget *list)
+{
+    QStringList texts;
+    for (int row = 0; row < list->count(); ++row)
+        texts << list->item(row)->text();
+    return texts;
+}
+
+} // namespace
 
 class TrackingPanelTest : public QObject {
     Q_OBJECT
@@ -30,26 +90,13 @@ private slots:
 
     void plansTheNextPassesAndTracks()
     {
-        WindowFixture f(QStringLiteral("sim:?clock=manual&az_max=450&el_max=180"));
-        QVERIFY(f.connectAndWait());
-        slew::model::RotatorProfile profile = f.session.profile();
-        profile.limits = slew::model::RotatorLimits{0, 450, 0, 180};
-        f.session.setProfile(profile);
-
+        WindowFixture f(kOverlapAndFlip);
+        QVERIFY(connectWithOverlapAndFlip(f));
         // The element sets, from a local file as an operator may list one.
-        slew::sky::TleSources *sets = f.window->elementSets();
-        sets->setUrls({QUrl::fromLocalFile(QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"))});
-        QSignalSpy loaded(sets, &slew::sky::TleSources::finished);
-        sets->refresh();
-        QVERIFY(loaded.wait(5000));
-
+        QVERIFY(loadSets(f.window->elementSets(), kAllSets));
         TrackingPanel *panel = f.window->trackingPanel();
         const slew::tracking::StationClock clock(slew::sky::julianFromIso(QStringLiteral("2018-01-22T07:42:45Z")), 1.0);
-        panel->setClock(&clock);
-        slew::sky::Station station;
-        QString error;
-        QVERIFY(slew::sky::parseStation(QStringLiteral("JO65hq"), &station, &error));
-        panel->setStation(station);
+        rehearse(panel, clock);
         QVERIFY(panel->selectTarget(QStringLiteral("FLOCK 2P-1")));
 
         // The day's passes, the first as `slew --passes` gives it, each with its plan.
@@ -94,13 +141,152 @@ private slots:
         QTest::mouseClick(f.window->stopButton(), Qt::LeftButton);
         QVERIFY(!panel->runner()->isRunning());
 
-        // A picture of the tab, for the eye.
+        // A picture of the tab, for the eye, with the target a favourite.
+        QTest::mouseClick(panel->targetPicker()->favouriteButton(), Qt::LeftButton);
+        QCOMPARE(panel->targetPicker()->list()->currentItem()->text(), QStringLiteral("★ FLOCK 2P-1"));
         f.window->tabs()->setCurrentWidget(panel);
         f.window->resize(1440, 900);
         f.window->show();
         QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
         QDir().mkpath(QStringLiteral("screenshots"));
         QVERIFY(f.window->grab().save(QStringLiteral("screenshots/tracking-tab.png")));
+        QSettings().remove(QStringLiteral("tracking/favourites"));
+    }
+
+    void favouritesComeFirstPersistAndOutliveAReload()
+    {
+        QTemporaryDir dir;
+        // Two other satellites: a reload that lacks FLOCK 2P-1.
+        const QString others = dir.filePath(QStringLiteral("others.tle"));
+        {
+            QFile all(kAllSets), out(others);
+            QVERIFY(all.open(QIODevice::ReadOnly) && out.open(QIODevice::WriteOnly));
+            const QList<QByteArray> lines = all.readAll().split('\n');
+            for (int i = 9; i < 15; ++i) // after the header and FLOCK 2P-1's three lines
+                out.write(lines[i] + '\n');
+        }
+        {
+            WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
+            TrackingPanel *panel = f.window->trackingPanel();
+            QVERIFY(loadSets(f.window->elementSets(), kAllSets));
+            QVERIFY(panel->selectTarget(QStringLiteral("FLOCK 2P-1")));
+            QCOMPARE(panel->targetPicker()->favouriteButton()->text(), QStringLiteral("☆"));
+            QTest::mouseClick(panel->targetPicker()->favouriteButton(), Qt::LeftButton);
+            QVERIFY(panel->targetPicker()->favouriteButton()->isChecked());
+            QCOMPARE(panel->targetPicker()->favouriteButton()->text(), QStringLiteral("★"));
+            QVERIFY(panel->selectTarget(QStringLiteral("moon")));
+            QTest::mouseClick(panel->targetPicker()->favouriteButton(), Qt::LeftButton);
+
+            // With no search, the favourites head the list, in the order marked.
+            QVERIFY(panel->selectTarget(QString()));
+            QStringList listed = rows(panel->targetPicker()->list());
+            QCOMPARE(listed.mid(0, 3), (QStringList{QStringLiteral("★ FLOCK 2P-1"), QStringLiteral("★ Moon"), QStringLiteral("Sun")}));
+            QCOMPARE(listed.count(QStringLiteral("FLOCK 2P-1")), 0); // listed once
+            QCOMPARE(QSettings().value(QStringLiteral("tracking/favourites")).toStringList(),
+                     (QStringList{QStringLiteral("41617 FLOCK 2P-1"), QStringLiteral("moon")}));
+            // The station only now: the moon's passes take long to plan.
+            const slew::tracking::StationClock clock(slew::sky::julianFromIso(QStringLiteral("2018-01-22T07:42:45Z")), 1.0);
+            rehearse(panel, clock);
+            QVERIFY(panel->passTable()->rowCount() > 0);
+            QTest::mouseClick(panel->targetPicker()->favouritesOnlyButton(), Qt::LeftButton);
+            QCOMPARE(panel->targetPicker()->list()->count(), 2);
+            QCOMPARE(panel->targetPicker()->list()->currentRow(), 0);
+            QVERIFY(panel->passTable()->rowCount() > 0);
+
+            // A reload without it: still listed, as missing, and nothing to plan.
+            QVERIFY(loadSets(f.window->elementSets(), others));
+            listed = rows(panel->targetPicker()->list());
+            QCOMPARE(listed.size(), 2);
+            QCOMPARE(listed[0], QStringLiteral("★ FLOCK 2P-1 (41617): not in the loaded element sets"));
+            panel->targetPicker()->list()->setCurrentRow(0);
+            QCOMPARE(panel->passTable()->rowCount(), 0);
+            QCOMPARE(panel->countdown()->text(), QStringLiteral("not in the loaded element sets"));
+            QVERIFY(panel->targetPicker()->favouriteButton()->isChecked()); // and can be unmarked from here
+        }
+
+        // Another run of Slew: the favourites are read back; the sets come
+        // back with the source, and with them the satellite.
+        WindowFixture g(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
+        TrackingPanel *panel = g.window->trackingPanel();
+        QCOMPARE(rows(panel->targetPicker()->list()).mid(0, 2),
+                 (QStringList{QStringLiteral("★ FLOCK 2P-1 (41617): not in the loaded element sets"), QStringLiteral("★ Moon")}));
+        QVERIFY(loadSets(g.window->elementSets(), kAllSets));
+        QCOMPARE(panel->targetPicker()->list()->item(0)->text(), QStringLiteral("★ FLOCK 2P-1"));
+
+        // Unmarked with the star: gone from the favourites and the settings.
+        panel->targetPicker()->list()->setCurrentRow(0);
+        QTest::mouseClick(panel->targetPicker()->favouriteButton(), Qt::LeftButton);
+        QVERIFY(!panel->targetPicker()->favouriteButton()->isChecked());
+        QCOMPARE(panel->targetPicker()->list()->item(0)->text(), QStringLiteral("★ Moon"));
+        QCOMPARE(QSettings().value(QStringLiteral("tracking/favourites")).toStringList(), QStringList{QStringLiteral("moon")});
+        QSettings().remove(QStringLiteral("tracking/favourites"));
+    }
+
+    void eachSourceSaysHowOldItsElementsAre()
+    {
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
+        TrackingPanel *panel = f.window->trackingPanel();
+        slew::ui::ElementSetAges *ages = panel->elementSetAges();
+        QCOMPARE(ages->lines().size(), 1);
+        QVERIFY2(ages->lines()[0]->text().startsWith(QStringLiteral("none loaded")), qPrintable(ages->lines()[0]->text()));
+
+        QVERIFY(loadSets(f.window->elementSets(), kAllSets));
+        // The newest set is from 2018-01-22 01:04:49 UTC: fresh on the morning of the pass.
+        const slew::tracking::StationClock morning(slew::sky::julianFromIso(QStringLiteral("2018-01-22T07:42:45Z")), 1.0);
+        rehearse(panel, morning);
+        QLabel *line = ages->lines()[0];
+        QVERIFY2(line->text().startsWith(QStringLiteral("gpredict-satellites-2018.tle: 979 set(s), newest elements 6.6 h old, downloaded ")),
+                 qPrintable(line->text()));
+        QVERIFY(!slew::ui::ElementSetAges::isStale(line));
+
+        // Three weeks later the same sets are past the 7-day limit: a warning.
+        const slew::tracking::StationClock later(slew::sky::julianFromIso(QStringLiteral("2018-02-15T01:04:49Z")), 1.0);
+        rehearse(panel, later);
+        QVERIFY2(line->text().contains(QStringLiteral("newest elements 24.0 days old")), qPrintable(line->text()));
+        QVERIFY2(line->text().contains(QStringLiteral("older than 7 days")), qPrintable(line->text()));
+        QVERIFY(slew::ui::ElementSetAges::isStale(line));
+        QVERIFY(!line->styleSheet().isEmpty());
+    }
+
+    void chartsThePointingErrorWhileTracking()
+    {
+        WindowFixture f(kOverlapAndFlip);
+        QVERIFY(connectWithOverlapAndFlip(f));
+        QVERIFY(loadSets(f.window->elementSets(), kAllSets));
+        TrackingPanel *panel = f.window->trackingPanel();
+        // A minute into the pass: tracking starts at once.
+        const slew::tracking::StationClock clock(slew::sky::julianFromIso(QStringLiteral("2018-01-22T07:44:00Z")), 1.0);
+        rehearse(panel, clock);
+        QVERIFY(panel->selectTarget(QStringLiteral("FLOCK 2P-1")));
+
+        slew::ui::TelemetryCharts *charts = f.window->telemetryCharts();
+        QXYSeries *pointing = charts->series(TelemetryRecorder::PointingError);
+        QVERIFY(pointing);
+        auto plotted = [&] {
+            charts->redraw();
+            return pointing->count();
+        };
+        QCOMPARE(plotted(), 0); // positions, but nothing tracked yet
+        QVERIFY(charts->findChild<QWidget *>(QStringLiteral("chartPointing"))->isHidden());
+
+        QTest::mouseClick(panel->trackButton(), Qt::LeftButton);
+        TRY_VERIFY(panel->runner()->tracker().state() == slew::tracking::Tracker::State::Tracking);
+        TRY_VERIFY(plotted() > 10);
+        QVERIFY(!charts->findChild<QWidget *>(QStringLiteral("chartPointing"))->isHidden());
+        for (const QPointF &p : pointing->points())
+            QVERIFY2(p.y() >= 0.0 && p.y() < 180.0, qPrintable(QString::number(p.y())));
+
+        // Stopped: positions go on, the pointing error does not.
+        QTest::mouseClick(panel->stopTrackingButton(), Qt::LeftButton);
+        const int afterStop = plotted();
+        int positions = 0;
+        QObject::connect(&f.session, &slew::session::RotatorSession::positionChanged, panel, [&] { ++positions; });
+        TRY_VERIFY(positions > 20);
+        QCOMPARE(plotted(), afterStop);
+
+        f.window->tabs()->setCurrentWidget(charts);
+        QDir().mkpath(QStringLiteral("screenshots"));
+        QVERIFY(f.window->grab().save(QStringLiteral("screenshots/telemetry-pointing-error.png")));
     }
 
     void saysWhatIsMissing()

@@ -163,6 +163,8 @@ private slots:
         const auto views = charts->findChildren<QChartView *>();
         QVERIFY(views.size() >= 4);
         for (QChartView *view : views) {
+            if (view->isHidden())
+                continue; // the pointing error's, until Slew tracks
             const AxisLabels labels = labelsOf(view->chart());
             const QString all = labels.values.join(u' ') + QStringLiteral(" | ") + labels.times.join(u' ');
             QVERIFY2(labels.values.size() >= 2, qPrintable(all));
