@@ -198,6 +198,7 @@ void Parser::decodeReply()
     if (const char *why = positionRefusal(f.azimuth, f.elevation, m_dialect)) {
         f.kind = Frame::Kind::Refused;
         f.reason = why;
+        f.outOfRange = true;
         return;
     }
     if (m_dialect != Dialect::Rot1Prog) {
@@ -243,8 +244,10 @@ void Parser::decodeCommand()
         f.azimuth = double(h) / f.azimuthPulses - 360.0;
         f.elevation = double(v) / f.elevationPulses - 360.0;
     }
-    if (const char *why = positionRefusal(f.azimuth, f.elevation, m_dialect))
+    if (const char *why = positionRefusal(f.azimuth, f.elevation, m_dialect)) {
         refuse(why);
+        f.outOfRange = true;
+    }
 }
 
 void Parser::finish()

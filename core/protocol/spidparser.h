@@ -49,6 +49,7 @@ struct Frame {
     InlineText text;                   // Text
     int skipped = 0;                   // Skipped: how many bytes
     const char *reason = nullptr;      // Skipped, Refused, a cut Text line
+    bool outOfRange = false;           // Refused: readable, but outside the SPID ranges
 };
 
 class Parser {
