@@ -41,9 +41,16 @@ int Parser::flushSpid()
 void Parser::deliverSpid(const spid::Frame &f)
 {
     using Kind = spid::Frame::Kind;
+    // A frame names both axes at once; Rot1Prog's only the azimuth.
     const bool twoAxes = m_dialect != Dialect::Rot1Prog;
+    auto axes = [&](const Message &azimuth, const Message &elevation) {
+        deliver(azimuth, !twoAxes);
+        if (twoAxes)
+            deliver(elevation, true);
+    };
     switch (f.kind) {
     case Kind::Reply:
+        // A position needs both axes: Rot1Prog's elevation reads 0.
         deliver(Message::number(Op::Azimuth, f.azimuth), false);
         deliver(Message::number(Op::Elevation, f.elevation), true);
         return;
@@ -53,27 +60,18 @@ void Parser::deliverSpid(const spid::Frame &f)
     case Kind::Command: break;
     }
     switch (f.command) {
-    case spid::Command::Status:
-        deliver(Message::query(Op::Azimuth), !twoAxes);
-        if (twoAxes)
-            deliver(Message::query(Op::Elevation), true);
-        return;
+    case spid::Command::Status: axes(Message::query(Op::Azimuth), Message::query(Op::Elevation)); return;
     case spid::Command::Set:
-        deliver(Message::number(Op::Azimuth, f.azimuth), !twoAxes);
-        if (twoAxes)
-            deliver(Message::number(Op::Elevation, f.elevation), true);
+        axes(Message::number(Op::Azimuth, f.azimuth), Message::number(Op::Elevation, f.elevation));
         return;
-    case spid::Command::Stop:
-        deliver(Message::query(Op::StopAzimuth), !twoAxes);
-        if (twoAxes)
-            deliver(Message::query(Op::StopElevation), true);
-        return;
+    case spid::Command::Stop: axes(Message::query(Op::StopAzimuth), Message::query(Op::StopElevation)); return;
     case spid::Command::Move:
         for (const auto &[bit, op] : kMoveBits) {
             if (f.moveDirections & bit)
                 deliver(Message::query(op), false);
         }
-        m_ready[size_t(m_readyCount - 1)].lineEnd = true; // the codec refuses a move without a direction
+        if (m_readyCount > 0) // the reader refuses a move without a direction
+            m_ready[size_t(m_readyCount - 1)].lineEnd = true;
         return;
     }
 }
