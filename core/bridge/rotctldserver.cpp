@@ -43,6 +43,9 @@ int hamlibModelFor(protocol::Dialect d)
     case protocol::Dialect::Gs232B: return 603;
     case protocol::Dialect::Rotctld: return 2; // netrotctl: Slew is itself behind a rotctld
     case protocol::Dialect::Micro2g: return 1; // Hamlib has no Micro-2g backend: its dummy
+    case protocol::Dialect::Rot2Prog: return 901;
+    case protocol::Dialect::Rot1Prog: return 902;
+    case protocol::Dialect::Md01: return 903;
     }
     return 204;
 }

@@ -17,6 +17,9 @@ QString dialectName(Dialect d)
     case Dialect::Gs232B: return QStringLiteral("gs232b");
     case Dialect::Rotctld: return QStringLiteral("rotctld");
     case Dialect::Micro2g: return QStringLiteral("micro2g");
+    case Dialect::Rot2Prog: return QStringLiteral("rot2prog");
+    case Dialect::Rot1Prog: return QStringLiteral("rot1prog");
+    case Dialect::Md01: return QStringLiteral("md01");
     }
     return {};
 }
@@ -25,7 +28,8 @@ const QList<Dialect> &allDialects()
 {
     static const QList<Dialect> all{Dialect::Easycomm1, Dialect::Easycomm2, Dialect::Easycomm3,
                                     Dialect::SatNogs,   Dialect::Gs232A,    Dialect::Gs232B,
-                                    Dialect::Rotctld,   Dialect::Micro2g};
+                                    Dialect::Rotctld,   Dialect::Micro2g,   Dialect::Rot2Prog,
+                                    Dialect::Rot1Prog,  Dialect::Md01};
     return all;
 }
 
@@ -42,9 +46,14 @@ bool isGs232(Dialect d)
     return d == Dialect::Gs232A || d == Dialect::Gs232B;
 }
 
+bool isSpid(Dialect d)
+{
+    return d == Dialect::Rot2Prog || d == Dialect::Rot1Prog || d == Dialect::Md01;
+}
+
 bool isAzimuthOnly(Dialect d)
 {
-    return d == Dialect::Micro2g;
+    return d == Dialect::Micro2g || d == Dialect::Rot1Prog;
 }
 
 int rotorsOnLine(Dialect d)
@@ -53,14 +62,17 @@ int rotorsOnLine(Dialect d)
 }
 
 // Micro-2g counts here too: its go-to names one rotor's azimuth, and the
-// session then treats the (always 0) elevation as the other axis.
+// session then treats the (always 0) elevation as the other axis. A SPID set
+// frame always carries both (Rot1Prog: the azimuth alone, as Micro-2g).
 bool setsBothAxesTogether(Dialect d)
 {
-    return d == Dialect::Easycomm1 || isGs232(d) || d == Dialect::Rotctld || d == Dialect::Micro2g;
+    return d == Dialect::Easycomm1 || isGs232(d) || d == Dialect::Rotctld || d == Dialect::Micro2g || isSpid(d);
 }
 
 char lineTerminator(Dialect d)
 {
+    if (isSpid(d))
+        return '\0';
     return isGs232(d) || d == Dialect::Micro2g ? '\r' : '\n';
 }
 
@@ -73,9 +85,31 @@ std::optional<Dialect> dialectFromName(QStringView name)
     return std::nullopt;
 }
 
+namespace {
+
+// SPID is not in the operations table: its commands are frames, not
+// mnemonics. A frame sets, asks or stops both axes at once; Rot1Prog has no
+// elevation. No speeds, registers, park or version. The MD-01/02's move
+// (spid::encodeMove) is left out until the session writes SPID frames:
+// offering it now would send nothing.
+bool spidSupports(Dialect d, Op op)
+{
+    switch (op) {
+    case Op::Azimuth:
+    case Op::StopAzimuth: return true;
+    case Op::Elevation:
+    case Op::StopElevation: return d != Dialect::Rot1Prog;
+    default: return false;
+    }
+}
+
+} // namespace
+
 bool dialectSupports(Dialect d, Op op)
 {
     const OperationInfo &info = operationInfo(op);
+    if (isSpid(d))
+        return spidSupports(d, op);
     if (d == Dialect::Rotctld)
         return info.rotctld;
     if (d == Dialect::Micro2g)
@@ -94,8 +128,10 @@ bool dialectSupports(Dialect d, Op op)
 
 int angleDecimals(Dialect d)
 {
-    if (isGs232(d) || d == Dialect::Micro2g)
-        return 0; // whole degrees: W010 020, M035
+    if (isGs232(d) || d == Dialect::Micro2g || d == Dialect::Rot1Prog)
+        return 0; // whole degrees: W010 020, M035, a Rot1Prog set
+    if (isSpid(d))
+        return 1; // a Rot2Prog or MD-01 reply is in tenths
     if (d == Dialect::Rotctld)
         return 2; // as rotctld prints its own answers
     return d == Dialect::Easycomm3 ? 2 : 1;

@@ -1,6 +1,7 @@
 #pragma once
 // The command sets Slew speaks: the flavours of Easycomm, Yaesu GS-232, and
-// Hamlib's rotctld network protocol, and the Micro-2g rotor controller. docs/protocol.md has the table of every
+// Hamlib's rotctld network protocol, the Micro-2g rotor controller, and the
+// binary SPID family (spidcodec.h). docs/protocol.md has the table of every
 // command and its wire form per dialect, and why each choice was made.
 
 #include "message.h"
@@ -21,6 +22,10 @@ enum class Dialect : std::uint8_t {
     Gs232B,    // Yaesu GS-232B: the same commands, position `AZ=aaa  EL=eee` (Hamlib model 603)
     Rotctld,   // Hamlib's rotctld over TCP: P, p, S, K, R, M, _; answers `RPRT n` or bare lines
     Micro2g,   // the Micro-2g program: four azimuth rotors, Cn, Mqqq, Sn, Pnm, Lnm; heading `+0123`
+    // SPID: binary frames, not lines (spidcodec.h); set, status and stop only.
+    Rot2Prog,  // Alfa Rot2Prog: 13-byte commands, 12-byte replies, no answer to a set (Hamlib model 901)
+    Rot1Prog,  // Alfa Rot1Prog: azimuth only, 5-byte replies (Hamlib model 902)
+    Md01,      // Alfa MD-01/02 in ROT2 mode: answers a set, has a move command (Hamlib model 903)
 };
 
 // Every dialect, in the order the UI lists them.
@@ -28,7 +33,11 @@ const QList<Dialect> &allDialects();
 // "easycomm1, easycomm2, ..., rotctld", for help texts and messages.
 QString dialectNameList();
 bool isGs232(Dialect d);
-// A controller of azimuth rotors only (Micro-2g): no elevation to command,
+// The binary SPID family: fixed frames (spidcodec.h), which the line
+// encoder and the operations table cannot write. encodeToken and
+// encodeLine return nothing for them.
+bool isSpid(Dialect d);
+// A controller of azimuth rotors only (Micro-2g, Rot1Prog): no elevation to command,
 // and its position reads as elevation 0.
 bool isAzimuthOnly(Dialect d);
 // How many rotors one controller of this dialect drives on its one line
@@ -40,7 +49,7 @@ int rotorsOnLine(Dialect d);
 bool setsBothAxesTogether(Dialect d);
 
 // What ends a line Slew sends: `\n` for Easycomm and rotctld, `\r` for GS-232
-// and Micro-2g.
+// and Micro-2g; `\0` for SPID, which has no lines.
 char lineTerminator(Dialect d);
 
 QString dialectName(Dialect d);                              // "easycomm2"

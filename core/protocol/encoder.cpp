@@ -168,7 +168,8 @@ bool oneCommandALine(Dialect d)
 
 QByteArray encodeToken(const Message &m, Dialect d)
 {
-    if (!dialectSupports(d, m.op))
+    // SPID has no tokens: its frames come from spidcodec.h, never text.
+    if (isSpid(d) || !dialectSupports(d, m.op))
         return {};
     if (isGs232(d))
         return encodeGs232Token(m);
@@ -281,6 +282,8 @@ QByteArray encodeEasycomm1Line(double az, double el, quint64 up, QByteArrayView 
 
 QByteArray encodeSetPosition(double az, double el, Dialect d, int rotor)
 {
+    if (isSpid(d))
+        return {}; // a frame that needs the controller's resolution: spid::encodeSet
     if (d == Dialect::Micro2g) // azimuth only: the elevation has no command
         return encodeLine({Message::number(Op::Azimuth, az, rotor > 0 ? rotor : -1)}, d);
     if (d == Dialect::Easycomm1)
@@ -294,6 +297,8 @@ QByteArray encodeSetPosition(double az, double el, Dialect d, int rotor)
 
 QByteArray encodeQueryPosition(Dialect d, int rotor)
 {
+    if (isSpid(d))
+        return {}; // spid::encodeStatus
     if (d == Dialect::Micro2g)
         return encodeLine({Message::query(Op::Azimuth, rotor > 0 ? rotor : -1)}, d);
     if (d == Dialect::Easycomm1)
@@ -319,6 +324,8 @@ QByteArray encodeOffset(double azimuth, double elevation, Dialect d)
 
 QByteArray encodeStop(bool azimuth, bool elevation, Dialect d, int rotor)
 {
+    if (isSpid(d))
+        return {}; // spid::encodeStop
     if (d == Dialect::Micro2g) // one axis: a stop of elevation alone has nothing to stop
         return azimuth ? encodeLine({Message::query(Op::StopAzimuth, rotor > 0 ? rotor : -1)}, d) : QByteArray();
     if (d == Dialect::Easycomm1 || (!azimuth && !elevation))

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Turning messages into wire bytes, per dialect. Pure functions: no I/O.
+// The SPID dialects are binary frames, not lines: every function here
+// returns nothing for them, and spidcodec.h writes their frames.
 
 #include "dialect.h"
 #include "message.h"

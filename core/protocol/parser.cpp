@@ -36,6 +36,7 @@ void Parser::reset()
     m_previousOnLine = Op::Invalid;
     m_previousHadValue = false;
     m_holdingAzimuth = false;
+    m_spid.reset();
     m_readyCount = 0;
 }
 
@@ -46,6 +47,8 @@ int Parser::push(char c)
         return pushRotctld(c);
     if (m_dialect == Dialect::Micro2g)
         return pushMicro2g(c);
+    if (isSpid(m_dialect))
+        return pushSpid(c);
     if (isLineEnd(c)) {
         if (m_length > 0 || m_overflow)
             finishToken(true);
@@ -156,6 +159,11 @@ Parser::Classified Parser::classify(QByteArrayView t) const
         return classifyRotctld(t); // a whole line, spaces and all
     if (m_dialect == Dialect::Micro2g)
         return classifyMicro2g(t);
+    if (isSpid(m_dialect)) {
+        Classified c;
+        c.first = Message::invalid(t, "SPID is read as binary frames, not tokens");
+        return c;
+    }
     if (!isPrintable(t)) {
         Classified c;
         c.first = Message::invalid(t, "unprintable byte in token");

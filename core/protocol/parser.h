@@ -20,9 +20,13 @@
 // two lines of a `p` answer are handed out together once both have arrived.
 // Micro-2g is read a whole line at a time too (parser_micro2g.cpp): its
 // answers are lines with spaces in them.
+// The SPID dialects are binary frames: spid::Parser (spidparser.h) reads
+// them, and this parser hands its frames out as messages
+// (parser_spid.cpp), so that code that reads messages needs no second path.
 
 #include "dialect.h"
 #include "message.h"
+#include "spidparser.h"
 
 #include <QByteArrayView>
 
@@ -32,10 +36,14 @@ namespace slew::protocol {
 
 class Parser {
 public:
-    explicit Parser(Dialect dialect = Dialect::Easycomm3) : m_dialect(dialect) {}
+    explicit Parser(Dialect dialect = Dialect::Easycomm3) : m_dialect(dialect), m_spid(dialect) {}
 
     Dialect dialect() const { return m_dialect; }
-    void setDialect(Dialect d) { m_dialect = d; }
+    void setDialect(Dialect d)
+    {
+        m_dialect = d;
+        m_spid.setDialect(d);
+    }
 
     // Calls sink(const Message &) for every message the bytes complete.
     template <typename Sink>
@@ -53,7 +61,7 @@ public:
     template <typename Sink>
     void flush(Sink &&sink)
     {
-        const int n = push('\n');
+        const int n = isSpid(m_dialect) ? flushSpid() : push('\n');
         for (int i = 0; i < n; ++i)
             sink(static_cast<const Message &>(m_ready[i]));
     }
@@ -61,7 +69,10 @@ public:
     void reset();
 
     // Bytes of a line are held that no line end has completed yet.
-    bool hasUnfinishedLine() const { return m_length > 0 || m_overflow || m_hasPending || m_holdingAzimuth; }
+    bool hasUnfinishedLine() const
+    {
+        return m_length > 0 || m_overflow || m_hasPending || m_holdingAzimuth || m_spid.hasUnfinishedFrame();
+    }
 
     // Parses one token on its own, with no line context (tests, the console).
     static Message parseToken(QByteArrayView token, Dialect d);
@@ -87,6 +98,9 @@ private:
     Classified classifyRotctld(QByteArrayView line) const;
     int pushMicro2g(char c);
     Classified classifyMicro2g(QByteArrayView line) const;
+    int pushSpid(char c);
+    int flushSpid();
+    void deliverSpid(const spid::Frame &f);
     bool pendingWaitsForArgument() const;
 
     Dialect m_dialect;
@@ -106,7 +120,10 @@ private:
     bool m_holdingAzimuth = false;
     bool m_azimuthBroken = false; // that first line was not a number (already reported)
     double m_heldAzimuth = 0.0;
-    std::array<Message, 4> m_ready;
+    spid::Parser m_spid;
+    // One byte completes at most two messages of a line dialect; a SPID
+    // byte may release a few text lines held in a rejected frame as well.
+    std::array<Message, 16> m_ready;
     int m_readyCount = 0;
 };
 

@@ -120,6 +120,17 @@ void RotatorSession::disconnectFromRotator()
 
 void RotatorSession::openLink()
 {
+    // The session reads and writes lines; the SPID dialects are binary
+    // frames (protocol/spidcodec.h) that it does not write yet. Refused
+    // here, before a byte, rather than connected and left silent.
+    if (protocol::isSpid(m_profile.dialect)) {
+        const QString why = tr("%1 is a binary protocol that the session does not speak yet")
+                                .arg(protocol::dialectName(m_profile.dialect));
+        m_wantConnected = false;
+        setState(State::Disconnected, why);
+        emit errorOccurred(why);
+        return;
+    }
     transport::LinkResult made = m_linkMaker ? m_linkMaker(m_uri) : transport::createLink(m_uri);
     if (!made.link) {
         m_wantConnected = false;

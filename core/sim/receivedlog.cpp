@@ -44,7 +44,7 @@ void LineCollector::add(QByteArrayView bytes)
             continue;
         }
         m_line += c;
-        if (m_line.size() >= maxLine) {
+        if (m_line.size() >= maxLine || c == m_frameEnd) {
             m_log->writeLine(m_line);
             m_line.clear();
         }

@@ -7,6 +7,8 @@
 #include <QFile>
 #include <QString>
 
+#include <optional>
+
 namespace slew::sim {
 
 class ReceivedLog {
@@ -28,11 +30,15 @@ class LineCollector {
 public:
     explicit LineCollector(ReceivedLog *log) : m_log(log) {}
     void add(QByteArrayView bytes);
+    // Binary frames (SPID) have no line ends: a frame's last byte, kept,
+    // ends its log line instead, so the log holds one frame a line.
+    void endLinesAfter(char frameEnd) { m_frameEnd = frameEnd; }
 
 private:
     static constexpr qsizetype maxLine = 512; // longer lines are logged in pieces
     ReceivedLog *m_log;
     QByteArray m_line;
+    std::optional<char> m_frameEnd;
 };
 
 } // namespace slew::sim

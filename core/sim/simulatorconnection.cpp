@@ -3,6 +3,8 @@
 
 #include "simulator.h"
 
+#include "protocol/spidcodec.h"
+
 #include <QAbstractSocket>
 #include <QIODevice>
 
@@ -34,6 +36,10 @@ SimulatorConnection::SimulatorConnection(Simulator &simulator, QIODevice *device
       m_rng(simulator.options().rotator.seed + 7u)
 {
     m_openedAt = m_simulator.clock().now();
+    if (protocol::isSpid(settings.dialect)) {
+        m_firmware.configureSpid({simulator.options().spidPulses, simulator.options().md01Log});
+        m_log.endLinesAfter(protocol::spid::kEnd);
+    }
     if (settings.dialect == protocol::Dialect::Micro2g) {
         m_simulator.micro2g(); // made now, on this simulator's clock
         m_firmware.serveMicro2g([this](const QString &line) { return m_simulator.handleMicro2g(line); });
@@ -109,7 +115,7 @@ void SimulatorConnection::process(QByteArrayView bytes, double arrivedAt)
     if (m_settings.echo)
         send(bytes.toByteArray(), arrivedAt);
     QByteArray out;
-    if (m_settings.checksum) {
+    if (m_settings.checksum && !protocol::isSpid(m_settings.dialect)) { // SPID frames carry no checksum
         // A line that does not check is not read at all, and not answered:
         // the controller cannot tell what was meant, so it does nothing.
         m_frames.feed(bytes, [&](protocol::FrameCheck check, QByteArrayView line) {

@@ -39,6 +39,14 @@ QByteArray printable(QByteArrayView raw)
 SimulatorFirmware::SimulatorFirmware(SimulatedRotator &rotator, FirmwareCounters &counters, Dialect dialect)
     : m_rotator(rotator), m_counters(counters), m_dialect(dialect), m_parser(dialect)
 {
+    if (protocol::isSpid(dialect))
+        configureSpid({});
+}
+
+void SimulatorFirmware::configureSpid(const SpidSettings &settings)
+{
+    if (protocol::isSpid(m_dialect))
+        m_spid.emplace(m_rotator, m_counters, m_dialect, settings);
 }
 
 QByteArray SimulatorFirmware::version() const
@@ -93,6 +101,8 @@ QByteArray SimulatorFirmware::receiveMicro2g(QByteArrayView bytes)
 
 QByteArray SimulatorFirmware::receive(QByteArrayView bytes)
 {
+    if (m_spid)
+        return m_spid->receive(bytes);
     if (m_micro2g)
         return receiveMicro2g(bytes);
     QByteArray out;
@@ -114,6 +124,8 @@ QByteArray SimulatorFirmware::receive(QByteArrayView bytes)
 
 QByteArray SimulatorFirmware::endLine()
 {
+    if (m_spid)
+        return {};
     if (m_micro2g)
         return receiveMicro2g("\r"); // a line the host never ended
     QByteArray out;

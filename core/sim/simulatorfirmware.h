@@ -14,6 +14,7 @@
 
 #include "firmwarecounters.h"
 #include "simulatedrotator.h"
+#include "spidfirmware.h"
 
 #include "protocol/dialect.h"
 #include "protocol/message.h"
@@ -24,6 +25,7 @@
 #include <QStringList>
 
 #include <functional>
+#include <optional>
 
 namespace slew::sim {
 
@@ -39,6 +41,11 @@ public:
     // `controller` and ends every reply line with CR LF.
     using LineHandler = std::function<QStringList(const QString &line)>;
     void serveMicro2g(LineHandler controller) { m_micro2g = std::move(controller); }
+    // The SPID dialects have no lines: a SpidFirmware reads their frames,
+    // and the line machinery below (line ends, alarms, unsolicited
+    // reports) stays idle. Made by the constructor for a SPID dialect; this
+    // replaces its settings.
+    void configureSpid(const SpidSettings &settings);
 
     // Feeds bytes from the host; returns what the device answers to them
     // (possibly nothing, possibly several lines). At most a few alarms per
@@ -50,7 +57,12 @@ public:
     // endLine() rather than wait for a line end that may never come.
     bool awaitingLineEnd() const { return m_awaitingLineEnd; }
     // Bytes of a line wait for its end (the host may never send it).
-    bool hasUnfinishedLine() const { return m_micro2g ? !m_micro2gLine.isEmpty() : m_parser.hasUnfinishedLine(); }
+    bool hasUnfinishedLine() const
+    {
+        if (m_spid)
+            return false; // a part frame waits for its bytes: SPID has no line to end
+        return m_micro2g ? !m_micro2gLine.isEmpty() : m_parser.hasUnfinishedLine();
+    }
     QByteArray endLine();
 
     // the Easycomm III derivative's unsolicited reports: every field whose text differs from
@@ -92,6 +104,7 @@ private:
 
     QHash<QByteArray, QByteArray> m_pushed; // field -> last text pushed
 
+    std::optional<SpidFirmware> m_spid;
     LineHandler m_micro2g;
     QByteArray m_micro2gLine;
     bool m_micro2gOverlong = false;

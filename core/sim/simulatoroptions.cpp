@@ -4,6 +4,8 @@
 #include "rotatormodels.h"
 #include "simclock.h"
 
+#include "protocol/spidcodec.h"
+
 #include <QStringList>
 
 #include <cmath>
@@ -32,11 +34,15 @@ const std::vector<SimulatorOptionInfo> kOptions = {
     {"park_el", "degrees", "elevation park position (CW8)"},
     {"start_az", "degrees", "azimuth at start"},
     {"start_el", "degrees", "elevation at start"},
-    {"dialect", "name", "easycomm1, easycomm2, easycomm3, satnogs, gs232a, gs232b or micro2g (the four-rotor Micro-2g controller)"},
+    {"dialect", "name",
+     "easycomm1, easycomm2, easycomm3, satnogs, gs232a, gs232b, micro2g (the four-rotor Micro-2g controller), "
+     "or the binary SPID rot2prog, rot1prog (azimuth only) and md01 (MD-01/02 in ROT2 mode)"},
+    {"spid_pulses", "n", "rot2prog, md01: the resolution the controller reports in PH/PV, pulses per degree: 1, 2 (default), 4 or 10"},
+    {"md01_log", "", "md01: write a text log line before every reply, as some MD-01 firmware does"},
     {"state_file", "path", "micro2g: keep the controller's calibration, presets and tolerances in this file across restarts"},
     {"unsolicited", "", "push changed fields unsolicited (easycomm3)"},
     {"echo", "", "send every received byte back before the answer, as some serial adapters do"},
-    {"checksum", "", "frame every reply with the XOR checksum *HH and refuse received lines without a good one"},
+    {"checksum", "", "frame every reply with the XOR checksum *HH and refuse received lines without a good one (line dialects only)"},
     {"baud", "rate", "pace bytes to a serial line of this rate (0: unpaced)"},
     {"clock", "mode", "wall (default) or manual: time moves only when a test advances it"},
     {"time_scale", "factor",
@@ -229,6 +235,15 @@ QString applySimulatorOption(SimulatorOptions &o, QStringView rawName, QStringVi
         o.dialect = *d;
         return {};
     }
+    if (name == u"spid_pulses") {
+        double v = 0;
+        if (!toNumber(value, &v) || v != std::floor(v) || !protocol::spid::isResolution(int(v)))
+            return bad(name, value, QStringLiteral("must be 1, 2, 4 or 10"));
+        o.spidPulses = int(v);
+        return {};
+    }
+    if (name == u"md01_log")
+        return toSwitch(value, &o.md01Log) ? QString() : bad(name, value, QStringLiteral("expected 1 or 0"));
     if (name == u"state_file") {
         if (value.isEmpty())
             return bad(name, value, QStringLiteral("expected a file path"));

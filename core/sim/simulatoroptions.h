@@ -30,6 +30,8 @@ struct SimulatorOptions {
     bool manualClock = false; // time moves only when advanced (tests)
     double timeScale = 1.0;   // wall clock: simulated seconds per real second
     QString stateFile;        // micro2g: where calibration, presets and tolerances are kept; empty: lost at exit
+    int spidPulses = 2;       // rot2prog, md01: pulses per degree reported in PH/PV (1, 2, 4, 10)
+    bool md01Log = false;     // md01: a text log line before every reply, as some MD-01 firmware writes
 };
 
 struct SimulatorOptionInfo {

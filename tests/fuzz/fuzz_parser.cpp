@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzz target: the device-side parser, every dialect.
 //
-// Input: the first byte picks the dialect (modulo the number of dialects, so
-// the seed files start with '0'..'5': easycomm1, easycomm2, easycomm3,
-// satnogs, gs232a, gs232b), the rest is what arrives on the wire. Besides "no crash, no sanitizer
+// Input: the first byte picks the dialect (counted from '0', modulo the
+// number of dialects, so the seed files start with '0'..':': easycomm1,
+// easycomm2, easycomm3, satnogs, gs232a, gs232b, rotctld, micro2g, and the
+// binary rot2prog '8', rot1prog '9', md01 ':'), the rest is what arrives on
+// the wire. Besides "no crash, no sanitizer
 // report", it checks what parser.h promises: the same bytes fed all at once
 // or one at a time give the same messages, every refusal says why, and no
 // message carries more text than InlineText holds. Every message read is
@@ -71,7 +73,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     if (size < 1)
         return 0;
     const QList<Dialect> &dialects = allDialects();
-    const Dialect dialect = dialects.at(data[0] % dialects.size());
+    const Dialect dialect = dialects.at(std::uint8_t(data[0] - '0') % dialects.size());
     const QByteArrayView bytes(reinterpret_cast<const char *>(data) + 1, qsizetype(size - 1));
 
     std::vector<Message> whole;

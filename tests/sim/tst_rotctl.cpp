@@ -2,8 +2,9 @@
 // Hamlib's own rotctl (Debian's libhamlib-utils) drives slew-sim over its
 // pseudo-terminal, for the three Easycomm models: 201 (Easycomm I), 202
 // (Easycomm II) and 204 (Easycomm III / SatNOGS), and the two Yaesu GS-232
-// models 601 (GS-232A) and 603 (GS-232B). Both what rotctl reads back and
-// what the simulator received are checked.
+// models 601 (GS-232A) and 603 (GS-232B), and the three binary SPID models
+// 901 (Rot2Prog), 902 (Rot1Prog) and 903 (MD-01/02 in ROT2 mode). Both what
+// rotctl reads back and what the simulator received are checked.
 //
 // The simulator runs ten times faster than the wall clock (--time-scale):
 // what is tested is what goes over the wire, not how long the slews take.
@@ -19,9 +20,11 @@
 namespace {
 
 // Runs rotctl to completion, asynchronously, waiting on its finished signal.
-RotctlResult rotctl(int model, const QString &port, const QStringList &commands)
+// Hamlib's SPID models insist on their own serial speeds (Rot2Prog 600,
+// Rot1Prog 1200); the pseudo-terminal takes any.
+RotctlResult rotctl(int model, const QString &port, const QStringList &commands, int speed = 19200)
 {
-    return runRotctl(QStringList{"-m", QString::number(model), "-r", port, "-s", "19200"} + commands, 15000);
+    return runRotctl(QStringList{"-m", QString::number(model), "-r", port, "-s", QString::number(speed)} + commands, 15000);
 }
 
 QByteArray readAll(const QString &path)
@@ -43,12 +46,12 @@ class TestRotctl : public QObject {
     QString logPath(int model) const { return m_dir.filePath(QStringLiteral("received-%1.log").arg(model)); }
 
     // get_pos until the rotator reports the position, as a tracking program would.
-    bool getPosUntil(int model, const QString &port, double az, double el)
+    bool getPosUntil(int model, const QString &port, double az, double el, int speed = 19200)
     {
         QElapsedTimer timer;
         timer.start();
         while (timer.elapsed() < 20000) {
-            const RotctlResult r = rotctl(model, port, {"p"});
+            const RotctlResult r = rotctl(model, port, {"p"}, speed);
             const QList<QByteArray> lines = r.out.trimmed().split('\n');
             if (r.exitCode == 0 && lines.size() == 2 && near(lines[0].toDouble(), az) && near(lines[1].toDouble(), el))
                 return true;
@@ -154,6 +157,51 @@ private slots:
 
         QCOMPARE(sim.stop(), 0);
         QVERIFY2(readAll(logPath(201)).contains("AZ12.5 EL8.0 UP000 XXX DN000 XXX\n"), readAll(logPath(201)).constData());
+        QVERIFY2(sim.standardError().contains(" 0 rejected"), sim.standardError().constData());
+    }
+
+    // The simulator paces its line at the model's speed; the frames it
+    // received are Hamlib's, byte for byte (the simulator reports PH = PV = 2,
+    // so a Rot2Prog set is 2 × (360 + angle)). The log writes a frame a line,
+    // its unprintable bytes as \xNN ('W' is 0x57, '/' the set's 0x2F).
+    void spidModels_data()
+    {
+        QTest::addColumn<int>("model");
+        QTest::addColumn<QString>("dialect");
+        QTest::addColumn<int>("speed");
+        QTest::addColumn<double>("az");
+        QTest::addColumn<double>("el");
+        QTest::addColumn<QByteArray>("set");
+        QTest::newRow("901 Rot2Prog") << 901 << "rot2prog" << 600 << 10.5 << 20.0
+                                      << QByteArray("W0741\\x020760\\x02/ \n");
+        QTest::newRow("902 Rot1Prog") << 902 << "rot1prog" << 1200 << 123.0 << 0.0
+                                      << QByteArray("W4830\\x00\\x00\\x00\\x00\\x00\\x00/ \n");
+        QTest::newRow("903 MD-01/02") << 903 << "md01" << 9600 << 40.0 << 25.5
+                                      << QByteArray("W0800\\x020771\\x02/ \n");
+    }
+
+    void spidModels()
+    {
+        QFETCH(int, model);
+        QFETCH(QString, dialect);
+        QFETCH(int, speed);
+        QFETCH(double, az);
+        QFETCH(double, el);
+        QFETCH(QByteArray, set);
+        SlewSimProcess sim;
+        QVERIFY2(sim.start({"--model", "satnogs", "--time-scale", "10", "--pty", ptyPath(model), "--dialect", dialect, "--baud",
+                            QString::number(speed), "--log-received", logPath(model)}),
+                 qPrintable(sim.error()));
+        const QStringList position{QString::number(az), QString::number(el)};
+        QCOMPARE(rotctl(model, ptyPath(model), QStringList{"P"} + position, speed).exitCode, 0);
+        QVERIFY(getPosUntil(model, ptyPath(model), az, el, speed));
+        QCOMPARE(rotctl(model, ptyPath(model), {"S"}, speed).exitCode, 0);
+
+        QCOMPARE(sim.stop(), 0);
+        const QByteArray log = readAll(logPath(model));
+        const QByteArray zeros = QByteArray("\\x00").repeated(10);
+        for (const QByteArray &frame : {set, "W" + zeros + "\\x1f \n", "W" + zeros + "\\x0f \n"})
+            QVERIFY2(log.contains(frame), qPrintable(QString("missing %1 in:\n%2").arg(frame, log)));
         QVERIFY2(sim.standardError().contains(" 0 rejected"), sim.standardError().constData());
     }
 };
