@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "targetpicker.h"
 
+#include "tracking/tracktarget.h"
+
 #include "sky/tlesources.h"
 
 #include <QAction>
@@ -37,6 +39,7 @@ QString displayName(const FavouriteTarget &t)
     switch (t.kind) {
     case FavouriteTarget::Kind::Sun: return QObject::tr("Sun");
     case FavouriteTarget::Kind::Moon: return QObject::tr("Moon");
+    case FavouriteTarget::Kind::Direction: return t.name;
     case FavouriteTarget::Kind::Satellite: break;
     }
     return t.name.isEmpty() ? QString::number(t.catalogueNumber) : t.name;
@@ -55,7 +58,7 @@ TargetPicker::TargetPicker(const sky::TleSources *sets, QWidget *parent) : QWidg
     setObjectName(QStringLiteral("targetPicker"));
     m_search = new QLineEdit;
     m_search->setObjectName(QStringLiteral("targetSearch"));
-    m_search->setPlaceholderText(tr("satellite name or number, sun, moon"));
+    m_search->setPlaceholderText(tr("satellite name or number, sun, moon, azel:AZ,EL, radec:RA,DEC"));
     m_favourite = new QToolButton;
     m_favourite->setObjectName(QStringLiteral("favouriteToggle"));
     m_favourite->setCheckable(true);
@@ -134,6 +137,13 @@ void TargetPicker::fill()
         const bool gone = std::any_of(missing.begin(), missing.end(), [&](const auto &m) { return m.sameTarget(f); });
         if (matches(f, wanted))
             addItem(f, true, gone);
+    }
+    // A direction typed in full (azel:AZ,EL or radec:RA,DEC) is a target of its own.
+    QString badDirection;
+    if (tracking::TrackTarget::parseFixedOrCelestial(wanted, &badDirection)) {
+        const FavouriteTarget typed = FavouriteTarget::direction(wanted);
+        if (!m_favourites.contains(typed))
+            addItem(typed, false, false);
     }
     if (!m_favouritesOnly->isChecked()) {
         for (const FavouriteTarget &body : {FavouriteTarget::sun(), FavouriteTarget::moon()}) {

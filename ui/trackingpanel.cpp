@@ -155,6 +155,7 @@ std::optional<TrackTarget> TrackingPanel::chosenTarget() const
     switch (chosen->kind) {
     case sky::FavouriteTarget::Kind::Sun: target.kind = TrackTarget::Kind::Sun; return target;
     case sky::FavouriteTarget::Kind::Moon: target.kind = TrackTarget::Kind::Moon; return target;
+    case sky::FavouriteTarget::Kind::Direction: return TrackTarget::parseFixedOrCelestial(chosen->name, nullptr);
     case sky::FavouriteTarget::Kind::Satellite: break;
     }
     for (const sky::Tle &t : m_sets->sets()) {
@@ -171,22 +172,13 @@ tracking::RotatorReach TrackingPanel::reach() const
     return tracking::reachOf(*m_session);
 }
 
-QList<tracking::SkyPoint> TrackingPanel::sample(const sky::Pass &pass) const
-{
-    const auto target = chosenTarget();
-    if (!target || !m_station)
-        return {};
-    if (target->kind == TrackTarget::Kind::Satellite)
-        return tracking::sampleSatellitePass(sky::Sgp4(target->elements), *m_station, pass, 1.0);
-    return tracking::sampleBodyPass(target->kind == TrackTarget::Kind::Sun ? sky::SkyBody::Sun : sky::SkyBody::Moon,
-                                    *m_station, pass.aos.julian, pass.los.julian, 10.0);
-}
-
 void TrackingPanel::showPasses()
 {
     m_passes->setRowCount(0);
     m_passList.clear();
+    m_samples.clear();
     m_plans.clear();
+    m_sky.reset();
     const auto target = chosenTarget();
     if (!target || !m_station) {
         emit passOverlayChanged(std::nullopt);
@@ -195,14 +187,12 @@ void TrackingPanel::showPasses()
     }
     const double now = m_clock->nowJulian();
     const sky::PassWindow window{now, now + kLookAheadDays, 0.0};
-    if (target->kind == TrackTarget::Kind::Satellite)
-        m_passList = sky::predictPasses(sky::Sgp4(target->elements), *m_station, window);
-    else
-        m_passList = sky::predictBodyPasses(target->kind == TrackTarget::Kind::Sun ? sky::SkyBody::Sun : sky::SkyBody::Moon,
-                                            *m_station, window);
+    m_sky.emplace(*target);
+    m_passList = m_sky->passes(*m_station, window);
     const tracking::RotatorReach r = reach();
     for (const sky::Pass &p : m_passList) {
-        const tracking::PassPlan plan = tracking::planPass(sample(p), r);
+        m_samples.append(m_sky->sample(*m_station, p, p.aos.julian));
+        const tracking::PassPlan plan = tracking::planPass(m_samples.last(), r);
         m_plans.append(plan);
         const int row = m_passes->rowCount();
         m_passes->insertRow(row);
@@ -231,7 +221,7 @@ void TrackingPanel::onPassChosen()
     if (chosen.isEmpty() || chosen.first()->row() >= m_plans.size())
         return;
     const int row = chosen.first()->row();
-    const QList<tracking::SkyPoint> points = sample(m_passList[row]);
+    const QList<tracking::SkyPoint> &points = m_samples[row];
     const tracking::PassPlan &plan = m_plans[row];
     PassOverlay overlay;
     for (const tracking::SkyPoint &p : points)
@@ -282,29 +272,20 @@ void TrackingPanel::refreshLive()
         m_countdown->setText(tr("up now: LOS in %1").arg(hms((next->los.julian - now) * sky::kSecondsPerDay)));
     }
 
-    const auto target = chosenTarget();
-    if (!target || !m_station) {
+    if (!m_sky || !m_station) {
         m_live->clear();
         return;
     }
     QString where;
-    if (target->kind == TrackTarget::Kind::Satellite) {
-        sky::LookAngles look;
-        if (sky::observeSatellite(sky::Sgp4(target->elements), *m_station, now, &look)) {
-            where = tr("az %1°, el %2°, range %3 km, range-rate %4 km/s, Doppler %5 kHz at 435 MHz")
-                        .arg(look.azimuthDeg, 0, 'f', 1)
-                        .arg(look.elevationDeg, 0, 'f', 1)
-                        .arg(look.rangeKm, 0, 'f', 0)
-                        .arg(look.rangeRateKmS, 0, 'f', 3)
-                        .arg(sky::dopplerShiftHz(kDopplerReferenceHz, look.rangeRateKmS) / 1000.0, 0, 'f', 2);
-            emit passTargetMoved(look.elevationDeg >= 0 ? std::optional<QPointF>(QPointF(look.azimuthDeg, look.elevationDeg))
-                                                        : std::nullopt);
-        }
-    } else {
-        const sky::BodyPosition b = sky::bodyPosition(
-            target->kind == TrackTarget::Kind::Sun ? sky::SkyBody::Sun : sky::SkyBody::Moon, *m_station, now);
-        where = tr("az %1°, el %2°").arg(b.azimuthDeg, 0, 'f', 1).arg(b.elevationDeg, 0, 'f', 1);
-        emit passTargetMoved(b.elevationDeg >= 0 ? std::optional<QPointF>(QPointF(b.azimuthDeg, b.elevationDeg)) : std::nullopt);
+    if (const std::optional<sky::LookAngles> look = m_sky->lookAt(*m_station, now)) {
+        where = tr("az %1°, el %2°").arg(look->azimuthDeg, 0, 'f', 1).arg(look->elevationDeg, 0, 'f', 1);
+        if (m_sky->target().kind == TrackTarget::Kind::Satellite)
+            where += tr(", range %1 km, range-rate %2 km/s, Doppler %3 kHz at 435 MHz")
+                         .arg(look->rangeKm, 0, 'f', 0)
+                         .arg(look->rangeRateKmS, 0, 'f', 3)
+                         .arg(sky::dopplerShiftHz(kDopplerReferenceHz, look->rangeRateKmS) / 1000.0, 0, 'f', 2);
+        emit passTargetMoved(look->elevationDeg >= 0 ? std::optional<QPointF>(QPointF(look->azimuthDeg, look->elevationDeg))
+                                                     : std::nullopt);
     }
     QString pointing;
     if (m_runner->tracker().state() == tracking::Tracker::State::Tracking && m_session->hasPosition()) {

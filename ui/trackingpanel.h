@@ -76,7 +76,6 @@ private:
     void startTracking();
     tracking::RotatorReach reach() const;
     std::optional<tracking::TrackTarget> chosenTarget() const;
-    QList<tracking::SkyPoint> sample(const sky::Pass &pass) const;
 
     session::RotatorSession *m_session;
     sky::TleSources *m_sets;
@@ -84,7 +83,9 @@ private:
     tracking::StationClock m_systemClock;
     const tracking::StationClock *m_clock = &m_systemClock;
     std::unique_ptr<tracking::PassRunner> m_runner;
+    std::optional<tracking::TargetSky> m_sky; // the chosen target's, while there is a station
     QList<sky::Pass> m_passList;
+    QList<QList<tracking::SkyPoint>> m_samples; // each pass as planned (the moon's cost 1.7 ms a point)
     QList<tracking::PassPlan> m_plans;
 
     QLabel *m_stationLine;

@@ -20,6 +20,8 @@ std::optional<FavouriteTarget> parse(const QString &text)
         return FavouriteTarget::sun();
     if (text == kMoon)
         return FavouriteTarget::moon();
+    if (text.startsWith(QLatin1String("azel:")) || text.startsWith(QLatin1String("radec:")))
+        return FavouriteTarget::direction(text);
     const qsizetype space = text.indexOf(u' ');
     bool ok = false;
     const int number = text.left(space).toInt(&ok);
@@ -33,6 +35,7 @@ QString format(const FavouriteTarget &t)
     switch (t.kind) {
     case FavouriteTarget::Kind::Sun: return kSun;
     case FavouriteTarget::Kind::Moon: return kMoon;
+    case FavouriteTarget::Kind::Direction: return t.name;
     case FavouriteTarget::Kind::Satellite: break;
     }
     return QStringLiteral("%1 %2").arg(t.catalogueNumber).arg(t.name);

@@ -19,7 +19,9 @@ class QSettings;
 namespace slew::sky {
 
 struct FavouriteTarget {
-    enum class Kind { Satellite, Sun, Moon };
+    // Direction: a fixed azimuth and elevation or a J2000 source, kept as
+    // the text that names it ("azel:180,45", "radec:23:23:24,+58:48:54").
+    enum class Kind { Satellite, Sun, Moon, Direction };
     Kind kind = Kind::Satellite;
     int catalogueNumber = 0; // a satellite's
     QString name;            // a satellite's, as it was last seen
@@ -30,10 +32,12 @@ struct FavouriteTarget {
     {
         return {Kind::Satellite, elements.catalogueNumber, elements.displayName()};
     }
-    // The same target: the name does not count.
+    static FavouriteTarget direction(const QString &spec) { return {Kind::Direction, 0, spec.trimmed()}; }
+    // The same target: a satellite's name does not count; a direction is its text.
     bool sameTarget(const FavouriteTarget &other) const
     {
-        return kind == other.kind && (kind != Kind::Satellite || catalogueNumber == other.catalogueNumber);
+        return kind == other.kind && (kind != Kind::Satellite || catalogueNumber == other.catalogueNumber)
+            && (kind != Kind::Direction || name.compare(other.name, Qt::CaseInsensitive) == 0);
     }
 };
 

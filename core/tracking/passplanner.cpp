@@ -89,6 +89,9 @@ struct AxisFollower {
         velocity += std::clamp(wanted - velocity, -accel * dt, accel * dt);
         position += velocity * dt;
     }
+
+    // Stopped (or all but) on `target`.
+    bool atRestOn(double target) const { return std::abs(velocity) < 0.05 && std::abs(position - target) < 0.01; }
 };
 
 // Drives the path at the rotator's full rate from its first point and
@@ -96,6 +99,7 @@ struct AxisFollower {
 void predict(const QList<SkyPoint> &pass, const RotatorReach &reach, double threshold, PassPlan &plan)
 {
     constexpr double kSubStep = 0.05; // seconds: fine enough for the acceleration
+    constexpr double kCreepDeg = 0.1;
     AxisFollower az{plan.path.front().azimuth, 0, reach.azimuthRateDegS, reach.azimuthAccelDegS2};
     AxisFollower el{plan.path.front().elevation, 0, reach.elevationRateDegS, reach.elevationAccelDegS2};
     double sumSquares = 0;
@@ -106,7 +110,19 @@ void predict(const QList<SkyPoint> &pass, const RotatorReach &reach, double thre
         PathPoint &p = plan.path[i];
         // The worst between two points counts too: a reading can come at any moment.
         double worstHere = 0;
-        if (i > 0) {
+        // A target that creeps (the sun, the moon, a radio source: hundredths
+        // of a degree between points) is followed exactly by an axis at rest
+        // on the last point: it covers that in a fraction of a second.
+        // Stepping hours of such a pass at kSubStep would take seconds of
+        // the window's time for nothing.
+        const bool creeping = i > 0 && az.atRestOn(plan.path[i - 1].azimuth) && el.atRestOn(plan.path[i - 1].elevation)
+                              && std::abs(p.azimuth - plan.path[i - 1].azimuth) <= kCreepDeg
+                              && std::abs(p.elevation - plan.path[i - 1].elevation) <= kCreepDeg;
+        if (creeping) {
+            az.position = p.azimuth;
+            el.position = p.elevation;
+            az.velocity = el.velocity = 0;
+        } else if (i > 0) {
             const double dt = p.seconds - plan.path[i - 1].seconds;
             const int steps = std::max(1, int(std::ceil(dt / kSubStep)));
             const SkyPoint &from = pass[i - 1], &to = pass[i];

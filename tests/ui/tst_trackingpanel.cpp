@@ -289,6 +289,34 @@ private slots:
         QVERIFY(f.window->grab().save(QStringLiteral("screenshots/telemetry-pointing-error.png")));
     }
 
+    void directionsTypedInTheSearch()
+    {
+        // A fixed direction and a radio source are targets too: typed in
+        // full, planned like a pass, drawn on the plot, tracked.
+        WindowFixture f(kOverlapAndFlip);
+        QVERIFY(connectWithOverlapAndFlip(f));
+        TrackingPanel *panel = f.window->trackingPanel();
+        const slew::tracking::StationClock clock(slew::sky::julianFromIso(QStringLiteral("2026-11-23T18:00:00Z")), 1.0);
+        rehearse(panel, clock);
+        QVERIFY(panel->selectTarget(QStringLiteral("azel:200,30")));
+        QCOMPARE(panel->passTable()->rowCount(), 1); // held for the whole look-ahead
+        QCOMPARE(panel->passTable()->item(0, 2)->text(), QStringLiteral("30.0°"));
+        QTest::mouseClick(panel->trackButton(), Qt::LeftButton);
+        QVERIFY(panel->runner()->isRunning());
+        QVERIFY(f.waitUntilAt(200, 30, 0.5, 30000));
+
+        // Cassiopeia A never sets at JO65: one pass through the whole day.
+        QTest::mouseClick(panel->findChild<QPushButton *>(QStringLiteral("stopTracking")), Qt::LeftButton);
+        QVERIFY(panel->selectTarget(QStringLiteral("radec:23:23:24,+58:48:54")));
+        QVERIFY(panel->passTable()->rowCount() >= 1);
+        const auto &overlay = f.window->polarPlot()->passOverlay();
+        QVERIFY(overlay.has_value() && overlay->sky.size() > 100);
+        QVERIFY2(panel->findChild<QLabel *>(QStringLiteral("trackingLive"))->text().startsWith(QStringLiteral("az ")),
+                 qPrintable(panel->findChild<QLabel *>(QStringLiteral("trackingLive"))->text()));
+        // A direction that does not read is no target.
+        QVERIFY(!panel->selectTarget(QStringLiteral("azel:400,10")));
+    }
+
     void saysWhatIsMissing()
     {
         WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
