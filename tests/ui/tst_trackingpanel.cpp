@@ -144,7 +144,7 @@ private slots:
         // A picture of the tab, for the eye, with the target a favourite.
         QTest::mouseClick(panel->targetPicker()->favouriteButton(), Qt::LeftButton);
         QCOMPARE(panel->targetPicker()->list()->currentItem()->text(), QStringLiteral("★ FLOCK 2P-1"));
-        f.window->tabs()->setCurrentWidget(panel);
+        f.window->tabs()->setCurrentWidget(panel->parentWidget()); // the tab: tracking and calibration
         f.window->resize(1440, 900);
         f.window->show();
         QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
