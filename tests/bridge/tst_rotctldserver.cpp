@@ -54,6 +54,8 @@ private:
     QByteArray ask(QTcpSocket &s, const QByteArray &line);
     // How many times the session sent exactly this line to the rotator.
     static int timesSent(const QSignalSpy &sent, const QByteArray &line);
+    // Hamlib's rotctl (netrotctl at `where`) reads this position within 20 s.
+    static bool rotctlReadsPosition(const QString &where, double az, double el);
     bool connectSession(const model::RotatorProfile &profile);
     session::RotatorSession *session = nullptr;
     bridge::RotctldServer *server = nullptr;
@@ -111,19 +113,7 @@ void RotctldServerTest::rotctlDrivesTheSimulator()
         sawGoto = sawGoto || args.at(0).toByteArray() == "AZ30.00 EL20.00\n";
     QVERIFY(sawGoto);
 
-    // get_pos until it arrives.
-    double az = -1, el = -1;
-    QVERIFY(QTest::qWaitFor(
-        [&] {
-            const RotctlResult p = runRotctl({"-m", "2", "-r", where, "p"});
-            const QList<QByteArray> lines = p.out.trimmed().split('\n');
-            if (lines.size() < 2)
-                return false;
-            az = lines[0].toDouble();
-            el = lines[1].toDouble();
-            return std::abs(az - 30) < 0.5 && std::abs(el - 20) < 0.5;
-        },
-        20000));
+    QVERIFY(rotctlReadsPosition(where, 30, 20));
 
     sent.clear();
     r = runRotctl({"-m", "2", "-r", where, "S", "K", "R", "1", "M", "16", "50", "_"});
@@ -285,6 +275,19 @@ void RotctldServerTest::deadbandSuppressesRepeatedTargets()
     QCOMPARE(ask(s, "P 359.90 30.00"), QByteArray("RPRT 0\n"));
     QCOMPARE(ask(s, "P 0.10 30.00"), QByteArray("RPRT 0\n"));
     QCOMPARE(gotoCount(), 3);
+}
+
+bool RotctldServerTest::rotctlReadsPosition(const QString &where, double az, double el)
+{
+    // rotctl's get_pos, again and again until the rotator is there.
+    return QTest::qWaitFor(
+        [&] {
+            const RotctlResult got = runRotctl({"-m", "2", "-r", where, "p"});
+            const QList<QByteArray> lines = got.out.trimmed().split('\n');
+            return lines.size() >= 2 && std::abs(lines[0].toDouble() - az) < 0.5
+                && std::abs(lines[1].toDouble() - el) < 0.5;
+        },
+        20000);
 }
 
 int RotctldServerTest::timesSent(const QSignalSpy &sent, const QByteArray &line)
@@ -623,18 +626,7 @@ void RotctldServerTest::clientsSeeTheCalibratedPointing()
     const RotctlResult r = runRotctl({"-m", "2", "-r", where, "P", "30", "20"});
     QVERIFY2(r.finished && r.exitCode == 0, r.err.constData());
     QVERIFY(timesSent(sent, "AZ26.00 EL21.00\n") == 1);
-    double az = -1, el = -1;
-    QVERIFY(QTest::qWaitFor(
-        [&] {
-            const RotctlResult got = runRotctl({"-m", "2", "-r", where, "p"});
-            const QList<QByteArray> lines = got.out.trimmed().split('\n');
-            if (lines.size() < 2)
-                return false;
-            az = lines[0].toDouble();
-            el = lines[1].toDouble();
-            return std::abs(az - 30) < 0.5 && std::abs(el - 20) < 0.5;
-        },
-        20000));
+    QVERIFY(rotctlReadsPosition(where, 30, 20));
     // \dump_state gives the travel in the same frame.
     QTcpSocket s;
     s.connectToHost(QHostAddress::LocalHost, server->port());
