@@ -165,6 +165,10 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
     connect(m_trackers, &RotctldPanel::message, this, &MainWindow::logInfo);
     connect(m_tracking, &TrackingPanel::message, this, &MainWindow::logInfo);
     connect(m_alignment, &AlignmentPanel::message, this, &MainWindow::logInfo);
+    m_tracking->setOtherSteering([this] {
+        const QString peer = m_rotctld->remoteSteering();
+        return peer.isEmpty() ? peer : tr("Remote tracker %1").arg(peer);
+    });
     connect(m_tracking, &TrackingPanel::passOverlayChanged, m_plot, &PolarPlotWidget::setPassOverlay);
     connect(m_tracking, &TrackingPanel::passTargetMoved, m_plot, &PolarPlotWidget::setPassTarget);
     // What the tracker measures while it tracks is charted with the rest.

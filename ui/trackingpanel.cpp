@@ -246,6 +246,11 @@ void TrackingPanel::startTracking()
         emit message(tr("tracking needs a rotator: connect first"));
         return;
     }
+    if (const QString other = m_otherSteering ? m_otherSteering() : QString(); !other.isEmpty()) {
+        emit message(tr("%1 is steering the rotator: stop it (or Stop, which holds remote trackers off) "
+                        "before Slew tracks, or the two will fight").arg(other));
+        return;
+    }
     m_runner->start(*target, *m_station, 0.0, m_clock);
     m_track->setEnabled(false);
     m_stopTracking->setEnabled(true);

@@ -17,6 +17,7 @@
 #include <QTimer>
 #include <QWidget>
 
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -44,6 +45,13 @@ public:
 
     // The station to plan for (the window's, from Sky → Station…).
     void setStation(const std::optional<sky::Station> &station);
+    // Who else steers the rotator now (a remote tracker), or empty: Track is
+    // refused, and a pass waits, while someone does.
+    void setOtherSteering(std::function<QString()> who)
+    {
+        m_otherSteering = who;
+        m_runner->setOtherSteering(std::move(who));
+    }
     // The clock passes are predicted and tracked by; the system's UTC unless
     // set (a rehearsal). It must outlive the panel.
     void setClock(const tracking::StationClock *clock);
@@ -83,6 +91,7 @@ private:
     tracking::StationClock m_systemClock;
     const tracking::StationClock *m_clock = &m_systemClock;
     std::unique_ptr<tracking::PassRunner> m_runner;
+    std::function<QString()> m_otherSteering;
     std::optional<tracking::TargetSky> m_sky; // the chosen target's, while there is a station
     QList<sky::Pass> m_passList;
     QList<QList<tracking::SkyPoint>> m_samples; // each pass as planned (the moon's cost 1.7 ms a point)

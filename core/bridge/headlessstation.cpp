@@ -189,6 +189,11 @@ bool HeadlessStation::start(const HeadlessConfig &config, QString *error)
             if (RotctldServer *server = m_rotors.front().server.get())
                 active ? server->holdRemote(tr("Slew's own tracking")) : server->releaseRemote();
         });
+        m_runner->setOtherSteering([this] {
+            RotctldServer *server = m_rotors.front().server.get();
+            const QString peer = server ? server->remoteSteering() : QString();
+            return peer.isEmpty() ? peer : tr("remote tracker %1").arg(peer);
+        });
         m_runner->start(config.track->target, *config.station, config.track->minElevationDeg, m_clock.get());
     }
     for (Rotor &rotor : m_rotors) {

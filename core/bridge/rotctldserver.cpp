@@ -299,7 +299,7 @@ QByteArray RotctldServer::answer(Client &c, const QByteArray &line)
     case Kind::SetPosition:
         if (const int refused = refuseElevation(c, r.el != 0.0); refused != 0)
             return formatStatus(r, refused);
-        return formatStatus(r, setPosition(r));
+        return formatStatus(r, steered(c, setPosition(r)));
     case Kind::Stop:
         return formatStatus(r, m_session->stop() ? 0 : int(HamlibError::Io));
     case Kind::Park:
@@ -324,7 +324,7 @@ QByteArray RotctldServer::answer(Client &c, const QByteArray &line)
     case Kind::Move:
         if (const int refused = refuseElevation(c, (r.direction & (2 | 4 | 32 | 64 | 128 | 256)) != 0); refused != 0)
             return formatStatus(r, refused);
-        return formatStatus(r, move(r));
+        return formatStatus(r, steered(c, move(r)));
     case Kind::GetInfo: {
         QString info = QStringLiteral("Slew rotator bridge");
         if (!m_session->version().isEmpty())
@@ -385,6 +385,20 @@ int RotctldServer::refuseElevation(Client &c, bool wantsElevation)
     logClient(c, tr("rotctld client %1: '%2' refused: this rotator turns azimuth only (send elevation 0)")
                      .arg(c.info.peer, c.info.lastCommand));
     return int(HamlibError::NotAvailable);
+}
+
+int RotctldServer::steered(const Client &c, int status)
+{
+    if (status == 0) {
+        m_lastSteering = c.info.peer;
+        m_lastSteeringAt.start();
+    }
+    return status;
+}
+
+QString RotctldServer::remoteSteering(qint64 withinMs) const
+{
+    return m_lastSteeringAt.isValid() && m_lastSteeringAt.elapsed() <= withinMs ? m_lastSteering : QString();
 }
 
 int RotctldServer::setPosition(const RotctldRequest &r)

@@ -87,6 +87,12 @@ public:
     void setLogCommands(bool on) { m_logCommands = on; }
 
     QList<ClientInfo> clients() const;
+    // The client that steered the rotator (a go-to or a move it was not
+    // refused) within the last `withinMs`, or empty: Slew's own tracking
+    // holds off while a remote tracker drives, as remote trackers are held
+    // off while Slew tracks.
+    static constexpr qint64 kSteeringQuietMs = 10000;
+    QString remoteSteering(qint64 withinMs = kSteeringQuietMs) const;
     int movesSuppressedByDeadband() const { return m_suppressed; }
 
 signals:
@@ -127,6 +133,8 @@ private:
     void reportSuppressed(Client &client);
     void reportAllSuppressed();
     int move(const RotctldRequest &r);
+    // `status` of a go-to or a move from `c`; a success is remembered as steering.
+    int steered(const Client &c, int status);
 
     session::RotatorSession *m_session;
     transport::BoundedTcpServer m_server;
@@ -135,6 +143,8 @@ private:
     double m_deadband = 0.5;
     bool m_remoteHeld = false;
     int m_suppressed = 0;
+    QString m_lastSteering;         // the peer that last steered
+    QElapsedTimer m_lastSteeringAt; // when (invalid: never)
     bool m_logCommands = false;
     QElapsedTimer m_clock;
     QTimer m_suppressedReport; // runs while some client has lines held back

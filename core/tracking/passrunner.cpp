@@ -16,6 +16,7 @@ using session::RotatorSession;
 namespace {
 constexpr double kLookAheadDays = 2.0;
 constexpr int kRetryMs = 3600 * 1000; // no pass in two days: look again in an hour
+constexpr int kOtherQuietSeconds = 10;  // as RotctldServer::kSteeringQuietMs
 }
 
 PassRunner::PassRunner(RotatorSession *session, QObject *parent) : QObject(parent), m_session(session), m_tracker(session)
@@ -85,6 +86,13 @@ void PassRunner::nextPass()
         emit logLine(tr("no pass of %1 above %2° in the next %3 days; looking again in an hour")
                          .arg(m_target.name()).arg(m_minElevation).arg(kLookAheadDays));
         m_retry.start(kRetryMs);
+        return;
+    }
+    if (const QString other = m_otherSteering ? m_otherSteering() : QString(); !other.isEmpty()) {
+        emit logLine(tr("%1 is steering the rotator; tracking waits until it has been quiet for %2 s")
+                         .arg(other)
+                         .arg(kOtherQuietSeconds));
+        m_retry.start(kOtherQuietSeconds * 1000);
         return;
     }
     // A pass already under way is tracked from now.

@@ -19,6 +19,7 @@
 #include <QObject>
 #include <QTimer>
 
+#include <functional>
 #include <optional>
 
 namespace slew::tracking {
@@ -33,6 +34,10 @@ public:
     // reach come from the session's profile as each pass is planned
     // (rotatorreach.h), so a profile changed between passes applies to the next.
     void setAfterPass(TrackerSettings::AfterPass afterPass) { m_afterPass = afterPass; }
+    // Who else is steering the rotator now (a remote tracker on the rotctld
+    // port), or empty. A pass does not start while someone does: the two
+    // would fight over the rotator.
+    void setOtherSteering(std::function<QString()> who) { m_otherSteering = std::move(who); }
     // Starts with the next pass (or the one in progress). The clock must
     // outlive the runner.
     void start(const TrackTarget &target, const sky::Station &station, double minElevationDeg,
@@ -65,6 +70,7 @@ private:
     sky::Station m_station;
     double m_minElevation = 0;
     TrackerSettings::AfterPass m_afterPass = TrackerSettings::AfterPass::Park;
+    std::function<QString()> m_otherSteering;
     const StationClock *m_clock = nullptr;
     bool m_running = false;
     bool m_wasActive = false;

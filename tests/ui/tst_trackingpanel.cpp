@@ -31,6 +31,7 @@
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include <QTcpSocket>
 #include <QTest>
 #include <QToolButton>
 #include <QXYSeries>
@@ -315,6 +316,34 @@ private slots:
                  qPrintable(panel->findChild<QLabel *>(QStringLiteral("trackingLive"))->text()));
         // A direction that does not read is no target.
         QVERIFY(!panel->selectTarget(QStringLiteral("azel:400,10")));
+    }
+
+    void waitsWhileARemoteTrackerSteers()
+    {
+        // The reverse of holding remote trackers off: while Gpredict (here a
+        // raw rotctld client) steers, Track is refused and says who steers.
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
+        QVERIFY(f.connectAndWait());
+        TrackingPanel *panel = f.window->trackingPanel();
+        const slew::tracking::StationClock clock(slew::sky::julianFromIso(QStringLiteral("2026-11-23T18:00:00Z")), 1.0);
+        rehearse(panel, clock);
+        QVERIFY(panel->selectTarget(QStringLiteral("azel:100,20")));
+        slew::bridge::RotctldServer *server = f.window->rotctldServer();
+        QString error;
+        QVERIFY2(server->listen(QHostAddress::LocalHost, 0, &error), qPrintable(error));
+        QTcpSocket gpredict;
+        gpredict.connectToHost(QHostAddress::LocalHost, server->port());
+        QTRY_COMPARE(gpredict.state(), QAbstractSocket::ConnectedState);
+        QSignalSpy answered(&gpredict, &QTcpSocket::readyRead);
+        gpredict.write("P 30 10\n");
+        QVERIFY(answered.wait(5000));
+        QCOMPARE(gpredict.readAll(), QByteArray("RPRT 0\n"));
+        QSignalSpy messages(panel, &TrackingPanel::message);
+        QTest::mouseClick(panel->trackButton(), Qt::LeftButton);
+        QVERIFY(!panel->runner()->isRunning());
+        QVERIFY2(messages.last().at(0).toString().contains(QStringLiteral("is steering the rotator")),
+                 qPrintable(messages.last().at(0).toString()));
+        QVERIFY(server->remoteSteering().startsWith(QStringLiteral("127.0.0.1:")));
     }
 
     void saysWhatIsMissing()
