@@ -154,7 +154,9 @@ void AxisModel::step(double dt)
     if (m_errors == 0) {
         switch (m_mode) {
         case DriveMode::Released: break;
-        case DriveMode::Position: drive = positionDrive(dt); break;
+        case DriveMode::Position:
+            drive = m_plant.control == MotorControl::Relay ? relayDrive() : positionDrive(dt);
+            break;
         case DriveMode::Velocity: drive = velocityDrive(m_velocityTarget, dt); break;
         case DriveMode::Homing:
             drive = velocityDrive(m_homingBackOff ? m_plant.homingSpeed : -m_plant.homingSpeed, dt);
@@ -165,6 +167,9 @@ void AxisModel::step(double dt)
     // The limit switches are wired into the driver: it will not push further
     // into a switch that has tripped, whatever the loop asks for.
     bool powered = m_errors == 0 && m_mode != DriveMode::Released;
+    // A relay that is off leaves the motor unpowered: a worm gear stops.
+    if (m_mode == DriveMode::Position && m_plant.control == MotorControl::Relay && m_relay == 0)
+        powered = false;
     const int switches = limitSwitches();
     if ((switches & LimitSwitch::Lower) && drive < 0.0) {
         drive = 0.0;
@@ -254,6 +259,18 @@ double AxisModel::positionDrive(double dt)
         m_integral = 0.0;
     }
     return drive;
+}
+
+double AxisModel::relayDrive()
+{
+    const double error = m_target - m_reading;
+    if (m_relay == 0 && std::fabs(error) > m_plant.relayOnDeg)
+        m_relay = error > 0 ? 1 : -1;
+    // Off within the band, or once past the target (the motor does not
+    // reverse on the same relay).
+    else if (m_relay != 0 && (std::fabs(error) < m_plant.relayOffDeg || (error > 0 ? 1 : -1) != m_relay))
+        m_relay = 0;
+    return m_relay * m_plant.torqueLimit;
 }
 
 double AxisModel::velocityDrive(double target, double dt)

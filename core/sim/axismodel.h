@@ -94,6 +94,8 @@ public:
 private:
     double sampleEncoder();
     double positionDrive(double dt);
+    // A relay controller's drive: full torque towards the target, or none.
+    double relayDrive();
     double velocityDrive(double target, double dt);
     double deliveredEffort(double drive) const;
     void integrate(double drive, bool powered, double dt);
@@ -127,6 +129,7 @@ private:
     double m_lastError = 0.0;
     double m_holdError = 0.0;     // velocity loop: degrees behind the commanded motion
     double m_effort = 0.0;
+    int m_relay = 0;              // relay drive: -1 or +1 while a relay is on, 0 off
 
     // Fault detection.
     int m_errors = 0;

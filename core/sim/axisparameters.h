@@ -14,6 +14,14 @@ enum class DriveTrain : std::uint8_t {
     FreeRunning, // a spur gear or direct drive: a released axis coasts until friction stops it
 };
 
+// How the controller drives the motor towards a position.
+enum class MotorControl : std::uint8_t {
+    Servo, // a speed loop: the drive follows the position loop's demand smoothly
+    Relay, // relays: full power one way or the other, or off (a G-5500's own
+           // control box behind a GS-232-style board): on when the axis is
+           // further than relayOnDeg from its target, off within relayOffDeg
+};
+
 // Mechanics of one axis, in degrees and seconds. The motor torque is written
 // as the angular acceleration it gives the load (deg/s^2 for inertia 1), so
 // the gains below read as "deg/s^2 of drive per degree of error".
@@ -39,6 +47,9 @@ struct AxisPlant {
     double homingSpeed = 5.0;     // deg/s while RESET looks for the switch: slow enough to
                                   // brake before the hard stop once it trips
     double manualSpeed = 6.2;     // deg/s for ML/MR/MU/MD (Easycomm II has no speed): full speed
+    MotorControl control = MotorControl::Servo;
+    double relayOnDeg = 0.5;      // a relay drive starts when the target is further than this
+    double relayOffDeg = 0.1;     // and stops within this, or once past the target
 };
 
 // Position servo gains, as CW1..CW3 (azimuth) and CW4..CW6 (elevation) set

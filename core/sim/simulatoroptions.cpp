@@ -22,6 +22,9 @@ using protocol::Dialect;
 const std::vector<SimulatorOptionInfo> kOptions = {
     {"model", "name", "class of rotator: g5500 (default, 6.2/2.7 deg/s), satnogs (30 deg/s) or heavy (2/1 deg/s)"},
     {"drive", "kind", "worm (default: self-locking, stops when released) or free (spur or direct drive: coasts)"},
+    {"control", "kind",
+     "servo (default: a speed loop follows the position loop) or relay (full speed or off: on beyond 0.5 deg "
+     "from the target, off within 0.1 deg, as a G-5500's own control box behind a GS-232-style board)"},
     {"kp", "gain", "initial proportional gain of both axes (CW1/CW4)"},
     {"ki", "gain", "initial integral gain of both axes (CW2/CW5)"},
     {"kd", "gain", "initial derivative gain of both axes (CW3/CW6)"},
@@ -194,6 +197,17 @@ QString applySimulatorOption(SimulatorOptions &o, QStringView rawName, QStringVi
         else
             return bad(name, value, QStringLiteral("expected worm or free"));
         r.azimuth.driveTrain = r.elevation.driveTrain = train;
+        return {};
+    }
+    if (name == u"control") {
+        MotorControl control = MotorControl::Servo;
+        if (value.compare(u"servo", Qt::CaseInsensitive) == 0)
+            control = MotorControl::Servo;
+        else if (value.compare(u"relay", Qt::CaseInsensitive) == 0)
+            control = MotorControl::Relay;
+        else
+            return bad(name, value, QStringLiteral("expected servo or relay"));
+        r.azimuth.control = r.elevation.control = control;
         return {};
     }
     if (name == u"kp")

@@ -118,6 +118,31 @@ private slots:
         QVERIFY(axis.isSettled());
     }
 
+    void aRelayDriveRunsFullSpeedAndStopsInItsBand()
+    {
+        AxisPlant plant = azimuthPlant();
+        plant.control = MotorControl::Relay;
+        AxisModel axis(plant);
+        axis.placeAt(100.0);
+        // Within the switch-on band nothing moves: no chatter on a small step.
+        axis.commandPosition(100.3);
+        run(axis, 2.0);
+        QCOMPARE(axis.effort(), 0.0);
+        QVERIFY(std::fabs(axis.position() - 100.0) < 0.01);
+        // Beyond it the relay drives at the speed cap, and the worm stops the
+        // axis within the switch-off band once the relay lets go.
+        axis.commandPosition(110.0);
+        const Trace t = run(axis, 4.0);
+        QVERIFY2(std::fabs(t.maxSpeed - plant.maxSpeed) < 0.05, qPrintable(QString::number(t.maxSpeed)));
+        QVERIFY2(std::fabs(axis.position() - 110.0) <= plant.relayOffDeg + 0.05, qPrintable(QString::number(axis.position())));
+        QCOMPARE(axis.effort(), 0.0); // off, and held by the worm
+        QVERIFY(t.peak < 110.0 + 0.1);
+        // Back down the same way.
+        axis.commandPosition(104.0);
+        run(axis, 4.0);
+        QVERIFY(std::fabs(axis.position() - 104.0) <= plant.relayOffDeg + 0.05);
+    }
+
     void defaultIsAG5500ClassAzimuth()
     {
         AxisModel axis(azimuthPlant());

@@ -149,14 +149,23 @@ SkyPoint skyAt(const QList<SkyPoint> &pass, double seconds)
 // One simulated G-5500 on its manual clock, and the measurements every run takes.
 class Rig {
 public:
-    Rig(double azMax, double elMax)
+    // `relay`: the simulator's relay motor control, and a profile that says so
+    // (the tracker's 2° step for relays unless `relayStep` says otherwise).
+    Rig(double azMax, double elMax, bool relay = false, double relayStep = 0)
     {
         model::RotatorProfile profile;
         profile.limits = model::RotatorLimits{0, azMax, 0, elMax};
         profile.parkAz = 0;
         profile.parkEl = 0;
+        if (relay) {
+            profile.motion.drive = model::RotatorMotion::Drive::Relay;
+            profile.motion.trackStepDeg = relayStep;
+        }
         session.setProfile(profile);
-        session.connectTo(QStringLiteral("sim:?clock=manual&az_max=%1&el_max=%2").arg(azMax).arg(elMax));
+        session.connectTo(QStringLiteral("sim:?clock=manual&az_max=%1&el_max=%2%3")
+                              .arg(azMax)
+                              .arg(elMax)
+                              .arg(relay ? QStringLiteral("&control=relay") : QString()));
         pump.follow(&session);
         runEventLoopUntil([&] { return session.capabilities().probed && session.hasPosition(); }, 10000);
         sim = sim::simulatorBehind(session.link());
@@ -224,9 +233,10 @@ public:
     double sumSquares = 0;
 };
 
-Figures runSlew(const PassCase &c, double azMax, double elMax, tracking::PassPlan *plan)
+Figures runSlew(const PassCase &c, double azMax, double elMax, tracking::PassPlan *plan, bool relay = false,
+                double relayStep = 0)
 {
-    Rig rig(azMax, elMax);
+    Rig rig(azMax, elMax, relay, relayStep);
     rig.pass = c.points;
     rig.aosAtSim = rig.sim->clock().now() + 150; // room to pre-position
     tracking::Tracker tracker(&rig.session);
@@ -247,9 +257,9 @@ Figures runSlew(const PassCase &c, double azMax, double elMax, tracking::PassPla
 // Gpredict's antenna control, through Slew's rotctld server: once a cycle,
 // read the position; when either axis is more than the tolerance off the
 // satellite, send the satellite's bearing and elevation.
-Figures runGpredictStyle(const PassCase &c, double azMax, double elMax)
+Figures runGpredictStyle(const PassCase &c, double azMax, double elMax, bool relay = false)
 {
-    Rig rig(azMax, elMax);
+    Rig rig(azMax, elMax, relay);
     rig.pass = c.points;
     rig.aosAtSim = rig.sim->clock().now() + 150;
     bridge::RotctldServer server(&rig.session);
@@ -312,6 +322,15 @@ int main(int argc, char *argv[])
             print("Gpredict-style", runGpredictStyle(c, azMax, elMax));
         }
     }
+    // A relay drive (full speed or off) on the 60° pass: the tracker's relay
+    // step (1°) and a coarser one.
+    std::printf("%s, relay drive (on beyond 0.5° from the target, off within 0.1°), 450°/180°\n", passes[1].name);
+    for (double step : {0.0, 2.0}) {
+        tracking::PassPlan plan;
+        const Figures relay = runSlew(passes[1], 450, 180, &plan, true, step);
+        print(step == 0 ? "Slew, 1° step" : "Slew, 2° step", relay);
+    }
+    print("Gpredict-style", runGpredictStyle(passes[1], 450, 180, true));
     // How fast an azimuth axis must be to follow the zenith pass within 1°.
     const PassCase &zenith = passes[2];
     std::printf("%s: the planner's predicted worst by azimuth speed (450°/180°, half a second to full speed)\n", zenith.name);
