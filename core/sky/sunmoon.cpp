@@ -107,21 +107,30 @@ BodyPosition horizontalOf(const ln_equ_posn &topocentric, const Station &station
 
 } // namespace
 
-BodyPosition bodyPosition(SkyBody body, const Station &station, double julianDate)
+GeocentricPlace geocentricPlace(SkyBody body, double julianDate)
 {
     const Geocentric g = geocentric(body, julianDate);
-    ln_lnlat_posn observer{station.longitudeDeg, station.latitudeDeg};
+    return {g.equatorial.ra, g.equatorial.dec, g.distanceKm};
+}
 
+BodyPosition bodyPositionFrom(const GeocentricPlace &place, const Station &station, double julianDate)
+{
+    ln_lnlat_posn observer{station.longitudeDeg, station.latitudeDeg};
     // The moon is 60 earth radii away: seen from the station it is up to a
     // degree from where it is seen from the centre.
     ln_equ_posn shift{};
-    ln_equ_posn object = g.equatorial;
-    ln_get_parallax(&object, g.distanceKm / kAstronomicalUnitKm, &observer, station.heightM, julianDate, &shift);
+    ln_equ_posn object{place.rightAscensionDeg, place.declinationDeg};
+    ln_get_parallax(&object, place.distanceKm / kAstronomicalUnitKm, &observer, station.heightM, julianDate, &shift);
     BodyPosition p = horizontalOf({object.ra + shift.ra, object.dec + shift.dec}, station, julianDate);
-    p.distanceKm = g.distanceKm;
-    p.rightAscensionDeg = g.equatorial.ra;
-    p.declinationDeg = g.equatorial.dec;
+    p.distanceKm = place.distanceKm;
+    p.rightAscensionDeg = place.rightAscensionDeg;
+    p.declinationDeg = place.declinationDeg;
     return p;
+}
+
+BodyPosition bodyPosition(SkyBody body, const Station &station, double julianDate)
+{
+    return bodyPositionFrom(geocentricPlace(body, julianDate), station, julianDate);
 }
 
 BodyPosition celestialPosition(double raJ2000Deg, double decJ2000Deg, const Station &station, double julianDate)

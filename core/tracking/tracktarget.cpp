@@ -17,8 +17,8 @@ namespace {
 // The planner's sampling: a satellite moves degrees a second near the
 // zenith; the sky turns a thousandth of that, and along so gentle a curve
 // that a straight line between points two minutes apart is off by under a
-// thousandth of a degree. The moon's theory costs 1.7 ms a position, so
-// finer sampling would stall the window for seconds on a twelve-hour pass.
+// thousandth of a degree. The moon's theory costs 1.7 ms a position: it is
+// computed every ten minutes and interpolated (sunmoon.h, geocentricPlace).
 constexpr double kSatelliteStepS = 1.0;
 constexpr double kSkyStepS = 120.0;
 constexpr double kFixedStepS = 60.0;
@@ -147,6 +147,29 @@ QList<SkyPoint> TargetSky::sample(const sky::Station &station, const sky::Pass &
         sky::Pass rest = pass;
         rest.aos.julian = fromJulian;
         return sampleSatellitePass(*m_satellite, station, rest, kSatelliteStepS);
+    }
+    if (m_target.kind == TrackTarget::Kind::Sun || m_target.kind == TrackTarget::Kind::Moon) {
+        // The theory every ten minutes, a straight line between (sunmoon.h).
+        const sky::SkyBody body = m_target.kind == TrackTarget::Kind::Sun ? sky::SkyBody::Sun : sky::SkyBody::Moon;
+        constexpr double kNodeDays = 600.0 / sky::kSecondsPerDay;
+        double nodeAt = fromJulian;
+        sky::GeocentricPlace node = sky::geocentricPlace(body, nodeAt);
+        sky::GeocentricPlace nextNode = sky::geocentricPlace(body, nodeAt + kNodeDays);
+        return sampleSkyPass(
+            [&](double julian) {
+                while (julian > nodeAt + kNodeDays) {
+                    nodeAt += kNodeDays;
+                    node = nextNode;
+                    nextNode = sky::geocentricPlace(body, nodeAt + kNodeDays);
+                }
+                const double f = (julian - nodeAt) / kNodeDays;
+                const double turn = std::remainder(nextNode.rightAscensionDeg - node.rightAscensionDeg, 360.0);
+                const sky::GeocentricPlace between{node.rightAscensionDeg + f * turn,
+                                                   node.declinationDeg + f * (nextNode.declinationDeg - node.declinationDeg),
+                                                   node.distanceKm + f * (nextNode.distanceKm - node.distanceKm)};
+                return sky::bodyPositionFrom(between, station, julian);
+            },
+            fromJulian, pass.los.julian, kSkyStepS);
     }
     return sampleSkyPass([&](double julian) { return skyPosition(m_target, station, julian); }, fromJulian,
                          pass.los.julian, m_target.isFixed() ? kFixedStepS : kSkyStepS);

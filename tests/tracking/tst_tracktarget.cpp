@@ -157,6 +157,29 @@ private slots:
         QCOMPARE(sky.lookAt(kStation, 2461001.0)->azimuthDeg, 200.0);
     }
 
+    void theMoonSampledFromItsTheoryEveryTenMinutes()
+    {
+        // The theory every ten minutes and a straight line between: within a
+        // thousandth of a degree of computing it at every point.
+        TrackTarget t;
+        t.kind = TrackTarget::Kind::Moon;
+        const TargetSky sky(t);
+        const double from = at("2026-11-23T00:00:00Z");
+        const QList<sky::Pass> passes = sky.passes(kStation, sky::PassWindow{from, from + 1.0, 0.0});
+        QVERIFY(!passes.isEmpty());
+        const sky::Pass &p = passes.first();
+        const QList<tracking::SkyPoint> points = sky.sample(kStation, p, p.aos.julian);
+        QVERIFY(points.size() > 100);
+        double worst = 0;
+        for (const tracking::SkyPoint &point : points) {
+            const sky::BodyPosition exact = sky::moonPosition(kStation, p.aos.julian + point.seconds / sky::kSecondsPerDay);
+            worst = std::max({worst, std::abs(std::remainder(point.azimuthDeg - exact.azimuthDeg, 360.0)),
+                              std::abs(point.elevationDeg - exact.elevationDeg)});
+        }
+        qInfo("worst difference %.6f° over %lld points", worst, (long long)points.size());
+        QVERIFY(worst < 0.001);
+    }
+
     void aSourceIsSampledAsItMoves()
     {
         const auto t = TrackTarget::parseFixedOrCelestial(QStringLiteral("radec:23:23:24,+58:48:54"), nullptr);
