@@ -3,6 +3,7 @@
 #include <QObject>
 #include <QPainter>
 
+#include <algorithm>
 #include <cmath>
 
 namespace slew::ui {
@@ -59,7 +60,12 @@ void paintPassOverlay(QPainter &p, const PassOverlay &o, const std::function<QPo
         label(p, pointFor(overlapAt->x(), overlapAt->y()), QObject::tr("overlap"), kOverlap);
     if (unwindAt)
         label(p, pointFor(unwindAt->x(), unwindAt->y()), QObject::tr("unwind"), QColor(0xe5, 0x48, 0x48));
-    if (o.flipped && !o.planned.isEmpty()) {
+    if (o.overTheTop && !o.planned.isEmpty()) {
+        const auto top = std::min_element(o.planned.begin(), o.planned.end(), [](const QPointF &a, const QPointF &b) {
+            return std::abs(a.y() - 90.0) < std::abs(b.y() - 90.0);
+        });
+        label(p, pointFor(top->x(), top->y()), QObject::tr("over the top"), kPlanned);
+    } else if (o.flipped && !o.planned.isEmpty()) {
         const QPointF mid = o.planned[o.planned.size() / 2];
         label(p, pointFor(mid.x(), mid.y()), QObject::tr("flip"), kPlanned);
     }

@@ -21,6 +21,7 @@ struct PassOverlay {
     double azimuthTurnEnd = 360.0; // azimuth positions past this are the overlap
     double azimuthTurnStart = 0.0; // and below this, a south stop's other side
     bool flipped = false;
+    bool overTheTop = false; // the planned path crosses the zenith: marked where it does
     int unwinds = 0;
     std::optional<QPointF> targetNow; // az, el
 };

@@ -43,7 +43,9 @@ QString badge(const tracking::PassPlan &plan)
     if (!plan.isValid())
         return QObject::tr("no plan: %1").arg(plan.refusal);
     QStringList parts;
-    if (plan.flipped)
+    if (plan.overTheTop)
+        parts << QObject::tr("over the top");
+    else if (plan.flipped)
         parts << QObject::tr("flip");
     if (plan.usesOverlap)
         parts << QObject::tr("overlap");
@@ -231,6 +233,7 @@ void TrackingPanel::onPassChosen()
     overlay.azimuthTurnStart = reach().limits.azMin;
     overlay.azimuthTurnEnd = reach().limits.azMin + 360.0;
     overlay.flipped = plan.flipped;
+    overlay.overTheTop = plan.overTheTop;
     overlay.unwinds = plan.unwinds;
     emit passOverlayChanged(overlay);
 }

@@ -16,6 +16,10 @@ constexpr double kEpsilon = 1e-9;
 // Paths whose worst errors differ by less than this are equally good: the
 // next criteria (unwinds, the plain way, the nearest start) decide.
 constexpr double kSameErrorDeg = 0.05;
+// Below this culmination, crossing over the top swings the elevation axis
+// through twice the zenith distance at the crossing, far slower than any
+// azimuth swing it would save: such passes are not worth planning that way.
+constexpr double kOverTheTopFromDeg = 60.0;
 
 double wrap360(double degrees)
 {
@@ -48,6 +52,7 @@ struct Candidate {
 // continuous run, and the elevations to command.
 struct Run {
     bool flipped = false;
+    bool overTheTop = false;
     QList<double> azimuth;   // continuous, starting in 0..360
     QList<double> elevation; // as commanded, before clamping to the travel
 };
@@ -65,6 +70,45 @@ Run makeRun(const QList<SkyPoint> &pass, bool flipped)
         previous = az;
     }
     return run;
+}
+
+// Over the top: the antenna keeps near the vertical plane through `plane`
+// (a bearing) and its opposite, and the elevation axis carries it from one
+// horizon through the zenith to the other. Each point is taken the way that
+// lies within a quarter turn of the plane: as it is on the near side, and
+// flipped (bearing + 180°, 180° − el) on the far side. For a pass near the
+// zenith this is what a 0–180° elevation axis is for: the sky's bearing
+// swings half a turn around the top in seconds, but the plane only has to
+// lean a little towards the satellite, by as much as the pass misses the
+// zenith. The sharp lean at the top that would follow it exactly is left
+// to the rate limit (shareTheLag), which keeps the azimuth near the plane.
+Run makeOverTheTopRun(const QList<SkyPoint> &pass, double plane)
+{
+    Run run;
+    run.flipped = run.overTheTop = true;
+    for (const SkyPoint &p : pass) {
+        const double turn = shortTurn(plane, p.azimuthDeg);
+        const bool nearSide = std::abs(turn) <= 90.0;
+        run.azimuth.append(wrap360(plane) + (nearSide ? turn : shortTurn(plane, p.azimuthDeg + 180.0)));
+        run.elevation.append(nearSide ? p.elevationDeg : 180.0 - p.elevationDeg);
+    }
+    return run;
+}
+
+std::array<double, 3> unitVector(double az, double el)
+{
+    const double ca = std::cos(az * kDeg), sa = std::sin(az * kDeg);
+    const double ce = std::cos(el * kDeg), se = std::sin(el * kDeg);
+    return {ce * sa, ce * ca, se}; // east, north, up
+}
+
+// The angle between two directions given as vectors of any length.
+double angleBetweenDeg(const std::array<double, 3> &a, const std::array<double, 3> &b)
+{
+    // atan2 of |a×b| and a·b stays accurate for tiny angles, where acos does not.
+    const double cx = a[1] * b[2] - a[2] * b[1], cy = a[2] * b[0] - a[0] * b[2], cz = a[0] * b[1] - a[1] * b[0];
+    const double dot = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    return std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), dot) / kDeg;
 }
 
 // One axis of the rotator as the planner imagines it: it heads for the
@@ -125,14 +169,19 @@ void predict(const QList<SkyPoint> &pass, const RotatorReach &reach, double thre
         } else if (i > 0) {
             const double dt = p.seconds - plan.path[i - 1].seconds;
             const int steps = std::max(1, int(std::ceil(dt / kSubStep)));
-            const SkyPoint &from = pass[i - 1], &to = pass[i];
-            const double turn = shortTurn(from.azimuthDeg, to.azimuthDeg);
+            // Between two points the target moves along the sky's shortest
+            // arc, not straight across bearing and elevation, which near the
+            // zenith (the bearing swinging half a turn in a second) would
+            // put it far off its track.
+            const auto from = unitVector(pass[i - 1].azimuthDeg, pass[i - 1].elevationDeg);
+            const auto to = unitVector(pass[i].azimuthDeg, pass[i].elevationDeg);
             for (int s = 1; s <= steps; ++s) {
                 az.step(p.azimuth, dt / steps);
                 el.step(p.elevation, dt / steps);
                 const double f = double(s) / steps;
-                worstHere = std::max(worstHere, skyAngleDeg(az.position, el.position, from.azimuthDeg + f * turn,
-                                                            from.elevationDeg + f * (to.elevationDeg - from.elevationDeg)));
+                const std::array<double, 3> between{from[0] + f * (to[0] - from[0]), from[1] + f * (to[1] - from[1]),
+                                                    from[2] + f * (to[2] - from[2])};
+                worstHere = std::max(worstHere, angleBetweenDeg(unitVector(az.position, el.position), between));
             }
         }
         p.predictedErrorDeg = skyAngleDeg(az.position, el.position, pass[i].azimuthDeg, pass[i].elevationDeg);
@@ -189,6 +238,7 @@ Candidate placeRun(const QList<SkyPoint> &pass, const Run &run, int turns, const
     const model::RotatorLimits &l = reach.limits;
     Candidate c;
     c.plan.flipped = run.flipped;
+    c.plan.overTheTop = run.overTheTop;
     int k = turns;
     QList<int> turnChanges; // where the path unwinds
     for (int i = 0; i < run.azimuth.size(); ++i) {
@@ -250,6 +300,8 @@ bool better(const Candidate &a, const Candidate &b)
         return a.plan.unwinds < b.plan.unwinds;
     if (a.plan.flipped != b.plan.flipped)
         return !a.plan.flipped;
+    if (a.plan.overTheTop != b.plan.overTheTop)
+        return !a.plan.overTheTop;
     if (std::abs(a.travel - b.travel) > kEpsilon)
         return a.travel < b.travel;
     return a.plan.predictedRmsDeg < b.plan.predictedRmsDeg;
@@ -259,16 +311,7 @@ bool better(const Candidate &a, const Candidate &b)
 
 double skyAngleDeg(double az1, double el1, double az2, double el2)
 {
-    auto unit = [](double az, double el) {
-        const double ca = std::cos(az * kDeg), sa = std::sin(az * kDeg);
-        const double ce = std::cos(el * kDeg), se = std::sin(el * kDeg);
-        return std::array<double, 3>{ce * sa, ce * ca, se}; // east, north, up
-    };
-    const auto a = unit(az1, el1), b = unit(az2, el2);
-    // atan2 of |a×b| and a·b stays accurate for tiny angles, where acos does not.
-    const double cx = a[1] * b[2] - a[2] * b[1], cy = a[2] * b[0] - a[0] * b[2], cz = a[0] * b[1] - a[1] * b[0];
-    const double dot = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-    return std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), dot) / kDeg;
+    return angleBetweenDeg(unitVector(az1, el1), unitVector(az2, el2));
 }
 
 PassPlan planPass(const QList<SkyPoint> &pass, const RotatorReach &reach, const PlannerOptions &options)
@@ -292,11 +335,28 @@ PassPlan planPass(const QList<SkyPoint> &pass, const RotatorReach &reach, const 
         return refused;
     }
 
+    // The ways of pointing: plain; on an elevation axis that goes past the
+    // zenith, flipped all along; and, for a pass that climbs high enough to
+    // need it, over the top.
+    QList<Run> runs{makeRun(pass, false)};
+    if (l.elMax > 90.0 + kEpsilon) {
+        runs.append(makeRun(pass, true));
+        const auto top = std::max_element(pass.begin(), pass.end(), [](const SkyPoint &a, const SkyPoint &b) {
+            return a.elevationDeg < b.elevationDeg;
+        });
+        if (top->elevationDeg >= kOverTheTopFromDeg) {
+            // The vertical plane nearest the pass: a high pass rises and
+            // sets almost opposite, so halfway between the AOS bearing and
+            // the LOS bearing's opposite (not from the top, whose bearing
+            // means little at the zenith). Starting on either side of it.
+            const double plane = pass.front().azimuthDeg
+                                 + 0.5 * shortTurn(pass.front().azimuthDeg, pass.back().azimuthDeg + 180.0);
+            runs.append(makeOverTheTopRun(pass, plane));
+            runs.append(makeOverTheTopRun(pass, plane + 180.0));
+        }
+    }
     std::optional<Candidate> best;
-    // The flip needs an elevation axis that goes past the zenith.
-    const QList<bool> ways = l.elMax > 90.0 + kEpsilon ? QList<bool>{false, true} : QList<bool>{false};
-    for (bool flipped : ways) {
-        const Run run = makeRun(pass, flipped);
+    for (const Run &run : runs) {
         // Every whole turn that puts the first point inside the travel: those
         // that fit the whole run have no unwind; the others unwind where forced.
         const int first = int(std::ceil((l.azMin - run.azimuth.front() - kEpsilon) / 360.0));
@@ -315,7 +375,9 @@ QString PassPlan::describe() const
     if (!isValid())
         return QObject::tr("no plan: %1").arg(refusal);
     QStringList how;
-    how << (flipped ? QObject::tr("flip (elevation past 90°)") : QObject::tr("plain"));
+    how << (overTheTop ? QObject::tr("over the top (elevation through 90°)")
+            : flipped  ? QObject::tr("flip (elevation past 90°)")
+                       : QObject::tr("plain"));
     if (usesOverlap)
         how << QObject::tr("overlap");
     how << (unwinds == 0 ? QObject::tr("no unwind") : QObject::tr("%n unwind(s)", nullptr, unwinds));

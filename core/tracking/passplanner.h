@@ -12,15 +12,20 @@
 //    the travel (a pass over north on a 450° rotator uses the overlap);
 //  - on a 0–180° elevation rotator, the flip: azimuth + 180°, elevation
 //    180° − el, which moves a north crossing to the south;
-//  - only when neither fits, a path with a 360° unwind, placed where it
+//  - on such a rotator, for a pass that climbs high, over the top: the
+//    antenna keeps to one vertical plane and the elevation axis carries it
+//    through the zenith, so a pass near the zenith needs no fast azimuth
+//    swing at all, only a lean as small as the pass misses the zenith by;
+//  - only when none fits, a path with a 360° unwind, placed where it
 //    costs least;
 //
 // then drives each one in its head at the rotator's full rate from the AOS
 // point and measures the pointing error as an angle on the sky. The path
 // with the smallest worst error wins, then the one with fewer unwinds, then
-// the plain way over the flip. Where even the best cannot keep up (a pass
-// near the zenith swings the azimuth faster than any rotator of the class
-// can turn), the plan says so before AOS: when, for how long, and how far
+// the plain way over the flip and the flip over going over the top. Where
+// even the best cannot keep up (on a 0–90° elevation axis, a pass near the
+// zenith swings the azimuth faster than any rotator of the class can turn),
+// the plan says so before AOS: when, for how long, and how far
 // behind it will be.
 //
 // A pure function: the same pass and rotator give the same plan.
@@ -73,6 +78,7 @@ struct LagSpan {
 
 struct PassPlan {
     bool flipped = false;     // elevation past 90°: azimuth + 180°, 180° − el
+    bool overTheTop = false;  // from one horizon through the zenith to the other (flipped after the top)
     bool usesOverlap = false; // some azimuth more than a turn from the azimuth stop
     int unwinds = 0;          // 360° turns back mid-pass: only when nothing avoids one
     QList<PathPoint> path;    // a point per sky point

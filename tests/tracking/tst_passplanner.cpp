@@ -196,6 +196,79 @@ private slots:
         }
     }
 
+    void overTheTopNearTheZenith_data()
+    {
+        QTest::addColumn<double>("maxEl");
+        QTest::addColumn<double>("culminationAz");
+        QTest::newRow("through the zenith") << 90.0 << 30.0;
+        QTest::newRow("89.5°, over north") << 89.5 << 0.0;
+        QTest::newRow("88°") << 88.0 << 200.0;
+        QTest::newRow("87°") << 87.0 << 315.0;
+    }
+
+    // A G-5500 class rotator cannot swing its azimuth half a turn in the
+    // seconds a pass near the zenith takes over the top; with an elevation
+    // axis to 180° it does not have to: the antenna stays in one vertical
+    // plane and the error is about as small as the pass misses the zenith.
+    void overTheTopNearTheZenith()
+    {
+        QFETCH(double, maxEl);
+        QFETCH(double, culminationAz);
+        // About a LEO's rate overhead: 1° of arc a second.
+        const QList<SkyPoint> pass = greatCirclePass(culminationAz, maxEl, true, 1.0, 1.0);
+        RotatorReach g5500 = reach(0, 450, 180);
+        g5500.azimuthRateDegS = 6.2;
+        g5500.elevationRateDegS = 2.7;
+        g5500.azimuthAccelDegS2 = 12;
+        g5500.elevationAccelDegS2 = 6;
+
+        RotatorReach ninety = g5500;
+        ninety.limits = RotatorLimits{0, 360, 0, 90};
+        const PassPlan plain = planPass(pass, ninety);
+        QVERIFY2(!plain.followable() || maxEl >= 90.0, qPrintable(plain.describe()));
+
+        for (const RotatorLimits &travel : {RotatorLimits{0, 450, 0, 180}, RotatorLimits{0, 360, 0, 180},
+                                             RotatorLimits{-180, 180, 0, 180}}) {
+            g5500.limits = travel;
+            const PassPlan plan = planPass(pass, g5500);
+            QVERIFY2(plan.overTheTop && plan.flipped, qPrintable(plan.describe()));
+            QVERIFY(staysInside(plan, travel));
+            QCOMPARE(plan.unwinds, 0);
+            // About what the pass misses the zenith by: the least any path
+            // that does not swing the azimuth half a turn can do (it must
+            // cross the pass's plane somewhere near the top). The rest is
+            // the prediction's own margin between samples, 1° of sky apart.
+            QVERIFY2(plan.predictedWorstDeg < 90.0 - maxEl + 0.45, qPrintable(plan.describe()));
+            QVERIFY2(plan.predictedWorstDeg < plain.predictedWorstDeg / 2, qPrintable(plan.describe()));
+            if (maxEl >= 89.5)
+                QVERIFY2(plan.followable(), qPrintable(plan.describe()));
+            // The elevation goes through the zenith once, and the azimuth
+            // only leans: nothing like the half turn the plain way needs.
+            double azLow = 1e9, azHigh = -1e9;
+            for (const PathPoint &p : plan.path) {
+                azLow = std::min(azLow, p.azimuth);
+                azHigh = std::max(azHigh, p.azimuth);
+            }
+            QVERIFY2(azHigh - azLow < 45.0, qPrintable(QStringLiteral("azimuth spans %1°").arg(azHigh - azLow)));
+            QVERIFY((plan.path.front().elevation < 10.0 && plan.path.back().elevation > 170.0)
+                    || (plan.path.front().elevation > 170.0 && plan.path.back().elevation < 10.0));
+            QVERIFY(plan.describe().contains(QStringLiteral("over the top")));
+        }
+        // Without an elevation axis past 90° there is no such way.
+        QVERIFY(!plain.overTheTop && !plain.flipped);
+    }
+
+    // A pass that is not high stays plain: going over the top would swing
+    // the elevation axis far further than the azimuth it saves.
+    void lowerPassesDoNotGoOverTheTop()
+    {
+        for (double maxEl : {30.0, 60.0, 75.0}) {
+            const QList<SkyPoint> pass = greatCirclePass(150, maxEl, false, 0.5, 1.0);
+            const PassPlan plan = planPass(pass, reach(0, 450, 180));
+            QVERIFY2(!plan.overTheTop && !plan.flipped, qPrintable(plan.describe()));
+        }
+    }
+
     void realPasses_data()
     {
         QTest::addColumn<QString>("kind");
@@ -235,6 +308,11 @@ private slots:
             for (const LagSpan &s : onSmall.lags)
                 aroundTheTop = aroundTheTop || (s.fromSeconds <= tca + 30 && s.toSeconds >= tca - 30);
             QVERIFY2(aroundTheTop, qPrintable(onSmall.describe()));
+            // Over the top, the 450°/180° rotator only lags by about as
+            // much as the pass misses the zenith.
+            const double miss = 90.0 - found->pass.maxElevationDeg();
+            QVERIFY2(onLarge.overTheTop && onLarge.predictedWorstDeg < miss + 0.8, qPrintable(onLarge.describe()));
+            QVERIFY2(onLarge.predictedWorstDeg < onSmall.lags.front().worstDeg, qPrintable(onLarge.describe()));
         } else {
             QVERIFY2(onSmall.followable() && onSmall.predictedWorstDeg < 0.5, qPrintable(onSmall.describe()));
             QVERIFY2(onLarge.followable() && onLarge.predictedWorstDeg < 0.5, qPrintable(onLarge.describe()));

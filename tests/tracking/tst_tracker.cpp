@@ -184,6 +184,36 @@ private slots:
         QVERIFY(rig.targets.last() != QPointF(180, 90));
     }
 
+    // 0.5° from the zenith at a low orbit's 1° of sky a second: the sky's
+    // bearing swings half a turn in about two seconds at the top. The
+    // simulated G-5500 goes over the top instead, its azimuth barely moving.
+    void overTheTopNearTheZenith()
+    {
+        Rig rig;
+        QVERIFY(rig.open(450, 180));
+        Tracker tracker(&rig.session);
+        TrackerSettings settings;
+        settings.afterPass = TrackerSettings::AfterPass::Stay;
+        tracker.setSettings(settings);
+        QVERIFY(tracker.track(greatCirclePass(250, 89.5, false, 1.0, 1.0), kAos, rig.reach,
+                              rig.clockWithAosIn(60, kAos)));
+        QVERIFY2(tracker.plan().overTheTop, qPrintable(tracker.plan().describe()));
+        QVERIFY(runEventLoopUntil([&] { return tracker.state() == Tracker::State::Done; }, 30000));
+        const TrackingFigures &f = tracker.figures();
+        qInfo("89.5° pass, 450/180 over the top: RMS %.3f°, worst %.3f°, %.2f commands/s", f.rmsDeg, f.worstDeg,
+              f.commandsPerSecond());
+        QVERIFY(f.rmsDeg < 0.2 && f.worstDeg < 1.0);
+        double azLow = 1e9, azHigh = -1e9, elLow = 1e9, elHigh = -1e9;
+        for (const QPointF &t : rig.targets) {
+            azLow = std::min(azLow, t.x());
+            azHigh = std::max(azHigh, t.x());
+            elLow = std::min(elLow, t.y());
+            elHigh = std::max(elHigh, t.y());
+        }
+        QVERIFY2(azHigh - azLow < 45.0, qPrintable(QStringLiteral("azimuth commanded over %1°").arg(azHigh - azLow)));
+        QVERIFY(elLow < 5.0 && elHigh > 175.0); // horizon to horizon through the zenith
+    }
+
     void aStopEndsTrackingAtOnce()
     {
         Rig rig;

@@ -154,6 +154,33 @@ private slots:
         QSettings().remove(QStringLiteral("tracking/favourites"));
     }
 
+    // A pass 0.5° from the zenith on the 450°/180° rotator: the table's
+    // badge and the plot say the antenna goes over the top.
+    void aZenithPassGoesOverTheTop()
+    {
+        WindowFixture f(kOverlapAndFlip);
+        QVERIFY(connectWithOverlapAndFlip(f));
+        QVERIFY(loadSets(f.window->elementSets(), kAllSets));
+        TrackingPanel *panel = f.window->trackingPanel();
+        const slew::tracking::StationClock clock(slew::sky::julianFromIso(QStringLiteral("2018-01-22T12:10:00Z")), 1.0);
+        rehearse(panel, clock);
+        QVERIFY(panel->selectTarget(QStringLiteral("03230"))); // an SL-8 rocket body, 89.5° at 12:20:51
+        QTableWidget *table = panel->passTable();
+        QVERIFY(table->rowCount() > 0);
+        QCOMPARE(table->item(0, 2)->text(), QStringLiteral("89.5°"));
+        QCOMPARE(table->item(0, 5)->text(), QStringLiteral("over the top"));
+        const auto &overlay = f.window->polarPlot()->passOverlay();
+        QVERIFY(overlay.has_value());
+        QVERIFY(overlay->overTheTop);
+
+        f.window->tabs()->setCurrentWidget(panel->parentWidget());
+        f.window->resize(1440, 900);
+        f.window->show();
+        QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
+        QDir().mkpath(QStringLiteral("screenshots"));
+        QVERIFY(f.window->grab().save(QStringLiteral("screenshots/tracking-over-the-top.png")));
+    }
+
     void favouritesComeFirstPersistAndOutliveAReload()
     {
         QTemporaryDir dir;

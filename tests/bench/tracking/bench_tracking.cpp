@@ -2,8 +2,8 @@
 // Tracking figures: Slew's planner and tracker against Gpredict-style
 // tracking on the same passes and the same simulated rotators.
 //
-// Four real passes over JO65hq from the element sets in tests/data (a low
-// pass, a 60° pass, one within 3° of the zenith, and one over the north
+// Five real passes over JO65hq from the element sets in tests/data (a low
+// pass, a 60° pass, two within 3° of the zenith, and one over the north
 // stop, where trackers go the long way round), two simulated G-5500 class
 // rotators (6.2°/s azimuth, 2.7°/s elevation; 360°/90° and 450°/180° of
 // travel), on the simulator's manual clock, so a pass runs in a second or
@@ -102,7 +102,11 @@ QList<PassCase> findPasses()
     const Want wants[] = {{"low (max el 8-15°)", 8, 15, false},
                           {"60° (57-63°)", 57, 63, false},
                           {"near zenith (>87°)", 87, 91, true},
-                          {"over the north stop (30-70°)", 30, 70, true, true}};
+                          {"over the north stop (30-70°)", 30, 70, true, true},
+                          // The first near-zenith pass culminates 0.5° from
+                          // the zenith; over the top, the error grows with
+                          // that miss, so a second one farther from it too.
+                          {"1-3° from the zenith (87-89°)", 87, 89, true}};
     QList<PassCase> found;
     for (const Want &w : wants) {
         // A pass that stays clear of north first; one over it only if there is none.
@@ -306,8 +310,8 @@ int main(int argc, char *argv[])
     QCoreApplication app(argc, argv);
     registerLinkSchemes();
     const QList<PassCase> passes = findPasses();
-    if (passes.size() != 4) {
-        std::fprintf(stderr, "bench_tracking: found %d of the 4 passes\n", int(passes.size()));
+    if (passes.size() != 5) {
+        std::fprintf(stderr, "bench_tracking: found %d of the 5 passes\n", int(passes.size()));
         return 1;
     }
     for (const PassCase &c : passes) {
@@ -331,12 +335,13 @@ int main(int argc, char *argv[])
         print(step == 0 ? "Slew, 1° step" : "Slew, 2° step", relay);
     }
     print("Gpredict-style", runGpredictStyle(passes[1], 450, 180, true));
-    // How fast an azimuth axis must be to follow the zenith pass within 1°.
+    // Without an elevation axis past 90°, how fast an azimuth axis must be
+    // to follow the near-zenith pass.
     const PassCase &zenith = passes[2];
-    std::printf("%s: the planner's predicted worst by azimuth speed (450°/180°, half a second to full speed)\n", zenith.name);
-    for (double rate : {6.2, 8.0, 10.0, 12.0, 14.0, 16.0, 20.0}) {
+    std::printf("%s: the planner's predicted worst by azimuth speed (360°/90°, half a second to full speed)\n", zenith.name);
+    for (double rate : {6.2, 10.0, 15.0, 20.0, 30.0, 40.0}) {
         tracking::RotatorReach reach;
-        reach.limits = model::RotatorLimits{0, 450, 0, 180};
+        reach.limits = model::RotatorLimits{0, 360, 0, 90};
         reach.azimuthRateDegS = rate;
         reach.elevationRateDegS = 2.7;
         reach.azimuthAccelDegS2 = rate / 0.5;
