@@ -14,12 +14,14 @@
 #include "tracking/skytrack.h"
 
 #include <QFormLayout>
+#include <QFutureWatcher>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
 
 #include <cmath>
 
@@ -177,54 +179,80 @@ tracking::RotatorReach TrackingPanel::reach() const
 void TrackingPanel::showPasses()
 {
     m_passes->setRowCount(0);
-    m_passList.clear();
-    m_samples.clear();
-    m_plans.clear();
+    m_planned.clear();
     m_sky.reset();
+    m_planning = false;
+    const int generation = ++m_generation; // a forecast still running is for another choice
     const auto target = chosenTarget();
     if (!target || !m_station) {
         emit passOverlayChanged(std::nullopt);
         refreshLive();
+        emit passesShown();
         return;
     }
     const double now = m_clock->nowJulian();
     const sky::PassWindow window{now, now + kLookAheadDays, 0.0};
     m_sky.emplace(*target);
-    m_passList = m_sky->passes(*m_station, window);
-    const tracking::RotatorReach r = reach();
-    for (const sky::Pass &p : m_passList) {
-        m_samples.append(m_sky->sample(*m_station, p, p.aos.julian));
-        const tracking::PassPlan plan = tracking::planPass(m_samples.last(), r);
-        m_plans.append(plan);
+    // Off the window's thread: a day of the moon's passes takes a good part
+    // of a second to sample and plan, and the operator may be typing.
+    m_planning = true;
+    auto *watcher = new QFutureWatcher<QList<tracking::PlannedPass>>(this);
+    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, generation] {
+        watcher->deleteLater();
+        if (generation != m_generation)
+            return;
+        m_planning = false;
+        fillPasses(watcher->result());
+    });
+    watcher->setFuture(QtConcurrent::run([sky = *m_sky, station = *m_station, window, reach = reach()] {
+        return tracking::forecastPasses(sky, station, window, reach);
+    }));
+    refreshLive();
+}
+
+void TrackingPanel::fillPasses(const QList<tracking::PlannedPass> &planned)
+{
+    m_planned = planned;
+    for (const tracking::PlannedPass &one : m_planned) {
+        const sky::Pass &p = one.pass;
         const int row = m_passes->rowCount();
         m_passes->insertRow(row);
         const QStringList cells{sky::utcFromJulian(p.aos.julian).toString(QStringLiteral("MM-dd HH:mm:ss")),
                                 QStringLiteral("%1°").arg(p.aos.azimuthDeg, 0, 'f', 0),
                                 QStringLiteral("%1°").arg(p.maxElevationDeg(), 0, 'f', 1),
                                 sky::utcFromJulian(p.los.julian).toString(QStringLiteral("MM-dd HH:mm:ss")),
-                                QStringLiteral("%1°").arg(p.los.azimuthDeg, 0, 'f', 0), badge(plan)};
+                                QStringLiteral("%1°").arg(p.los.azimuthDeg, 0, 'f', 0), badge(one.plan)};
         for (int c = 0; c < cells.size(); ++c) {
             auto *item = new QTableWidgetItem(cells[c]);
-            item->setToolTip(plan.describe());
+            item->setToolTip(one.plan.describe());
             m_passes->setItem(row, c, item);
         }
     }
     m_passes->resizeColumnsToContents();
-    if (!m_passList.isEmpty())
+    if (!m_planned.isEmpty())
         m_passes->selectRow(0);
     else
         emit passOverlayChanged(std::nullopt);
     refreshLive();
+    emit passesShown();
+}
+
+QList<sky::Pass> TrackingPanel::passes() const
+{
+    QList<sky::Pass> list;
+    for (const tracking::PlannedPass &one : m_planned)
+        list.append(one.pass);
+    return list;
 }
 
 void TrackingPanel::onPassChosen()
 {
     const QList<QTableWidgetItem *> chosen = m_passes->selectedItems();
-    if (chosen.isEmpty() || chosen.first()->row() >= m_plans.size())
+    if (chosen.isEmpty() || chosen.first()->row() >= m_planned.size())
         return;
     const int row = chosen.first()->row();
-    const QList<tracking::SkyPoint> &points = m_samples[row];
-    const tracking::PassPlan &plan = m_plans[row];
+    const QList<tracking::SkyPoint> &points = m_planned[row].points;
+    const tracking::PassPlan &plan = m_planned[row].plan;
     PassOverlay overlay;
     for (const tracking::SkyPoint &p : points)
         overlay.sky.append(QPointF(p.azimuthDeg, p.elevationDeg));
@@ -264,16 +292,18 @@ void TrackingPanel::refreshLive()
     showSetAges(); // the elements age as the station's clock runs
     const double now = m_clock->nowJulian();
     const sky::Pass *next = nullptr;
-    for (const sky::Pass &p : m_passList) {
-        if (p.los.julian > now) {
-            next = &p;
+    for (const tracking::PlannedPass &one : m_planned) {
+        if (one.pass.los.julian > now) {
+            next = &one.pass;
             break;
         }
     }
     if (m_picker->chosenIsMissing()) {
         m_countdown->setText(tr("not in the loaded element sets"));
+    } else if (m_planning) {
+        m_countdown->setText(tr("planning the passes…"));
     } else if (!next) {
-        m_countdown->setText(m_passList.isEmpty() && chosenTarget() ? tr("no pass in the next day") : QString());
+        m_countdown->setText(m_planned.isEmpty() && chosenTarget() ? tr("no pass in the next day") : QString());
     } else if (next->aos.julian > now) {
         m_countdown->setText(tr("AOS in %1").arg(hms((next->aos.julian - now) * sky::kSecondsPerDay)));
     } else {

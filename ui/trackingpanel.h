@@ -66,19 +66,24 @@ public:
     tracking::PassRunner *runner() const { return m_runner.get(); }
     TargetPicker *targetPicker() const { return m_picker; }
     ElementSetAges *elementSetAges() const { return m_setAges; }
-    const QList<sky::Pass> &passes() const { return m_passList; }
+    // The passes listed; empty while they are being planned (isPlanning).
+    QList<sky::Pass> passes() const;
+    bool isPlanning() const { return m_planning; }
 
 signals:
     // The pass to draw on the plot, or none.
     void passOverlayChanged(std::optional<slew::ui::PassOverlay> overlay);
     void passTargetMoved(std::optional<QPointF> azEl);
     void message(const QString &text);
+    // The pass table is filled (or emptied) for the target chosen.
+    void passesShown();
     // holdsRotator() of the runner changed: the window holds off trackers.
     void trackingActiveChanged(bool active);
 
 private:
     void showSetAges();
     void showPasses();
+    void fillPasses(const QList<tracking::PlannedPass> &planned);
     void onPassChosen();
     void refreshLive();
     void startTracking();
@@ -93,9 +98,9 @@ private:
     std::unique_ptr<tracking::PassRunner> m_runner;
     std::function<QString()> m_otherSteering;
     std::optional<tracking::TargetSky> m_sky; // the chosen target's, while there is a station
-    QList<sky::Pass> m_passList;
-    QList<QList<tracking::SkyPoint>> m_samples; // each pass as planned (the moon's cost 1.7 ms a point)
-    QList<tracking::PassPlan> m_plans;
+    QList<tracking::PlannedPass> m_planned; // the table's passes, sampled and planned
+    bool m_planning = false;
+    int m_generation = 0; // of the forecast wanted: one for an older choice is dropped
 
     QLabel *m_stationLine;
     ElementSetAges *m_setAges;

@@ -8,6 +8,8 @@
 #include "sky/passes.h"
 #include "sky/utctime.h"
 
+#include <QFutureWatcher>
+#include <QtConcurrent/QtConcurrentRun>
 
 namespace slew::tracking {
 
@@ -52,6 +54,8 @@ void PassRunner::start(const TrackTarget &target, const sky::Station &station, d
     m_minElevation = minElevationDeg;
     m_clock = clock;
     m_running = true;
+    m_planning = false;
+    ++m_generation;
     emit logLine(tr("tracking %1 above %2°%3").arg(target.name()).arg(minElevationDeg)
                      .arg(clock->isRehearsal() ? tr(", rehearsal clock from %1 at %2x").arg(isoTime(clock->nowJulian())).arg(clock->rate())
                                                : QString()));
@@ -64,30 +68,16 @@ void PassRunner::stop(const QString &why)
     if (!m_running)
         return;
     m_running = false;
+    m_planning = false;
+    ++m_generation;
     m_retry.stop();
     m_tracker.stopTracking(why);
 }
 
 void PassRunner::nextPass()
 {
-    if (!m_running || isActive() || !m_session->isConnected())
+    if (!m_running || isActive() || m_planning || !m_session->isConnected())
         return;
-    const double now = m_clock->nowJulian();
-    const sky::PassWindow window{now, now + kLookAheadDays, m_minElevation};
-    const QList<sky::Pass> passes = m_sky->passes(m_station, window);
-    const sky::Pass *next = nullptr;
-    for (const sky::Pass &p : passes) {
-        if (p.los.julian > now + 5.0 / sky::kSecondsPerDay) {
-            next = &p;
-            break;
-        }
-    }
-    if (!next) {
-        emit logLine(tr("no pass of %1 above %2° in the next %3 days; looking again in an hour")
-                         .arg(m_target.name()).arg(m_minElevation).arg(kLookAheadDays));
-        m_retry.start(kRetryMs);
-        return;
-    }
     if (const QString other = m_otherSteering ? m_otherSteering() : QString(); !other.isEmpty()) {
         emit logLine(tr("%1 is steering the rotator; tracking waits until it has been quiet for %2 s")
                          .arg(other)
@@ -95,29 +85,60 @@ void PassRunner::nextPass()
         m_retry.start(kOtherQuietSeconds * 1000);
         return;
     }
-    // A pass already under way is tracked from now.
-    const double from = std::max(next->aos.julian, now);
-    const QList<SkyPoint> points = m_sky->sample(m_station, *next, from);
+    const double now = m_clock->nowJulian();
+    const sky::PassWindow window{now, now + kLookAheadDays, m_minElevation};
+    const RotatorReach reach = reachOf(*m_session);
+    PlannerOptions options;
+    if (m_session->hasPosition())
+        options.startAzimuth = m_session->azimuth();
+    m_planning = true;
+    const int generation = ++m_generation;
+    auto *watcher = new QFutureWatcher<std::optional<PlannedPass>>(this);
+    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, generation, reach, now] {
+        watcher->deleteLater();
+        if (generation != m_generation)
+            return; // stopped or restarted meanwhile
+        m_planning = false;
+        onPlanned(watcher->result(), reach, now);
+    });
+    // Everything the worker reads is a copy; the satellite's SGP4 set-up is
+    // shared, read-only.
+    watcher->setFuture(QtConcurrent::run([sky = *m_sky, station = m_station, window, now, reach, options] {
+        return forecastNextPass(sky, station, window, now, 5.0, reach, options);
+    }));
+}
+
+void PassRunner::onPlanned(const std::optional<PlannedPass> &next, const RotatorReach &reach, double plannedAtJulian)
+{
+    if (!m_running || isActive() || !m_session->isConnected())
+        return; // a lost link plans again when it is back
+    if (!next) {
+        emit logLine(tr("no pass of %1 above %2° in the next %3 days; looking again in an hour")
+                         .arg(m_target.name()).arg(m_minElevation).arg(kLookAheadDays));
+        m_retry.start(kRetryMs);
+        return;
+    }
+    const sky::Pass &pass = next->pass;
     if (m_target.isFixed())
-        emit logLine(tr("holding %1 until %2").arg(m_target.name(), isoTime(next->los.julian)));
+        emit logLine(tr("holding %1 until %2").arg(m_target.name(), isoTime(pass.los.julian)));
     else
         emit logLine(tr("next pass: %1, AOS %2 at %3°, highest %4° at %5, LOS %6 at %7°%8")
-                     .arg(m_target.name(), isoTime(next->aos.julian))
-                     .arg(next->aos.azimuthDeg, 0, 'f', 1)
-                     .arg(next->maxElevationDeg(), 0, 'f', 1)
-                     .arg(isoTime(next->tca.julian), isoTime(next->los.julian))
-                     .arg(next->los.azimuthDeg, 0, 'f', 1)
-                     .arg(from > next->aos.julian ? tr(" (under way: from %1)").arg(isoTime(from)) : QString()));
+                     .arg(m_target.name(), isoTime(pass.aos.julian))
+                     .arg(pass.aos.azimuthDeg, 0, 'f', 1)
+                     .arg(pass.maxElevationDeg(), 0, 'f', 1)
+                     .arg(isoTime(pass.tca.julian), isoTime(pass.los.julian))
+                     .arg(pass.los.azimuthDeg, 0, 'f', 1)
+                     .arg(next->fromJulian > pass.aos.julian ? tr(" (under way: from %1)").arg(isoTime(next->fromJulian))
+                                                              : QString()));
     const StationClock *clock = m_clock;
     TrackerSettings settings = trackerSettingsFor(m_session->profile().motion, m_tracker.settings());
     // A fixed target's next stretch follows at once: nothing to park between.
     settings.afterPass = m_target.isFixed() ? TrackerSettings::AfterPass::Stay : m_afterPass;
     m_tracker.setSettings(settings);
-    if (!m_tracker.track(points, from, reachOf(*m_session), [clock] { return clock->nowJulian(); })) {
+    if (!m_tracker.track(next->points, next->plan, next->fromJulian, reach, [clock] { return clock->nowJulian(); })) {
         emit logLine(tr("cannot track this pass: %1; trying the next one after its LOS").arg(m_tracker.error()));
-        const double wait = (next->los.julian - now) * sky::kSecondsPerDay / std::max(1.0, m_clock->rate());
+        const double wait = (pass.los.julian - plannedAtJulian) * sky::kSecondsPerDay / std::max(1.0, m_clock->rate());
         m_retry.start(int(std::min(wait * 1000.0 + 1000.0, double(kRetryMs))));
-        return;
     }
 }
 

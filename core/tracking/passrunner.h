@@ -2,11 +2,13 @@
 #pragma once
 // Tracks every pass of one target, one after another, until told to stop:
 // the station service's `--track`. For each pass it predicts the next one
-// from the station clock, plans it, hands it to the Tracker, and logs the
+// from the station clock and plans it (on a worker thread: the moon takes
+// a good part of a second), hands it to the Tracker, and logs the
 // plan, AOS, and at LOS the pointing figures. A stop from anywhere ends it
 // for good; a lost link ends the pass, and the next pass is planned once
 // the link is back.
 
+#include "passforecast.h"
 #include "stationclock.h"
 #include "tracker.h"
 #include "tracktarget.h"
@@ -60,6 +62,7 @@ signals:
 
 private:
     void nextPass();
+    void onPlanned(const std::optional<PlannedPass> &next, const RotatorReach &reach, double plannedAtJulian);
     void onTrackerState(Tracker::State state, const QString &why);
     static QString isoTime(double julian);
 
@@ -73,6 +76,8 @@ private:
     std::function<QString()> m_otherSteering;
     const StationClock *m_clock = nullptr;
     bool m_running = false;
+    bool m_planning = false;
+    int m_generation = 0; // a plan still being made when this moves on is of no use
     bool m_wasActive = false;
     int m_passesDone = 0;
     QTimer m_retry; // no pass found: look again later

@@ -30,16 +30,24 @@ Tracker::~Tracker() = default;
 bool Tracker::track(const QList<SkyPoint> &pass, double aosJulian, const RotatorReach &reach,
                     std::function<double()> now)
 {
+    PlannerOptions options;
+    if (m_session->hasPosition())
+        options.startAzimuth = m_session->azimuth();
+    return track(pass, planPass(pass, reach, options), aosJulian, reach, std::move(now));
+}
+
+bool Tracker::track(const QList<SkyPoint> &pass, const PassPlan &plan, double aosJulian, const RotatorReach &reach,
+                    std::function<double()> now)
+{
     stopTracking(tr("a new pass"));
     m_error.clear();
     if (!m_session->isConnected()) {
         m_error = tr("not connected to a rotator");
         return false;
     }
-    PlannerOptions options;
-    if (m_session->hasPosition())
-        options.startAzimuth = m_session->azimuth();
-    m_plan = planPass(pass, reach, options);
+    m_plan = plan;
+    if (m_plan.isValid() && m_plan.path.size() != pass.size())
+        m_plan.refusal = tr("the plan is not of this pass");
     if (!m_plan.isValid()) {
         m_error = m_plan.refusal;
         return false;

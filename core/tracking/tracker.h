@@ -82,6 +82,10 @@ public:
     // error(), if there is no plan or no link.
     bool track(const QList<SkyPoint> &pass, double aosJulian, const RotatorReach &reach,
                std::function<double()> now);
+    // The same with the plan made beforehand (off the window's thread:
+    // passforecast.h), which must be of this pass for this reach.
+    bool track(const QList<SkyPoint> &pass, const PassPlan &plan, double aosJulian, const RotatorReach &reach,
+               std::function<double()> now);
     void stopTracking(const QString &why);
 
     State state() const { return m_state; }

@@ -28,10 +28,12 @@
 #include <QListWidget>
 #include <QPushButton>
 #include <QSettings>
+#include <QElapsedTimer>
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTcpSocket>
+#include <QThreadPool>
 #include <QTest>
 #include <QToolButton>
 #include <QXYSeries>
@@ -74,6 +76,12 @@ bool connectWithOverlapAndFlip(WindowFixture &f)
     return true;
 }
 
+// The pass table is planned off the window's thread: wait for it.
+bool passesPlanned(const TrackingPanel *panel)
+{
+    return QTest::qWaitFor([panel] { return !panel->isPlanning(); }, 10000);
+}
+
 QStringList rows(const QListWidget *list)
 {
     QStringList texts;
@@ -99,6 +107,7 @@ private slots:
         const slew::tracking::StationClock clock(slew::sky::julianFromIso(QStringLiteral("2018-01-22T07:42:45Z")), 1.0);
         rehearse(panel, clock);
         QVERIFY(panel->selectTarget(QStringLiteral("FLOCK 2P-1")));
+        QVERIFY(passesPlanned(panel));
 
         // The day's passes, the first as `slew --passes` gives it, each with its plan.
         QTableWidget *table = panel->passTable();
@@ -165,6 +174,7 @@ private slots:
         const slew::tracking::StationClock clock(slew::sky::julianFromIso(QStringLiteral("2018-01-22T12:10:00Z")), 1.0);
         rehearse(panel, clock);
         QVERIFY(panel->selectTarget(QStringLiteral("03230"))); // an SL-8 rocket body, 89.5° at 12:20:51
+        QVERIFY(passesPlanned(panel));
         QTableWidget *table = panel->passTable();
         QVERIFY(table->rowCount() > 0);
         QCOMPARE(table->item(0, 2)->text(), QStringLiteral("89.5°"));
@@ -179,6 +189,38 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
         QDir().mkpath(QStringLiteral("screenshots"));
         QVERIFY(f.window->grab().save(QStringLiteral("screenshots/tracking-over-the-top.png")));
+    }
+
+    // Choosing a target plans its passes on a worker thread: the window
+    // goes on, says it is planning, and a plan for an earlier choice that
+    // arrives late is dropped.
+    void planningDoesNotHoldTheWindow()
+    {
+        WindowFixture f(kOverlapAndFlip);
+        QVERIFY(connectWithOverlapAndFlip(f));
+        QVERIFY(loadSets(f.window->elementSets(), kAllSets));
+        TrackingPanel *panel = f.window->trackingPanel();
+        const slew::tracking::StationClock clock(slew::sky::julianFromIso(QStringLiteral("2018-01-22T07:42:45Z")), 1.0);
+        rehearse(panel, clock);
+        QVERIFY(passesPlanned(panel));
+
+        QElapsedTimer took;
+        took.start();
+        QVERIFY(panel->selectTarget(QStringLiteral("moon"))); // the slowest to plan
+        qInfo("choosing the moon held the window for %lld ms", took.elapsed());
+        QVERIFY(panel->isPlanning());
+        QCOMPARE(panel->countdown()->text(), QStringLiteral("planning the passes…"));
+        QCOMPARE(panel->passTable()->rowCount(), 0);
+
+        QVERIFY(panel->selectTarget(QStringLiteral("FLOCK 2P-1")));
+        QVERIFY(passesPlanned(panel));
+        // Let the moon's forecast finish and its result arrive: it is not shown.
+        QSignalSpy shown(panel, &TrackingPanel::passesShown);
+        QVERIFY(QTest::qWaitFor([] { return QThreadPool::globalInstance()->activeThreadCount() == 0; }, 10000));
+        QCoreApplication::processEvents();
+        QCOMPARE(shown.count(), 0);
+        QCOMPARE(panel->passTable()->item(0, 0)->text(), QStringLiteral("01-22 07:42:56"));
+        QVERIFY(panel->countdown()->text().startsWith(QStringLiteral("AOS in")));
     }
 
     void favouritesComeFirstPersistAndOutliveAReload()
@@ -215,10 +257,12 @@ private slots:
             // The station only now: the moon's passes take long to plan.
             const slew::tracking::StationClock clock(slew::sky::julianFromIso(QStringLiteral("2018-01-22T07:42:45Z")), 1.0);
             rehearse(panel, clock);
+            QVERIFY(passesPlanned(panel));
             QVERIFY(panel->passTable()->rowCount() > 0);
             QTest::mouseClick(panel->targetPicker()->favouritesOnlyButton(), Qt::LeftButton);
             QCOMPARE(panel->targetPicker()->list()->count(), 2);
             QCOMPARE(panel->targetPicker()->list()->currentRow(), 0);
+            QVERIFY(passesPlanned(panel));
             QVERIFY(panel->passTable()->rowCount() > 0);
 
             // A reload without it: still listed, as missing, and nothing to plan.
@@ -327,6 +371,7 @@ private slots:
         const slew::tracking::StationClock clock(slew::sky::julianFromIso(QStringLiteral("2026-11-23T18:00:00Z")), 1.0);
         rehearse(panel, clock);
         QVERIFY(panel->selectTarget(QStringLiteral("azel:200,30")));
+        QVERIFY(passesPlanned(panel));
         QCOMPARE(panel->passTable()->rowCount(), 1); // held for the whole look-ahead
         QCOMPARE(panel->passTable()->item(0, 2)->text(), QStringLiteral("30.0°"));
         QTest::mouseClick(panel->trackButton(), Qt::LeftButton);
@@ -336,6 +381,7 @@ private slots:
         // Cassiopeia A never sets at JO65: one pass through the whole day.
         QTest::mouseClick(panel->findChild<QPushButton *>(QStringLiteral("stopTracking")), Qt::LeftButton);
         QVERIFY(panel->selectTarget(QStringLiteral("radec:23:23:24,+58:48:54")));
+        QVERIFY(passesPlanned(panel));
         QVERIFY(panel->passTable()->rowCount() >= 1);
         const auto &overlay = f.window->polarPlot()->passOverlay();
         QVERIFY(overlay.has_value() && overlay->sky.size() > 100);

@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "passforecast.h"
+
+#include <algorithm>
+
+namespace slew::tracking {
+
+QList<PlannedPass> forecastPasses(const TargetSky &target, const sky::Station &station, const sky::PassWindow &window,
+                                  const RotatorReach &reach)
+{
+    QList<PlannedPass> planned;
+    for (const sky::Pass &p : target.passes(station, window)) {
+        PlannedPass one{p, p.aos.julian, target.sample(station, p, p.aos.julian), {}};
+        one.plan = planPass(one.points, reach);
+        planned.append(std::move(one));
+    }
+    return planned;
+}
+
+std::optional<PlannedPass> forecastNextPass(const TargetSky &target, const sky::Station &station,
+                                            const sky::PassWindow &window, double nowJulian, double marginSeconds,
+                                            const RotatorReach &reach, const PlannerOptions &options)
+{
+    for (const sky::Pass &p : target.passes(station, window)) {
+        if (p.los.julian <= nowJulian + marginSeconds / sky::kSecondsPerDay)
+            continue;
+        const double from = std::max(p.aos.julian, nowJulian);
+        PlannedPass next{p, from, target.sample(station, p, from), {}};
+        next.plan = planPass(next.points, reach, options);
+        return next;
+    }
+    return std::nullopt;
+}
+
+} // namespace slew::tracking

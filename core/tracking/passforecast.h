@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// A target's passes, each sampled and planned for this rotator: what the
+// Tracking tab lists and what the station service tracks next.
+//
+// Sampling and planning cost: the moon's theory is 1.7 ms a position, and
+// a day of its passes took 0.6 s to sample and plan. So the callers run
+// these functions on a worker thread (QtConcurrent) and take the result
+// back on theirs; they are pure (every input is a copy or const, nothing
+// is cached between calls), which is what makes that safe.
+
+#include "passplanner.h"
+#include "tracktarget.h"
+
+#include "sky/passes.h"
+
+#include <QList>
+
+#include <optional>
+
+namespace slew::tracking {
+
+struct PlannedPass {
+    sky::Pass pass;
+    double fromJulian = 0;    // where the samples start: the AOS, or later for a pass under way
+    QList<SkyPoint> points;   // seconds from fromJulian
+    PassPlan plan;
+};
+
+// Every pass in `window`, sampled from its AOS and planned.
+QList<PlannedPass> forecastPasses(const TargetSky &target, const sky::Station &station, const sky::PassWindow &window,
+                                  const RotatorReach &reach);
+
+// The first pass in `window` still up `marginSeconds` after `nowJulian`,
+// sampled from its AOS or from now if it is under way, and planned from
+// where the antenna is; none if there is no such pass.
+std::optional<PlannedPass> forecastNextPass(const TargetSky &target, const sky::Station &station,
+                                            const sky::PassWindow &window, double nowJulian, double marginSeconds,
+                                            const RotatorReach &reach, const PlannerOptions &options);
+
+} // namespace slew::tracking
