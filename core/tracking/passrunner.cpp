@@ -19,6 +19,7 @@ namespace {
 constexpr double kLookAheadDays = 2.0;
 constexpr int kRetryMs = 3600 * 1000; // no pass in two days: look again in an hour
 constexpr int kOtherQuietSeconds = 10;  // as RotctldServer::kSteeringQuietMs
+constexpr int kOtherLookAgainMs = 1000;
 }
 
 PassRunner::PassRunner(RotatorSession *session, QObject *parent) : QObject(parent), m_session(session), m_tracker(session)
@@ -55,6 +56,7 @@ void PassRunner::start(const TrackTarget &target, const sky::Station &station, d
     m_clock = clock;
     m_running = true;
     m_planning = false;
+    m_waitingFor.clear();
     ++m_generation;
     emit logLine(tr("tracking %1 above %2°%3").arg(target.name()).arg(minElevationDeg)
                      .arg(clock->isRehearsal() ? tr(", rehearsal clock from %1 at %2x").arg(isoTime(clock->nowJulian())).arg(clock->rate())
@@ -79,12 +81,19 @@ void PassRunner::nextPass()
     if (!m_running || isActive() || m_planning || !m_session->isConnected())
         return;
     if (const QString other = m_otherSteering ? m_otherSteering() : QString(); !other.isEmpty()) {
-        emit logLine(tr("%1 is steering the rotator; tracking waits until it has been quiet for %2 s")
-                         .arg(other)
-                         .arg(kOtherQuietSeconds));
-        m_retry.start(kOtherQuietSeconds * 1000);
+        // Said once; looked at again every second, so tracking starts as
+        // soon as the other tracker's quiet time is over.
+        if (other != m_waitingFor)
+            emit logLine(tr("%1 is steering the rotator; tracking waits until it has been quiet for %2 s")
+                             .arg(other)
+                             .arg(kOtherQuietSeconds));
+        m_waitingFor = other;
+        m_retry.start(kOtherLookAgainMs);
         return;
     }
+    if (!m_waitingFor.isEmpty())
+        emit logLine(tr("%1 has been quiet for %2 s: Slew takes the rotator").arg(m_waitingFor).arg(kOtherQuietSeconds));
+    m_waitingFor.clear();
     const double now = m_clock->nowJulian();
     const sky::PassWindow window{now, now + kLookAheadDays, m_minElevation};
     const RotatorReach reach = reachOf(*m_session);

@@ -74,6 +74,7 @@ private:
     double m_minElevation = 0;
     TrackerSettings::AfterPass m_afterPass = TrackerSettings::AfterPass::Park;
     std::function<QString()> m_otherSteering;
+    QString m_waitingFor; // the other tracker a pass is waiting on, if any
     const StationClock *m_clock = nullptr;
     bool m_running = false;
     bool m_planning = false;

@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The station service's pass runner: the reverse hold (a pass waits while
+// another tracker steers the rotator, and starts once it is quiet), and a
+// stop while a pass is still being planned on the worker thread.
+
+#include "../common/simulatorpump.h"
+#include "linkschemes.h"
+#include "session/rotatorsession.h"
+#include "tracking/passrunner.h"
+
+#include <QSignalSpy>
+#include <QTest>
+#include <QThreadPool>
+
+using slew::session::RotatorSession;
+using namespace slew::tracking;
+
+namespace {
+
+const slew::sky::Station kStation{55.7, 12.6, 10, {}};
+
+bool logged(const QSignalSpy &lines, const QString &part)
+{
+    for (const QList<QVariant> &line : lines) {
+        if (line.at(0).toString().contains(part))
+            return true;
+    }
+    return false;
+}
+
+} // namespace
+
+class PassRunnerTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { slew::registerLinkSchemes(); }
+
+    void waitsWhileAnotherTrackerSteers()
+    {
+        RotatorSession session;
+        session.connectTo(QStringLiteral("sim:"));
+        QVERIFY(runEventLoopUntil([&] { return session.capabilities().probed && session.hasPosition(); }, 10000));
+        QSignalSpy gotos(&session, &RotatorSession::targetChanged);
+
+        PassRunner runner(&session);
+        QString steering = QStringLiteral("127.0.0.1:40000");
+        int asked = 0;
+        runner.setOtherSteering([&] {
+            ++asked;
+            return steering;
+        });
+        QSignalSpy lines(&runner, &PassRunner::logLine);
+        const StationClock clock;
+        const auto target = TrackTarget::parseFixedOrCelestial(QStringLiteral("azel:200,30"), nullptr);
+        QVERIFY(target);
+        runner.start(*target, kStation, 0.0, &clock);
+
+        QVERIFY(logged(lines, QStringLiteral("127.0.0.1:40000 is steering the rotator; tracking waits")));
+        // It looks again (every second), says so once, and sends nothing.
+        QVERIFY(runEventLoopUntil([&] { return asked >= 3; }, 10000));
+        int said = 0;
+        for (const QList<QVariant> &line : lines)
+            said += line.at(0).toString().contains(QStringLiteral("is steering")) ? 1 : 0;
+        QCOMPARE(said, 1);
+        QVERIFY(!runner.isActive());
+        QCOMPARE(gotos.count(), 0);
+
+        // Quiet now: the direction is held.
+        steering.clear();
+        QVERIFY(runEventLoopUntil([&] { return runner.isActive(); }, 10000));
+        QVERIFY(logged(lines, QStringLiteral("has been quiet for 10 s: Slew takes the rotator")));
+        QVERIFY(logged(lines, QStringLiteral("holding azimuth 200.00°, elevation 30.00°")));
+        QVERIFY(runEventLoopUntil([&] { return gotos.count() > 0; }, 10000));
+        runner.stop(QStringLiteral("done"));
+    }
+
+    // Stop while the next pass is still being planned: the plan, when it
+    // comes, starts nothing.
+    void aStopWhilePlanningStartsNothing()
+    {
+        RotatorSession session;
+        session.connectTo(QStringLiteral("sim:"));
+        QVERIFY(runEventLoopUntil([&] { return session.capabilities().probed && session.hasPosition(); }, 10000));
+        PassRunner runner(&session);
+        const StationClock clock;
+        TrackTarget moon;
+        moon.kind = TrackTarget::Kind::Moon;
+        runner.start(moon, kStation, 0.0, &clock);
+        runner.stop(QStringLiteral("stopped at once"));
+        QVERIFY(QTest::qWaitFor([] { return QThreadPool::globalInstance()->activeThreadCount() == 0; }, 10000));
+        QCoreApplication::processEvents();
+        QVERIFY(!runner.isRunning());
+        QVERIFY(!runner.isActive());
+        QCOMPARE(runner.tracker().state(), Tracker::State::Idle);
+    }
+};
+
+QTEST_MAIN(PassRunnerTest)
+#include "tst_passrunner.moc"
