@@ -89,9 +89,8 @@ namespace {
 
 // SPID is not in the operations table: its commands are frames, not
 // mnemonics. A frame sets, asks or stops both axes at once; Rot1Prog has no
-// elevation. No speeds, registers, park or version. The MD-01/02's move
-// (spid::encodeMove) is left out until the session writes SPID frames:
-// offering it now would send nothing.
+// elevation. No speeds, registers, park or version. The MD-01/02 has a move
+// command (spid::encodeMove), one direction bit per axis.
 bool spidSupports(Dialect d, Op op)
 {
     switch (op) {
@@ -99,6 +98,10 @@ bool spidSupports(Dialect d, Op op)
     case Op::StopAzimuth: return true;
     case Op::Elevation:
     case Op::StopElevation: return d != Dialect::Rot1Prog;
+    case Op::MoveLeft:
+    case Op::MoveRight:
+    case Op::MoveUp:
+    case Op::MoveDown: return d == Dialect::Md01;
     default: return false;
     }
 }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "encoder.h"
 
+#include "spidcodec.h"
+
 #include "operations.h"
 
 #include <algorithm>
@@ -298,7 +300,7 @@ QByteArray encodeSetPosition(double az, double el, Dialect d, int rotor)
 QByteArray encodeQueryPosition(Dialect d, int rotor)
 {
     if (isSpid(d))
-        return {}; // spid::encodeStatus
+        return spid::encodeStatus(); // a fixed frame: the controller answers with its position
     if (d == Dialect::Micro2g)
         return encodeLine({Message::query(Op::Azimuth, rotor > 0 ? rotor : -1)}, d);
     if (d == Dialect::Easycomm1)
@@ -308,6 +310,13 @@ QByteArray encodeQueryPosition(Dialect d, int rotor)
     if (d == Dialect::Rotctld)
         return QByteArray("p") + lineTerminator(d);
     return encodeLine({Message::query(Op::Azimuth), Message::query(Op::Elevation)}, d);
+}
+
+int positionReplyBytes(Dialect d)
+{
+    if (isSpid(d))
+        return spid::replySize(d);
+    return 20;
 }
 
 QByteArray encodeOffset(double azimuth, double elevation, Dialect d)
@@ -324,8 +333,8 @@ QByteArray encodeOffset(double azimuth, double elevation, Dialect d)
 
 QByteArray encodeStop(bool azimuth, bool elevation, Dialect d, int rotor)
 {
-    if (isSpid(d))
-        return {}; // spid::encodeStop
+    if (isSpid(d)) // one frame stops every axis: stopping more than asked is the safe side
+        return azimuth || elevation ? spid::encodeStop() : QByteArray();
     if (d == Dialect::Micro2g) // one axis: a stop of elevation alone has nothing to stop
         return azimuth ? encodeLine({Message::query(Op::StopAzimuth, rotor > 0 ? rotor : -1)}, d) : QByteArray();
     if (d == Dialect::Easycomm1 || (!azimuth && !elevation))

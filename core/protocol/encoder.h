@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Turning messages into wire bytes, per dialect. Pure functions: no I/O.
-// The SPID dialects are binary frames, not lines: every function here
-// returns nothing for them, and spidcodec.h writes their frames.
+// The SPID dialects are binary frames, not lines (spidcodec.h). Only the
+// fixed frames come from here: encodeQueryPosition gives the status frame
+// and encodeStop the stop frame. A set needs the controller's resolution,
+// which the session learns from its replies (spid::encodeSet); the token
+// and line functions return nothing for SPID.
 
 #include "dialect.h"
 #include "message.h"
@@ -26,12 +29,15 @@ QByteArray encodeLine(std::initializer_list<Message> tokens, Dialect d);
 // The commands the session sends, in each dialect's own form. rotor names
 // one rotor of a multi-rotor controller (Micro-2g: 1..4); 0 addresses the
 // controller's default rotor, and every other dialect ignores it.
-QByteArray encodeSetPosition(double az, double el, Dialect d, int rotor = 0); // Easycomm I: full line; rotctld `P az el`; Micro-2g `Mqqq`
-QByteArray encodeQueryPosition(Dialect d, int rotor = 0);                     // `AZ EL\n`; empty for Easycomm I; `p`; `Cn`
+QByteArray encodeSetPosition(double az, double el, Dialect d, int rotor = 0); // Easycomm I: full line; rotctld `P az el`; Micro-2g `Mqqq`; SPID: empty
+QByteArray encodeQueryPosition(Dialect d, int rotor = 0);                     // `AZ EL\n`; empty for Easycomm I; `p`; `Cn`; SPID status frame
+// How many bytes the answer to that query takes on the wire: a SPID reply's
+// fixed size, or a typical position line (`AZ123.4 EL45.6\n` and the like).
+int positionReplyBytes(Dialect d);
 // GS-232's relative move `O+010-005`, whole degrees, each offset signed;
 // empty in every other dialect.
 QByteArray encodeOffset(double azimuth, double elevation, Dialect d);
-QByteArray encodeStop(bool azimuth, bool elevation, Dialect d, int rotor = 0); // `SA SE\n`; rotctld `S` stops both; `Sn`
+QByteArray encodeStop(bool azimuth, bool elevation, Dialect d, int rotor = 0); // `SA SE\n`; rotctld `S` stops both; `Sn`; SPID stop frame (both)
 // What holds the stopped axes with the drive engaged: a zero speed (`VL000
 // VU000\n`), which brakes a drive that would coast. Empty for a dialect
 // without speed commands.

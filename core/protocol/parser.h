@@ -67,6 +67,10 @@ public:
     }
 
     void reset();
+    // SPID: the resolution (pulses per degree) of the last reply, 0 before
+    // any. A set must be written in the same pulses the controller counts.
+    int spidAzimuthPulses() const { return m_spid.azimuthPulses(); }
+    int spidElevationPulses() const { return m_spid.elevationPulses(); }
 
     // Bytes of a line are held that no line end has completed yet.
     bool hasUnfinishedLine() const

@@ -5,6 +5,7 @@
 
 #include "rotatorsession.h"
 
+#include "protocol/encoder.h"
 #include "protocol/operations.h"
 #include "transport/link.h"
 #include "transport/linkfactory.h"
@@ -61,11 +62,27 @@ void RotatorSession::setProfile(const model::RotatorProfile &profile)
     m_profile = profile;
     updateGateLimits();
     m_parser.setDialect(profile.dialect);
-    m_pollTimer.setInterval(1000 / std::clamp(profile.pollHz, 1, 50));
-    const int pollPeriod = m_pollTimer.interval();
-    m_staleTimer.setInterval(std::max(1500, 3 * pollPeriod + m_options.replyTimeoutMs * (m_options.retries + 1)));
+    updatePollPace();
     m_keepAliveTimer.setInterval(std::max(100, m_options.keepAliveMs));
     emit profileChanged();
+}
+
+void RotatorSession::updatePollPace()
+{
+    int pollMs = 1000 / std::clamp(m_profile.pollHz, 1, 50);
+    m_replyTimeoutMs = m_options.replyTimeoutMs;
+    if (const std::optional<int> baud = m_link ? m_link->hints().baud : std::nullopt; baud && *baud > 0) {
+        // One poll on the wire: the question and the answer, 10 bits a
+        // byte (8N1). Polls take at most half the line, so a command always
+        // finds room; an answer is waited for its time on the wire and more.
+        const int bytes = int(protocol::encodeQueryPosition(m_profile.dialect, m_rotor).size())
+                          + protocol::positionReplyBytes(m_profile.dialect);
+        const int exchangeMs = int(std::ceil(bytes * 10 * 1000.0 / *baud));
+        pollMs = std::max(pollMs, 2 * exchangeMs);
+        m_replyTimeoutMs = std::max(m_replyTimeoutMs, exchangeMs + 300);
+    }
+    m_pollTimer.setInterval(pollMs);
+    m_staleTimer.setInterval(std::max(1500, 3 * pollMs + m_replyTimeoutMs * (m_options.retries + 1)));
 }
 
 void RotatorSession::setOptions(const Options &options)
@@ -120,17 +137,6 @@ void RotatorSession::disconnectFromRotator()
 
 void RotatorSession::openLink()
 {
-    // The session reads and writes lines; the SPID dialects are binary
-    // frames (protocol/spidcodec.h) that it does not write yet. Refused
-    // here, before a byte, rather than connected and left silent.
-    if (protocol::isSpid(m_profile.dialect)) {
-        const QString why = tr("%1 is a binary protocol that the session does not speak yet")
-                                .arg(protocol::dialectName(m_profile.dialect));
-        m_wantConnected = false;
-        setState(State::Disconnected, why);
-        emit errorOccurred(why);
-        return;
-    }
     transport::LinkResult made = m_linkMaker ? m_linkMaker(m_uri) : transport::createLink(m_uri);
     if (!made.link) {
         m_wantConnected = false;
@@ -167,6 +173,8 @@ void RotatorSession::onLinkOpened()
     m_reconnectAttempt = 0;
     m_failedPolls = 0;
     m_pollCount = 0;
+    m_textLinesSkipped = 0;
+    updatePollPace(); // at the rate of this link's line
     setState(State::Connected, tr("connected to %1").arg(m_uri));
     startProbe();
     m_pollTimer.start();
@@ -355,6 +363,15 @@ void RotatorSession::apply(const Message &m)
         break;
     case Op::Alarm: {
         const QString text = QString::fromLatin1(m.text.view().toByteArray());
+        if (protocol::isSpid(m_profile.dialect)) {
+            // A SPID controller has no alarms: a text line among its frames
+            // is MD-01 firmware logging. Skipped, said once, and no reason
+            // to fail the poll it came before.
+            if (m_textLinesSkipped++ == 0)
+                emit errorOccurred(tr("the controller writes text lines among its replies (first: '%1'); "
+                                      "they are skipped").arg(text.trimmed().left(60)));
+            return;
+        }
         // The controller may have refused the target, or stopped: resend it.
         m_activeTarget.reset();
         emit alarmReceived(text);
@@ -389,6 +406,8 @@ void RotatorSession::applyPosition()
         m_staleTimer.start();
     emit positionChanged(m_az, m_el, false);
     checkSoftLimits();
+    if (protocol::isSpid(m_profile.dialect) && !m_caps.moveCommands)
+        continueJogLegs();
 }
 
 void RotatorSession::applyInput(int index, double value)

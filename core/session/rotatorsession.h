@@ -137,6 +137,14 @@ public:
     bool stopHoldPending() const { return m_stopHoldTimer.isActive(); }
 
     bool isPolling() const { return m_pollingEnabled; }
+    // How often position is polled, and how long a reply may take: the
+    // profile's rate and the options' timeout, slowed to what the line
+    // carries where the link knows its baud rate (LinkHints::baud).
+    int pollIntervalMs() const { return m_pollTimer.interval(); }
+    int replyTimeoutMs() const { return m_replyTimeoutMs; }
+    // Text lines a SPID controller wrote among its binary replies (MD-01
+    // firmware logs so); skipped, and reported once a connection.
+    int textLinesSkipped() const { return m_textLinesSkipped; }
     void setPolling(bool enabled);
 
     // The Micro-2g program's two-point calibration (docs/protocol.md,
@@ -328,8 +336,26 @@ private:
     // active target; go-to and relative moves share it. Pointing frame in,
     // the controller's angles out.
     CommandResult sendSetPosition(double az, double el);
+    // The set-position bytes for the controller's own angles: a line, or a
+    // SPID frame in the resolution the controller's replies gave; empty
+    // with the reason when there are none.
+    QByteArray encodeSet(double wireAz, double wireEl, QString *why) const;
+    // A jog on a controller with set-position but no speed or move command
+    // (Rot2Prog, Rot1Prog): a go-to the end of the travel that way, which
+    // the release's stop ends, as a velocity jog's would.
+    CommandResult jogBySetPosition(Axis axis, double degreesPerSecond);
+    double jogLegEnd(bool azimuth, double speed) const;
+    void continueJogLegs();
+    static constexpr double kJogLegDeg = 170.0;      // under half a turn: no bearing is ambiguous
+    static constexpr double kJogLegRenewDeg = 30.0;  // the next leg goes out this far before the end
+    std::array<double, 2> m_jogLeg{0.0, 0.0};        // where each axis's jog leg ends
+    // The MD-01/02 move frame for the axes jogging now (m_jogSpeed).
+    QByteArray spidMoveFrame() const;
+    void updatePollPace();
     qint64 nowMs() const;  // the link's time where it is stepped, else m_clock's
     int m_echoesIgnored = 0;
+    int m_replyTimeoutMs = 500;
+    int m_textLinesSkipped = 0;
     bool m_deviceEchoes = false; // this controller was seen echoing what it hears
 };
 

@@ -5,6 +5,7 @@
 #include "rotatorsession.h"
 
 #include "protocol/encoder.h"
+#include "protocol/spidcodec.h"
 #include "transport/link.h"
 
 #include <algorithm>
@@ -183,13 +184,37 @@ CommandResult RotatorSession::gotoUnwrapped(double azimuth, double elevation)
     return sendSetPosition(azimuth, elevation);
 }
 
+QByteArray RotatorSession::encodeSet(double wireAz, double wireEl, QString *why) const
+{
+    const Dialect d = m_profile.dialect;
+    if (!protocol::isSpid(d)) {
+        const QByteArray line = protocol::encodeSetPosition(wireAz, wireEl, d, m_rotor);
+        if (line.isEmpty())
+            *why = tr("%1 has no command to set a position").arg(protocol::dialectName(d));
+        return line;
+    }
+    // A SPID set counts in the controller's pulses per degree, which only
+    // its replies tell (Rot1Prog's whole degrees need none). Guessing would
+    // send a Rot2Prog at resolution 2 to twice the angle.
+    const int azPulses = m_parser.spidAzimuthPulses(), elPulses = m_parser.spidElevationPulses();
+    if (d != Dialect::Rot1Prog && (azPulses == 0 || elPulses == 0)) {
+        *why = tr("the controller's resolution is not known yet: it has not answered a status request");
+        return {};
+    }
+    const protocol::spid::Encoded set = protocol::spid::encodeSet(wireAz, wireEl, d, azPulses, elPulses);
+    if (!set.ok())
+        *why = QString::fromLatin1(set.refusal);
+    return set.bytes;
+}
+
 CommandResult RotatorSession::sendSetPosition(double az, double el)
 {
     const double wireAz = az - azimuthOffset();
     const double wireEl = el - elevationOffset();
-    const QByteArray line = protocol::encodeSetPosition(wireAz, wireEl, m_profile.dialect, m_rotor);
+    QString why;
+    const QByteArray line = encodeSet(wireAz, wireEl, &why);
     if (line.isEmpty())
-        return refuse(tr("%1 has no command to set a position").arg(protocol::dialectName(m_profile.dialect)));
+        return refuse(why);
     rememberSent(Message::number(Op::Azimuth, std::round(wireAz * 100) / 100));
     rememberSent(Message::number(Op::Elevation, std::round(wireEl * 100) / 100));
     m_jogSpeed = {0.0, 0.0};
@@ -219,6 +244,15 @@ CommandResult RotatorSession::moveAxis(Axis axis, double degreesPerSecond)
                              : (positive ? Op::VelocityUp : Op::VelocityDown);
     const Op moveOp = az ? (positive ? Op::MoveRight : Op::MoveLeft) : (positive ? Op::MoveUp : Op::MoveDown);
     QByteArray line;
+    if (protocol::isSpid(d) && protocol::dialectSupports(d, moveOp)) {
+        // The MD-01/02's move names every axis that is to run.
+        m_jogSpeed[az ? 0 : 1] = degreesPerSecond;
+        writeMove(spidMoveFrame());
+        m_activeTarget.reset();
+        return {};
+    }
+    if (protocol::isSpid(d))
+        return jogBySetPosition(axis, degreesPerSecond);
     if (protocol::dialectSupports(d, velocityOp)) {
         const Message m = Message::number(velocityOp, std::round(std::abs(degreesPerSecond) * 1000.0));
         rememberSent(m);
@@ -232,6 +266,72 @@ CommandResult RotatorSession::moveAxis(Axis axis, double degreesPerSecond)
     writeMove(line);
     m_activeTarget.reset(); // the axis runs at a speed now, towards no target
     return {};
+}
+
+QByteArray RotatorSession::spidMoveFrame() const
+{
+    namespace Bit = protocol::spid::MoveBit;
+    int directions = 0;
+    if (m_jogSpeed[0] != 0.0)
+        directions |= m_jogSpeed[0] > 0 ? Bit::Right : Bit::Left;
+    if (m_jogSpeed[1] != 0.0)
+        directions |= m_jogSpeed[1] > 0 ? Bit::Up : Bit::Down;
+    return protocol::spid::encodeMove(directions, m_profile.dialect).bytes;
+}
+
+double RotatorSession::jogLegEnd(bool azimuth, double speed) const
+{
+    const model::RotatorLimits l = m_gate.limits();
+    const double here = azimuth ? m_az : m_el;
+    if (speed > 0)
+        return std::min(azimuth ? l.azMax : l.elMax, here + kJogLegDeg);
+    return std::max(azimuth ? l.azMin : l.elMin, here - kJogLegDeg);
+}
+
+CommandResult RotatorSession::jogBySetPosition(Axis axis, double degreesPerSecond)
+{
+    // Safe as a velocity jog is: every leg ends inside the gate, the
+    // controller brakes there by itself, and Stop (the release, or any
+    // other) ends it. The speed is the controller's own. A leg is less than
+    // half a turn, so a controller that takes a set as a bearing and turns
+    // the short way to it (360° is north, 0°) still turns the way the
+    // operator pressed; the next leg follows before this one ends.
+    if (!hasPosition())
+        return refuse(tr("a jog needs the present position, which is not known yet"));
+    const bool az = axis == Axis::Azimuth;
+    std::array<double, 2> jogging = m_jogSpeed;
+    jogging[az ? 0 : 1] = degreesPerSecond;
+    // A frame sets both axes: one not jogging holds where it is.
+    const double a = jogging[0] != 0.0 ? jogLegEnd(true, jogging[0]) : m_az;
+    const double e = isAzimuthOnly() ? elevationOffset() : (jogging[1] != 0.0 ? jogLegEnd(false, jogging[1]) : m_el);
+    const double moving = az ? a : e, from = az ? m_az : m_el;
+    if (std::abs(moving - from) < 1.0) // within a degree of it: nothing a jog would do
+        return refuseMove(tr("the %1 is at the end of its travel that way").arg(az ? tr("azimuth") : tr("elevation")));
+    const model::MoveCheck check = m_gate.mechanical(a, e);
+    if (!check.allowed())
+        return refuseMove(check.refusal);
+    if (const CommandResult sent = sendSetPosition(a, e); !sent)
+        return sent;
+    m_jogSpeed = jogging;     // sendSetPosition ended every jog; these go on
+    m_jogLeg = {a, e};
+    m_activeTarget.reset();   // running to an end, towards no target of the operator's
+    return {};
+}
+
+void RotatorSession::continueJogLegs()
+{
+    // Called with each position: a leg nearly run out, and short of the
+    // travel's end, is followed by the next.
+    for (int i : {0, 1}) {
+        if (m_jogSpeed[size_t(i)] == 0.0)
+            continue;
+        const double here = i == 0 ? m_az : m_el;
+        const double next = jogLegEnd(i == 0, m_jogSpeed[size_t(i)]);
+        if (std::abs(m_jogLeg[size_t(i)] - here) < kJogLegRenewDeg && std::abs(next - m_jogLeg[size_t(i)]) > 1.0) {
+            jogBySetPosition(i == 0 ? Axis::Azimuth : Axis::Elevation, m_jogSpeed[size_t(i)]);
+            return; // one frame sets both axes
+        }
+    }
 }
 
 CommandResult RotatorSession::stop(Axes axes)
@@ -252,6 +352,15 @@ CommandResult RotatorSession::stop(Axes axes)
     m_activeTarget.reset();
     write(line);
     emit stopSent();
+    // A SPID stop halts every axis: one still held on the jog pad runs on.
+    if (protocol::isSpid(m_profile.dialect)) {
+        for (Axis other : {Axis::Azimuth, Axis::Elevation}) {
+            if (const double speed = m_jogSpeed[other == Axis::Azimuth ? 0 : 1]; speed != 0.0) {
+                m_jogSpeed[other == Axis::Azimuth ? 0 : 1] = 0.0;
+                moveAxis(other, speed);
+            }
+        }
+    }
     // SA / SE only let go of the drive. Where the dialect has speed commands,
     // a zero speed follows to brake a drive that would coast (spur gear,
     // direct drive) and hold it there.

@@ -82,7 +82,7 @@ void RotatorSession::sendNext()
     m_onWire = true;
     m_link->setAwaitingReply(true); // a shared line holds the wire for the answer
     write(front->line);
-    m_replyTimer.start(m_options.replyTimeoutMs);
+    m_replyTimer.start(m_replyTimeoutMs);
 }
 
 void RotatorSession::onReplyTimeout()
@@ -95,7 +95,7 @@ void RotatorSession::onReplyTimeout()
         sendNext();
         return;
     }
-    finishFront(false, tr("no answer within %1 ms").arg(m_options.replyTimeoutMs));
+    finishFront(false, tr("no answer within %1 ms").arg(m_replyTimeoutMs));
 }
 
 void RotatorSession::finishFront(bool ok, const QString &reason)

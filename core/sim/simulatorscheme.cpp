@@ -55,6 +55,8 @@ transport::LinkHints hintsOf(const QUrl &url, const SimulatorOptions &options)
     transport::LinkHints h;
     h.dialect = protocol::dialectName(options.dialect);
     h.checksum = options.checksum; // the session frames its side as the simulator does
+    if (options.baud > 0)
+        h.baud = options.baud; // paced as a serial line of that rate
     if (query.hasQueryItem(QStringLiteral("az_max")))
         h.azMax = r.azimuth.maxDegrees;
     if (query.hasQueryItem(QStringLiteral("el_max")))

@@ -33,6 +33,10 @@ struct LinkHints {
     // Which rotor of a multi-rotor controller the link drives (`rotor=2` on
     // the URI; Micro-2g: 1..4). Empty: the controller's default rotor.
     std::optional<int> rotor;
+    // The line's rate in bits a second, where the link knows it (a serial
+    // port, a simulator paced with `baud=`): the session polls no faster
+    // than the line carries (a Rot2Prog at 600 baud takes 0.42 s a poll).
+    std::optional<int> baud;
 };
 
 class Link : public QObject {

@@ -47,6 +47,16 @@ QString readRotor(QStringView value, LinkHints *hints)
     return {};
 }
 
+QString readBaud(QStringView value, LinkHints *hints)
+{
+    bool ok = false;
+    const int baud = value.toInt(&ok);
+    if (!ok || baud < 50 || baud > 4000000)
+        return QObject::tr("baud rate '%1' is not a rate").arg(value);
+    hints->baud = baud;
+    return {};
+}
+
 LinkResult withHints(std::unique_ptr<Link> link, const LinkHints &hints)
 {
     link->setHints(hints);
@@ -108,6 +118,7 @@ LinkResult makeSerial(const QUrl &url, const QString &uri)
             return fail(uri, QObject::tr("unknown serial option '%1'").arg(key));
         }
     }
+    hints.baud = s.baud;
     return withHints(std::make_unique<SerialLink>(uri, s), hints);
 }
 
@@ -124,8 +135,10 @@ LinkResult makeTcp(const QUrl &url, const QString &uri)
             e = readChecksum(value, &hints);
         else if (key == QLatin1String("rotor"))
             e = readRotor(value, &hints);
+        else if (key == QLatin1String("baud")) // the serial line behind a network adapter, for pacing
+            e = readBaud(value, &hints);
         else
-            return fail(uri, QObject::tr("unknown tcp option '%1' (known: checksum, rotor)").arg(key));
+            return fail(uri, QObject::tr("unknown tcp option '%1' (known: checksum, rotor, baud)").arg(key));
         if (!e.isEmpty())
             return fail(uri, e);
     }

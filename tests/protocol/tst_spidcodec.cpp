@@ -96,18 +96,25 @@ private slots:
         // No velocity jog, no registers, no park, no version, no GS-232 extras.
         for (Dialect d : {Dialect::Rot2Prog, Dialect::Rot1Prog, Dialect::Md01}) {
             for (Op op : {Op::VelocityLeft, Op::VelocityUp, Op::ConfigRead, Op::ConfigWrite, Op::Park, Op::Reset,
-                          Op::Version, Op::Status, Op::KeepAlive, Op::Offset, Op::Speed, Op::MoveLeft})
+                          Op::Version, Op::Status, Op::KeepAlive, Op::Offset, Op::Speed})
                 QVERIFY2(!dialectSupports(d, op), describe(op));
+            // The MD-01/02's move command; the others have none.
+            for (Op op : {Op::MoveLeft, Op::MoveRight, Op::MoveUp, Op::MoveDown})
+                QCOMPARE(dialectSupports(d, op), d == Dialect::Md01);
         }
     }
 
-    // The line encoder writes no text for a binary dialect.
+    // The line encoder writes no text for a binary dialect; the fixed
+    // frames (status, stop) come from it, a set (which needs the
+    // controller's resolution) does not.
     void lineEncoderRefuses()
     {
         for (Dialect d : {Dialect::Rot2Prog, Dialect::Rot1Prog, Dialect::Md01}) {
             QVERIFY(encodeSetPosition(10, 20, d).isEmpty());
-            QVERIFY(encodeQueryPosition(d).isEmpty());
-            QVERIFY(encodeStop(true, true, d).isEmpty());
+            QCOMPARE(encodeQueryPosition(d), spid::encodeStatus());
+            QCOMPARE(encodeStop(true, true, d), spid::encodeStop());
+            QCOMPARE(encodeStop(true, false, d), spid::encodeStop()); // one frame stops both
+            QVERIFY(encodeStop(false, false, d).isEmpty());
             QVERIFY(encodeToken(Message::number(Op::Azimuth, 10), d).isEmpty());
             QVERIFY(encodeLine({Message::query(Op::Azimuth)}, d).isEmpty());
             QVERIFY(encodeReport(Message::number(Op::Azimuth, 10), d).isEmpty());

@@ -43,7 +43,6 @@ private slots:
     void positionGoesStaleWhenRepliesStop();
     void linkLossFailsWaitingRequestsAndReconnects();
     void badUriAndRefusedConnectionAreClearMessages();
-    void spidDialectsAreRefusedBeforeConnecting();
     void alarmFailsTheRequestInFlight();
     void telemetryAndStatusSignals();
     void velocityJogAndSoftLimitStop();
@@ -416,22 +415,6 @@ void RotatorSessionTest::linkLossFailsWaitingRequestsAndReconnects()
     device->silent = false;
     TRY_VERIFY_WITH_TIMEOUT(session->isConnected(), 10000);
     TRY_VERIFY_WITH_TIMEOUT(!session->positionStale(), 5000);
-}
-
-// The session does not write SPID frames yet: it says so and opens nothing.
-void RotatorSessionTest::spidDialectsAreRefusedBeforeConnecting()
-{
-    for (protocol::Dialect d : {protocol::Dialect::Rot2Prog, protocol::Dialect::Rot1Prog, protocol::Dialect::Md01}) {
-        model::RotatorProfile p;
-        p.dialect = d;
-        session->setProfile(p);
-        QSignalSpy errors(session, &RotatorSession::errorOccurred);
-        session->connectTo(device->uri());
-        QCOMPARE(session->state(), RotatorSession::State::Disconnected);
-        QCOMPARE(errors.size(), 1);
-        QVERIFY(errors.last().at(0).toString().contains(protocol::dialectName(d) + " is a binary protocol"));
-        QVERIFY(device->received.isEmpty());
-    }
 }
 
 void RotatorSessionTest::badUriAndRefusedConnectionAreClearMessages()
