@@ -320,6 +320,13 @@ QByteArray RotctldServer::answer(Client &c, const QByteArray &line)
             return formatStatus(r, int(HamlibError::Rejected));
         if (!m_session->isConnected())
             return formatStatus(r, int(HamlibError::Io));
+        if (!protocol::dialectSupports(m_session->profile().dialect, protocol::Op::Reset)) {
+            // No homing command in this dialect (a SPID controller, GS-232):
+            // Hamlib's "feature not available", not a bad argument.
+            logClient(c, tr("rotctld client %1: reset refused: %2 has no homing command")
+                             .arg(c.info.peer, protocol::dialectName(m_session->profile().dialect)));
+            return formatStatus(r, int(HamlibError::NotAvailable));
+        }
         return formatStatus(r, m_session->home() ? 0 : int(HamlibError::InvalidArgument));
     case Kind::Move:
         if (const int refused = refuseElevation(c, (r.direction & (2 | 4 | 32 | 64 | 128 | 256)) != 0); refused != 0)

@@ -3,6 +3,8 @@
 #include "session/rotatorsession.h"
 
 #include <QStringList>
+#include <QUrl>
+#include <QUrlQuery>
 
 namespace slew::tuning {
 
@@ -30,8 +32,14 @@ QString DialectResult::describe() const
         answered << QStringLiteral("\\?ENC");
     if (c.velocity)
         answered << QObject::tr("velocity (VL/VR/VU/VD)");
-    return QStringLiteral("%1: %2").arg(protocol::dialectName(dialect),
-                                        answered.isEmpty() ? QObject::tr("no answer") : answered.join(QStringLiteral(", ")));
+    QString text = QStringLiteral("%1: %2").arg(protocol::dialectName(dialect),
+                                                answered.isEmpty() ? QObject::tr("no answer") : answered.join(QStringLiteral(", ")));
+    // An MD-01/02 in ROT2 mode answers a status exactly as a Rot2Prog does;
+    // only a set (which it answers) or its move command tells them apart,
+    // and neither is a question to put to a rotator unasked.
+    if (dialect == protocol::Dialect::Rot2Prog && c.positionFeedback)
+        text += QObject::tr(" (SPID frames; an MD-01/02 answers the same: choose md01 for its move command)");
+    return text;
 }
 
 DialectIdentifier::DialectIdentifier(QObject *parent)
@@ -52,6 +60,12 @@ bool DialectIdentifier::start(const QString &uri)
     m_uri = uri.trimmed();
     m_results.clear();
     m_pending = {Dialect::Easycomm3, Dialect::SatNogs, Dialect::Easycomm2, Dialect::Micro2g};
+    // SPID's binary status frame last: it is only worth its wait once no
+    // line protocol got a position. First, on a line at a SPID
+    // controller's own rate (Rot2Prog 600 baud, Rot1Prog 1200).
+    const QList<Dialect> spid{Dialect::Rot2Prog, Dialect::Rot1Prog};
+    const int baud = QUrlQuery(QUrl(m_uri)).queryItemValue(QStringLiteral("baud")).toInt();
+    m_pending = baud == 600 || baud == 1200 ? spid + m_pending : m_pending + spid;
     m_total = int(m_pending.size());
     next();
     return true;
@@ -81,9 +95,11 @@ void DialectIdentifier::next()
         return;
     }
     const Dialect d = m_pending.takeFirst();
-    // A controller that answered an Easycomm position is no Micro-2g: asking
-    // would only wait out its silence.
-    if (d == Dialect::Micro2g && best()) {
+    // A controller that answered an Easycomm position is no Micro-2g and no
+    // SPID controller (nor one that answered SPID frames anything else):
+    // asking would only wait out its silence. The Easycomm flavours are all
+    // asked, since they differ in how much they answer.
+    if (best() && (d == Dialect::Micro2g || protocol::isSpid(d) || protocol::isSpid(best()->dialect))) {
         next();
         return;
     }

@@ -4,8 +4,11 @@
 // (position, VE, GS, GE, IP, CR, \?ENC; the Micro-2g's heading and `?`)
 // against what it leaves unanswered. The dialect that explains the most
 // wins; on a tie the one listed first (easycomm3, satnogs, easycomm2, micro2g).
-// The Micro-2g is asked only when no Easycomm flavour got a position.
-// Easycomm I answers nothing, so it can only be chosen by hand.
+// The Micro-2g is asked only when no Easycomm flavour got a position, and
+// SPID's binary status frame (Rot2Prog, then Rot1Prog) only when nothing
+// did, unless the link runs at a SPID rate (600 or 1200 baud), where SPID
+// is asked first. An MD-01/02 answers as a Rot2Prog. Easycomm I answers
+// nothing, so it can only be chosen by hand.
 
 #include "probeattempt.h"
 #include "protocol/dialect.h"

@@ -6,6 +6,7 @@
 // and a tracker's S bringing the antenna to rest on either drive train.
 
 #include "bridge/rotctldserver.h"
+#include "protocol/spidcodec.h"
 #include "../common/halfclose.h"
 #include "../common/hamlibprocess.h"
 #include "../common/simulatorpump.h"
@@ -49,6 +50,7 @@ private slots:
     void clientsBeyondTheLimitAreRefused();
     void resetTakesOnlyResetAll();
     void clientsSeeTheCalibratedPointing();
+    void aSpidRotatorBehindTheServer();
 
 private:
     QByteArray ask(QTcpSocket &s, const QByteArray &line);
@@ -634,6 +636,42 @@ void RotctldServerTest::clientsSeeTheCalibratedPointing()
     const QByteArray state = ask(s, "\\dump_state");
     QVERIFY2(state.contains("min_az=4.000000\nmax_az=364.000000\nmin_el=-1.000000\nmax_el=89.000000\n"),
              state.constData());
+}
+
+void RotctldServerTest::aSpidRotatorBehindTheServer()
+{
+    // Gpredict's view of a Rot2Prog through Slew: Hamlib's rotctl (netrotctl)
+    // sets, reads and stops; the controller gets SPID frames, written in the
+    // resolution its replies gave (the simulator's 2 pulses a degree). What
+    // it lacks (homing) is Hamlib's "feature not available"; a move is a
+    // jog by set-position legs, stopped by S.
+    model::RotatorProfile p;
+    p.uri = "sim:?dialect=rot2prog&model=satnogs&time_scale=10";
+    p.dialect = protocol::Dialect::Rot2Prog;
+    QVERIFY(connectSession(p));
+    const QString where = QStringLiteral("127.0.0.1:%1").arg(server->port());
+    QSignalSpy sent(session, &session::RotatorSession::bytesSent);
+    RotctlResult r = runRotctl({"-m", "2", "-r", where, "P", "30", "20"});
+    QVERIFY2(r.finished && r.exitCode == 0, r.err.constData());
+    QCOMPARE(timesSent(sent, protocol::spid::encodeSet(30, 20, protocol::Dialect::Rot2Prog, 2, 2).bytes), 1);
+    QVERIFY(rotctlReadsPosition(where, 30, 20));
+
+    sent.clear();
+    r = runRotctl({"-m", "2", "-r", where, "M", "16", "50"}); // clockwise
+    QVERIFY2(r.finished && r.exitCode == 0, r.err.constData());
+    const double from = session->azimuth();
+    QVERIFY(runEventLoopUntil([&] { return session->azimuth() > from + 5; }, 10000));
+    r = runRotctl({"-m", "2", "-r", where, "S"});
+    QVERIFY2(r.finished && r.exitCode == 0, r.err.constData());
+    QVERIFY(timesSent(sent, protocol::spid::encodeStop()) >= 1);
+
+    QTcpSocket s;
+    s.connectToHost(QHostAddress::LocalHost, server->port());
+    QVERIFY(runEventLoopUntil([&] { return s.state() == QAbstractSocket::ConnectedState; }, 5000));
+    sent.clear();
+    QCOMPARE(ask(s, "R 1"), QByteArray("RPRT -11\n"));
+    QCOMPARE(sent.count(), 0);
+    QCOMPARE(ask(s, "S"), QByteArray("RPRT 0\n"));
 }
 
 QTEST_MAIN(RotctldServerTest)

@@ -77,6 +77,12 @@ private slots:
         QTest::newRow("easycomm3") << "sim:" << "easycomm3";
         QTest::newRow("satnogs") << "sim:?dialect=satnogs" << "satnogs";
         QTest::newRow("easycomm2") << "sim:?dialect=easycomm2" << "easycomm2";
+        // SPID by its binary answers: after every line protocol failed, or
+        // first on a line at a SPID rate. An MD-01/02 answers as a Rot2Prog.
+        QTest::newRow("rot2prog") << "sim:?dialect=rot2prog" << "rot2prog";
+        QTest::newRow("rot2prog at 600 baud") << "sim:?dialect=rot2prog&baud=600&time_scale=20" << "rot2prog";
+        QTest::newRow("rot1prog at 1200 baud") << "sim:?dialect=rot1prog&baud=1200&time_scale=20" << "rot1prog";
+        QTest::newRow("md01") << "sim:?dialect=md01" << "rot2prog";
     }
     void identifiesTheDialect()
     {
@@ -90,6 +96,8 @@ private slots:
         for (const auto &r : id.results())
             qInfo().noquote() << r.describe() << r.score;
         QCOMPARE(protocol::dialectName(id.best()->dialect), dialect);
+        if (dialect == QLatin1String("rot2prog"))
+            QVERIFY(id.best()->describe().contains(QStringLiteral("choose md01")));
     }
 
     void homesAndSaysSo()
