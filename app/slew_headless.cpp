@@ -12,6 +12,7 @@
 #include "bridge/headlessstation.h"
 #include "bridge/rotctldserver.h"
 #include "protocol/dialect.h"
+#include "transport/linkfactory.h"
 #include "cli/terminationsignalwatcher.h"
 #include "sky/tle.h"
 #include "sky/utctime.h"
@@ -147,6 +148,11 @@ int runHeadless(int argc, char *argv[])
         if (!d)
             return fail(QStringLiteral("unknown dialect '%1'").arg(parser.value(dialect)));
         config.profile.dialect = *d;
+    } else if (!parser.isSet(profile)) {
+        // Neither names one: the link may (a simulator's `dialect=`), as the
+        // window's connection bar takes it.
+        if (const auto d = slew::protocol::dialectFromName(slew::transport::linkHintsFor(config.profile.uri).dialect))
+            config.profile.dialect = *d;
     }
     if (parser.isSet(listen)) {
         if (!slew::transport::parseHostPort(parser.value(listen), &config.rotctldAddress, &config.rotctldPort))

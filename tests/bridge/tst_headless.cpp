@@ -42,6 +42,7 @@ private slots:
     void refusesABadTrack();
     void runningOutOfDescriptorsDoesNotSpin();
     void hostileClientCannotFloodTheLog();
+    void servesASpidRotatorOnASerialLine();
 
 private:
     // Starts `slew --headless ARGS` and reads its log up to the rotctld
@@ -423,6 +424,60 @@ void HeadlessTest::tracksAPassAndHoldsOffRemoteTrackers()
     ::kill(pid_t(slew.processId()), SIGTERM);
     QVERIFY(finished.wait(10000));
     QCOMPARE(slew.exitCode(), 0);
+}
+
+void HeadlessTest::servesASpidRotatorOnASerialLine()
+{
+    // The station service on a Rot2Prog: slew-sim on a pty at 600 baud,
+    // opened as a serial port. A tracker sets and reads through rotctld;
+    // SIGTERM stops the rotator with SPID's stop frame before Slew exits.
+    QTemporaryDir dir;
+    const QString pty = dir.filePath("rot2prog"), received = dir.filePath("received.log");
+    SlewSimProcess sim;
+    QVERIFY2(sim.start({"--pty", pty, "--dialect", "rot2prog", "--baud", "600", "--time-scale", "4", "--model", "satnogs",
+                        "--log-received", received}),
+             qPrintable(sim.error()));
+    QProcess slew;
+    quint16 port = 0;
+    QVERIFY2(startSlew(slew, {"--connect", QStringLiteral("serial:%1?baud=600").arg(pty), "--dialect", "rot2prog",
+                               "--rotctld-listen", "127.0.0.1:0"},
+                       &port),
+             slew.readAllStandardError().constData());
+    QTcpSocket tracker;
+    tracker.connectToHost(QHostAddress::LocalHost, port);
+    QTRY_COMPARE(tracker.state(), QAbstractSocket::ConnectedState);
+    QVERIFY(QTest::qWaitFor([&] { return ask(tracker, "p").count('\n') == 2; }, 15000));
+    QCOMPARE(ask(tracker, "P 40 20"), QByteArray("RPRT 0\n"));
+    QPointF at;
+    QVERIFY2(QTest::qWaitFor([&] {
+        const QList<QByteArray> lines = ask(tracker, "p").trimmed().split('\n');
+        at = lines.size() == 2 ? QPointF(lines[0].toDouble(), lines[1].toDouble()) : QPointF();
+        return std::abs(at.x() - 40) < 0.3 && std::abs(at.y() - 20) < 0.3;
+    }, 30000), qPrintable(QStringLiteral("at %1, %2").arg(at.x()).arg(at.y())));
+    QCOMPARE(ask(tracker, "R 1"), QByteArray("RPRT -11\n")); // no homing on a Rot2Prog
+    auto log = [&] {
+        QFile f(received);
+        return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+    };
+    const QByteArray stopFrame = "W" + QByteArray("\\x00").repeated(10) + "\\x0f \n";
+    const qsizetype before = log().count(stopFrame);
+    QSignalSpy finished(&slew, &QProcess::finished);
+    ::kill(pid_t(slew.processId()), SIGTERM);
+    QVERIFY(finished.wait(10000));
+    QCOMPARE(slew.exitCode(), 0);
+    QTRY_VERIFY_WITH_TIMEOUT(log().count(stopFrame) > before, 5000);
+
+    // A simulator's URI names its dialect: without --dialect, Slew takes it.
+    QProcess hinted;
+    QVERIFY2(startSlew(hinted, {"--connect", "sim:?dialect=rot2prog", "--rotctld-listen", "127.0.0.1:0"}, &port),
+             hinted.readAllStandardError().constData());
+    QTcpSocket second;
+    second.connectToHost(QHostAddress::LocalHost, port);
+    QTRY_COMPARE(second.state(), QAbstractSocket::ConnectedState);
+    QVERIFY(QTest::qWaitFor([&] { return ask(second, "p").count('\n') == 2; }, 15000));
+    QSignalSpy hintedFinished(&hinted, &QProcess::finished);
+    ::kill(pid_t(hinted.processId()), SIGTERM);
+    QVERIFY(hintedFinished.wait(10000));
 }
 
 void HeadlessTest::holdsAFixedDirection()
