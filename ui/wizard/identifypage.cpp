@@ -17,8 +17,8 @@ using session::RotatorSession;
 IdentifyPage::IdentifyPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizard(wizard)
 {
     setTitle(tr("Identify"));
-    setSubTitle(tr("Slew asks the controller in each Easycomm flavour and keeps the one that explains "
-                   "what it answers."));
+    setSubTitle(tr("Slew asks the controller in each Easycomm flavour, as a Micro-2g and in SPID's binary "
+                   "frames, and keeps the one that explains what it answers."));
     m_progress = new QProgressBar(this);
     m_answers = new QListWidget(this);
     m_result = new QLabel(this);
@@ -59,9 +59,13 @@ void IdentifyPage::onIdentified(bool identified)
     }
     const auto best = *m_identifier.best();
     m_wizard->profile().dialect = best.dialect;
-    m_result->setText(tr("The controller speaks %1%2. Connecting…")
+    m_result->setText(tr("The controller speaks %1%2. Connecting…%3")
                           .arg(protocol::dialectName(best.dialect),
-                               best.version.isEmpty() ? QString() : tr(" (version %1)").arg(best.version)));
+                               best.version.isEmpty() ? QString() : tr(" (version %1)").arg(best.version),
+                               best.dialect == protocol::Dialect::Rot2Prog
+                                   ? tr(" An MD-01/02 answers as a Rot2Prog does: if this is one, choose md01 "
+                                        "afterwards for its move command.")
+                                   : QString()));
     RotatorSession *s = m_wizard->session();
     s->setProfile(m_wizard->profile());
     s->connectTo(m_wizard->profile().uri);
