@@ -576,6 +576,11 @@ CommandResult RotatorSession::sendRaw(const QString &line)
 {
     if (auto linked = requireLink(); !linked)
         return linked;
+    // A SPID controller reads binary frames, which no printable line can
+    // be: text would only be garbage on its wire.
+    if (protocol::isSpid(m_profile.dialect))
+        return refuse(tr("%1 speaks binary frames: raw text lines are not sent (use Go to, Stop and the jog pad)")
+                          .arg(protocol::dialectName(m_profile.dialect)));
     const QByteArray bytes = line.trimmed().toLatin1();
     if (bytes.isEmpty())
         return refuse(tr("nothing to send"));

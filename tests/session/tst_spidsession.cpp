@@ -91,6 +91,12 @@ private slots:
         for (const QByteArray &f : frames(sent))
             QCOMPARE(f, spid::encodeStatus()); // nothing but status frames so far
         QVERIFY(sent.size() >= 1);
+        // A typed text line would be garbage on a binary wire: refused.
+        sent.clear();
+        const auto raw = s.sendRaw(QStringLiteral("AZ10 EL10"));
+        QVERIFY(!raw);
+        QVERIFY2(raw.refusal.contains(QStringLiteral("binary frames")), qPrintable(raw.refusal));
+        QVERIFY(frames(sent).isEmpty() || frames(sent) == QList<QByteArray>(sent.size(), spid::encodeStatus()));
     }
 
     // A set in the controller's pulses per degree: the simulator reports 2
