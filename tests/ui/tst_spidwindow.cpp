@@ -16,6 +16,7 @@
 #include <QTabWidget>
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 
 namespace {
@@ -78,8 +79,14 @@ private slots:
                  qPrintable(speed->toolTip()));
         for (const char *name : {"jogLeft", "jogRight", "jogUp", "jogDown"})
             QVERIFY2(f.find<QPushButton>(QLatin1String(name))->isEnabled(), name);
+        const qsizetype before = f.sent.size();
         jogAndRelease(f, QStringLiteral("jogRight"), 5.0);
         jogAndRelease(f, QStringLiteral("jogLeft"), 5.0);
+        // The MD-01/02 jogs by its move command, the Rot2Prog by sets
+        // (the fixture keeps each frame trimmed: its command byte ends it).
+        const QChar command(dialect == QLatin1String("md01") ? 0x14 : 0x2F);
+        const QStringList frames = f.sent.mid(before);
+        QVERIFY(std::any_of(frames.begin(), frames.end(), [&](const QString &frame) { return frame.endsWith(command); }));
     }
 
     void aSpeedDialectGetsTheBoxBack()
