@@ -1,6 +1,7 @@
 #include "configeditor.h"
 
 #include "model/movegate.h"
+#include "protocol/dialect.h"
 
 #include <QFileDialog>
 #include <QGridLayout>
@@ -79,6 +80,11 @@ ConfigEditor::ConfigEditor(RotatorSession *session, QWidget *parent) : QWidget(p
     m_message = new QLabel;
     m_message->setObjectName(QStringLiteral("configMessage"));
     m_message->setWordWrap(true);
+    m_noRegisters = new QLabel;
+    m_noRegisters->setObjectName(QStringLiteral("configNoRegisters"));
+    m_noRegisters->setWordWrap(true);
+    m_noRegisters->setVisible(false);
+    m_registerControls = {scroll, apply, read, readOne, m_extra};
 
     auto *buttons = new QHBoxLayout;
     buttons->addWidget(apply);
@@ -91,6 +97,7 @@ ConfigEditor::ConfigEditor(RotatorSession *session, QWidget *parent) : QWidget(p
     buttons->addWidget(exportButton);
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
+    layout->addWidget(m_noRegisters);
     layout->addWidget(scroll, 1);
     layout->addLayout(buttons);
     layout->addWidget(m_message);
@@ -118,7 +125,24 @@ ConfigEditor::ConfigEditor(RotatorSession *session, QWidget *parent) : QWidget(p
         if (caps.probed && caps.config && isVisible())
             readAll();
         m_readOnShow = !isVisible();
+        followCapabilities();
     });
+    connect(session, &RotatorSession::profileChanged, this, &ConfigEditor::followCapabilities);
+    followCapabilities();
+}
+
+void ConfigEditor::followCapabilities()
+{
+    // Before the probe answers nothing is known, and the editor stays as it is.
+    const auto &caps = m_session->capabilities();
+    const bool none = caps.probed && !caps.config;
+    m_noRegisters->setText(none ? tr("%1 has no configuration registers: there is nothing on the controller to "
+                                     "read or write here. Profiles can still be imported and exported.")
+                                      .arg(protocol::dialectName(m_session->profile().dialect))
+                                : QString());
+    m_noRegisters->setVisible(none);
+    for (QWidget *w : std::as_const(m_registerControls))
+        w->setEnabled(!none);
 }
 
 ConfigEditor::Row &ConfigEditor::rowFor(int reg)
@@ -243,6 +267,10 @@ void ConfigEditor::readAll()
 {
     if (!m_session->isConnected()) {
         say(tr("Not connected."), true);
+        return;
+    }
+    if (const auto &caps = m_session->capabilities(); caps.probed && !caps.config) {
+        say(m_noRegisters->text(), false);
         return;
     }
     for (int reg : m_rows.keys()) {

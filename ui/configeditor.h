@@ -5,6 +5,8 @@
 // changed, and Apply writes only those, reads each back and marks it
 // confirmed or mismatched. Values are checked before anything is sent.
 // Profiles (limits, park, gains, link) are imported and exported as JSON.
+// A controller without registers (SPID) gets a plain note instead: the
+// register controls are greyed out, the profile buttons stay.
 
 #include "session/rotatorsession.h"
 
@@ -61,12 +63,15 @@ private:
     void setState(int reg, FieldState s, const QString &detail = {});
     QString validate(int reg, const QString &text) const;
     void say(const QString &text, bool error);
+    void followCapabilities(); // greys out the registers of a controller without any
 
     session::RotatorSession *m_session;
     QMap<int, Row> m_rows;
     QGridLayout *m_grid;
     QSpinBox *m_extra;
     QLabel *m_message;
+    QLabel *m_noRegisters;
+    QList<QWidget *> m_registerControls; // what only a controller with registers can use
     bool m_readOnShow = true;
 };
 

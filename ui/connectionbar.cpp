@@ -90,7 +90,9 @@ ConnectionBar::ConnectionBar(RotatorSession *session, QWidget *parent) : QWidget
     for (auto d : protocol::allDialects())
         m_dialect->addItem(protocol::dialectName(d), int(d));
     setDialect(protocol::Dialect::Easycomm3);
-    m_dialect->setToolTip(tr("Which protocol the controller speaks: an Easycomm flavour, Yaesu GS-232, or rotctld (chosen for you on a rotctld:// link)"));
+    m_dialect->setToolTip(tr("Which protocol the controller speaks: an Easycomm flavour, Yaesu GS-232, rotctld "
+                             "(chosen for you on a rotctld:// link), the Micro-2g, or SPID (Rot2Prog, Rot1Prog, "
+                             "MD-01/02)"));
 
     m_connect = new QPushButton(tr("Connect"));
     m_connect->setObjectName(QStringLiteral("connectButton"));

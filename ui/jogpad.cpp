@@ -1,5 +1,7 @@
 #include "jogpad.h"
 
+#include "protocol/dialect.h"
+
 #include <QDoubleSpinBox>
 #include <QGridLayout>
 #include <QLabel>
@@ -34,7 +36,6 @@ JogPad::JogPad(session::RotatorSession *session, QWidget *parent) : QWidget(pare
     m_speed->setSingleStep(0.5);
     m_speed->setValue(5.0);
     m_speed->setSuffix(QStringLiteral(" °/s"));
-    m_speed->setToolTip(tr("Jog speed (controllers without velocity commands use their own)"));
 
     auto *grid = new QGridLayout(this);
     grid->setContentsMargins(0, 0, 0, 0);
@@ -49,7 +50,22 @@ JogPad::JogPad(session::RotatorSession *session, QWidget *parent) : QWidget(pare
     hint->setEnabled(false);
     grid->addWidget(hint, 3, 0, 1, 3);
     connect(session, &session::RotatorSession::profileChanged, this, &JogPad::followAxes);
+    connect(session, &session::RotatorSession::profileChanged, this, &JogPad::followSpeed);
+    connect(session, &session::RotatorSession::capabilitiesChanged, this, &JogPad::followSpeed);
     followAxes();
+    followSpeed();
+}
+
+void JogPad::followSpeed()
+{
+    // Until the probe has answered the box stays usable: most dialects take
+    // a speed, and greying it out on every connect would only flicker.
+    const auto &caps = m_session->capabilities();
+    const bool ownSpeed = caps.probed && !caps.velocity;
+    m_speed->setEnabled(!ownSpeed);
+    m_speed->setToolTip(ownSpeed ? tr("%1 has no speed command: the controller jogs at its own speed.")
+                                       .arg(protocol::dialectName(m_session->profile().dialect))
+                                 : tr("Jog speed"));
 }
 
 void JogPad::followAxes()

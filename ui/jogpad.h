@@ -1,7 +1,9 @@
 #pragma once
 // Left/right/up/down buttons that move an axis while held: pressing starts a
-// velocity move (or ML/MR/MU/MD where the dialect has no speed), releasing
-// stops that axis. The arrow keys drive the same buttons (KeyboardControl).
+// velocity move (or ML/MR/MU/MD, or SPID's go-to legs, where the dialect has
+// no speed), releasing stops that axis. The arrow keys drive the same buttons (KeyboardControl).
+// A controller without speed commands (SPID) jogs at its own speed, so the
+// speed box is greyed out for it and says why.
 
 #include "session/rotatorsession.h"
 
@@ -30,6 +32,7 @@ public slots:
 
 private:
     void followAxes(); // an azimuth-only rotator has no up and down
+    void followSpeed(); // a controller without speed commands ignores the box
     QPushButton *makeButton(Direction d, const QString &text, const QString &name);
 
     session::RotatorSession *m_session;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "parkhomepanel.h"
 
+#include "protocol/dialect.h"
+
 #include <QGridLayout>
 #include <QLabel>
 #include <QProgressBar>
@@ -17,10 +19,8 @@ ParkHomePanel::ParkHomePanel(RotatorSession *session, QWidget *parent) : QWidget
     setObjectName(QStringLiteral("parkHomePanel"));
     m_park = new QPushButton(tr("Park"));
     m_park->setObjectName(QStringLiteral("parkButton"));
-    m_park->setToolTip(tr("Move to the park position"));
     m_home = new QPushButton(tr("Home"));
     m_home->setObjectName(QStringLiteral("homeButton"));
-    m_home->setToolTip(tr("Find the end stops and re-zero (RESET)"));
     m_cancel = new QPushButton(tr("Cancel"));
     m_cancel->setObjectName(QStringLiteral("homeCancel"));
     m_cancel->setVisible(false);
@@ -65,6 +65,7 @@ ParkHomePanel::ParkHomePanel(RotatorSession *session, QWidget *parent) : QWidget
         updateEnabled();
     });
     connect(session, &RotatorSession::capabilitiesChanged, this, &ParkHomePanel::updateEnabled);
+    connect(session, &RotatorSession::profileChanged, this, &ParkHomePanel::updateEnabled);
     updateEnabled();
 }
 
@@ -73,7 +74,16 @@ void ParkHomePanel::updateEnabled()
     const bool connected = m_session->isConnected();
     m_park->setEnabled(connected && !m_homing);
     const auto &caps = m_session->capabilities();
-    m_home->setEnabled(connected && !m_homing && (!caps.probed || caps.reset));
+    // Without a park command the session parks by a go-to (RotatorSession::park).
+    const bool parksByGoto = !protocol::dialectSupports(m_session->profile().dialect, protocol::Op::Park);
+    m_park->setToolTip(parksByGoto ? tr("Move to the park position, by a go-to: this controller has no park command")
+                                   : tr("Move to the park position"));
+    const bool noHoming = caps.probed && !caps.reset;
+    m_home->setEnabled(connected && !m_homing && !noHoming);
+    // A greyed-out Home says why, so it is not taken for a fault.
+    m_home->setToolTip(noHoming ? tr("%1 has no homing command: this controller cannot find its end stops.")
+                                      .arg(protocol::dialectName(m_session->profile().dialect))
+                                : tr("Find the end stops and re-zero (RESET)"));
 }
 
 bool ParkHomePanel::park()

@@ -1,5 +1,7 @@
 #include "trafficconsole.h"
 
+#include "protocol/dialect.h"
+
 #include <QCheckBox>
 #include <QGridLayout>
 #include <QLabel>
@@ -42,7 +44,6 @@ TrafficConsole::TrafficConsole(RotatorSession *session, QWidget *parent) : QWidg
 
     m_raw = new QLineEdit;
     m_raw->setObjectName(QStringLiteral("rawCommand"));
-    m_raw->setPlaceholderText(tr("raw command, e.g. VE or CR1"));
     m_raw->setFont(mono);
     m_send = new QPushButton(tr("Send"));
     m_send->setObjectName(QStringLiteral("rawSend"));
@@ -74,6 +75,21 @@ TrafficConsole::TrafficConsole(RotatorSession *session, QWidget *parent) : QWidg
     connect(clearButton, &QPushButton::clicked, this, &TrafficConsole::clear);
     connect(m_send, &QPushButton::clicked, this, [this] { sendRaw(m_raw->text()); });
     connect(m_raw, &QLineEdit::returnPressed, this, [this] { sendRaw(m_raw->text()); });
+    connect(session, &RotatorSession::profileChanged, this, &TrafficConsole::followDialect);
+    followDialect();
+}
+
+void TrafficConsole::followDialect()
+{
+    // A SPID frame carries binary resolution bytes, so no printable line is
+    // one, and a stray line could only upset the controller's framing.
+    const protocol::Dialect d = m_session->profile().dialect;
+    const bool binary = protocol::isSpid(d);
+    m_raw->setEnabled(!binary);
+    m_send->setEnabled(!binary);
+    m_raw->setPlaceholderText(binary ? tr("%1 speaks binary frames: raw lines cannot be sent")
+                                           .arg(protocol::dialectName(d))
+                                     : tr("raw command, e.g. VE or CR1"));
 }
 
 QString TrafficConsole::render(const Entry &e)

@@ -47,6 +47,7 @@ private:
     bool matches(const Entry &e) const;
     void flushPending();
     void refilter();
+    void followDialect(); // SPID takes binary frames, never a typed line
 
     session::RotatorSession *m_session;
     std::deque<Entry> m_entries;

@@ -2,6 +2,8 @@
 #include "tuningpage.h"
 
 #include "pagebody.h"
+#include "protocol/dialect.h"
+#include "session/rotatorsession.h"
 #include "setupwizard.h"
 #include "tuningchart.h"
 
@@ -89,6 +91,9 @@ TuningPage::TuningPage(SetupWizard *wizard)
     layout->addLayout(decide);
 
     connect(m_tune, &QPushButton::clicked, this, &TuningPage::start);
+    // m_accept is enabled exactly while a result waits for a decision.
+    connect(wizard->session(), &session::RotatorSession::capabilitiesChanged, this,
+            [this] { setDeciding(m_accept->isEnabled()); });
     connect(m_cancel, &QPushButton::clicked, &m_tuner, &AxisTuner::cancel);
     connect(m_cancel, &QPushButton::clicked, &m_motionRun, &tuning::MotionRun::cancel);
     connect(m_measureSpeed, &QPushButton::clicked, this, &TuningPage::measureSpeed);
@@ -200,7 +205,14 @@ void TuningPage::setDeciding(bool deciding)
     m_accept->setEnabled(deciding);
     m_retry->setEnabled(deciding);
     m_keepOld->setEnabled(deciding);
-    m_tune->setEnabled(!running && !deciding);
+    // The gains live in CR/CW registers: without them (SPID) there is
+    // nothing to tune, but the speed can still be measured.
+    const auto &caps = m_wizard->session()->capabilities();
+    const bool noGains = caps.probed && !caps.config;
+    m_tune->setEnabled(!running && !deciding && !noGains);
+    m_tune->setToolTip(noGains ? tr("%1 has no gain registers, so there are no gains to tune.")
+                                     .arg(protocol::dialectName(m_wizard->session()->profile().dialect))
+                               : QString());
     m_measureSpeed->setEnabled(!running && !deciding);
     m_axis->setEnabled(!running && !deciding);
     m_cancel->setEnabled(running || deciding);
