@@ -75,6 +75,10 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
     m_parkHome = new ParkHomePanel(session);
     m_presets = new PresetPanel(session);
     m_charts = new TelemetryCharts(&m_recorder->history());
+    connect(session, &RotatorSession::capabilitiesChanged, m_charts, [this](const session::Capabilities &caps) {
+        // Until the probe has answered, everything is offered.
+        m_charts->setReportsShown(!caps.probed || caps.inputs, !caps.probed || caps.status || caps.errors);
+    });
     m_config = new ConfigEditor(session);
     m_traffic = new TrafficConsole(session);
     m_log = new EventLog;

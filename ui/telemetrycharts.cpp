@@ -115,6 +115,20 @@ void TelemetryCharts::setElevationShown(bool shown)
     }
 }
 
+void TelemetryCharts::setReportsShown(bool inputs, bool statusRegisters)
+{
+    for (Panel &panel : m_panels) {
+        const QString name = panel.view->objectName();
+        if (name == QLatin1String("chartSpeed") || name == QLatin1String("chartLoad") || name == QLatin1String("chartTemp"))
+            panel.offered = inputs;
+        else if (name == QLatin1String("chartStatus"))
+            panel.offered = statusRegisters;
+        else
+            continue;
+        panel.view->setVisible(panel.offered);
+    }
+}
+
 void TelemetryCharts::addPanel(const QString &title, const QString &unit,
                                std::initializer_list<std::pair<Series, QColor>> series, Drawn drawn)
 {
@@ -218,6 +232,8 @@ void TelemetryCharts::redraw()
     const qint64 to = QDateTime::currentMSecsSinceEpoch();
     const qint64 from = to - m_windowMs;
     for (Panel &p : m_panels) {
+        if (!p.offered)
+            continue;
         if (p.hiddenUntilRecorded && p.view->isHidden()) {
             const bool recorded = std::any_of(p.plotted.begin(), p.plotted.end(),
                                               [this](const Plotted &pl) { return m_history->sampleCount(pl.id) > 0; });

@@ -45,6 +45,12 @@ public:
     // An azimuth-only rotator: the elevation lines (and their legend
     // entries) are hidden rather than drawn as a flat 0.
     void setElevationShown(bool shown);
+    // What the controller reports beyond its position: the inputs (speed,
+    // load, temperature: Easycomm III's IP) and the status and error
+    // registers (GS, GE). Panels it cannot fill are hidden rather than left
+    // empty (a SPID or GS-232 controller has none of them); the recorded
+    // history is kept.
+    void setReportsShown(bool inputs, bool statusRegisters);
 
 public slots:
     void setPaused(bool paused);
@@ -64,6 +70,7 @@ private:
         QValueAxis *value;
         std::vector<Plotted> plotted;
         bool hiddenUntilRecorded = false;
+        bool offered = true; // the controller reports what this panel draws
     };
     void addPanel(const QString &title, const QString &unit,
                   std::initializer_list<std::pair<TelemetryRecorder::Series, QColor>> series, Drawn drawn = Drawn::Lines);

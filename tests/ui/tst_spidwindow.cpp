@@ -171,6 +171,11 @@ private slots:
         // Nor does a binary controller take a typed line.
         QVERIFY(!f.find<QLineEdit>(QStringLiteral("rawCommand"))->isEnabled());
         QVERIFY(!f.find<QPushButton>(QStringLiteral("rawSend"))->isEnabled());
+        // Nor report speed, load, temperature or status: no empty charts for them.
+        const char *reports[] = {"chartSpeed", "chartLoad", "chartTemp", "chartStatus"};
+        for (const char *name : reports)
+            QVERIFY2(f.find<QWidget>(QLatin1String(name))->isHidden(), name);
+        QVERIFY(!f.find<QWidget>(QStringLiteral("chartAzEl"))->isHidden());
 
         // A controller with registers has them back.
         f.window->connectTo(QString::fromLatin1(WindowFixture::fastSimOnItsClock), slew::protocol::Dialect::Easycomm3);
@@ -179,6 +184,8 @@ private slots:
         QVERIFY(f.find<QPushButton>(QStringLiteral("configRead"))->isEnabled());
         QVERIFY(f.find<QLineEdit>(QStringLiteral("rawCommand"))->isEnabled());
         QVERIFY(f.find<QPushButton>(QStringLiteral("homeButton"))->isEnabled());
+        for (const char *name : reports)
+            QVERIFY2(!f.find<QWidget>(QLatin1String(name))->isHidden(), name);
     }
 
     void rot1progHasNoUpAndDown()
