@@ -64,6 +64,9 @@ ConnectionBar::ConnectionBar(RotatorSession *session, QWidget *parent) : QWidget
     m_baud->setObjectName(QStringLiteral("serialBaud"));
     for (qint32 baud : transport::commonBaudRates())
         m_baud->addItem(QString::number(baud), baud);
+    // SPID's own rates, slower than any a line protocol uses: listed last.
+    for (qint32 baud : {600, 1200})
+        m_baud->addItem(QString::number(baud), baud);
     m_baud->setCurrentText(QStringLiteral("19200"));
 
     m_tcpHost = new QLineEdit(QStringLiteral("localhost"));
@@ -90,6 +93,14 @@ ConnectionBar::ConnectionBar(RotatorSession *session, QWidget *parent) : QWidget
     for (auto d : protocol::allDialects())
         m_dialect->addItem(protocol::dialectName(d), int(d));
     setDialect(protocol::Dialect::Easycomm3);
+    // A Rot2Prog runs at 600 baud and a Rot1Prog at 1200, whatever else:
+    // choosing one sets the rate it needs (the MD-01/02 is set up per unit).
+    connect(m_dialect, &QComboBox::activated, this, [this] {
+        if (dialect() == protocol::Dialect::Rot2Prog)
+            m_baud->setCurrentText(QStringLiteral("600"));
+        else if (dialect() == protocol::Dialect::Rot1Prog)
+            m_baud->setCurrentText(QStringLiteral("1200"));
+    });
     m_dialect->setToolTip(tr("Which protocol the controller speaks: an Easycomm flavour, Yaesu GS-232, rotctld "
                              "(chosen for you on a rotctld:// link), the Micro-2g, or SPID (Rot2Prog, Rot1Prog, "
                              "MD-01/02)"));

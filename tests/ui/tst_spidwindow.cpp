@@ -9,6 +9,7 @@
 #include "telemetrycharts.h"
 
 #include <QDir>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QLineEdit>
@@ -186,6 +187,27 @@ private slots:
         QVERIFY(f.find<QPushButton>(QStringLiteral("homeButton"))->isEnabled());
         for (const char *name : reports)
             QVERIFY2(!f.find<QWidget>(QLatin1String(name))->isHidden(), name);
+    }
+
+    // A Rot2Prog talks at 600 baud and a Rot1Prog at 1200: choosing the
+    // dialect sets the serial rate, which the list now holds.
+    void choosingASpidDialectSetsItsBaudRate()
+    {
+        WindowFixture f(simFor("rot2prog"));
+        auto *dialect = f.find<QComboBox>(QStringLiteral("dialect"));
+        auto *baud = f.find<QComboBox>(QStringLiteral("serialBaud"));
+        QVERIFY(baud->findText(QStringLiteral("600")) >= 0 && baud->findText(QStringLiteral("1200")) >= 0);
+        for (const auto &[name, rate] : {std::pair{"rot2prog", "600"}, std::pair{"rot1prog", "1200"}}) {
+            baud->setCurrentText(QStringLiteral("19200"));
+            dialect->setCurrentIndex(dialect->findText(QLatin1String(name)));
+            emit dialect->activated(dialect->currentIndex()); // as a click on the item does
+            QCOMPARE(baud->currentText(), QLatin1String(rate));
+        }
+        // Another dialect leaves the rate alone.
+        baud->setCurrentText(QStringLiteral("9600"));
+        dialect->setCurrentIndex(dialect->findText(QStringLiteral("easycomm3")));
+        emit dialect->activated(dialect->currentIndex());
+        QCOMPARE(baud->currentText(), QStringLiteral("9600"));
     }
 
     void rot1progHasNoUpAndDown()
