@@ -57,8 +57,12 @@ public:
     explicit Parser(Dialect dialect = Dialect::Rot2Prog) : m_dialect(dialect) {}
 
     Dialect dialect() const { return m_dialect; }
+    // A new dialect starts afresh; the same one again (a profile applied
+    // anew mid-stream) keeps the frame under way and the resolution learnt.
     void setDialect(Dialect d)
     {
+        if (d == m_dialect)
+            return;
         m_dialect = d;
         reset();
     }

@@ -141,6 +141,11 @@ public:
     // profile's rate and the options' timeout, slowed to what the line
     // carries where the link knows its baud rate (LinkHints::baud).
     int pollIntervalMs() const { return m_pollTimer.interval(); }
+    // The finest step a set-position expresses: a SPID controller's pulse
+    // (from its replies: half a degree at 2 pulses a degree; a Rot1Prog's
+    // whole degree), or the dialect's decimals (GS-232: 1°, Easycomm III:
+    // 0.01°). A target between two steps goes out rounded to one of them.
+    double setResolutionDeg() const;
     int replyTimeoutMs() const { return m_replyTimeoutMs; }
     // Text lines a SPID controller wrote among its binary replies (MD-01
     // firmware logs so); skipped, and reported once a connection.

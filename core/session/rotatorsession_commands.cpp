@@ -184,6 +184,16 @@ CommandResult RotatorSession::gotoUnwrapped(double azimuth, double elevation)
     return sendSetPosition(azimuth, elevation);
 }
 
+double RotatorSession::setResolutionDeg() const
+{
+    const Dialect d = m_profile.dialect;
+    if (protocol::isSpid(d) && d != Dialect::Rot1Prog) {
+        const int pulses = std::max(m_parser.spidAzimuthPulses(), m_parser.spidElevationPulses());
+        return pulses > 0 ? 1.0 / pulses : 1.0;
+    }
+    return std::pow(10.0, -protocol::angleDecimals(d));
+}
+
 QByteArray RotatorSession::encodeSet(double wireAz, double wireEl, QString *why) const
 {
     const Dialect d = m_profile.dialect;

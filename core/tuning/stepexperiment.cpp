@@ -42,6 +42,14 @@ bool StepExperiment::start(Axis axis, double from, double to)
         m_error = tr("the step from %1° to %2° is too small to measure").arg(from).arg(to);
         return false;
     }
+    // The ends as the controller will take them: a SPID controller at 2
+    // pulses a degree, or GS-232's whole degrees, cannot be sent to 16.6°,
+    // and would never be found resting "at" it.
+    const double step = m_session->setResolutionDeg();
+    if (step > 0) {
+        from = std::round(from / step) * step;
+        to = std::round(to / step) * step;
+    }
     m_axis = axis;
     m_from = from;
     m_to = to;

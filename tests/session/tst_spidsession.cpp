@@ -113,11 +113,18 @@ private slots:
         QFETCH(int, pulses);
         RotatorSession s;
         QVERIFY(open(s, Dialect::Rot2Prog, QStringLiteral("spid_pulses=%1").arg(pulses)));
+        QCOMPARE(s.setResolutionDeg(), 1.0 / pulses);
         QSignalSpy sent(&s, &RotatorSession::bytesSent);
         QVERIFY(s.gotoPosition(123.5, 41.25));
         QVERIFY(!sent.isEmpty());
         QCOMPARE(sent.first().at(0).toByteArray(), spid::encodeSet(123.5, 41.25, Dialect::Rot2Prog, pulses, pulses).bytes);
         QVERIFY(arrives(s, 123.5, 41.25));
+        // The profile applied anew (the wizard does, page by page): the
+        // resolution learnt is kept, and the next set goes out at once.
+        s.setProfile(s.profile());
+        sent.clear();
+        QVERIFY(s.gotoPosition(100, 30));
+        QCOMPARE(sent.first().at(0).toByteArray(), spid::encodeSet(100, 30, Dialect::Rot2Prog, pulses, pulses).bytes);
     }
 
     // The stop frame, and the worm-gear rotator stays where it stopped.

@@ -208,6 +208,73 @@ private slots:
         QCOMPARE(wizard.currentId(), int(SetupWizard::CalibrationPageId));
     }
 
+    void aRot2ProgIsWalkedToItsProfile()
+    {
+        // A SPID controller, from Connect to the saved profile: identified by
+        // its binary answers, jogged, homing skipped (it has none), its
+        // speed measured (in the controller's half-degree steps), and no
+        // registers written: the park position is the profile's. On the
+        // wall clock, as for the Micro-2g.
+        RotatorSession session;
+        SetupWizard wizard(&session);
+        wizard.show();
+        find<QLineEdit>(wizard, "uri")->setText(QStringLiteral("sim:?dialect=rot2prog&start_az=12&start_el=6"));
+        QTest::mouseClick(find<QPushButton>(wizard, "probe"), Qt::LeftButton);
+        TRY_VERIFY_WITH_TIMEOUT(canGoOn(wizard), 10000);
+        wizard.next();
+        QCOMPARE(wizard.currentId(), int(SetupWizard::IdentifyPageId));
+        TRY_VERIFY_WITH_TIMEOUT(canGoOn(wizard), 60000);
+        const QString identified = find<QLabel>(wizard, "dialectResult")->text();
+        QVERIFY2(identified.contains(QStringLiteral("rot2prog")) && identified.contains(QStringLiteral("md01")),
+                 qPrintable(identified));
+        TRY_VERIFY_WITH_TIMEOUT(session.capabilities().probed && session.hasPosition(), 10000);
+        wizard.next();
+
+        QCOMPARE(wizard.currentId(), int(SetupWizard::MechanicsPageId));
+        QTest::mouseClick(find<QPushButton>(wizard, "jog"), Qt::LeftButton);
+        TRY_VERIFY_WITH_TIMEOUT(std::fabs(session.azimuth() - 17.0) < 0.5, 10000);
+        find<QCheckBox>(wizard, "jogConfirmed")->setChecked(true);
+        wizard.next();
+
+        QCOMPARE(wizard.currentId(), int(SetupWizard::HomingPageId));
+        find<QCheckBox>(wizard, "skipHoming")->setChecked(true);
+        TRY_VERIFY_WITH_TIMEOUT(canGoOn(wizard), 5000);
+        wizard.next();
+
+        QCOMPARE(wizard.currentId(), int(SetupWizard::TuningPageId));
+        QVERIFY(!find<QPushButton>(wizard, "tune")->isEnabled()); // no gain registers
+        QTest::mouseClick(find<QPushButton>(wizard, "measureSpeed"), Qt::LeftButton);
+        TRY_VERIFY2_WITH_TIMEOUT(find<QLabel>(wizard, "tuningStatus")->text().contains(QStringLiteral("turns at")),
+                                 qPrintable(find<QLabel>(wizard, "tuningStatus")->text()), 60000);
+        TRY_VERIFY_WITH_TIMEOUT(canGoOn(wizard), 5000);
+        wizard.next();
+
+        QCOMPARE(wizard.currentId(), int(SetupWizard::ParkPageId));
+        QVERIFY2(wizard.currentPage()->subTitle().contains(QStringLiteral("no park registers")),
+                 qPrintable(wizard.currentPage()->subTitle()));
+        find<QDoubleSpinBox>(wizard, "parkAz")->setValue(180.0);
+        find<QDoubleSpinBox>(wizard, "parkEl")->setValue(45.0);
+        wizard.next();
+
+        QCOMPARE(wizard.currentId(), int(SetupWizard::SummaryPageId));
+        const QString plan = find<QLabel>(wizard, "plan")->text();
+        QVERIFY2(plan.contains(QStringLiteral("no configuration registers")) && !plan.contains(QStringLiteral("CW")),
+                 qPrintable(plan));
+        QVERIFY(!find<QPushButton>(wizard, "write")->isEnabled());
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("rotator.json"));
+        find<QLineEdit>(wizard, "profilePath")->setText(path);
+        QTest::mouseClick(find<QPushButton>(wizard, "save"), Qt::LeftButton);
+        QString error;
+        const auto profile = model::RotatorProfile::load(path, &error);
+        QVERIFY2(profile, qPrintable(error));
+        QCOMPARE(profile->dialect, protocol::Dialect::Rot2Prog);
+        QCOMPARE(profile->parkAz, 180.0);
+        // The simulated G-5500's azimuth, measured through SPID's half-degree steps.
+        QVERIFY2(std::abs(profile->motion.azSpeedDegS - 6.2) < 0.3, qPrintable(QString::number(profile->motion.azSpeedDegS)));
+        wizard.reject();
+    }
+
     void cancellingTheWizardStopsTheRotator()
     {
         RotatorSession session;

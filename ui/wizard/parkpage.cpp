@@ -3,6 +3,7 @@
 #include "pagebody.h"
 #include "setupwizard.h"
 
+#include "protocol/dialect.h"
 #include "session/rotatorsession.h"
 
 #include <QDoubleSpinBox>
@@ -49,6 +50,14 @@ ParkPage::ParkPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizard(wizard)
 
 void ParkPage::initializePage()
 {
+    // Where the park position goes depends on the controller: its registers,
+    // or (without any, as SPID) only the profile, which Park then drives to.
+    const protocol::Dialect d = m_wizard->profile().dialect;
+    setSubTitle(protocol::dialectSupports(d, protocol::Op::ConfigWrite)
+                    ? tr("Where the antenna rests when it is not in use (PARK). Written to CW7 and CW8 on the summary page.")
+                    : tr("Where the antenna rests when it is not in use. %1 has no park registers: the position is "
+                         "kept in the profile, and Park drives there with a go-to.")
+                          .arg(protocol::dialectName(d)));
     // The spin boxes only offer what the limits allow.
     const model::RotatorProfile &p = m_wizard->profile();
     m_az->setRange(p.limits.azMin, p.limits.azMax);

@@ -3,6 +3,8 @@
 #include "pagebody.h"
 #include "setupwizard.h"
 
+#include "protocol/dialect.h"
+
 #include <QDir>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -57,6 +59,8 @@ QMap<int, QString> SummaryPage::plannedWrites() const
 {
     const model::RotatorProfile &p = m_wizard->profile();
     QMap<int, QString> writes;
+    if (!protocol::dialectSupports(p.dialect, protocol::Op::ConfigWrite))
+        return writes; // no registers (SPID, GS-232): the profile is all there is
     auto gains = [&](int first, const std::optional<model::PidGains> &g) {
         if (!g)
             return;
@@ -85,6 +89,14 @@ void SummaryPage::initializePage()
     const QMap<int, QString> writes = plannedWrites();
     for (auto it = writes.begin(); it != writes.end(); ++it)
         lines << QStringLiteral("CW%1,%2").arg(it.key()).arg(it.value());
+    if (writes.isEmpty())
+        lines << tr("%1 has no configuration registers: nothing to write; the park position %2°, %3° is kept "
+                    "in the profile.")
+                     .arg(protocol::dialectName(p.dialect))
+                     .arg(p.parkAz)
+                     .arg(p.parkEl);
+    m_write->setEnabled(!writes.isEmpty());
+    m_write->setToolTip(writes.isEmpty() ? tr("This controller has no registers to write.") : QString());
     m_plan->setText(lines.join(u'\n'));
     if (m_path->text().isEmpty()) {
         const QString dir = QStandardPaths::writableLocation(QStandardPaths::AppConfigLocation);
