@@ -237,7 +237,9 @@ private slots:
         wizard.next();
 
         QCOMPARE(wizard.currentId(), int(SetupWizard::HomingPageId));
-        find<QCheckBox>(wizard, "skipHoming")->setChecked(true);
+        QVERIFY(!find<QPushButton>(wizard, "home")->isEnabled()); // no homing command: skipped, and said so
+        QVERIFY(find<QCheckBox>(wizard, "skipHoming")->isChecked());
+        QVERIFY(find<QLabel>(wizard, "homingResult")->text().contains(QStringLiteral("no homing command")));
         TRY_VERIFY_WITH_TIMEOUT(canGoOn(wizard), 5000);
         wizard.next();
 

@@ -3,6 +3,8 @@
 #include "pagebody.h"
 #include "setupwizard.h"
 
+#include "protocol/dialect.h"
+
 #include <QCheckBox>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -16,7 +18,7 @@ namespace {
 constexpr double kHomingTimeoutSeconds = 180.0; // a full 450° sweep at a slow homing speed
 }
 
-HomingPage::HomingPage(SetupWizard *wizard) : QWizardPage(wizard), m_homing(wizard->session())
+HomingPage::HomingPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizard(wizard), m_homing(wizard->session())
 {
     setTitle(tr("Homing"));
     setSubTitle(tr("The controller drives both axes to their lower end stops and zeroes there (RESET)."));
@@ -70,6 +72,21 @@ HomingPage::HomingPage(SetupWizard *wizard) : QWizardPage(wizard), m_homing(wiza
     });
     connect(m_skip, &QCheckBox::toggled, this, &HomingPage::completeChanged);
     connect(wizard, &SetupWizard::stopRequested, &m_homing, &tuning::HomingRun::cancel);
+}
+
+void HomingPage::initializePage()
+{
+    // A controller without a homing command (SPID, GS-232) has nothing to
+    // run here: said so, and skipped, rather than offered and then refused.
+    const protocol::Dialect d = m_wizard->profile().dialect;
+    const bool canHome = protocol::dialectSupports(d, protocol::Op::Reset);
+    m_home->setEnabled(canHome && !m_homing.isRunning());
+    m_home->setToolTip(canHome ? QString() : tr("%1 has no homing command").arg(protocol::dialectName(d)));
+    if (!canHome) {
+        m_skip->setChecked(true);
+        m_result->setText(tr("%1 has no homing command: the controller keeps its own zero. Skipped.")
+                              .arg(protocol::dialectName(d)));
+    }
 }
 
 void HomingPage::setRunning(bool running)

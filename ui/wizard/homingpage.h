@@ -20,10 +20,12 @@ class HomingPage : public QWizardPage {
 public:
     explicit HomingPage(SetupWizard *wizard);
     bool isComplete() const override;
+    void initializePage() override;
 
 private:
     void setRunning(bool running);
 
+    SetupWizard *m_wizard;
     tuning::HomingRun m_homing;
     bool m_homed = false;
     QPushButton *m_home;
