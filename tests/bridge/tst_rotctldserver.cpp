@@ -470,7 +470,10 @@ void RotctldServerTest::azimuthOnlyRotatorRefusesElevation()
     // Elevation wanted: Hamlib's "feature not available", logged, nothing sent.
     QCOMPARE(ask(s, "P 120 30"), QByteArray("RPRT -11\n"));
     QCOMPARE(ask(s, "M 2 50"), QByteArray("RPRT -11\n"));
-    QCOMPARE(sent.count(), 0);
+    // The session's own position polls ("C2") go on meanwhile; a busy machine
+    // fits one in while the client waits, so only other bytes count.
+    for (const auto &args : sent)
+        QVERIFY2(args.at(0).toByteArray().startsWith("C"), args.at(0).toByteArray().constData());
     QTRY_VERIFY(std::any_of(logged.cbegin(), logged.cend(), [](const QList<QVariant> &a) {
         return a.at(0).toString().contains(QStringLiteral("turns azimuth only"));
     }));
