@@ -186,6 +186,7 @@ void BoundedTcpServer::resumeAccepting()
     m_retry.stop();
     if (!m_incoming)
         return;
+    ++m_acceptRetries;
     // Still low: keep waiting, without taking one more client into the
     // reserve on every retry.
     if (m_reserved > 0 && descriptorsLow(lowestFreeDescriptor(int(m_server.socketDescriptor())))) {

@@ -61,6 +61,9 @@ public:
     int clientCount() const { return m_clients; }
     // True while accepting is paused because descriptors ran low or out.
     bool isWaitingForDescriptors() const { return m_waitingForDescriptors; }
+    // How often accepting has been retried after a pause, for diagnostics
+    // and for tests that wait on retries rather than on the clock.
+    qint64 acceptRetries() const { return m_acceptRetries; }
 
 signals:
     // A client within the limit. The receiver handles it; the server counts
@@ -86,6 +89,7 @@ private:
     int m_clients = 0;
     bool m_waitingForDescriptors = false;
     qint64 m_refusedSinceNotice = 0;
+    qint64 m_acceptRetries = 0;
 };
 
 } // namespace slew::transport

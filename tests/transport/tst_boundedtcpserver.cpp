@@ -11,10 +11,12 @@
 
 #include "transport/boundedtcpserver.h"
 
+#include <QElapsedTimer>
 #include <QSignalSpy>
 #include <QTcpSocket>
 #include <QTest>
 
+#include <algorithm>
 #include <fcntl.h>
 #include <memory>
 #include <sys/resource.h>
@@ -109,8 +111,9 @@ void BoundedTcpServerTest::pausesBeforeTheReserveAndLetsTheWaitingIn()
     QVERIFY2(lowestFreeDescriptor() >= 0 && lowestFreeDescriptor() <= limit - kReserve,
              qPrintable(QStringLiteral("lowest free %1, limit %2").arg(lowestFreeDescriptor()).arg(limit)));
 
-    // A retry while still low takes nobody more.
-    QTest::qWait(2 * BoundedTcpServer::kRetryAcceptMs + 100);
+    // Retries while still low take nobody more.
+    const qint64 retriesBefore = server.acceptRetries();
+    QTRY_VERIFY_WITH_TIMEOUT(server.acceptRetries() >= retriesBefore + 2, 20 * BoundedTcpServer::kRetryAcceptMs);
     QCOMPARE(served.size(), firstBatch);
 
     // Served clients leave one at a time; the waiting ones get in.
@@ -155,12 +158,18 @@ void BoundedTcpServerTest::runningOutPausesWithoutSpinningAndResumes()
     QTRY_VERIFY(server.isWaitingForDescriptors());
     QCOMPARE(arrived.count(), 0);
     QVERIFY(noticesContain(notices, QStringLiteral("new connections wait")));
-    // Paused, not retrying in a loop: well under a tenth of a core.
+    // Paused, not retrying in a loop: over two retries (about 1 s), well
+    // under a tenth of a core.
     const double before = cpuSecondsOfThisProcess();
-    QTest::qWait(1000);
+    QElapsedTimer span;
+    span.start();
+    const qint64 retriesBefore = server.acceptRetries();
+    QTRY_VERIFY_WITH_TIMEOUT(server.acceptRetries() >= retriesBefore + 2, 20 * BoundedTcpServer::kRetryAcceptMs);
     const double used = cpuSecondsOfThisProcess() - before;
-    qInfo("out of descriptors for 1 s: %.3f s of CPU", used);
-    QVERIFY2(used < 0.1, qPrintable(QString::number(used)));
+    qInfo("out of descriptors for %lld ms: %.3f s of CPU, %lld retries", qint64(span.elapsed()), used,
+          server.acceptRetries() - retriesBefore);
+    QVERIFY2(used < 0.1 * std::max<qint64>(1000, span.elapsed()) / 1000.0, qPrintable(QString::number(used)));
+    QVERIFY(server.isWaitingForDescriptors());
     QCOMPARE(notices.count(), 1); // said once, not once per retry
 
     for (int fd : taken)
