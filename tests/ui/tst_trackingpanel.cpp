@@ -191,6 +191,55 @@ private slots:
         QVERIFY(f.window->grab().save(QStringLiteral("screenshots/tracking-over-the-top.png")));
     }
 
+    // The same pass on a 360°/90° rotator: no way over the top, so the
+    // table says before AOS how far it will lag, and the plot shows the
+    // planned path cutting the corner near the zenith, the swing started
+    // early, rather than chasing the sky's bearing round.
+    void aZenithPassOnAQuarterTurnElevationLagsAndSaysSo()
+    {
+        WindowFixture f(QStringLiteral("sim:?clock=manual"));
+        QVERIFY(f.connectAndWait());
+        QCOMPARE(f.session.profile().limits.elMax, 90.0);
+        QVERIFY(loadSets(f.window->elementSets(), kAllSets));
+        TrackingPanel *panel = f.window->trackingPanel();
+        const slew::tracking::StationClock clock(slew::sky::julianFromIso(QStringLiteral("2018-01-22T12:10:00Z")), 1.0);
+        rehearse(panel, clock);
+        QVERIFY(panel->selectTarget(QStringLiteral("03230")));
+        QVERIFY(passesPlanned(panel));
+        QTableWidget *table = panel->passTable();
+        QVERIFY(table->rowCount() > 0);
+        QCOMPARE(table->item(0, 2)->text(), QStringLiteral("89.5°"));
+        const QString plan = table->item(0, 5)->text();
+        QVERIFY2(plan.startsWith(QStringLiteral("lags")), qPrintable(plan)); // plain: no flip, no overlap
+        // The least-worst swing: a G-5500 cannot do better than about 3.3°
+        // on this pass; chasing the bearing would be 5.7° and more.
+        const double lag = plan.section(QStringLiteral("lags "), 1).section(QChar(0xB0), 0, 0).toDouble();
+        QVERIFY2(lag > 3.0 && lag < 4.0, qPrintable(plan));
+        const auto &overlay = f.window->polarPlot()->passOverlay();
+        QVERIFY(overlay.has_value());
+        QVERIFY(!overlay->overTheTop && !overlay->flipped);
+        // Near the top the planned azimuth parts from the sky's (the swing
+        // taken early and ended late), and the planned elevation is never
+        // below the sky's there: high up, an azimuth offset costs little.
+        QCOMPARE(overlay->planned.size(), overlay->sky.size());
+        double widest = 0;
+        for (int i = 0; i < overlay->sky.size(); ++i) {
+            const QPointF sky = overlay->sky[i], planned = overlay->planned[i];
+            const double apart = std::abs(std::remainder(planned.x() - sky.x(), 360.0));
+            widest = std::max(widest, apart);
+            if (apart > 1.0)
+                QVERIFY2(planned.y() >= sky.y() - 0.05, qPrintable(QStringLiteral("%1 below %2").arg(planned.y()).arg(sky.y())));
+        }
+        QVERIFY2(widest > 20.0, qPrintable(QString::number(widest)));
+
+        f.window->tabs()->setCurrentWidget(panel->parentWidget());
+        f.window->resize(1440, 900);
+        f.window->show();
+        QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
+        QDir().mkpath(QStringLiteral("screenshots"));
+        QVERIFY(f.window->grab().save(QStringLiteral("screenshots/tracking-zenith-swing.png")));
+    }
+
     // Choosing a target plans its passes on a worker thread: the window
     // goes on, says it is planning, and a plan for an earlier choice that
     // arrives late is dropped.

@@ -20,6 +20,11 @@
 // and where the satellite is, over every position reading from AOS + 5 s
 // to LOS. End-stop hits count the times the rotator reached a limit switch;
 // unwinds, whole turns of azimuth commanded beyond what the sky travels.
+//
+// Each pass also gets its floor: the least worst error any path can keep
+// whose azimuth turns at 6.2°/s (acceleration aside; leastworstswing.h),
+// and, for a path that does not turn half a turn (over the top), the miss
+// of the zenith. Slew's figures are to be read against it.
 
 #include "bridge/rotctldserver.h"
 #include "common/simulatorpump.h"
@@ -28,6 +33,7 @@
 #include "sim/simulator.h"
 #include "sky/passes.h"
 #include "sky/tle.h"
+#include "tracking/leastworstswing.h"
 #include "tracking/skytrack.h"
 #include "tracking/rotatorreach.h"
 #include "tracking/tracker.h"
@@ -317,6 +323,8 @@ int main(int argc, char *argv[])
     for (const PassCase &c : passes) {
         std::printf("%s: %s, max el %.1f°, %.0f s\n", c.name, qPrintable(c.tle.name), c.pass.maxElevationDeg(),
                     c.pass.durationSeconds());
+        std::printf("  floor: %.2f° for any path turning the azimuth at 6.2°/s; over the top, at least %.1f°\n",
+                    tracking::leastWorstFloorDeg(c.points, 6.2), 90.0 - c.pass.maxElevationDeg());
         for (const auto &[azMax, elMax] : {std::pair{360.0, 90.0}, std::pair{450.0, 180.0}}) {
             std::printf("  %g°/%g° rotator\n", azMax, elMax);
             tracking::PassPlan plan;
