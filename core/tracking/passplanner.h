@@ -19,6 +19,10 @@
 //  - only when none fits, a path with a 360° unwind, placed where it
 //    costs least;
 //
+// where the azimuth cannot keep up with the swing near the zenith, takes
+// the swing the least-worst way (leastworstswing.h) or shares the lag before
+// and after it, whichever predicts better;
+//
 // then drives each one in its head at the rotator's full rate from the AOS
 // point and measures the pointing error as an angle on the sky. The path
 // with the smallest worst error wins, then the one with fewer unwinds, then
