@@ -11,6 +11,7 @@
 #include "sim/simulator.h"
 #include "sim/simulatorscheme.h"
 #include "syntheticpass.h"
+#include "tracking/leastworstswing.h"
 #include "tracking/rotatorreach.h"
 #include "tracking/tracker.h"
 
@@ -253,6 +254,35 @@ private slots:
         Tracker planless(&rig.session);
         QVERIFY(!planless.track({}, kAos, rig.reach, [] { return kAos; }));
         QVERIFY(!planless.error().isEmpty());
+    }
+
+    // The same kind of pass on a 360°/90° rotator must swing the azimuth
+    // half a turn. The planner takes the swing the least-worst way; the
+    // simulated G-5500 then lags by what the plan said before AOS, and
+    // within a little of the floor no path at its rate can beat.
+    void theZenithSwingOnA360Rotator()
+    {
+        Rig rig;
+        QVERIFY(rig.open(360, 90));
+        Tracker tracker(&rig.session);
+        TrackerSettings settings;
+        settings.afterPass = TrackerSettings::AfterPass::Stay;
+        tracker.setSettings(settings);
+        const QList<SkyPoint> pass = greatCirclePass(250, 89.0, false, 0.55, 1.0);
+        QVERIFY(tracker.track(pass, kAos, rig.reach, rig.clockWithAosIn(60, kAos)));
+        QVERIFY(!tracker.plan().flipped && !tracker.plan().overTheTop);
+        QCOMPARE(tracker.plan().unwinds, 0);
+        QVERIFY(runEventLoopUntil([&] { return tracker.state() == Tracker::State::Done; }, 30000));
+        const TrackingFigures &f = tracker.figures();
+        const double floor = leastWorstFloorDeg(pass, rig.reach.azimuthRateDegS);
+        qInfo("89° pass, 360/90: floor %.2f°, predicted %.2f°, measured worst %.2f° (RMS %.3f°), %.2f commands/s", floor,
+              tracker.plan().predictedWorstDeg, f.worstDeg, f.rmsDeg, f.commandsPerSecond());
+        QVERIFY(floor > 1.0);
+        QVERIFY(std::abs(f.worstDeg - tracker.plan().predictedWorstDeg) < 0.5);
+        QVERIFY2(f.worstDeg < floor + 0.5, qPrintable(QString::number(f.worstDeg)));
+        // Every go-to within the travel.
+        for (const QPointF &t : rig.targets)
+            QVERIFY(t.x() >= 0 && t.x() <= 360 && t.y() >= 0 && t.y() <= 90);
     }
 
     void predictedLagOnA360Rotator()
