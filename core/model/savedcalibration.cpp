@@ -3,6 +3,7 @@
 
 #include <QSettings>
 #include <QUrl>
+#include <QUrlQuery>
 
 #include <cmath>
 
@@ -13,10 +14,25 @@ namespace {
 // A URI has slashes, which QSettings reads as groups: percent-encode it.
 QString keyFor(const QString &uri)
 {
-    return QStringLiteral("calibration/") + QString::fromLatin1(QUrl::toPercentEncoding(uri));
+    return QStringLiteral("calibration/") + QString::fromLatin1(QUrl::toPercentEncoding(calibrationUri(uri)));
 }
 
 } // namespace
+
+QString calibrationUri(const QString &uri)
+{
+    // Only a rotor on a shared line is rewritten: other keys stay as the
+    // operator typed them, as they were always saved.
+    QUrl url(uri.trimmed());
+    QUrlQuery query(url);
+    if (!query.hasQueryItem(QStringLiteral("rotor")))
+        return uri;
+    const QString rotor = query.queryItemValue(QStringLiteral("rotor"));
+    query.removeAllQueryItems(QStringLiteral("rotor"));
+    query.addQueryItem(QStringLiteral("rotor"), rotor);
+    url.setQuery(query);
+    return url.toString();
+}
 
 std::optional<CalibrationOffsets> savedCalibration(const QString &uri)
 {

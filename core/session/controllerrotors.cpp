@@ -1,5 +1,6 @@
 #include "controllerrotors.h"
 
+#include "model/savedcalibration.h"
 #include "protocol/dialect.h"
 #include "transport/sharedline.h"
 
@@ -11,9 +12,9 @@ ControllerRotors::ControllerRotors(RotatorSession *main, QObject *parent) : QObj
     connect(m_main, &RotatorSession::stateChanged, this, &ControllerRotors::onMainState);
     // The operator's limits and park are the controller's: every rotor keeps them.
     connect(m_main, &RotatorSession::profileChanged, this, [this] {
-        for (const auto &other : m_others) {
-            if (other)
-                other->setProfile(m_main->profile());
+        for (size_t i = 0; i < m_others.size(); ++i) {
+            if (m_others[i])
+                m_others[i]->setProfile(profileOf(int(i) + 1));
         }
     });
 }
@@ -91,12 +92,26 @@ void ControllerRotors::onMainState(RotatorSession::State state)
             other->setLinkMaker([line](const QString &uri) { return line->makeLink(uri); });
         }
         other->setOptions(m_main->options());
-        other->setProfile(m_main->profile());
+        other->setProfile(profileOf(n));
         // The line is open already: the others share it from the first byte.
         if (other->state() == RotatorSession::State::Disconnected)
             other->connectTo(transport::SharedLine::rotorUri(m_line->uri(), n));
     }
     emit rotorsChanged();
+}
+
+model::RotatorProfile ControllerRotors::profileOf(int n) const
+{
+    // The controller's profile, but this rotor's own calibration: each
+    // rotor turns its own antenna, whose mechanical zero is its own. One
+    // never aligned on the sun or the moon has none.
+    model::RotatorProfile profile = m_main->profile();
+    const model::CalibrationOffsets offsets =
+        m_line ? model::savedCalibration(transport::SharedLine::rotorUri(m_line->uri(), n)).value_or(model::CalibrationOffsets{})
+               : model::CalibrationOffsets{};
+    profile.azOffsetDeg = offsets.azDeg;
+    profile.elOffsetDeg = offsets.elDeg;
+    return profile;
 }
 
 void ControllerRotors::clearOthers()

@@ -7,7 +7,8 @@
 // session its link from a SharedLine (transport/sharedline.h) whenever the
 // session's dialect has several rotors, and keeps a session of its own for
 // each other rotor on that line: connected while the window's session is,
-// with the same profile, and stopped with it.
+// with the same profile but its own calibration offsets (the ones saved for
+// its URI, model/savedcalibration.h), and stopped with it.
 
 #include "rotatorsession.h"
 
@@ -51,6 +52,7 @@ private:
     transport::LinkResult makeLink(const QString &uri);
     void onMainState(RotatorSession::State state);
     void clearOthers();
+    model::RotatorProfile profileOf(int rotor) const;
 
     RotatorSession *m_main;
     std::unique_ptr<transport::SharedLine> m_line;

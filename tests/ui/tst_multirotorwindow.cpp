@@ -7,6 +7,7 @@
 #include "windowfixture.h"
 
 #include "compassdial.h"
+#include "model/savedcalibration.h"
 #include "rotorspanel.h"
 #include "rotortile.h"
 #include "session/controllerrotors.h"
@@ -16,6 +17,7 @@
 #include "transport/sharedline.h"
 
 #include <QLabel>
+#include <QSettings>
 #include <QToolButton>
 #include <QSignalSpy>
 #include <QSpinBox>
@@ -29,6 +31,10 @@ class MultiRotorWindowTest : public QObject {
     Q_OBJECT
 private slots:
     void initTestCase() { WindowFixture::prepareApplication(); }
+    // Saved calibrations outlive a test (test-mode settings): none is carried
+    // into the next.
+    void init() { QSettings().remove(QStringLiteral("calibration")); }
+    void cleanup() { QSettings().remove(QStringLiteral("calibration")); }
 
     void showsAndCommandsEveryRotor()
     {
@@ -125,6 +131,40 @@ private slots:
         f.session.disconnectFromRotator();
         QVERIFY(panel->tiles().isEmpty());
         QVERIFY(!panel->isVisibleTo(f.window.get()));
+    }
+
+    // Each rotor on the line turns its own antenna: the calibration found
+    // for one (sun or moon alignment) is not the others'. Each takes the
+    // offsets saved for its own URI, whatever order its query was typed in.
+    void eachRotorKeepsItsOwnCalibration()
+    {
+        const QString uri = QStringLiteral("sim:?dialect=micro2g&clock=manual&rotor=2");
+        slew::model::saveCalibration(uri, {2.0, 0.0});
+        slew::model::saveCalibration(QStringLiteral("sim:?rotor=3&dialect=micro2g&clock=manual"), {5.0, 0.0});
+        WindowFixture f(uri);
+        QVERIFY(f.connectAndWait());
+        slew::ui::RotorsPanel *panel = f.window->rotorsPanel();
+        QCOMPARE(panel->tiles().size(), 4);
+        QCOMPARE(f.session.profile().azOffsetDeg, 2.0);
+        QCOMPARE(panel->tile(1)->session()->profile().azOffsetDeg, 0.0);
+        QCOMPARE(panel->tile(3)->session()->profile().azOffsetDeg, 5.0);
+        QCOMPARE(panel->tile(4)->session()->profile().azOffsetDeg, 0.0);
+
+        // Rotor 3 pointed at 100° is its controller's 95°.
+        RotatorSession *three = panel->tile(3)->session();
+        QVERIFY(WindowFixture::waitFor([three] { return three->isConnected() && three->hasPosition(); }, 10000));
+        QSignalSpy sent(three, &RotatorSession::bytesSent);
+        QVERIFY(three->gotoPosition(100, 0));
+        QCOMPARE(sent.first().at(0).toByteArray(), QByteArray("3\rM095\r"));
+
+        // A change to the controller's profile (here the window's rotor
+        // aligned again) leaves the others' calibration as it was.
+        slew::model::RotatorProfile profile = f.session.profile();
+        profile.azOffsetDeg = -1.5;
+        f.session.setProfile(profile);
+        QCOMPARE(panel->tile(1)->session()->profile().azOffsetDeg, 0.0);
+        QCOMPARE(panel->tile(3)->session()->profile().azOffsetDeg, 5.0);
+        QVERIFY(three->stop());
     }
 
     void aRefusedMoveIsShownOnItsTile()
