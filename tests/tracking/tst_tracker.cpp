@@ -63,6 +63,14 @@ struct Rig {
 
 constexpr double kAos = 2461000.5; // any Julian date: the pass is made up
 
+// After LOS the antenna stays, so the last go-to is the pass's own.
+void stayAfterThePass(Tracker &tracker)
+{
+    TrackerSettings settings;
+    settings.afterPass = TrackerSettings::AfterPass::Stay;
+    tracker.setSettings(settings);
+}
+
 } // namespace
 
 class TrackerTest : public QObject {
@@ -168,9 +176,7 @@ private slots:
         Rig rig;
         QVERIFY(rig.open(360, 180));
         Tracker tracker(&rig.session);
-        TrackerSettings settings;
-        settings.afterPass = TrackerSettings::AfterPass::Stay;
-        tracker.setSettings(settings);
+        stayAfterThePass(tracker);
         // From the horizon to 180° of elevation takes 67 s at 2.7°/s: AOS is far enough off.
         QVERIFY(tracker.track(greatCirclePass(0, 40, true), kAos, rig.reach, rig.clockWithAosIn(120, kAos)));
         QVERIFY(tracker.plan().flipped);
@@ -193,9 +199,7 @@ private slots:
         Rig rig;
         QVERIFY(rig.open(450, 180));
         Tracker tracker(&rig.session);
-        TrackerSettings settings;
-        settings.afterPass = TrackerSettings::AfterPass::Stay;
-        tracker.setSettings(settings);
+        stayAfterThePass(tracker);
         QVERIFY(tracker.track(greatCirclePass(250, 89.5, false, 1.0, 1.0), kAos, rig.reach,
                               rig.clockWithAosIn(60, kAos)));
         QVERIFY2(tracker.plan().overTheTop, qPrintable(tracker.plan().describe()));
@@ -265,9 +269,7 @@ private slots:
         Rig rig;
         QVERIFY(rig.open(360, 90));
         Tracker tracker(&rig.session);
-        TrackerSettings settings;
-        settings.afterPass = TrackerSettings::AfterPass::Stay;
-        tracker.setSettings(settings);
+        stayAfterThePass(tracker);
         const QList<SkyPoint> pass = greatCirclePass(250, 89.0, false, 0.55, 1.0);
         QVERIFY(tracker.track(pass, kAos, rig.reach, rig.clockWithAosIn(60, kAos)));
         QVERIFY(!tracker.plan().flipped && !tracker.plan().overTheTop);
