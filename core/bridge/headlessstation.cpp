@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "headlessstation.h"
 
-#include "logtext.h"
+#include "input/logtext.h"
 #include "rotctldserver.h"
 #include "protocol/dialect.h"
 #include "session/rotatorsession.h"
@@ -137,7 +137,7 @@ void HeadlessStation::log(const QString &line)
     // Device and client text reaches here too: no control characters (an
     // escape sequence would reach the operator's terminal), no endless lines.
     const QString stamped =
-        QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs) + QLatin1Char(' ') + loggableText(line);
+        QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs) + QLatin1Char(' ') + input::loggableText(line);
     std::fprintf(m_log, "%s\n", qPrintable(stamped));
     std::fflush(m_log);
 }

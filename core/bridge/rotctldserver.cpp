@@ -363,7 +363,7 @@ void RotctldServer::logClient(Client &c, const QString &text)
         return;
     }
     reportSuppressed(c);
-    emit logMessage(loggableText(text));
+    emit logMessage(input::loggableText(text));
 }
 
 void RotctldServer::reportSuppressed(Client &c)

@@ -9,7 +9,7 @@
 // client is answered on its own connection; a client that floods, sends an
 // overlong line or vanishes disturbs no one else.
 
-#include "logtext.h"
+#include "input/logtext.h"
 #include "rotctldrequest.h"
 #include "transport/boundedtcpserver.h"
 
@@ -110,7 +110,7 @@ private:
         // Keeps the connection open after Qt closes on the client's end of
         // input, so the answers to its last lines still reach it.
         std::shared_ptr<transport::SpareSocketHandle> spare;
-        LogAllowance logAllowance;
+        input::LogAllowance logAllowance;
         ClientInfo info;
     };
 

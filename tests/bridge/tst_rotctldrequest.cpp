@@ -2,7 +2,7 @@
 // Reading rotctld command lines and writing answers byte for byte as Hamlib
 // 4.5's rotctld does (the expected strings were captured from `rotctld -m 1`).
 
-#include "bridge/logtext.h"
+#include "input/logtext.h"
 #include "bridge/rotctldrequest.h"
 
 #include <QTest>
@@ -19,7 +19,7 @@ class RotctldRequestTest : public QObject {
 private slots:
     void logTextIsEscapedAndCut()
     {
-        using slew::bridge::loggableText;
+        using slew::input::loggableText;
         QCOMPARE(loggableText("P 10 20"), QString("P 10 20"));
         QCOMPARE(loggableText(QString::fromLatin1("a\x1b[2Jb\x07\x7f\x9b")), QString("a\\x1b[2Jb\\x07\\x7f\\x9b"));
         QCOMPARE(loggableText(QString(250, 'x')), QString(200, 'x') + QString::fromUtf8("… (50 more bytes)"));
@@ -30,7 +30,7 @@ private slots:
 
     void logAllowanceIsABurstThenARate()
     {
-        slew::bridge::LogAllowance a;
+        slew::input::LogAllowance a;
         int allowed = 0;
         for (int i = 0; i < 100; ++i)
             allowed += a.take(0);

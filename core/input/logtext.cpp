@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-namespace slew::bridge {
+namespace slew::input {
 
 QString loggableText(const QString &text, int maxChars)
 {
@@ -43,4 +43,4 @@ int LogAllowance::takeSuppressed()
     return n;
 }
 
-} // namespace slew::bridge
+} // namespace slew::input

@@ -7,7 +7,7 @@
 
 #include <QString>
 
-namespace slew::bridge {
+namespace slew::input {
 
 inline constexpr int kMaxLoggedChars = 200;
 
@@ -32,4 +32,4 @@ private:
     int m_suppressed = 0;
 };
 
-} // namespace slew::bridge
+} // namespace slew::input
