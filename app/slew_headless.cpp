@@ -17,13 +17,15 @@
 #include "sky/tle.h"
 #include "sky/utctime.h"
 
-#include <QFile>
+#include "input/finitenumber.h"
+#include "input/logtext.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
 
 #include <cstdio>
 #include <cstring>
+#include <functional>
 
 namespace {
 
@@ -33,66 +35,87 @@ int fail(const QString &message)
     return 2;
 }
 
+// Text from an option or a config file, safe for the terminal and the
+// journal.
+QString shown(const QString &text)
+{
+    return slew::input::loggableText(text, 80);
+}
+
+using OptionLabel = std::function<QString(const QString &)>;
+
 // --track and what goes with it: the target (a satellite from --tle, the
 // sun, the moon, azel:AZ,EL or radec:RA,DEC), --min-el, --clock-start,
-// --clock-rate.
-std::optional<slew::bridge::HeadlessConfig::Track> readTrack(const QCommandLineParser &parser, QString *error)
+// --clock-rate. Messages name each option as `label` gives it.
+std::optional<slew::bridge::HeadlessConfig::Track> readTrack(const QCommandLineParser &parser,
+                                                              const OptionLabel &label, QString *error)
 {
     using slew::tracking::TrackTarget;
     slew::bridge::HeadlessConfig::Track track;
-    const QString what = parser.value(QStringLiteral("track")).trimmed();
+    const QString trackOption = QStringLiteral("track"), tleOption = QStringLiteral("tle");
+    const QString what = parser.value(trackOption).trimmed();
     QString badFixed;
     if (const auto fixed = TrackTarget::parseFixedOrCelestial(what, &badFixed)) {
         track.target = *fixed;
     } else if (!badFixed.isEmpty()) {
-        *error = QStringLiteral("--track %1").arg(badFixed);
+        *error = QStringLiteral("%1 %2").arg(label(trackOption), badFixed);
         return std::nullopt;
     } else if (what.compare(QLatin1String("sun"), Qt::CaseInsensitive) == 0) {
         track.target.kind = TrackTarget::Kind::Sun;
     } else if (what.compare(QLatin1String("moon"), Qt::CaseInsensitive) == 0) {
         track.target.kind = TrackTarget::Kind::Moon;
     } else {
-        if (!parser.isSet(QStringLiteral("tle"))) {
-            *error = QStringLiteral("--track %1 needs --tle FILE with its element set").arg(what);
+        if (!parser.isSet(tleOption)) {
+            *error = QStringLiteral("%1 %2 needs --tle FILE with its element set").arg(label(trackOption), shown(what));
             return std::nullopt;
         }
-        QFile file(parser.value(QStringLiteral("tle")));
-        if (!file.open(QIODevice::ReadOnly)) {
-            *error = QStringLiteral("--tle %1: %2").arg(file.fileName(), file.errorString());
+        const QString path = parser.value(tleOption);
+        const slew::sky::TleFile file = slew::sky::readTleFile(path);
+        if (!file.error.isEmpty()) {
+            *error = QStringLiteral("%1: %2").arg(label(tleOption), file.error);
             return std::nullopt;
         }
-        const QList<slew::sky::Tle> sets = slew::sky::readTleText(QString::fromLatin1(file.readAll())).sets;
-        const QList<const slew::sky::Tle *> found = slew::sky::findTles(sets, what);
-        if (found.isEmpty()) {
-            *error = QStringLiteral("--track %1: no such satellite in %2").arg(what, file.fileName());
+        QString why;
+        const slew::sky::Tle *tle = slew::sky::findOneTle(file.sets, what, &why);
+        if (!tle) {
+            // The sets that could not be read may be the one meant: say why
+            // they were skipped, as --passes does.
+            *error = QStringLiteral("%1: %2 in %3").arg(label(trackOption), why, path);
+            for (const slew::sky::TleRefusal &r : file.refusals.mid(0, 5))
+                *error += QStringLiteral("\n  %1:%2: skipped: %3").arg(path).arg(r.line).arg(r.reason);
+            if (file.refusals.size() > 5)
+                *error += QStringLiteral("\n  … and %1 more sets skipped").arg(file.refusals.size() - 5);
             return std::nullopt;
         }
-        track.target.elements = *found.first();
+        track.target.elements = *tle;
     }
-    if (parser.isSet(QStringLiteral("min-el"))) {
-        bool ok = false;
-        track.minElevationDeg = parser.value(QStringLiteral("min-el")).toDouble(&ok);
-        if (!ok || track.minElevationDeg < -5 || track.minElevationDeg > 90) {
-            *error = QStringLiteral("--min-el %1: expected degrees from -5 to 90").arg(parser.value(QStringLiteral("min-el")));
+    const QString minEl = QStringLiteral("min-el"), clockStart = QStringLiteral("clock-start"),
+                  clockRate = QStringLiteral("clock-rate");
+    QString why;
+    if (parser.isSet(minEl)) {
+        const auto value = slew::input::numberIn(parser.value(minEl), {-5, 90, "°"}, &why);
+        if (!value) {
+            *error = QStringLiteral("%1: %2 (degrees from -5 to 90)").arg(label(minEl), why);
             return std::nullopt;
         }
+        track.minElevationDeg = *value;
     }
-    if (parser.isSet(QStringLiteral("clock-start"))) {
-        track.clockStartJulian = slew::sky::julianFromIso(parser.value(QStringLiteral("clock-start")));
+    if (parser.isSet(clockStart)) {
+        track.clockStartJulian = slew::sky::julianFromIso(parser.value(clockStart));
         if (!track.clockStartJulian) {
-            *error = QStringLiteral("--clock-start %1: expected an ISO 8601 time, as 2024-06-20T12:00:00Z")
-                         .arg(parser.value(QStringLiteral("clock-start")));
+            *error = QStringLiteral("%1 %2: expected an ISO 8601 time, as 2024-06-20T12:00:00Z")
+                         .arg(label(clockStart), shown(parser.value(clockStart)));
             return std::nullopt;
         }
     }
-    if (parser.isSet(QStringLiteral("clock-rate"))) {
-        bool ok = false;
-        track.clockRate = parser.value(QStringLiteral("clock-rate")).toDouble(&ok);
-        if (!ok || track.clockRate < 1 || track.clockRate > 20 || !track.clockStartJulian) {
-            *error = QStringLiteral("--clock-rate %1: expected 1 to 20, with --clock-start")
-                         .arg(parser.value(QStringLiteral("clock-rate")));
+    if (parser.isSet(clockRate)) {
+        const auto value = slew::input::numberIn(parser.value(clockRate), {1, 20, ""}, &why);
+        if (!value || !track.clockStartJulian) {
+            *error = QStringLiteral("%1: %2").arg(label(clockRate),
+                                                  value ? QStringLiteral("needs --clock-start") : why + QStringLiteral(" (1 to 20)"));
             return std::nullopt;
         }
+        track.clockRate = *value;
     }
     return track;
 }
@@ -124,12 +147,15 @@ int runHeadless(int argc, char *argv[])
 
     // A --config file stands for options written before the real ones.
     QString error;
-    const auto arguments = slew::cli::withConfigFile(app.arguments(), slew::cli::slewHeadlessMode(), &error);
-    if (!arguments)
+    const auto configured = slew::cli::withConfigFile(app.arguments(), slew::cli::slewHeadlessMode(), &error);
+    if (!configured)
         return fail(error);
+    // How a message names an option: its file and line when the config
+    // file gave it, else --name.
+    const auto label = [&](const QString &name) { return configured->label(name); };
     QCommandLineParser parser;
     slew::cli::describeTo(parser, slew::cli::slewHeadlessMode());
-    parser.process(*arguments);
+    parser.process(configured->arguments);
     const QString connect = QStringLiteral("connect"), dialect = QStringLiteral("dialect"),
                   profile = QStringLiteral("profile"), listen = QStringLiteral("rotctld-listen"),
                   allow = QStringLiteral("rotctld-allow"), maxClients = QStringLiteral("rotctld-max-clients");
@@ -138,7 +164,7 @@ int runHeadless(int argc, char *argv[])
     if (parser.isSet(profile)) {
         auto loaded = slew::model::RotatorProfile::load(parser.value(profile), &error);
         if (!loaded)
-            return fail(error);
+            return fail(QStringLiteral("%1: %2").arg(label(profile), error));
         config.profile = *loaded;
     }
     if (parser.isSet(connect))
@@ -146,7 +172,7 @@ int runHeadless(int argc, char *argv[])
     if (parser.isSet(dialect)) {
         const auto d = slew::protocol::dialectFromName(parser.value(dialect));
         if (!d)
-            return fail(QStringLiteral("unknown dialect '%1'").arg(parser.value(dialect)));
+            return fail(QStringLiteral("%1: unknown dialect '%2'").arg(label(dialect), shown(parser.value(dialect))));
         config.profile.dialect = *d;
     } else if (!parser.isSet(profile)) {
         // Neither names one: the link may (a simulator's `dialect=`), as the
@@ -156,14 +182,15 @@ int runHeadless(int argc, char *argv[])
     }
     if (parser.isSet(listen)) {
         if (!slew::transport::parseHostPort(parser.value(listen), &config.rotctldAddress, &config.rotctldPort))
-            return fail(QStringLiteral("--rotctld-listen %1: expected ADDRESS:PORT").arg(parser.value(listen)));
+            return fail(QStringLiteral("%1 %2: expected ADDRESS:PORT, with a port from 0 to 65535")
+                            .arg(label(listen), shown(parser.value(listen))));
         config.rotctldEnabled = true;
     }
     if (parser.isSet(allow)) {
         for (const QString &a : parser.value(allow).split(u',', Qt::SkipEmptyParts)) {
             const QHostAddress address(a.trimmed());
             if (address.isNull())
-                return fail(QStringLiteral("--rotctld-allow: '%1' is not an address").arg(a));
+                return fail(QStringLiteral("%1: '%2' is not an address").arg(label(allow), shown(a)));
             config.allowedClients.append(address);
         }
     }
@@ -171,8 +198,8 @@ int runHeadless(int argc, char *argv[])
     if (parser.isSet(maxClients)) {
         const auto n = parseMaxClients(parser.value(maxClients));
         if (!n)
-            return fail(QStringLiteral("--rotctld-max-clients %1: expected a number from 1 to 100000")
-                            .arg(parser.value(maxClients)));
+            return fail(QStringLiteral("%1 %2: expected a number from 1 to 100000")
+                            .arg(label(maxClients), shown(parser.value(maxClients))));
         config.rotctldMaxClients = *n;
     }
 
@@ -180,7 +207,7 @@ int runHeadless(int argc, char *argv[])
         const QString list = parser.value(QStringLiteral("rotors"));
         const auto rotors = slew::bridge::parseRotorList(list, &error);
         if (!rotors)
-            return fail(QStringLiteral("--rotors %1: %2").arg(list, error));
+            return fail(QStringLiteral("%1 %2: %3").arg(label(QStringLiteral("rotors")), shown(list), error));
         config.rotors = *rotors;
     }
 
@@ -188,19 +215,19 @@ int runHeadless(int argc, char *argv[])
         const QString text = parser.value(QStringLiteral("limits"));
         const auto limits = slew::bridge::parseLimits(text, &error);
         if (!limits)
-            return fail(QStringLiteral("--limits %1: %2").arg(text, error));
+            return fail(QStringLiteral("%1 %2: %3").arg(label(QStringLiteral("limits")), shown(text), error));
         config.profile.limits = *limits;
     }
 
     if (parser.isSet(QStringLiteral("qth"))) {
         slew::sky::Station where;
         if (!slew::sky::parseStation(parser.value(QStringLiteral("qth")), &where, &error))
-            return fail(QStringLiteral("--qth %1: %2").arg(parser.value(QStringLiteral("qth")), error));
+            return fail(QStringLiteral("%1: %2").arg(label(QStringLiteral("qth")), error));
         config.station = where;
     }
 
     if (parser.isSet(QStringLiteral("track"))) {
-        auto track = readTrack(parser, &error);
+        auto track = readTrack(parser, label, &error);
         if (!track)
             return fail(error);
         if (!config.station)
@@ -209,7 +236,7 @@ int runHeadless(int argc, char *argv[])
     } else {
         for (const char *option : {"tle", "min-el", "clock-start", "clock-rate"}) {
             if (parser.isSet(QString::fromLatin1(option)))
-                return fail(QStringLiteral("--%1 goes with --track").arg(QString::fromLatin1(option)));
+                return fail(QStringLiteral("%1 goes with track").arg(label(QString::fromLatin1(option))));
         }
     }
 

@@ -19,6 +19,8 @@
 #include "session/rotatorsession.h"
 #include "session/stopbeforeexit.h"
 #include "sky/station.h"
+#include "input/finitenumber.h"
+#include "input/logtext.h"
 #include "cli/terminationsignalwatcher.h"
 
 #include <QApplication>
@@ -58,12 +60,15 @@ QString parse(QCommandLineParser &parser, const QStringList &argv, Arguments &ou
             return QStringLiteral("unknown dialect '%1'").arg(parser.value(dialect));
     }
     if (parser.isSet(gotoOption)) {
+        // Finite numbers only; the limits gate checks the range when the
+        // move is made, against the connected rotator's travel.
         const QStringList parts = parser.value(gotoOption).split(QLatin1Char(','));
-        bool okAz = false, okEl = false;
-        if (parts.size() == 2)
-            out.gotoAzEl = std::pair{parts[0].toDouble(&okAz), parts[1].toDouble(&okEl)};
-        if (!okAz || !okEl)
-            return QStringLiteral("--goto wants az,el (e.g. 210,35)");
+        const auto az = parts.size() == 2 ? slew::input::finiteNumber(parts[0]) : std::nullopt;
+        const auto el = parts.size() == 2 ? slew::input::finiteNumber(parts[1]) : std::nullopt;
+        if (!az || !el)
+            return QStringLiteral("--goto wants az,el as two numbers (e.g. 210,35), not '%1'")
+                .arg(slew::input::loggableText(parser.value(gotoOption), 60));
+        out.gotoAzEl = std::pair{*az, *el};
     }
     if (parser.isSet(rotctld)) {
         QHostAddress address;

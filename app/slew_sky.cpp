@@ -15,10 +15,11 @@
 #include "sky/sunmoon.h"
 #include "sky/tle.h"
 
+#include "input/finitenumber.h"
+
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QDateTime>
-#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -113,13 +114,16 @@ QString readCommon(const QCommandLineParser &parser, const QString &timeOption, 
             return QStringLiteral("--tle FILE is needed for a satellite");
         return {};
     }
-    QFile file(parser.value(QStringLiteral("tle")));
-    if (!file.open(QIODevice::ReadOnly))
-        return QStringLiteral("--tle %1: %2").arg(file.fileName(), file.errorString());
-    const TleReadResult read = readTleText(QString::fromUtf8(file.readAll()));
-    for (const TleRefusal &r : read.refusals)
-        std::fprintf(stderr, "slew: %s:%d: skipped: %s\n", qPrintable(file.fileName()), r.line, qPrintable(r.reason));
-    out->sets = read.sets;
+    const QString path = parser.value(QStringLiteral("tle"));
+    const TleFile file = readTleFile(path);
+    if (!file.error.isEmpty())
+        return QStringLiteral("--tle %1").arg(file.error);
+    for (const TleRefusal &r : file.refusals)
+        std::fprintf(stderr, "slew: %s:%d: skipped: %s\n", qPrintable(path), r.line, qPrintable(r.reason));
+    if (file.duplicates > 0)
+        std::fprintf(stderr, "slew: %s: %d sets repeat a satellite listed before; the newest epoch of each is used\n",
+                     qPrintable(path), file.duplicates);
+    out->sets = file.sets;
     return {};
 }
 
@@ -135,22 +139,10 @@ std::optional<SkyBody> bodyNamed(const QString &name)
 // One satellite by number or name; the message says why not.
 const Tle *pickSatellite(const QList<Tle> &sets, const QString &query, QString *error)
 {
-    const QList<const Tle *> found = findTles(sets, query);
-    if (found.isEmpty()) {
-        *error = QStringLiteral("no satellite '%1' in the element file").arg(query);
-        return nullptr;
-    }
-    if (found.size() > 1) {
-        QStringList names;
-        for (const Tle *t : found.mid(0, 8))
-            names << QStringLiteral("%1 (%2)").arg(t->displayName()).arg(t->catalogueNumber);
-        *error = QStringLiteral("'%1' matches %2 satellites: %3%4")
-                     .arg(query)
-                     .arg(found.size())
-                     .arg(names.join(QStringLiteral(", ")), found.size() > 8 ? QStringLiteral(", …") : QString());
-        return nullptr;
-    }
-    return found.first();
+    const Tle *tle = findOneTle(sets, query, error);
+    if (!tle && error->startsWith(QStringLiteral("no satellite")))
+        *error += QStringLiteral(" in the element file");
+    return tle;
 }
 
 QJsonObject pointJson(const PassPoint &p, bool withElevation)
@@ -246,16 +238,20 @@ int runPasses(QCoreApplication &app)
     const QString error = readCommon(parser, QStringLiteral("start"), !body, &common);
     if (!error.isEmpty())
         return fail(error);
-    bool ok = true;
-    const double hours = parser.isSet(QStringLiteral("hours")) ? parser.value(QStringLiteral("hours")).toDouble(&ok) : 24.0;
-    if (!ok || hours < 0.1 || hours > 720.0)
-        return fail(QStringLiteral("--hours must be 0.1 to 720, not '%1'").arg(parser.value(QStringLiteral("hours"))));
+    QString why;
+    double hours = 24.0;
+    if (parser.isSet(QStringLiteral("hours"))) {
+        const auto value = slew::input::numberIn(parser.value(QStringLiteral("hours")), {0.1, 720, " hours"}, &why);
+        if (!value)
+            return fail(QStringLiteral("--hours: %1").arg(why));
+        hours = *value;
+    }
     double minEl = body ? kRiseSetElevationDeg : 10.0;
     if (parser.isSet(QStringLiteral("min-el"))) {
-        minEl = parser.value(QStringLiteral("min-el")).toDouble(&ok);
-        if (!ok || minEl < -5.0 || minEl > 90.0)
-            return fail(QStringLiteral("--min-el must be -5 to 90 degrees, not '%1'")
-                            .arg(parser.value(QStringLiteral("min-el"))));
+        const auto value = slew::input::numberIn(parser.value(QStringLiteral("min-el")), {-5, 90, "°"}, &why);
+        if (!value)
+            return fail(QStringLiteral("--min-el: %1").arg(why));
+        minEl = *value;
     }
     const PassWindow window{common.julian, common.julian + hours / 24.0, minEl};
     const bool json = parser.isSet(QStringLiteral("json"));
@@ -267,10 +263,23 @@ int runPasses(QCoreApplication &app)
     if (target.compare(QStringLiteral("all"), Qt::CaseInsensitive) == 0) {
         if (common.sets.isEmpty())
             return fail(QStringLiteral("no element sets could be read from %1").arg(parser.value(QStringLiteral("tle"))));
-        printPasses(predictPasses(common.sets, common.station, window), json, false);
+        // A set that reads but cannot be propagated (decayed, absurd drag)
+        // has no passes: say so, rather than let "(no passes)" stand for it.
+        QList<Tle> usable;
+        for (const Tle &t : common.sets) {
+            const Sgp4Error initial = Sgp4(t).initialError();
+            if (initial == Sgp4Error::None)
+                usable.append(t);
+            else
+                std::fprintf(stderr, "slew: %s (%d) cannot be propagated: %s; skipped\n", qPrintable(t.displayName()),
+                             t.catalogueNumber, qPrintable(sgp4ErrorText(initial)));
+        }
+        if (usable.isEmpty())
+            return fail(QStringLiteral("none of the element sets in %1 can be propagated")
+                            .arg(parser.value(QStringLiteral("tle"))));
+        printPasses(predictPasses(usable, common.station, window), json, false);
         return 0;
     }
-    QString why;
     const Tle *tle = pickSatellite(common.sets, target, &why);
     if (!tle) {
         std::fprintf(stderr, "slew: %s\n", qPrintable(why));
@@ -348,6 +357,16 @@ int runWhere(QCoreApplication &app)
     }
     if (refraction)
         look.elevationDeg += refractionDeg(look.elevationDeg);
+    // Never a NaN printed as an answer: a position that is not a number is a
+    // failure, said as one.
+    bool allNumbers = slew::input::allFinite(look.azimuthDeg, look.elevationDeg, look.rangeKm, look.rangeRateKmS);
+    for (const QJsonValue &v : out)
+        allNumbers = allNumbers && (!v.isDouble() || std::isfinite(v.toDouble()));
+    if (!allNumbers) {
+        std::fprintf(stderr, "slew: %s at %s: the position computed is not a number; no answer\n",
+                     qPrintable(out.value(QStringLiteral("name")).toString()), qPrintable(isoTime(common.julian)));
+        return 1;
+    }
     out.insert(QStringLiteral("azimuth"), look.azimuthDeg);
     out.insert(QStringLiteral("elevation"), look.elevationDeg);
     out.insert(QStringLiteral("range_km"), look.rangeKm);

@@ -1,13 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "configfile.h"
 
-#include <QFile>
+#include "input/boundedfile.h"
+#include "input/logtext.h"
 
 namespace slew::cli {
 namespace {
-
-// A config file is a few lines; anything much bigger is not one.
-constexpr qint64 kLargestFile = 64 * 1024;
 
 QStringList settableNames(const ProgramMode &mode)
 {
@@ -19,12 +17,40 @@ QStringList settableNames(const ProgramMode &mode)
     return names;
 }
 
+// Text from the file as a message may show it: no control characters (an
+// ESC sequence would reach the terminal or the journal), and short.
+QString shown(const QString &text)
+{
+    return input::loggableText(text, 80);
+}
+
+// Whether the command line itself gives the option (then it wins, and the
+// file's line is not where the value came from).
+bool givenOnCommandLine(const QStringList &arguments, const QString &name)
+{
+    const QString plain = QStringLiteral("--") + name;
+    for (qsizetype i = 1; i < arguments.size(); ++i) {
+        if (arguments[i] == plain || arguments[i].startsWith(plain + u'='))
+            return true;
+    }
+    return false;
+}
+
 } // namespace
 
-std::optional<QStringList> parseConfigText(const QString &text, const QString &origin, const ProgramMode &mode,
-                                           QString *error)
+QString ConfiguredArguments::label(const QString &longName) const
 {
-    QStringList arguments;
+    const auto it = origins.constFind(longName);
+    if (it == origins.cend())
+        return QStringLiteral("--") + longName;
+    return QStringLiteral("%1: %2").arg(*it, longName);
+}
+
+std::optional<ConfiguredArguments> parseConfigText(const QString &text, const QString &origin,
+                                                   const ProgramMode &mode, QString *error)
+{
+    ConfiguredArguments result;
+    QHash<QString, qsizetype> firstLine;
     const QStringList lines = text.split(u'\n');
     for (qsizetype i = 0; i < lines.size(); ++i) {
         const QString line = lines[i].trimmed();
@@ -33,7 +59,7 @@ std::optional<QStringList> parseConfigText(const QString &text, const QString &o
         const QString where = QStringLiteral("%1:%2").arg(origin).arg(i + 1);
         const qsizetype equals = line.indexOf(u'=');
         if (equals < 0) {
-            *error = QStringLiteral("%1: expected `name = value`, got '%2'").arg(where, line.left(80));
+            *error = QStringLiteral("%1: expected `name = value`, got '%2'").arg(where, shown(line));
             return std::nullopt;
         }
         const QString name = line.left(equals).trimmed();
@@ -41,31 +67,38 @@ std::optional<QStringList> parseConfigText(const QString &text, const QString &o
         const ProgramOption *option = mode.find(name);
         if (!option || !option->inConfigFile) {
             *error = QStringLiteral("%1: unknown setting '%2'; a config file may set %3")
-                         .arg(where, name.left(80), settableNames(mode).join(QStringLiteral(", ")));
+                         .arg(where, shown(name), settableNames(mode).join(QStringLiteral(", ")));
             return std::nullopt;
         }
+        // A name given twice is a mistake either way round: which one the
+        // user meant cannot be told, so neither is taken silently.
+        if (const auto seen = firstLine.constFind(name); seen != firstLine.cend()) {
+            *error = QStringLiteral("%1: '%2' is set again; it was set on line %3 already: keep one")
+                         .arg(where, name)
+                         .arg(*seen + 1);
+            return std::nullopt;
+        }
+        firstLine.insert(name, i);
         if (value.isEmpty())
             continue; // `profile =` in the example: not set
-        arguments << QStringLiteral("--%1=%2").arg(name, value);
+        result.arguments << QStringLiteral("--%1=%2").arg(name, value);
+        result.origins.insert(name, where);
     }
-    return arguments;
+    return result;
 }
 
-std::optional<QStringList> readConfigFile(const QString &path, const ProgramMode &mode, QString *error)
+std::optional<ConfiguredArguments> readConfigFile(const QString &path, const ProgramMode &mode, QString *error)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly | QIODevice::Text)) {
-        *error = QStringLiteral("config file %1: %2").arg(path, file.errorString());
+    const input::BoundedRead read = input::readBoundedFile(path, kLargestConfigFile);
+    if (!read.ok()) {
+        *error = QStringLiteral("config file %1").arg(read.error);
         return std::nullopt;
     }
-    if (file.size() > kLargestFile) {
-        *error = QStringLiteral("config file %1: %2 bytes is too big for a config file").arg(path).arg(file.size());
-        return std::nullopt;
-    }
-    return parseConfigText(QString::fromUtf8(file.readAll()), path, mode, error);
+    return parseConfigText(QString::fromUtf8(read.bytes), path, mode, error);
 }
 
-std::optional<QStringList> withConfigFile(const QStringList &arguments, const ProgramMode &mode, QString *error)
+std::optional<ConfiguredArguments> withConfigFile(const QStringList &arguments, const ProgramMode &mode,
+                                                  QString *error)
 {
     QString path;
     for (qsizetype i = 1; i < arguments.size(); ++i) {
@@ -76,12 +109,16 @@ std::optional<QStringList> withConfigFile(const QStringList &arguments, const Pr
             path = a.mid(9);
     }
     if (path.isEmpty())
-        return arguments;
+        return ConfiguredArguments{arguments, {}};
     auto settings = readConfigFile(path, mode, error);
     if (!settings)
         return std::nullopt;
-    QStringList combined{arguments.first()};
-    combined << *settings << arguments.mid(1);
+    ConfiguredArguments combined;
+    combined.arguments << arguments.first() << settings->arguments << arguments.mid(1);
+    for (auto it = settings->origins.cbegin(); it != settings->origins.cend(); ++it) {
+        if (!givenOnCommandLine(arguments, it.key()))
+            combined.origins.insert(it.key(), it.value());
+    }
     return combined;
 }
 

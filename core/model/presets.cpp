@@ -60,9 +60,11 @@ std::optional<PresetList> PresetList::fromJson(const QJsonArray &json, QString *
     for (const QJsonValue &v : json) {
         const QJsonObject o = v.toObject();
         const QString name = o.value("name").toString().simplified();
-        if (!v.isObject() || name.isEmpty() || !o.value("az").isDouble() || !o.value("el").isDouble()) {
+        // JSON's 1e999 reads as infinity: finite numbers only.
+        if (!v.isObject() || name.isEmpty() || !o.value("az").isDouble() || !o.value("el").isDouble()
+            || !std::isfinite(o.value("az").toDouble()) || !std::isfinite(o.value("el").toDouble())) {
             if (error)
-                *error = QObject::tr("a preset needs a name, az and el");
+                *error = QObject::tr("a preset needs a name, and az and el as finite numbers");
             return std::nullopt;
         }
         if (list.size() >= kMaxPresets)

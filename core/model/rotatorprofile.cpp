@@ -2,6 +2,8 @@
 
 #include "movegate.h"
 
+#include "input/boundedfile.h"
+
 #include <QFile>
 #include <QJsonDocument>
 #include <QObject>
@@ -174,22 +176,28 @@ bool RotatorProfile::save(const QString &path, QString *error) const
 
 std::optional<RotatorProfile> RotatorProfile::load(const QString &path, QString *error)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
+    // A profile is a few hundred bytes; a device, a FIFO or a huge file is
+    // refused before it is read (core/input).
+    const input::BoundedRead read = input::readBoundedFile(path, kLargestProfile);
+    if (!read.ok()) {
         if (error)
-            *error = QObject::tr("%1: %2").arg(path, file.errorString());
-        return std::nullopt;
-    }
-    if (file.size() > 1024 * 1024) {
-        if (error)
-            *error = QObject::tr("%1: too large for a rotator profile").arg(path);
+            *error = read.error;
         return std::nullopt;
     }
     QJsonParseError parseError;
-    const QJsonDocument doc = QJsonDocument::fromJson(file.readAll(), &parseError);
+    const QJsonDocument doc = QJsonDocument::fromJson(read.bytes, &parseError);
+    if (parseError.error != QJsonParseError::NoError) {
+        if (error)
+            *error = QObject::tr("%1: not a profile: %2 at byte %3")
+                         .arg(path, parseError.errorString())
+                         .arg(parseError.offset);
+        return std::nullopt;
+    }
     if (!doc.isObject()) {
         if (error)
-            *error = QObject::tr("%1: not a profile: %2").arg(path, parseError.errorString());
+            *error = QObject::tr("%1: not a profile: the file holds JSON %2, a profile is a JSON object "
+                                 "({\"uri\": …, \"limits\": …})")
+                         .arg(path, doc.isArray() ? QObject::tr("an array") : QObject::tr("a single value"));
         return std::nullopt;
     }
     QString why;

@@ -66,7 +66,11 @@ struct RotatorProfile {
     // their defaults, bad values give an error and no profile.
     static std::optional<RotatorProfile> fromJson(const QJsonObject &json, QString *error);
 
+    // A profile is a few hundred bytes: a file over this is not one.
+    static constexpr qint64 kLargestProfile = 1024 * 1024;
+
     // Atomic save (QSaveFile) and load; errors name the file and the cause.
+    // Load reads only a regular file of at most kLargestProfile.
     bool save(const QString &path, QString *error) const;
     static std::optional<RotatorProfile> load(const QString &path, QString *error);
 };

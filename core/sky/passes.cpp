@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "passes.h"
 
+#include "input/finitenumber.h"
+
 #include "observation.h"
 
 #include <algorithm>
@@ -26,7 +28,9 @@ double bisectCrossing(const ElevationFunction &f, double below, double above, do
     double fBelow = f(below).elevationDeg - threshold;
     double fAbove = f(above).elevationDeg - threshold;
     int side = 0;
-    while (std::fabs(above - below) > kCrossingTolerance) {
+    // Each round at least halves the bracket every second round, so a day
+    // comes down to 10 ms in well under a hundred; the cap is a guarantee.
+    for (int round = 0; round < 200 && std::fabs(above - below) > kCrossingTolerance; ++round) {
         const double width = std::fabs(above - below);
         double t = (fAbove - fBelow) != 0.0 ? above - fAbove * (above - below) / (fAbove - fBelow)
                                             : 0.5 * (above + below);
@@ -73,7 +77,7 @@ double goldenSectionPeak(const ElevationFunction &f, double a, double b)
     double c = b - ratio * (b - a);
     double d = a + ratio * (b - a);
     double fc = f(c).elevationDeg, fd = f(d).elevationDeg;
-    while (b - a > kPeakTolerance) {
+    for (int round = 0; round < 200 && b - a > kPeakTolerance; ++round) {
         if (fc > fd) {
             b = d;
             d = c;
@@ -104,9 +108,23 @@ QList<Pass> scanPasses(const ElevationFunction &f, const PassWindow &window, con
     QList<Pass> passes;
     const double threshold = window.minElevationDeg;
     const double minStep = scan.inPassStepS / 2.0;
+    // A window or a step that is not a finite number would make the time
+    // below NaN, and the loop's end test never true.
+    if (!input::allFinite(window.startJulian, window.endJulian, threshold, scan.inPassStepS, scan.maxStepS,
+                          scan.maxElevationRateDegS)
+        || !(minStep > 0) || !(scan.maxElevationRateDegS > 0) || window.endJulian < window.startJulian)
+        return passes;
+    // Every step moves on by at least minStep, so this many steps cover the
+    // window and the pass followed past its end; the count is a second
+    // guarantee that the loop ends, whatever the elevation function does.
+    const double hardEnd = window.endJulian + kFollowBeyondWindow;
+    const qint64 mostSteps = qint64(std::ceil((hardEnd - window.startJulian) * kSecondsPerDay / minStep)) + 16;
+    qint64 steps = 0;
 
     double t = window.startJulian;
     ElevationSample sample = f(t);
+    if (!std::isfinite(sample.elevationDeg))
+        return passes;
     bool inPass = sample.elevationDeg >= threshold;
     Pass current;
     // The highest sample of the current pass and the samples either side
@@ -125,10 +143,14 @@ QList<Pass> scanPasses(const ElevationFunction &f, const PassWindow &window, con
         passes.append(current);
     };
 
-    const double hardEnd = window.endJulian + kFollowBeyondWindow;
     while (true) {
         if (!inPass && t >= window.endJulian)
             break;
+        if (++steps > mostSteps || (window.stop && window.stop->load(std::memory_order_relaxed))) {
+            if (inPass)
+                finishPass(t, true);
+            break;
+        }
         if (inPass && t >= hardEnd) {
             finishPass(t, true);
             break;
@@ -140,6 +162,13 @@ QList<Pass> scanPasses(const ElevationFunction &f, const PassWindow &window, con
         seconds = std::clamp(seconds, inPass ? scan.inPassStepS : minStep, scan.maxStepS);
         const double next = inPass ? t + seconds * kSecond : std::min(t + seconds * kSecond, window.endJulian);
         const ElevationSample nextSample = f(next);
+        if (!std::isfinite(nextSample.elevationDeg)) {
+            // The object can no longer be computed (a satellite decayed in
+            // the model): what was found so far stands.
+            if (inPass)
+                finishPass(t, true);
+            break;
+        }
         const bool nextUp = nextSample.elevationDeg >= threshold;
         if (!inPass && nextUp) {
             current = Pass();
@@ -171,7 +200,10 @@ bool observeSatellite(const Sgp4 &satellite, const Station &station, double juli
     const Sgp4State s = satellite.propagateToJulian(julian);
     if (!s.ok())
         return false;
-    *out = lookAngles(station, s.positionKm, s.velocityKmS, julian);
+    const LookAngles look = lookAngles(station, s.positionKm, s.velocityKmS, julian);
+    if (!input::allFinite(look.azimuthDeg, look.elevationDeg, look.rangeKm, look.rangeRateKmS))
+        return false;
+    *out = look;
     return true;
 }
 

@@ -22,6 +22,7 @@
 #include <QList>
 #include <QString>
 
+#include <atomic>
 #include <functional>
 
 namespace slew::sky {
@@ -47,6 +48,9 @@ struct PassWindow {
     double startJulian = 0;
     double endJulian = 0;        // passes that begin before this are reported whole
     double minElevationDeg = 0;
+    // When set and true, the search ends at its next step with what it has
+    // found: how a worker thread is told to give up (a service stopping).
+    const std::atomic<bool> *stop = nullptr;
 };
 
 // The next passes of one satellite. A satellite that cannot be propagated
@@ -67,7 +71,10 @@ QList<Pass> predictBodyPasses(SkyBody body, const Station &station, const PassWi
 QList<Pass> predictCelestialPasses(double rightAscensionJ2000Deg, double declinationJ2000Deg, const Station &station,
                                    const PassWindow &window);
 
-// The engine, on any elevation function: exposed for tests.
+// The engine, on any elevation function: exposed for tests. It ends on any
+// input: a window or steps that are not finite numbers give no passes, an
+// elevation that stops being a finite number ends the search there, and the
+// number of steps is bounded by the window's length.
 struct ElevationSample {
     double elevationDeg = 0;
     double azimuthDeg = 0;

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "station.h"
 
+#include "input/finitenumber.h"
+#include "input/logtext.h"
+
 #include <QStringList>
 
 #include <algorithm>
@@ -36,7 +39,7 @@ bool locatorToStation(const QString &text, Station *out, QString *error)
     const QString locator = text.trimmed();
     if (locator.size() != 4 && locator.size() != 6 && locator.size() != 8) {
         *error = QStringLiteral("a Maidenhead locator has 4, 6 or 8 characters (JO65, JO65hq, JO65hq42), \"%1\" has %2")
-                     .arg(locator)
+                     .arg(input::loggableText(locator, 80))
                      .arg(locator.size());
         return false;
     }
@@ -51,7 +54,7 @@ bool locatorToStation(const QString &text, Station *out, QString *error)
                                         ? QStringLiteral("letters %1 to %2").arg(l.first).arg(QChar(l.first.unicode() + l.count - 1))
                                         : QStringLiteral("digits");
             *error = QStringLiteral("locator \"%1\": characters %2 and %3 must be %4")
-                         .arg(locator)
+                         .arg(input::loggableText(locator, 80))
                          .arg(2 * level + 1)
                          .arg(2 * level + 2)
                          .arg(allowed);
@@ -100,20 +103,24 @@ bool parseStation(const QString &text, Station *out, QString *error)
 
     const QStringList parts = t.split(u',');
     if (parts.size() != 2 && parts.size() != 3) {
-        *error = QStringLiteral("\"%1\": a station is LAT,LON or LAT,LON,HEIGHT_M").arg(t);
+        *error = QStringLiteral("\"%1\": a station is LAT,LON or LAT,LON,HEIGHT_M").arg(input::loggableText(t, 80));
         return false;
     }
-    bool okLat = false, okLon = false, okHeight = true;
+    // Finite numbers only: a station saved as "nan,0" would make every later
+    // pass search loop without end.
+    const std::optional<double> lat = input::finiteNumber(parts[0]);
+    const std::optional<double> lon = input::finiteNumber(parts[1]);
+    const std::optional<double> height = parts.size() == 3 ? input::finiteNumber(parts[2]) : std::optional<double>(0.0);
+    if (!lat || !lon || !height) {
+        *error = QStringLiteral("\"%1\": latitude, longitude and height must be finite numbers (degrees, degrees, "
+                                "metres)")
+                     .arg(input::loggableText(t, 80));
+        return false;
+    }
     Station s;
-    s.latitudeDeg = parts[0].trimmed().toDouble(&okLat);
-    s.longitudeDeg = parts[1].trimmed().toDouble(&okLon);
-    if (parts.size() == 3)
-        s.heightM = parts[2].trimmed().toDouble(&okHeight);
-    if (!okLat || !okLon || !okHeight) {
-        *error = QStringLiteral("\"%1\": latitude, longitude and height must be numbers (degrees, degrees, metres)")
-                     .arg(t);
-        return false;
-    }
+    s.latitudeDeg = *lat;
+    s.longitudeDeg = *lon;
+    s.heightM = *height;
     if (s.latitudeDeg < -90.0 || s.latitudeDeg > 90.0) {
         *error = QStringLiteral("latitude %1° is outside -90..90").arg(s.latitudeDeg);
         return false;

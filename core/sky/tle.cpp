@@ -1,6 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "tle.h"
 
+#include "input/boundedfile.h"
+#include "input/finitenumber.h"
+#include "input/logtext.h"
+
+#include <QHash>
 #include <QStringList>
 
 #include <cmath>
@@ -20,11 +25,15 @@ QStringView columns(QStringView line, int first, int last)
     return line.mid(first - 1, last - first + 1);
 }
 
+// Finite numbers only (core/input): "nan" and "inf" read as numbers to Qt,
+// and a NaN in any field passes every range check after it.
 bool readDouble(QStringView text, double *out)
 {
-    bool ok = false;
-    *out = text.trimmed().toDouble(&ok);
-    return ok;
+    const std::optional<double> value = input::finiteNumber(text);
+    if (!value)
+        return false;
+    *out = *value;
+    return true;
 }
 
 bool readInt(QStringView text, int *out)
@@ -58,7 +67,7 @@ bool readPackedExponent(QStringView text, double *out)
     if (!okMantissa || !okExponent)
         return false;
     *out = sign * m * std::pow(10.0, e);
-    return true;
+    return std::isfinite(*out);
 }
 
 // Catalogue numbers past 99999 use Alpha-5: a letter (I and O skipped)
@@ -181,8 +190,12 @@ bool parseTle(const QString &line1In, const QString &line2In, Tle *out, TleRefus
         return refuse(refusal, 2, QStringLiteral("argument of perigee must be 0..360 degrees"));
     if (!readDouble(columns(line2, 44, 51), &t.meanAnomalyDeg) || t.meanAnomalyDeg < 0 || t.meanAnomalyDeg > 360)
         return refuse(refusal, 2, QStringLiteral("mean anomaly must be 0..360 degrees"));
-    if (!readDouble(columns(line2, 53, 63), &t.meanMotionRevPerDay) || t.meanMotionRevPerDay <= 0)
-        return refuse(refusal, 2, QStringLiteral("mean motion must be a positive number of revolutions a day"));
+    // Nothing in orbit goes round faster than about 17 times a day; a larger
+    // figure is a corrupt set, and SGP4 would follow it off any sensible path.
+    if (!readDouble(columns(line2, 53, 63), &t.meanMotionRevPerDay) || t.meanMotionRevPerDay <= 0
+        || t.meanMotionRevPerDay > kMostRevolutionsPerDay)
+        return refuse(refusal, 2, QStringLiteral("mean motion must be a number of revolutions a day above 0 and at "
+                                                 "most %1").arg(kMostRevolutionsPerDay));
     if (!readInt(columns(line2, 64, 68), &t.revolutionNumber))
         return refuse(refusal, 2, QStringLiteral("revolution number is not a number"));
 
@@ -261,6 +274,58 @@ QList<const Tle *> findTles(const QList<Tle> &sets, const QString &query)
         if (t.name.startsWith(q, Qt::CaseInsensitive))
             found.append(&t);
     return found;
+}
+
+QList<Tle> mergeByCatalogueNumber(const QList<Tle> &sets)
+{
+    QList<Tle> merged;
+    QHash<int, qsizetype> where;
+    for (const Tle &t : sets) {
+        const auto it = where.constFind(t.catalogueNumber);
+        if (it == where.cend()) {
+            where.insert(t.catalogueNumber, merged.size());
+            merged.append(t);
+        } else if (merged[*it].epochJulian() < t.epochJulian()) {
+            merged[*it] = t;
+        }
+    }
+    return merged;
+}
+
+const Tle *findOneTle(const QList<Tle> &sets, const QString &query, QString *error)
+{
+    const QList<const Tle *> found = findTles(sets, query);
+    const QString shown = input::loggableText(query.trimmed(), 60);
+    if (found.isEmpty()) {
+        *error = QStringLiteral("no satellite '%1'").arg(shown);
+        return nullptr;
+    }
+    if (found.size() > 1) {
+        QStringList names;
+        for (const Tle *t : found.mid(0, 8))
+            names << QStringLiteral("%1 (%2)").arg(input::loggableText(t->displayName(), 40)).arg(t->catalogueNumber);
+        *error = QStringLiteral("'%1' matches %2 satellites: %3%4; give the catalogue number or more of the name")
+                     .arg(shown)
+                     .arg(found.size())
+                     .arg(names.join(QStringLiteral(", ")), found.size() > 8 ? QStringLiteral(", …") : QString());
+        return nullptr;
+    }
+    return found.first();
+}
+
+TleFile readTleFile(const QString &path)
+{
+    TleFile file;
+    const input::BoundedRead read = input::readBoundedFile(path, kLargestElementFile);
+    if (!read.ok()) {
+        file.error = read.error;
+        return file;
+    }
+    TleReadResult text = readTleText(QString::fromUtf8(read.bytes));
+    file.refusals = text.refusals;
+    file.sets = mergeByCatalogueNumber(text.sets);
+    file.duplicates = int(text.sets.size() - file.sets.size());
+    return file;
 }
 
 } // namespace slew::sky

@@ -61,8 +61,37 @@ bool parseTle(const QString &line1, const QString &line2, Tle *out, TleRefusal *
 // A whole file or pasted text: two- and three-line sets, in any mix.
 TleReadResult readTleText(const QString &text);
 
+// Faster than this is no orbit: a larger mean motion is refused.
+inline constexpr double kMostRevolutionsPerDay = 20.0;
+
+// The largest element-set file read or downloaded: CelesTrak's whole active
+// catalogue is about 2 MiB.
+inline constexpr qint64 kLargestElementFile = 16 * 1024 * 1024;
+
+// One set a satellite: where a file holds a catalogue number twice (two
+// group files put together), the newest epoch is kept, in the place of the
+// first.
+QList<Tle> mergeByCatalogueNumber(const QList<Tle> &sets);
+
+// An element-set file a user named (--tle): only a regular file of at most
+// kLargestElementFile, read without blocking on a device or a FIFO, its sets
+// merged by catalogue number.
+struct TleFile {
+    QList<Tle> sets;
+    QList<TleRefusal> refusals;
+    int duplicates = 0; // sets dropped for an older copy of the same satellite
+    QString error;      // the file could not be read at all
+};
+TleFile readTleFile(const QString &path);
+
 // The sets a query names: a catalogue number matches exactly; otherwise a
 // case-insensitive prefix of the name. An exact name match wins over prefixes.
 QList<const Tle *> findTles(const QList<Tle> &sets, const QString &query);
+
+// Exactly one set for a query, or nothing and *error: "no satellite 'X'" or
+// "'NOAA' matches 19 satellites: NOAA 15 (25338), …". Every place a user
+// names a satellite (--passes, --where, --track) uses this, so an ambiguous
+// name is refused everywhere, naming the matches.
+const Tle *findOneTle(const QList<Tle> &sets, const QString &query, QString *error);
 
 } // namespace slew::sky

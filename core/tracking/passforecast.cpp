@@ -10,6 +10,8 @@ QList<PlannedPass> forecastPasses(const TargetSky &target, const sky::Station &s
 {
     QList<PlannedPass> planned;
     for (const sky::Pass &p : target.passes(station, window)) {
+        if (window.stop && window.stop->load())
+            break; // told to give up: the search is of no use any more
         PlannedPass one{p, p.aos.julian, target.sample(station, p, p.aos.julian), {}};
         one.plan = planPass(one.points, reach);
         planned.append(std::move(one));
@@ -22,6 +24,8 @@ std::optional<PlannedPass> forecastNextPass(const TargetSky &target, const sky::
                                             const RotatorReach &reach, const PlannerOptions &options)
 {
     for (const sky::Pass &p : target.passes(station, window)) {
+        if (window.stop && window.stop->load())
+            return std::nullopt;
         if (p.los.julian <= nowJulian + marginSeconds / sky::kSecondsPerDay)
             continue;
         const double from = std::max(p.aos.julian, nowJulian);

@@ -34,7 +34,17 @@ PassRunner::PassRunner(RotatorSession *session, QObject *parent) : QObject(paren
     });
 }
 
-PassRunner::~PassRunner() = default;
+PassRunner::~PassRunner()
+{
+    cancelPlanning();
+}
+
+void PassRunner::cancelPlanning()
+{
+    if (m_planStop)
+        m_planStop->store(true);
+    m_planStop.reset();
+}
 
 QString PassRunner::isoTime(double julian)
 {
@@ -56,6 +66,7 @@ void PassRunner::start(const TrackTarget &target, const sky::Station &station, d
     m_clock = clock;
     m_running = true;
     m_planning = false;
+    cancelPlanning();
     m_waitingFor.clear();
     ++m_generation;
     emit logLine(tr("tracking %1 above %2°%3").arg(target.name()).arg(minElevationDeg)
@@ -71,6 +82,7 @@ void PassRunner::stop(const QString &why)
         return;
     m_running = false;
     m_planning = false;
+    cancelPlanning();
     ++m_generation;
     m_retry.stop();
     m_tracker.stopTracking(why);
@@ -95,7 +107,7 @@ void PassRunner::nextPass()
         emit logLine(tr("%1 has been quiet for %2 s: Slew takes the rotator").arg(m_waitingFor).arg(kOtherQuietSeconds));
     m_waitingFor.clear();
     const double now = m_clock->nowJulian();
-    const sky::PassWindow window{now, now + kLookAheadDays, m_minElevation};
+    sky::PassWindow window{now, now + kLookAheadDays, m_minElevation};
     const RotatorReach reach = reachOf(*m_session);
     PlannerOptions options;
     if (m_session->hasPosition())
@@ -112,7 +124,11 @@ void PassRunner::nextPass()
     });
     // Everything the worker reads is a copy; the satellite's SGP4 set-up is
     // shared, read-only.
-    watcher->setFuture(QtConcurrent::run([sky = *m_sky, station = m_station, window, now, reach, options] {
+    cancelPlanning();
+    m_planStop = std::make_shared<std::atomic<bool>>(false);
+    watcher->setFuture(QtConcurrent::run([sky = *m_sky, station = m_station, window, now, reach, options,
+                                          stop = m_planStop]() mutable {
+        window.stop = stop.get();
         return forecastNextPass(sky, station, window, now, 5.0, reach, options);
     }));
 }

@@ -21,7 +21,9 @@
 #include <QObject>
 #include <QTimer>
 
+#include <atomic>
 #include <functional>
+#include <memory>
 #include <optional>
 
 namespace slew::tracking {
@@ -79,6 +81,10 @@ private:
     bool m_running = false;
     bool m_planning = false;
     int m_generation = 0; // a plan still being made when this moves on is of no use
+    // Tells the worker making the current plan to give up: a stop or a new
+    // target must not wait for a search of days ahead, nor must the exit.
+    std::shared_ptr<std::atomic<bool>> m_planStop;
+    void cancelPlanning();
     bool m_wasActive = false;
     int m_passesDone = 0;
     QTimer m_retry; // no pass found: look again later

@@ -1,16 +1,32 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "skytrack.h"
 
+#include "input/finitenumber.h"
+
 #include <cmath>
 
 namespace slew::tracking {
+namespace {
+
+// A pass is followed for at most a day past its window (passes.cpp), and a
+// fixed target is held for at most the look-ahead; more samples than this
+// would be a time that is not a number, not a pass.
+constexpr double kLongestSampledSeconds = 3.0 * 86400.0;
+
+bool sampleable(double durationSeconds, double stepSeconds)
+{
+    return input::allFinite(durationSeconds, stepSeconds) && stepSeconds > 0 && durationSeconds >= 0
+           && durationSeconds <= kLongestSampledSeconds;
+}
+
+} // namespace
 
 QList<SkyPoint> sampleSatellitePass(const sky::Sgp4 &satellite, const sky::Station &station, const sky::Pass &pass,
                                     double stepSeconds)
 {
     QList<SkyPoint> points;
     const double duration = pass.durationSeconds();
-    if (!(stepSeconds > 0) || !(duration >= 0))
+    if (!sampleable(duration, stepSeconds))
         return points;
     const int steps = int(std::ceil(duration / stepSeconds));
     for (int i = 0; i <= steps; ++i) {
@@ -35,13 +51,14 @@ QList<SkyPoint> sampleSkyPass(const std::function<sky::BodyPosition(double julia
 {
     QList<SkyPoint> points;
     const double duration = (toJulian - fromJulian) * sky::kSecondsPerDay;
-    if (!(stepSeconds > 0) || !(duration >= 0))
+    if (!sampleable(duration, stepSeconds))
         return points;
     const int steps = int(std::ceil(duration / stepSeconds));
     for (int i = 0; i <= steps; ++i) {
         const double seconds = std::min(i * stepSeconds, duration);
         const sky::BodyPosition p = position(fromJulian + seconds / sky::kSecondsPerDay);
-        points.append(SkyPoint{seconds, p.azimuthDeg, p.elevationDeg});
+        if (input::allFinite(p.azimuthDeg, p.elevationDeg))
+            points.append(SkyPoint{seconds, p.azimuthDeg, p.elevationDeg});
     }
     return points;
 }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "tracktarget.h"
 
+#include "input/logtext.h"
+
 #include "skytrack.h"
 
 #include "sky/sunmoon.h"
@@ -37,6 +39,8 @@ std::optional<double> sexagesimal(const QString &text)
     if (minutes >= 60.0 || seconds >= 60.0 || (!m.captured(4).isEmpty() && m.captured(3).contains(QLatin1Char('.'))))
         return std::nullopt;
     const double value = m.captured(2).toDouble() + minutes / 60.0 + seconds / 3600.0;
+    if (!std::isfinite(value))
+        return std::nullopt; // four hundred digits read as infinity
     return m.captured(1) == QLatin1String("-") ? -value : value;
 }
 
@@ -86,13 +90,13 @@ std::optional<TrackTarget> TrackTarget::parseFixedOrCelestial(const QString &spe
         return std::nullopt;
     };
     if (parts.size() != 2)
-        return fail(azel ? QObject::tr("'%1': write azel:AZ,EL").arg(text)
-                         : QObject::tr("'%1': write radec:RA,DEC").arg(text));
+        return fail(azel ? QObject::tr("'%1': write azel:AZ,EL").arg(input::loggableText(text, 80))
+                         : QObject::tr("'%1': write radec:RA,DEC").arg(input::loggableText(text, 80)));
     TrackTarget t;
     if (azel) {
         const auto az = sexagesimal(parts[0]), el = sexagesimal(parts[1]);
         if (!az || !el || *az < 0 || *az >= 360 || *el < -5 || *el > 90)
-            return fail(QObject::tr("'%1': azimuth 0..360 and elevation -5..90 degrees").arg(text));
+            return fail(QObject::tr("'%1': azimuth 0..360 and elevation -5..90 degrees").arg(input::loggableText(text, 80)));
         t.kind = Kind::Fixed;
         t.azimuthDeg = *az;
         t.elevationDeg = *el;
@@ -104,9 +108,9 @@ std::optional<TrackTarget> TrackTarget::parseFixedOrCelestial(const QString &spe
         ra.chop(1);
     const auto raValue = sexagesimal(ra), dec = sexagesimal(parts[1]);
     if (!raValue || *raValue < 0 || *raValue >= (inDegrees ? 360.0 : 24.0))
-        return fail(QObject::tr("'%1': right ascension is in hours, 0..24 (or degrees with a d: 350.85d)").arg(parts[0]));
+        return fail(QObject::tr("'%1': right ascension is in hours, 0..24 (or degrees with a d: 350.85d)").arg(input::loggableText(parts[0], 40)));
     if (!dec || *dec < -90 || *dec > 90)
-        return fail(QObject::tr("'%1': declination is -90..90 degrees").arg(parts[1]));
+        return fail(QObject::tr("'%1': declination is -90..90 degrees").arg(input::loggableText(parts[1], 40)));
     t.kind = Kind::Celestial;
     t.rightAscensionDeg = inDegrees ? *raValue : *raValue * 15.0;
     t.declinationDeg = *dec;

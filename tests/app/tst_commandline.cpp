@@ -8,10 +8,34 @@
 #include "cli/slewcommandline.h"
 
 #include <QCommandLineParser>
+#include <QProcess>
+#include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <sys/stat.h>
+
 using namespace slew::cli;
+
+namespace {
+
+struct SlewRun {
+    int exitCode = -1;
+    QString standardError;
+};
+
+// Runs the slew program to its end, waiting on its finished signal.
+SlewRun runSlew(const QStringList &arguments)
+{
+    QProcess slew;
+    QSignalSpy finished(&slew, &QProcess::finished);
+    slew.start(QString::fromLocal8Bit(qgetenv("SLEW_BIN")), arguments);
+    if (!finished.wait(60000))
+        slew.kill();
+    return {slew.exitCode(), QString::fromUtf8(slew.readAllStandardError())};
+}
+
+} // namespace
 
 class CommandLineTest : public QObject {
     Q_OBJECT
@@ -21,6 +45,8 @@ private slots:
     void configFileRefusesWhatItCannotMean();
     void commandLineWinsOverTheFile();
     void missingOrHugeFileIsRefused();
+    void configFileTextIsEscapedInMessages();
+    void valueRefusalsNameTheFileAndLine();
     void manualListsEveryOptionOfEveryMode();
     void manualEscapesRoff();
 };
@@ -36,8 +62,12 @@ void CommandLineTest::configFileBecomesOptions()
                                                      "rotctld-listen = 127.0.0.1:4533 # not a comment: part of it\n"),
                                       QStringLiteral("t.conf"), slewHeadlessMode(), &error);
     QVERIFY2(args, qPrintable(error));
-    QCOMPARE(*args, (QStringList{"--connect=tcp://192.0.2.10:4533", "--dialect=gs232b",
-                                 "--rotctld-listen=127.0.0.1:4533 # not a comment: part of it"}));
+    QCOMPARE(args->arguments, (QStringList{"--connect=tcp://192.0.2.10:4533", "--dialect=gs232b",
+                                           "--rotctld-listen=127.0.0.1:4533 # not a comment: part of it"}));
+    // Each value knows its line, for the messages about it later.
+    QCOMPARE(args->label("connect"), QString("t.conf:3: connect"));
+    QCOMPARE(args->label("rotctld-listen"), QString("t.conf:6: rotctld-listen"));
+    QCOMPARE(args->label("profile"), QString("--profile")); // empty: not set by the file
 }
 
 void CommandLineTest::configFileRefusesWhatItCannotMean_data()
@@ -49,6 +79,9 @@ void CommandLineTest::configFileRefusesWhatItCannotMean_data()
     QTest::newRow("a switch") << "headless = 1" << "t.conf:1: unknown setting 'headless'";
     QTest::newRow("the file itself") << "config = /etc/passwd" << "unknown setting 'config'";
     QTest::newRow("empty name") << "= sim:" << "unknown setting ''";
+    QTest::newRow("a name twice") << "connect = sim:\n# the real one\nconnect = tcp://192.0.2.1:1"
+                                  << "t.conf:3: 'connect' is set again; it was set on line 1 already";
+    QTest::newRow("twice, once empty") << "profile =\nprofile = a.json" << "t.conf:2: 'profile' is set again";
 }
 
 void CommandLineTest::configFileRefusesWhatItCannotMean()
@@ -61,6 +94,40 @@ void CommandLineTest::configFileRefusesWhatItCannotMean()
     // Every refusal says what may be set instead.
     if (error.contains(u"unknown setting"))
         QVERIFY2(error.contains(u"connect, dialect, profile, rotctld-listen, rotctld-allow, rotctld-max-clients"), qPrintable(error));
+}
+
+void CommandLineTest::configFileTextIsEscapedInMessages()
+{
+    // ESC and BEL from a file must not reach a terminal or the journal raw.
+    for (const char *text : {"\x1b[2J\x07bad = 1", "connect sim:\x1b]0;owned\x07"}) {
+        QString error;
+        QVERIFY(!parseConfigText(QString::fromLatin1(text), QStringLiteral("t.conf"), slewHeadlessMode(), &error));
+        QVERIFY2(!error.contains(QChar(0x1b)) && !error.contains(QChar(0x07)), qPrintable(error));
+        QVERIFY2(error.contains("\\x1b"), qPrintable(error));
+    }
+}
+
+void CommandLineTest::valueRefusalsNameTheFileAndLine()
+{
+    // The value is read after the file (a port is checked by the service):
+    // its refusal still names the file and the line.
+    QTemporaryDir dir;
+    const QString path = dir.filePath("station.conf");
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("connect = sim:\n\nrotctld-listen = 127.0.0.1:70000\n");
+    file.close();
+    const SlewRun fromFile = runSlew({"--headless", "--config", path});
+    QCOMPARE(fromFile.exitCode, 2);
+    QVERIFY2(fromFile.standardError.contains(path + ":3: rotctld-listen 127.0.0.1:70000: "),
+             qPrintable(fromFile.standardError));
+    QVERIFY2(fromFile.standardError.contains("65535"), qPrintable(fromFile.standardError));
+
+    // The same value on the command line is named as the option.
+    const SlewRun fromOption = runSlew({"--headless", "--rotctld-listen", "127.0.0.1:70000"});
+    QCOMPARE(fromOption.exitCode, 2);
+    QVERIFY2(fromOption.standardError.contains("--rotctld-listen 127.0.0.1:70000: "),
+             qPrintable(fromOption.standardError));
 }
 
 void CommandLineTest::commandLineWinsOverTheFile()
@@ -78,13 +145,16 @@ void CommandLineTest::commandLineWinsOverTheFile()
     QVERIFY2(args, qPrintable(error));
     QCommandLineParser parser;
     describeTo(parser, slewHeadlessMode());
-    QVERIFY2(parser.parse(*args), qPrintable(parser.errorText()));
+    QVERIFY2(parser.parse(args->arguments), qPrintable(parser.errorText()));
     QCOMPARE(parser.value("connect"), QString("tcp://192.0.2.1:1"));
     QCOMPARE(parser.value("rotctld-listen"), QString("127.0.0.1:4533"));
+    // The command line's value is not the file's: messages name the option.
+    QCOMPARE(args->label("connect"), QString("--connect"));
+    QCOMPARE(args->label("rotctld-listen"), path + ":2: rotctld-listen");
 
     // Without --config the arguments are untouched.
     const QStringList plain{"slew", "--headless", "--connect", "sim:"};
-    QCOMPARE(*withConfigFile(plain, slewHeadlessMode(), &error), plain);
+    QCOMPARE(withConfigFile(plain, slewHeadlessMode(), &error)->arguments, plain);
 }
 
 void CommandLineTest::missingOrHugeFileIsRefused()
@@ -99,7 +169,17 @@ void CommandLineTest::missingOrHugeFileIsRefused()
     big.write(QByteArray(100 * 1024, '#'));
     big.close();
     QVERIFY(!readConfigFile(big.fileName(), slewHeadlessMode(), &error));
-    QVERIFY2(error.contains("too big"), qPrintable(error));
+    QVERIFY2(error.contains("over the 64 KiB limit"), qPrintable(error));
+
+    // A device reads as 0 bytes to QFile::size(), and then for ever: refused
+    // before a byte is read.
+    QVERIFY(!readConfigFile("/dev/zero", slewHeadlessMode(), &error));
+    QVERIFY2(error.contains("/dev/zero is a character device"), qPrintable(error));
+    // A FIFO with no writer would block open() for ever.
+    const QString fifo = dir.filePath("fifo.conf");
+    QCOMPARE(::mkfifo(QFile::encodeName(fifo).constData(), 0600), 0);
+    QVERIFY(!readConfigFile(fifo, slewHeadlessMode(), &error));
+    QVERIFY2(error.contains("FIFO"), qPrintable(error));
 }
 
 void CommandLineTest::manualListsEveryOptionOfEveryMode()

@@ -9,6 +9,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <sys/stat.h>
+
 using namespace slew::model;
 
 class ModelTest : public QObject {
@@ -22,6 +24,7 @@ private slots:
     void profileRefusesBadValues_data();
     void profileRefusesBadValues();
     void profileSaveAndLoad();
+    void profileFilesThatAreNotProfiles();
 };
 
 void ModelTest::chooseAzimuth_data()
@@ -192,6 +195,36 @@ void ModelTest::profileSaveAndLoad()
     QVERIFY(!RotatorProfile::load(dir.filePath("missing.json"), &error));
     QVERIFY(!p.save(dir.filePath("no/such/dir/x.json"), &error));
     QVERIFY(RotatorProfile::load(path, &error));
+}
+
+void ModelTest::profileFilesThatAreNotProfiles()
+{
+    QTemporaryDir dir;
+    QString error;
+    // A device reads 0 to QFile::size() and then for ever.
+    QVERIFY(!RotatorProfile::load("/dev/zero", &error));
+    QCOMPARE(error, QStringLiteral("/dev/zero is a character device, not a file; name a regular file"));
+    // A FIFO with no writer would block open().
+    const QString fifo = dir.filePath("profile.fifo");
+    QCOMPARE(::mkfifo(QFile::encodeName(fifo).constData(), 0600), 0);
+    QVERIFY(!RotatorProfile::load(fifo, &error));
+    QVERIFY2(error.contains("FIFO"), qPrintable(error));
+    // A JSON array is well-formed JSON, just not a profile: the message says
+    // that, never "no error occurred".
+    QFile array(dir.filePath("array.json"));
+    QVERIFY(array.open(QIODevice::WriteOnly));
+    array.write("[1, 2, 3]");
+    array.close();
+    QVERIFY(!RotatorProfile::load(array.fileName(), &error));
+    QVERIFY2(error.contains("the file holds JSON an array, a profile is a JSON object"), qPrintable(error));
+    QVERIFY2(!error.contains("no error"), qPrintable(error));
+    // Over the cap.
+    QFile big(dir.filePath("big.json"));
+    QVERIFY(big.open(QIODevice::WriteOnly));
+    big.write("{\"name\": \"" + QByteArray(RotatorProfile::kLargestProfile, 'x') + "\"}");
+    big.close();
+    QVERIFY(!RotatorProfile::load(big.fileName(), &error));
+    QVERIFY2(error.contains("over the 1 MiB limit"), qPrintable(error));
 }
 
 QTEST_GUILESS_MAIN(ModelTest)

@@ -12,6 +12,8 @@
 #include <QTest>
 
 #include <algorithm>
+#include <atomic>
+#include <limits>
 
 using namespace slew::sky;
 
@@ -80,6 +82,7 @@ private slots:
     void matchesBruteForce();
     void allSatellitesSortedByAos();
     void decayedSatelliteHasNoPasses();
+    void searchEndsOnAnyInput();
     void sunAndMoonAgreeWithPyEphem();
 };
 
@@ -188,6 +191,60 @@ void TestPasses::allSatellitesSortedByAos()
         QVERIFY(!all[i].name.isEmpty());
     }
     QCOMPARE(numbers.size(), 3);
+}
+
+void TestPasses::searchEndsOnAnyInput()
+{
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double inf = std::numeric_limits<double>::infinity();
+    int calls = 0;
+    const ElevationFunction sine = [&calls](double t) {
+        ++calls;
+        return ElevationSample{10.0 * std::sin(kTwoPi * t), 0.0};
+    };
+    PassScan scan;
+    // A window that is not a number: the loop's time became NaN and its end
+    // test was never true.
+    for (const PassWindow &w : {PassWindow{nan, 1.0, 5.0}, PassWindow{0.0, nan, 5.0}, PassWindow{0.0, 1.0, nan},
+                                PassWindow{0.0, inf, 5.0}, PassWindow{-inf, 1.0, 5.0}}) {
+        calls = 0;
+        QVERIFY(scanPasses(sine, w, scan).isEmpty());
+        QVERIFY2(calls < 2, "nothing is computed for a window that is not a number");
+    }
+    PassScan nanScan;
+    nanScan.maxElevationRateDegS = nan;
+    QVERIFY(scanPasses(sine, {0.0, 1.0, 5.0}, nanScan).isEmpty());
+
+    // An elevation that stops being a number (a satellite decayed in the
+    // model): what was found before stands, and the search ends.
+    const ElevationFunction failsLater = [nan](double t) {
+        return ElevationSample{t < 0.6 ? 10.0 * std::sin(kTwoPi * t) : nan, 0.0};
+    };
+    const QList<Pass> before = scanPasses(failsLater, {0.0, 3.0, 5.0}, scan);
+    QCOMPARE(before.size(), 1);
+
+    // A stop from another thread ends a long search at its next step.
+    std::atomic<bool> stop{false};
+    calls = 0;
+    const ElevationFunction stopsItself = [&](double t) {
+        if (++calls == 100)
+            stop = true;
+        return ElevationSample{10.0 * std::sin(kTwoPi * t), 0.0};
+    };
+    PassWindow month{0.0, 30.0, 5.0};
+    month.stop = &stop;
+    scanPasses(stopsItself, month, scan);
+    QVERIFY2(calls < 120, qPrintable(QString::number(calls)));
+
+    // An elevation function that lies about its rate bound cannot hold the
+    // search longer than the window's length allows.
+    calls = 0;
+    const ElevationFunction flat = [&calls](double) {
+        ++calls;
+        return ElevationSample{-90.0, 0.0, 0.0};
+    };
+    QVERIFY(scanPasses(flat, {0.0, 1.0, 5.0}, scan).isEmpty());
+    QVERIFY2(calls <= 86400 / 15 + 20, qPrintable(QString::number(calls)));
 }
 
 void TestPasses::decayedSatelliteHasNoPasses()

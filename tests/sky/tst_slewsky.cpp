@@ -19,6 +19,8 @@
 #include <QTest>
 #include <QTimeZone>
 
+#include <sys/stat.h>
+
 using namespace slew::sky;
 
 namespace {
@@ -73,6 +75,8 @@ private slots:
     void savedStationWhenNoQth();
     void qthGivenToTheWindowIsKept();
     void qthInTheStationServiceConfig();
+    void concatenatedFilesCountEachSatelliteOnce();
+    void setsThatAreNotNumbersAreSkippedSayingWhy();
 };
 
 void TestSlewSky::initTestCase()
@@ -258,6 +262,82 @@ void TestSlewSky::refusals_data()
                                                   QStringLiteral("--qth"), QStringLiteral("JO65"), QStringLiteral("--tle"),
                                                   QStringLiteral("/nonexistent/elements.txt")})
                                   << 2 << QStringLiteral("/nonexistent/elements.txt");
+
+    // Numbers that are not finite: Qt reads "nan" and "inf" as numbers, and
+    // each of these once passed its range check and hung the search.
+    const QStringList sun{QStringLiteral("--passes"), QStringLiteral("sun")};
+    const QStringList jo65{QStringLiteral("--qth"), QStringLiteral("JO65")};
+    QTest::newRow("qth nan") << (sun + QStringList{QStringLiteral("--qth"), QStringLiteral("nan,0")}) << 2
+                             << QStringLiteral("must be finite numbers");
+    QTest::newRow("qth inf height") << (sun + QStringList{QStringLiteral("--qth"), QStringLiteral("55,12,inf")}) << 2
+                                    << QStringLiteral("must be finite numbers");
+    QTest::newRow("min-el nan") << (sun + jo65 + QStringList{QStringLiteral("--min-el"), QStringLiteral("nan")}) << 2
+                                << QStringLiteral("--min-el: 'nan' is not a finite number");
+    QTest::newRow("hours nan") << (sun + jo65 + QStringList{QStringLiteral("--hours"), QStringLiteral("nan")}) << 2
+                               << QStringLiteral("--hours: 'nan' is not a finite number");
+    QTest::newRow("hours inf") << (sun + jo65 + QStringList{QStringLiteral("--hours"), QStringLiteral("inf")}) << 2
+                               << QStringLiteral("--hours: 'inf' is not a finite number");
+    QTest::newRow("where qth nan") << (QStringList{QStringLiteral("--where"), QStringLiteral("moon"), QStringLiteral("--qth"),
+                                                   QStringLiteral("0,nan")})
+                                   << 2 << QStringLiteral("must be finite numbers");
+
+    // Files that are not files: /dev/zero reads for ever (QFile::size() is
+    // 0), a FIFO with no writer blocks open() for ever.
+    static QTemporaryDir fifoDir;
+    const QString fifo = fifoDir.filePath(QStringLiteral("elements.fifo"));
+    if (!QFile::exists(fifo))
+        ::mkfifo(QFile::encodeName(fifo).constData(), 0600);
+    const QStringList iss{QStringLiteral("--passes"), QStringLiteral("ISS")};
+    QTest::newRow("tle /dev/zero") << (iss + jo65 + QStringList{QStringLiteral("--tle"), QStringLiteral("/dev/zero")}) << 2
+                                   << QStringLiteral("/dev/zero is a character device, not a file");
+    QTest::newRow("tle fifo") << (iss + jo65 + QStringList{QStringLiteral("--tle"), fifo}) << 2
+                              << QStringLiteral("is a FIFO (named pipe), not a file");
+    QTest::newRow("where tle fifo") << (QStringList{QStringLiteral("--where"), QStringLiteral("ISS")} + jo65
+                                        + QStringList{QStringLiteral("--tle"), fifo})
+                                    << 2 << QStringLiteral("FIFO");
+
+    // The station service: the same rule for its options.
+    const QStringList headless{QStringLiteral("--headless"), QStringLiteral("--connect"), QStringLiteral("sim:"),
+                               QStringLiteral("--qth"), QStringLiteral("JO65")};
+    QTest::newRow("service track ambiguous")
+        << (headless + QStringList{QStringLiteral("--track"), QStringLiteral("NOAA")} + tle) << 2
+        << QStringLiteral("'NOAA' matches");
+    QTest::newRow("service min-el nan")
+        << (headless + QStringList{QStringLiteral("--track"), QStringLiteral("sun"), QStringLiteral("--min-el"),
+                                   QStringLiteral("nan")})
+        << 2 << QStringLiteral("--min-el: 'nan' is not a finite number");
+    QTest::newRow("service clock-rate nan")
+        << (headless + QStringList{QStringLiteral("--track"), QStringLiteral("sun"), QStringLiteral("--clock-start"),
+                                   QStringLiteral("2024-06-20T12:00:00Z"), QStringLiteral("--clock-rate"),
+                                   QStringLiteral("nan")})
+        << 2 << QStringLiteral("--clock-rate: 'nan' is not a finite number");
+    QTest::newRow("service qth nan")
+        << (QStringList{QStringLiteral("--headless"), QStringLiteral("--qth"), QStringLiteral("nan,0")}) << 2
+        << QStringLiteral("must be finite numbers");
+    QTest::newRow("service azel nan")
+        << (headless + QStringList{QStringLiteral("--track"), QStringLiteral("azel:nan,10")}) << 2
+        << QStringLiteral("--track 'azel:nan,10'");
+    QTest::newRow("service tle /dev/zero")
+        << (headless + QStringList{QStringLiteral("--track"), QStringLiteral("ISS"), QStringLiteral("--tle"),
+                                   QStringLiteral("/dev/zero")})
+        << 2 << QStringLiteral("/dev/zero is a character device");
+    QTest::newRow("service tle fifo")
+        << (headless + QStringList{QStringLiteral("--track"), QStringLiteral("ISS"), QStringLiteral("--tle"), fifo}) << 2
+        << QStringLiteral("FIFO");
+    QTest::newRow("service profile /dev/zero")
+        << (QStringList{QStringLiteral("--headless"), QStringLiteral("--profile"), QStringLiteral("/dev/zero")}) << 2
+        << QStringLiteral("--profile: /dev/zero is a character device");
+    QTest::newRow("service config fifo")
+        << (QStringList{QStringLiteral("--headless"), QStringLiteral("--config"), fifo}) << 2
+        << QStringLiteral("is a FIFO (named pipe)");
+    QTest::newRow("window qth nan")
+        << (QStringList{QStringLiteral("--qth"), QStringLiteral("nan,0"), QStringLiteral("--screenshot"),
+                        fifoDir.filePath(QStringLiteral("never.png"))})
+        << 2 << QStringLiteral("must be finite numbers");
+    QTest::newRow("window goto nan")
+        << (QStringList{QStringLiteral("--goto"), QStringLiteral("nan,10"), QStringLiteral("--screenshot"),
+                        fifoDir.filePath(QStringLiteral("never.png"))})
+        << 2 << QStringLiteral("--goto wants az,el as two numbers");
 }
 
 void TestSlewSky::refusals()
@@ -341,8 +421,70 @@ void TestSlewSky::qthInTheStationServiceConfig()
     conf.close();
     const Run bad = runSlew({QStringLiteral("--headless"), QStringLiteral("--config"), conf.fileName()});
     QCOMPARE(bad.exitCode, 2);
-    QVERIFY2(bad.err.contains("--qth JO65zz"), bad.err.constData());
+    // The refusal names the file and the line the value came from.
+    QVERIFY2(bad.err.contains(conf.fileName().toUtf8() + ":2: qth: locator \"JO65zz\""), bad.err.constData());
     QVERIFY2(bad.out.isEmpty(), bad.out.constData());
+}
+
+void TestSlewSky::concatenatedFilesCountEachSatelliteOnce()
+{
+    // Two group files put together, as operators do: the same 979 sets twice.
+    QTemporaryDir dir;
+    QFile original(kTle);
+    QVERIFY(original.open(QIODevice::ReadOnly));
+    const QByteArray text = original.readAll();
+    QFile twice(dir.filePath(QStringLiteral("twice.tle")));
+    QVERIFY(twice.open(QIODevice::WriteOnly));
+    twice.write(text + "\n" + text);
+    twice.close();
+
+    const QStringList common{QStringLiteral("--qth"), QStringLiteral("55.6875,12.625,20"), QStringLiteral("--start"),
+                             kStart, QStringLiteral("--hours"), QStringLiteral("1"), QStringLiteral("--json")};
+    const Run one = runSlew(QStringList{QStringLiteral("--passes"), QStringLiteral("25544"), QStringLiteral("--tle"),
+                                        twice.fileName()} + common);
+    QVERIFY2(one.exitCode == 0, one.err.constData());
+    QVERIFY2(one.err.contains("979 sets repeat a satellite listed before"), one.err.constData());
+
+    const Run all = runSlew(QStringList{QStringLiteral("--passes"), QStringLiteral("all"), QStringLiteral("--tle"),
+                                        twice.fileName()} + common);
+    const Run single = runSlew(QStringList{QStringLiteral("--passes"), QStringLiteral("all"), QStringLiteral("--tle"),
+                                           kTle} + common);
+    QVERIFY2(all.exitCode == 0, all.err.constData());
+    QCOMPARE(QJsonDocument::fromJson(all.out).array().size(), QJsonDocument::fromJson(single.out).array().size());
+}
+
+void TestSlewSky::setsThatAreNotNumbersAreSkippedSayingWhy()
+{
+    // A set whose mean motion reads "nan", its checksum right: it made the
+    // pass search spin for ever. Now it is skipped with its line and reason,
+    // and the good set beside it still has its passes.
+    QTemporaryDir dir;
+    QString nanLine2 = QStringLiteral("2 25544  51.6424  32.9776 0003646  28.7227  39.5332         nan 95614");
+    int sum = 0;
+    for (int i = 0; i < 68; ++i)
+        sum += nanLine2[i].isDigit() ? nanLine2[i].digitValue() : (nanLine2[i] == u'-' ? 1 : 0);
+    nanLine2[68] = QChar(u'0' + sum % 10);
+    QFile file(dir.filePath(QStringLiteral("nan.tle")));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("BROKEN ISS\n1 25544U 98067A   18020.89808844  .00002078  00000-0  38550-4 0  9992\n"
+               + nanLine2.toLatin1()
+               + "\nNOAA 19\n1 33591U 09005A   18020.91958580  .00000107  00000-0  83477-4 0  9992\n"
+                 "2 33591  99.1238 356.1693 0014450  24.0615 336.1228 14.12247534461122\n");
+    file.close();
+    const QStringList common{QStringLiteral("--qth"), QStringLiteral("55.6875,12.625,20"), QStringLiteral("--tle"),
+                             file.fileName(), QStringLiteral("--start"), kStart, QStringLiteral("--json")};
+    const Run all = runSlew(QStringList{QStringLiteral("--passes"), QStringLiteral("all")} + common);
+    QVERIFY2(all.exitCode == 0, all.err.constData());
+    QVERIFY2(all.err.contains(":3: skipped: mean motion"), all.err.constData());
+    QVERIFY(!QJsonDocument::fromJson(all.out).array().isEmpty());
+
+    // Tracking the broken one says why it is not there, as --passes does.
+    const Run track = runSlew({QStringLiteral("--headless"), QStringLiteral("--connect"), QStringLiteral("sim:"),
+                               QStringLiteral("--qth"), QStringLiteral("JO65"), QStringLiteral("--track"),
+                               QStringLiteral("25544"), QStringLiteral("--tle"), file.fileName()});
+    QCOMPARE(track.exitCode, 2);
+    QVERIFY2(track.err.contains("no satellite '25544'") && track.err.contains(":3: skipped: mean motion"),
+             track.err.constData());
 }
 
 QTEST_GUILESS_MAIN(TestSlewSky)

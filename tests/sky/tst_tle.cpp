@@ -27,6 +27,16 @@ QString withColumn(QString line, int column, QChar c)
     return line;
 }
 
+// Replace columns first..last (1-based) with `text`, right-aligned, and fix
+// the checksum: the set is well-formed but for that field.
+QString withField(QString line, int first, int last, const QString &text)
+{
+    const int width = last - first + 1;
+    line.replace(first - 1, width, text.rightJustified(width, u' ', true));
+    line[68] = QChar(u'0' + tleChecksum(line));
+    return line;
+}
+
 } // namespace
 
 class TestTle : public QObject {
@@ -40,7 +50,89 @@ private slots:
     void fileKeepsLoadingPastBadSets();
     void findsByNumberAndName_data();
     void findsByNumberAndName();
+    void notANumberIsRefusedInEveryField_data();
+    void notANumberIsRefusedInEveryField();
+    void duplicatesKeepTheNewestEpoch();
+    void ambiguousNamesAreRefusedNamingTheMatches();
+    void filesThatAreNotFilesAreRefused();
 };
+
+void TestTle::notANumberIsRefusedInEveryField_data()
+{
+    QTest::addColumn<QString>("line1");
+    QTest::addColumn<QString>("line2");
+    QTest::addColumn<QString>("reasonContains");
+    for (const QString &bad : {QStringLiteral("nan"), QStringLiteral("-nan"), QStringLiteral("inf"), QStringLiteral("-inf")}) {
+        const QByteArray tag = bad.toLatin1();
+        QTest::newRow(tag + " mean motion") << kIss1 << withField(kIss2, 53, 63, bad) << "mean motion";
+        QTest::newRow(tag + " inclination") << kIss1 << withField(kIss2, 9, 16, bad) << "inclination";
+        QTest::newRow(tag + " node") << kIss1 << withField(kIss2, 18, 25, bad) << "right ascension";
+        QTest::newRow(tag + " perigee") << kIss1 << withField(kIss2, 35, 42, bad) << "perigee";
+        QTest::newRow(tag + " anomaly") << kIss1 << withField(kIss2, 44, 51, bad) << "anomaly";
+        QTest::newRow(tag + " epoch") << withField(kIss1, 21, 32, bad) << kIss2 << "epoch";
+        QTest::newRow(tag + " mean motion dot") << withField(kIss1, 34, 43, bad) << kIss2 << "first derivative";
+    }
+    QTest::newRow("overflow to infinity") << kIss1 << withField(kIss2, 53, 63, QStringLiteral("1e999")) << "mean motion";
+    QTest::newRow("no orbit that fast") << kIss1 << withField(kIss2, 53, 63, QStringLiteral("99.0")) << "at most 20";
+}
+
+void TestTle::notANumberIsRefusedInEveryField()
+{
+    // Qt reads "nan" and "inf" as numbers, and a NaN passes every range
+    // check; a set carrying one made the pass search spin for ever.
+    QFETCH(QString, line1);
+    QFETCH(QString, line2);
+    QFETCH(QString, reasonContains);
+    Tle t;
+    TleRefusal r;
+    QVERIFY2(!parseTle(line1, line2, &t, &r), "a set with a field that is not a finite number must be refused");
+    QVERIFY2(r.reason.contains(reasonContains), qPrintable(r.reason));
+}
+
+void TestTle::duplicatesKeepTheNewestEpoch()
+{
+    // Two group files put together: the ISS twice, the second copy newer.
+    const QString newer1 = withField(kIss1, 21, 32, QStringLiteral("265.51782528"));
+    const QString text = QStringList{kIssName, kIss1, kIss2, kNoaa1, kNoaa2, QStringLiteral("ISS (NEWER)"), newer1, kIss2}
+                             .join(u'\n');
+    const QList<Tle> merged = mergeByCatalogueNumber(readTleText(text).sets);
+    QCOMPARE(merged.size(), 2);
+    QCOMPARE(merged[0].catalogueNumber, 25544);
+    QCOMPARE(merged[0].epochDayOfYear, 265.51782528);
+    QCOMPARE(merged[0].name, QStringLiteral("ISS (NEWER)"));
+    QCOMPARE(merged[1].catalogueNumber, 33591);
+    QString error;
+    QVERIFY2(findOneTle(merged, QStringLiteral("25544"), &error), qPrintable(error));
+}
+
+void TestTle::ambiguousNamesAreRefusedNamingTheMatches()
+{
+    QList<Tle> sets(3);
+    sets[0].name = QStringLiteral("NOAA 15");
+    sets[0].catalogueNumber = 25338;
+    sets[1].name = QStringLiteral("NOAA 16 [-]");
+    sets[1].catalogueNumber = 26536;
+    sets[2].name = QStringLiteral("NOAA 19");
+    sets[2].catalogueNumber = 33591;
+    QString error;
+    QVERIFY(!findOneTle(sets, QStringLiteral("NOAA"), &error));
+    QVERIFY2(error.startsWith(QStringLiteral("'NOAA' matches 3 satellites: NOAA 15 (25338), NOAA 16 [-] (26536), NOAA 19 (33591)")),
+             qPrintable(error));
+    QVERIFY(!findOneTle(sets, QStringLiteral("GOES"), &error));
+    QCOMPARE(error, QStringLiteral("no satellite 'GOES'"));
+    QVERIFY(!findOneTle(sets, QString::fromLatin1("\x1b[2J"), &error));
+    QVERIFY2(!error.contains(QChar(0x1b)), qPrintable(error));
+    const Tle *one = findOneTle(sets, QStringLiteral("noaa 19"), &error);
+    QVERIFY(one);
+    QCOMPARE(one->catalogueNumber, 33591);
+}
+
+void TestTle::filesThatAreNotFilesAreRefused()
+{
+    const TleFile zero = readTleFile(QStringLiteral("/dev/zero"));
+    QVERIFY(zero.sets.isEmpty());
+    QVERIFY2(zero.error.contains(QStringLiteral("character device")), qPrintable(zero.error));
+}
 
 void TestTle::readsTheFields()
 {
