@@ -94,6 +94,13 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
     m_elementSets = new sky::TleSources(sky::elementSetCacheDirectory(), this);
     m_elementSets->setUrls(sky::savedElementSetUrls());
     m_elementSets->loadFromCache();
+    // A cached copy that cannot be used (over the cap, not a file) says so.
+    connect(m_elementSets, &sky::TleSources::loaded, this, [this] {
+        for (const sky::TleSourceStatus &s : m_elementSets->status())
+            if (!s.error.isEmpty())
+                m_log->addEvent(QDateTime::currentDateTime(), AlarmMonitor::Severity::Warning,
+                                tr("element sets: %1: %2").arg(s.url.toString(), s.error));
+    });
     // Whenever a refresh ends, from the dialog or elsewhere: each source
     // whose new copy was not taken says why.
     connect(m_elementSets, &sky::TleSources::finished, this, [this] {

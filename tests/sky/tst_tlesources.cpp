@@ -96,6 +96,15 @@ qint64 peakMemoryKiB()
     return -1;
 }
 
+// Reading the cap takes 16 MiB and some copies: 35 to 50 MB measured. The
+// whole answer would take several hundred. The address sanitizer keeps
+// freed memory in quarantine, so its bound is looser.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr qint64 kPeakGrowthLimitKiB = 300 * 1024;
+#else
+constexpr qint64 kPeakGrowthLimitKiB = 80 * 1024;
+#endif
+
 bool resetPeakMemory()
 {
     QFile clear(QStringLiteral("/proc/self/clear_refs"));
@@ -276,7 +285,7 @@ void TestTleSources::answerLargerThanTheCapIsGivenUp()
     // stays near it: far from the 100 MB the server offered.
     QVERIFY2(server.bytesSent < 40 * 1000 * 1000, qPrintable(QString::number(server.bytesSent)));
     if (peakKnown)
-        QVERIFY2(grewKiB < 80 * 1024, qPrintable(QStringLiteral("peak grew by %1 KiB").arg(grewKiB)));
+        QVERIFY2(grewKiB < kPeakGrowthLimitKiB, qPrintable(QStringLiteral("peak grew by %1 KiB").arg(grewKiB)));
 }
 
 void TestTleSources::slowDripIsGivenUpAtTheTransferLimit()
@@ -469,7 +478,9 @@ void TestTleSources::parsingLeavesTheEventLoopFree()
     ticker.stop();
     qInfo("%d ticks in %lld ms, the longest gap %lld ms", ticks, qlonglong(clock.elapsed()), qlonglong(longestGapMs));
     QCOMPARE(sources.status()[0].setCount, 90000);
-    QVERIFY2(longestGapMs < 150, qPrintable(QStringLiteral("the event loop was held %1 ms").arg(longestGapMs)));
+    // Parsing these on the test's thread holds it about 650 ms; a busy
+    // machine may pause the thread for a while, never that long.
+    QVERIFY2(longestGapMs < 300, qPrintable(QStringLiteral("the event loop was held %1 ms").arg(longestGapMs)));
 }
 
 QTEST_GUILESS_MAIN(TestTleSources)
