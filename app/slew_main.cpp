@@ -6,6 +6,7 @@
 #include "cli/slewcommandline.h"
 #include "mainwindow.h"
 #include "operatortheme.h"
+#include "slew_elements.h"
 #include "slew_headless.h"
 #include "slew_sky.h"
 #include "slew_tune.h"
@@ -114,6 +115,9 @@ int main(int argc, char *argv[])
     // And the sky questions: passes, and where things are.
     if (wantsSky(argc, argv))
         return runSky(argc, argv);
+    // And refreshing the element sets into the window's cache.
+    if (wantsUpdateElements(argc, argv))
+        return runUpdateElements(argc, argv);
     // A screenshot, --help and --version need no display: choose the
     // offscreen platform before the application object picks one.
     for (int i = 1; i < argc; ++i) {

@@ -22,7 +22,6 @@
 namespace slew::ui {
 namespace {
 
-constexpr char kUrlsKey[] = "sky/elementSetUrls";
 constexpr char kAgeLimitKey[] = "sky/elementSetAgeLimitDays";
 constexpr double kDefaultAgeLimitDays = 7.0; // a LEO set a week old can be minutes off
 
@@ -37,7 +36,7 @@ enum Column { SourceColumn, StateColumn, SetsColumn, AgeColumn, RefusedColumn };
 QString describeState(const sky::TleSourceStatus &s)
 {
     if (s.fetched)
-        return QObject::tr("fetched");
+        return s.error.isEmpty() ? QObject::tr("fetched") : QObject::tr("fetched, but %1").arg(s.error);
     if (s.fromCache)
         return s.error.isEmpty() ? QObject::tr("from the cache") : QObject::tr("from the cache: %1").arg(s.error);
     return s.error.isEmpty() ? QObject::tr("not fetched yet") : s.error;
@@ -57,10 +56,10 @@ ElementSetsDialog::ElementSetsDialog(sky::TleSources *sources, QWidget *parent)
                                     "works from it offline.")));
     m_urls = new QPlainTextEdit;
     m_urls->setObjectName(QStringLiteral("elementSetUrls"));
-    m_urls->setPlaceholderText(QStringLiteral("https://celestrak.org/NORAD/elements/gp.php?GROUP=amateur&FORMAT=tle"));
+    m_urls->setPlaceholderText(QLatin1String(sky::kExampleElementSetUrl));
     m_urls->setMaximumHeight(110);
     QStringList lines;
-    for (const QUrl &url : sources->urls().isEmpty() ? savedUrls() : sources->urls())
+    for (const QUrl &url : sources->urls().isEmpty() ? sky::savedElementSetUrls() : sources->urls())
         lines << url.toString();
     m_urls->setPlainText(lines.join(u'\n'));
     layout->addWidget(m_urls);
@@ -119,21 +118,18 @@ ElementSetsDialog::ElementSetsDialog(sky::TleSources *sources, QWidget *parent)
         QSettings().setValue(QLatin1String(kAgeLimitKey), days);
         showStatus();
     });
+    connect(m_sources, &sky::TleSources::setsChanged, this, &ElementSetsDialog::showStatus);
     connect(m_sources, &sky::TleSources::finished, this, [this] {
         m_refresh->setEnabled(true);
-        m_message->setText(
-            tr("Refreshed: %1 in all.").arg(count(m_sources->sets().size(), tr("element set"), tr("element sets"))));
-        showStatus();
+        qsizetype failed = 0;
+        for (const sky::TleSourceStatus &s : m_sources->status())
+            failed += sky::sourceFailed(s) ? 1 : 0;
+        const QString total = count(m_sources->sets().size(), tr("element set"), tr("element sets"));
+        m_message->setText(failed == 0 ? tr("Refreshed: %1 in all.").arg(total)
+                                       : tr("Refreshed: %1 in all; %2 not refreshed, see below why.")
+                                             .arg(total, count(failed, tr("source"), tr("sources"))));
     });
     showStatus();
-}
-
-QList<QUrl> ElementSetsDialog::savedUrls()
-{
-    QList<QUrl> urls;
-    for (const QString &text : QSettings().value(QLatin1String(kUrlsKey)).toStringList())
-        urls << QUrl(text);
-    return urls;
 }
 
 double ElementSetsDialog::savedAgeLimitDays()
@@ -175,10 +171,7 @@ bool ElementSetsDialog::refresh()
         m_message->setText(tr("No sources: add a URL or a file first."));
         return false;
     }
-    QStringList texts;
-    for (const QUrl &url : urls)
-        texts << url.toString();
-    QSettings().setValue(QLatin1String(kUrlsKey), texts);
+    sky::saveElementSetUrls(urls);
     m_sources->setUrls(urls);
     m_refresh->setEnabled(false);
     m_message->setText(tr("Fetching %1…").arg(count(urls.size(), tr("source"), tr("sources"))));

@@ -30,8 +30,8 @@ class ElementSetsDialog : public QDialog {
 public:
     ElementSetsDialog(sky::TleSources *sources, QWidget *parent = nullptr);
 
-    // What the settings hold, for the window to load the cache at start.
-    static QList<QUrl> savedUrls();
+    // The age limit the settings hold (the sources are in core/sky:
+    // savedElementSetUrls(), shared with slew --update-elements).
     static double savedAgeLimitDays();
 
     // Takes the typed sources (refusing a line that is not a URL, with its

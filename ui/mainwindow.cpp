@@ -35,7 +35,6 @@
 #include <QMenuBar>
 #include <QLabel>
 #include <QSplitter>
-#include <QStandardPaths>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTabWidget>
@@ -90,10 +89,27 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
     m_rotorsPanel = new RotorsPanel(m_controllerRotors);
 
     // Offline first: the last good copies, no network until asked.
-    m_elementSets = new sky::TleSources(
-        QStandardPaths::writableLocation(QStandardPaths::CacheLocation) + QStringLiteral("/element-sets"), this);
-    m_elementSets->setUrls(ElementSetsDialog::savedUrls());
+    // The cache is read on worker threads: the window appears at once, and
+    // the sets follow (TleSources::loaded).
+    m_elementSets = new sky::TleSources(sky::elementSetCacheDirectory(), this);
+    m_elementSets->setUrls(sky::savedElementSetUrls());
     m_elementSets->loadFromCache();
+    // A cached copy that cannot be used (over the cap, not a file) says so.
+    connect(m_elementSets, &sky::TleSources::loaded, this, [this] {
+        for (const sky::TleSourceStatus &s : m_elementSets->status())
+            if (!s.error.isEmpty())
+                m_log->addEvent(QDateTime::currentDateTime(), AlarmMonitor::Severity::Warning,
+                                tr("element sets: %1: %2").arg(s.url.toString(), s.error));
+    });
+    // Whenever a refresh ends, from the dialog or elsewhere: each source
+    // whose new copy was not taken says why.
+    connect(m_elementSets, &sky::TleSources::finished, this, [this] {
+        for (const sky::TleSourceStatus &s : m_elementSets->status())
+            if (sky::sourceFailed(s))
+                m_log->addEvent(QDateTime::currentDateTime(), AlarmMonitor::Severity::Warning,
+                                tr("element sets: %1").arg(sky::describeSource(s)));
+        logInfo(tr("element sets refreshed: %1 in all").arg(m_elementSets->sets().size()));
+    });
     m_tracking = new TrackingPanel(session, m_elementSets);
     m_alignment = new AlignmentPanel(session);
     // The Tracking tab: passes and tracking, and below them the calibration
@@ -239,9 +255,6 @@ void MainWindow::openElementSets()
 {
     auto *dialog = new ElementSetsDialog(m_elementSets, this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
-    connect(m_elementSets, &sky::TleSources::finished, dialog, [this] {
-        logInfo(tr("element sets refreshed: %1 in all").arg(m_elementSets->sets().size()));
-    });
     dialog->open();
 }
 

@@ -94,7 +94,7 @@ TargetPicker::TargetPicker(const sky::TleSources *sets, QWidget *parent) : QWidg
             toggleFavourite(*target);
     });
     connect(m_list, &QListWidget::customContextMenuRequested, this, &TargetPicker::showMenu);
-    connect(m_sets, &sky::TleSources::finished, this, &TargetPicker::fill);
+    connect(m_sets, &sky::TleSources::setsChanged, this, &TargetPicker::fill);
     fill();
 }
 

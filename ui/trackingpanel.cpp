@@ -109,7 +109,7 @@ TrackingPanel::TrackingPanel(session::RotatorSession *session, sky::TleSources *
     connect(m_passes, &QTableWidget::itemSelectionChanged, this, &TrackingPanel::onPassChosen);
     connect(m_track, &QPushButton::clicked, this, &TrackingPanel::startTracking);
     connect(m_stopTracking, &QPushButton::clicked, this, [this] { m_runner->stop(tr("stopped from the Tracking tab")); });
-    connect(m_sets, &sky::TleSources::finished, this, &TrackingPanel::showSetAges);
+    connect(m_sets, &sky::TleSources::setsChanged, this, &TrackingPanel::showSetAges);
     connect(m_session, &session::RotatorSession::profileChanged, this, &TrackingPanel::showPasses);
     connect(m_runner.get(), &tracking::PassRunner::logLine, this, &TrackingPanel::message);
     connect(m_runner.get(), &tracking::PassRunner::activeChanged, this, &TrackingPanel::trackingActiveChanged);

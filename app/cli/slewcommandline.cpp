@@ -6,6 +6,9 @@
 #include "protocol/dialect.h"
 #include "sim/simulatoroptions.h"
 #include "sim/simulatortcpserver.h"
+#include "input/boundedfile.h"
+#include "sky/boundeddownload.h"
+#include "sky/tlesources.h"
 
 #include <QCommandLineParser>
 
@@ -69,7 +72,8 @@ ProgramMode makeWindowMode()
         "configuration, live telemetry charts, the traffic log, the rotctld server and the setup and tuning "
         "wizard. Without --connect it opens the last connection, or the built-in simulator the first time. "
         "The same program runs as a station service (slew --headless --help), tunes a rotator without a "
-        "window (slew --tune URI --help) and predicts passes (slew --passes SAT --help, slew --where SAT --help).");
+        "window (slew --tune URI --help), predicts passes (slew --passes SAT --help, slew --where SAT --help) and "
+        "refreshes the element sets the window uses (slew --update-elements [URL…], slew --update-elements --help).");
     mode.options = {
         connectOption(QStringLiteral("Connect to URI at start: serial:/dev/ttyUSB0?baud=19200, tcp://HOST:PORT, "
                                      "rotctld://HOST:PORT or sim:?az_max=450.")),
@@ -252,6 +256,30 @@ ProgramMode makeWhereMode()
     return mode;
 }
 
+ProgramMode makeUpdateElementsMode()
+{
+    ProgramMode mode;
+    mode.title = QStringLiteral("Refreshing element sets");
+    mode.synopsis = QStringLiteral("slew --update-elements [URL…]");
+    mode.description =
+        QStringLiteral(
+            "Refreshes element-set sources (http, https or file URLs) into the cache the window reads, with no "
+            "window, so a station can refresh from a timer. Without a URL it refreshes the sources listed in the "
+            "window (Sky → Element sets…). It prints one line per source: the URL, how many sets it holds, and "
+            "whether the new copy replaced the cached one or the cached copy was kept, and why. A download is "
+            "given up when it is larger than %1, sends no data for %2 or takes longer than %3 in all. A new copy "
+            "replaces the cached one only when it reads cleanly (at most one entry in ten refused, not an HTML "
+            "page) and keeps at least half of the cached copy's satellites; otherwise the cached copy stays.")
+            .arg(slew::input::byteSizeText(sky::kMaxElementSetBytes), sky::durationText(sky::kElementSetSilenceMs),
+                 sky::durationText(sky::kElementSetTransferMs));
+    mode.options = {
+        {{QStringLiteral("update-elements")},
+         {},
+         QStringLiteral("Refresh the element sets from the URLs that follow, or from the window's sources.")},
+    };
+    return mode;
+}
+
 ProgramMode makeSimMode()
 {
     ProgramMode mode;
@@ -316,7 +344,8 @@ const ProgramDescription &slewProgram()
             "GS-232A/B, over a serial port, over TCP, through Hamlib's rotctld, or its own simulator when no "
             "rotator is attached. Every move, from the operator, a tracker, a preset or a raw command, is checked "
             "against the rotator's limits before a byte is sent.");
-        p.modes = {makeWindowMode(), makeHeadlessMode(), makeTuneMode(), makePassesMode(), makeWhereMode()};
+        p.modes = {makeWindowMode(), makeHeadlessMode(), makeTuneMode(), makePassesMode(), makeWhereMode(),
+                   makeUpdateElementsMode()};
         p.sections = {
             {QStringLiteral("Links"),
              QStringLiteral("A link is named by a URI, the same on the command line, in the window and in profiles:\n"
@@ -335,18 +364,26 @@ const ProgramDescription &slewProgram()
                             "\n"
                             "  ~/.config/Slew/slew.conf\n"
                             "\n"
-                            "The window's remembered connection, presets and preferences.")},
+                            "The window's remembered connection, presets and preferences, and the list of "
+                            "element-set sources that slew --update-elements refreshes.\n"
+                            "\n"
+                            "  ~/.cache/Slew/slew/element-sets/\n"
+                            "\n"
+                            "The last good copy of each element-set source, shared by the window and "
+                            "slew --update-elements.")},
             {QStringLiteral("Exit status"),
-             QStringLiteral("0 when Slew ends normally, 1 when a tuning run fails or is cancelled or --passes or "
-                            "--where finds no satellite to answer for, 2 for a bad option, a bad config file or a "
-                            "server that cannot listen.")},
+             QStringLiteral("0 when Slew ends normally, 1 when a tuning run fails or is cancelled, --passes or "
+                            "--where finds no satellite to answer for, or --update-elements could not refresh a "
+                            "source (each is named), 2 for a bad option, a bad config file, a server that cannot "
+                            "listen or --update-elements with no sources.")},
             {QStringLiteral("Examples"),
              QStringLiteral("  slew --connect serial:/dev/ttyUSB0?baud=9600 --dialect easycomm2\n"
                             "  slew --headless --connect tcp://192.0.2.10:4533 --rotctld-listen 127.0.0.1:4533\n"
                             "  systemctl enable --now slew-station@example\n"
                             "  slew --tune sim:?kp=12&ki=1&kd=1 --axis az\n"
                             "  slew --passes \"ISS (ZARYA)\" --qth JO65hq --tle amateur.txt --hours 48\n"
-                            "  slew --where moon --qth 55.69,12.63,20")},
+                            "  slew --where moon --qth 55.69,12.63,20\n"
+                            "  slew --update-elements 'https://celestrak.org/NORAD/elements/gp.php?GROUP=amateur&FORMAT=tle'")},
             {QStringLiteral("See also"), QStringLiteral("slew-sim(1), ") + seeAlso()},
         };
         return p;
@@ -377,6 +414,11 @@ const ProgramMode &slewPassesMode()
 const ProgramMode &slewWhereMode()
 {
     return slewProgram().modes.at(4);
+}
+
+const ProgramMode &slewUpdateElementsMode()
+{
+    return slewProgram().modes.at(5);
 }
 
 const ProgramDescription &slewSimProgram()

@@ -8,13 +8,15 @@ class QCommandLineParser;
 
 namespace slew::cli {
 
-// slew: the window, --headless, --tune, --passes and --where.
+// slew: the window, --headless, --tune, --passes, --where and
+// --update-elements.
 const ProgramDescription &slewProgram();
 const ProgramMode &slewWindowMode();
 const ProgramMode &slewHeadlessMode();
 const ProgramMode &slewTuneMode();
 const ProgramMode &slewPassesMode();
 const ProgramMode &slewWhereMode();
+const ProgramMode &slewUpdateElementsMode();
 
 // slew-sim: the simulated rotator as a server.
 const ProgramDescription &slewSimProgram();

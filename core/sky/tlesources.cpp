@@ -1,19 +1,82 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "tlesources.h"
 
+#include "elementsetcache.h"
+
 #include <QCryptographicHash>
 #include <QDir>
-#include <QFile>
-#include <QFileInfo>
+#include <QFutureWatcher>
 #include <QHash>
 #include <QNetworkAccessManager>
-#include <QNetworkReply>
-#include <QNetworkRequest>
-#include <QSaveFile>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
 
 namespace slew::sky {
+
+QList<QUrl> savedElementSetUrls()
+{
+    QList<QUrl> urls;
+    for (const QString &text : QSettings().value(QLatin1String(kElementSetUrlsSettingsKey)).toStringList())
+        urls << QUrl(text);
+    return urls;
+}
+
+void saveElementSetUrls(const QList<QUrl> &urls)
+{
+    QStringList texts;
+    for (const QUrl &url : urls)
+        texts << url.toString();
+    QSettings().setValue(QLatin1String(kElementSetUrlsSettingsKey), texts);
+}
+
+QString elementSetCacheDirectory()
+{
+    return QStandardPaths::writableLocation(QStandardPaths::CacheLocation) + QStringLiteral("/element-sets");
+}
+
+QString elementSetCacheFile(const QString &directory, const QUrl &url)
+{
+    // One file a URL, named by its hash: URLs make poor file names.
+    const QByteArray hash = QCryptographicHash::hash(url.toEncoded(), QCryptographicHash::Sha1).toHex();
+    return QDir(directory).filePath(QString::fromLatin1(hash.left(16)) + QStringLiteral(".tle"));
+}
+
+namespace {
+
+QString setsText(int n)
+{
+    return n == 1 ? QStringLiteral("1 set") : QStringLiteral("%1 sets").arg(n);
+}
+
+QString refusedText(const TleSourceStatus &s)
+{
+    return s.refusals.isEmpty() ? QString() : QStringLiteral(" (%1 refused)").arg(s.refusals.size());
+}
+
+} // namespace
+
+QString describeSource(const TleSourceStatus &s)
+{
+    const QString url = s.url.toString();
+    if (s.fetched && s.error.isEmpty())
+        return QStringLiteral("%1: replaced, %2%3").arg(url, setsText(s.setCount), refusedText(s));
+    if (s.fetched)
+        return QStringLiteral("%1: fetched %2%3, but %4").arg(url, setsText(s.setCount), refusedText(s), s.error);
+    if (s.fromCache)
+        return QStringLiteral("%1: kept the cached copy (%2 from %3): %4")
+            .arg(url, setsText(s.setCount), s.cachedAt.toString(Qt::ISODate),
+                 s.error.isEmpty() ? QStringLiteral("not refreshed") : s.error);
+    return QStringLiteral("%1: failed, no cached copy: %2")
+        .arg(url, s.error.isEmpty() ? QStringLiteral("not refreshed") : s.error);
+}
+
+bool sourceFailed(const TleSourceStatus &s)
+{
+    return !s.fetched || !s.error.isEmpty();
+}
 
 TleSources::TleSources(const QString &cacheDirectory, QObject *parent)
     : QObject(parent)
@@ -22,96 +85,122 @@ TleSources::TleSources(const QString &cacheDirectory, QObject *parent)
 {
 }
 
+// Jobs still running on a worker finish there and are dropped: they hold
+// copies of what they need, never this object.
+TleSources::~TleSources() = default;
+
 void TleSources::setUrls(const QList<QUrl> &urls)
 {
+    ++m_generation;
+    qDeleteAll(m_downloads);
     m_urls = urls;
     m_status = QList<TleSourceStatus>(urls.size());
     m_sets = QList<QList<Tle>>(urls.size());
+    m_appliedSequence = QList<quint64>(urls.size(), 0);
+    m_downloads = QList<BoundedDownload *>(urls.size(), nullptr);
+    m_pending = 0;
+    m_loading = 0;
     for (int i = 0; i < urls.size(); ++i)
         m_status[i].url = urls[i];
 }
 
-QString TleSources::cacheFile(const QUrl &url) const
-{
-    // One file a URL, named by its hash: URLs make poor file names.
-    const QByteArray hash = QCryptographicHash::hash(url.toEncoded(), QCryptographicHash::Sha1).toHex();
-    return QDir(m_cacheDirectory).filePath(QString::fromLatin1(hash.left(16)) + QStringLiteral(".tle"));
-}
-
-void TleSources::loadCached(int index)
-{
-    TleSourceStatus &s = m_status[index];
-    QFile file(cacheFile(s.url));
-    if (!file.open(QIODevice::ReadOnly)) {
-        s.fromCache = false;
-        m_sets[index].clear();
-        s.setCount = 0;
-        return;
-    }
-    const TleReadResult read = readTleText(QString::fromUtf8(file.readAll()));
-    m_sets[index] = read.sets;
-    s.refusals = read.refusals;
-    s.setCount = int(read.sets.size());
-    s.fromCache = true;
-    s.cachedAt = QFileInfo(file).lastModified().toUTC();
-}
-
 void TleSources::loadFromCache()
 {
-    for (int i = 0; i < m_urls.size(); ++i)
-        loadCached(i);
+    if (m_urls.isEmpty()) {
+        // Still from the event loop, as when there is something to read.
+        QMetaObject::invokeMethod(
+            this, [this] { stepDone(Step::Load); }, Qt::QueuedConnection);
+        ++m_loading;
+        return;
+    }
+    m_loading += int(m_urls.size());
+    for (int i = 0; i < m_urls.size(); ++i) {
+        const QUrl url = m_urls[i];
+        const QString file = cacheFile(url);
+        startJob(i, Step::Load, [url, file] { return loadCachedSource(url, file); });
+    }
 }
 
 void TleSources::refresh()
 {
     if (m_pending > 0)
         return;
-    m_pending = int(m_urls.size());
-    if (m_pending == 0) {
-        emit finished();
+    if (m_urls.isEmpty()) {
+        ++m_pending;
+        QMetaObject::invokeMethod(
+            this, [this] { stepDone(Step::Refresh); }, Qt::QueuedConnection);
         return;
     }
+    m_pending = int(m_urls.size());
     for (int i = 0; i < m_urls.size(); ++i) {
-        QNetworkRequest request(m_urls[i]);
-        request.setTransferTimeout(m_timeoutMs);
-        request.setAttribute(QNetworkRequest::RedirectPolicyAttribute, QNetworkRequest::NoLessSafeRedirectPolicy);
-        QNetworkReply *reply = m_network->get(request);
-        connect(reply, &QNetworkReply::finished, this, [this, i, reply] { onReply(i, reply); });
+        const QUrl url = m_urls[i];
+        const QString file = cacheFile(url);
+        const QString scheme = url.scheme().toLower();
+        if (scheme == u"file")
+            // Never through the network manager: its file backend opens the
+            // path on this thread, and a FIFO would block it.
+            startJob(i, Step::Refresh, [url, file] { return readLocalSource(url, file); });
+        else if (scheme == u"http" || scheme == u"https")
+            startDownload(i);
+        else
+            startJob(i, Step::Refresh, [url, file] {
+                return keepCachedCopy(url, file, QStringLiteral("not an http, https or file URL"));
+            });
     }
 }
 
-void TleSources::onReply(int index, QNetworkReply *reply)
+void TleSources::startDownload(int index)
 {
-    reply->deleteLater();
-    TleSourceStatus &s = m_status[index];
-    const QByteArray body = reply->readAll();
-    const TleReadResult read = readTleText(QString::fromUtf8(body));
-    if (reply->error() != QNetworkReply::NoError) {
-        s.error = reply->errorString();
-        s.fetched = false;
-        loadCached(index);
-    } else if (read.sets.isEmpty()) {
-        // A page that holds no element sets (an error page, a login) must
-        // not replace a good cached copy.
-        s.error = QStringLiteral("the answer holds no element sets");
-        s.fetched = false;
-        loadCached(index);
-    } else {
-        QDir().mkpath(m_cacheDirectory);
-        QSaveFile file(cacheFile(s.url));
-        if (file.open(QIODevice::WriteOnly)) {
-            file.write(body);
-            file.commit();
-        }
-        m_sets[index] = read.sets;
-        s.refusals = read.refusals;
-        s.setCount = int(read.sets.size());
-        s.fetched = true;
-        s.fromCache = false;
-        s.error.clear();
-        s.cachedAt = QDateTime::currentDateTimeUtc();
-    }
-    if (--m_pending == 0)
+    auto *download = new BoundedDownload(m_network, m_urls[index], m_limits, this);
+    m_downloads[index] = download;
+    connect(download, &BoundedDownload::done, this,
+            [this, index, download](const QByteArray &body, const QString &error) {
+                m_downloads[index] = nullptr;
+                download->deleteLater();
+                const QUrl url = m_urls[index];
+                const QString file = cacheFile(url);
+                if (error.isEmpty())
+                    startJob(index, Step::Refresh, [url, file, body] { return takeNewCopy(url, file, body); });
+                else
+                    startJob(index, Step::Refresh, [url, file, error] { return keepCachedCopy(url, file, error); });
+            });
+}
+
+void TleSources::startJob(int index, Step step, std::function<SourceUpdate()> job)
+{
+    const quint64 generation = m_generation;
+    const quint64 sequence = ++m_sequence;
+    auto *watcher = new QFutureWatcher<SourceUpdate>(this);
+    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, index, step, generation, sequence] {
+        watcher->deleteLater();
+        if (generation != m_generation)
+            return; // the list changed meanwhile
+        apply(index, sequence, watcher->result());
+        stepDone(step);
+    });
+    watcher->setFuture(QtConcurrent::run(std::move(job)));
+}
+
+void TleSources::apply(int index, quint64 sequence, const SourceUpdate &update)
+{
+    // A cache load that ends after a refresh of the same source must not
+    // bring back the copy the refresh replaced.
+    if (sequence < m_appliedSequence[index])
+        return;
+    m_appliedSequence[index] = sequence;
+    m_status[index] = update.status;
+    m_sets[index] = update.sets;
+}
+
+void TleSources::stepDone(Step step)
+{
+    int &left = step == Step::Load ? m_loading : m_pending;
+    if (left == 0 || --left > 0)
+        return;
+    emit setsChanged();
+    if (step == Step::Load)
+        emit loaded();
+    else
         emit finished();
 }
 
@@ -137,11 +226,9 @@ QList<Tle> TleSources::sets() const
 QList<ElementAge> staleElements(const QList<Tle> &sets, double julianNow, double limitDays)
 {
     QList<ElementAge> stale;
-    for (const Tle &t : sets) {
-        const double age = julianNow - t.epochJulian();
-        if (age > limitDays)
-            stale.append({&t, age});
-    }
+    for (const Tle &t : sets)
+        if (julianNow - t.epochJulian() > limitDays)
+            stale.append({&t, julianNow - t.epochJulian()});
     return stale;
 }
 

@@ -1,10 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Where element sets come from: a list of URLs (CelesTrak-style group
-// files) fetched over HTTP, each kept in a disk cache so Slew works offline
-// from the last good copy. Fetching is asynchronous and never blocks the
-// event loop; the cache is written atomically.
+// files over HTTP(S), or local files as file:// URLs), each kept in a disk
+// cache so Slew works offline from the last good copy.
+//
+// Nothing here blocks the event loop: downloads are bounded in size and
+// time (BoundedDownload), and reading files, parsing and writing the cache
+// happen on worker threads (elementsetcache.h). A new copy replaces the
+// cached one only when it is plausible (elementsetcheck.h); the cache is
+// written atomically. The window and `slew --update-elements` share this
+// class, its cache directory and the saved list of sources.
 
+#include "boundeddownload.h"
 #include "tle.h"
 
 #include <QDateTime>
@@ -13,36 +20,72 @@
 #include <QString>
 #include <QUrl>
 
+#include <functional>
 #include <optional>
 
 class QNetworkAccessManager;
-class QNetworkReply;
 
 namespace slew::sky {
 
+struct SourceUpdate;
+
+// The limits of one refresh of one source, stated in README and in the
+// messages that report them.
+inline constexpr qint64 kMaxElementSetBytes = 16 * 1024 * 1024; // CelesTrak's "active" group is about 2 MiB
+inline constexpr int kElementSetSilenceMs = 30000;
+inline constexpr int kElementSetTransferMs = 120000;
+
+// The window's list of sources in the settings (Sky → Element sets…), which
+// `slew --update-elements` refreshes when it is given no URL.
+inline constexpr char kElementSetUrlsSettingsKey[] = "sky/elementSetUrls";
+// A source to suggest where none is kept yet.
+inline constexpr char kExampleElementSetUrl[] = "https://celestrak.org/NORAD/elements/gp.php?GROUP=amateur&FORMAT=tle";
+
+QList<QUrl> savedElementSetUrls();
+void saveElementSetUrls(const QList<QUrl> &urls);
+// Where the cached copies live: the same for the window and the command line.
+QString elementSetCacheDirectory();
+// The cached copy of one source in `directory`.
+QString elementSetCacheFile(const QString &directory, const QUrl &url);
+
 struct TleSourceStatus {
     QUrl url;
-    bool fetched = false;      // this run's download worked
-    bool fromCache = false;    // the sets come from the cache
-    QDateTime cachedAt;        // when the cached copy was downloaded (UTC)
-    QString error;             // why the download failed, if it did
+    bool fetched = false;      // this run's refresh brought a new copy, and it was taken
+    bool fromCache = false;    // the sets come from the cached copy
+    QDateTime cachedAt;        // when the copy held now was downloaded (UTC)
+    QString error;             // why a refresh or the cache failed, or the new copy was not taken
     int setCount = 0;
     QList<TleRefusal> refusals;
 };
+
+// One line about a source after a refresh, for the log and the terminal:
+// "URL: replaced, 979 sets", "URL: kept the cached copy (979 sets): why".
+QString describeSource(const TleSourceStatus &status);
+// True when the refresh of this source did not end in a new copy, cached.
+bool sourceFailed(const TleSourceStatus &status);
 
 class TleSources : public QObject {
     Q_OBJECT
 public:
     explicit TleSources(const QString &cacheDirectory, QObject *parent = nullptr);
+    ~TleSources() override;
 
+    // A new list drops a load or a refresh under way (its signal does not
+    // come) and empties the sets until loadFromCache() or refresh().
     void setUrls(const QList<QUrl> &urls);
     QList<QUrl> urls() const { return m_urls; }
-    void setTimeoutMs(int ms) { m_timeoutMs = ms; }
+    // The limits of each download (the defaults above); tests shorten them.
+    void setSilenceLimitMs(int ms) { m_limits.silenceMs = ms; }
+    void setTransferLimitMs(int ms) { m_limits.transferMs = ms; }
 
     // Everything from the cache, with no network: what Slew starts with.
+    // Read on worker threads; emits loaded() (and setsChanged()) when done.
     void loadFromCache();
-    // Download every URL; a URL that fails keeps its cached copy. Emits
-    // finished() once all have answered.
+    bool isLoading() const { return m_loading > 0; }
+    // Fetch every URL; a source whose new copy fails or is not plausible
+    // keeps its cached copy. Emits finished() (and setsChanged()) once all
+    // have answered, at most the transfer limit after this call plus the
+    // time to read what came.
     void refresh();
     bool isRefreshing() const { return m_pending > 0; }
 
@@ -50,22 +93,33 @@ public:
     // The sets the index-th source holds now, as it gave them.
     QList<Tle> setsFrom(qsizetype index) const { return m_sets.value(index); }
     QList<TleSourceStatus> status() const { return m_status; }
-    QString cacheFile(const QUrl &url) const;
+    QString cacheFile(const QUrl &url) const { return elementSetCacheFile(m_cacheDirectory, url); }
 
 signals:
+    void loaded();
     void finished();
+    // After loaded() or finished(): sets() and status() are new.
+    void setsChanged();
 
 private:
-    void onReply(int index, QNetworkReply *reply);
-    void loadCached(int index);
+    enum class Step { Load, Refresh };
+    void startDownload(int index);
+    void startJob(int index, Step step, std::function<SourceUpdate()> job);
+    void apply(int index, quint64 sequence, const SourceUpdate &update);
+    void stepDone(Step step);
 
     QString m_cacheDirectory;
     QList<QUrl> m_urls;
     QList<TleSourceStatus> m_status;
     QList<QList<Tle>> m_sets;
+    QList<quint64> m_appliedSequence; // the newest job each source shows
+    QList<BoundedDownload *> m_downloads;
     QNetworkAccessManager *m_network = nullptr;
+    DownloadLimits m_limits{kMaxElementSetBytes, kElementSetSilenceMs, kElementSetTransferMs};
+    quint64 m_generation = 0; // bumped by setUrls: older jobs are dropped
+    quint64 m_sequence = 0;   // every job's number, in the order started
     int m_pending = 0;
-    int m_timeoutMs = 30000;
+    int m_loading = 0;
 };
 
 // Element sets older than a limit at a time: they predict worse every day

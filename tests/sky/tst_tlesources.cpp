@@ -3,15 +3,26 @@
 // the test runs itself (never the internet), cached on disk, kept when a
 // later fetch fails or brings no sets, merged by catalogue number, and
 // loaded offline from the cache. Ages are checked against a limit.
+//
+// And the answers a careless or hostile server gives: too large (announced,
+// chunked or delimited by the close), dripping, silent, an HTML page with
+// one set, a transfer cut short; a FIFO or a device as a file:// source or
+// as the cache. Each is given up with a message saying what happened, the
+// good copy stays, memory stays bounded and the event loop keeps running.
 
 #include "../common/tinyhttpserver.h"
+#include "sky/elementsetcheck.h"
 #include "sky/tlesources.h"
 
+#include <QElapsedTimer>
+#include <QFile>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 
 #include <memory>
+#include <sys/stat.h>
 
 using namespace slew::sky;
 
@@ -23,12 +34,86 @@ const QByteArray kIss = "ISS (ZARYA)\n"
 const QByteArray kNoaa = "NOAA 19\n"
                          "1 33591U 09005A   18020.91958580  .00000107  00000-0  83477-4 0  9992\n"
                          "2 33591  99.1238 356.1693 0014450  24.0615 336.1228 14.12247534461122\n";
+// 979 real sets: a full group file.
+const QString kFullGroup = QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle");
 
-bool refreshAndWait(TleSources &sources)
+QByteArray fileBytes(const QString &path)
+{
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
+char checksum(const QByteArray &line)
+{
+    int sum = 0;
+    for (char c : line.left(68))
+        sum += (c >= '0' && c <= '9') ? c - '0' : (c == '-' ? 1 : 0);
+    return char('0' + sum % 10);
+}
+
+// `count` distinct sets (the ISS's elements under catalogue numbers from 1):
+// a group file as large as wanted.
+QByteArray manySets(int count)
+{
+    QByteArray text;
+    QByteArray line1 = "1 25544U 98067A   08264.51782528 -.00002182  00000-0 -11606-4 0  2927";
+    QByteArray line2 = "2 25544  51.6416 247.4627 0006703 130.5360 325.0288 15.72125391563537";
+    text.reserve(qsizetype(count) * 160);
+    for (int n = 1; n <= count; ++n) {
+        const QByteArray number = QByteArray::number(n).rightJustified(5, '0');
+        line1.replace(2, 5, number);
+        line2.replace(2, 5, number);
+        line1[68] = checksum(line1);
+        line2[68] = checksum(line2);
+        text += "SAT " + QByteArray::number(n) + '\n' + line1 + '\n' + line2 + '\n';
+    }
+    return text;
+}
+
+bool refreshAndWait(TleSources &sources, int timeoutMs = 20000)
 {
     QSignalSpy done(&sources, &TleSources::finished);
     sources.refresh();
+    return done.count() > 0 || done.wait(timeoutMs);
+}
+
+bool loadAndWait(TleSources &sources)
+{
+    QSignalSpy done(&sources, &TleSources::loaded);
+    sources.loadFromCache();
     return done.count() > 0 || done.wait(20000);
+}
+
+// The process's peak resident memory in KiB since resetPeakMemory().
+qint64 peakMemoryKiB()
+{
+    QFile status(QStringLiteral("/proc/self/status"));
+    if (!status.open(QIODevice::ReadOnly))
+        return -1;
+    for (const QByteArray &line : status.readAll().split('\n'))
+        if (line.startsWith("VmHWM:"))
+            return line.mid(6).trimmed().split(' ').value(0).toLongLong();
+    return -1;
+}
+
+// Reading the cap takes 16 MiB and some copies: 35 to 50 MB measured. The
+// whole answer would take several hundred. The address sanitizer keeps
+// freed memory in quarantine, so its bound is looser.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr qint64 kPeakGrowthLimitKiB = 300 * 1024;
+#else
+constexpr qint64 kPeakGrowthLimitKiB = 80 * 1024;
+#endif
+
+bool resetPeakMemory()
+{
+    QFile clear(QStringLiteral("/proc/self/clear_refs"));
+    return clear.open(QIODevice::WriteOnly) && clear.write("5") == 1;
+}
+
+QString describe(const TleSourceStatus &s)
+{
+    return describeSource(s);
 }
 
 } // namespace
@@ -39,6 +124,16 @@ private slots:
     void fetchesCachesAndFallsBack();
     void errorPageDoesNotReplaceTheCache();
     void staleElements();
+    void plausibility();
+    void answerLargerThanTheCapIsGivenUp_data();
+    void answerLargerThanTheCapIsGivenUp();
+    void slowDripIsGivenUpAtTheTransferLimit();
+    void silenceIsGivenUpAndSaysSo();
+    void oneSetPageDoesNotReplaceAFullCache();
+    void cutOffAnswerDoesNotReplaceAFullCache();
+    void fifoAndDeviceAsSourcesAreRefused();
+    void fifoAsCacheIsRefusedAtLoad();
+    void parsingLeavesTheEventLoopFree();
 };
 
 void TestTleSources::fetchesCachesAndFallsBack()
@@ -58,7 +153,7 @@ void TestTleSources::fetchesCachesAndFallsBack()
     QVERIFY(status[0].fetched && !status[0].fromCache);
     QCOMPARE(status[1].setCount, 2);
     QVERIFY(!status[2].fetched);
-    QVERIFY2(status[2].error.contains(QStringLiteral("Not Found"), Qt::CaseInsensitive), qPrintable(status[2].error));
+    QVERIFY2(status[2].error.contains(QStringLiteral("404 Not Found")), qPrintable(status[2].error));
     QCOMPARE(sources.sets().size(), 2); // merged by catalogue number
     QVERIFY(QFile::exists(sources.cacheFile(server.url("/stations.txt"))));
 
@@ -68,20 +163,16 @@ void TestTleSources::fetchesCachesAndFallsBack()
     owned.reset();
     QVERIFY(refreshAndWait(sources));
     status = sources.status();
-    QVERIFY2(!status[0].fetched && status[0].fromCache,
-             qPrintable(QStringLiteral("fetched %1, from cache %2, error '%3', %4 sets")
-                            .arg(status[0].fetched)
-                            .arg(status[0].fromCache)
-                            .arg(status[0].error)
-                            .arg(status[0].setCount)));
+    QVERIFY2(!status[0].fetched && status[0].fromCache, qPrintable(describe(status[0])));
     QVERIFY(!status[0].error.isEmpty());
     QVERIFY(status[0].cachedAt.isValid());
     QCOMPARE(sources.sets().size(), 2);
 
-    // A new start, offline: everything from the cache, no network at all.
+    // A new start, offline: everything from the cache, no network at all,
+    // read off the event loop and announced by loaded().
     TleSources offline(cache.path());
     offline.setUrls(urls);
-    offline.loadFromCache();
+    QVERIFY(loadAndWait(offline));
     QCOMPARE(offline.sets().size(), 2);
     QVERIFY(offline.status()[1].fromCache);
     QCOMPARE(offline.status()[2].setCount, 0);
@@ -122,6 +213,274 @@ void TestTleSources::staleElements()
     // A source is as current as its newest set: NOAA 19's.
     QVERIFY(!slew::sky::newestEpochJulian({}).has_value());
     QCOMPARE(slew::sky::newestEpochJulian(read.sets).value(), read.sets[1].epochJulian());
+}
+
+void TestTleSources::plausibility()
+{
+    const auto read = [](const QByteArray &text) { return readTleText(QString::fromLatin1(text)); };
+    const QByteArray twenty = manySets(20);
+    // A clean copy with no old one, and one that keeps what the old one had.
+    QVERIFY(whyNotReplace(twenty, read(twenty), {}).isEmpty());
+    QVERIFY(whyNotReplace(twenty, read(twenty), read(manySets(30)).sets).isEmpty()); // 20 of 30 stay
+    // Fewer than half of the old satellites: refused, with the counts.
+    const QString lost = whyNotReplace(twenty, read(twenty), read(manySets(50)).sets);
+    QVERIFY2(lost.contains(QStringLiteral("keeps 20 of the 50 satellites")), qPrintable(lost));
+    // One stray line is allowed; more than one in ten is not.
+    const QByteArray oneStray = kNoaa + "1 broken\n";
+    QVERIFY(whyNotReplace(oneStray, read(oneStray), {}).isEmpty());
+    const QByteArray strays = twenty + "junk one\njunk two\njunk three\n";
+    const QString unclean = whyNotReplace(strays, read(strays), {});
+    QVERIFY2(unclean.contains(QStringLiteral("does not read cleanly")), qPrintable(unclean));
+    // An HTML page with a set inside, even with no old copy.
+    const QByteArray page = "<!DOCTYPE html>\n<html><body><pre>\n" + kIss + "</pre></body></html>\n";
+    const QString html = whyNotReplace(page, read(page), {});
+    QVERIFY2(html.contains(QStringLiteral("HTML page")), qPrintable(html));
+}
+
+void TestTleSources::answerLargerThanTheCapIsGivenUp_data()
+{
+    QTest::addColumn<int>("length");
+    QTest::newRow("Content-Length") << int(TinyHttpAnswer::Length::Announced);
+    QTest::newRow("chunked") << int(TinyHttpAnswer::Length::Chunked);
+    QTest::newRow("until the close") << int(TinyHttpAnswer::Length::UntilClose);
+}
+
+void TestTleSources::answerLargerThanTheCapIsGivenUp()
+{
+    QFETCH(int, length);
+    QTemporaryDir cache;
+    TinyHttpServer server;
+    QVERIFY(server.listen(QHostAddress::LocalHost, 0));
+    server.pages.insert("/active.txt", kIss);
+    TleSources sources(cache.path());
+    sources.setUrls({server.url("/active.txt")});
+    QVERIFY(refreshAndWait(sources));
+    const QByteArray cached = fileBytes(sources.cacheFile(server.url("/active.txt")));
+    QCOMPARE(cached, kIss);
+
+    // 100 MB of valid sets, made by the server as it sends them.
+    TinyHttpAnswer huge;
+    huge.body = kNoaa;
+    huge.generatedBytes = 100 * 1000 * 1000;
+    huge.length = TinyHttpAnswer::Length(length);
+    server.answers.insert("/active.txt", huge);
+    const bool peakKnown = resetPeakMemory();
+    const qint64 peakBefore = peakMemoryKiB();
+    QElapsedTimer clock;
+    clock.start();
+    QVERIFY(refreshAndWait(sources));
+    const qint64 grewKiB = peakMemoryKiB() - peakBefore;
+    qInfo("given up after %lld ms, %lld bytes sent by the server, peak memory grew by %lld KiB%s",
+          qlonglong(clock.elapsed()), qlonglong(server.bytesSent), qlonglong(grewKiB),
+          peakKnown ? "" : " (peak not resettable: since the start)");
+
+    const TleSourceStatus s = sources.status()[0];
+    QVERIFY2(s.error.contains(QStringLiteral("larger than the 16 MiB limit")), qPrintable(describe(s)));
+    QVERIFY(!s.error.contains(QStringLiteral("cancel"), Qt::CaseInsensitive));
+    QVERIFY(!s.fetched && s.fromCache);
+    QCOMPARE(sources.sets().size(), 1);
+    QCOMPARE(fileBytes(sources.cacheFile(server.url("/active.txt"))), cached);
+    QVERIFY(describe(s).startsWith(server.url("/active.txt").toString()));
+    // Read no further than the cap (and what was in flight), and memory
+    // stays near it: far from the 100 MB the server offered.
+    QVERIFY2(server.bytesSent < 40 * 1000 * 1000, qPrintable(QString::number(server.bytesSent)));
+    if (peakKnown)
+        QVERIFY2(grewKiB < kPeakGrowthLimitKiB, qPrintable(QStringLiteral("peak grew by %1 KiB").arg(grewKiB)));
+}
+
+void TestTleSources::slowDripIsGivenUpAtTheTransferLimit()
+{
+    QTemporaryDir cache;
+    TinyHttpServer server;
+    QVERIFY(server.listen(QHostAddress::LocalHost, 0));
+    server.pages.insert("/drip.txt", kIss);
+    TleSources sources(cache.path());
+    sources.setUrls({server.url("/drip.txt")});
+    QVERIFY(refreshAndWait(sources));
+
+    // One byte every 200 ms never trips the silence limit; the whole
+    // transfer's limit (1 s here, 120 s by default) ends it.
+    TinyHttpAnswer drip;
+    drip.body = kNoaa;
+    drip.dripMs = 200;
+    server.answers.insert("/drip.txt", drip);
+    sources.setTransferLimitMs(1000);
+    QElapsedTimer clock;
+    clock.start();
+    QVERIFY(refreshAndWait(sources, 10000));
+    qInfo("the drip was given up after %lld ms", qlonglong(clock.elapsed()));
+    QVERIFY(clock.elapsed() < 5000);
+    const TleSourceStatus s = sources.status()[0];
+    QCOMPARE(s.error, QStringLiteral("took longer than 1 s"));
+    QVERIFY(s.fromCache);
+    QCOMPARE(sources.sets().size(), 1);
+    QCOMPARE(sources.sets()[0].catalogueNumber, 25544);
+    QVERIFY(!sources.isRefreshing()); // Refresh is offered again
+}
+
+void TestTleSources::silenceIsGivenUpAndSaysSo()
+{
+    QTemporaryDir cache;
+    TinyHttpServer server;
+    QVERIFY(server.listen(QHostAddress::LocalHost, 0));
+    TinyHttpAnswer silent;
+    silent.body = kIss;
+    silent.silentAfterHeaders = true;
+    server.answers.insert("/silent.txt", silent);
+    TleSources sources(cache.path());
+    sources.setUrls({server.url("/silent.txt")});
+    sources.setSilenceLimitMs(300);
+    QVERIFY(refreshAndWait(sources, 10000));
+    const TleSourceStatus s = sources.status()[0];
+    QCOMPARE(s.error, QStringLiteral("no data for 300 ms"));
+    QVERIFY(!s.fetched && !s.fromCache);
+    QVERIFY2(describe(s).contains(QStringLiteral("failed, no cached copy")), qPrintable(describe(s)));
+}
+
+void TestTleSources::oneSetPageDoesNotReplaceAFullCache()
+{
+    QTemporaryDir cache;
+    TinyHttpServer server;
+    QVERIFY(server.listen(QHostAddress::LocalHost, 0));
+    const QByteArray full = fileBytes(kFullGroup);
+    server.pages.insert("/amateur.txt", full);
+    TleSources sources(cache.path());
+    sources.setUrls({server.url("/amateur.txt")});
+    QVERIFY(refreshAndWait(sources));
+    QCOMPARE(sources.status()[0].setCount, 979);
+    const QString cacheFile = sources.cacheFile(server.url("/amateur.txt"));
+    QCOMPARE(fileBytes(cacheFile), full);
+
+    // A portal's page with one example set in it.
+    server.pages.insert("/amateur.txt", "<!DOCTYPE html>\n<html>\n<head><title>Maintenance</title></head>\n<body>\n"
+                                        "<p>Back soon. An example:</p>\n<pre>\n"
+                                        + kIss + "</pre>\n</body>\n</html>\n");
+    QVERIFY(refreshAndWait(sources));
+    TleSourceStatus s = sources.status()[0];
+    QVERIFY2(!s.fetched && s.fromCache && s.error.contains(QStringLiteral("HTML page")), qPrintable(describe(s)));
+    QCOMPARE(s.setCount, 979);
+    QCOMPARE(sources.sets().size(), 979);
+    QCOMPARE(fileBytes(cacheFile), full);
+
+    // The same set as plain text: it reads cleanly, but keeps 1 of 979.
+    server.pages.insert("/amateur.txt", kIss);
+    QVERIFY(refreshAndWait(sources));
+    s = sources.status()[0];
+    QVERIFY2(s.error.contains(QStringLiteral("of the 979 satellites in the cached copy")), qPrintable(describe(s)));
+    QVERIFY(describe(s).contains(QStringLiteral("kept the cached copy (979 sets")));
+    QCOMPARE(fileBytes(cacheFile), full);
+
+    // The next start still has all of them.
+    TleSources next(cache.path());
+    next.setUrls(sources.urls());
+    QVERIFY(loadAndWait(next));
+    QCOMPARE(next.sets().size(), 979);
+}
+
+void TestTleSources::cutOffAnswerDoesNotReplaceAFullCache()
+{
+    QTemporaryDir cache;
+    TinyHttpServer server;
+    QVERIFY(server.listen(QHostAddress::LocalHost, 0));
+    const QByteArray full = fileBytes(kFullGroup);
+    server.pages.insert("/amateur.txt", full);
+    TleSources sources(cache.path());
+    sources.setUrls({server.url("/amateur.txt")});
+    QVERIFY(refreshAndWait(sources));
+    const QString cacheFile = sources.cacheFile(server.url("/amateur.txt"));
+    QCOMPARE(fileBytes(cacheFile), full);
+
+    // Cut after 1200 bytes, with the close as the only end: a few sets read.
+    TinyHttpAnswer cut;
+    cut.body = full;
+    cut.cutAfter = 1200;
+    cut.length = TinyHttpAnswer::Length::UntilClose;
+    server.answers.insert("/amateur.txt", cut);
+    QVERIFY(refreshAndWait(sources));
+    TleSourceStatus s = sources.status()[0];
+    QVERIFY2(!s.fetched && s.fromCache && s.error.contains(QStringLiteral("of the 979 satellites")),
+             qPrintable(describe(s)));
+    QCOMPARE(fileBytes(cacheFile), full);
+    QCOMPARE(sources.sets().size(), 979);
+
+    // Cut short of its Content-Length: the transfer itself failed.
+    cut.length = TinyHttpAnswer::Length::Announced;
+    server.answers.insert("/amateur.txt", cut);
+    QVERIFY(refreshAndWait(sources));
+    s = sources.status()[0];
+    QVERIFY2(s.error.contains(QStringLiteral("closed the connection after 1200 of the %1 bytes").arg(full.size())),
+             qPrintable(describe(s)));
+    QCOMPARE(fileBytes(cacheFile), full);
+    QCOMPARE(sources.sets().size(), 979);
+}
+
+void TestTleSources::fifoAndDeviceAsSourcesAreRefused()
+{
+    QTemporaryDir dir;
+    const QString fifo = dir.filePath(QStringLiteral("sets.fifo"));
+    QCOMPARE(::mkfifo(QFile::encodeName(fifo).constData(), 0600), 0);
+    TleSources sources(dir.filePath(QStringLiteral("cache")));
+    sources.setUrls({QUrl::fromLocalFile(fifo), QUrl::fromLocalFile(QStringLiteral("/dev/zero"))});
+    // No writer ever comes to the FIFO, and /dev/zero never ends: both are
+    // refused at once, and nothing waits meanwhile.
+    QElapsedTimer clock;
+    clock.start();
+    QVERIFY(refreshAndWait(sources, 10000));
+    QVERIFY(clock.elapsed() < 5000);
+    const QList<TleSourceStatus> status = sources.status();
+    QVERIFY2(status[0].error.contains(QStringLiteral("FIFO")), qPrintable(describe(status[0])));
+    QVERIFY2(status[1].error.contains(QStringLiteral("character device")), qPrintable(describe(status[1])));
+    QVERIFY(status[0].error.contains(fifo));
+    QVERIFY(sources.sets().isEmpty());
+}
+
+void TestTleSources::fifoAsCacheIsRefusedAtLoad()
+{
+    QTemporaryDir dir;
+    TleSources sources(dir.path());
+    const QUrl url(QStringLiteral("http://127.0.0.1:1/amateur.txt"));
+    sources.setUrls({url});
+    QCOMPARE(::mkfifo(QFile::encodeName(sources.cacheFile(url)).constData(), 0600), 0);
+    QVERIFY(loadAndWait(sources));
+    const TleSourceStatus s = sources.status()[0];
+    QVERIFY2(s.error.contains(QStringLiteral("cached copy cannot be used")) && s.error.contains(QStringLiteral("FIFO")),
+             qPrintable(describe(s)));
+    QVERIFY(!s.fromCache);
+}
+
+void TestTleSources::parsingLeavesTheEventLoopFree()
+{
+    QTemporaryDir cache;
+    TinyHttpServer server;
+    QVERIFY(server.listen(QHostAddress::LocalHost, 0));
+    const QByteArray big = manySets(90000); // about 13 MB, under the cap
+    QVERIFY(big.size() < kMaxElementSetBytes);
+    server.pages.insert("/big.txt", big);
+    TleSources sources(cache.path());
+    sources.setUrls({server.url("/big.txt")});
+
+    // A timer every 10 ms: the longest gap between its ticks is the longest
+    // the event loop was held.
+    QElapsedTimer sinceTick;
+    qint64 longestGapMs = 0;
+    int ticks = 0;
+    QTimer ticker;
+    ticker.setInterval(10);
+    connect(&ticker, &QTimer::timeout, this, [&] {
+        longestGapMs = std::max(longestGapMs, sinceTick.restart());
+        ++ticks;
+    });
+    sinceTick.start();
+    ticker.start();
+    QElapsedTimer clock;
+    clock.start();
+    QVERIFY(refreshAndWait(sources, 60000));
+    ticker.stop();
+    qInfo("%d ticks in %lld ms, the longest gap %lld ms", ticks, qlonglong(clock.elapsed()), qlonglong(longestGapMs));
+    QCOMPARE(sources.status()[0].setCount, 90000);
+    // Parsing these on the test's thread holds it about 650 ms; a busy
+    // machine may pause the thread for a while, never that long.
+    QVERIFY2(longestGapMs < 300, qPrintable(QStringLiteral("the event loop was held %1 ms").arg(longestGapMs)));
 }
 
 QTEST_GUILESS_MAIN(TestTleSources)

@@ -106,13 +106,44 @@ private slots:
         QCOMPARE(slew::ui::ElementSetsDialog::savedAgeLimitDays(), 1.0);
         limit->setValue(7.0);
 
-        // The next start: the same sources from the cache, the server gone.
+        // The next start: the same sources from the cache, the server gone,
+        // read off the event loop while the window is already up.
         server.close();
         WindowFixture next;
         QCOMPARE(next.window->elementSets()->urls().size(), 2);
-        QCOMPARE(next.window->elementSets()->sets().size(), 2);
+        QTRY_COMPARE(next.window->elementSets()->sets().size(), 2);
         QVERIFY(next.window->elementSets()->status()[0].fromCache);
         QCOMPARE(server.requests, 2);
+    }
+
+    // A full copy, then a server that answers with a page holding one set:
+    // the full copy stays, and the dialog and the log say why.
+    void aOneSetPageKeepsTheFullCopyAndSaysWhy()
+    {
+        TinyHttpServer server;
+        QVERIFY(server.listen(QHostAddress::LocalHost, 0));
+        QFile full(QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"));
+        QVERIFY(full.open(QIODevice::ReadOnly));
+        server.pages.insert("/amateur.txt", full.readAll());
+
+        WindowFixture f;
+        auto *dialog = openDialog(f);
+        dialog->findChild<QPlainTextEdit *>(QStringLiteral("elementSetUrls"))->setPlainText(server.url("/amateur.txt").toString());
+        QSignalSpy done(f.window->elementSets(), &slew::sky::TleSources::finished);
+        QVERIFY(dialog->refresh());
+        QVERIFY(done.wait(20000));
+        auto *status = dialog->findChild<QTreeWidget *>(QStringLiteral("elementSetStatus"));
+        QCOMPARE(status->topLevelItem(0)->text(2), QStringLiteral("979"));
+
+        server.pages.insert("/amateur.txt", "<html><body><pre>\n" + kNoaa2018 + "</pre></body></html>\n");
+        QVERIFY(dialog->refresh());
+        QVERIFY(done.wait(20000));
+        const QString state = status->topLevelItem(0)->text(1);
+        QVERIFY2(state.startsWith(QStringLiteral("from the cache: the answer is an HTML page")), qPrintable(state));
+        QCOMPARE(status->topLevelItem(0)->text(2), QStringLiteral("979"));
+        const QString message = dialog->findChild<QLabel *>(QStringLiteral("elementSetMessage"))->text();
+        QVERIFY2(message.contains(QStringLiteral("1 source not refreshed")), qPrintable(message));
+        QCOMPARE(f.window->elementSets()->sets().size(), 979);
     }
 
     void aLineThatIsNotAUrlIsRefusedByNumber()

@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// `slew --update-elements`: argument parsing and one line per source; the
+// downloading, checking and caching are in core/sky. The options are
+// described in cli/.
+
+#include "slew_elements.h"
+
+#include "cli/slewcommandline.h"
+#include "slew_identity.h"
+
+#include "sky/tlesources.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+
+#include <cstdio>
+#include <cstring>
+
+using namespace slew::sky;
+
+namespace {
+
+const char kOption[] = "--update-elements";
+
+int refuse(const QString &message)
+{
+    std::fprintf(stderr, "slew: %s\n", qPrintable(message));
+    return 2;
+}
+
+// The URLs named on the command line, as the window's dialog takes them.
+bool readUrls(const QStringList &texts, QList<QUrl> *urls, QString *error)
+{
+    for (const QString &text : texts) {
+        const QUrl url(text.trimmed(), QUrl::StrictMode);
+        const QString scheme = url.scheme().toLower();
+        if (!url.isValid() || (scheme != u"http" && scheme != u"https" && scheme != u"file")
+            || (scheme != u"file" && url.host().isEmpty())) {
+            *error = QStringLiteral("%1 is not an http, https or file URL").arg(text);
+            return false;
+        }
+        if (!urls->contains(url))
+            urls->append(url);
+    }
+    return true;
+}
+
+} // namespace
+
+bool wantsUpdateElements(int argc, char **argv)
+{
+    for (int i = 1; i < argc; ++i)
+        if (std::strcmp(argv[i], kOption) == 0)
+            return true;
+    return false;
+}
+
+int runUpdateElements(int argc, char **argv)
+{
+    QCoreApplication app(argc, argv);
+    setUpSlewApplication();
+    QCommandLineParser parser;
+    slew::cli::describeTo(parser, slew::cli::slewUpdateElementsMode());
+    parser.addPositionalArgument(QStringLiteral("URL"), QStringLiteral("The sources to refresh."),
+                                 QStringLiteral("[URL…]"));
+    parser.process(app);
+
+    QList<QUrl> urls;
+    QString error;
+    if (!readUrls(parser.positionalArguments(), &urls, &error))
+        return refuse(error);
+    if (urls.isEmpty())
+        urls = savedElementSetUrls();
+    if (urls.isEmpty())
+        return refuse(QStringLiteral("no sources: name URLs (such as %1), or list them in the window "
+                                     "(Sky → Element sets…)")
+                          .arg(QLatin1String(kExampleElementSetUrl)));
+
+    TleSources sources(elementSetCacheDirectory());
+    sources.setUrls(urls);
+    int status = 0;
+    QObject::connect(&sources, &TleSources::finished, &app, [&sources, &status] {
+        QStringList failed;
+        for (const TleSourceStatus &s : sources.status()) {
+            std::fprintf(stdout, "%s\n", qPrintable(describeSource(s)));
+            if (sourceFailed(s))
+                failed << s.url.toString();
+        }
+        std::fflush(stdout);
+        if (!failed.isEmpty()) {
+            std::fprintf(stderr, "slew: %lld of %lld sources not refreshed: %s\n", qlonglong(failed.size()),
+                         qlonglong(sources.status().size()), qPrintable(failed.join(QStringLiteral(", "))));
+            status = 1;
+        }
+        QCoreApplication::exit(status);
+    });
+    sources.refresh();
+    app.exec();
+    return status;
+}

@@ -1,0 +1,11 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// `slew --update-elements [URL…]`: refresh element-set sources into the
+// window's cache with no window, so a station can refresh from a timer. The
+// work is in core/sky's TleSources, shared with the window.
+
+bool wantsUpdateElements(int argc, char **argv);
+
+// Returns the exit code: 0 every source refreshed, 1 one or more did not
+// (each named), 2 bad arguments or no sources.
+int runUpdateElements(int argc, char **argv);
