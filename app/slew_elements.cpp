@@ -62,7 +62,7 @@ int runUpdateElements(int argc, char **argv)
     QCommandLineParser parser;
     slew::cli::describeTo(parser, slew::cli::slewUpdateElementsMode());
     parser.addPositionalArgument(QStringLiteral("URL"), QStringLiteral("The sources to refresh."),
-                                 QStringLiteral("[URL…]"));
+                                 QStringLiteral("[URL...]"));
     parser.process(app);
 
     QList<QUrl> urls;

@@ -236,7 +236,7 @@ int runHeadless(int argc, char *argv[])
     } else {
         for (const char *option : {"tle", "min-el", "clock-start", "clock-rate"}) {
             if (parser.isSet(QString::fromLatin1(option)))
-                return fail(QStringLiteral("%1 goes with track").arg(label(QString::fromLatin1(option))));
+                return fail(QStringLiteral("%1 goes with --track").arg(label(QString::fromLatin1(option))));
         }
     }
 

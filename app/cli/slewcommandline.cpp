@@ -73,7 +73,7 @@ ProgramMode makeWindowMode()
         "wizard. Without --connect it opens the last connection, or the built-in simulator the first time. "
         "The same program runs as a station service (slew --headless --help), tunes a rotator without a "
         "window (slew --tune URI --help), predicts passes (slew --passes SAT --help, slew --where SAT --help) and "
-        "refreshes the element sets the window uses (slew --update-elements [URL…], slew --update-elements --help).");
+        "refreshes the element sets the window uses (slew --update-elements [URL...], slew --update-elements --help).");
     mode.options = {
         connectOption(QStringLiteral("Connect to URI at start: serial:/dev/ttyUSB0?baud=19200, tcp://HOST:PORT, "
                                      "rotctld://HOST:PORT or sim:?az_max=450.")),
@@ -260,12 +260,12 @@ ProgramMode makeUpdateElementsMode()
 {
     ProgramMode mode;
     mode.title = QStringLiteral("Refreshing element sets");
-    mode.synopsis = QStringLiteral("slew --update-elements [URL…]");
+    mode.synopsis = QStringLiteral("slew --update-elements [URL...]");
     mode.description =
         QStringLiteral(
             "Refreshes element-set sources (http, https or file URLs) into the cache the window reads, with no "
             "window, so a station can refresh from a timer. Without a URL it refreshes the sources listed in the "
-            "window (Sky → Element sets…). It prints one line per source: the URL, how many sets it holds, and "
+            "window (Sky, Element sets). It prints one line per source: the URL, how many sets it holds, and "
             "whether the new copy replaced the cached one or the cached copy was kept, and why. A download is "
             "given up when it is larger than %1, sends no data for %2 or takes longer than %3 in all. A new copy "
             "replaces the cached one only when it reads cleanly (at most one entry in ten refused, not an HTML "

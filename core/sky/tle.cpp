@@ -219,7 +219,10 @@ TleReadResult readTleText(const QString &text)
         if (line.startsWith(QStringLiteral("1 "))) {
             const QString next = i + 1 < lines.size() ? lines[i + 1].trimmed() : QString();
             if (!next.startsWith(QStringLiteral("2 "))) {
-                result.refusals.append({lineNumber + 1, QStringLiteral("line 1 is not followed by a line 2")});
+                // The line where the line 2 should be; the line 1 itself when
+                // the file ends there (a download cut short).
+                const int where = i + 1 < lines.size() ? lineNumber + 1 : lineNumber;
+                result.refusals.append({where, QStringLiteral("line 1 is not followed by a line 2")});
                 pendingName.clear();
                 continue;
             }

@@ -208,19 +208,9 @@ QList<Tle> TleSources::sets() const
 {
     // A satellite listed by several sources is kept once, with its newest set.
     QList<Tle> all;
-    QHash<int, qsizetype> where;
-    for (const QList<Tle> &sets : m_sets) {
-        for (const Tle &t : sets) {
-            const auto it = where.find(t.catalogueNumber);
-            if (it == where.end()) {
-                where.insert(t.catalogueNumber, all.size());
-                all.append(t);
-            } else if (all[*it].epochJulian() < t.epochJulian()) {
-                all[*it] = t;
-            }
-        }
-    }
-    return all;
+    for (const QList<Tle> &sets : m_sets)
+        all += sets;
+    return mergeByCatalogueNumber(all);
 }
 
 QList<ElementAge> staleElements(const QList<Tle> &sets, double julianNow, double limitDays)

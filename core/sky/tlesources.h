@@ -31,7 +31,7 @@ struct SourceUpdate;
 
 // The limits of one refresh of one source, stated in README and in the
 // messages that report them.
-inline constexpr qint64 kMaxElementSetBytes = 16 * 1024 * 1024; // CelesTrak's "active" group is about 2 MiB
+inline constexpr qint64 kMaxElementSetBytes = kLargestElementFile; // tle.h: one cap for files and downloads
 inline constexpr int kElementSetSilenceMs = 30000;
 inline constexpr int kElementSetTransferMs = 120000;
 

@@ -519,7 +519,7 @@ void HeadlessTest::refusesABadTrack()
     const QList<QPair<QStringList, QByteArray>> cases{
         {{"--track", "FLOCK 2P-1", "--tle", tle}, "--track needs --qth"},
         {{"--track", "FLOCK 2P-1", "--qth", "JO65hq"}, "needs --tle"},
-        {{"--track", "NO SUCH BIRD", "--qth", "JO65hq", "--tle", tle}, "no such satellite"},
+        {{"--track", "NO SUCH BIRD", "--qth", "JO65hq", "--tle", tle}, "no satellite 'NO SUCH BIRD' in"},
         {{"--track", "sun", "--qth", "JO65hq", "--clock-rate", "5"}, "--clock-rate"},
         {{"--track", "sun", "--qth", "JO65hq", "--clock-start", "yesterday"}, "--clock-start"},
         {{"--track", "moon", "--qth", "JO65hq", "--min-el", "95"}, "--min-el"},

@@ -77,7 +77,7 @@ void TestObservation::refusedStations_data()
     QTest::newRow("subsquare beyond X") << QStringLiteral("JO65hz") << QStringLiteral("letters A to X");
     QTest::newRow("letter for digit") << QStringLiteral("JOx5") << QStringLiteral("digits");
     QTest::newRow("latitude 91") << QStringLiteral("91,0") << QStringLiteral("latitude");
-    QTest::newRow("not numbers") << QStringLiteral("north,10") << QStringLiteral("must be numbers");
+    QTest::newRow("not numbers") << QStringLiteral("north,10") << QStringLiteral("must be finite numbers");
     QTest::newRow("too many fields") << QStringLiteral("1,2,3,4") << QStringLiteral("LAT,LON");
     QTest::newRow("height in the sky") << QStringLiteral("10,10,50000") << QStringLiteral("height");
 }

@@ -55,7 +55,17 @@ private slots:
     void duplicatesKeepTheNewestEpoch();
     void ambiguousNamesAreRefusedNamingTheMatches();
     void filesThatAreNotFilesAreRefused();
+    void fileCutAfterALine1NamesALineOfIt();
 };
+
+void TestTle::fileCutAfterALine1NamesALineOfIt()
+{
+    // Found by fuzz_tle: a download cut after a line 1 was refused at a
+    // line past the end of the file.
+    const TleReadResult read = readTleText(kIssName + u'\n' + kIss1);
+    QCOMPARE(read.refusals.size(), 1);
+    QCOMPARE(read.refusals[0].line, 2);
+}
 
 void TestTle::notANumberIsRefusedInEveryField_data()
 {
