@@ -150,11 +150,17 @@ private slots:
         write(path, "[General]\nstation=AA00aa\n");
         if (!chattr(QStringLiteral("+i"), path))
             QSKIP("chattr +i is not possible here (not root, or the file system has no immutable flag)");
-        QSettings settings(path, QSettings::IniFormat);
-        const QString why = saveSetting(settings, QStringLiteral("station"), QStringLiteral("FN31pr"));
+        QString why;
+        {
+            // Gone before the flag is: QSettings writes again when it is
+            // destroyed, and on the event loop that chattr's wait runs.
+            QSettings settings(path, QSettings::IniFormat);
+            why = saveSetting(settings, QStringLiteral("station"), QStringLiteral("FN31pr"));
+        }
+        const QByteArray held = contents(path);
         QVERIFY(chattr(QStringLiteral("-i"), path));
         QVERIFY2(why.contains(path), qPrintable(why));
-        QCOMPARE(contents(path), QByteArray("[General]\nstation=AA00aa\n"));
+        QCOMPARE(held, QByteArray("[General]\nstation=AA00aa\n"));
     }
 
 private:
