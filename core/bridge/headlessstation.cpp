@@ -229,6 +229,7 @@ void HeadlessStation::shutdown(const QString &why)
     }
     for (Rotor &rotor : m_rotors) {
         const QString who = rotor.number > 0 ? tr("rotor %1: ").arg(rotor.number) : QString();
+        rotor.session->reportHeldBack(); // the journal gets the count of what it was spared
         if (session::stopThenCall(*rotor.session, this, [this] {
                 if (--m_stillStopping == 0)
                     emit finished();

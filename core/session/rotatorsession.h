@@ -175,6 +175,12 @@ public:
     CommandResult setCalibration(int rotor, CalibrationPoint point, int value);
 
 public slots:
+    // What the log allowance has held back about the controller's replies,
+    // said now as one summary line (if anything was): for a service about
+    // to exit, which would otherwise lose the count. The session says it
+    // by itself when the link closes, and ControllerLogAllowance::kSummaryMs
+    // after a line was first held back.
+    void reportHeldBack();
     void connectTo(const QString &uri);
     void disconnectFromRotator();
 
@@ -262,8 +268,6 @@ private:
     void clearBadFrames();
     // A line about what the controller sent, through the allowance.
     void reportFromController(ControllerLogAllowance::Kind kind, const QString &line);
-    // The count of lines the allowance held back, as one line, if any.
-    void reportHeldBack();
     void noteUnreadable(const QString &reason);
     void clearUnreadable();
     void apply(const protocol::Message &m);
