@@ -26,7 +26,6 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
-#include <QSettings>
 
 #include <cstdio>
 #include <cstring>
@@ -138,12 +137,21 @@ int main(int argc, char *argv[])
         return 2;
     }
 
-    if (!args.station.isEmpty())
-        QSettings().setValue(QLatin1String(slew::sky::kStationSettingsKey), args.station);
+    const QString settingsProblem = checkSettingsFile();
+    if (!args.station.isEmpty()) {
+        // Said kept only when it is: a later --passes would use the old one.
+        if (const QString why = slew::model::saveSetting(QLatin1String(slew::sky::kStationSettingsKey), args.station);
+            !why.isEmpty()) {
+            std::fprintf(stderr, "slew: --qth: the station was not saved: %s\n", qPrintable(why));
+            return 1;
+        }
+    }
 
     slew::session::RotatorSession session;
     slew::ui::MainWindow window(&session);
     window.show();
+    if (!settingsProblem.isEmpty())
+        window.reportProblem(settingsProblem);
 
     QString uri = args.connectUri;
     auto dialect = args.dialect;

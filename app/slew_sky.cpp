@@ -405,5 +405,6 @@ int runSky(int argc, char **argv)
 {
     QCoreApplication app(argc, argv);
     setUpSlewApplication();
+    checkSettingsFile(); // the saved station is read from them
     return hasOption(argc, argv, "--passes") ? runPasses(app) : runWhere(app);
 }

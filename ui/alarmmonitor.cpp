@@ -40,6 +40,9 @@ AlarmMonitor::AlarmMonitor(RotatorSession *session, QObject *parent) : QObject(p
     connect(session, &RotatorSession::badFramesAlarm, this, [this](bool on, const QString &text) {
         setAlarm(QStringLiteral("checksum"), on, tr("Damaged replies: %1").arg(text));
     });
+    connect(session, &RotatorSession::unreadableRepliesAlarm, this, [this](bool on, const QString &text) {
+        setAlarm(QStringLiteral("unreadable"), on, tr("Unreadable replies: %1").arg(text));
+    });
     connect(session, &RotatorSession::alarmReceived, this,
             [this](const QString &text) { log(Severity::Alarm, tr("Controller alarm: %1").arg(text)); });
     // A refused move goes on the banner (which logs it); other refusals, such

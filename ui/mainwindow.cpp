@@ -276,6 +276,12 @@ void MainWindow::logInfo(const QString &text)
     statusBar()->showMessage(text, 8000);
 }
 
+void MainWindow::reportProblem(const QString &text)
+{
+    m_log->addEvent(QDateTime::currentDateTime(), AlarmMonitor::Severity::Warning, text);
+    statusBar()->showMessage(text, 30000);
+}
+
 QWidget *MainWindow::buildControlColumn()
 {
     auto *column = new QWidget;

@@ -88,6 +88,9 @@ public slots:
     void openSetupWizard();
     // Sky → Element sets…
     void openElementSets();
+    // Something outside the rotator went wrong (the settings file could not
+    // be read, ...): a warning in the event log and the status bar.
+    void reportProblem(const QString &text);
 
 private:
     QWidget *buildControlColumn();

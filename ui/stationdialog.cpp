@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "stationdialog.h"
 
+#include "model/settingsfile.h"
+
 #include <QDialogButtonBox>
 #include <QLabel>
 #include <QLineEdit>
@@ -66,8 +68,15 @@ void StationDialog::accept()
     sky::Station parsed;
     if (!sky::parseStation(m_edit->text(), &parsed, &error))
         return;
+    // The dialog stays open, saying why, when the settings file cannot take
+    // the station: closing would claim it was kept.
+    if (const QString why = model::saveSetting(QLatin1String(sky::kStationSettingsKey), m_edit->text().trimmed());
+        !why.isEmpty()) {
+        m_feedback->setText(tr("The station was not saved: %1").arg(why));
+        m_feedback->setProperty("refused", true);
+        return;
+    }
     m_station = parsed;
-    QSettings().setValue(QLatin1String(sky::kStationSettingsKey), m_edit->text().trimmed());
     QDialog::accept();
 }
 

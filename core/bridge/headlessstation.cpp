@@ -92,9 +92,14 @@ HeadlessStation::Rotor &HeadlessStation::addRotor(int number, const model::Rotat
     connect(s, &RotatorSession::stateChanged, this, [say](RotatorSession::State, const QString &detail) {
         say(tr("link: %1").arg(detail));
     });
+    // Lines about what the controller sent come escaped and rate-limited;
+    // a controller alarm is among them ("controller alarm: ..."), so it is
+    // not logged a second time from alarmReceived, which is not limited.
     connect(s, &RotatorSession::errorOccurred, this, [say](const QString &m) { say(tr("error: %1").arg(m)); });
+    connect(s, &RotatorSession::unreadableRepliesAlarm, this, [say](bool on, const QString &text) {
+        say(on ? tr("alarm: %1").arg(text) : tr("cleared: the controller's replies are readable again"));
+    });
     connect(s, &RotatorSession::commandRefused, this, [say](const QString &m) { say(tr("refused: %1").arg(m)); });
-    connect(s, &RotatorSession::alarmReceived, this, [say](const QString &m) { say(tr("alarm: %1").arg(m)); });
     connect(s, &RotatorSession::versionChanged, this, [say](const QString &v) { say(tr("controller: %1").arg(v)); });
     connect(s, &RotatorSession::targetChanged, this, [this, say](double az, double el) {
         // A tracked pass sends a target every second or two: its plan and
@@ -224,6 +229,7 @@ void HeadlessStation::shutdown(const QString &why)
     }
     for (Rotor &rotor : m_rotors) {
         const QString who = rotor.number > 0 ? tr("rotor %1: ").arg(rotor.number) : QString();
+        rotor.session->reportHeldBack(); // the journal gets the count of what it was spared
         if (session::stopThenCall(*rotor.session, this, [this] {
                 if (--m_stillStopping == 0)
                     emit finished();

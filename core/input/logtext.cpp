@@ -26,7 +26,7 @@ QString loggableText(const QString &text, int maxChars)
 bool LogAllowance::take(qint64 nowMs)
 {
     if (m_lastMs >= 0)
-        m_tokens = std::min(kBurst, m_tokens + (nowMs - m_lastMs) / 1000.0 * kPerSecond);
+        m_tokens = std::min(m_burst, m_tokens + std::max<qint64>(0, nowMs - m_lastMs) / 1000.0 * m_perSecond);
     m_lastMs = nowMs;
     if (m_tokens >= 1.0) {
         m_tokens -= 1.0;

@@ -20,6 +20,11 @@ public:
     static constexpr double kBurst = 20.0;
     static constexpr double kPerSecond = 2.0;
 
+    LogAllowance() = default;
+    // A source that may speak thousands of times a second (a controller)
+    // gets a smaller burst and a slower rate than a client typing commands.
+    LogAllowance(double burst, double perSecond) : m_burst(burst), m_perSecond(perSecond), m_tokens(burst) {}
+
     // Whether one more line may be written at time `nowMs`.
     bool take(qint64 nowMs);
     // Lines refused since the last call, and resets the count.
@@ -27,6 +32,8 @@ public:
     int suppressed() const { return m_suppressed; }
 
 private:
+    double m_burst = kBurst;
+    double m_perSecond = kPerSecond;
     double m_tokens = kBurst;
     qint64 m_lastMs = -1;
     int m_suppressed = 0;

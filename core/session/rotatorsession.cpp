@@ -5,6 +5,7 @@
 
 #include "rotatorsession.h"
 
+#include "input/logtext.h"
 #include "protocol/encoder.h"
 #include "protocol/operations.h"
 #include "transport/link.h"
@@ -25,6 +26,14 @@ namespace {
 
 constexpr int kMaxReconnectDelayMs = 30000;
 constexpr qint64 kEchoWindowMs = 1000;
+// How much of a controller's bad line a log line quotes (escaped).
+constexpr int kQuotedChars = 60;
+
+QString quoted(QByteArrayView bytes)
+{
+    return input::loggableText(QString::fromLatin1(bytes.first(std::min<qsizetype>(bytes.size(), 4 * kQuotedChars))),
+                               kQuotedChars);
+}
 } // namespace
 
 RotatorSession::RotatorSession(QObject *parent) : QObject(parent), m_queue(m_options.maxQueue)
@@ -44,6 +53,9 @@ RotatorSession::RotatorSession(QObject *parent) : QObject(parent), m_queue(m_opt
     connect(&m_keepAliveTimer, &LinkTimer::timeout, this, &RotatorSession::keepAlive);
     m_stopHoldTimer.setSingleShot(true);
     connect(&m_stopHoldTimer, &LinkTimer::timeout, this, &RotatorSession::sendStopHold);
+    m_heldBackReport.setSingleShot(true);
+    m_heldBackReport.setInterval(ControllerLogAllowance::kSummaryMs);
+    connect(&m_heldBackReport, &LinkTimer::timeout, this, &RotatorSession::reportHeldBack);
     setProfile(m_profile);
 }
 
@@ -145,7 +157,7 @@ void RotatorSession::openLink()
         return;
     }
     m_link = std::move(made.link);
-    for (LinkTimer *t : {&m_replyTimer, &m_pollTimer, &m_staleTimer, &m_stopHoldTimer, &m_keepAliveTimer})
+    for (LinkTimer *t : {&m_replyTimer, &m_pollTimer, &m_staleTimer, &m_stopHoldTimer, &m_keepAliveTimer, &m_heldBackReport})
         t->followClockOf(m_link.get());
     connect(m_link.get(), &transport::Link::opened, this, &RotatorSession::onLinkOpened);
     connect(m_link.get(), &transport::Link::failed, this, &RotatorSession::onLinkDown);
@@ -174,6 +186,7 @@ void RotatorSession::onLinkOpened()
     m_failedPolls = 0;
     m_pollCount = 0;
     m_textLinesSkipped = 0;
+    m_unreadableReplies = 0;
     updatePollPace(); // at the rate of this link's line
     setState(State::Connected, tr("connected to %1").arg(m_uri));
     startProbe();
@@ -218,6 +231,11 @@ void RotatorSession::dropLink(const QString &reason)
     // target, even one repeated, must go out on the new link.
     m_activeTarget.reset();
     clearBadFrames();
+    clearUnreadable();
+    // What the allowance held back is said now: the timer would not run
+    // without a link, and the count belongs to this connection.
+    m_heldBackReport.stop();
+    reportHeldBack();
     if (m_link) {
         m_link->disconnect(this);
         m_link->device()->disconnect(this);
@@ -266,15 +284,49 @@ void RotatorSession::onFrame(protocol::FrameCheck check, QByteArrayView line)
     // unanswered times out and is retried as if the line had been lost.
     ++m_checksumFailures;
     ++m_badFramesInARow;
-    const QString text = tr("refused a reply with %1: '%2'")
-                             .arg(QString::fromLatin1(protocol::describe(check)),
-                                  QString::fromLatin1(line.first(std::min<qsizetype>(line.size(), 40)).toByteArray()).trimmed());
-    if (m_badFramesInARow == 1)
-        emit errorOccurred(text); // the first of a run; the alarm speaks for the rest
+    if (m_badFramesInARow == 1) { // the first of a run; the alarm speaks for the rest
+        reportFromController(ControllerLogAllowance::Kind::Damaged,
+                             tr("refused a reply with %1: '%2'")
+                                 .arg(QString::fromLatin1(protocol::describe(check)), quoted(line.trimmed())));
+    }
     if (m_badFramesInARow == kBadFramesAlarm)
         emit badFramesAlarm(true, tr("%1 replies in a row failed their checksum; last: %2")
                                       .arg(kBadFramesAlarm)
                                       .arg(QString::fromLatin1(protocol::describe(check))));
+}
+
+void RotatorSession::reportFromController(ControllerLogAllowance::Kind kind, const QString &line)
+{
+    const QStringList lines = m_controllerLog.take(kind, nowMs(), line);
+    for (const QString &l : lines)
+        emit errorOccurred(l);
+    if (m_controllerLog.holdsBack() && !m_heldBackReport.isActive())
+        m_heldBackReport.start();
+}
+
+void RotatorSession::reportHeldBack()
+{
+    if (const QString summary = m_controllerLog.takeSummary(); !summary.isEmpty())
+        emit errorOccurred(summary);
+}
+
+void RotatorSession::noteUnreadable(const QString &reason)
+{
+    ++m_unreadableReplies;
+    const qint64 now = nowMs();
+    if (m_unreadable.noteUnreadable(now))
+        emit unreadableRepliesAlarm(true, tr("the controller's replies are unreadable: %1 in the last %2 s (last: %3)")
+                                              .arg(m_unreadable.inWindow(now))
+                                              .arg(UnreadableReplies::kWindowSeconds)
+                                              .arg(reason));
+}
+
+void RotatorSession::clearUnreadable()
+{
+    const bool raised = m_unreadable.raised();
+    m_unreadable.reset();
+    if (raised)
+        emit unreadableRepliesAlarm(false, {});
 }
 
 void RotatorSession::clearBadFrames()
@@ -317,6 +369,8 @@ void RotatorSession::apply(const Message &m)
         ++m_echoesIgnored;
         return;
     }
+    if (m.op != Op::Invalid && m.op != Op::Alarm && m_unreadable.noteReadable(nowMs()))
+        emit unreadableRepliesAlarm(false, {});
     switch (m.op) {
     case Op::Azimuth:
         m_az = m.value + azimuthOffset();
@@ -369,22 +423,29 @@ void RotatorSession::apply(const Message &m)
             // to fail the poll it came before.
             if (m_textLinesSkipped++ == 0)
                 emit errorOccurred(tr("the controller writes text lines among its replies (first: '%1'); "
-                                      "they are skipped").arg(text.trimmed().left(60)));
+                                      "they are skipped").arg(quoted(m.text.view().trimmed())));
             return;
         }
         // The controller may have refused the target, or stopped: resend it.
         m_activeTarget.reset();
         emit alarmReceived(text);
-        emit errorOccurred(tr("controller alarm: %1").arg(text));
+        reportFromController(ControllerLogAllowance::Kind::Alarm,
+                             tr("controller alarm: %1").arg(quoted(m.text.view())));
         if (m_onWire)
             finishFront(false, tr("the controller answered with alarm %1").arg(text));
         return;
     }
-    case Op::Invalid:
-        emit errorOccurred(tr("unreadable reply '%1': %2")
-                               .arg(QString::fromLatin1(m.text.view().toByteArray().left(40)),
-                                    QString::fromLatin1(m.reason)));
+    case Op::Invalid: {
+        // Nothing in it is used; a poll it stood in for times out and is
+        // retried. Readable replies around it are used as ever.
+        const QString reason = QString::fromLatin1(m.reason);
+        // A refused SPID frame carries no text, only the reason.
+        reportFromController(ControllerLogAllowance::Kind::Unreadable,
+                             m.text.isEmpty() ? tr("unreadable reply: %1").arg(reason)
+                                              : tr("unreadable reply '%1': %2").arg(quoted(m.text.view()), reason));
+        noteUnreadable(reason);
         return;
+    }
     default:
         break; // Easycomm II controllers may report UP/DN/modes; nothing to do with them
     }

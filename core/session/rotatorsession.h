@@ -8,6 +8,7 @@
 // stop, park, home, config) into the dialect's bytes after checking the
 // profile's limits. Everything is driven by signals; nothing here waits.
 
+#include "controllerlogallowance.h"
 #include "linktimer.h"
 #include "model/movegate.h"
 #include "model/rotatorprofile.h"
@@ -17,6 +18,7 @@
 #include "requestqueue.h"
 #include "transport/linkfactory.h"
 #include "sessiontypes.h"
+#include "unreadablereplies.h"
 
 #include <QElapsedTimer>
 #include <QHash>
@@ -150,6 +152,12 @@ public:
     // Text lines a SPID controller wrote among its binary replies (MD-01
     // firmware logs so); skipped, and reported once a connection.
     int textLinesSkipped() const { return m_textLinesSkipped; }
+    // Replies this connection that no parser could read (garbage, SPID
+    // frames with digits out of range, bytes outside a frame). Each is
+    // logged through a small allowance (controllerlogallowance.h), and a
+    // stream of them is a condition: unreadableRepliesAlarm().
+    qint64 unreadableReplies() const { return m_unreadableReplies; }
+    bool unreadableRepliesAlarmed() const { return m_unreadable.raised(); }
     void setPolling(bool enabled);
 
     // The Micro-2g program's two-point calibration (docs/protocol.md,
@@ -167,6 +175,12 @@ public:
     CommandResult setCalibration(int rotor, CalibrationPoint point, int value);
 
 public slots:
+    // What the log allowance has held back about the controller's replies,
+    // said now as one summary line (if anything was): for a service about
+    // to exit, which would otherwise lose the count. The session says it
+    // by itself when the link closes, and ControllerLogAllowance::kSummaryMs
+    // after a line was first held back.
+    void reportHeldBack();
     void connectTo(const QString &uri);
     void disconnectFromRotator();
 
@@ -228,6 +242,14 @@ signals:
     // or a good one has arrived since (off). Nothing from a refused line is
     // acted on; the alarm says the link itself is damaging what it carries.
     void badFramesAlarm(bool on, const QString &text);
+    // The controller's replies are unreadable as a stream, not now and then
+    // (unreadablereplies.h): raised once with how many came in how long;
+    // off when readable replies have come back for a while, or the link
+    // closes. Readable replies among the garbage are still used meanwhile.
+    void unreadableRepliesAlarm(bool on, const QString &text);
+    // Something went wrong. Lines about what the controller sent are
+    // escaped, cut and rate-limited here, with a summary of what was held
+    // back, so every receiver may log each one as it comes.
     void errorOccurred(const QString &message);
     // The Micro-2g listings, read (requestCalibration() and the rest above).
     void calibrationReceived(int rotor, const slew::protocol::Micro2gCalibration &calibration);
@@ -244,6 +266,10 @@ private:
     void onReadyRead();
     void onFrame(protocol::FrameCheck check, QByteArrayView line);
     void clearBadFrames();
+    // A line about what the controller sent, through the allowance.
+    void reportFromController(ControllerLogAllowance::Kind kind, const QString &line);
+    void noteUnreadable(const QString &reason);
+    void clearUnreadable();
     void apply(const protocol::Message &m);
     void applyPosition();
     void applyInput(int index, double value);
@@ -361,6 +387,10 @@ private:
     int m_echoesIgnored = 0;
     int m_replyTimeoutMs = 500;
     int m_textLinesSkipped = 0;
+    ControllerLogAllowance m_controllerLog;
+    LinkTimer m_heldBackReport; // a summary does not wait for the next allowed line for ever
+    UnreadableReplies m_unreadable;
+    qint64 m_unreadableReplies = 0;
     bool m_deviceEchoes = false; // this controller was seen echoing what it hears
 };
 

@@ -73,6 +73,9 @@ public:
     QList<QByteArray> received; // every line, without terminator
     // Return a non-empty answer to override the default for a line.
     std::function<QByteArray(const QByteArray &line)> script;
+    // A binary dialect (SPID frames) has no lines: when set, every write is
+    // handed over whole, and what it returns is the answer.
+    std::function<QByteArray(const QByteArray &bytes)> binary;
 
     static constexpr double kSliceSeconds = 0.005;
 
@@ -122,6 +125,10 @@ public:
     }
     void bytesWritten(const QByteArray &bytes)
     {
+        if (binary) {
+            push(binary(bytes));
+            return;
+        }
         m_buffer += bytes;
         qsizetype end;
         while ((end = m_buffer.indexOf('\n')) >= 0) {

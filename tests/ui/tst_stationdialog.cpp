@@ -1,15 +1,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Sky → Station…: the text is checked as it is typed, OK is disabled while
-// it is wrong, and an accepted station is kept in the settings.
+// it is wrong, and an accepted station is kept in the settings, or the
+// dialog stays open saying why it could not be.
 
 #include "stationdialog.h"
 
 #include <QDialogButtonBox>
+#include <QFile>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSettings>
 #include <QStandardPaths>
+#include <QTemporaryDir>
 #include <QTest>
 
 using slew::ui::StationDialog;
@@ -63,6 +66,29 @@ private slots:
         // A new dialog starts from the saved station.
         StationDialog again;
         QCOMPARE(again.findChild<QLineEdit *>(QStringLiteral("stationEdit"))->text(), text);
+    }
+
+    // Settings that cannot be written (here a file where their directory
+    // goes): OK leaves the dialog open saying so, naming the file, instead
+    // of closing as if the station were kept. Last: it moves the settings.
+    void aStationThatCannotBeSavedIsSaidSo()
+    {
+        QTemporaryDir dir;
+        QFile notADirectory(dir.filePath(QStringLiteral("config")));
+        QVERIFY(notADirectory.open(QIODevice::WriteOnly));
+        notADirectory.close();
+        QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, notADirectory.fileName());
+        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, notADirectory.fileName());
+        StationDialog dialog;
+        dialog.show();
+        auto *edit = dialog.findChild<QLineEdit *>(QStringLiteral("stationEdit"));
+        auto *label = dialog.findChild<QLabel *>(QStringLiteral("stationFeedback"));
+        edit->setText(QStringLiteral("FN31pr"));
+        dialog.findChild<QDialogButtonBox *>()->button(QDialogButtonBox::Ok)->click();
+        QVERIFY(dialog.isVisible());
+        QCOMPARE(dialog.result(), int(QDialog::Rejected));
+        QVERIFY2(label->text().contains(QStringLiteral("not saved")) && label->text().contains(QSettings().fileName()),
+                 qPrintable(label->text()));
     }
 };
 

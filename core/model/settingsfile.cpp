@@ -1,0 +1,139 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "settingsfile.h"
+
+#include "input/boundedfile.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFileInfo>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+
+#include <optional>
+
+namespace slew::model {
+
+namespace {
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("SettingsFile", text);
+}
+
+// The settings in `bytes`, read by QSettings from a file of their own: a
+// path no QSettings in this process has used, so none of its cache.
+struct Copy {
+    QSettings::Status status = QSettings::AccessError;
+    QVariant value;
+};
+
+Copy readCopy(const QByteArray &bytes, const QString &key)
+{
+    QTemporaryDir dir;
+    QFile file(dir.filePath(QStringLiteral("copy.conf")));
+    if (!dir.isValid() || !file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size())
+        return {};
+    file.close();
+    QSettings settings(file.fileName(), QSettings::IniFormat);
+    return {settings.status(), key.isEmpty() ? QVariant() : settings.value(key)};
+}
+
+// Why the file at `path` is no settings file, or nothing.
+std::optional<QString> unreadable(const QString &path)
+{
+    if (!QFileInfo(path).isFile())
+        return tr("%1 is not a regular file").arg(path);
+    const input::BoundedRead read = input::readBoundedFile(path, kMaxSettingsFileBytes);
+    if (!read.ok())
+        return read.error;
+    if (readCopy(read.bytes, {}).status == QSettings::FormatError)
+        return tr("%1 is not in the settings format").arg(path);
+    return std::nullopt;
+}
+
+QString asideName(const QString &path, const QDateTime &now)
+{
+    const QString base = path + QStringLiteral(".broken-") + now.toString(QStringLiteral("yyyyMMdd-HHmmss"));
+    QString name = base;
+    for (int n = 2; QFileInfo(name).exists() || QFileInfo(name).isSymLink(); ++n)
+        name = base + QLatin1Char('-') + QString::number(n);
+    return name;
+}
+
+// An INI file gives strings back: a number saved comes back as its text.
+bool sameValue(const QVariant &read, const QVariant &saved)
+{
+    if (saved.typeId() == QMetaType::QStringList)
+        return read.toStringList() == saved.toStringList();
+    return read.isValid() && read.toString() == saved.toString();
+}
+
+} // namespace
+
+QString settingsFilePath()
+{
+    // As QSettings makes it on Unix: the generic config location (which
+    // follows XDG_CONFIG_HOME), then organisation/application.conf.
+    const QString organisation = QCoreApplication::organizationName().isEmpty()
+                                     ? QStringLiteral("Unknown Organization")
+                                     : QCoreApplication::organizationName();
+    return QStandardPaths::writableLocation(QStandardPaths::GenericConfigLocation) + QLatin1Char('/') + organisation
+           + QLatin1Char('/') + QCoreApplication::applicationName() + QStringLiteral(".conf");
+}
+
+SettingsCheck setAsideUnreadableSettings(const QString &path, const QDateTime &now)
+{
+    const QFileInfo info(path);
+    if (!info.exists() && !info.isSymLink())
+        return {}; // made at the first save
+    const std::optional<QString> why = unreadable(path);
+    if (!why)
+        return {};
+    const QString aside = asideName(path, now);
+    if (!QDir().rename(path, aside)) {
+        return {{},
+                tr("the settings file cannot be read (%1), and it could not be moved aside to %2: "
+                   "settings will not be kept until it is fixed or removed")
+                    .arg(*why, aside)};
+    }
+    return {aside, tr("the settings file cannot be read (%1); it was moved aside to %2, "
+                      "and Slew starts with default settings")
+                       .arg(*why, aside)};
+}
+
+SettingsCheck setAsideUnreadableSettings()
+{
+    return setAsideUnreadableSettings(settingsFilePath(), QDateTime::currentDateTime());
+}
+
+QString saveSetting(QSettings &settings, const QString &key, const QVariant &value)
+{
+    const QString path = settings.fileName();
+    settings.setValue(key, value);
+    settings.sync();
+    switch (settings.status()) {
+    case QSettings::NoError:
+        break;
+    case QSettings::AccessError:
+        return tr("the settings file %1 cannot be written").arg(path);
+    case QSettings::FormatError:
+        return tr("the settings file %1 is not in the settings format, so it is not overwritten").arg(path);
+    }
+    // QSettings may say NoError and still not have written (a root process
+    // past permissions, a file replaced meanwhile): what counts is the file.
+    const input::BoundedRead read = input::readBoundedFile(path, kMaxSettingsFileBytes);
+    if (!read.ok())
+        return tr("the settings file cannot be read back after saving: %1").arg(read.error);
+    if (!sameValue(readCopy(read.bytes, key).value, value))
+        return tr("the settings file %1 does not hold the new value after saving").arg(path);
+    return {};
+}
+
+QString saveSetting(const QString &key, const QVariant &value)
+{
+    QSettings settings;
+    return saveSetting(settings, key, value);
+}
+
+} // namespace slew::model

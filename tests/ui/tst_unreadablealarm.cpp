@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The window's alarm monitor and a controller whose replies turn to garbage:
+// one keyed alarm ("Unreadable replies") raised once however long the
+// garbage lasts, a bounded event log, and the alarm cleared once readable
+// replies have come back. The fake controller keeps its own clock, moved
+// by the event loop (tests/session/fakedevice.h); nothing sleeps.
+
+#include "../common/simulatorpump.h"
+#include "../session/fakedevice.h"
+#include "alarmmonitor.h"
+#include "session/rotatorsession.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+using slew::session::RotatorSession;
+using slew::ui::AlarmMonitor;
+
+class UnreadableAlarmTest : public QObject {
+    Q_OBJECT
+private slots:
+    void garbageIsOneAlarmThatClears()
+    {
+        FakeDevice device;
+        RotatorSession s;
+        AlarmMonitor monitor(&s);
+        s.connectTo(device.uri());
+        TRY_VERIFY(s.isConnected() && s.capabilities().probed && s.hasPosition());
+
+        QSignalSpy events(&monitor, &AlarmMonitor::eventLogged);
+        auto alarmsRaised = [&] {
+            int n = 0;
+            for (const QList<QVariant> &e : events)
+                n += e.at(1).value<AlarmMonitor::Severity>() == AlarmMonitor::Severity::Alarm
+                     && e.at(2).toString().startsWith(QStringLiteral("Unreadable replies"));
+            return n;
+        };
+        // Each readable reply among the garbage is used (the fake's own
+        // answers to polls come in between, so every position is looked for).
+        QSignalSpy positions(&s, &RotatorSession::positionChanged);
+        auto seen = [&](double az) {
+            for (const QList<QVariant> &p : positions) {
+                if (std::abs(p.at(0).toDouble() - az) < 0.05)
+                    return true;
+            }
+            return false;
+        };
+        for (int k = 0; k < 20; ++k) {
+            QByteArray chunk;
+            for (int i = 0; i < 1000; ++i)
+                chunk += "#garbage\x1b]0;" + QByteArray::number(i) + "\n";
+            device.push(chunk + "AZ" + QByteArray::number(50 + k) + ".0 EL30.0\n");
+            TRY_VERIFY(seen(50 + k));
+        }
+        QCOMPARE(alarmsRaised(), 1);
+        QVERIFY(monitor.isActive(QStringLiteral("unreadable")));
+        QVERIFY(monitor.anySevere());
+        QVERIFY2(events.size() <= 15, qPrintable(QString::number(events.size())));
+
+        // Readable replies only, for longer than the condition's window.
+        TRY_VERIFY_WITH_TIMEOUT(!monitor.isActive(QStringLiteral("unreadable")), 30000);
+        QCOMPARE(alarmsRaised(), 1);
+        QVERIFY(monitor.activeAlarms().isEmpty());
+    }
+};
+
+QTEST_GUILESS_MAIN(UnreadableAlarmTest)
+#include "tst_unreadablealarm.moc"
