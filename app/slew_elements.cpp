@@ -9,6 +9,7 @@
 #include "slew_identity.h"
 
 #include "sky/tlesources.h"
+#include "input/logtext.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -32,15 +33,13 @@ int refuse(const QString &message)
 bool readUrls(const QStringList &texts, QList<QUrl> *urls, QString *error)
 {
     for (const QString &text : texts) {
-        const QUrl url(text.trimmed(), QUrl::StrictMode);
-        const QString scheme = url.scheme().toLower();
-        if (!url.isValid() || (scheme != u"http" && scheme != u"https" && scheme != u"file")
-            || (scheme != u"file" && url.host().isEmpty())) {
-            *error = QStringLiteral("%1 is not an http, https or file URL").arg(text);
+        const std::optional<QUrl> url = slew::sky::elementSetUrl(text);
+        if (!url) {
+            *error = QStringLiteral("%1 is not an http, https or file URL").arg(slew::input::loggableText(text, 80));
             return false;
         }
-        if (!urls->contains(url))
-            urls->append(url);
+        if (!urls->contains(*url))
+            urls->append(*url);
     }
     return true;
 }

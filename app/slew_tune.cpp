@@ -3,6 +3,8 @@
 // The options are described in cli/.
 
 #include "slew_identity.h"
+
+#include "input/finitenumber.h"
 #include "cli/slewcommandline.h"
 #include "slew_tune.h"
 
@@ -69,11 +71,14 @@ int runTune(int argc, char **argv)
         axes = {Axis::Azimuth, Axis::Elevation};
     else
         return fail(QStringLiteral("--axis must be az, el or both, not '%1'").arg(parser.value(axis)));
-    bool stepOk = true;
-    const double stepDegrees =
-        parser.isSet(step) ? parser.value(step).toDouble(&stepOk) : slew::tuning::TuningSettings{}.amplitude;
-    if (!stepOk || !(stepDegrees >= 0.5 && stepDegrees <= 30.0))
-        return fail(QStringLiteral("--step must be 0.5 to 30 degrees, not '%1'").arg(parser.value(step)));
+    double stepDegrees = slew::tuning::TuningSettings{}.amplitude;
+    if (parser.isSet(step)) {
+        QString why;
+        const auto value = slew::input::numberIn(parser.value(step), {0.5, 30, "°"}, &why);
+        if (!value)
+            return fail(QStringLiteral("--step: %1 (0.5 to 30 degrees)").arg(why));
+        stepDegrees = *value;
+    }
 
     slew::tuning::TuningRun::Options options;
     if (parser.isSet(profile)) {

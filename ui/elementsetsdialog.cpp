@@ -146,15 +146,13 @@ bool ElementSetsDialog::readUrls(QList<QUrl> *urls, QString *error) const
         const QString line = lines[i].trimmed();
         if (line.isEmpty())
             continue;
-        const QUrl url(line, QUrl::StrictMode);
-        const QString scheme = url.scheme().toLower();
-        if (!url.isValid() || (scheme != u"http" && scheme != u"https" && scheme != u"file")
-            || (scheme != u"file" && url.host().isEmpty())) {
+        const std::optional<QUrl> url = sky::elementSetUrl(line);
+        if (!url) {
             *error = tr("Line %1 is not an http, https or file URL: %2").arg(i + 1).arg(line);
             return false;
         }
-        if (!urls->contains(url))
-            urls->append(url);
+        if (!urls->contains(*url))
+            urls->append(*url);
     }
     return true;
 }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "headlessstation.h"
 
+#include "input/finitenumber.h"
+
 #include "input/logtext.h"
 #include "rotctldserver.h"
 #include "protocol/dialect.h"
@@ -52,12 +54,14 @@ std::optional<model::RotatorLimits> parseLimits(const QString &text, QString *er
     const QStringList axes = text.split(u',');
     auto range = [](const QString &part, double *low, double *high) {
         const QStringList ends = part.split(u':');
-        bool okLow = false, okHigh = false;
         if (ends.size() != 2)
             return false;
-        *low = ends[0].trimmed().toDouble(&okLow);
-        *high = ends[1].trimmed().toDouble(&okHigh);
-        return okLow && okHigh;
+        const std::optional<double> a = input::finiteNumber(ends[0]), b = input::finiteNumber(ends[1]);
+        if (!a || !b)
+            return false;
+        *low = *a;
+        *high = *b;
+        return true;
     };
     model::RotatorLimits limits;
     if (axes.size() != 2 || !range(axes[0], &limits.azMin, &limits.azMax) || !range(axes[1], &limits.elMin, &limits.elMax)) {

@@ -1,5 +1,7 @@
 #include "rotctldlink.h"
 
+#include "input/finitenumber.h"
+
 #include "protocol/dialect.h"
 #include "rotctldrequest.h"
 #include "transport/linkfactory.h"
@@ -114,10 +116,11 @@ void RotctldLink::finishHandshake()
         if (eq < 0)
             continue;
         const QByteArray key = line.left(eq).trimmed();
-        bool ok = false;
-        const double v = line.mid(eq + 1).trimmed().toDouble(&ok);
-        if (!ok)
+        // A peer's limits are numbers from outside: finite ones only.
+        const std::optional<double> value = input::finiteNumber(QString::fromLatin1(line.mid(eq + 1)));
+        if (!value)
             continue;
+        const double v = *value;
         if (key == "min_az")
             azMin = v;
         else if (key == "max_az")

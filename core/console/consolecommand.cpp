@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "consolecommand.h"
 
+#include "input/finitenumber.h"
+
 #include <cmath>
 
 namespace slew::console {
@@ -14,11 +16,7 @@ constexpr double kLongestWatch = 3600;
 
 std::optional<double> number(const QString &word)
 {
-    bool ok = false;
-    const double value = word.toDouble(&ok);
-    if (!ok || !std::isfinite(value))
-        return std::nullopt;
-    return value;
+    return input::finiteNumber(word);
 }
 
 std::optional<int> registerNumber(const QString &word, QString *error)

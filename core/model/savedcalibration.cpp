@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "savedcalibration.h"
 
+#include "input/finitenumber.h"
+
 #include <QSettings>
 #include <QUrl>
 #include <QUrlQuery>
@@ -39,12 +41,11 @@ std::optional<CalibrationOffsets> savedCalibration(const QString &uri)
     const QStringList parts = QSettings().value(keyFor(uri)).toStringList();
     if (parts.size() != 2)
         return std::nullopt;
-    bool azOk = false, elOk = false;
-    const CalibrationOffsets o{parts[0].toDouble(&azOk), parts[1].toDouble(&elOk)};
+    const std::optional<double> az = input::finiteNumber(parts[0]), el = input::finiteNumber(parts[1]);
     // A hand-edited settings file must not carry an offset the profile refuses.
-    if (!azOk || !elOk || !(std::abs(o.azDeg) <= 180.0) || !(std::abs(o.elDeg) <= 20.0))
+    if (!az || !el || std::abs(*az) > 180.0 || std::abs(*el) > 20.0)
         return std::nullopt;
-    return o;
+    return CalibrationOffsets{*az, *el};
 }
 
 void saveCalibration(const QString &uri, const CalibrationOffsets &offsets)

@@ -4,6 +4,8 @@
 
 #include "rotatorsession.h"
 
+#include "input/finitenumber.h"
+
 #include "protocol/encoder.h"
 #include "protocol/spidcodec.h"
 #include "transport/link.h"
@@ -481,11 +483,10 @@ CommandResult RotatorSession::writeConfig(int reg, const QString &value)
     }
     if (reg == 7 || reg == 8) {
         // Park position: a value outside the limits would park into an end stop.
-        bool ok = false;
-        const double angle = value.toDouble(&ok);
-        if (!ok)
-            return refuse(tr("park position must be a number"));
-        const model::MoveCheck check = previewParkRegister(reg, angle);
+        const std::optional<double> angle = input::finiteNumber(value);
+        if (!angle)
+            return refuse(tr("park position must be a finite number"));
+        const model::MoveCheck check = previewParkRegister(reg, *angle);
         if (!check.allowed())
             return refuseMove(check.refusal);
     }
@@ -570,11 +571,10 @@ QString RotatorSession::rawMoveRefusal(const Message &m) const
     }
     case Op::ConfigWrite:
         if (m.index == 7 || m.index == 8) {
-            bool ok = false;
-            const double angle = QString::fromLatin1(m.text.view()).toDouble(&ok);
-            if (!ok)
-                return tr("park position must be a number");
-            return previewParkRegister(m.index, angle).refusal;
+            const std::optional<double> angle = input::finiteNumber(QString::fromLatin1(m.text.view()));
+            if (!angle)
+                return tr("park position must be a finite number");
+            return previewParkRegister(m.index, *angle).refusal;
         }
         return {};
     default:

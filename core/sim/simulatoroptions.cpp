@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "simulatoroptions.h"
 
+#include "input/finitenumber.h"
+
 #include "rotatormodels.h"
 #include "simclock.h"
 
@@ -76,11 +78,10 @@ QString bad(QStringView name, QStringView value, const QString &why)
 
 bool toNumber(QStringView text, double *out)
 {
-    bool ok = false;
-    const double v = text.toDouble(&ok);
-    if (!ok || !std::isfinite(v))
+    const std::optional<double> v = input::finiteNumber(text);
+    if (!v)
         return false;
-    *out = v;
+    *out = *v;
     return true;
 }
 

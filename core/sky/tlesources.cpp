@@ -16,6 +16,16 @@
 
 namespace slew::sky {
 
+std::optional<QUrl> elementSetUrl(const QString &text)
+{
+    const QUrl url(text.trimmed(), QUrl::StrictMode);
+    const QString scheme = url.scheme().toLower();
+    if (!url.isValid() || (scheme != u"http" && scheme != u"https" && scheme != u"file")
+        || (scheme != u"file" && url.host().isEmpty()))
+        return std::nullopt;
+    return url;
+}
+
 QList<QUrl> savedElementSetUrls()
 {
     QList<QUrl> urls;

@@ -42,6 +42,9 @@ inline constexpr char kElementSetUrlsSettingsKey[] = "sky/elementSetUrls";
 inline constexpr char kExampleElementSetUrl[] = "https://celestrak.org/NORAD/elements/gp.php?GROUP=amateur&FORMAT=tle";
 
 QList<QUrl> savedElementSetUrls();
+// A source as a user types it: an http or https URL with a host, or a file
+// URL; nothing for anything else.
+std::optional<QUrl> elementSetUrl(const QString &text);
 void saveElementSetUrls(const QList<QUrl> &urls);
 // Where the cached copies live: the same for the window and the command line.
 QString elementSetCacheDirectory();

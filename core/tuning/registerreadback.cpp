@@ -1,5 +1,7 @@
 #include "registerreadback.h"
 
+#include "input/finitenumber.h"
+
 #include "session/rotatorsession.h"
 
 #include <cmath>
@@ -37,11 +39,10 @@ QString RegisterReadback::format(double value)
 
 bool RegisterReadback::matches(const QString &written, const QString &readBack)
 {
-    bool okW = false, okR = false;
-    const double w = written.toDouble(&okW);
-    const double r = readBack.toDouble(&okR);
-    if (okW && okR)
-        return std::fabs(w - r) <= std::max(0.0051, 1e-4 * std::fabs(w));
+    const std::optional<double> w = input::finiteNumber(written);
+    const std::optional<double> r = input::finiteNumber(readBack);
+    if (w && r)
+        return std::fabs(*w - *r) <= std::max(0.0051, 1e-4 * std::fabs(*w));
     return written.trimmed() == readBack.trimmed();
 }
 
@@ -58,9 +59,7 @@ std::optional<double> RegisterReadback::number(int reg) const
 {
     for (const RegisterCheck &c : m_results) {
         if (c.reg == reg && c.answered) {
-            bool ok = false;
-            const double v = c.readBack.toDouble(&ok);
-            if (ok)
+            if (const std::optional<double> v = input::finiteNumber(c.readBack))
                 return v;
         }
     }

@@ -92,7 +92,8 @@ private slots:
         QTest::addColumn<int>("exitCode");
         QTest::addColumn<QString>("message");
         QTest::newRow("axis") << QStringList{"--tune", "sim:", "--axis", "roll"} << 2 << "--axis must be";
-        QTest::newRow("step") << QStringList{"--tune", "sim:", "--step", "90"} << 2 << "--step must be";
+        QTest::newRow("step") << QStringList{"--tune", "sim:", "--step", "90"} << 2 << "--step: 90° is outside 0.5..30°";
+        QTest::newRow("step nan") << QStringList{"--tune", "sim:", "--step", "nan"} << 2 << "--step: 'nan' is not a finite number";
         QTest::newRow("uri") << QStringList{"--tune", "sim:?kp=fast"} << 1 << "kp";
         QTest::newRow("dialect") << QStringList{"--tune", "sim:", "--dialect", "gs232"} << 2 << "unknown dialect";
     }
