@@ -126,8 +126,8 @@ ElementSetsDialog::ElementSetsDialog(sky::TleSources *sources, QWidget *parent)
             failed += sky::sourceFailed(s) ? 1 : 0;
         const QString total = count(m_sources->sets().size(), tr("element set"), tr("element sets"));
         m_message->setText(failed == 0 ? tr("Refreshed: %1 in all.").arg(total)
-                                       : tr("Refreshed: %1 in all; %2 not refreshed, see below why.")
-                                             .arg(total, count(failed, tr("source"), tr("sources"))));
+                                       : tr("%1 not refreshed, see below why; %2 in all.")
+                                             .arg(count(failed, tr("source"), tr("sources")), total));
     });
     showStatus();
 }

@@ -104,11 +104,20 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
     // Whenever a refresh ends, from the dialog or elsewhere: each source
     // whose new copy was not taken says why.
     connect(m_elementSets, &sky::TleSources::finished, this, [this] {
-        for (const sky::TleSourceStatus &s : m_elementSets->status())
-            if (sky::sourceFailed(s))
-                m_log->addEvent(QDateTime::currentDateTime(), AlarmMonitor::Severity::Warning,
-                                tr("element sets: %1").arg(sky::describeSource(s)));
-        logInfo(tr("element sets refreshed: %1 in all").arg(m_elementSets->sets().size()));
+        int failed = 0;
+        for (const sky::TleSourceStatus &s : m_elementSets->status()) {
+            if (!sky::sourceFailed(s))
+                continue;
+            ++failed;
+            m_log->addEvent(QDateTime::currentDateTime(), AlarmMonitor::Severity::Warning,
+                            tr("element sets: %1").arg(sky::describeSource(s)));
+        }
+        // Never "refreshed" when a source kept its old copy.
+        logInfo(failed == 0 ? tr("element sets refreshed: %1 in all").arg(m_elementSets->sets().size())
+                            : tr("element sets: %1 of %2 sources not refreshed (Sky → Element sets… says why); %3 in all")
+                                  .arg(failed)
+                                  .arg(m_elementSets->status().size())
+                                  .arg(m_elementSets->sets().size()));
     });
     m_tracking = new TrackingPanel(session, m_elementSets);
     m_alignment = new AlignmentPanel(session);

@@ -8,6 +8,7 @@
 #include <QFileInfo>
 #include <QSettings>
 #include <QStandardPaths>
+#include <QStringDecoder>
 #include <QTemporaryDir>
 
 #include <optional>
@@ -39,6 +40,33 @@ Copy readCopy(const QByteArray &bytes, const QString &key)
     return {settings.status(), key.isEmpty() ? QVariant() : settings.value(key)};
 }
 
+// Whether `bytes` have the shape of an INI file as QSettings writes one:
+// UTF-8 text without control characters, each line blank, a comment, a
+// [section] or a key=value. QSettings' own reader is lenient (random bytes
+// read as a few odd keys, with no FormatError) and would drop whatever it
+// could not read at the next save.
+bool looksLikeSettingsText(const QByteArray &bytes)
+{
+    QStringDecoder utf8(QStringDecoder::Utf8, QStringDecoder::Flag::Stateless);
+    const QString text = utf8.decode(bytes);
+    if (utf8.hasError())
+        return false;
+    for (const QChar c : text) {
+        const char16_t u = c.unicode();
+        if ((u < 0x20 && u != u'\t' && u != u'\n' && u != u'\r') || u == 0x7f)
+            return false;
+    }
+    for (const QStringView line : QStringView(text).split(u'\n')) {
+        const QStringView t = line.trimmed();
+        if (t.isEmpty() || t.startsWith(u';') || t.startsWith(u'#') || t.contains(u'='))
+            continue;
+        if (t.startsWith(u'[') && t.endsWith(u']'))
+            continue;
+        return false;
+    }
+    return true;
+}
+
 // Why the file at `path` is no settings file, or nothing.
 std::optional<QString> unreadable(const QString &path)
 {
@@ -47,7 +75,7 @@ std::optional<QString> unreadable(const QString &path)
     const input::BoundedRead read = input::readBoundedFile(path, kMaxSettingsFileBytes);
     if (!read.ok())
         return read.error;
-    if (readCopy(read.bytes, {}).status == QSettings::FormatError)
+    if (!looksLikeSettingsText(read.bytes) || readCopy(read.bytes, {}).status == QSettings::FormatError)
         return tr("%1 is not in the settings format").arg(path);
     return std::nullopt;
 }

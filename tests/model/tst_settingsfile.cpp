@@ -74,6 +74,10 @@ private slots:
         QTest::addColumn<QString>("kind");
         QTest::addColumn<QString>("why");
         QTest::newRow("garbage") << QStringLiteral("garbage") << QStringLiteral("not in the settings format");
+        // Random bytes: QSettings reads them without a FormatError, as a few
+        // odd keys, and would drop the rest at the next save.
+        QTest::newRow("random bytes") << QStringLiteral("random") << QStringLiteral("not in the settings format");
+        QTest::newRow("text that is no INI") << QStringLiteral("prose") << QStringLiteral("not in the settings format");
         QTest::newRow("directory") << QStringLiteral("directory") << QStringLiteral("not a regular file");
         QTest::newRow("FIFO") << QStringLiteral("fifo") << QStringLiteral("not a regular file");
     }
@@ -84,8 +88,20 @@ private slots:
         QFETCH(QString, why);
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("slew.conf"));
-        const QByteArray garbage("[General\n\x01\x02=\"\xff\n==\n[\n");
-        if (kind == QLatin1String("garbage"))
+        QByteArray garbage("[General\n\x01\x02=\"\xff\n==\n[\n");
+        if (kind == QLatin1String("random")) {
+            garbage.clear();
+            quint32 x = 2463534242u; // xorshift: the same bytes every run
+            for (int i = 0; i < 3000; ++i) {
+                x ^= x << 13;
+                x ^= x >> 17;
+                x ^= x << 5;
+                garbage.append(char(x & 0xff));
+            }
+        } else if (kind == QLatin1String("prose")) {
+            garbage = "My station notes\nconnect the rotator first\n";
+        }
+        if (kind == QLatin1String("garbage") || kind == QLatin1String("random") || kind == QLatin1String("prose"))
             write(path, garbage);
         else if (kind == QLatin1String("directory"))
             QVERIFY(QDir().mkdir(path));
@@ -96,7 +112,7 @@ private slots:
         QCOMPARE(check.movedTo, aside);
         QVERIFY(!QFileInfo::exists(path));
         QVERIFY(QFileInfo::exists(aside));
-        if (kind == QLatin1String("garbage"))
+        if (kind == QLatin1String("garbage") || kind == QLatin1String("random") || kind == QLatin1String("prose"))
             QCOMPARE(contents(aside), garbage);
         QVERIFY2(check.message.contains(why) && check.message.contains(aside) && check.message.contains(path),
                  qPrintable(check.message));
@@ -116,12 +132,26 @@ private slots:
         const QByteArray good("[General]\nstation=FN31pr\n");
         write(path, good);
         write(dir.filePath(QStringLiteral("empty.conf")), {});
-        for (const QString &p : {path, dir.filePath(QStringLiteral("empty.conf"))}) {
+        // Everything Slew keeps, as QSettings itself writes it: lists, JSON
+        // with quotes, bytes that are not text, names with spaces, unicode.
+        const QString written = dir.filePath(QStringLiteral("written.conf"));
+        {
+            QSettings settings(written, QSettings::IniFormat);
+            settings.setValue(QStringLiteral("sky/elementSetUrls"),
+                              QStringList{QStringLiteral("https://a.example/x?GROUP=amateur&FORMAT=tle"),
+                                          QStringLiteral("file:///srv/t l e.txt")});
+            settings.setValue(QStringLiteral("presets/list"), QByteArray("[{\"name\":\"Mast \\\"north\\\"\",\"az\":0}]"));
+            settings.setValue(QStringLiteral("binary"), QByteArray("\x00\x01\xff\x1b", 4));
+            settings.setValue(QStringLiteral("a key with spaces"), QStringLiteral("Ærø – 55.6° N; #1 = yes"));
+            settings.sync();
+            QCOMPARE(settings.status(), QSettings::NoError);
+        }
+        for (const QString &p : {path, dir.filePath(QStringLiteral("empty.conf")), written}) {
             const SettingsCheck check = setAsideUnreadableSettings(p, kNow);
             QVERIFY2(check.message.isEmpty() && check.movedTo.isEmpty(), qPrintable(check.message));
         }
         QCOMPARE(contents(path), good);
-        QCOMPARE(QDir(dir.path()).entryList(QDir::Files).size(), 2);
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files).size(), 3);
     }
 
     void aSaveThatReachesTheFileSucceeds()
