@@ -1,5 +1,7 @@
 #include "configeditor.h"
 
+#include "input/finitenumber.h"
+
 #include "model/movegate.h"
 #include "protocol/dialect.h"
 
@@ -36,10 +38,9 @@ QString registerName(int reg)
 
 bool sameValue(const QString &a, const QString &b)
 {
-    bool okA = false, okB = false;
-    const double x = a.trimmed().toDouble(&okA), y = b.trimmed().toDouble(&okB);
-    if (okA && okB)
-        return std::abs(x - y) <= kReadBackTolerance;
+    const std::optional<double> x = input::finiteNumber(a), y = input::finiteNumber(b);
+    if (x && y)
+        return std::abs(*x - *y) <= kReadBackTolerance;
     return a.trimmed() == b.trimmed();
 }
 
@@ -204,10 +205,10 @@ void ConfigEditor::setState(int reg, FieldState s, const QString &detail)
 
 QString ConfigEditor::validate(int reg, const QString &text) const
 {
-    bool ok = false;
-    const double v = text.trimmed().toDouble(&ok);
-    if (!ok || !std::isfinite(v))
+    const std::optional<double> number = input::finiteNumber(text);
+    if (!number)
         return tr("not a number");
+    const double v = *number;
     if (reg >= 1 && reg <= 6 && v < 0)
         return tr("gains are not negative");
     // The gate the session will ask when the value is written.

@@ -3,6 +3,8 @@
 
 #include "configeditor.h"
 
+#include "input/finitenumber.h"
+
 #include "model/rotatorprofile.h"
 
 #include <QLineEdit>
@@ -13,9 +15,8 @@ bool ConfigEditor::exportProfile(const QString &path, QString *error) const
 {
     model::RotatorProfile profile = m_session->profile();
     auto number = [this](int reg) -> std::optional<double> {
-        bool ok = false;
-        const double v = deviceValue(reg).toDouble(&ok);
-        return ok ? std::optional<double>(v) : std::nullopt;
+        // The device's text: a finite number, or nothing for the profile.
+        return input::finiteNumber(deviceValue(reg));
     };
     // What the device holds now is what the profile should remember.
     for (auto [first, gains] : {std::pair{1, &profile.azGains}, std::pair{4, &profile.elGains}}) {

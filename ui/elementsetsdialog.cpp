@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "elementsetsdialog.h"
 
+#include "input/finitenumber.h"
+
 #include "elementsetages.h"
 
 #include "sky/skyvector.h"
@@ -134,9 +136,8 @@ ElementSetsDialog::ElementSetsDialog(sky::TleSources *sources, QWidget *parent)
 
 double ElementSetsDialog::savedAgeLimitDays()
 {
-    bool ok = false;
-    const double days = QSettings().value(QLatin1String(kAgeLimitKey)).toDouble(&ok);
-    return ok && days > 0 ? days : kDefaultAgeLimitDays;
+    const std::optional<double> days = input::finiteNumber(QSettings().value(QLatin1String(kAgeLimitKey)).toString());
+    return days && *days > 0 ? *days : kDefaultAgeLimitDays;
 }
 
 bool ElementSetsDialog::readUrls(QList<QUrl> *urls, QString *error) const

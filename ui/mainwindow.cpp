@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "mainwindow.h"
 
+#include "input/finitenumber.h"
+
 #include "alarmbanner.h"
 #include "alarmmonitor.h"
 #include "configeditor.h"
@@ -319,10 +321,10 @@ void MainWindow::wirePlot()
     });
     connect(m_session, &RotatorSession::configValueReceived, m_plot, [this](int reg, const QString &text) {
         // The device's own park registers are the truth once read.
-        bool ok = false;
-        const double v = text.toDouble(&ok);
-        if (!ok || (reg != 7 && reg != 8))
-            return;
+        const std::optional<double> value = input::finiteNumber(text);
+        if (!value || (reg != 7 && reg != 8))
+            return; // a register that does not read as a number moves no marker
+        const double v = *value;
         // The registers hold the controller's own angles; the plot shows
         // where the antenna points (the calibration offsets added).
         m_plot->setPark(reg == 7 ? v + m_session->azimuthOffset() : m_session->parkAzimuth(),
