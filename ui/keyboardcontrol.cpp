@@ -33,6 +33,17 @@ KeyboardControl::KeyboardControl(QWidget *window, StopButton *stop, JogPad *jog,
     : QObject(parent), m_window(window), m_stop(stop), m_jog(jog), m_presets(presets)
 {
     qApp->installEventFilter(this);
+    for (int d = 0; d < 4; ++d) {
+        m_release[d].setSingleShot(true);
+        m_release[d].setInterval(kRepeatGraceMs);
+        connect(&m_release[d], &QTimer::timeout, this, [this, d] { m_jog->release(JogPad::Direction(d)); });
+    }
+    // A Stop releases every jog (MainWindow); a release still waiting must
+    // not be taken for the start of a repeat afterwards.
+    connect(m_stop, &StopButton::stopped, this, [this] {
+        for (QTimer &t : m_release)
+            t.stop();
+    });
     // Keys released while another application has focus never arrive here:
     // losing focus must not leave an axis running.
     connect(qApp, &QApplication::applicationStateChanged, this, [this](Qt::ApplicationState s) {
@@ -83,12 +94,8 @@ bool KeyboardControl::eventFilter(QObject *watched, QEvent *event)
     if (typing || type == QEvent::ShortcutOverride)
         return false;
     if (const auto d = jogDirection(k)) {
-        if (!key->isAutoRepeat()) {
-            if (type == QEvent::KeyPress)
-                m_jog->press(*d);
-            else
-                m_jog->release(*d);
-        }
+        if (!key->isAutoRepeat())
+            jogKey(*d, type == QEvent::KeyPress);
         return true;
     }
     if (type == QEvent::KeyPress && k >= Qt::Key_1 && k <= Qt::Key_9 && !key->isAutoRepeat()) {
@@ -96,6 +103,21 @@ bool KeyboardControl::eventFilter(QObject *watched, QEvent *event)
         return true;
     }
     return false;
+}
+
+void KeyboardControl::jogKey(int direction, bool press)
+{
+    const auto d = JogPad::Direction(direction);
+    QTimer &pending = m_release[d];
+    if (press) {
+        if (pending.isActive()) // the press of an unmarked repeat: the axis runs on
+            pending.stop();
+        else
+            m_jog->press(d);
+        return;
+    }
+    if (m_jog->isHeld(d))
+        pending.start(); // stops the axis unless a repeat's press comes first
 }
 
 } // namespace slew::ui

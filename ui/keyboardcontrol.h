@@ -4,8 +4,17 @@
 // into a text field; arrow keys jog while held (auto-repeat ignored, release
 // stops); number keys 1..9 recall presets. Typing into a field keeps its
 // arrows, digits and spaces.
+//
+// A held key must reach the jog pad as one press and one release. Qt marks
+// autorepeat (isAutoRepeat) only when it sees the repeat's press already
+// queued behind its release; on X11 a busy window often has not read it yet,
+// and the pair arrives unmarked, 25 times a second. So a jog key's release
+// waits kRepeatGraceMs for a press of the same key: one that comes is a
+// repeat (the server sends the pair back to back, with one timestamp) and
+// the axis runs on; none, and the release stops the axis.
 
 #include <QObject>
+#include <QTimer>
 
 class QWidget;
 
@@ -24,12 +33,16 @@ protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
 
 private:
+    static constexpr int kRepeatGraceMs = 30;
+
     bool isTyping() const;
+    void jogKey(int direction, bool press);
 
     QWidget *m_window;
     StopButton *m_stop;
     JogPad *m_jog;
     PresetPanel *m_presets;
+    QTimer m_release[4]; // per JogPad::Direction: a release waiting for its repeat
 };
 
 } // namespace slew::ui
