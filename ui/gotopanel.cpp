@@ -61,8 +61,13 @@ GotoPanel::GotoPanel(session::RotatorSession *session, QWidget *parent) : QWidge
 
     connect(m_az, &QLineEdit::textChanged, this, &GotoPanel::revalidate);
     connect(m_el, &QLineEdit::textChanged, this, &GotoPanel::revalidate);
-    connect(m_az, &QLineEdit::returnPressed, this, &GotoPanel::go);
-    connect(m_el, &QLineEdit::returnPressed, this, &GotoPanel::go);
+    // A refused go-to leaves the focus in the field, to be put right there.
+    for (QLineEdit *field : {m_az, m_el}) {
+        connect(field, &QLineEdit::returnPressed, this, [this] {
+            if (go())
+                emit sentByEnter();
+        });
+    }
     connect(m_go, &QPushButton::clicked, this, &GotoPanel::go);
     connect(session, &session::RotatorSession::stateChanged, this, &GotoPanel::revalidate);
     connect(session, &session::RotatorSession::profileChanged, this, &GotoPanel::followAxes);

@@ -30,6 +30,11 @@ public:
     // Parses and checks the fields as they stand (accepts ',' as the decimal point).
     Checked check() const;
 
+signals:
+    // Enter in a field sent the go-to: the field should give up the focus,
+    // so that Space, the next key the operator reaches for, is Stop.
+    void sentByEnter();
+
 public slots:
     void setFields(double az, double el);
     bool go(); // false, with the reason shown, when the fields are not a legal position

@@ -2,15 +2,12 @@
 
 #include "jogpad.h"
 #include "presetpanel.h"
+#include "rotatormotion.h"
 #include "stopbutton.h"
+#include "textfieldfocus.h"
 
-#include <QAbstractSpinBox>
 #include <QApplication>
-#include <QComboBox>
 #include <QKeyEvent>
-#include <QLineEdit>
-#include <QPlainTextEdit>
-#include <QTextEdit>
 
 namespace slew::ui {
 
@@ -29,8 +26,9 @@ std::optional<JogPad::Direction> jogDirection(int key)
 
 } // namespace
 
-KeyboardControl::KeyboardControl(QWidget *window, StopButton *stop, JogPad *jog, PresetPanel *presets, QObject *parent)
-    : QObject(parent), m_window(window), m_stop(stop), m_jog(jog), m_presets(presets)
+KeyboardControl::KeyboardControl(QWidget *window, StopButton *stop, JogPad *jog, PresetPanel *presets,
+                                 const RotatorMotion *motion, QObject *parent)
+    : QObject(parent), m_window(window), m_stop(stop), m_jog(jog), m_presets(presets), m_motion(motion)
 {
     qApp->installEventFilter(this);
     for (int d = 0; d < 4; ++d) {
@@ -54,18 +52,7 @@ KeyboardControl::KeyboardControl(QWidget *window, StopButton *stop, JogPad *jog,
 
 bool KeyboardControl::isTyping() const
 {
-    QWidget *w = QApplication::focusWidget();
-    if (!w)
-        return false;
-    if (auto *line = qobject_cast<QLineEdit *>(w))
-        return !line->isReadOnly();
-    if (auto *combo = qobject_cast<QComboBox *>(w))
-        return combo->isEditable();
-    if (auto *text = qobject_cast<QPlainTextEdit *>(w))
-        return !text->isReadOnly();
-    if (auto *text = qobject_cast<QTextEdit *>(w))
-        return !text->isReadOnly();
-    return qobject_cast<QAbstractSpinBox *>(w) != nullptr;
+    return isTextField(QApplication::focusWidget());
 }
 
 bool KeyboardControl::eventFilter(QObject *watched, QEvent *event)
@@ -82,7 +69,12 @@ bool KeyboardControl::eventFilter(QObject *watched, QEvent *event)
     const bool typing = isTyping();
     const int k = key->key();
 
-    if (k == Qt::Key_Escape || (k == Qt::Key_Space && !typing)) {
+    // Space in a text field: Stop while the rotator moves, a space while it
+    // is idle (keyboardcontrol.h). Asked at the press; the release and any
+    // repeats follow the press, so none of them types a space either.
+    if (k == Qt::Key_Space && typing && type != QEvent::KeyRelease && !key->isAutoRepeat())
+        m_spaceStops = m_motion->isMoving();
+    if (k == Qt::Key_Escape || (k == Qt::Key_Space && (!typing || m_spaceStops))) {
         if (type == QEvent::ShortcutOverride) {
             event->accept(); // keep a shortcut from taking it
             return false;

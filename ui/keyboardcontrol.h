@@ -1,9 +1,14 @@
 #pragma once
 // The window's keys, handled before any widget sees them: Esc stops the
-// rotator from anywhere; Space stops it too unless the operator is typing
-// into a text field; arrow keys jog while held (auto-repeat ignored, release
-// stops); number keys 1..9 recall presets. Typing into a field keeps its
-// arrows, digits and spaces.
+// rotator from anywhere; arrow keys jog while held (auto-repeat ignored,
+// release stops); number keys 1..9 recall presets. Typing into a field keeps
+// its arrows and digits.
+//
+// Space is Stop wherever the focus is, with one exception: in a field that
+// takes text (textfieldfocus.h) it is a space while the rotator is idle, and
+// Stop while it moves (rotatormotion.h), because the operator who pressed
+// Enter on a go-to and then Space wants the antenna stopped, and a field's
+// stray space is cheap beside an antenna that keeps going.
 //
 // A held key must reach the jog pad as one press and one release. Qt marks
 // autorepeat (isAutoRepeat) only when it sees the repeat's press already
@@ -22,12 +27,14 @@ namespace slew::ui {
 
 class JogPad;
 class PresetPanel;
+class RotatorMotion;
 class StopButton;
 
 class KeyboardControl : public QObject {
     Q_OBJECT
 public:
-    KeyboardControl(QWidget *window, StopButton *stop, JogPad *jog, PresetPanel *presets, QObject *parent = nullptr);
+    KeyboardControl(QWidget *window, StopButton *stop, JogPad *jog, PresetPanel *presets, const RotatorMotion *motion,
+                    QObject *parent = nullptr);
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
@@ -42,6 +49,8 @@ private:
     StopButton *m_stop;
     JogPad *m_jog;
     PresetPanel *m_presets;
+    const RotatorMotion *m_motion;
+    bool m_spaceStops = false; // the last Space pressed in a text field was Stop
     QTimer m_release[4]; // per JogPad::Direction: a release waiting for its repeat
 };
 

@@ -16,6 +16,7 @@
 #include "polarplotwidget.h"
 #include "positionreadout.h"
 #include "presetpanel.h"
+#include "rotatormotion.h"
 #include "rotctldpanel.h"
 #include "rotorspanel.h"
 #include "stationdialog.h"
@@ -23,6 +24,7 @@
 #include "targetconfirmation.h"
 #include "telemetrycharts.h"
 #include "telemetryrecorder.h"
+#include "textfieldfocus.h"
 #include "trafficconsole.h"
 #include "trackingpanel.h"
 #include "wizard/setupwizard.h"
@@ -231,7 +233,11 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
     connect(session, &RotatorSession::profileChanged, this, &MainWindow::showProfile);
     wirePlot();
     showProfile();
-    m_keys = new KeyboardControl(this, m_stop, m_jog, m_presets, this);
+    m_keys = new KeyboardControl(this, m_stop, m_jog, m_presets, new RotatorMotion(session, m_jog, this), this);
+    // The plot takes no typing: the focus rests there after a go-to sent
+    // with Enter and after a click beside a text field.
+    new TextFieldFocus(this, m_plot, this);
+    connect(m_goto, &GotoPanel::sentByEnter, m_plot, [this] { m_plot->setFocus(Qt::OtherFocusReason); });
     buildMenus();
     resize(1440, 900);
 }

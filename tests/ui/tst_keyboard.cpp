@@ -1,6 +1,9 @@
 // The window's keys as the platform delivers them: a held arrow key is one
 // press, a run of autorepeats and one release, and only the first and the
 // last may reach the wire, as with the on-screen jog button held down.
+// Space is Stop: Enter on a go-to and a click on a tab or a group box take
+// the focus out of the text field, and in a text field Space is Stop while
+// the rotator moves and a space while it is idle.
 //
 // Keys go to the window's QWindow, as the platform hands them over, which
 // passes them to the focus widget. A held key on X11 is a press, then
@@ -11,7 +14,10 @@
 
 #include "windowfixture.h"
 
+#include <QLineEdit>
 #include <QPushButton>
+#include <QTabBar>
+#include <QTabWidget>
 #include <QTest>
 #include <QWindow>
 
@@ -36,6 +42,14 @@ void settle(WindowFixture &f)
 {
     const qsizetype before = f.sent.size();
     QVERIFY(f.waitFor([&] { return f.sent.size() >= before + 3; }, 5000));
+}
+
+void typeInto(QLineEdit *field, const QString &text)
+{
+    field->setFocus();
+    field->selectAll();
+    QTest::keyClick(field, Qt::Key_Backspace);
+    QTest::keyClicks(field, text);
 }
 
 } // namespace
@@ -123,6 +137,97 @@ private slots:
         settle(f);
         QCOMPARE(f.sentCount(kStart), 1);
         QCOMPARE(f.sentCount(kStop), 1);
+    }
+
+    void spaceStopsAfterEnterInGoto()
+    {
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
+        QVERIFY(f.connectAndWait());
+        f.window->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(f.window.get()));
+        auto *az = f.find<QLineEdit>(QStringLiteral("gotoAzimuth"));
+        auto *el = f.find<QLineEdit>(QStringLiteral("gotoElevation"));
+        const double farAz = f.session.azimuth() < 180.0 ? 300.0 : 20.0;
+        typeInto(az, QString::number(farAz));
+        typeInto(el, QStringLiteral("60"));
+        key(f.window.get(), QEvent::KeyPress, Qt::Key_Return, false, QStringLiteral("\r"));
+        key(f.window.get(), QEvent::KeyRelease, Qt::Key_Return, false, QStringLiteral("\r"));
+        QVERIFY(f.session.activeTarget().has_value()); // Enter sent the go-to
+        QVERIFY(f.waitFor([&] { return !f.isStill(); }, 5000)); // on its way
+        f.sent.clear();
+
+        key(f.window.get(), QEvent::KeyPress, Qt::Key_Space, false, QStringLiteral(" "));
+        key(f.window.get(), QEvent::KeyRelease, Qt::Key_Space, false, QStringLiteral(" "));
+        settle(f);
+        QCOMPARE(f.sentCount(kStop), 1);
+        QVERIFY(!az->text().contains(QLatin1Char(' ')));
+        QVERIFY(!el->text().contains(QLatin1Char(' ')));
+        QVERIFY(f.waitUntilStill());
+        QVERIFY(std::abs(f.session.azimuth() - farAz) > 5.0); // stopped on the way, not arrived
+    }
+
+    void spaceInTypingFieldStopsWhileMoving()
+    {
+        // Focus put back in the field by hand: while the rotator moves, Space
+        // is still Stop there.
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
+        QVERIFY(f.connectAndWait());
+        f.window->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(f.window.get()));
+        auto *el = f.find<QLineEdit>(QStringLiteral("gotoElevation"));
+        QVERIFY(f.session.gotoPosition(f.session.azimuth() < 180.0 ? 300.0 : 20.0, 60.0));
+        QVERIFY(f.waitFor([&] { return !f.isStill(); }, 5000));
+        el->setFocus();
+        el->setText(QStringLiteral("60"));
+        el->end(false);
+        f.sent.clear();
+        key(f.window.get(), QEvent::KeyPress, Qt::Key_Space, false, QStringLiteral(" "));
+        key(f.window.get(), QEvent::KeyRelease, Qt::Key_Space, false, QStringLiteral(" "));
+        settle(f);
+        QCOMPARE(f.sentCount(kStop), 1);
+        QCOMPARE(el->text(), QStringLiteral("60"));
+    }
+
+    void spaceInTypingFieldTypesWhileIdle()
+    {
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
+        QVERIFY(f.connectAndWait());
+        f.window->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(f.window.get()));
+        QVERIFY(f.waitUntilStill());
+        auto *az = f.find<QLineEdit>(QStringLiteral("gotoAzimuth"));
+        az->setFocus();
+        az->setText(QStringLiteral("12"));
+        az->end(false);
+        f.sent.clear();
+        key(f.window.get(), QEvent::KeyPress, Qt::Key_Space, false, QStringLiteral(" "));
+        key(f.window.get(), QEvent::KeyRelease, Qt::Key_Space, false, QStringLiteral(" "));
+        settle(f);
+        QCOMPARE(f.sentCount(kStop), 0);
+        QCOMPARE(az->text(), QStringLiteral("12 "));
+    }
+
+    void clickingATabOrGroupTakesFocusFromAField()
+    {
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
+        QVERIFY(f.connectAndWait());
+        f.window->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(f.window.get()));
+        auto *az = f.find<QLineEdit>(QStringLiteral("gotoAzimuth"));
+        QTabWidget *tabs = f.window->tabs();
+        az->setFocus();
+        QCOMPARE(QApplication::focusWidget(), az);
+        QTabBar *bar = tabs->tabBar();
+        QTest::mouseClick(bar, Qt::LeftButton, {}, bar->tabRect(bar->count() - 1).center());
+        QVERIFY(QApplication::focusWidget() != az);
+
+        az->setFocus();
+        QWidget *group = az->parentWidget();
+        while (group && !group->inherits("QGroupBox"))
+            group = group->parentWidget();
+        QVERIFY(group);
+        QTest::mouseClick(group, Qt::LeftButton, {}, QPoint(group->width() / 2, 4));
+        QVERIFY(QApplication::focusWidget() != az);
     }
 };
 
