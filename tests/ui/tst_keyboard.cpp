@@ -79,7 +79,7 @@ private slots:
         WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
         f.window->activateWindow();
-        QVERIFY(QTest::qWaitForWindowActive(f.window.get()));
+        QVERIFY(f.window->isActiveWindow()); // offscreen: at once
         f.find<QWidget>(QStringLiteral("polarPlot"))->setFocus();
         // Start where every direction has room to move.
         QVERIFY(f.session.gotoPosition(180.0, 45.0));
@@ -144,7 +144,7 @@ private slots:
         WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
         f.window->activateWindow();
-        QVERIFY(QTest::qWaitForWindowActive(f.window.get()));
+        QVERIFY(f.window->isActiveWindow()); // offscreen: at once
         auto *az = f.find<QLineEdit>(QStringLiteral("gotoAzimuth"));
         auto *el = f.find<QLineEdit>(QStringLiteral("gotoElevation"));
         const double farAz = f.session.azimuth() < 180.0 ? 300.0 : 20.0;
@@ -173,7 +173,7 @@ private slots:
         WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
         f.window->activateWindow();
-        QVERIFY(QTest::qWaitForWindowActive(f.window.get()));
+        QVERIFY(f.window->isActiveWindow()); // offscreen: at once
         auto *el = f.find<QLineEdit>(QStringLiteral("gotoElevation"));
         QVERIFY(f.session.gotoPosition(f.session.azimuth() < 180.0 ? 300.0 : 20.0, 60.0));
         QVERIFY(f.waitFor([&] { return !f.isStill(); }, 5000));
@@ -193,7 +193,7 @@ private slots:
         WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
         f.window->activateWindow();
-        QVERIFY(QTest::qWaitForWindowActive(f.window.get()));
+        QVERIFY(f.window->isActiveWindow()); // offscreen: at once
         QVERIFY(f.waitUntilStill());
         auto *az = f.find<QLineEdit>(QStringLiteral("gotoAzimuth"));
         az->setFocus();
@@ -212,7 +212,7 @@ private slots:
         WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
         f.window->activateWindow();
-        QVERIFY(QTest::qWaitForWindowActive(f.window.get()));
+        QVERIFY(f.window->isActiveWindow()); // offscreen: at once
         auto *az = f.find<QLineEdit>(QStringLiteral("gotoAzimuth"));
         QTabWidget *tabs = f.window->tabs();
         az->setFocus();
