@@ -227,9 +227,11 @@ ProgramMode makePassesMode()
          QStringLiteral("degrees"),
          QStringLiteral("Passes must climb above this elevation, -5 to 90 (default 10; the almanac's "
                         "-0.833 for the sun and the moon when not given).")},
-        {{QStringLiteral("start")},
+        // --time too: --where's name for the same idea, so neither has to be
+        // remembered for the right command.
+        {{QStringLiteral("start"), QStringLiteral("time")},
          QStringLiteral("time"),
-         QStringLiteral("Start of the search, ISO 8601 in UTC (default now).")},
+         QStringLiteral("Start of the search, ISO 8601 in UTC (default now); --time is the same.")},
         {{QStringLiteral("json")}, {}, QStringLiteral("Print JSON instead of a table.")},
     };
     return mode;
@@ -249,7 +251,9 @@ ProgramMode makeWhereMode()
         {{QStringLiteral("where")}, QStringLiteral("sat"), QStringLiteral("The satellite, \"sun\" or \"moon\".")},
         qthOption(),
         tleOption(QStringLiteral("Two- or three-line element sets; needed for a satellite.")),
-        {{QStringLiteral("time")}, QStringLiteral("time"), QStringLiteral("ISO 8601 in UTC (default now).")},
+        {{QStringLiteral("time"), QStringLiteral("start")},
+         QStringLiteral("time"),
+         QStringLiteral("ISO 8601 in UTC (default now); --start is the same, as --passes takes it.")},
         {{QStringLiteral("refraction")}, {}, QStringLiteral("Add standard atmospheric refraction to the elevation.")},
         {{QStringLiteral("json")}, {}, QStringLiteral("Print JSON instead of text.")},
     };

@@ -77,6 +77,7 @@ private slots:
     void qthInTheStationServiceConfig();
     void concatenatedFilesCountEachSatelliteOnce();
     void setsThatAreNotNumbersAreSkippedSayingWhy();
+    void timeAndStartAreOneOption();
 };
 
 void TestSlewSky::initTestCase()
@@ -485,6 +486,20 @@ void TestSlewSky::setsThatAreNotNumbersAreSkippedSayingWhy()
     QCOMPARE(track.exitCode, 2);
     QVERIFY2(track.err.contains("no satellite '25544'") && track.err.contains(":3: skipped: mean motion"),
              track.err.constData());
+}
+
+void TestSlewSky::timeAndStartAreOneOption()
+{
+    // --where took --time and --passes --start for the same idea: each now
+    // takes both.
+    const QStringList jo65{QStringLiteral("--qth"), QStringLiteral("JO65hq"), QStringLiteral("--json")};
+    for (const QString &mode : {QStringLiteral("--where"), QStringLiteral("--passes")}) {
+        const Run withTime = runSlew(QStringList{mode, QStringLiteral("sun"), QStringLiteral("--time"), kStart} + jo65);
+        const Run withStart = runSlew(QStringList{mode, QStringLiteral("sun"), QStringLiteral("--start"), kStart} + jo65);
+        QVERIFY2(withTime.exitCode == 0 && withStart.exitCode == 0, withTime.err + withStart.err);
+        QCOMPARE(withTime.out, withStart.out);
+        QVERIFY(withTime.out.contains(kStart.left(10).toUtf8()));
+    }
 }
 
 QTEST_GUILESS_MAIN(TestSlewSky)
