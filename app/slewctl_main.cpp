@@ -38,6 +38,24 @@ void say(std::FILE *to, const QString &line)
     std::fflush(to);
 }
 
+// Opens the link; a URI that names no link Slew knows, or one that cannot be
+// made at all, is refused at once with the window's words, not after the
+// connect timeout as "no answer". Empty when the link is on its way.
+QString connectOrSayWhy(slew::session::RotatorSession &session, const QString &uri)
+{
+    QString why;
+    const auto watch = QObject::connect(&session, &slew::session::RotatorSession::stateChanged, &session,
+                                        [&why](slew::session::RotatorSession::State state, const QString &detail) {
+                                            if (state == slew::session::RotatorSession::State::Disconnected)
+                                                why = detail;
+                                        });
+    session.connectTo(uri);
+    QObject::disconnect(watch);
+    if (session.state() != slew::session::RotatorSession::State::Disconnected)
+        return {};
+    return why.isEmpty() ? QStringLiteral("cannot open %1").arg(uri) : why;
+}
+
 // Lines from standard input, read as they come, never blocking the loop.
 class InputLines : public QObject {
     Q_OBJECT
@@ -89,7 +107,7 @@ int main(int argc, char *argv[])
     slew::registerLinkSchemes();
 
     QCommandLineParser parser;
-    slew::cli::describeTo(parser, slew::cli::slewctlMode());
+    slew::cli::describeTo(parser, slew::cli::slewctlProgram(), slew::cli::slewctlMode());
     parser.addPositionalArgument(QStringLiteral("URI"), QStringLiteral("The rotator's link, e.g. sim: or serial:/dev/ttyUSB0"));
     parser.addPositionalArgument(QStringLiteral("command"), slew::console::consoleCommandSummary(), QStringLiteral("[COMMAND]"));
     // `goto 10 -5`: after the URI, everything belongs to the command.
@@ -162,7 +180,10 @@ int main(int argc, char *argv[])
         });
         QObject::connect(&interrupts, &slew::cli::TerminationSignalWatcher::terminationRequested, &runner,
                          &ConsoleRunner::interrupt);
-        session.connectTo(profile.uri);
+        if (const QString why = connectOrSayWhy(session, profile.uri); !why.isEmpty()) {
+            say(stderr, json ? why : QStringLiteral("slewctl: ") + why);
+            return int(ExitCode::LinkFailure);
+        }
         runner.run(*once);
         app.exec();
         return exitCode;
@@ -228,7 +249,10 @@ int main(int argc, char *argv[])
         else
             app.quit();
     });
-    session.connectTo(profile.uri);
+    if (const QString why = connectOrSayWhy(session, profile.uri); !why.isEmpty()) {
+        say(stderr, QStringLiteral("slewctl: ") + why);
+        return int(ExitCode::LinkFailure);
+    }
     prompt();
     app.exec();
     return exitCode;

@@ -511,4 +511,13 @@ void describeTo(QCommandLineParser &parser, const ProgramMode &mode)
         parser.addOption(option.toQt());
 }
 
+void describeTo(QCommandLineParser &parser, const ProgramDescription &program, const ProgramMode &mode)
+{
+    describeTo(parser, mode);
+    for (const ManualSection &section : program.sections) {
+        if (section.heading == QLatin1String("Exit status"))
+            parser.setApplicationDescription(mode.description + QStringLiteral("\n\nExit status: ") + section.text);
+    }
+}
+
 } // namespace slew::cli

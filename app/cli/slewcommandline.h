@@ -30,4 +30,9 @@ const ProgramMode &slewctlMode();
 // --version.
 void describeTo(QCommandLineParser &parser, const ProgramMode &mode);
 
+// The same, with the program's exit status (its manual's "Exit status"
+// section) after the description, so --help tells a script what each code
+// means.
+void describeTo(QCommandLineParser &parser, const ProgramDescription &program, const ProgramMode &mode);
+
 } // namespace slew::cli

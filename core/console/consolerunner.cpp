@@ -50,12 +50,18 @@ void ConsoleRunner::run(const ConsoleCommand &command)
     m_command = command;
     m_running = true;
     m_started = false;
+    m_seenConnected = m_session->isConnected();
     m_deadline.start(m_connectTimeoutMs);
     m_connections << connect(m_session, &RotatorSession::stateChanged, this,
                              [this](RotatorSession::State state, const QString &detail) {
+                                 if (state == RotatorSession::State::Connected)
+                                     m_seenConnected = true;
                                  if (state == RotatorSession::State::Disconnected
                                      || state == RotatorSession::State::Reconnecting)
-                                     finish(ExitCode::LinkFailure, tr("link lost: %1").arg(detail));
+                                     // A port that never opened was not lost.
+                                     finish(ExitCode::LinkFailure, m_seenConnected
+                                                                       ? tr("link lost: %1").arg(detail)
+                                                                       : tr("cannot connect: %1").arg(detail));
                                  else
                                      whenReady();
                              });

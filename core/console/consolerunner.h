@@ -70,6 +70,7 @@ private:
     ConsoleCommand m_command;
     bool m_running = false;
     bool m_started = false;
+    bool m_seenConnected = false; // "link lost" only for a link that was up
     double m_targetAz = 0, m_targetEl = 0;
     QTimer m_deadline;
     QTimer m_tick;

@@ -9,6 +9,7 @@
 #include <QFile>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QElapsedTimer>
 #include <QProcess>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -62,6 +63,7 @@ private slots:
     void everyLinkKind();
     void refusedMoveSendsNothing();
     void exitCodesTellFailuresApart();
+    void linkFailuresSayWhatTheWindowSays();
     void jsonIsOneObjectALine();
     void promptReadsAPipe();
     void interruptEndsAWatch();
@@ -149,6 +151,33 @@ void SlewctlTest::exitCodesTellFailuresApart()
     QCOMPARE(none.exitCode, 3);
     QVERIFY2(none.err.contains("127.0.0.1:1"), qPrintable(none.err));
     QCOMPARE(slewctl({"sim:", "goto", "0", "-30"}).exitCode, 4);
+}
+
+void SlewctlTest::linkFailuresSayWhatTheWindowSays()
+{
+    // A link kind Slew does not know: refused at once, in the window's
+    // words, not "no answer" after the connect timeout.
+    QElapsedTimer clock;
+    clock.start();
+    const Run bogus = slewctl({"bogus://x", "get"});
+    QCOMPARE(bogus.exitCode, 3);
+    QVERIFY2(bogus.err.contains("unknown link kind 'bogus'"), qPrintable(bogus.err));
+    QVERIFY2(clock.elapsed() < 5000, "refused before any timeout");
+    // The prompt refuses it the same way.
+    const Run prompt = slewctl({"bogus://x"}, "get\n");
+    QCOMPARE(prompt.exitCode, 3);
+    QVERIFY2(prompt.err.contains("unknown link kind 'bogus'"), qPrintable(prompt.err));
+    // A port that never opened was not "lost".
+    const Run missing = slewctl({"serial:/dev/nonexistent-slew-port", "get"});
+    QCOMPARE(missing.exitCode, 3);
+    QVERIFY2(missing.err.contains("cannot connect: ") && missing.err.contains("No such file"), qPrintable(missing.err));
+    QVERIFY2(!missing.err.contains("link lost"), qPrintable(missing.err));
+
+    // --help tells a script what each exit code means.
+    const Run help = slewctl({"--help"});
+    QCOMPARE(help.exitCode, 0);
+    QVERIFY2(help.out.contains("Exit status: 0 done") && help.out.contains("4 the move or line was refused"),
+             qPrintable(help.out));
 }
 
 void SlewctlTest::jsonIsOneObjectALine()
