@@ -15,8 +15,15 @@ namespace {
 
 using session::RotatorSession;
 
-// A --wait move has arrived when both axes are this close to the target.
+// A --wait move has arrived when both axes are this close to the target
+// and the rotator has come to rest: passing through the tolerance on the
+// way in is not arriving (a G-5500 still moves a degree in a few tenths of
+// a second).
 constexpr double kArrivedDegrees = 1.0;
+// Two fresh positions this close are "not moving"; this many in a row, or
+// one with the controller's status saying idle, is "at rest".
+constexpr double kRestDegrees = 0.02;
+constexpr int kRestPolls = 3;
 
 QString json(const QJsonObject &object)
 {
@@ -51,6 +58,10 @@ void ConsoleRunner::run(const ConsoleCommand &command)
     m_running = true;
     m_started = false;
     m_seenConnected = m_session->isConnected();
+    m_lastPosition.reset();
+    m_steadyPolls = 0;
+    m_sawMotion = false;
+    m_interrupted = false;
     m_deadline.start(m_connectTimeoutMs);
     m_connections << connect(m_session, &RotatorSession::stateChanged, this,
                              [this](RotatorSession::State state, const QString &detail) {
@@ -159,12 +170,27 @@ void ConsoleRunner::startGoto()
 
 void ConsoleRunner::checkArrival()
 {
-    if (!m_running || m_session->positionStale())
+    if (!m_running || m_interrupted || m_session->positionStale() || !m_session->hasPosition())
         return;
-    if (bearingDifference(m_session->azimuth(), m_targetAz) <= kArrivedDegrees
-        && std::abs(m_session->elevation() - m_targetEl) <= kArrivedDegrees) {
+    const double az = m_session->azimuth(), el = m_session->elevation();
+    const bool steady = m_lastPosition && bearingDifference(az, m_lastPosition->first) <= kRestDegrees
+                        && std::abs(el - m_lastPosition->second) <= kRestDegrees;
+    m_steadyPolls = steady ? m_steadyPolls + 1 : 0;
+    m_sawMotion = m_sawMotion || (m_lastPosition && !steady) || m_session->status().anyMoving();
+    m_lastPosition = std::pair{az, el};
+    const session::StatusWord status = m_session->status();
+    const bool atRest = m_steadyPolls >= kRestPolls || (status.valid && status.idle() && m_steadyPolls >= 1);
+    if (!atRest)
+        return;
+    const double off = std::max(bearingDifference(az, m_targetAz), std::abs(el - m_targetEl));
+    if (off <= kArrivedDegrees) {
         printPosition("arrived");
         finish(ExitCode::Ok);
+    } else if (m_sawMotion) {
+        // It moved and stopped elsewhere (a limit, an obstacle, a stop from
+        // another client): say where and how far off, rather than wait on.
+        printPosition("stopped");
+        finish(ExitCode::Failed, tr("stopped %1° from the target").arg(off, 0, 'f', 2));
     }
 }
 
@@ -291,6 +317,7 @@ void ConsoleRunner::interrupt()
     }
     if (moving) {
         m_deadline.stop();
+        m_interrupted = true;
         session::stopThenCall(*m_session, this,
                               [this] { finish(ExitCode::Failed, tr("interrupted; the rotator was stopped")); });
         return;

@@ -9,6 +9,9 @@
 #include <QObject>
 #include <QTimer>
 
+#include <optional>
+#include <utility>
+
 #include <memory>
 
 namespace slew::session {
@@ -72,6 +75,12 @@ private:
     bool m_started = false;
     bool m_seenConnected = false; // "link lost" only for a link that was up
     double m_targetAz = 0, m_targetEl = 0;
+    // For --wait: the last fresh position, how many in a row have not moved,
+    // and whether the rotator has been seen moving since the command.
+    std::optional<std::pair<double, double>> m_lastPosition;
+    int m_steadyPolls = 0;
+    bool m_sawMotion = false;
+    bool m_interrupted = false; // stopping on Ctrl-C: arrival is no longer judged
     QTimer m_deadline;
     QTimer m_tick;
     QByteArray m_rawAnswer;

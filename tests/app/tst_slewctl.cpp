@@ -68,6 +68,7 @@ private slots:
     void promptReadsAPipe();
     void interruptEndsAWatch();
     void interruptStopsAWaitingMove();
+    void waitSaysWhereAMoveStoppedShort();
 
 private:
     QTemporaryDir m_dir;
@@ -101,7 +102,8 @@ void SlewctlTest::everyLinkKind()
     QCOMPARE(get.exitCode, 0);
     QVERIFY2(get.out.startsWith("az "), qPrintable(get.out + get.err));
 
-    // A short move, waited for: it ends where it was sent.
+    // A short move, waited for: it ends where it was sent, at rest, not on
+    // its way through the arrival tolerance.
     const auto [az0, el0] = position(get.out.trimmed());
     const double az = az0 < 20 ? az0 + 8 : az0 - 8, el = el0 < 20 ? el0 + 4 : el0 - 4;
     Run move = slewctl(link + QStringList{"goto", QString::number(az), QString::number(el), "--wait"});
@@ -109,7 +111,7 @@ void SlewctlTest::everyLinkKind()
     const QStringList lines = move.out.trimmed().split(u'\n');
     QVERIFY2(lines.first().startsWith("moving to"), qPrintable(move.out));
     const auto [azEnd, elEnd] = position(lines.last());
-    QVERIFY2(std::abs(azEnd - az) <= 1.0 && std::abs(elEnd - el) <= 1.0, qPrintable(move.out));
+    QVERIFY2(std::abs(azEnd - az) <= 0.25 && std::abs(elEnd - el) <= 0.25, qPrintable(move.out));
 
     // The controller's answer to a raw line.
     Run raw = slewctl(link + QStringList{"raw", "AZ EL"});
@@ -240,6 +242,31 @@ void SlewctlTest::interruptStopsAWaitingMove()
     QCOMPARE(p.exitCode(), 1);
     QVERIFY(p.readAllStandardError().contains("interrupted; the rotator was stopped"));
     QTRY_VERIFY(received().count("SA SE") > stopsBefore);
+}
+
+void SlewctlTest::waitSaysWhereAMoveStoppedShort()
+{
+    // A --wait move that another client stops on the way ends there, saying
+    // how far off it stopped, instead of waiting out its timeout.
+    const QString link = QStringLiteral("tcp://127.0.0.1:%1").arg(m_tcpSim.port());
+    QProcess p;
+    QSignalSpy finished(&p, &QProcess::finished);
+    const Run here = slewctl({link, "get"});
+    const auto [az0, el0] = position(here.out.trimmed());
+    const double az = az0 < 180 ? az0 + 120 : az0 - 120;
+    p.start(qEnvironmentVariable("SLEWCTL_BIN"), {link, "goto", QString::number(az), "60", "--wait"});
+    QByteArray out;
+    QVERIFY(QTest::qWaitFor([&] { return (out += p.readAllStandardOutput()).contains("moving to"); }, 20000));
+    // Let it get going, then stop it from elsewhere.
+    QVERIFY(QTest::qWaitFor([&] { return std::abs(position(slewctl({link, "get"}).out.trimmed()).first - az0) > 2.0; },
+                            20000));
+    QCOMPARE(slewctl({link, "stop"}).exitCode, 0);
+    QVERIFY(finished.wait(20000));
+    QCOMPARE(p.exitCode(), 1);
+    const QByteArray err = p.readAllStandardError();
+    QVERIFY2(err.contains("stopped ") && err.contains("° from the target"), err.constData());
+    out += p.readAllStandardOutput();
+    QVERIFY2(out.trimmed().split('\n').last().startsWith("az "), out.constData());
 }
 
 QTEST_GUILESS_MAIN(SlewctlTest)
