@@ -1,9 +1,20 @@
 #include "positionreadout.h"
 
+#include <cmath>
+
 #include <QGridLayout>
 #include <QLabel>
 
 namespace slew::ui {
+
+// A figure as shown to a tenth: -0.04 rounds to "-0.0" in printf, which
+// reads as a sign error; it is shown as 0.0.
+double shownTenths(double value)
+{
+    const double rounded = std::round(value * 10.0) / 10.0;
+    return rounded == 0.0 ? 0.0 : rounded;
+}
+
 
 using session::RotatorSession;
 
@@ -47,7 +58,7 @@ PositionReadout::PositionReadout(RotatorSession *session, QWidget *parent) : QWi
 
     connect(session, &RotatorSession::positionChanged, this, &PositionReadout::showPosition);
     connect(session, &RotatorSession::targetChanged, this, [this](double az, double el) {
-        m_target->setText(tr("Target  %1°  %2°").arg(az, 0, 'f', 1).arg(el, 0, 'f', 1));
+        m_target->setText(tr("Target  %1°  %2°").arg(shownTenths(az), 0, 'f', 1).arg(shownTenths(el), 0, 'f', 1));
     });
     connect(session, &RotatorSession::statusChanged, this, &PositionReadout::showStatus);
     connect(session, &RotatorSession::stateChanged, this, [this](RotatorSession::State s) {
@@ -62,8 +73,8 @@ PositionReadout::PositionReadout(RotatorSession *session, QWidget *parent) : QWi
 
 void PositionReadout::showPosition(double az, double el, bool stale)
 {
-    m_az->setText(QStringLiteral("%1°").arg(az, 6, 'f', 1));
-    m_el->setText(QStringLiteral("%1°").arg(el, 6, 'f', 1));
+    m_az->setText(QStringLiteral("%1°").arg(shownTenths(az), 6, 'f', 1));
+    m_el->setText(QStringLiteral("%1°").arg(shownTenths(el), 6, 'f', 1));
     const QString style = stale ? QStringLiteral("color:#808080;") : QStringLiteral("color:#4cd964;");
     m_az->setStyleSheet(style);
     m_el->setStyleSheet(style);

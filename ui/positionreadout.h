@@ -10,6 +10,9 @@ class QLabel;
 
 namespace slew::ui {
 
+// A figure rounded to a tenth for display, never "-0.0".
+double shownTenths(double value);
+
 class PositionReadout : public QWidget {
     Q_OBJECT
 public:
