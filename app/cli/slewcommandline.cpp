@@ -344,8 +344,9 @@ const ProgramDescription &slewProgram()
         p.name = QStringLiteral("slew");
         p.summary = QStringLiteral("controller for az/el antenna rotators");
         p.description = QStringLiteral(
-            "Slew drives az/el antenna rotators that speak Easycomm I, II or III, the SatNOGS variant, or Yaesu "
-            "GS-232A/B, over a serial port, over TCP, through Hamlib's rotctld, or its own simulator when no "
+            "Slew drives az/el antenna rotators that speak Easycomm I, II or III, the SatNOGS variant, Yaesu "
+            "GS-232A/B, the Micro-2g controller's command set, or SPID's binary Rot2Prog and Rot1Prog (MD-01, "
+            "MD-02), over a serial port, over TCP, through Hamlib's rotctld, or its own simulator when no "
             "rotator is attached. Every move, from the operator, a tracker, a preset or a raw command, is checked "
             "against the rotator's limits before a byte is sent.");
         p.modes = {makeWindowMode(), makeHeadlessMode(), makeTuneMode(), makePassesMode(), makeWhereMode(),
@@ -360,6 +361,15 @@ const ProgramDescription &slewProgram()
                             "  sim:?az_max=450&el_max=180\n"
                             "\n"
                             "The simulator's options are listed in slew-sim(1).")},
+            {QStringLiteral("Keyboard"),
+             QStringLiteral("In the operator window:\n"
+                            "\n"
+                            "  Esc          Stop, always\n"
+                            "  Space        Stop; in a text field only while the rotator moves\n"
+                            "  arrow keys   jog while held (one start and one stop, however the keyboard repeats)\n"
+                            "  1 to 9       go to the preset of that number\n"
+                            "  Enter        in the go-to fields: go (the focus then leaves the field)\n"
+                            "  Ctrl+D       in the target picker: keep the target as a favourite")},
             {QStringLiteral("Files"),
              QStringLiteral("  /etc/slew/NAME.conf\n"
                             "\n"
@@ -368,13 +378,19 @@ const ProgramDescription &slewProgram()
                             "\n"
                             "  ~/.config/Slew/slew.conf\n"
                             "\n"
-                            "The window's remembered connection, presets and preferences, and the list of "
-                            "element-set sources that slew --update-elements refreshes.\n"
+                            "The window's remembered connection, presets, station and preferences, and the list of "
+                            "element-set sources that slew --update-elements refreshes. One that cannot be read is "
+                            "moved aside to slew.conf.broken-DATE, never deleted.\n"
                             "\n"
                             "  ~/.cache/Slew/slew/element-sets/\n"
                             "\n"
                             "The last good copy of each element-set source, shared by the window and "
-                            "slew --update-elements.")},
+                            "slew --update-elements.\n"
+                            "\n"
+                            "  rotator.json\n"
+                            "\n"
+                            "A rotator profile, wherever the window's Configuration tab exports it (Export profile) "
+                            "and --profile reads it from: the link, dialect, limits, overlap and park.")},
             {QStringLiteral("Exit status"),
              QStringLiteral("0 when Slew ends normally, 1 when a tuning run fails or is cancelled, --passes or "
                             "--where finds no satellite to answer for, or --update-elements could not refresh a "

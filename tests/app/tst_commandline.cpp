@@ -200,6 +200,15 @@ void CommandLineTest::manualListsEveryOptionOfEveryMode()
     const QString sim = renderManPage(slewSimProgram(), QStringLiteral("9.9"));
     QVERIFY(sim.contains(u"\\fB\\-\\-az\\-max\\fR"));
     QVERIFY(sim.contains(u"\\fB\\-\\-az_max\\fR"));
+
+    // Every dialect family, the keys and the files a user meets.
+    const QString slew = renderManPage(slewProgram(), QStringLiteral("9.9"));
+    for (const char *words : {"Micro\\-2g", "Rot2Prog", "GS\\-232A/B", ".SH \"KEYBOARD\"", "Esc", "slew.conf",
+                              "slew.conf.broken", "element\\-sets/", "rotator.json"})
+        QVERIFY2(slew.contains(QLatin1String(words)), words);
+    // The page is plain ASCII: groff warns on anything else.
+    for (const QChar c : slew)
+        QVERIFY2(c.unicode() < 128, qPrintable(QStringLiteral("non-ASCII %1 in the page").arg(c)));
 }
 
 void CommandLineTest::manualEscapesRoff()
