@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "mainwindow.h"
 
+#include "session/stopbeforeexit.h"
+
 #include "input/finitenumber.h"
 
 #include "alarmbanner.h"
@@ -37,6 +39,8 @@
 #include <QDateTime>
 #include <QGroupBox>
 #include <QMenuBar>
+#include <QCoreApplication>
+#include <QMessageBox>
 #include <QLabel>
 #include <QSplitter>
 #include <QSettings>
@@ -248,6 +252,16 @@ void MainWindow::buildMenus()
     QAction *wizard = rotator->addAction(tr("Setup and tuning &wizard…"));
     wizard->setObjectName(QStringLiteral("actionSetupWizard"));
     connect(wizard, &QAction::triggered, this, &MainWindow::openSetupWizard);
+    rotator->addSeparator();
+    // Quit stops the rotator first and closes once the stop has left the
+    // link, as SIGTERM does: leaving never leaves the antenna moving.
+    QAction *quit = rotator->addAction(tr("&Quit"));
+    quit->setObjectName(QStringLiteral("actionQuit"));
+    quit->setShortcut(QKeySequence::Quit);
+    connect(quit, &QAction::triggered, this, [this] {
+        logInfo(tr("quitting: stopping the rotator first"));
+        session::stopThenCall(*m_session, this, [this] { close(); });
+    });
 
     QMenu *sky = menuBar()->addMenu(tr("&Sky"));
     QAction *station = sky->addAction(tr("&Station…"));
@@ -266,6 +280,41 @@ void MainWindow::buildMenus()
     QAction *sets = sky->addAction(tr("&Element sets…"));
     sets->setObjectName(QStringLiteral("actionElementSets"));
     connect(sets, &QAction::triggered, this, &MainWindow::openElementSets);
+
+    QMenu *help = menuBar()->addMenu(tr("&Help"));
+    QAction *keys = help->addAction(tr("&Keyboard"));
+    keys->setObjectName(QStringLiteral("actionKeyboard"));
+    connect(keys, &QAction::triggered, this, [this] {
+        showNote(tr("Keyboard"),
+                 tr("<table cellspacing='6'>"
+                    "<tr><td><b>Esc</b></td><td>Stop, always</td></tr>"
+                    "<tr><td><b>Space</b></td><td>Stop; in a text field only while the rotator moves</td></tr>"
+                    "<tr><td><b>Arrow keys</b></td><td>jog while held</td></tr>"
+                    "<tr><td><b>1 to 9</b></td><td>go to that preset</td></tr>"
+                    "<tr><td><b>Enter</b></td><td>in the go-to fields: go</td></tr>"
+                    "<tr><td><b>Ctrl+D</b></td><td>in the target picker: keep as a favourite</td></tr>"
+                    "<tr><td><b>Ctrl+Q</b></td><td>stop the rotator and quit</td></tr></table>"));
+    });
+    QAction *about = help->addAction(tr("&About Slew"));
+    about->setObjectName(QStringLiteral("actionAbout"));
+    connect(about, &QAction::triggered, this, [this] {
+        showNote(tr("About Slew"),
+                 tr("<b>Slew %1</b><p>A controller for az/el antenna rotators: Easycomm, GS-232, Micro-2g and "
+                    "SPID controllers, rotctld trackers, pass planning and tracking.</p>"
+                    "<p>Free software under the GNU General Public License, version 3 or later. "
+                    "<code>man slew</code> describes every option.</p>")
+                     .arg(QCoreApplication::applicationVersion()));
+    });
+}
+
+void MainWindow::showNote(const QString &title, const QString &html)
+{
+    // Window-modal and opened, not exec()'d: the event loop, and Stop, keep
+    // running while it is up.
+    auto *box = new QMessageBox(QMessageBox::Information, title, html, QMessageBox::Close, this);
+    box->setTextFormat(Qt::RichText);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
 }
 
 void MainWindow::openElementSets()

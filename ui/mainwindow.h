@@ -88,6 +88,8 @@ public slots:
     void openSetupWizard();
     // Sky → Element sets…
     void openElementSets();
+    // A short note (keys, about) that leaves the window working.
+    void showNote(const QString &title, const QString &html);
     // Something outside the rotator went wrong (the settings file could not
     // be read, ...): a warning in the event log and the status bar.
     void reportProblem(const QString &text);

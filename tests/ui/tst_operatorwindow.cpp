@@ -21,6 +21,9 @@
 #include <QSignalSpy>
 #include <QTabWidget>
 #include <QTemporaryDir>
+#include <QAction>
+#include <QMessageBox>
+#include <QPointer>
 #include <QTest>
 
 using slew::ui::ConfigEditor;
@@ -44,6 +47,40 @@ class TestOperatorWindow : public QObject {
     Q_OBJECT
 private slots:
     void initTestCase() { WindowFixture::prepareApplication(); }
+
+    void quitStopsTheRotatorThenCloses()
+    {
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
+        QVERIFY(f.connectAndWait());
+        f.window->show();
+        QVERIFY(f.session.gotoPosition(f.session.azimuth() < 180 ? 300 : 60, 45));
+        QVERIFY(f.waitFor([&] { return !f.isStill(); }, 10000));
+        auto *quit = f.window->findChild<QAction *>(QStringLiteral("actionQuit"));
+        QVERIFY(quit);
+        QCOMPARE(quit->shortcut(), QKeySequence(QKeySequence::Quit));
+        const int stopsBefore = f.sentCount(QRegularExpression(QStringLiteral("^SA")));
+        quit->trigger();
+        QVERIFY(f.waitFor([&] { return !f.window->isVisible(); }, 10000));
+        QCOMPARE(f.sentCount(QRegularExpression(QStringLiteral("^SA"))), stopsBefore + 1);
+        // The stop left before the window went.
+        QVERIFY(f.waitUntilStill());
+    }
+
+    void helpMenuOpensWithoutBlocking()
+    {
+        WindowFixture f;
+        for (const char *name : {"actionKeyboard", "actionAbout"}) {
+            auto *action = f.window->findChild<QAction *>(QString::fromLatin1(name));
+            QVERIFY2(action, name);
+            action->trigger(); // opened, not exec()'d: this returns
+            QPointer<QMessageBox> box = f.window->findChild<QMessageBox *>();
+            QVERIFY2(box && box->isVisible(), name);
+            QVERIFY(box->text().contains(QLatin1String(qstrcmp(name, "actionAbout") == 0 ? "Slew" : "Esc")));
+            box->close(); // deletes itself: no note piles up behind the window
+            QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
+            QVERIFY(box.isNull());
+        }
+    }
 
     void jogRightMovesThenStopsTheAzimuth()
     {
