@@ -2,14 +2,51 @@
 
 #include <QApplication>
 #include <QIcon>
+#include <QPainter>
 #include <QPalette>
+#include <QProxyStyle>
 #include <QStyleFactory>
+#include <QStyleOption>
 
 namespace slew::ui {
+namespace {
+
+// Fusion draws a check box's or radio button's outline from the window
+// colour, darker; on this dark palette that outline is all but the colour
+// of the window itself, and an unticked box cannot be seen. This style
+// draws Fusion's indicator and then a light outline round it.
+class OperatorStyle : public QProxyStyle {
+public:
+    OperatorStyle() : QProxyStyle(QStyleFactory::create(QStringLiteral("Fusion"))) {}
+
+    void drawPrimitive(PrimitiveElement element, const QStyleOption *option, QPainter *painter,
+                       const QWidget *widget) const override
+    {
+        QProxyStyle::drawPrimitive(element, option, painter, widget);
+        const bool box = element == PE_IndicatorCheckBox || element == PE_IndicatorItemViewItemCheck;
+        if (!box && element != PE_IndicatorRadioButton)
+            return;
+        painter->save();
+        painter->setRenderHint(QPainter::Antialiasing);
+        const bool enabled = option->state & State_Enabled;
+        painter->setPen(QPen(enabled ? kIndicatorOutline : kIndicatorOutline.darker(160), 1.2));
+        painter->setBrush(Qt::NoBrush);
+        const QRectF r = QRectF(option->rect).adjusted(0.5, 0.5, -0.5, -0.5);
+        if (box)
+            painter->drawRoundedRect(r, 2, 2);
+        else
+            painter->drawEllipse(r);
+        painter->restore();
+    }
+
+    static inline const QColor kIndicatorOutline{0x9a, 0xa6, 0xb3};
+};
+
+} // namespace
 
 void applyOperatorTheme(QApplication &app)
 {
-    app.setStyle(QStyleFactory::create(QStringLiteral("Fusion")));
+    app.setStyle(new OperatorStyle); // the application takes ownership
     QPalette p;
     const QColor window(0x23, 0x27, 0x2e), base(0x1a, 0x1e, 0x24), text(0xdc, 0xe2, 0xea);
     const QColor disabled(0x6a, 0x72, 0x7c), accent(0x3c, 0xb4, 0xf2);

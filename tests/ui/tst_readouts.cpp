@@ -1,13 +1,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// What the operator reads: the position never shows "-0.0", and the event
-// log keeps its time column in view however long a line is.
+// What the operator reads: the position never shows "-0.0", the event log
+// keeps its time column in view however long a line is, and check boxes and
+// radio buttons can be seen on the dark theme.
 
 #include "eventlog.h"
+#include "operatortheme.h"
 #include "positionreadout.h"
 
 #include "session/rotatorsession.h"
 
 #include <QApplication>
+#include <QCheckBox>
+#include <QRadioButton>
+#include <QStyle>
 #include <QDateTime>
 #include <QLabel>
 #include <QScrollBar>
@@ -18,6 +23,34 @@ using namespace slew;
 class TestReadouts : public QObject {
     Q_OBJECT
 private slots:
+    void initTestCase() { ui::applyOperatorTheme(*static_cast<QApplication *>(QCoreApplication::instance())); }
+
+    void indicatorsStandOutFromTheWindow()
+    {
+        // An unticked box and an unchosen radio button: some pixels of the
+        // indicator must differ clearly from the window behind them.
+        QCheckBox check(QStringLiteral("Ask before moving"));
+        QRadioButton radio(QStringLiteral("Both axes"));
+        const QColor window = QApplication::palette().color(QPalette::Window);
+        for (QAbstractButton *button : {static_cast<QAbstractButton *>(&check), static_cast<QAbstractButton *>(&radio)}) {
+            button->resize(button->sizeHint());
+            const QImage image = button->grab().toImage();
+            // The indicator alone, not the text beside it.
+            const int indicatorWidth = button->style()->pixelMetric(
+                button == &check ? QStyle::PM_IndicatorWidth : QStyle::PM_ExclusiveIndicatorWidth, nullptr, button);
+            int contrasting = 0;
+            for (int y = 0; y < image.height(); ++y) {
+                for (int x = 0; x < std::min(image.width(), indicatorWidth); ++x) {
+                    const QColor c = image.pixelColor(x, y);
+                    if (std::abs(c.lightness() - window.lightness()) > 60)
+                        ++contrasting;
+                }
+            }
+            QVERIFY2(contrasting >= 20, qPrintable(QStringLiteral("%1: %2 pixels stand out")
+                                                       .arg(button->text()).arg(contrasting)));
+        }
+    }
+
     void noNegativeZero()
     {
         QCOMPARE(ui::shownTenths(-0.04), 0.0);
