@@ -1,6 +1,7 @@
 #include "rotctldpanel.h"
 
 #include "bridge/rotctldserver.h"
+#include "input/finitenumber.h"
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>
@@ -10,12 +11,23 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QSettings>
 #include <QSignalBlocker>
 #include <QSpinBox>
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
 namespace slew::ui {
+namespace {
+
+// Where the operator's server settings are kept (QSettings).
+constexpr char kEnabledKey[] = "trackers/enabled";
+constexpr char kAddressKey[] = "trackers/address";
+constexpr char kPortKey[] = "trackers/port";
+constexpr char kAllowedKey[] = "trackers/allowed";
+constexpr char kDeadbandKey[] = "trackers/deadband";
+
+} // namespace
 
 RotctldPanel::RotctldPanel(bridge::RotctldServer *server, QWidget *parent) : QWidget(parent), m_server(server)
 {
@@ -66,6 +78,10 @@ RotctldPanel::RotctldPanel(bridge::RotctldServer *server, QWidget *parent) : QWi
     layout->addWidget(m_clients, 1);
 
     connect(m_enabled, &QCheckBox::toggled, this, &RotctldPanel::apply);
+    // What the operator sets here is kept for the next start; a server
+    // started from the command line (--rotctld-listen) is for that run only.
+    connect(m_enabled, &QCheckBox::clicked, this, &RotctldPanel::keepSettings);
+    connect(m_deadband, &QDoubleSpinBox::editingFinished, this, &RotctldPanel::keepSettings);
     connect(m_deadband, &QDoubleSpinBox::valueChanged, this, [this](double v) { m_server->setDeadband(v); });
     connect(m_handBack, &QPushButton::clicked, m_server, &bridge::RotctldServer::releaseRemote);
     m_refresh.setSingleShot(true);
@@ -82,6 +98,34 @@ RotctldPanel::RotctldPanel(bridge::RotctldServer *server, QWidget *parent) : QWi
     connect(m_server, &bridge::RotctldServer::remoteHeldChanged, this, &RotctldPanel::refreshHold);
     connect(m_server, &bridge::RotctldServer::logMessage, this, &RotctldPanel::message);
     refreshHold(m_server->isRemoteHeld());
+    restoreSettings();
+}
+
+void RotctldPanel::keepSettings()
+{
+    QSettings settings;
+    settings.setValue(QLatin1String(kEnabledKey), m_enabled->isChecked());
+    settings.setValue(QLatin1String(kAddressKey), m_address->text().trimmed());
+    settings.setValue(QLatin1String(kPortKey), m_port->value());
+    settings.setValue(QLatin1String(kAllowedKey), m_allowed->text().trimmed());
+    settings.setValue(QLatin1String(kDeadbandKey), m_deadband->value());
+}
+
+void RotctldPanel::restoreSettings()
+{
+    const QSettings settings;
+    if (const QString address = settings.value(QLatin1String(kAddressKey)).toString(); !address.isEmpty())
+        m_address->setText(address);
+    bool ok = false;
+    if (const int port = settings.value(QLatin1String(kPortKey)).toInt(&ok); ok && port >= 0 && port <= 65535)
+        m_port->setValue(port);
+    m_allowed->setText(settings.value(QLatin1String(kAllowedKey)).toString());
+    if (const std::optional<double> deadband = input::finiteNumber(settings.value(QLatin1String(kDeadbandKey)).toString());
+        deadband && *deadband >= m_deadband->minimum() && *deadband <= m_deadband->maximum())
+        m_deadband->setValue(*deadband);
+    // A server the operator left on is on again (or says why it cannot be).
+    if (settings.value(QLatin1String(kEnabledKey)).toBool())
+        m_enabled->setChecked(true); // applies
 }
 
 bool RotctldPanel::startListening(const QString &address, quint16 port)

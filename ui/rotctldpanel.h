@@ -33,6 +33,8 @@ signals:
 
 private:
     void apply();
+    void keepSettings();    // what the operator set, for the next start
+    void restoreSettings(); // at construction
     void refuse(const QString &why);
     void refreshClients();
     void refreshHold(bool held);

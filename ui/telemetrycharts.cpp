@@ -15,12 +15,14 @@
 #include <QMetaEnum>
 #include <QPushButton>
 #include <QSaveFile>
+#include <QSettings>
 #include <QScatterSeries>
 #include <QValueAxis>
 #include <QVBoxLayout>
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace slew::ui {
 
@@ -31,6 +33,17 @@ namespace {
 constexpr qint64 kMinute = 60 * 1000;
 constexpr qint64 kMinWindow = kMinute;
 constexpr qint64 kMaxWindow = 24 * 60 * kMinute;
+constexpr char kWindowKey[] = "telemetry/windowMs";
+
+// The window the operator chose last time, if it is one the list offers.
+std::optional<qint64> keptWindowMs()
+{
+    bool ok = false;
+    const qint64 ms = QSettings().value(QLatin1String(kWindowKey)).toLongLong(&ok);
+    if (!ok || ms < kMinWindow || ms > kMaxWindow)
+        return std::nullopt;
+    return ms;
+}
 
 // A status register holds its value until the next change: draw it so.
 QList<QPointF> asSteps(const QList<QPointF> &points, qint64 to)
@@ -99,6 +112,12 @@ TelemetryCharts::TelemetryCharts(const model::TelemetryHistory *history, QWidget
 
     connect(m_window, &QComboBox::currentIndexChanged, this,
             [this] { setWindowMs(m_window->currentData().toLongLong()); });
+    // The operator's choice (activated: a choice made by hand, not by code)
+    // is kept for the next start.
+    connect(m_window, &QComboBox::activated, this,
+            [this] { QSettings().setValue(QLatin1String(kWindowKey), m_window->currentData().toLongLong()); });
+    if (const std::optional<qint64> kept = keptWindowMs())
+        m_windowMs = *kept;
     connect(m_pause, &QPushButton::toggled, this, &TelemetryCharts::setPaused);
     connect(m_export, &QPushButton::clicked, this, &TelemetryCharts::chooseExportFile);
     connect(&m_timer, &QTimer::timeout, this, &TelemetryCharts::redraw);

@@ -14,6 +14,9 @@
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTcpSocket>
+#include <QComboBox>
+#include <QLineEdit>
+#include <QSpinBox>
 #include <QTest>
 #include <QTreeWidget>
 
@@ -24,6 +27,8 @@ private slots:
     void trackerSteersUntilTheOperatorStops();
     void badAddressKeepsTheServerOff();
     void wizardOpensFromTheMenu();
+    void serverSettingsSurviveARestart();
+    void telemetryWindowSurvivesARestart();
 
 private:
     static QByteArray ask(QTcpSocket &s, const QByteArray &line)
@@ -89,6 +94,57 @@ void TrackersTest::wizardOpensFromTheMenu()
     QCOMPARE(wizard->session(), &f.session);
     wizard->reject(); // cancelling stops the rotator and closes
     QTRY_VERIFY(!f.find<slew::ui::SetupWizard>(QStringLiteral("setupWizard")));
+}
+
+void TrackersTest::serverSettingsSurviveARestart()
+{
+    {
+        WindowFixture f;
+        QVERIFY(!f.window->rotctldServer()->isListening());
+        f.find<QSpinBox>(QStringLiteral("rotctldPort"))->setValue(0); // any free port
+        f.find<QLineEdit>(QStringLiteral("rotctldAllowed"))->setText(QStringLiteral("127.0.0.1"));
+        auto *enabled = f.find<QCheckBox>(QStringLiteral("rotctldEnabled"));
+        enabled->show();
+        QTest::mouseClick(enabled, Qt::LeftButton, {}, QPoint(5, enabled->height() / 2)); // the operator ticks it
+        QVERIFY(f.window->rotctldServer()->isListening());
+    }
+    {
+        // The next start: on again, as the operator left it.
+        WindowFixture f;
+        QVERIFY(f.find<QCheckBox>(QStringLiteral("rotctldEnabled"))->isChecked());
+        QVERIFY(f.window->rotctldServer()->isListening());
+        QCOMPARE(f.find<QLineEdit>(QStringLiteral("rotctldAllowed"))->text(), QStringLiteral("127.0.0.1"));
+        auto *enabled = f.find<QCheckBox>(QStringLiteral("rotctldEnabled"));
+        enabled->show();
+        QTest::mouseClick(enabled, Qt::LeftButton, {}, QPoint(5, enabled->height() / 2)); // and off
+        QVERIFY(!f.window->rotctldServer()->isListening());
+    }
+    {
+        WindowFixture f;
+        QVERIFY(!f.window->rotctldServer()->isListening());
+        // Started from the command line: for that run only.
+        QVERIFY(f.window->rotctldPanel()->startListening(QStringLiteral("127.0.0.1"), 0));
+    }
+    WindowFixture after;
+    QVERIFY(!after.window->rotctldServer()->isListening());
+}
+
+void TrackersTest::telemetryWindowSurvivesARestart()
+{
+    {
+        WindowFixture f;
+        f.window->show();
+        QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
+        auto *window = f.find<QComboBox>(QStringLiteral("chartWindow"));
+        QCOMPARE(window->currentIndex(), 0);
+        window->setFocus();
+        // The operator picks the longest (arrow keys jog the rotator here).
+        QTest::keyClick(window, Qt::Key_End);
+        QCOMPARE(window->currentIndex(), window->count() - 1);
+    }
+    WindowFixture f;
+    auto *window = f.find<QComboBox>(QStringLiteral("chartWindow"));
+    QCOMPARE(window->currentIndex(), window->count() - 1);
 }
 
 QTEST_MAIN(TrackersTest)
