@@ -374,17 +374,7 @@ void MainWindow::wirePlot()
         if (s == RotatorSession::State::Connecting)
             m_plot->clearPositions();
     });
-    connect(m_session, &RotatorSession::configValueReceived, m_plot, [this](int reg, const QString &text) {
-        // The device's own park registers are the truth once read.
-        const std::optional<double> value = input::finiteNumber(text);
-        if (!value || (reg != 7 && reg != 8))
-            return; // a register that does not read as a number moves no marker
-        const double v = *value;
-        // The registers hold the controller's own angles; the plot shows
-        // where the antenna points (the calibration offsets added).
-        m_plot->setPark(reg == 7 ? v + m_session->azimuthOffset() : m_session->parkAzimuth(),
-                        reg == 8 ? v + m_session->elevationOffset() : m_session->parkElevation());
-    });
+    connect(m_session, &RotatorSession::parkChanged, this, &MainWindow::showPark);
     connect(m_plot, &PolarPlotWidget::targetPicked, this, &MainWindow::onTargetPicked);
     connect(m_confirm, &TargetConfirmation::pendingChanged, m_plot, &PolarPlotWidget::setPendingTarget);
     connect(m_confirm, &TargetConfirmation::accepted, m_session,
@@ -408,8 +398,17 @@ void MainWindow::showProfile()
 {
     // Both in the pointing frame, as the position is.
     m_plot->setLimits(m_session->moveGate().limits());
-    m_plot->setPark(m_session->parkAzimuth(), m_session->parkElevation());
+    showPark();
     m_charts->setElevationShown(!m_session->isAzimuthOnly());
+}
+
+void MainWindow::showPark()
+{
+    // In the pointing frame, as the position is; nothing until the
+    // controller's registers have said where it parks.
+    m_plot->setPark(m_session->parkKnown()
+                        ? std::optional<QPointF>(QPointF(m_session->parkAzimuth(), m_session->parkElevation()))
+                        : std::nullopt);
 }
 
 void MainWindow::connectTo(const QString &uri, std::optional<protocol::Dialect> dialect)

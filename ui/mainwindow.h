@@ -99,6 +99,7 @@ private:
     void wirePlot();
     void onTargetPicked(double az, double el);
     void showProfile();
+    void showPark(); // the plot's P: the controller's park, once known
     void buildMenus();
     void logInfo(const QString &text);
 

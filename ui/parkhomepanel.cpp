@@ -66,6 +66,7 @@ ParkHomePanel::ParkHomePanel(RotatorSession *session, QWidget *parent) : QWidget
     });
     connect(session, &RotatorSession::capabilitiesChanged, this, &ParkHomePanel::updateEnabled);
     connect(session, &RotatorSession::profileChanged, this, &ParkHomePanel::updateEnabled);
+    connect(session, &RotatorSession::parkChanged, this, &ParkHomePanel::updateEnabled); // the tooltip
     updateEnabled();
 }
 
@@ -77,7 +78,7 @@ void ParkHomePanel::updateEnabled()
     // Without a park command the session parks by a go-to (RotatorSession::park).
     const bool parksByGoto = !protocol::dialectSupports(m_session->profile().dialect, protocol::Op::Park);
     m_park->setToolTip(parksByGoto ? tr("Move to the park position, by a go-to: this controller has no park command")
-                                   : tr("Move to the park position"));
+                                   : tr("Move to the park position (%1)").arg(parkText()));
     const bool noHoming = caps.probed && !caps.reset;
     m_home->setEnabled(connected && !m_homing && !noHoming);
     // A greyed-out Home says why, so it is not taken for a fault.
@@ -89,11 +90,20 @@ void ParkHomePanel::updateEnabled()
 bool ParkHomePanel::park()
 {
     const session::CommandResult sent = m_session->park();
-    m_message->setText(sent ? tr("Parking at %1°, %2°.")
-                                  .arg(m_session->profile().parkAz, 0, 'f', 1)
-                                  .arg(m_session->profile().parkEl, 0, 'f', 1)
+    // PARK goes where the controller's registers say even before Slew has
+    // read them; only the text waits for them.
+    m_message->setText(sent ? m_session->parkKnown() ? tr("Parking at %1.").arg(parkText())
+                                                     : tr("Parking where the controller says (%1).").arg(parkText())
                             : tr("Not parking: %1").arg(sent.refusal));
     return bool(sent);
+}
+
+QString ParkHomePanel::parkText() const
+{
+    // Where the antenna will point, as the plot's P shows it.
+    if (!m_session->parkKnown())
+        return tr("park not read yet");
+    return tr("%1°, %2°").arg(m_session->parkAzimuth(), 0, 'f', 1).arg(m_session->parkElevation(), 0, 'f', 1);
 }
 
 bool ParkHomePanel::home()

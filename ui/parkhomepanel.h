@@ -44,6 +44,7 @@ private:
     void onPosition(double az, double el, bool stale);
     void finish(bool ok, const QString &message);
     void updateEnabled();
+    QString parkText() const; // where PARK goes, or that it is not read yet
 
     session::RotatorSession *m_session;
     QPushButton *m_park;

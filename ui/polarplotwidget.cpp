@@ -47,9 +47,9 @@ void PolarPlotWidget::setLimits(const model::RotatorLimits &limits)
     update();
 }
 
-void PolarPlotWidget::setPark(double az, double el)
+void PolarPlotWidget::setPark(std::optional<QPointF> azEl)
 {
-    m_park = QPointF(az, el);
+    m_park = azEl;
     update();
 }
 

@@ -27,7 +27,9 @@ public:
     explicit PolarPlotWidget(QWidget *parent = nullptr);
 
     void setLimits(const model::RotatorLimits &limits);
-    void setPark(double az, double el);
+    // Where PARK goes, none while it is not known (the controller's park
+    // registers not read yet): no marker rather than a guessed one.
+    void setPark(std::optional<QPointF> azEl);
     void setActual(double az, double el, bool stale);
     void setCommanded(double az, double el);
     void setTarget(double az, double el);
@@ -40,6 +42,7 @@ public:
 
     bool isStale() const { return m_stale; }
     std::optional<QPointF> actual() const { return m_actual; }
+    std::optional<QPointF> park() const { return m_park; }
     int trailSize() const { return int(m_trail.size()); }
 
     // Geometry, public so tests can click on a known az/el.

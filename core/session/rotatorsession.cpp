@@ -188,6 +188,7 @@ void RotatorSession::onLinkOpened()
     m_textLinesSkipped = 0;
     m_unreadableReplies = 0;
     updatePollPace(); // at the rate of this link's line
+    forgetParkRegisters();
     setState(State::Connected, tr("connected to %1").arg(m_uri));
     startProbe();
     m_pollTimer.start();
@@ -492,6 +493,7 @@ void RotatorSession::applyConfig(int reg, const QString &text, bool numeric, dou
     emit configValueReceived(reg, text);
     if (!numeric)
         return;
+    noteParkRegister(reg, value);
     if (reg == 10)
         m_commandedAz = value + azimuthOffset();
     else if (reg == 11)

@@ -98,9 +98,21 @@ public:
     // elevation offset.
     double azimuthOffset() const { return m_profile.azOffsetDeg; }
     double elevationOffset() const { return isAzimuthOnly() ? 0.0 : m_profile.elOffsetDeg; }
-    // The park position (the controller's registers) in the pointing frame.
-    double parkAzimuth() const { return m_profile.parkAz + azimuthOffset(); }
-    double parkElevation() const { return m_profile.parkEl + elevationOffset(); }
+    // Where PARK takes the antenna. A controller with park registers (CW7/CW8,
+    // hasParkRegisters()) parks where they say, whatever the profile thinks:
+    // they are read on every connect, after the probe, and until both are in
+    // parkKnown() is false and these fall back to the profile's guess. A
+    // controller without them parks at the profile's position (by a go-to, or
+    // its own command), which is then as known as it gets.
+    // (rotatorsession_park.cpp)
+    bool hasParkRegisters() const;
+    bool parkKnown() const;
+    // The controller's own angles (uncalibrated), as the registers hold them.
+    double controllerParkAzimuth() const;
+    double controllerParkElevation() const;
+    // The same in the pointing frame.
+    double parkAzimuth() const { return controllerParkAzimuth() + azimuthOffset(); }
+    double parkElevation() const { return controllerParkElevation() + elevationOffset(); }
 
     bool hasPosition() const { return !std::isnan(m_az) && !std::isnan(m_el); }
     double azimuth() const { return m_az; }
@@ -222,6 +234,9 @@ signals:
     void telemetryChanged(const slew::session::Telemetry &telemetry);
     void encodersChanged(double az, double el, double azVelocity, double elVelocity);
     void configValueReceived(int reg, const QString &value);
+    // parkKnown() or the park position changed: the registers came in, or
+    // were forgotten with the link.
+    void parkChanged();
     void versionChanged(const QString &version);
     void capabilitiesChanged(const slew::session::Capabilities &capabilities);
     void stopHoldSent();
@@ -302,6 +317,9 @@ private:
     void finishFront(bool ok, const QString &reason);
 
     void startProbe();
+    void readParkRegisters();
+    void forgetParkRegisters();
+    void noteParkRegister(int reg, double value); // a CR7/CR8 reply, whoever asked
     void poll();
     void keepAlive();
     void checkSoftLimits();
@@ -339,6 +357,7 @@ private:
     std::optional<model::RotatorLimits> m_linkLimits; // as reported, uncorrected
     Capabilities m_caps;
     int m_probesOutstanding = 0;
+    std::array<std::optional<double>, 2> m_parkRegister; // CW7, CW8 as read on this link
     QHash<QByteArray, int> m_telemetryFailures; // consecutive misses per telemetry query
 
     double m_az = kUnknown, m_el = kUnknown;

@@ -408,8 +408,9 @@ CommandResult RotatorSession::park()
         m_activeTarget.reset(); // parking is the operator's move, not a tracker target
         return sent;
     }
-    // The controller parks where its own registers say; the profile's park
-    // position is what was written there (CW7/CW8 pass the gate), and it is
+    // The controller parks where its own registers say: as read once they
+    // are in, else the profile's position, which is what the wizard or the
+    // Configuration tab wrote there (CW7/CW8 pass the gate). Either is
     // checked again against the limits in force now.
     const model::MoveCheck check = m_gate.mechanical(parkAzimuth(), parkElevation());
     if (!check.allowed())
@@ -417,9 +418,13 @@ CommandResult RotatorSession::park()
     m_jogSpeed = {0.0, 0.0};
     writeMove(protocol::encodeLine({Message::query(Op::Park)}, m_profile.dialect));
     m_activeTarget.reset();
-    m_targetAz = parkAzimuth();
-    m_targetEl = parkElevation();
-    emit targetChanged(m_targetAz, m_targetEl);
+    // A park not read yet is no target to show: the controller knows where
+    // it goes, the session does not.
+    if (parkKnown()) {
+        m_targetAz = parkAzimuth();
+        m_targetEl = parkElevation();
+        emit targetChanged(m_targetAz, m_targetEl);
+    }
     return {};
 }
 

@@ -162,6 +162,8 @@ void RotatorSession::startProbe()
                 m_caps.probed = true;
                 emit capabilitiesChanged(m_caps);
                 poll();
+                if (m_caps.config)
+                    readParkRegisters();
             }
         };
         requests.append(std::move(r));

@@ -167,7 +167,12 @@ private slots:
         QVERIFY(f.connectAndWait());
         ConfigEditor *editor = f.window->configEditor();
         f.window->tabs()->setCurrentWidget(editor); // opening it reads the device
-        QVERIFY(f.waitFor([&] { return !editor->deviceValue(1).isEmpty() && !editor->deviceValue(8).isEmpty(); }, 10000));
+        // Every register this test looks at: CR7/CR8 come early, the session
+        // reads them on connect, so they are no sign the rest are in.
+        QVERIFY(f.waitFor([&] {
+            return !editor->deviceValue(1).isEmpty() && !editor->deviceValue(2).isEmpty()
+                && !editor->deviceValue(7).isEmpty();
+        }, 10000));
         QCOMPARE(editor->fieldState(1), ConfigEditor::FieldState::Same);
 
         auto *kp = f.find<QLineEdit>(QStringLiteral("configValue1"));
@@ -192,7 +197,7 @@ private slots:
         QVERIFY(f.connectAndWait());
         ConfigEditor *editor = f.window->configEditor();
         f.window->tabs()->setCurrentWidget(editor);
-        QVERIFY(f.waitFor([&] { return !editor->deviceValue(8).isEmpty(); }, 10000));
+        QVERIFY(f.waitFor([&] { return !editor->deviceValue(2).isEmpty() && !editor->deviceValue(8).isEmpty(); }, 10000));
         typeInto(f.find<QLineEdit>(QStringLiteral("configValue2")), QStringLiteral("0.25"));
         typeInto(f.find<QLineEdit>(QStringLiteral("configValue8")), QStringLiteral("120")); // park el above 90
         QCOMPARE(editor->fieldState(8), ConfigEditor::FieldState::Invalid);

@@ -64,6 +64,23 @@ void ParkPage::initializePage()
     m_el->setRange(p.limits.elMin, p.limits.elMax);
     m_az->setValue(p.parkAz);
     m_el->setValue(p.parkEl);
+    m_status->clear();
+    // A controller with park registers parks where they say: start from
+    // what it holds, not from the profile's guess (0/90 in a fresh one).
+    const session::RotatorSession *s = m_wizard->session();
+    if (!s->isConnected() || !s->hasParkRegisters() || !protocol::dialectSupports(d, protocol::Op::ConfigWrite))
+        return;
+    if (!s->parkKnown()) {
+        m_status->setText(tr("Park not read yet: these are the profile's %1°, %2°, not what the controller holds.")
+                              .arg(p.parkAz, 0, 'f', 1)
+                              .arg(p.parkEl, 0, 'f', 1));
+        return;
+    }
+    m_az->setValue(s->controllerParkAzimuth());
+    m_el->setValue(s->controllerParkElevation());
+    m_status->setText(tr("The controller's park registers hold %1°, %2°.")
+                          .arg(s->controllerParkAzimuth(), 0, 'f', 1)
+                          .arg(s->controllerParkElevation(), 0, 'f', 1));
 }
 
 bool ParkPage::validatePage()

@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// RotatorSession, part five: where PARK goes. An Easycomm III or SatNOGS
+// controller parks at its own registers CW7/CW8, which need not be what the
+// profile says (a fresh profile says 0/90, a fresh controller may hold 0/0).
+// So the session reads them once on every connect, after the probe, and
+// until they are in it says the park is not known rather than show the
+// profile's guess as if it were the controller's.
+
+#include "rotatorsession.h"
+
+#include "protocol/dialect.h"
+#include "protocol/encoder.h"
+#include "protocol/operations.h"
+
+#include <cmath>
+
+namespace slew::session {
+
+using protocol::Message;
+using protocol::Op;
+
+bool RotatorSession::hasParkRegisters() const
+{
+    // The dialects with CR have CW7/CW8 (docs/protocol.md); GS-232, SPID,
+    // Micro-2g and rotctld have no registers and park at the profile's.
+    return protocol::dialectSupports(m_profile.dialect, Op::ConfigRead);
+}
+
+bool RotatorSession::parkKnown() const
+{
+    return !hasParkRegisters() || (m_parkRegister[0] && m_parkRegister[1]);
+}
+
+double RotatorSession::controllerParkAzimuth() const
+{
+    return hasParkRegisters() ? m_parkRegister[0].value_or(m_profile.parkAz) : m_profile.parkAz;
+}
+
+double RotatorSession::controllerParkElevation() const
+{
+    return hasParkRegisters() ? m_parkRegister[1].value_or(m_profile.parkEl) : m_profile.parkEl;
+}
+
+void RotatorSession::readParkRegisters()
+{
+    for (int reg : {7, 8}) {
+        Request r;
+        r.line = protocol::encodeLine({Message::query(Op::ConfigRead, reg)}, m_profile.dialect);
+        if (r.line.isEmpty() || m_queue.contains(r.line))
+            continue;
+        r.expects[0] = Expectation{Op::ConfigRead, reg};
+        r.expectCount = 1;
+        r.attemptsLeft = m_options.retries + 1;
+        r.purpose = RequestPurpose::Probe;
+        // The value itself arrives through applyConfig(), as any CR reply does.
+        r.done = [this, reg](bool ok, const QString &reason) {
+            if (!ok && m_link) // a closing link fails it too, and says why itself
+                emit errorOccurred(tr("could not read park register %1: %2; the park position is not known")
+                                       .arg(reg)
+                                       .arg(reason));
+        };
+        enqueue(std::move(r));
+    }
+}
+
+void RotatorSession::forgetParkRegisters()
+{
+    // Another link may be another controller: what this one held says
+    // nothing about it.
+    if (!m_parkRegister[0] && !m_parkRegister[1])
+        return;
+    m_parkRegister = {};
+    emit parkChanged();
+}
+
+void RotatorSession::noteParkRegister(int reg, double value)
+{
+    if (!hasParkRegisters() || (reg != 7 && reg != 8) || !std::isfinite(value))
+        return;
+    std::optional<double> &held = m_parkRegister[reg - 7];
+    if (held == value)
+        return;
+    held = value;
+    emit parkChanged();
+}
+
+} // namespace slew::session
