@@ -3,8 +3,6 @@
 
 #include "session/stopbeforeexit.h"
 
-#include "input/finitenumber.h"
-
 #include "alarmbanner.h"
 #include "alarmmonitor.h"
 #include "configeditor.h"

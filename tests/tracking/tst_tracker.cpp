@@ -39,7 +39,9 @@ struct Rig {
         profile.azOffsetDeg = azOffset;
         profile.elOffsetDeg = elOffset;
         session.setProfile(profile);
-        session.connectTo(QStringLiteral("sim:?clock=manual&az_max=%1&el_max=%2").arg(azMax).arg(elMax));
+        // The controller's park registers (CW7/CW8) agree with the profile:
+        // Park drives where the controller says, which the session reads.
+        session.connectTo(QStringLiteral("sim:?clock=manual&az_max=%1&el_max=%2&park_az=180&park_el=90").arg(azMax).arg(elMax));
         pump.follow(&session);
         QObject::connect(&session, &RotatorSession::targetChanged, &session,
                          [this](double az, double el) { targets.append(QPointF(az, el)); });
