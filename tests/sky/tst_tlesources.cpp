@@ -116,6 +116,28 @@ QString describe(const TleSourceStatus &s)
     return describeSource(s);
 }
 
+// A source whose cache already holds the full 979-set group, fetched from a
+// server on 127.0.0.1 that a test then makes answer badly.
+struct FullCache {
+    QTemporaryDir cache;
+    TinyHttpServer server;
+    QByteArray full = fileBytes(kFullGroup);
+    TleSources sources{cache.path()};
+    QString cacheFile;
+
+    bool fill()
+    {
+        if (!server.listen(QHostAddress::LocalHost, 0))
+            return false;
+        server.pages.insert("/amateur.txt", full);
+        sources.setUrls({server.url("/amateur.txt")});
+        if (!refreshAndWait(sources) || sources.status()[0].setCount != 979)
+            return false;
+        cacheFile = sources.cacheFile(server.url("/amateur.txt"));
+        return fileBytes(cacheFile) == full;
+    }
+};
+
 } // namespace
 
 class TestTleSources : public QObject {
@@ -339,17 +361,12 @@ void TestTleSources::silenceIsGivenUpAndSaysSo()
 
 void TestTleSources::oneSetPageDoesNotReplaceAFullCache()
 {
-    QTemporaryDir cache;
-    TinyHttpServer server;
-    QVERIFY(server.listen(QHostAddress::LocalHost, 0));
-    const QByteArray full = fileBytes(kFullGroup);
-    server.pages.insert("/amateur.txt", full);
-    TleSources sources(cache.path());
-    sources.setUrls({server.url("/amateur.txt")});
-    QVERIFY(refreshAndWait(sources));
-    QCOMPARE(sources.status()[0].setCount, 979);
-    const QString cacheFile = sources.cacheFile(server.url("/amateur.txt"));
-    QCOMPARE(fileBytes(cacheFile), full);
+    FullCache f;
+    QVERIFY(f.fill());
+    TinyHttpServer &server = f.server;
+    TleSources &sources = f.sources;
+    const QByteArray &full = f.full;
+    const QString &cacheFile = f.cacheFile;
 
     // A portal's page with one example set in it.
     server.pages.insert("/amateur.txt", "<!DOCTYPE html>\n<html>\n<head><title>Maintenance</title></head>\n<body>\n"
@@ -371,7 +388,7 @@ void TestTleSources::oneSetPageDoesNotReplaceAFullCache()
     QCOMPARE(fileBytes(cacheFile), full);
 
     // The next start still has all of them.
-    TleSources next(cache.path());
+    TleSources next(f.cache.path());
     next.setUrls(sources.urls());
     QVERIFY(loadAndWait(next));
     QCOMPARE(next.sets().size(), 979);
@@ -379,16 +396,12 @@ void TestTleSources::oneSetPageDoesNotReplaceAFullCache()
 
 void TestTleSources::cutOffAnswerDoesNotReplaceAFullCache()
 {
-    QTemporaryDir cache;
-    TinyHttpServer server;
-    QVERIFY(server.listen(QHostAddress::LocalHost, 0));
-    const QByteArray full = fileBytes(kFullGroup);
-    server.pages.insert("/amateur.txt", full);
-    TleSources sources(cache.path());
-    sources.setUrls({server.url("/amateur.txt")});
-    QVERIFY(refreshAndWait(sources));
-    const QString cacheFile = sources.cacheFile(server.url("/amateur.txt"));
-    QCOMPARE(fileBytes(cacheFile), full);
+    FullCache f;
+    QVERIFY(f.fill());
+    TinyHttpServer &server = f.server;
+    TleSources &sources = f.sources;
+    const QByteArray &full = f.full;
+    const QString &cacheFile = f.cacheFile;
 
     // Cut after 1200 bytes, with the close as the only end: a few sets read.
     TinyHttpAnswer cut;

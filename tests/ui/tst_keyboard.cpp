@@ -44,13 +44,6 @@ void settle(WindowFixture &f)
     QVERIFY(f.waitFor([&] { return f.sent.size() >= before + 3; }, 5000));
 }
 
-void typeInto(QLineEdit *field, const QString &text)
-{
-    field->setFocus();
-    field->selectAll();
-    QTest::keyClick(field, Qt::Key_Backspace);
-    QTest::keyClicks(field, text);
-}
 
 } // namespace
 
@@ -148,8 +141,8 @@ private slots:
         auto *az = f.find<QLineEdit>(QStringLiteral("gotoAzimuth"));
         auto *el = f.find<QLineEdit>(QStringLiteral("gotoElevation"));
         const double farAz = f.session.azimuth() < 180.0 ? 300.0 : 20.0;
-        typeInto(az, QString::number(farAz));
-        typeInto(el, QStringLiteral("60"));
+        WindowFixture::typeInto(az, QString::number(farAz));
+        WindowFixture::typeInto(el, QStringLiteral("60"));
         key(f.window.get(), QEvent::KeyPress, Qt::Key_Return, false, QStringLiteral("\r"));
         key(f.window.get(), QEvent::KeyRelease, Qt::Key_Return, false, QStringLiteral("\r"));
         QVERIFY(f.session.activeTarget().has_value()); // Enter sent the go-to

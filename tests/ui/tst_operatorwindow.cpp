@@ -33,13 +33,6 @@ namespace {
 
 const QRegularExpression kPositionCommand(QStringLiteral("^AZ\\s*-?\\d|EL\\s*-?\\d"));
 
-void typeInto(QLineEdit *field, const QString &text)
-{
-    field->setFocus();
-    field->selectAll();
-    QTest::keyClick(field, Qt::Key_Backspace);
-    QTest::keyClicks(field, text);
-}
 
 } // namespace
 
@@ -121,8 +114,8 @@ private slots:
     {
         WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
-        typeInto(f.find<QLineEdit>(QStringLiteral("gotoAzimuth")), QStringLiteral("40"));
-        typeInto(f.find<QLineEdit>(QStringLiteral("gotoElevation")), QStringLiteral("20,5"));
+        WindowFixture::typeInto(f.find<QLineEdit>(QStringLiteral("gotoAzimuth")), QStringLiteral("40"));
+        WindowFixture::typeInto(f.find<QLineEdit>(QStringLiteral("gotoElevation")), QStringLiteral("20,5"));
         auto *go = f.find<QPushButton>(QStringLiteral("gotoButton"));
         QVERIFY(go->isEnabled());
         QTest::mouseClick(go, Qt::LeftButton);
@@ -148,8 +141,8 @@ private slots:
         WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
         auto *azField = f.find<QLineEdit>(QStringLiteral("gotoAzimuth"));
-        typeInto(azField, az);
-        typeInto(f.find<QLineEdit>(QStringLiteral("gotoElevation")), el);
+        WindowFixture::typeInto(azField, az);
+        WindowFixture::typeInto(f.find<QLineEdit>(QStringLiteral("gotoElevation")), el);
         auto *go = f.find<QPushButton>(QStringLiteral("gotoButton"));
         QVERIFY(!go->isEnabled());
         QVERIFY(!f.find<QLabel>(QStringLiteral("gotoMessage"))->text().isEmpty());
@@ -177,8 +170,8 @@ private slots:
 
         auto *kp = f.find<QLineEdit>(QStringLiteral("configValue1"));
         auto *parkAz = f.find<QLineEdit>(QStringLiteral("configValue7"));
-        typeInto(kp, QStringLiteral("12.5"));
-        typeInto(parkAz, QStringLiteral("123.25"));
+        WindowFixture::typeInto(kp, QStringLiteral("12.5"));
+        WindowFixture::typeInto(parkAz, QStringLiteral("123.25"));
         QCOMPARE(editor->fieldState(1), ConfigEditor::FieldState::Changed);
         QCOMPARE(editor->fieldState(7), ConfigEditor::FieldState::Changed);
         QCOMPARE(editor->fieldState(2), ConfigEditor::FieldState::Same);
@@ -198,8 +191,8 @@ private slots:
         ConfigEditor *editor = f.window->configEditor();
         f.window->tabs()->setCurrentWidget(editor);
         QVERIFY(f.waitFor([&] { return !editor->deviceValue(2).isEmpty() && !editor->deviceValue(8).isEmpty(); }, 10000));
-        typeInto(f.find<QLineEdit>(QStringLiteral("configValue2")), QStringLiteral("0.25"));
-        typeInto(f.find<QLineEdit>(QStringLiteral("configValue8")), QStringLiteral("120")); // park el above 90
+        WindowFixture::typeInto(f.find<QLineEdit>(QStringLiteral("configValue2")), QStringLiteral("0.25"));
+        WindowFixture::typeInto(f.find<QLineEdit>(QStringLiteral("configValue8")), QStringLiteral("120")); // park el above 90
         QCOMPARE(editor->fieldState(8), ConfigEditor::FieldState::Invalid);
         QCOMPARE(editor->apply(), 0);
         QCOMPARE(f.sentCount(QRegularExpression(QStringLiteral("^CW"))), 0);
@@ -325,7 +318,7 @@ private slots:
         auto *el = f.find<QLineEdit>(QStringLiteral("gotoElevation"));
         QVERIFY(!el->isEnabled());
         QCOMPARE(el->text(), QStringLiteral("0"));
-        typeInto(f.find<QLineEdit>(QStringLiteral("gotoAzimuth")), QStringLiteral("90"));
+        WindowFixture::typeInto(f.find<QLineEdit>(QStringLiteral("gotoAzimuth")), QStringLiteral("90"));
         QTest::mouseClick(f.find<QPushButton>(QStringLiteral("gotoButton")), Qt::LeftButton);
         QVERIFY(f.sent.contains(QStringLiteral("3\rM090")));
         QVERIFY(f.waitUntilAt(90, 0, 7.0)); // within the controller's tolerance
@@ -354,7 +347,7 @@ private slots:
         QVERIFY(!console->sendRaw(QStringLiteral("AZ400.0"))); // limits apply to raw lines too
         QVERIFY(f.find<QLabel>(QStringLiteral("rawMessage"))->text().startsWith(QStringLiteral("Not sent")));
         QCOMPARE(f.sentCount(kPositionCommand), 0);
-        typeInto(f.find<QLineEdit>(QStringLiteral("trafficFilter")), QStringLiteral("^VE"));
+        WindowFixture::typeInto(f.find<QLineEdit>(QStringLiteral("trafficFilter")), QStringLiteral("^VE"));
         const QString shown = f.find<QWidget>(QStringLiteral("trafficView"))->property("plainText").toString();
         QVERIFY(shown.contains(QStringLiteral("→ VE")));
         QVERIFY(!shown.contains(QStringLiteral("AZ EL")));

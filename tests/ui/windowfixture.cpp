@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "windowfixture.h"
 
+#include <QLineEdit>
+
 #include "sim/simulatorscheme.h"
 #include "transport/link.h"
 
@@ -149,4 +151,12 @@ QString WindowFixture::AfterStop::describe() const
     auto at = [](QPointF p) { return QStringLiteral("%1/%2").arg(p.x(), 0, 'f', 2).arg(p.y(), 0, 'f', 2); };
     return QStringLiteral("pressed at %1, then %2, a second later %3%4")
         .arg(at(pressed), at(first), at(second), valid ? QString() : QStringLiteral(" (no position came)"));
+}
+
+void WindowFixture::typeInto(QLineEdit *field, const QString &text)
+{
+    field->setFocus();
+    field->selectAll();
+    QTest::keyClick(field, Qt::Key_Backspace);
+    QTest::keyClicks(field, text);
 }

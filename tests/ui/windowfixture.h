@@ -24,6 +24,8 @@
 #include <functional>
 #include <memory>
 
+class QLineEdit;
+
 class WindowFixture {
 public:
     // Call once per test executable: test settings, the sim: scheme.
@@ -65,6 +67,8 @@ public:
 
     // runEventLoopUntil (simulatorpump.h): the loop, and so the pump, runs flat out.
     static bool waitFor(const std::function<bool()> &pred, int timeoutMs);
+    // Replaces a field's text as the operator would: select, erase, type.
+    static void typeInto(QLineEdit *field, const QString &text);
 
     // Waits until pred() holds on a fresh position, and holds a manual
     // clock still from that position on, until releaseClock().
