@@ -38,10 +38,10 @@ GotoPanel::GotoPanel(session::RotatorSession *session, QWidget *parent) : QWidge
     setObjectName(QStringLiteral("gotoPanel"));
     m_az = new QLineEdit;
     m_az->setObjectName(QStringLiteral("gotoAzimuth"));
-    m_az->setPlaceholderText(tr("azimuth °"));
+    m_az->setPlaceholderText(tr("degrees"));
     m_el = new QLineEdit;
     m_el->setObjectName(QStringLiteral("gotoElevation"));
-    m_el->setPlaceholderText(tr("elevation °"));
+    m_el->setPlaceholderText(tr("degrees"));
     m_go = new QPushButton(tr("Go"));
     m_go->setObjectName(QStringLiteral("gotoButton"));
     m_go->setAutoDefault(false);

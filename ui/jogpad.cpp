@@ -4,7 +4,6 @@
 
 #include <QDoubleSpinBox>
 #include <QGridLayout>
-#include <QLabel>
 #include <QPushButton>
 
 namespace slew::ui {
@@ -45,10 +44,8 @@ JogPad::JogPad(session::RotatorSession *session, QWidget *parent) : QWidget(pare
     grid->addWidget(m_speed, 1, 1);
     grid->addWidget(makeButton(Right, QStringLiteral("▶"), QStringLiteral("jogRight")), 1, 2);
     grid->addWidget(makeButton(Down, QStringLiteral("▼"), QStringLiteral("jogDown")), 2, 1);
-    auto *hint = new QLabel(tr("hold to move · arrow keys"));
-    hint->setAlignment(Qt::AlignCenter);
-    hint->setEnabled(false);
-    grid->addWidget(hint, 3, 0, 1, 3);
+    // How to jog is said in the group's title (the window's): a line of its
+    // own here cost the height a 720-pixel screen does not have.
     connect(session, &session::RotatorSession::profileChanged, this, &JogPad::followAxes);
     connect(session, &session::RotatorSession::profileChanged, this, &JogPad::followSpeed);
     connect(session, &session::RotatorSession::capabilitiesChanged, this, &JogPad::followSpeed);
@@ -87,7 +84,7 @@ QPushButton *JogPad::makeButton(Direction d, const QString &text, const QString 
     b->setObjectName(name);
     b->setAutoDefault(false);
     b->setFocusPolicy(Qt::NoFocus); // keys go to KeyboardControl, not to a focused button
-    b->setMinimumSize(52, 40);
+    b->setMinimumSize(52, 32);
     static const char *tips[] = {"Azimuth counter-clockwise", "Azimuth clockwise", "Elevation up", "Elevation down"};
     b->setToolTip(tr(tips[d]));
     connect(b, &QPushButton::pressed, this, [this, d] { press(d); });

@@ -29,6 +29,7 @@
 #include "trackingpanel.h"
 #include "wizard/setupwizard.h"
 #include "alignmentpanel.h"
+#include "windowstate.h"
 
 #include "bridge/rotctldserver.h"
 #include "session/controllerrotors.h"
@@ -36,6 +37,8 @@
 
 #include <QDateTime>
 #include <QGroupBox>
+#include <QGuiApplication>
+#include <QScreen>
 #include <QMenuBar>
 #include <QCoreApplication>
 #include <QMessageBox>
@@ -56,7 +59,8 @@ QGroupBox *group(const QString &title, QWidget *content)
 {
     auto *box = new QGroupBox(title);
     auto *l = new QVBoxLayout(box);
-    l->setContentsMargins(8, 6, 8, 8);
+    // Tight margins: the control column must fit a 720-pixel screen.
+    l->setContentsMargins(6, 2, 6, 4);
     l->addWidget(content);
     return box;
 }
@@ -155,6 +159,7 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
     splitter->addWidget(plotColumn);
     splitter->addWidget(buildControlColumn());
     splitter->addWidget(m_tabs);
+    // A wider window widens the plot and the tabs; the controls keep their width.
     splitter->setStretchFactor(0, 5);
     splitter->setStretchFactor(1, 0);
     splitter->setStretchFactor(2, 6);
@@ -241,7 +246,8 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
     new TextFieldFocus(this, m_plot, this);
     connect(m_goto, &GotoPanel::sentByEnter, m_plot, [this] { m_plot->setFocus(Qt::OtherFocusReason); });
     buildMenus();
-    resize(1440, 900);
+    const QScreen *screen = QGuiApplication::primaryScreen();
+    new WindowState(this, splitter, m_tabs, screen ? screen->availableSize() : QSize(1440, 900));
 }
 
 void MainWindow::buildMenus()
@@ -356,7 +362,7 @@ QWidget *MainWindow::buildControlColumn()
     l->setContentsMargins(4, 0, 4, 0);
     l->addWidget(group(tr("Position"), m_readout));
     l->addWidget(group(tr("Go to"), m_goto));
-    l->addWidget(group(tr("Jog"), m_jog));
+    l->addWidget(group(tr("Jog: hold, or arrow keys"), m_jog));
     l->addWidget(m_stop);
     l->addWidget(m_parkHome);
     l->addWidget(group(tr("Presets"), m_presets), 1);

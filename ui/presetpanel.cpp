@@ -20,7 +20,7 @@ PresetPanel::PresetPanel(session::RotatorSession *session, QWidget *parent) : QW
     m_list = new QListWidget;
     m_list->setObjectName(QStringLiteral("presetList"));
     m_list->setToolTip(tr("Click a preset, or press its number, to go there"));
-    m_list->setMinimumHeight(90);
+    m_list->setMinimumHeight(48); // two rows; it scrolls, and takes more when there is room
     m_name = new QLineEdit;
     m_name->setObjectName(QStringLiteral("presetName"));
     m_name->setPlaceholderText(tr("name"));

@@ -67,13 +67,17 @@ RotctldPanel::RotctldPanel(bridge::RotctldServer *server, QWidget *parent) : QWi
     form->addRow(tr("Port"), m_port);
     form->addRow(tr("Allowed clients"), m_allowed);
     form->addRow(tr("Deadband"), m_deadband);
+    // The hold's text wraps rather than widening the window (it is long, and
+    // orange, when it matters), and the button to end it sits under it.
+    m_hold->setWordWrap(true);
     auto *holdRow = new QHBoxLayout;
-    holdRow->addWidget(m_hold, 1);
     holdRow->addWidget(m_handBack);
+    holdRow->addStretch(1);
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(m_enabled);
     layout->addLayout(form);
     layout->addWidget(m_state);
+    layout->addWidget(m_hold);
     layout->addLayout(holdRow);
     layout->addWidget(m_clients, 1);
 

@@ -2,6 +2,7 @@
 
 #include <QCheckBox>
 #include <QHBoxLayout>
+#include <QVBoxLayout>
 #include <QLabel>
 #include <QPushButton>
 #include <QSettings>
@@ -28,12 +29,23 @@ TargetConfirmation::TargetConfirmation(QWidget *parent) : QWidget(parent)
         b->setAutoDefault(false);
         b->setFocusPolicy(Qt::NoFocus);
     }
-    auto *layout = new QHBoxLayout(this);
+    // The question on a line of its own, two lines high whatever it says, and
+    // taking no width of its own: a longer text never widens the plot's
+    // column, so the plot never moves under the pointer that clicked it.
+    m_question->setWordWrap(true);
+    m_question->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+    m_question->setFixedHeight(2 * m_question->fontMetrics().lineSpacing() + 2);
+    m_question->setAlignment(Qt::AlignLeft | Qt::AlignTop);
+    auto *buttons = new QHBoxLayout;
+    buttons->addWidget(m_go);
+    buttons->addWidget(m_cancel);
+    buttons->addStretch(1);
+    buttons->addWidget(m_ask);
+    auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(m_question, 1);
-    layout->addWidget(m_go);
-    layout->addWidget(m_cancel);
-    layout->addWidget(m_ask);
+    layout->setSpacing(2);
+    layout->addWidget(m_question);
+    layout->addLayout(buttons);
     connect(m_go, &QPushButton::clicked, this, &TargetConfirmation::accept);
     connect(m_cancel, &QPushButton::clicked, this, &TargetConfirmation::cancel);
     connect(m_ask, &QCheckBox::toggled, this,
@@ -63,6 +75,7 @@ void TargetConfirmation::ask(double az, double el)
 {
     m_question->setStyleSheet(QString());
     m_question->setText(tr("Go to az %1°, el %2°?").arg(az, 0, 'f', 1).arg(el, 0, 'f', 1));
+    m_question->setToolTip(QString());
     setPending(QPointF(az, el));
 }
 
@@ -70,6 +83,7 @@ void TargetConfirmation::showProblem(const QString &text)
 {
     m_question->setStyleSheet(QStringLiteral("color:#e54848;"));
     m_question->setText(text);
+    m_question->setToolTip(text);
     setPending(std::nullopt);
 }
 

@@ -58,7 +58,10 @@ TargetPicker::TargetPicker(const sky::TleSources *sets, QWidget *parent) : QWidg
     setObjectName(QStringLiteral("targetPicker"));
     m_search = new QLineEdit;
     m_search->setObjectName(QStringLiteral("targetSearch"));
-    m_search->setPlaceholderText(tr("satellite name or number, sun, moon, azel:AZ,EL, radec:RA,DEC"));
+    // Short enough for a 1280-pixel screen; the tooltip has every form.
+    m_search->setPlaceholderText(tr("name or number, sun, moon, azel:…, radec:…"));
+    m_search->setToolTip(tr("A satellite's name or catalogue number, sun, moon, a fixed direction "
+                            "(azel:AZ,EL) or a radio source (radec:RA,DEC)"));
     m_favourite = new QToolButton;
     m_favourite->setObjectName(QStringLiteral("favouriteToggle"));
     m_favourite->setCheckable(true);

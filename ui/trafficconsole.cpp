@@ -29,7 +29,8 @@ TrafficConsole::TrafficConsole(RotatorSession *session, QWidget *parent) : QWidg
 
     m_filter = new QLineEdit;
     m_filter->setObjectName(QStringLiteral("trafficFilter"));
-    m_filter->setPlaceholderText(tr("filter (regular expression), e.g. ^(AZ|EL|GS)"));
+    m_filter->setPlaceholderText(tr("filter, e.g. ^(AZ|EL|GS)"));
+    m_filter->setToolTip(tr("Show only the lines that match this regular expression"));
     m_filter->setClearButtonEnabled(true);
     m_invert = new QCheckBox(tr("Hide matches"));
     m_invert->setObjectName(QStringLiteral("trafficInvert"));

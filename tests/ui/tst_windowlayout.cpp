@@ -1,0 +1,204 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The operator window on a real X11 server at the size it opens with and at
+// 1280x720, the smallest screen an operator brings to a mast: no widget on
+// top of another, no text cut, on every tab; and nothing that happens while
+// it runs (a long status, the operator's hold, an alarm, a click on the plot)
+// makes the window grow past the screen or moves the plot under the pointer.
+
+#include "layoutfaults.h"
+#include "windowfixture.h"
+
+#include "alarmbanner.h"
+#include "bridge/rotctldserver.h"
+#include "linkschemes.h"
+#include "operatortheme.h"
+#include "polarplotwidget.h"
+#include "targetconfirmation.h"
+#include "windowstate.h"
+
+#include <QApplication>
+#include <QGuiApplication>
+#include <QHostAddress>
+#include <QLabel>
+#include <QScreen>
+#include <QStatusBar>
+#include <QSplitter>
+#include <QTabBar>
+#include <QTabWidget>
+#include <QTest>
+
+using slew::ui::MainWindow;
+
+namespace {
+
+// Lets the layout settle after a change: posted layout requests run from
+// the event loop.
+void settle()
+{
+    for (int i = 0; i < 3; ++i)
+        QCoreApplication::processEvents();
+}
+
+QString faultsOnEveryTab(MainWindow &window)
+{
+    QStringList all;
+    QTabWidget *tabs = window.tabs();
+    for (int i = 0; i < tabs->count(); ++i) {
+        tabs->setCurrentIndex(i);
+        settle();
+        for (const QString &fault : layoutFaults(&window))
+            all << QStringLiteral("[%1] %2").arg(tabs->tabText(i), fault);
+    }
+    all.removeDuplicates();
+    return all.join(QLatin1Char('\n'));
+}
+
+} // namespace
+
+class WindowLayoutTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase()
+    {
+        QCOMPARE(QGuiApplication::platformName(), QStringLiteral("xcb"));
+        WindowFixture::prepareApplication();
+        slew::registerLinkSchemes();
+        slew::ui::applyOperatorTheme(*qobject_cast<QApplication *>(QCoreApplication::instance()));
+    }
+
+    void opensAtASizeTheScreenHolds()
+    {
+        // The screen here is 1920x1200: the window takes its own default.
+        WindowFixture f;
+        QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
+        QCOMPARE(f.window->size(), QSize(1440, 900));
+        // On a smaller screen it takes what the screen has, never more.
+        QCOMPARE(slew::ui::WindowState::openingSize(QSize(1280, 690)), QSize(1280, 690));
+        QCOMPARE(slew::ui::WindowState::openingSize(QSize(1366, 740)), QSize(1366, 740));
+        QCOMPARE(slew::ui::WindowState::openingSize(QSize(2560, 1400)), QSize(1440, 900));
+    }
+
+    void everyTabFits_data()
+    {
+        QTest::addColumn<QSize>("size");
+        QTest::newRow("default 1440x900") << QSize(1440, 900);
+        QTest::newRow("1280x720") << QSize(1280, 720);
+    }
+
+    void everyTabFits()
+    {
+        QFETCH(QSize, size);
+        WindowFixture f;
+        f.window->resize(size);
+        QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
+        QVERIFY(f.connectAndWait());
+        settle();
+        if (qEnvironmentVariableIsSet("SLEW_LAYOUT_DEBUG")) {
+            std::function<void(QWidget *, int)> dump = [&](QWidget *w, int depth) {
+                if (depth > 7) return;
+                qInfo("%s%s %s min %dx%d size %dx%d", qPrintable(QString(depth * 2, u' ')), w->metaObject()->className(),
+                      qPrintable(w->objectName()), w->minimumSizeHint().width(), w->minimumSizeHint().height(), w->width(), w->height());
+                for (QWidget *c : w->findChildren<QWidget *>(Qt::FindDirectChildrenOnly))
+                    if (!c->isWindow()) dump(c, depth + 1);
+            };
+            dump(f.window.get(), 0);
+        }
+        QCOMPARE(f.window->size(), size);
+        const QString faults = faultsOnEveryTab(*f.window);
+        QVERIFY2(faults.isEmpty(), qPrintable(faults));
+        QCOMPARE(f.window->size(), size);
+    }
+
+    void longTextsNeverWidenTheWindow()
+    {
+        const QSize size(1280, 720);
+        WindowFixture f;
+        f.window->resize(size);
+        QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
+        QVERIFY(f.connectAndWait());
+
+        // The operator's hold on the Trackers tab.
+        QString error;
+        QVERIFY2(f.window->rotctldServer()->listen(QHostAddress::LocalHost, 0, &error), qPrintable(error));
+        f.window->tabs()->setCurrentWidget(reinterpret_cast<QWidget *>(f.window->rotctldPanel()));
+        f.window->rotctldServer()->holdRemote();
+        settle();
+        QCOMPARE(f.window->size(), size);
+
+        // An alarm with a long text.
+        f.window->alarmBanner()->showAlarms(
+            {QStringLiteral("Azimuth motor current over its limit for 3 s: the controller stopped the drive "
+                            "and holds it until it is reset from its front panel or with RESET")},
+            true);
+        settle();
+        QCOMPARE(f.window->size(), size);
+
+        // A refusal under the plot, as long as the gate writes them.
+        f.window->targetConfirmation()->showProblem(
+            QStringLiteral("elevation 95.0° is outside the rotator's travel (0.0° to 90.0°) and its end stops"));
+        settle();
+        QCOMPARE(f.window->size(), size);
+        const QString faults = layoutFaults(f.window.get()).join(QLatin1Char('\n'));
+        QVERIFY2(faults.isEmpty(), qPrintable(faults));
+    }
+
+    void clickingThePlotMovesNothing()
+    {
+        WindowFixture f;
+        f.window->resize(1280, 720);
+        QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
+        QVERIFY(f.connectAndWait());
+        settle();
+        slew::ui::PolarPlotWidget *plot = f.window->polarPlot();
+        const QRect before = plot->geometry();
+        auto *question = f.find<QLabel>(QStringLiteral("targetQuestion"));
+        QVERIFY(question);
+        const QString idle = question->text();
+        QTest::mouseClick(plot, Qt::LeftButton, {}, plot->rect().center() + QPoint(plot->width() / 5, 0));
+        settle();
+        QVERIFY(question->text() != idle); // the question is asked
+        QCOMPARE(plot->geometry(), before);
+        f.window->targetConfirmation()->cancel();
+        settle();
+        QCOMPARE(plot->geometry(), before);
+    }
+
+    void theWindowComesBackAsItWasLeft()
+    {
+        QList<int> leftSizes;
+        {
+            WindowFixture f;
+            f.window->resize(1280, 720);
+            QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
+            settle();
+            // The operator drags the splitter between the plot and the
+            // controls 60 pixels to the left, and brings the Events tab forward.
+            auto *splitter = f.find<QSplitter>(QStringLiteral("mainSplitter"));
+            QVERIFY(splitter);
+            const QList<int> before = splitter->sizes();
+            QSplitterHandle *handle = splitter->handle(1);
+            const QPoint grip = handle->rect().center();
+            QTest::mousePress(handle, Qt::LeftButton, {}, grip);
+            QTest::mouseMove(handle, grip - QPoint(60, 0));
+            QTest::mouseRelease(handle, Qt::LeftButton, {}, grip - QPoint(60, 0));
+            settle();
+            leftSizes = splitter->sizes();
+            QCOMPARE(leftSizes[0], before[0] - 60);
+            QTabBar *bar = f.window->tabs()->tabBar();
+            const int events = f.window->tabs()->count() - 1;
+            QCOMPARE(f.window->tabs()->tabText(events), QStringLiteral("Events"));
+            QTest::mouseClick(bar, Qt::LeftButton, {}, bar->tabRect(events).center());
+            QCOMPARE(f.window->tabs()->currentIndex(), events);
+        }
+        // The next start.
+        WindowFixture again;
+        QVERIFY(QTest::qWaitForWindowExposed(again.window.get()));
+        settle();
+        QCOMPARE(again.window->size(), QSize(1280, 720));
+        QCOMPARE(again.find<QSplitter>(QStringLiteral("mainSplitter"))->sizes(), leftSizes);
+        QCOMPARE(again.window->tabs()->tabText(again.window->tabs()->currentIndex()), QStringLiteral("Events"));
+    }
+};
+
+QTEST_MAIN(WindowLayoutTest)
+#include "tst_windowlayout.moc"
