@@ -68,8 +68,13 @@ AlarmMonitor::AlarmMonitor(RotatorSession *session, QObject *parent) : QObject(p
     connect(session, &RotatorSession::requestFailed, this, [this](const QString &request, const QString &why) {
         log(Severity::Warning, tr("%1 failed: %2").arg(request, why));
     });
-    connect(session, &RotatorSession::errorOccurred, this,
-            [this](const QString &message) { log(Severity::Warning, message); });
+    connect(session, &RotatorSession::errorOccurred, this, [this](const QString &message) {
+        if (!m_stateDetail.isEmpty() && m_stateDetail.contains(message))
+            return; // said with the state change
+        if (m_heldErrors.isEmpty())
+            QTimer::singleShot(0, this, &AlarmMonitor::flushHeldErrors);
+        m_heldErrors << message;
+    });
     connect(session, &RotatorSession::versionChanged, this,
             [this](const QString &v) { log(Severity::Info, tr("Controller version: %1").arg(v)); });
 }
@@ -107,8 +112,22 @@ void AlarmMonitor::setAlarm(const QString &key, bool on, const QString &text, Se
     emit alarmsChanged(activeAlarms(), anySevere());
 }
 
+void AlarmMonitor::flushHeldErrors()
+{
+    for (const QString &message : std::exchange(m_heldErrors, {}))
+        log(Severity::Warning, message);
+}
+
 void AlarmMonitor::onState(RotatorSession::State state, const QString &detail)
 {
+    // An error held for this turn that the state's reason repeats is said
+    // once, with the state.
+    if (!detail.isEmpty()) {
+        m_heldErrors.removeIf([&](const QString &held) { return detail.contains(held); });
+        if (m_stateDetail.isEmpty())
+            QTimer::singleShot(0, this, [this] { m_stateDetail.clear(); });
+        m_stateDetail = detail;
+    }
     const bool wasUp = m_state == RotatorSession::State::Connected;
     m_state = state;
     switch (state) {

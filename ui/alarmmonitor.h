@@ -14,6 +14,7 @@
 
 #include <QDateTime>
 #include <QMap>
+#include <QStringList>
 #include <QObject>
 #include <QTimer>
 
@@ -61,6 +62,12 @@ private:
     QMap<QString, Condition> m_active;
     session::RotatorSession::State m_state = session::RotatorSession::State::Disconnected;
     bool m_expectDisconnect = false;
+    // The session reports a link that fails both as an error and as the
+    // state change's reason. The error is held until the event loop turns,
+    // and dropped if a state change said it meanwhile: one line, not two.
+    void flushHeldErrors();
+    QStringList m_heldErrors;
+    QString m_stateDetail; // the last state change's reason, until the loop turns
 
     // Per axis (0 azimuth, 1 elevation): speed from the last two fresh
     // positions, for controllers that do not report it, and the quiet state.

@@ -1,5 +1,9 @@
 #include "configeditor.h"
 
+#include <QScopeGuard>
+
+#include <utility>
+
 #include "input/finitenumber.h"
 
 #include "model/movegate.h"
@@ -121,6 +125,13 @@ ConfigEditor::ConfigEditor(RotatorSession *session, QWidget *parent) : QWidget(p
     });
     connect(session, &RotatorSession::configValueReceived, this, &ConfigEditor::onValue);
     connect(session, &RotatorSession::requestFailed, this, &ConfigEditor::onRequestFailed);
+    connect(session, &RotatorSession::stateChanged, this, [this](RotatorSession::State state) {
+        if (m_round != Round::None && state != RotatorSession::State::Connected) {
+            m_round = Round::None;
+            m_awaiting.clear();
+            say(tr("The link went down before every register had answered."), true);
+        }
+    });
     connect(session, &RotatorSession::capabilitiesChanged, this, [this](const session::Capabilities &caps) {
         // A fresh connection: read it when the editor is on screen.
         if (caps.probed && caps.config && isVisible())
@@ -233,6 +244,11 @@ void ConfigEditor::onEdited(int reg)
 
 void ConfigEditor::onValue(int reg, const QString &text)
 {
+    // Whatever the row makes of it, the round waits for one register less.
+    const auto roundEnds = qScopeGuard([this, reg] {
+        if (m_awaiting.remove(reg))
+            sayWhenRoundEnds();
+    });
     Row &row = rowFor(reg);
     row.deviceText = text.trimmed();
     row.device->setText(row.deviceText);
@@ -262,6 +278,44 @@ void ConfigEditor::onRequestFailed(const QString &request, const QString &reason
     const int reg = match.captured(1).toInt();
     if (m_rows.contains(reg) && m_rows[reg].fieldState == FieldState::Verifying)
         setState(reg, FieldState::Failed, reason);
+    if (m_awaiting.remove(reg)) {
+        m_unanswered << registerName(reg);
+        sayWhenRoundEnds();
+    }
+}
+
+void ConfigEditor::startRound(Round round, const QSet<int> &registers)
+{
+    m_round = round;
+    m_awaiting = registers;
+    m_unanswered.clear();
+    m_roundRegisters = registers;
+}
+
+void ConfigEditor::sayWhenRoundEnds()
+{
+    if (m_round == Round::None || !m_awaiting.isEmpty())
+        return;
+    const Round round = std::exchange(m_round, Round::None);
+    if (round == Round::Reading) {
+        say(m_unanswered.isEmpty() ? tr("Read %1 registers.").arg(m_roundRegisters.size())
+                                   : tr("Read %1 of %2 registers; no answer for %3.")
+                                         .arg(m_roundRegisters.size() - m_unanswered.size())
+                                         .arg(m_roundRegisters.size())
+                                         .arg(m_unanswered.join(QStringLiteral(", "))),
+            !m_unanswered.isEmpty());
+        return;
+    }
+    QStringList disagree;
+    for (int reg : std::as_const(m_roundRegisters))
+        if (fieldState(reg) != FieldState::Confirmed)
+            disagree << registerName(reg);
+    disagree.sort();
+    say(disagree.isEmpty() ? tr("Wrote %1 register(s); each reads back as written.").arg(m_roundRegisters.size())
+                           : tr("Wrote %1 register(s); not confirmed: %2.")
+                                 .arg(m_roundRegisters.size())
+                                 .arg(disagree.join(QStringLiteral(", "))),
+        !disagree.isEmpty());
 }
 
 void ConfigEditor::readAll()
@@ -274,11 +328,14 @@ void ConfigEditor::readAll()
         say(m_noRegisters->text(), false);
         return;
     }
+    QSet<int> asked;
     for (int reg : m_rows.keys()) {
-        if (reg < 10 || reg > 11) // CR10/CR11 are polled anyway
-            m_session->readConfig(reg);
+        if ((reg < 10 || reg > 11) && m_session->readConfig(reg)) // CR10/CR11 are polled anyway
+            asked << reg;
     }
-    say(tr("Reading %1 registers…").arg(m_rows.size()), false);
+    // The line says so when the last of them has answered (or not).
+    startRound(Round::Reading, asked);
+    say(tr("Reading %1 registers…").arg(asked.size()), false);
 }
 
 void ConfigEditor::readRegister(int reg)
@@ -307,6 +364,7 @@ int ConfigEditor::apply()
         return 0;
     }
     int written = 0;
+    QSet<int> readingBack;
     for (int reg : toWrite) {
         Row &row = m_rows[reg];
         const QString value = row.edit->text().trimmed();
@@ -316,9 +374,11 @@ int ConfigEditor::apply()
         }
         row.written = value;
         setState(reg, FieldState::Verifying);
-        m_session->readConfig(reg);
+        if (m_session->readConfig(reg))
+            readingBack << reg;
         ++written;
     }
+    startRound(Round::WritingBack, readingBack);
     say(tr("Wrote %1 register(s); reading them back…").arg(written), written == 0);
     return written;
 }

@@ -11,6 +11,8 @@
 #include "session/rotatorsession.h"
 
 #include <QMap>
+#include <QSet>
+#include <QStringList>
 #include <QWidget>
 
 class QGridLayout;
@@ -73,6 +75,15 @@ private:
     QLabel *m_noRegisters;
     QList<QWidget *> m_registerControls; // what only a controller with registers can use
     bool m_readOnShow = true;
+    // A round of reads (Read all) or of read-backs after Apply: the line
+    // says how it went once the last register has answered or failed.
+    enum class Round { None, Reading, WritingBack };
+    void startRound(Round round, const QSet<int> &registers);
+    void sayWhenRoundEnds();
+    Round m_round = Round::None;
+    QSet<int> m_awaiting;
+    QSet<int> m_roundRegisters;
+    QStringList m_unanswered;
 };
 
 } // namespace slew::ui

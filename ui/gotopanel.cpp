@@ -1,5 +1,7 @@
 #include "gotopanel.h"
 
+#include "operatoractions.h"
+
 #include "model/movegate.h"
 
 #include <QGridLayout>
@@ -143,7 +145,15 @@ bool GotoPanel::go()
     }
     // The bearing as typed: the gate decides again at sending time, from
     // where the rotator is then, as the preview did from where it was.
-    return bool(m_session->gotoPosition(*parseAngle(m_az->text()), *c.elevation));
+    const session::CommandResult sent = m_session->gotoPosition(*parseAngle(m_az->text()), *c.elevation);
+    if (!sent) {
+        m_message->setText(sent.refusal);
+        m_message->setStyleSheet(QStringLiteral("color:#e54848;"));
+        return false;
+    }
+    const QPointF target(m_session->targetAzimuth(), m_session->targetElevation());
+    emit moveSent(tr("go to %1").arg(describePosition(target)), target);
+    return true;
 }
 
 } // namespace slew::ui

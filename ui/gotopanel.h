@@ -5,6 +5,7 @@
 
 #include "session/rotatorsession.h"
 
+#include <QPointF>
 #include <QWidget>
 
 #include <optional>
@@ -34,6 +35,8 @@ signals:
     // Enter in a field sent the go-to: the field should give up the focus,
     // so that Space, the next key the operator reaches for, is Stop.
     void sentByEnter();
+    // A go-to went to the wire: what it is, for the Events log, and where to.
+    void moveSent(const QString &what, std::optional<QPointF> target);
 
 public slots:
     void setFields(double az, double el);

@@ -18,6 +18,21 @@ Axis axisOf(JogPad::Direction d)
     return d == JogPad::Left || d == JogPad::Right ? Axis::Azimuth : Axis::Elevation;
 }
 
+QString directionName(JogPad::Direction d)
+{
+    switch (d) {
+    case JogPad::Left:
+        return JogPad::tr("azimuth counter-clockwise");
+    case JogPad::Right:
+        return JogPad::tr("azimuth clockwise");
+    case JogPad::Up:
+        return JogPad::tr("elevation up");
+    case JogPad::Down:
+        break;
+    }
+    return JogPad::tr("elevation down");
+}
+
 double signOf(JogPad::Direction d)
 {
     return d == JogPad::Right || d == JogPad::Up ? 1.0 : -1.0;
@@ -104,7 +119,9 @@ void JogPad::press(Direction d)
         return;
     m_held[d] = true;
     m_buttons[d]->setDown(true);
-    m_session->moveAxis(axisOf(d), signOf(d) * speed());
+    m_sent[d] = bool(m_session->moveAxis(axisOf(d), signOf(d) * speed()));
+    if (m_sent[d])
+        emit jogStarted(tr("jog %1 at %2°/s").arg(directionName(d)).arg(speed(), 0, 'f', 1));
 }
 
 void JogPad::release(Direction d)
@@ -113,6 +130,9 @@ void JogPad::release(Direction d)
         return;
     m_held[d] = false;
     m_buttons[d]->setDown(false);
+    if (m_sent[d])
+        emit jogEnded(tr("jog %1").arg(directionName(d)));
+    m_sent[d] = false;
     // The opposite direction on the same axis may still be held: resume it.
     const Direction opposite = Direction(d ^ 1);
     if (m_held[opposite]) {

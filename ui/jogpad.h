@@ -30,6 +30,11 @@ public slots:
     void release(slew::ui::JogPad::Direction d);
     void releaseAll(); // the window lost focus: nothing may keep moving
 
+signals:
+    // For the Events log: a jog the session sent, and its release.
+    void jogStarted(const QString &what);
+    void jogEnded(const QString &what);
+
 private:
     void followAxes(); // an azimuth-only rotator has no up and down
     void followSpeed(); // a controller without speed commands ignores the box
@@ -39,6 +44,7 @@ private:
     QDoubleSpinBox *m_speed;
     QPushButton *m_buttons[4] = {};
     bool m_held[4] = {false, false, false, false};
+    bool m_sent[4] = {false, false, false, false}; // the held jog reached the wire
 };
 
 } // namespace slew::ui

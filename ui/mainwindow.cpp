@@ -29,6 +29,7 @@
 #include "trackingpanel.h"
 #include "wizard/setupwizard.h"
 #include "alignmentpanel.h"
+#include "operatoractions.h"
 #include "windowstate.h"
 
 #include "bridge/rotctldserver.h"
@@ -202,6 +203,7 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
         if (m_rotctld->isListening())
             m_rotctld->holdRemote();
     });
+    wireOperatorActions();
     connect(m_trackers, &RotctldPanel::message, this, &MainWindow::logInfo);
     connect(m_tracking, &TrackingPanel::message, this, &MainWindow::logInfo);
     connect(m_alignment, &AlignmentPanel::message, this, &MainWindow::logInfo);
@@ -230,6 +232,23 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
             m_alignment->setStation(station);
         }
     }
+    // Why the link failed stays at the foot of the window until the next
+    // attempt, not only for the seconds a passing message lasts.
+    auto *linkProblem = new QLabel;
+    linkProblem->setObjectName(QStringLiteral("linkProblem"));
+    linkProblem->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    linkProblem->setStyleSheet(QStringLiteral("color:#f2a33c;"));
+    statusBar()->addWidget(linkProblem, 1);
+    connect(m_connection, &ConnectionBar::disconnectRequested, this, [this] { m_disconnectAsked = true; });
+    connect(session, &RotatorSession::stateChanged, linkProblem,
+            [this, linkProblem](RotatorSession::State s, const QString &detail) {
+                const bool failed = s == RotatorSession::State::Reconnecting
+                                    || (s == RotatorSession::State::Disconnected && !m_disconnectAsked);
+                if (s == RotatorSession::State::Disconnected)
+                    m_disconnectAsked = false;
+                linkProblem->setText(failed && !detail.isEmpty() ? tr("Link: %1").arg(detail) : QString());
+                linkProblem->setToolTip(linkProblem->text());
+            });
     connect(session, &RotatorSession::stateChanged, this, [this](RotatorSession::State s) {
         if (s == RotatorSession::State::Disconnected)
             m_jog->releaseAll();
@@ -373,6 +392,7 @@ void MainWindow::wirePlot()
 {
     connect(m_session, &RotatorSession::positionChanged, m_plot, &PolarPlotWidget::setActual);
     connect(m_session, &RotatorSession::targetChanged, m_plot, &PolarPlotWidget::setTarget);
+    connect(m_session, &RotatorSession::targetCleared, m_plot, &PolarPlotWidget::clearTarget);
     connect(m_session, &RotatorSession::commandedChanged, m_plot, &PolarPlotWidget::setCommanded);
     connect(m_session, &RotatorSession::stateChanged, m_plot, [this](RotatorSession::State s) {
         if (s == RotatorSession::State::Connecting)
@@ -381,8 +401,7 @@ void MainWindow::wirePlot()
     connect(m_session, &RotatorSession::parkChanged, this, &MainWindow::showPark);
     connect(m_plot, &PolarPlotWidget::targetPicked, this, &MainWindow::onTargetPicked);
     connect(m_confirm, &TargetConfirmation::pendingChanged, m_plot, &PolarPlotWidget::setPendingTarget);
-    connect(m_confirm, &TargetConfirmation::accepted, m_session,
-            [this](double az, double el) { m_session->gotoPosition(az, el); });
+    connect(m_confirm, &TargetConfirmation::accepted, this, &MainWindow::sendPickedTarget);
 }
 
 void MainWindow::onTargetPicked(double az, double el)
@@ -395,7 +414,43 @@ void MainWindow::onTargetPicked(double az, double el)
     if (m_confirm->confirmationWanted())
         m_confirm->ask(az, el);
     else
-        m_session->gotoPosition(az, el);
+        sendPickedTarget(az, el);
+}
+
+void MainWindow::sendPickedTarget(double az, double el)
+{
+    if (const session::CommandResult sent = m_session->gotoPosition(az, el); !sent) {
+        m_confirm->showProblem(sent.refusal);
+        return;
+    }
+    const QPointF target(m_session->targetAzimuth(), m_session->targetElevation());
+    m_actions->moveStarted(tr("go to %1 (picked on the plot)").arg(describePosition(target)), target);
+    m_confirm->showGoing(target.x(), target.y());
+}
+
+void MainWindow::wireOperatorActions()
+{
+    m_actions = new OperatorActions(new session::MoveWatch(m_session, this), this);
+    connect(m_actions, &OperatorActions::logged, this, [this](AlarmMonitor::Severity severity, const QString &text) {
+        m_log->addEvent(QDateTime::currentDateTime(), severity, text);
+        statusBar()->showMessage(text, severity == AlarmMonitor::Severity::Info ? 8000 : 30000);
+    });
+    // The lines that say where a move is going clear when it ends.
+    connect(m_actions, &OperatorActions::moveEnded, m_confirm, &TargetConfirmation::moveEnded);
+    connect(m_actions, &OperatorActions::moveEnded, m_presets, &PresetPanel::moveEnded);
+    connect(m_actions, &OperatorActions::moveEnded, m_parkHome, &ParkHomePanel::moveEnded);
+    connect(m_goto, &GotoPanel::moveSent, m_actions, &OperatorActions::moveStarted);
+    connect(m_presets, &PresetPanel::moveSent, m_actions, &OperatorActions::moveStarted);
+    connect(m_parkHome, &ParkHomePanel::moveSent, m_actions, &OperatorActions::moveStarted);
+    connect(m_parkHome, &ParkHomePanel::homingStarted, m_actions, [this] { m_actions->action(tr("home")); });
+    connect(m_parkHome, &ParkHomePanel::homingFinished, m_actions,
+            [this](bool ok, const QString &message) { m_actions->outcome(tr("home: %1").arg(message), !ok); });
+    connect(m_stop, &StopButton::stopped, m_actions, [this] { m_actions->action(tr("Stop")); });
+    connect(m_jog, &JogPad::jogStarted, m_actions, &OperatorActions::action);
+    connect(m_jog, &JogPad::jogEnded, m_actions, [this](const QString &what) {
+        m_actions->action(tr("%1: released at %2")
+                              .arg(what, describePosition(QPointF(m_session->azimuth(), m_session->elevation()))));
+    });
 }
 
 void MainWindow::showProfile()

@@ -26,6 +26,7 @@ class EventLog;
 class GotoPanel;
 class JogPad;
 class KeyboardControl;
+class OperatorActions;
 class ParkHomePanel;
 class PolarPlotWidget;
 class PositionReadout;
@@ -98,6 +99,8 @@ private:
     QWidget *buildControlColumn();
     void wirePlot();
     void onTargetPicked(double az, double el);
+    void sendPickedTarget(double az, double el);
+    void wireOperatorActions();
     void showProfile();
     void showPark(); // the plot's P: the controller's park, once known
     void buildMenus();
@@ -122,6 +125,8 @@ private:
     EventLog *m_log;
     QTabWidget *m_tabs;
     KeyboardControl *m_keys;
+    OperatorActions *m_actions = nullptr;
+    bool m_disconnectAsked = false; // the next Disconnected is the operator's, not a failure
     bridge::RotctldServer *m_rotctld;
     RotctldPanel *m_trackers;
     session::ControllerRotors *m_controllerRotors;

@@ -95,6 +95,13 @@ bool ParkHomePanel::park()
     m_message->setText(sent ? m_session->parkKnown() ? tr("Parking at %1.").arg(parkText())
                                                      : tr("Parking where the controller says (%1).").arg(parkText())
                             : tr("Not parking: %1").arg(sent.refusal));
+    m_message->setStyleSheet(sent ? QString() : QStringLiteral("color:#e54848;"));
+    m_parking = bool(sent);
+    if (sent)
+        emit moveSent(tr("park (%1)").arg(parkText()),
+                      m_session->parkKnown()
+                          ? std::optional<QPointF>(QPointF(m_session->parkAzimuth(), m_session->parkElevation()))
+                          : std::nullopt);
     return bool(sent);
 }
 
@@ -112,6 +119,8 @@ bool ParkHomePanel::home()
         return false;
     if (const session::CommandResult sent = m_session->home(); !sent) {
         m_message->setText(tr("Not homing: %1").arg(sent.refusal));
+        m_message->setStyleSheet(QStringLiteral("color:#e54848;"));
+        m_parking = false;
         return false;
     }
     m_homing = true;
@@ -120,9 +129,19 @@ bool ParkHomePanel::home()
     m_timeout.start();
     m_progress->setVisible(true);
     m_cancel->setVisible(true);
+    m_parking = false;
     m_message->setText(tr("Homing: looking for the end stops…"));
+    m_message->setStyleSheet(QString());
+    emit homingStarted();
     updateEnabled();
     return true;
+}
+
+void ParkHomePanel::moveEnded()
+{
+    if (m_parking)
+        m_message->clear();
+    m_parking = false;
 }
 
 void ParkHomePanel::onStatus(session::StatusWord status)

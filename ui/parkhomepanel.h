@@ -12,8 +12,11 @@
 
 #include "session/rotatorsession.h"
 
+#include <QPointF>
 #include <QTimer>
 #include <QWidget>
+
+#include <optional>
 
 class QLabel;
 class QProgressBar;
@@ -35,8 +38,11 @@ public slots:
     bool home();
     void cancelHoming();  // stops the rotator
     void abandonHoming(); // Stop was pressed elsewhere: just stop waiting
+    void moveEnded();     // the park the message describes has ended
 
 signals:
+    void moveSent(const QString &what, std::optional<QPointF> target); // park
+    void homingStarted();
     void homingFinished(bool ok, const QString &message);
 
 private:
@@ -54,6 +60,7 @@ private:
     QLabel *m_message;
     QTimer m_timeout;
     bool m_homing = false;
+    bool m_parking = false; // m_message says where a park is going
     bool m_sawMoving = false;
     bool m_hasStart = false;   // the first fresh position after Home was pressed
     double m_startAz = 0.0, m_startEl = 0.0;

@@ -84,6 +84,12 @@ void PolarPlotWidget::setTarget(double az, double el)
     }
 }
 
+void PolarPlotWidget::clearTarget()
+{
+    m_target.reset();
+    update();
+}
+
 void PolarPlotWidget::setPendingTarget(std::optional<QPointF> azEl)
 {
     m_pending = azEl;
@@ -183,8 +189,10 @@ void PolarPlotWidget::paintGrid(QPainter &p) const
     f.setPointSizeF(f.pointSizeF() * 0.85);
     p.setFont(f);
     p.setPen(kLabel);
+    // The rings' elevations along bearing 15°, just inside each ring: at
+    // north they sat under the antenna's marker when it rests at 0°.
     for (int el : {0, 30, 60}) {
-        p.drawText(pointFor(0, el) + QPointF(4, -3), QStringLiteral("%1°").arg(el));
+        p.drawText(pointFor(15, el) + QPointF(2, 12), QStringLiteral("%1°").arg(el));
     }
     const char *cardinal[] = {"N", "E", "S", "W"};
     for (int az = 0; az < 360; az += 30) {

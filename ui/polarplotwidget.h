@@ -33,6 +33,7 @@ public:
     void setActual(double az, double el, bool stale);
     void setCommanded(double az, double el);
     void setTarget(double az, double el);
+    void clearTarget(); // heading for no known target: stopped, or parking where not read yet
     void setPendingTarget(std::optional<QPointF> azEl); // awaiting the operator's confirmation
     void clearPositions();                              // a new connection: forget the old rotator
     // A planned pass to draw (the Tracking tab's selection); none clears it.

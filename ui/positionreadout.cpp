@@ -60,6 +60,7 @@ PositionReadout::PositionReadout(RotatorSession *session, QWidget *parent) : QWi
     connect(session, &RotatorSession::targetChanged, this, [this](double az, double el) {
         m_target->setText(tr("Target  %1°  %2°").arg(shownTenths(az), 0, 'f', 1).arg(shownTenths(el), 0, 'f', 1));
     });
+    connect(session, &RotatorSession::targetCleared, m_target, &QLabel::clear);
     connect(session, &RotatorSession::statusChanged, this, &PositionReadout::showStatus);
     connect(session, &RotatorSession::stateChanged, this, [this](RotatorSession::State s) {
         if (s == RotatorSession::State::Connecting) {

@@ -1,5 +1,7 @@
 #include "presetpanel.h"
 
+#include "operatoractions.h"
+
 #include <QGridLayout>
 #include <QJsonDocument>
 #include <QLabel>
@@ -75,8 +77,15 @@ void PresetPanel::save() const
     QSettings().setValue(QLatin1String(kSettingsKey), QJsonDocument(m_presets.toJson()).toJson(QJsonDocument::Compact));
 }
 
+void PresetPanel::moveEnded()
+{
+    if (m_going)
+        say(QString(), false);
+}
+
 void PresetPanel::say(const QString &text, bool error)
 {
+    m_going = false;
     m_message->setText(text);
     m_message->setStyleSheet(error ? QStringLiteral("color:#e54848;") : QString());
 }
@@ -93,6 +102,9 @@ bool PresetPanel::recall(int index)
         return false;
     }
     say(tr("Going to '%1'.").arg(p->name), false);
+    m_going = true;
+    const QPointF target(m_session->targetAzimuth(), m_session->targetElevation());
+    emit moveSent(tr("preset '%1' (%2)").arg(p->name, describePosition(target)), target);
     return true;
 }
 

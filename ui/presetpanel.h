@@ -6,7 +6,10 @@
 #include "model/presets.h"
 #include "session/rotatorsession.h"
 
+#include <QPointF>
 #include <QWidget>
+
+#include <optional>
 
 class QLabel;
 class QLineEdit;
@@ -26,6 +29,10 @@ public slots:
     bool recall(int index); // 0-based; key 1 recalls index 0
     bool storeCurrent(const QString &name);
     bool removeSelected();
+    void moveEnded(); // the move a "Going to" line describes has ended
+
+signals:
+    void moveSent(const QString &what, std::optional<QPointF> target);
 
 private:
     void refresh();
@@ -39,6 +46,7 @@ private:
     QPushButton *m_store;
     QPushButton *m_remove;
     QLabel *m_message;
+    bool m_going = false; // m_message says where a recalled preset is going
 };
 
 } // namespace slew::ui

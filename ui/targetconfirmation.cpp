@@ -75,6 +75,7 @@ void TargetConfirmation::ask(double az, double el)
 {
     m_question->setStyleSheet(QString());
     m_question->setText(tr("Go to az %1°, el %2°?").arg(az, 0, 'f', 1).arg(el, 0, 'f', 1));
+    m_going = false;
     m_question->setToolTip(QString());
     setPending(QPointF(az, el));
 }
@@ -84,6 +85,7 @@ void TargetConfirmation::showProblem(const QString &text)
     m_question->setStyleSheet(QStringLiteral("color:#e54848;"));
     m_question->setText(text);
     m_question->setToolTip(text);
+    m_going = false;
     setPending(std::nullopt);
 }
 
@@ -92,13 +94,28 @@ void TargetConfirmation::accept()
     if (!m_pending)
         return;
     const QPointF p = *m_pending;
-    m_question->setText(tr("Going to az %1°, el %2°.").arg(p.x(), 0, 'f', 1).arg(p.y(), 0, 'f', 1));
     setPending(std::nullopt);
+    // The window sends it, then says showGoing() or showProblem().
     emit accepted(p.x(), p.y());
+}
+
+void TargetConfirmation::showGoing(double az, double el)
+{
+    m_question->setStyleSheet(QString());
+    m_question->setText(tr("Going to az %1°, el %2°.").arg(az, 0, 'f', 1).arg(el, 0, 'f', 1));
+    m_question->setToolTip(QString());
+    m_going = true;
+}
+
+void TargetConfirmation::moveEnded()
+{
+    if (m_going)
+        cancel();
 }
 
 void TargetConfirmation::cancel()
 {
+    m_going = false;
     m_question->setStyleSheet(QString());
     m_question->setText(tr("Click the plot to pick a target."));
     setPending(std::nullopt);

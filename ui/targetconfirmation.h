@@ -28,6 +28,8 @@ public slots:
     void showProblem(const QString &text); // the picked point cannot be reached
     void accept();
     void cancel();
+    void showGoing(double az, double el); // the accepted target went to the wire
+    void moveEnded();                     // it has ended: the line goes back to idle
 
 signals:
     void accepted(double az, double el);
@@ -41,6 +43,7 @@ private:
     QPushButton *m_cancel;
     QCheckBox *m_ask;
     std::optional<QPointF> m_pending;
+    bool m_going = false; // the line says where an accepted target is going
 };
 
 } // namespace slew::ui

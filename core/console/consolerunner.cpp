@@ -15,32 +15,17 @@ namespace {
 
 using session::RotatorSession;
 
-// A --wait move has arrived when both axes are this close to the target
-// and the rotator has come to rest: passing through the tolerance on the
-// way in is not arriving (a G-5500 still moves a degree in a few tenths of
-// a second).
-constexpr double kArrivedDegrees = 1.0;
-// Two fresh positions this close are "not moving"; this many in a row, or
-// one with the controller's status saying idle, is "at rest".
-constexpr double kRestDegrees = 0.02;
-constexpr int kRestPolls = 3;
-
 QString json(const QJsonObject &object)
 {
     return QString::fromUtf8(QJsonDocument(object).toJson(QJsonDocument::Compact));
 }
 
-double bearingDifference(double a, double b)
-{
-    const double d = std::fmod(std::abs(a - b), 360.0);
-    return std::min(d, 360.0 - d);
-}
-
 } // namespace
 
 ConsoleRunner::ConsoleRunner(RotatorSession *session, bool json, QObject *parent)
-    : QObject(parent), m_session(session), m_json(json)
+    : QObject(parent), m_session(session), m_json(json), m_move(session)
 {
+    connect(&m_move, &session::MoveWatch::ended, this, &ConsoleRunner::moveEnded);
     m_deadline.setSingleShot(true);
     connect(&m_deadline, &QTimer::timeout, this, [this] {
         if (!m_started)
@@ -58,9 +43,7 @@ void ConsoleRunner::run(const ConsoleCommand &command)
     m_running = true;
     m_started = false;
     m_seenConnected = m_session->isConnected();
-    m_lastPosition.reset();
-    m_steadyPolls = 0;
-    m_sawMotion = false;
+    m_move.cancel();
     m_interrupted = false;
     m_deadline.start(m_connectTimeoutMs);
     m_connections << connect(m_session, &RotatorSession::stateChanged, this,
@@ -122,10 +105,11 @@ void ConsoleRunner::start()
             finishWhenSent();
             return;
         }
-        m_targetAz = m_session->profile().parkAz;
-        m_targetEl = m_session->profile().parkEl;
-        m_deadline.start(m_arrivalTimeoutMs);
-        m_connections << connect(m_session, &RotatorSession::positionChanged, this, &ConsoleRunner::checkArrival);
+        // Where the controller's park registers say, once read; else
+        // wherever it comes to rest.
+        watchMove(m_session->parkKnown()
+                      ? std::optional<QPointF>(QPointF(m_session->parkAzimuth(), m_session->parkElevation()))
+                      : std::nullopt);
         return;
     case Kind::Home:
         startHome();
@@ -153,44 +137,48 @@ void ConsoleRunner::startGoto()
         finish(ExitCode::Refused, sent.refusal);
         return;
     }
-    m_targetAz = m_session->targetAzimuth();
-    m_targetEl = m_session->targetElevation();
+    const double targetAz = m_session->targetAzimuth(), targetEl = m_session->targetElevation();
     emit output(m_json ? json({{QStringLiteral("event"), QStringLiteral("moving")},
-                               {QStringLiteral("target_az"), m_targetAz},
-                               {QStringLiteral("target_el"), m_targetEl}})
-                       : tr("moving to az %1 el %2").arg(m_targetAz, 0, 'f', 2).arg(m_targetEl, 0, 'f', 2));
+                               {QStringLiteral("target_az"), targetAz},
+                               {QStringLiteral("target_el"), targetEl}})
+                       : tr("moving to az %1 el %2").arg(targetAz, 0, 'f', 2).arg(targetEl, 0, 'f', 2));
     if (!m_command.wait) {
         finishWhenSent();
         return;
     }
-    m_deadline.start(m_arrivalTimeoutMs);
-    m_connections << connect(m_session, &RotatorSession::positionChanged, this, &ConsoleRunner::checkArrival);
-    checkArrival();
+    watchMove(QPointF(targetAz, targetEl));
 }
 
-void ConsoleRunner::checkArrival()
+void ConsoleRunner::watchMove(std::optional<QPointF> target)
 {
-    if (!m_running || m_interrupted || m_session->positionStale() || !m_session->hasPosition())
+    m_deadline.start(m_arrivalTimeoutMs);
+    m_move.watch(target);
+}
+
+void ConsoleRunner::moveEnded(session::MoveWatch::Outcome outcome, QPointF, double offDeg)
+{
+    // Ctrl-C and a lost link are reported where they are handled.
+    if (!m_running || m_interrupted)
         return;
-    const double az = m_session->azimuth(), el = m_session->elevation();
-    const bool steady = m_lastPosition && bearingDifference(az, m_lastPosition->first) <= kRestDegrees
-                        && std::abs(el - m_lastPosition->second) <= kRestDegrees;
-    m_steadyPolls = steady ? m_steadyPolls + 1 : 0;
-    m_sawMotion = m_sawMotion || (m_lastPosition && !steady) || m_session->status().anyMoving();
-    m_lastPosition = std::pair{az, el};
-    const session::StatusWord status = m_session->status();
-    const bool atRest = m_steadyPolls >= kRestPolls || (status.valid && status.idle() && m_steadyPolls >= 1);
-    if (!atRest)
-        return;
-    const double off = std::max(bearingDifference(az, m_targetAz), std::abs(el - m_targetEl));
-    if (off <= kArrivedDegrees) {
+    using Outcome = session::MoveWatch::Outcome;
+    switch (outcome) {
+    case Outcome::Arrived:
         printPosition("arrived");
         finish(ExitCode::Ok);
-    } else if (m_sawMotion) {
+        return;
+    case Outcome::StoppedShort:
+    case Outcome::Stopped:
         // It moved and stopped elsewhere (a limit, an obstacle, a stop from
         // another client): say where and how far off, rather than wait on.
         printPosition("stopped");
-        finish(ExitCode::Failed, tr("stopped %1° from the target").arg(off, 0, 'f', 2));
+        finish(ExitCode::Failed, tr("stopped %1° from the target").arg(offDeg, 0, 'f', 2));
+        return;
+    case Outcome::Replaced:
+        printPosition("stopped");
+        finish(ExitCode::Failed, tr("another target was sent before this one was reached"));
+        return;
+    case Outcome::LinkLost:
+        return;
     }
 }
 

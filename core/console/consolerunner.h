@@ -5,6 +5,7 @@
 // that tells a script a refused move from a lost link from a bad argument.
 
 #include "consolecommand.h"
+#include "session/movewatch.h"
 
 #include <QObject>
 #include <QTimer>
@@ -61,7 +62,8 @@ private:
     void sendRawWhenQuiet();
     void startConfig();
     void startHome();
-    void checkArrival();
+    void watchMove(std::optional<QPointF> target);
+    void moveEnded(session::MoveWatch::Outcome outcome, QPointF at, double offDeg);
     void printPosition(const char *event);
     void finish(ExitCode code, const QString &problemText = {});
     void finishWhenSent(ExitCode code = ExitCode::Ok, const QString &problemText = {});
@@ -74,12 +76,7 @@ private:
     bool m_running = false;
     bool m_started = false;
     bool m_seenConnected = false; // "link lost" only for a link that was up
-    double m_targetAz = 0, m_targetEl = 0;
-    // For --wait: the last fresh position, how many in a row have not moved,
-    // and whether the rotator has been seen moving since the command.
-    std::optional<std::pair<double, double>> m_lastPosition;
-    int m_steadyPolls = 0;
-    bool m_sawMotion = false;
+    session::MoveWatch m_move; // for --wait: how the move ended
     bool m_interrupted = false; // stopping on Ctrl-C: arrival is no longer judged
     QTimer m_deadline;
     QTimer m_tick;

@@ -228,6 +228,9 @@ signals:
     void profileChanged(); // limits, park, dialect or poll rate changed
     void positionChanged(double az, double el, bool stale);
     void targetChanged(double az, double el);
+    // The rotator is heading for no known target any more: a stop went out,
+    // or a park to a position not read yet.
+    void targetCleared();
     void commandedChanged(double az, double el); // CR10 / CR11 read back
     void statusChanged(slew::session::StatusWord status);
     void errorFlagsChanged(int flags);

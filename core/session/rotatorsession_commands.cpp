@@ -364,6 +364,7 @@ CommandResult RotatorSession::stop(Axes axes)
     m_activeTarget.reset();
     write(line);
     emit stopSent();
+    emit targetCleared();
     // A SPID stop halts every axis: one still held on the jog pad runs on.
     if (protocol::isSpid(m_profile.dialect)) {
         for (Axis other : {Axis::Azimuth, Axis::Elevation}) {
@@ -424,6 +425,8 @@ CommandResult RotatorSession::park()
         m_targetAz = parkAzimuth();
         m_targetEl = parkElevation();
         emit targetChanged(m_targetAz, m_targetEl);
+    } else {
+        emit targetCleared();
     }
     return {};
 }
