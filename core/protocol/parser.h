@@ -85,6 +85,9 @@ private:
     // What one token reads as: usually one message, two for GS-232's
     // `C2`, `S` and `+0aaa+0eee` (and for rotctld's lines `P 10 20`, `p`, `S`).
     struct Classified {
+        Classified() = default;
+        Classified(const Message &one) : first(one) {}
+        Classified(const Message &one, const Message &two) : first(one), second(two), count(2) {}
         Message first;
         Message second;
         int count = 1;

@@ -26,17 +26,6 @@ Message indexedReply(Op op, int index, QByteArrayView value)
     return m;
 }
 
-struct Simple {
-    const char *mnemonic;
-    Op op;
-};
-
-// Two-letter commands that take no argument.
-constexpr Simple kBare[] = {
-    {"ML", Op::MoveLeft},       {"MR", Op::MoveRight},     {"MU", Op::MoveUp}, {"MD", Op::MoveDown},
-    {"SA", Op::StopAzimuth},    {"SE", Op::StopElevation}, {"AO", Op::Aos},    {"LO", Op::Los},
-};
-
 } // namespace
 
 Message Parser::classifyEasycomm(QByteArrayView t) const
@@ -91,13 +80,13 @@ Message Parser::classifyEasycomm(QByteArrayView t) const
         return Message::invalid(t, "unknown command", Refusal::Unknown);
     const QByteArrayView rest = t.sliced(2);
 
-    for (const Simple &s : kBare) {
-        if (startsWithMnemonic(t, s.mnemonic)) {
-            if (!rest.isEmpty())
-                return Message::invalid(t, "command takes no argument");
-            return Message::query(s.op);
-        }
-    }
+    // The two-letter commands that take no argument (ML MR MU MD SA SE AO
+    // LO) are found in the switch below, by their two letters, as the rest.
+    auto bare = [&](Op op) {
+        if (!rest.isEmpty())
+            return Message::invalid(t, "command takes no argument");
+        return Message::query(op);
+    };
 
     auto angle = [&](Op op) {
         if (rest.isEmpty())
@@ -153,7 +142,22 @@ Message Parser::classifyEasycomm(QByteArrayView t) const
     const char a = upper(t[0]);
     const char b = upper(t[1]);
     switch (a) {
+    case 'M':
+        switch (b) {
+        case 'L': return bare(Op::MoveLeft);
+        case 'R': return bare(Op::MoveRight);
+        case 'U': return bare(Op::MoveUp);
+        case 'D': return bare(Op::MoveDown);
+        default: break;
+        }
+        break;
+    case 'L':
+        if (b == 'O')
+            return bare(Op::Los);
+        break;
     case 'A':
+        if (b == 'O')
+            return bare(Op::Aos);
         if (b == 'Z')
             return angle(Op::Azimuth);
         if (b == 'N')
@@ -196,6 +200,10 @@ Message Parser::classifyEasycomm(QByteArrayView t) const
             return indexed(Op::ReadInput, false);
         break;
     case 'S':
+        if (b == 'A')
+            return bare(Op::StopAzimuth);
+        if (b == 'E')
+            return bare(Op::StopElevation);
         if (b == 'T') {
             if (rest.isEmpty())
                 return Message::query(Op::Time);

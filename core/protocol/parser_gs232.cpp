@@ -6,7 +6,6 @@
 
 #include "tokentext.h"
 
-#include <cstring>
 #include <optional>
 
 namespace slew::protocol {
@@ -43,12 +42,12 @@ bool offsetPair(QByteArrayView s, double *az, double *el)
 std::optional<int> statusBits(QByteArrayView s)
 {
     struct Word {
-        const char *name;
+        QByteArrayView name; // its length known at compile time
         int bits;
     };
     static constexpr Word kWords[] = {{"IDLE", 1}, {"MOVING", 2}, {"POINTING", 4}, {"ERROR", 8}};
     for (const Word &w : kWords) {
-        if (s.size() == qsizetype(std::strlen(w.name)) && startsWithMnemonic(s, w.name))
+        if (s.size() == w.name.size() && startsWithMnemonic(s, w.name))
             return w.bits;
     }
     if (s.size() > 2 && s[0] == '0' && upper(s[1]) == 'X') {

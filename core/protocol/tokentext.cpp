@@ -2,35 +2,12 @@
 #include "tokentext.h"
 
 #include <charconv>
-#include <cmath>
+#include <cstdint>
+#include <iterator>
+#include <system_error>
 
 namespace slew::protocol::text {
 
-bool allDigits(QByteArrayView s)
-{
-    if (s.isEmpty())
-        return false;
-    for (char c : s) {
-        if (!isDigit(c))
-            return false;
-    }
-    return true;
-}
-
-bool startsWithMnemonic(QByteArrayView token, QByteArrayView mnemonic)
-{
-    if (token.size() < mnemonic.size())
-        return false;
-    for (qsizetype i = 0; i < mnemonic.size(); ++i) {
-        if (upper(token[i]) != mnemonic[i])
-            return false;
-    }
-    return true;
-}
-
-// A decimal number the way devices write them: optional sign, leading zeros
-// (`AZ000.1`, `EL00099`), '.' or ',' as the decimal mark. Returns the count of
-// decimals in *decimals. No exponent, no spaces, no trailing bytes.
 bool parseDecimal(QByteArrayView s, double *out, int *decimals)
 {
     if (s.isEmpty() || s.size() > 24)
@@ -41,38 +18,46 @@ bool parseDecimal(QByteArrayView s, double *out, int *decimals)
         negative = s[0] == '-';
         ++i;
     }
-    double value = 0.0;
+    // The digits as one whole number and a power of ten to divide it by: one
+    // correctly rounded division, the nearest double to what was written for
+    // the up to 15 significant digits a device sends, and no pow() per reply.
+    std::uint64_t mantissa = 0;
     int digits = 0;
+    int significant = 0; // digits from the first non-zero one on
+    auto take = [&](char c) {
+        mantissa = mantissa * 10 + std::uint64_t(c - '0');
+        significant += (mantissa != 0 && significant < 99) ? 1 : 0;
+    };
     for (; i < s.size() && isDigit(s[i]); ++i, ++digits)
-        value = value * 10.0 + (s[i] - '0');
+        take(s[i]);
     int fraction = 0;
     if (i < s.size() && (s[i] == '.' || s[i] == ',')) {
         ++i;
-        double scale = 0.1;
-        for (; i < s.size() && isDigit(s[i]); ++i, ++fraction, scale /= 10.0)
-            value += (s[i] - '0') * scale;
+        for (; i < s.size() && isDigit(s[i]); ++i, ++fraction)
+            take(s[i]);
     }
     if (i != s.size() || digits + fraction == 0)
         return false;
-    // Round away the binary noise of the digit-by-digit sum.
-    if (fraction > 0) {
-        const double p = std::pow(10.0, fraction);
-        value = std::round(value * p) / p;
+    static constexpr double kPowersOfTen[] = {1e0, 1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,
+                                              1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17,
+                                              1e18, 1e19, 1e20, 1e21, 1e22};
+    double value = 0.0;
+    if (significant <= 15 && fraction < int(std::size(kPowersOfTen))) {
+        // Both exact in a double, so the quotient is correctly rounded.
+        value = double(mantissa) / kPowersOfTen[fraction];
+    } else {
+        // More digits than a double holds (the whole number may have wrapped
+        // too): from_chars reads it correctly rounded, whatever the locale.
+        char copy[32];
+        const QByteArrayView digitsOnly = s.sliced(s[0] == '+' || s[0] == '-' ? 1 : 0);
+        for (qsizetype k = 0; k < digitsOnly.size(); ++k)
+            copy[k] = digitsOnly[k] == ',' ? '.' : digitsOnly[k];
+        if (std::from_chars(copy, copy + digitsOnly.size(), value).ec != std::errc())
+            return false;
     }
     *out = negative ? -value : value;
     if (decimals)
         *decimals = fraction;
-    return true;
-}
-
-bool parseUnsigned(QByteArrayView s, int maxDigits, double *out)
-{
-    if (!allDigits(s) || s.size() > maxDigits)
-        return false;
-    double v = 0;
-    for (char c : s)
-        v = v * 10.0 + (c - '0');
-    *out = v;
     return true;
 }
 
@@ -118,15 +103,6 @@ bool isValidTime(QByteArrayView s)
     const bool leap = (year % 4 == 0 && year % 100 != 0) || year % 400 == 0;
     const int days = kDays[month - 1] + (month == 2 && leap ? 1 : 0);
     return day <= days && field[3] <= 23 && field[4] <= 59 && field[5] <= 59;
-}
-
-bool isPrintable(QByteArrayView s)
-{
-    for (char c : s) {
-        if (static_cast<unsigned char>(c) < 0x21 || static_cast<unsigned char>(c) > 0x7e)
-            return false;
-    }
-    return true;
 }
 
 } // namespace slew::protocol::text
