@@ -5,6 +5,10 @@
 // end stops (the Micro-2g program).
 // It works on the operator window's session (no second connection to the
 // rotator) and builds the profile that the summary writes and saves.
+//
+// The wizard moves the rotator (jogs, homing, tuning steps) while it covers
+// the window, so it carries its own STOP below every page, and Esc presses
+// it. Cancel, the one Cancel, stops the rotator too and closes.
 
 #include "model/rotatorprofile.h"
 
@@ -15,6 +19,8 @@ class RotatorSession;
 }
 
 namespace slew::ui {
+
+class StopButton;
 
 class SetupWizard : public QWizard {
     Q_OBJECT
@@ -37,17 +43,27 @@ public:
     model::RotatorProfile &profile() { return m_profile; }
     const model::RotatorProfile &profile() const { return m_profile; }
 
-    // Esc, Cancel or closing: every long action stops, and so does the rotator.
+    // Cancel or closing: every long action stops, and so does the rotator.
     void reject() override;
     int nextId() const override;
+
+public slots:
+    // The wizard's STOP: every long action ends and the rotator stops.
+    void stopRotator();
 
 signals:
     void profileSaved(const QString &path);
     void stopRequested(); // pages cancel what they run
 
+protected:
+    // Esc is Stop here, as in the window: it stops the rotator and leaves
+    // the wizard open, so a stopped jog does not cost the pages filled in.
+    void keyPressEvent(QKeyEvent *event) override;
+
 private:
     session::RotatorSession *m_session;
     model::RotatorProfile m_profile;
+    StopButton *m_stop;
 };
 
 } // namespace slew::ui
