@@ -23,6 +23,11 @@ SetupWizard::SetupWizard(session::RotatorSession *session, QWidget *parent)
 {
     setWindowTitle(tr("Set up a rotator"));
     setOption(QWizard::NoBackButtonOnStartPage);
+    // The rotator the window talks to is the one set up, unless the operator
+    // probes another link on the Connect page (which asks first).
+    m_usesWindowConnection = windowHasConnection();
+    if (m_usesWindowConnection)
+        m_profile.uri = session->uri();
     // The STOP sits in the button row, outside the pages: it is there on
     // every page, however the page scrolls, and never behind anything.
     m_stop = new StopButton(session, this);
@@ -65,6 +70,11 @@ int SetupWizard::nextId() const
     default:
         return QWizard::nextId();
     }
+}
+
+bool SetupWizard::windowHasConnection() const
+{
+    return m_session->state() != session::RotatorSession::State::Disconnected;
 }
 
 void SetupWizard::stopRotator()

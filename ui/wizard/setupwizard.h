@@ -4,7 +4,9 @@
 // with Calibration after Identify for a controller that calibrates by its
 // end stops (the Micro-2g program).
 // It works on the operator window's session (no second connection to the
-// rotator) and builds the profile that the summary writes and saves.
+// rotator) and builds the profile that the summary writes and saves. A
+// window that is already connected keeps its connection: the wizard sets
+// that rotator up, and asks before it connects the window anywhere else.
 //
 // The wizard moves the rotator (jogs, homing, tuning steps) while it covers
 // the window, so it carries its own STOP below every page, and Esc presses
@@ -43,6 +45,16 @@ public:
     model::RotatorProfile &profile() { return m_profile; }
     const model::RotatorProfile &profile() const { return m_profile; }
 
+    // Whether the wizard goes on with the link the window already had (set
+    // by the Connect page): then Identify reads what that connection knows
+    // instead of opening the link again.
+    bool usesWindowConnection() const { return m_usesWindowConnection; }
+    void setUsesWindowConnection(bool uses) { m_usesWindowConnection = uses; }
+
+    // Whether the session has a link or is bringing one up: the window's
+    // connection, which the wizard must not replace without asking.
+    bool windowHasConnection() const;
+
     // Cancel or closing: every long action stops, and so does the rotator.
     void reject() override;
     int nextId() const override;
@@ -64,6 +76,7 @@ private:
     session::RotatorSession *m_session;
     model::RotatorProfile m_profile;
     StopButton *m_stop;
+    bool m_usesWindowConnection = false;
 };
 
 } // namespace slew::ui
