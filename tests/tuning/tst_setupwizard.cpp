@@ -95,6 +95,9 @@ private slots:
         QTest::mouseClick(find<QPushButton>(wizard, "jog"), Qt::LeftButton);
         TRY_VERIFY_WITH_TIMEOUT(std::fabs(session.azimuth() - 17.0) < 0.2, 10000);
         find<QCheckBox>(wizard, "jogConfirmed")->setChecked(true);
+        QTest::mouseClick(find<QPushButton>(wizard, "jogElevation"), Qt::LeftButton);
+        TRY_VERIFY_WITH_TIMEOUT(std::fabs(session.elevation() - 11.0) < 0.2, 10000);
+        find<QCheckBox>(wizard, "jogElevationConfirmed")->setChecked(true);
         QVERIFY(canGoOn(wizard));
         wizard.next();
 
@@ -238,6 +241,9 @@ private slots:
         QTest::mouseClick(find<QPushButton>(wizard, "jog"), Qt::LeftButton);
         TRY_VERIFY_WITH_TIMEOUT(std::fabs(session.azimuth() - 17.0) < 0.5, 10000);
         find<QCheckBox>(wizard, "jogConfirmed")->setChecked(true);
+        QTest::mouseClick(find<QPushButton>(wizard, "jogElevation"), Qt::LeftButton);
+        TRY_VERIFY_WITH_TIMEOUT(std::fabs(session.elevation() - 11.0) < 0.5, 10000);
+        find<QCheckBox>(wizard, "jogElevationConfirmed")->setChecked(true);
         wizard.next();
 
         QCOMPARE(wizard.currentId(), int(SetupWizard::HomingPageId));
