@@ -146,6 +146,44 @@ private slots:
         QVERIFY(wizard.currentPage()->findChild<QPushButton *>(QStringLiteral("home"))->isEnabled());
     }
 
+    void theStopEndsAJog()
+    {
+        SetupWizard wizard(m_session.get());
+        wizard.setStartId(SetupWizard::MechanicsPageId);
+        wizard.show();
+        QTest::mouseClick(wizard.currentPage()->findChild<QPushButton *>(QStringLiteral("jogElevation")),
+                          Qt::LeftButton);
+        TRY_VERIFY(m_session->elevation() > 20.3);
+        m_sent.clear();
+        QTest::mouseClick(wizard.findChild<QPushButton *>(QStringLiteral("wizardStop")), Qt::LeftButton);
+        QVERIFY(sentStop());
+        TRY_VERIFY(axesStopped());
+        standsStill();
+        QVERIFY(m_session->elevation() < 24.0); // well short of the jog's 25°
+        auto *note = wizard.currentPage()->findChild<QLabel *>(QStringLiteral("elDirection"));
+        QVERIFY2(note->text().contains(QStringLiteral("Stopped")), qPrintable(note->text()));
+    }
+
+    void theStopEndsASpeedMeasurement()
+    {
+        SetupWizard wizard(m_session.get());
+        wizard.setStartId(SetupWizard::TuningPageId);
+        wizard.show();
+        auto *measure = wizard.currentPage()->findChild<QPushButton *>(QStringLiteral("measureSpeed"));
+        QTest::mouseClick(measure, Qt::LeftButton);
+        TRY_VERIFY(std::fabs(m_session->azimuth() - 40.0) > 1.0);
+        m_sent.clear();
+        QTest::mouseClick(wizard.findChild<QPushButton *>(QStringLiteral("wizardStop")), Qt::LeftButton);
+        QVERIFY(sentStop());
+        TRY_VERIFY(axesStopped());
+        standsStill();
+        // The page is usable again, and says what happened.
+        QVERIFY(measure->isEnabled());
+        QVERIFY(wizard.button(QWizard::NextButton)->isEnabled());
+        auto *status = wizard.currentPage()->findChild<QLabel *>(QStringLiteral("tuningStatus"));
+        QVERIFY2(status->text().contains(QStringLiteral("stopped")), qPrintable(status->text()));
+    }
+
     void escapeStopsAndKeepsTheWizardOpen()
     {
         SetupWizard wizard(m_session.get());

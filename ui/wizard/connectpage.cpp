@@ -116,7 +116,15 @@ ConnectPage::ConnectPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizard(wi
                               : tr("Nothing answered. Check the cable, the port and the controller's power."));
         emit completeChanged();
     });
-    connect(wizard, &SetupWizard::stopRequested, &m_probe, &tuning::BaudProbe::cancel);
+    // The STOP ends a probe as it ends everything else; Probe is there again.
+    connect(wizard, &SetupWizard::stopRequested, this, [this] {
+        if (!m_probe.isRunning())
+            return;
+        m_probe.cancel();
+        m_probeButton->setEnabled(true);
+        m_status->setText(tr("Probe stopped."));
+        emit completeChanged();
+    });
     connect(wizard->session(), &RotatorSession::stateChanged, this, &ConnectPage::showWindowConnection);
     showWindowConnection();
 }

@@ -43,7 +43,12 @@ IdentifyPage::IdentifyPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizard(
     });
     connect(s, &RotatorSession::positionChanged, this, &IdentifyPage::completeChanged);
     connect(s, &RotatorSession::stateChanged, this, &IdentifyPage::completeChanged);
-    connect(wizard, &SetupWizard::stopRequested, &m_identifier, &tuning::DialectIdentifier::cancel);
+    connect(wizard, &SetupWizard::stopRequested, this, [this] {
+        if (!m_identifier.isRunning())
+            return;
+        m_identifier.cancel();
+        m_result->setText(tr("Identification stopped. Back, then Next, runs it again."));
+    });
 }
 
 void IdentifyPage::initializePage()

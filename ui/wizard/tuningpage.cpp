@@ -141,7 +141,16 @@ TuningPage::TuningPage(SetupWizard *wizard)
     connect(&m_tuner, &AxisTuner::failed, this, ended);
     connect(&m_tuner, &AxisTuner::cancelled, this, ended);
     connect(wizard, &SetupWizard::stopRequested, &m_tuner, &AxisTuner::cancel);
-    connect(wizard, &SetupWizard::stopRequested, &m_motionRun, &tuning::MotionRun::cancel);
+    // A speed measurement ends silently when cancelled: the page says so
+    // and offers its buttons again.
+    connect(wizard, &SetupWizard::stopRequested, this, [this] {
+        if (!m_motionRun.isRunning())
+            return;
+        m_motionRun.cancel();
+        m_status->setText(tr("Speed measurement stopped."));
+        setDeciding(false);
+        emit completeChanged();
+    });
 }
 
 void TuningPage::measureSpeed()
