@@ -184,7 +184,9 @@ void AxisModel::step(double dt)
     detectFaults(drive, previousReading, dt);
     if (m_errors != 0)
         powered = false; // a fault found this step cut the drive too
-    integrate(drive, powered, dt);
+    // A motor wired the wrong way round turns against whatever the board
+    // asks of it; the board's own checks above still see what it asked.
+    integrate(m_faults.reversedMotor ? -drive : drive, powered, dt);
     if (!powered)
         m_effort = 0.0;
     else if (!m_faults.jam)

@@ -69,6 +69,9 @@ struct AxisFaults {
     bool encoderFreeze = false;   // the reading stops changing; a sensor error follows when it moves
     double encoderNoise = 0.0;    // degrees of uniform noise on every reading; large jumps are a sensor error
     bool missingEndStop = false;  // the lower switch never trips: homing fails
+    // The motor is wired the wrong way round: driven up (CW) it turns down
+    // (CCW), so the position loop runs away from its target.
+    bool reversedMotor = false;
     double backlash = 0.0;        // degrees of play between motor and antenna
     double stallSeconds = 1.0;    // how long a driven, unmoving axis takes to become a motor error
 

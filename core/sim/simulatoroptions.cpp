@@ -61,6 +61,7 @@ const std::vector<SimulatorOptionInfo> kOptions = {
     {"noise_az", "degrees", "encoder noise on azimuth"},
     {"noise_el", "degrees", "encoder noise on elevation"},
     {"no_endstop", "axes", "az, el or both: the lower limit switch is missing (homing error)"},
+    {"reversed", "axes", "az, el or both: the motor is wired the wrong way round; the axis runs away from its target"},
     {"backlash", "degrees", "gear play of both axes"},
     {"backlash_az", "degrees", "gear play of azimuth"},
     {"backlash_el", "degrees", "gear play of elevation"},
@@ -314,6 +315,8 @@ QString applySimulatorOption(SimulatorOptions &o, QStringView rawName, QStringVi
         return axes(&AxisFaults::encoderFreeze);
     if (name == u"no_endstop")
         return axes(&AxisFaults::missingEndStop);
+    if (name == u"reversed")
+        return axes(&AxisFaults::reversedMotor);
     if (name == u"noise")
         return magnitude(&AxisFaults::encoderNoise, true, true);
     if (name == u"noise_az")

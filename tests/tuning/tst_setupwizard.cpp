@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The setup wizard driven end to end offscreen against the simulator: every
-// page, cancel during homing (the rotator stops), a homing failure injected
-// in the simulator (the wizard says so), tuning with before and after, and
-// the summary's write, read-back and profile save.
+// page, the wizard's STOP during homing (the rotator stops), a homing
+// failure injected in the simulator (the wizard says so), tuning with before
+// and after, and the summary's write, read-back and profile save; the
+// summary's register names, and Finish only once the registers read back.
 #include "../common/simulatorpump.h"
 
 #include "linkschemes.h"
@@ -22,6 +23,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QDoubleSpinBox>
+
+#include <memory>
 
 using namespace slew;
 using session::RotatorSession;
@@ -95,17 +98,21 @@ private slots:
         QTest::mouseClick(find<QPushButton>(wizard, "jog"), Qt::LeftButton);
         TRY_VERIFY_WITH_TIMEOUT(std::fabs(session.azimuth() - 17.0) < 0.2, 10000);
         find<QCheckBox>(wizard, "jogConfirmed")->setChecked(true);
+        QTest::mouseClick(find<QPushButton>(wizard, "jogElevation"), Qt::LeftButton);
+        TRY_VERIFY_WITH_TIMEOUT(std::fabs(session.elevation() - 11.0) < 0.2, 10000);
+        find<QCheckBox>(wizard, "jogElevationConfirmed")->setChecked(true);
         QVERIFY(canGoOn(wizard));
         wizard.next();
 
-        // Homing: cancel part way, and the rotator stops.
+        // Homing: stopped part way with the wizard's STOP, and the rotator stops.
         QCOMPARE(wizard.currentId(), int(SetupWizard::HomingPageId));
         QVERIFY(!canGoOn(wizard));
-        auto *cancelHoming = find<QPushButton>(wizard, "cancelHoming");
+        auto *stop = wizard.findChild<QPushButton *>(QStringLiteral("wizardStop"));
+        auto *home = find<QPushButton>(wizard, "home");
         auto *result = find<QLabel>(wizard, "homingResult");
         auto cancelAt = connect(&session, &RotatorSession::positionChanged, this, [&](double az, double, bool) {
-            if (az < 14.0 && cancelHoming->isEnabled())
-                QTest::mouseClick(cancelHoming, Qt::LeftButton);
+            if (az < 14.0 && !home->isEnabled())
+                QTest::mouseClick(stop, Qt::LeftButton);
         });
         QTest::mouseClick(find<QPushButton>(wizard, "home"), Qt::LeftButton);
         TRY_VERIFY_WITH_TIMEOUT(result->text().contains(QStringLiteral("cancelled")), 10000);
@@ -170,12 +177,14 @@ private slots:
 
         // Summary: write, read back each register, save.
         QCOMPARE(wizard.currentId(), int(SetupWizard::SummaryPageId));
-        QVERIFY(find<QLabel>(wizard, "plan")->text().contains(QStringLiteral("CW7,180")));
+        QVERIFY(find<QLabel>(wizard, "plan")->text().contains(QStringLiteral("Az park: 180°")));
+        QVERIFY(!wizard.button(QWizard::FinishButton)->isEnabled());
         QTest::mouseClick(find<QPushButton>(wizard, "write"), Qt::LeftButton);
         auto *list = find<QListWidget>(wizard, "writeResults");
         TRY_COMPARE_WITH_TIMEOUT(list->count(), 8, 10000);
         for (int i = 0; i < list->count(); ++i)
             QVERIFY2(list->item(i)->text().endsWith(QStringLiteral("ok")), qPrintable(list->item(i)->text()));
+        QVERIFY(wizard.button(QWizard::FinishButton)->isEnabled());
         QCOMPARE(sim->rotator().config().parkAzimuth, 180.0);
         QCOMPARE(sim->rotator().config().parkElevation, 45.0);
 
@@ -237,6 +246,9 @@ private slots:
         QTest::mouseClick(find<QPushButton>(wizard, "jog"), Qt::LeftButton);
         TRY_VERIFY_WITH_TIMEOUT(std::fabs(session.azimuth() - 17.0) < 0.5, 10000);
         find<QCheckBox>(wizard, "jogConfirmed")->setChecked(true);
+        QTest::mouseClick(find<QPushButton>(wizard, "jogElevation"), Qt::LeftButton);
+        TRY_VERIFY_WITH_TIMEOUT(std::fabs(session.elevation() - 11.0) < 0.5, 10000);
+        find<QCheckBox>(wizard, "jogElevationConfirmed")->setChecked(true);
         wizard.next();
 
         QCOMPARE(wizard.currentId(), int(SetupWizard::HomingPageId));
@@ -266,6 +278,7 @@ private slots:
         QVERIFY2(plan.contains(QStringLiteral("no configuration registers")) && !plan.contains(QStringLiteral("CW")),
                  qPrintable(plan));
         QVERIFY(!find<QPushButton>(wizard, "write")->isEnabled());
+        QVERIFY(wizard.button(QWizard::FinishButton)->isEnabled()); // nothing to write, nothing to wait for
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("rotator.json"));
         find<QLineEdit>(wizard, "profilePath")->setText(path);
@@ -278,6 +291,62 @@ private slots:
         // The simulated G-5500's azimuth, measured through SPID's half-degree steps.
         QVERIFY2(std::abs(profile->motion.azSpeedDegS - 6.2) < 0.3, qPrintable(QString::number(profile->motion.azSpeedDegS)));
         wizard.reject();
+    }
+
+    void theSummaryNamesWhatItWrites()
+    {
+        // "Az I gain: 1", "El park: 45°": what the operator set, in the
+        // operator's words, before and after it was written.
+        std::unique_ptr<RotatorSession> session;
+        std::unique_ptr<SimulatorPump> pump;
+        QVERIFY(connectPumped(QStringLiteral("sim:?clock=manual&unsolicited=1"), session, pump));
+        model::RotatorProfile profile = session->profile();
+        profile.azGains = model::PidGains{12.5, 1, 1};
+        profile.elGains = model::PidGains{10, 0.5, 2};
+        profile.parkAz = 180;
+        profile.parkEl = 45;
+        session->setProfile(profile);
+        SetupWizard wizard(session.get());
+        wizard.setStartId(SetupWizard::SummaryPageId);
+        wizard.show();
+        const QString plan = find<QLabel>(wizard, "plan")->text();
+        for (const char *line : {"Az P gain: 12.5", "Az I gain: 1", "Az D gain: 1", "El P gain: 10", "El I gain: 0.5",
+                                 "El D gain: 2", "Az park: 180°", "El park: 45°"})
+            QVERIFY2(plan.contains(QString::fromUtf8(line)), qPrintable(plan));
+        QVERIFY2(!plan.contains(QStringLiteral("CW")), qPrintable(plan));
+
+        QTest::mouseClick(find<QPushButton>(wizard, "write"), Qt::LeftButton);
+        auto *list = find<QListWidget>(wizard, "writeResults");
+        TRY_COMPARE(list->count(), 8);
+        // The controller prints its own decimals ("1.000", "45.00").
+        const QString gain = list->item(1)->text(), park = list->item(7)->text();
+        QVERIFY2(gain.startsWith(QStringLiteral("Az I gain: wrote 1, reads 1.0")) && gain.endsWith(QStringLiteral(" — ok")),
+                 qPrintable(gain));
+        QVERIFY2(park.startsWith(QStringLiteral("El park: wrote 45°, reads 45.0")) && park.endsWith(QStringLiteral("° — ok")),
+                 qPrintable(park));
+        for (int i = 0; i < list->count(); ++i)
+            QVERIFY2(!list->item(i)->text().contains(QStringLiteral("CR")), qPrintable(list->item(i)->text()));
+    }
+
+    void finishWaitsForTheReadBack()
+    {
+        std::unique_ptr<RotatorSession> session;
+        std::unique_ptr<SimulatorPump> pump;
+        QVERIFY(connectPumped(QStringLiteral("sim:?clock=manual&unsolicited=1"), session, pump));
+        SetupWizard wizard(session.get());
+        wizard.setStartId(SetupWizard::SummaryPageId);
+        wizard.show();
+        QAbstractButton *finish = wizard.button(QWizard::FinishButton);
+        QVERIFY(finish->isVisible());
+        QVERIFY(!finish->isEnabled()); // nothing written yet
+        auto *note = find<QLabel>(wizard, "finishNote");
+        QVERIFY2(note->text().contains(QStringLiteral("reads back")), qPrintable(note->text()));
+
+        QTest::mouseClick(find<QPushButton>(wizard, "write"), Qt::LeftButton);
+        QVERIFY(!finish->isEnabled()); // written, not yet read back
+        TRY_VERIFY(finish->isEnabled());
+        QCOMPARE(find<QListWidget>(wizard, "writeResults")->count(), 2); // the park registers
+        QVERIFY2(note->text().contains(QStringLiteral("Every register reads back")), qPrintable(note->text()));
     }
 
     void cancellingTheWizardStopsTheRotator()

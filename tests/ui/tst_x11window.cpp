@@ -223,6 +223,9 @@ private slots:
         QTest::mouseClick(find<QPushButton>(wizard, "jog"), Qt::LeftButton);
         TRY_VERIFY_WITH_TIMEOUT(std::fabs(session.azimuth() - 17.0) < 0.2, 10000);
         find<QCheckBox>(wizard, "jogConfirmed")->setChecked(true);
+        QTest::mouseClick(find<QPushButton>(wizard, "jogElevation"), Qt::LeftButton);
+        TRY_VERIFY_WITH_TIMEOUT(std::fabs(session.elevation() - 11.0) < 0.2, 10000);
+        find<QCheckBox>(wizard, "jogElevationConfirmed")->setChecked(true);
         PAGE_IS_CLEAN();
         wizard.next();
 

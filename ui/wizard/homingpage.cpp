@@ -6,7 +6,6 @@
 #include "protocol/dialect.h"
 
 #include <QCheckBox>
-#include <QHBoxLayout>
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
@@ -24,9 +23,6 @@ HomingPage::HomingPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizard(wiza
     setSubTitle(tr("The controller drives both axes to their lower end stops and zeroes there (RESET)."));
     m_home = new QPushButton(tr("Home"), this);
     m_home->setObjectName(QStringLiteral("home"));
-    m_cancel = new QPushButton(tr("Cancel homing"), this);
-    m_cancel->setObjectName(QStringLiteral("cancelHoming"));
-    m_cancel->setEnabled(false);
     m_progress = new QProgressBar(this);
     m_result = new QLabel(this);
     m_result->setObjectName(QStringLiteral("homingResult"));
@@ -34,14 +30,12 @@ HomingPage::HomingPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizard(wiza
     m_skip = new QCheckBox(tr("Skip: this rotator has no end stops"), this);
     m_skip->setObjectName(QStringLiteral("skipHoming"));
 
-    auto *buttons = new QHBoxLayout;
-    buttons->addWidget(m_home);
-    buttons->addWidget(m_cancel);
     auto *layout = new QVBoxLayout(makePageBody(this));
-    layout->addLayout(buttons);
+    layout->addWidget(m_home, 0, Qt::AlignLeft);
     layout->addWidget(m_progress);
     layout->addWidget(m_result);
     layout->addWidget(m_skip);
+    layout->addStretch(1); // the verdict stays under the bar, not halfway down the page
 
     connect(m_home, &QPushButton::clicked, this, [this] {
         m_homed = false;
@@ -52,7 +46,6 @@ HomingPage::HomingPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizard(wiza
         }
         setRunning(true);
     });
-    connect(m_cancel, &QPushButton::clicked, &m_homing, &tuning::HomingRun::cancel);
     connect(&m_homing, &tuning::HomingRun::progress, this, [this](int percent, const QString &what) {
         m_progress->setValue(percent);
         m_result->setText(what);
@@ -92,7 +85,7 @@ void HomingPage::initializePage()
 void HomingPage::setRunning(bool running)
 {
     m_home->setEnabled(!running);
-    m_cancel->setEnabled(running);
+    m_home->setToolTip(running ? tr("Homing: the STOP below ends it") : QString());
     emit completeChanged();
 }
 

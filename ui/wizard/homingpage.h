@@ -1,6 +1,7 @@
 #pragma once
 // Step 4: RESET with a progress bar, a time limit and a clear verdict from
-// GE; Cancel stops the rotator. A rotator without end stops may skip it.
+// GE; the wizard's STOP (or Esc) ends it and stops the rotator. A rotator
+// without end stops may skip it.
 
 #include "tuning/homingrun.h"
 
@@ -29,7 +30,6 @@ private:
     tuning::HomingRun m_homing;
     bool m_homed = false;
     QPushButton *m_home;
-    QPushButton *m_cancel;
     QProgressBar *m_progress;
     QLabel *m_result;
     QCheckBox *m_skip;

@@ -3,6 +3,7 @@
 #include "pagebody.h"
 #include "setupwizard.h"
 
+#include "protocol/dialect.h"
 #include "session/rotatorsession.h"
 
 #include <QLabel>
@@ -35,17 +36,51 @@ IdentifyPage::IdentifyPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizard(
     });
     connect(&m_identifier, &tuning::DialectIdentifier::finished, this, &IdentifyPage::onIdentified);
     RotatorSession *s = wizard->session();
-    connect(s, &RotatorSession::capabilitiesChanged, this, &IdentifyPage::completeChanged);
+    connect(s, &RotatorSession::capabilitiesChanged, this, [this] {
+        if (m_wizard->usesWindowConnection() && m_wizard->currentPage() == this)
+            showWindowConnection();
+        emit completeChanged();
+    });
     connect(s, &RotatorSession::positionChanged, this, &IdentifyPage::completeChanged);
     connect(s, &RotatorSession::stateChanged, this, &IdentifyPage::completeChanged);
-    connect(wizard, &SetupWizard::stopRequested, &m_identifier, &tuning::DialectIdentifier::cancel);
+    connect(wizard, &SetupWizard::stopRequested, this, [this] {
+        if (!m_identifier.isRunning())
+            return;
+        m_identifier.cancel();
+        m_result->setText(tr("Identification stopped. Back, then Next, runs it again."));
+    });
 }
 
 void IdentifyPage::initializePage()
 {
     m_answers->clear();
+    if (m_wizard->usesWindowConnection()) {
+        showWindowConnection();
+        return;
+    }
     if (!m_identifier.start(m_wizard->profile().uri))
         m_result->setText(m_identifier.error());
+}
+
+void IdentifyPage::showWindowConnection()
+{
+    const RotatorSession *s = m_wizard->session();
+    m_answers->clear();
+    m_progress->setValue(100);
+    if (!s->capabilities().probed) {
+        m_result->setText(tr("The window's connection to %1 is still asking the controller what it answers…")
+                              .arg(s->uri()));
+        return;
+    }
+    tuning::DialectResult known;
+    known.dialect = s->profile().dialect;
+    known.capabilities = s->capabilities();
+    known.version = s->version();
+    m_answers->addItem(known.describe());
+    m_result->setText(tr("The window's connection to %1 speaks %2%3; the wizard goes on with it. (To identify "
+                         "the controller afresh, go back and probe its link.)")
+                          .arg(s->uri(), protocol::dialectName(known.dialect),
+                               known.version.isEmpty() ? QString() : tr(" (version %1)").arg(known.version)));
 }
 
 void IdentifyPage::onIdentified(bool identified)

@@ -1,5 +1,6 @@
 #include "mechanicspage.h"
 
+#include "directioncheck.h"
 #include "pagebody.h"
 #include "setupwizard.h"
 
@@ -8,6 +9,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFormLayout>
+#include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
@@ -17,14 +19,26 @@
 
 namespace slew::ui {
 
+using session::Axis;
+using Verdict = DirectionCheck::Verdict;
+
 namespace {
 constexpr double kJogDegrees = 5.0;
+
+QString confirmation(const DirectionCheck &check)
+{
+    if (check.axis() == Axis::Azimuth)
+        return check.upward() ? MechanicsPage::tr("The antenna turned clockwise (to the right, seen from above)")
+                              : MechanicsPage::tr("The antenna turned counter-clockwise (to the left, seen from above)");
+    return check.upward() ? MechanicsPage::tr("The antenna tilted up (towards the zenith)")
+                          : MechanicsPage::tr("The antenna tilted down (towards the horizon)");
 }
+} // namespace
 
 MechanicsPage::MechanicsPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizard(wizard)
 {
     setTitle(tr("Mechanics"));
-    setSubTitle(tr("Tell Slew how far the rotator may turn, then check that it moves the way you expect."));
+    setSubTitle(tr("Tell Slew how far the rotator may turn, then check that each axis moves the way you expect."));
     const auto &lim = wizard->profile().limits;
     m_azRange = new QSpinBox(this);
     m_azRange->setObjectName(QStringLiteral("azRange"));
@@ -40,11 +54,8 @@ MechanicsPage::MechanicsPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizar
     m_elMax->addItem(QStringLiteral("0° … 90°"), 90.0);
     m_elMax->addItem(QStringLiteral("0° … 180° (flip)"), 180.0);
     m_elMax->setCurrentIndex(lim.elMax > 90.0 ? 1 : 0);
-    m_jog = new QPushButton(tr("Jog azimuth %1° clockwise").arg(kJogDegrees), this);
-    m_jog->setObjectName(QStringLiteral("jog"));
-    m_confirmed = new QCheckBox(tr("The antenna turned clockwise (to the right, seen from above)"), this);
-    m_confirmed->setObjectName(QStringLiteral("jogConfirmed"));
-    m_confirmed->setEnabled(false);
+    m_azimuth = makeRow(Axis::Azimuth, "jog", "azDirection", "jogConfirmed");
+    m_elevation = makeRow(Axis::Elevation, "jogElevation", "elDirection", "jogElevationConfirmed");
     m_status = new QLabel(this);
     m_status->setObjectName(QStringLiteral("mechanicsStatus"));
     m_status->setWordWrap(true);
@@ -58,12 +69,58 @@ MechanicsPage::MechanicsPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizar
     form->addRow(tr("Elevation"), m_elMax);
     auto *layout = new QVBoxLayout(makePageBody(this));
     layout->addLayout(form);
-    layout->addWidget(m_jog);
-    layout->addWidget(m_confirmed);
+    layout->addWidget(m_azimuth.box);
+    layout->addWidget(m_elevation.box);
     layout->addWidget(m_status);
+    layout->addStretch(1);
 
-    connect(m_jog, &QPushButton::clicked, this, &MechanicsPage::jog);
-    connect(m_confirmed, &QCheckBox::toggled, this, &MechanicsPage::completeChanged);
+    // A jog stopped by the wizard's STOP (or Esc) no longer says which way.
+    connect(wizard, &SetupWizard::stopRequested, m_azimuth.check, &DirectionCheck::stop);
+    connect(wizard, &SetupWizard::stopRequested, m_elevation.check, &DirectionCheck::stop);
+}
+
+MechanicsPage::AxisRow MechanicsPage::makeRow(Axis axis, const char *jogName, const char *noteName,
+                                              const char *confirmName)
+{
+    const bool azimuth = axis == Axis::Azimuth;
+    AxisRow row;
+    row.check = new DirectionCheck(m_wizard->session(), axis, this);
+    row.box = new QGroupBox(azimuth ? tr("Azimuth direction") : tr("Elevation direction"), this);
+    row.jog = new QPushButton(azimuth ? tr("Jog azimuth %1° clockwise").arg(kJogDegrees)
+                                      : tr("Jog elevation %1° up").arg(kJogDegrees),
+                              row.box);
+    row.jog->setObjectName(QLatin1String(jogName));
+    row.note = new QLabel(row.box);
+    row.note->setObjectName(QLatin1String(noteName));
+    row.note->setWordWrap(true);
+    row.confirmed = new QCheckBox(confirmation(*row.check), row.box);
+    row.confirmed->setObjectName(QLatin1String(confirmName));
+    row.confirmed->setEnabled(false);
+    auto *layout = new QVBoxLayout(row.box);
+    layout->addWidget(row.jog, 0, Qt::AlignLeft);
+    layout->addWidget(row.note);
+    layout->addWidget(row.confirmed);
+    // The row is returned by value: the lambdas look the page's own up.
+    connect(row.jog, &QPushButton::clicked, this, [this, axis] { jog(rowFor(axis)); });
+    connect(row.check, &DirectionCheck::verdictChanged, this, [this, axis] { showVerdict(rowFor(axis)); });
+    connect(row.confirmed, &QCheckBox::toggled, this, &MechanicsPage::completeChanged);
+    return row;
+}
+
+MechanicsPage::AxisRow &MechanicsPage::rowFor(Axis axis)
+{
+    return axis == Axis::Azimuth ? m_azimuth : m_elevation;
+}
+
+void MechanicsPage::initializePage()
+{
+    // The Micro-2g and the Rot1Prog turn azimuth only: nothing to tilt.
+    m_elevation.box->setVisible(checksElevation());
+}
+
+bool MechanicsPage::checksElevation() const
+{
+    return !m_wizard->session()->isAzimuthOnly();
 }
 
 bool MechanicsPage::applyLimits()
@@ -84,36 +141,40 @@ bool MechanicsPage::applyLimits()
     return true;
 }
 
-void MechanicsPage::jog()
+void MechanicsPage::jog(AxisRow &row)
 {
     if (!applyLimits())
         return;
-    session::RotatorSession *s = m_wizard->session();
-    if (!s->hasPosition()) {
-        m_status->setText(tr("No position from the rotator yet."));
+    // A new jog is a new question: the last answer does not carry over.
+    row.confirmed->setChecked(false);
+    if (!row.check->start(kJogDegrees)) {
+        m_status->setText(row.check->error());
         return;
     }
-    const double az = s->azimuth();
-    // Clockwise unless that would run into the stop; then the note says so.
-    const bool clockwise = az + kJogDegrees <= s->moveGate().limits().azMax;
-    const double target = clockwise ? az + kJogDegrees : az - kJogDegrees;
-    if (!s->gotoPosition(target, s->elevation())) {
-        m_status->setText(tr("The jog was refused."));
-        return;
-    }
-    m_confirmed->setText(clockwise ? tr("The antenna turned clockwise (to the right, seen from above)")
-                                   : tr("The antenna turned counter-clockwise (to the left, seen from above)"));
-    m_confirmed->setEnabled(true);
-    m_status->setText(tr("Watch the antenna: it should turn %1° from %2° to %3°. If it went the other way, "
-                         "stop here and swap the motor's direction before going on.")
-                          .arg(kJogDegrees)
-                          .arg(az, 0, 'f', 1)
-                          .arg(target, 0, 'f', 1));
+    m_status->clear();
+}
+
+void MechanicsPage::showVerdict(AxisRow &row)
+{
+    const Verdict v = row.check->verdict();
+    row.note->setText(row.check->describe());
+    row.confirmed->setText(confirmation(*row.check));
+    // What the reading contradicts cannot be confirmed by eye.
+    const bool confirmable = v == Verdict::Watching || v == Verdict::RightWay || v == Verdict::Stopped;
+    if (!confirmable)
+        row.confirmed->setChecked(false);
+    row.confirmed->setEnabled(confirmable);
+    emit completeChanged();
+}
+
+bool MechanicsPage::passed(const AxisRow &row) const
+{
+    return row.confirmed->isChecked() && row.check->verdict() != Verdict::WrongWay;
 }
 
 bool MechanicsPage::isComplete() const
 {
-    return m_confirmed->isChecked();
+    return passed(m_azimuth) && (!checksElevation() || passed(m_elevation));
 }
 
 bool MechanicsPage::validatePage()

@@ -10,7 +10,11 @@
 #include "summarypage.h"
 #include "tuningpage.h"
 
+#include "stopbutton.h"
+
 #include "session/rotatorsession.h"
+
+#include <QKeyEvent>
 
 namespace slew::ui {
 
@@ -19,6 +23,22 @@ SetupWizard::SetupWizard(session::RotatorSession *session, QWidget *parent)
 {
     setWindowTitle(tr("Set up a rotator"));
     setOption(QWizard::NoBackButtonOnStartPage);
+    // The rotator the window talks to is the one set up, unless the operator
+    // probes another link on the Connect page (which asks first).
+    m_usesWindowConnection = windowHasConnection();
+    if (m_usesWindowConnection)
+        m_profile.uri = session->uri();
+    // The STOP sits in the button row, outside the pages: it is there on
+    // every page, however the page scrolls, and never behind anything.
+    m_stop = new StopButton(session, this);
+    m_stop->setObjectName(QStringLiteral("wizardStop"));
+    m_stop->setToolTip(tr("Stop both axes now, and whatever the wizard is running (Esc)"));
+    m_stop->setMinimumWidth(m_stop->sizeHint().width() * 2);
+    connect(m_stop, &StopButton::stopped, this, &SetupWizard::stopRequested);
+    setButton(QWizard::CustomButton1, m_stop);
+    setOption(QWizard::HaveCustomButton1);
+    setButtonLayout({QWizard::CustomButton1, QWizard::Stretch, QWizard::BackButton, QWizard::NextButton,
+                     QWizard::CommitButton, QWizard::FinishButton, QWizard::CancelButton});
     setPage(ConnectPageId, new ConnectPage(this));
     setPage(IdentifyPageId, new IdentifyPage(this));
     setPage(MechanicsPageId, new MechanicsPage(this));
@@ -52,11 +72,32 @@ int SetupWizard::nextId() const
     }
 }
 
+bool SetupWizard::windowHasConnection() const
+{
+    return m_session->state() != session::RotatorSession::State::Disconnected;
+}
+
+void SetupWizard::stopRotator()
+{
+    m_stop->stopAll(); // stopRequested() first, so no run sends a move after the stop
+}
+
+void SetupWizard::keyPressEvent(QKeyEvent *event)
+{
+    if (event->key() == Qt::Key_Escape && event->modifiers() == Qt::NoModifier) {
+        stopRotator();
+        event->accept();
+        return;
+    }
+    QWizard::keyPressEvent(event);
+}
+
 void SetupWizard::reject()
 {
-    emit stopRequested();
     if (m_session->isConnected())
-        m_session->stop();
+        stopRotator();
+    else
+        emit stopRequested(); // nothing to stop on the wire, but the probes end
     QWizard::reject();
 }
 

@@ -4,7 +4,13 @@
 // with Calibration after Identify for a controller that calibrates by its
 // end stops (the Micro-2g program).
 // It works on the operator window's session (no second connection to the
-// rotator) and builds the profile that the summary writes and saves.
+// rotator) and builds the profile that the summary writes and saves. A
+// window that is already connected keeps its connection: the wizard sets
+// that rotator up, and asks before it connects the window anywhere else.
+//
+// The wizard moves the rotator (jogs, homing, tuning steps) while it covers
+// the window, so it carries its own STOP below every page, and Esc presses
+// it. Cancel, the one Cancel, stops the rotator too and closes.
 
 #include "model/rotatorprofile.h"
 
@@ -15,6 +21,8 @@ class RotatorSession;
 }
 
 namespace slew::ui {
+
+class StopButton;
 
 class SetupWizard : public QWizard {
     Q_OBJECT
@@ -37,17 +45,38 @@ public:
     model::RotatorProfile &profile() { return m_profile; }
     const model::RotatorProfile &profile() const { return m_profile; }
 
-    // Esc, Cancel or closing: every long action stops, and so does the rotator.
+    // Whether the wizard goes on with the link the window already had (set
+    // by the Connect page): then Identify reads what that connection knows
+    // instead of opening the link again.
+    bool usesWindowConnection() const { return m_usesWindowConnection; }
+    void setUsesWindowConnection(bool uses) { m_usesWindowConnection = uses; }
+
+    // Whether the session has a link or is bringing one up: the window's
+    // connection, which the wizard must not replace without asking.
+    bool windowHasConnection() const;
+
+    // Cancel or closing: every long action stops, and so does the rotator.
     void reject() override;
     int nextId() const override;
+
+public slots:
+    // The wizard's STOP: every long action ends and the rotator stops.
+    void stopRotator();
 
 signals:
     void profileSaved(const QString &path);
     void stopRequested(); // pages cancel what they run
 
+protected:
+    // Esc is Stop here, as in the window: it stops the rotator and leaves
+    // the wizard open, so a stopped jog does not cost the pages filled in.
+    void keyPressEvent(QKeyEvent *event) override;
+
 private:
     session::RotatorSession *m_session;
     model::RotatorProfile m_profile;
+    StopButton *m_stop;
+    bool m_usesWindowConnection = false;
 };
 
 } // namespace slew::ui

@@ -1,6 +1,7 @@
 #include "summarypage.h"
 
 #include "pagebody.h"
+#include "registernames.h"
 #include "setupwizard.h"
 
 #include "protocol/dialect.h"
@@ -34,6 +35,9 @@ SummaryPage::SummaryPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizard(wi
     m_status = new QLabel(this);
     m_status->setObjectName(QStringLiteral("summaryStatus"));
     m_status->setWordWrap(true);
+    m_finishNote = new QLabel(this);
+    m_finishNote->setObjectName(QStringLiteral("finishNote"));
+    m_finishNote->setWordWrap(true);
     auto *saveRow = new QHBoxLayout;
     saveRow->addWidget(m_path, 1);
     saveRow->addWidget(m_save);
@@ -43,16 +47,59 @@ SummaryPage::SummaryPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizard(wi
     layout->addWidget(m_results, 1);
     layout->addLayout(saveRow);
     layout->addWidget(m_status);
+    layout->addWidget(m_finishNote);
 
     connect(m_write, &QPushButton::clicked, this, &SummaryPage::write);
     connect(m_save, &QPushButton::clicked, this, &SummaryPage::save);
-    connect(&m_readback, &tuning::RegisterReadback::finished, this, [this](bool ok) {
-        m_write->setEnabled(true);
-        for (const auto &check : m_readback.results())
-            m_results->addItem(check.describe());
-        m_status->setText(ok ? tr("Every register holds what was written.")
-                             : tr("Some registers do not hold what was written: see the list."));
-    });
+    connect(&m_readback, &tuning::RegisterReadback::finished, this, &SummaryPage::onWritten);
+}
+
+namespace {
+
+// One register's write and read-back as the operator reads it:
+// "Az park: wrote 180°, reads 180.00° — ok".
+QString describeCheck(const tuning::RegisterCheck &check)
+{
+    const QString name = registerName(check.reg);
+    const QString wrote = registerValue(check.reg, check.written);
+    if (!check.answered)
+        return SummaryPage::tr("%1: wrote %2, no answer when read back").arg(name, wrote);
+    return SummaryPage::tr("%1: wrote %2, reads %3 — %4")
+        .arg(name, wrote, registerValue(check.reg, check.readBack),
+             check.ok ? SummaryPage::tr("ok") : SummaryPage::tr("does not match"));
+}
+
+} // namespace
+
+void SummaryPage::onWritten(bool allOk)
+{
+    m_write->setEnabled(true);
+    QStringList wrong;
+    for (const auto &check : m_readback.results()) {
+        m_results->addItem(describeCheck(check));
+        if (!check.ok)
+            wrong << registerName(check.reg);
+    }
+    m_status->setText(allOk ? tr("Every register holds what was written.")
+                            : tr("Some registers do not hold what was written: see the list."));
+    setVerified(allOk, allOk ? tr("Every register reads back what was written: Finish closes the wizard "
+                                  "(save the profile first to keep it).")
+                             : tr("Finish stays off: %1 did not read back what was written. Write again, or "
+                                  "Cancel.")
+                                   .arg(wrong.join(QStringLiteral(", "))));
+}
+
+void SummaryPage::setVerified(bool verified, const QString &why)
+{
+    m_verified = verified;
+    m_finishNote->setText(why);
+    emit completeChanged();
+}
+
+bool SummaryPage::isComplete() const
+{
+    // A controller without registers has nothing to write or read back.
+    return m_verified || plannedWrites().isEmpty();
 }
 
 QMap<int, QString> SummaryPage::plannedWrites() const
@@ -87,8 +134,10 @@ void SummaryPage::initializePage()
                  .arg(p.limits.elMin)
                  .arg(p.limits.elMax);
     const QMap<int, QString> writes = plannedWrites();
+    if (!writes.isEmpty())
+        lines << tr("To be written to the controller and read back:");
     for (auto it = writes.begin(); it != writes.end(); ++it)
-        lines << QStringLiteral("CW%1,%2").arg(it.key()).arg(it.value());
+        lines << tr("• %1: %2").arg(registerName(it.key()), registerValue(it.key(), it.value()));
     if (writes.isEmpty())
         lines << tr("%1 has no configuration registers: nothing to write; the park position %2°, %3° is kept "
                     "in the profile.")
@@ -98,6 +147,13 @@ void SummaryPage::initializePage()
     m_write->setEnabled(!writes.isEmpty());
     m_write->setToolTip(writes.isEmpty() ? tr("This controller has no registers to write.") : QString());
     m_plan->setText(lines.join(u'\n'));
+    // Whatever was written before the operator went back and changed it is
+    // not what this plan writes.
+    m_results->clear();
+    setVerified(false, writes.isEmpty() ? tr("Nothing to write to this controller: Finish closes the wizard "
+                                             "(save the profile first to keep it).")
+                                        : tr("Finish is off until these settings are written to the controller "
+                                             "and every register reads back what was written."));
     if (m_path->text().isEmpty()) {
         const QString dir = QStandardPaths::writableLocation(QStandardPaths::AppConfigLocation);
         m_path->setText(QDir(dir).filePath(QStringLiteral("rotator.json")));
@@ -107,8 +163,10 @@ void SummaryPage::initializePage()
 void SummaryPage::write()
 {
     m_results->clear();
+    setVerified(false, tr("Finish is off while the registers are written and read back."));
     if (!m_readback.run(plannedWrites())) {
         m_status->setText(m_readback.error());
+        setVerified(false, tr("Finish stays off: nothing was written (%1).").arg(m_readback.error()));
         return;
     }
     m_write->setEnabled(false);

@@ -1,6 +1,8 @@
 #pragma once
-// Step 7: everything that will be written, written (CW) and read back (CR)
-// register by register, and the profile saved for the operator window.
+// Step 7: everything that will be written, by name ("Az I gain", "El
+// park"), written (CW) and read back (CR) register by register, and the
+// profile saved for the operator window. Finish stays off until every
+// register reads back what was written, and a line says so.
 
 #include "tuning/registerreadback.h"
 
@@ -20,11 +22,14 @@ class SummaryPage : public QWizardPage {
 public:
     explicit SummaryPage(SetupWizard *wizard);
     void initializePage() override;
+    bool isComplete() const override;
 
 private:
     QMap<int, QString> plannedWrites() const;
     void write();
+    void onWritten(bool allOk);
     void save();
+    void setVerified(bool verified, const QString &why);
 
     SetupWizard *m_wizard;
     tuning::RegisterReadback m_readback;
@@ -34,6 +39,8 @@ private:
     QLineEdit *m_path;
     QPushButton *m_save;
     QLabel *m_status;
+    QLabel *m_finishNote; // why Finish is off, or that it is on
+    bool m_verified = false; // written, and every register read back as written
 };
 
 } // namespace slew::ui

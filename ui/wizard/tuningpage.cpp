@@ -40,9 +40,6 @@ TuningPage::TuningPage(SetupWizard *wizard)
     m_measureSpeed->setObjectName(QStringLiteral("measureSpeed"));
     m_measureSpeed->setToolTip(tr("Moves the axis %1° and records its speed, acceleration and response delay: "
                                   "what the tracker plans passes with.").arg(tuning::kMotionStepDeg, 0, 'f', 0));
-    m_cancel = new QPushButton(tr("Cancel"), this);
-    m_cancel->setObjectName(QStringLiteral("cancelTuning"));
-    m_cancel->setEnabled(false);
     m_progress = new QProgressBar(this);
     m_status = new QLabel(this);
     m_status->setObjectName(QStringLiteral("tuningStatus"));
@@ -74,7 +71,6 @@ TuningPage::TuningPage(SetupWizard *wizard)
     top->addWidget(m_axis);
     top->addWidget(m_tune);
     top->addWidget(m_measureSpeed);
-    top->addWidget(m_cancel);
     auto *figuresRow = new QHBoxLayout;
     figuresRow->addWidget(m_before);
     figuresRow->addWidget(m_after);
@@ -94,8 +90,6 @@ TuningPage::TuningPage(SetupWizard *wizard)
     // m_accept is enabled exactly while a result waits for a decision.
     connect(wizard->session(), &session::RotatorSession::capabilitiesChanged, this,
             [this] { setDeciding(m_accept->isEnabled()); });
-    connect(m_cancel, &QPushButton::clicked, &m_tuner, &AxisTuner::cancel);
-    connect(m_cancel, &QPushButton::clicked, &m_motionRun, &tuning::MotionRun::cancel);
     connect(m_measureSpeed, &QPushButton::clicked, this, &TuningPage::measureSpeed);
     connect(&m_motionRun.experiment(), &tuning::StepExperiment::sampleRecorded, m_chart,
             [this](const tuning::PositionSample &sample) { m_chart->addSample(false, sample); });
@@ -147,7 +141,16 @@ TuningPage::TuningPage(SetupWizard *wizard)
     connect(&m_tuner, &AxisTuner::failed, this, ended);
     connect(&m_tuner, &AxisTuner::cancelled, this, ended);
     connect(wizard, &SetupWizard::stopRequested, &m_tuner, &AxisTuner::cancel);
-    connect(wizard, &SetupWizard::stopRequested, &m_motionRun, &tuning::MotionRun::cancel);
+    // A speed measurement ends silently when cancelled: the page says so
+    // and offers its buttons again.
+    connect(wizard, &SetupWizard::stopRequested, this, [this] {
+        if (!m_motionRun.isRunning())
+            return;
+        m_motionRun.cancel();
+        m_status->setText(tr("Speed measurement stopped."));
+        setDeciding(false);
+        emit completeChanged();
+    });
 }
 
 void TuningPage::measureSpeed()
@@ -160,7 +163,6 @@ void TuningPage::measureSpeed()
     m_status->setText(tr("Measuring: a %1° move.").arg(tuning::kMotionStepDeg, 0, 'f', 0));
     m_tune->setEnabled(false);
     m_measureSpeed->setEnabled(false);
-    m_cancel->setEnabled(true);
 }
 
 void TuningPage::start()
@@ -173,7 +175,6 @@ void TuningPage::start()
         return;
     }
     m_tune->setEnabled(false);
-    m_cancel->setEnabled(true);
     m_axis->setEnabled(false);
     emit completeChanged();
 }
@@ -215,7 +216,6 @@ void TuningPage::setDeciding(bool deciding)
                                : QString());
     m_measureSpeed->setEnabled(!running && !deciding);
     m_axis->setEnabled(!running && !deciding);
-    m_cancel->setEnabled(running || deciding);
 }
 
 bool TuningPage::isComplete() const

@@ -1,7 +1,7 @@
 #pragma once
 // Step 5: one axis at a time — step, fit, propose, try the gains, and show
 // before and after on one chart with the figures side by side. The operator
-// accepts, retries, or keeps the old gains.
+// accepts, retries, or keeps the old gains. The wizard's STOP ends a run.
 
 #include "tuning/axistuner.h"
 #include "tuning/motionrun.h"
@@ -37,7 +37,6 @@ private:
     QComboBox *m_axis;
     QPushButton *m_tune;
     QPushButton *m_measureSpeed;
-    QPushButton *m_cancel;
     QProgressBar *m_progress;
     QLabel *m_status;
     TuningChart *m_chart;
