@@ -41,16 +41,6 @@ QString dialectNameList()
     return names.join(QStringLiteral(", "));
 }
 
-bool isGs232(Dialect d)
-{
-    return d == Dialect::Gs232A || d == Dialect::Gs232B;
-}
-
-bool isSpid(Dialect d)
-{
-    return d == Dialect::Rot2Prog || d == Dialect::Rot1Prog || d == Dialect::Md01;
-}
-
 bool isAzimuthOnly(Dialect d)
 {
     return d == Dialect::Micro2g || d == Dialect::Rot1Prog;

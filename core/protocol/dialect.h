@@ -32,11 +32,18 @@ enum class Dialect : std::uint8_t {
 const QList<Dialect> &allDialects();
 // "easycomm1, easycomm2, ..., rotctld", for help texts and messages.
 QString dialectNameList();
-bool isGs232(Dialect d);
+// Inline: the parser asks for every byte.
+constexpr bool isGs232(Dialect d)
+{
+    return d == Dialect::Gs232A || d == Dialect::Gs232B;
+}
 // The binary SPID family: fixed frames (spidcodec.h), which the line
 // encoder and the operations table cannot write. encodeToken and
 // encodeLine return nothing for them.
-bool isSpid(Dialect d);
+constexpr bool isSpid(Dialect d)
+{
+    return d == Dialect::Rot2Prog || d == Dialect::Rot1Prog || d == Dialect::Md01;
+}
 // A controller of azimuth rotors only (Micro-2g, Rot1Prog): no elevation to command,
 // and its position reads as elevation 0.
 bool isAzimuthOnly(Dialect d);

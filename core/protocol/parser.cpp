@@ -3,6 +3,9 @@
 
 #include "tokentext.h"
 
+#include <algorithm>
+#include <cstring>
+
 namespace slew::protocol {
 
 using namespace text;
@@ -73,6 +76,21 @@ int Parser::push(char c)
     else
         m_overflow = true;
     return m_readyCount;
+}
+
+qsizetype Parser::appendTokenRun(QByteArrayView bytes)
+{
+    if (m_length == 0 || m_overflow || m_dialect == Dialect::Rotctld || m_dialect == Dialect::Micro2g
+        || isSpid(m_dialect))
+        return 0;
+    const qsizetype room = qsizetype(m_token.size()) - m_length;
+    const qsizetype limit = std::min(bytes.size(), room);
+    qsizetype n = 0;
+    while (n < limit && !isLineEnd(bytes[n]) && !isSpace(bytes[n]))
+        ++n;
+    std::memcpy(m_token.data() + m_length, bytes.data(), size_t(n));
+    m_length += int(n);
+    return n;
 }
 
 void Parser::deliver(const Message &m, bool lineEnd)

@@ -49,8 +49,12 @@ public:
     template <typename Sink>
     void feed(QByteArrayView bytes, Sink &&sink)
     {
-        for (char c : bytes) {
-            const int n = push(c);
+        for (qsizetype at = 0; at < bytes.size();) {
+            // The middle of a token goes in as a run: one call, not one a byte.
+            at += appendTokenRun(bytes.sliced(at));
+            if (at == bytes.size())
+                break;
+            const int n = push(bytes[at++]);
             for (int i = 0; i < n; ++i)
                 sink(static_cast<const Message &>(m_ready[i]));
         }
@@ -94,6 +98,10 @@ private:
     };
 
     int push(char c); // returns how many messages are ready in m_ready
+    // Inside a token of a line dialect: appends the bytes up to the next
+    // separator (or the token's capacity), which push() would take one by
+    // one with nothing to deliver; returns how many it took.
+    qsizetype appendTokenRun(QByteArrayView bytes);
     void finishToken(bool lineEnd);
     void emitPending(bool lineEnd);
     void deliver(const Message &m, bool lineEnd);
