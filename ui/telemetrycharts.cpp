@@ -2,6 +2,7 @@
 #include "telemetrycharts.h"
 
 #include "chartaxisticks.h"
+#include "telemetrycsv.h"
 
 #include <QChart>
 #include <QChartView>
@@ -317,15 +318,8 @@ bool TelemetryCharts::exportCsv(const QString &path, QString *error) const
             *error = tr("cannot write %1: %2").arg(path, file.errorString());
         return false;
     }
-    file.write("time_utc,unix_ms,series,value\n");
-    const auto &history = *m_history;
-    for (int s = 0; s < TelemetryRecorder::SeriesCount; ++s) {
-        const QByteArray name = TelemetryRecorder::seriesLabel(Series(s)).toUtf8();
-        history.forEachSample(s, from, to, [&](qint64 t, double v) {
-            file.write(QDateTime::fromMSecsSinceEpoch(t, Qt::UTC).toString(Qt::ISODateWithMs).toLatin1() + ','
-                       + QByteArray::number(t) + ',' + name + ',' + QByteArray::number(v, 'g', 8) + '\n');
-        });
-    }
+    // A write that fails makes commit() fail: one check covers both.
+    writeTelemetryCsv(file, *m_history, telemetryCsvColumns(), from, to);
     if (!file.commit()) {
         if (error)
             *error = tr("cannot write %1: %2").arg(path, file.errorString());

@@ -38,8 +38,8 @@ public:
     QXYSeries *series(TelemetryRecorder::Series s) const;
     int redrawCount() const { return m_redraws; }
 
-    // Writes every sample of the current window as CSV (one row per sample:
-    // UTC time, ms since the epoch, series, value), atomically.
+    // Writes the current window as CSV (telemetrycsv.h: one row per time,
+    // one column per series), atomically.
     bool exportCsv(const QString &path, QString *error) const;
 
     // An azimuth-only rotator: the elevation lines (and their legend
