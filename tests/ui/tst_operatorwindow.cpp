@@ -9,6 +9,7 @@
 #include "gotopanel.h"
 #include "polarplotwidget.h"
 #include "presetpanel.h"
+#include "statuslaneview.h"
 #include "targetconfirmation.h"
 #include "telemetrycharts.h"
 #include "trafficconsole.h"
@@ -225,7 +226,7 @@ private slots:
         QVERIFY(f.waitFor([&] { return charts->series(TelemetryRecorder::AzActual)->count() > 5; }, 10000));
         QVERIFY(f.waitFor([&] { return charts->series(TelemetryRecorder::AzVelocity)->count() > 0; }, 10000));
         QVERIFY(f.waitFor([&] { return charts->series(TelemetryRecorder::AzCommanded)->count() > 0; }, 10000));
-        QVERIFY(f.waitFor([&] { return charts->series(TelemetryRecorder::AzStatus)->count() > 0; }, 10000));
+        QVERIFY(f.waitFor([&] { return !charts->statusLanes()->stretches(0).empty(); }, 10000)); // GS az
         const double lastAz = charts->series(TelemetryRecorder::AzActual)->points().back().y();
         QVERIFY(lastAz >= 0 && lastAz <= 30.5);
 

@@ -1,19 +1,31 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The telemetry tab as an operator reads it: the status and error
-// registers as named states, and the CSV export a spreadsheet takes as it
-// is, one row per time with the values the controller sent.
-#include "statuslanes.h"
+// The telemetry tab as an operator reads it: every chart's heading whole and
+// every plot on one left edge at the window sizes operators use, with and
+// without the pointing-error chart; the status and error registers as named
+// states; and the CSV export a spreadsheet takes as it is, one row per time
+// with the values the controller sent.
+#include "mainwindow.h"
+#include "statuslaneview.h"
 #include "telemetrycharts.h"
 #include "telemetrycsv.h"
 #include "telemetryrecorder.h"
 #include "windowfixture.h"
 
+#include <QCategoryAxis>
+#include <QChart>
+#include <QChartView>
 #include <QDateTime>
+#include <QDir>
 #include <QFile>
+#include <QLabel>
+#include <QLayout>
+#include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
 
 using slew::model::TelemetryHistory;
+using slew::ui::StatusLaneView;
+using slew::ui::StatusTone;
 using slew::ui::TelemetryCharts;
 using slew::ui::TelemetryCsvColumn;
 using slew::ui::TelemetryRecorder;
@@ -26,6 +38,14 @@ void addRecorderSeries(TelemetryHistory &history)
 {
     for (int s = 0; s < TelemetryRecorder::SeriesCount; ++s)
         history.addSeries(TelemetryRecorder::seriesLabel(Series(s)));
+}
+
+// A chart's plot area in the coordinates of the telemetry tab.
+QRectF plotAreaIn(QWidget *charts, QChartView *view)
+{
+    const QRectF inScene = view->chart()->mapRectToScene(view->chart()->plotArea());
+    const QPointF origin = view->viewport()->mapTo(charts, view->mapFromScene(QPointF(0, 0)));
+    return inScene.translated(origin);
 }
 
 // Splits one CSV line into its fields (RFC 4180 quoting).
@@ -64,6 +84,159 @@ class TestTelemetryCharts : public QObject {
     Q_OBJECT
 private slots:
     void initTestCase() { WindowFixture::prepareApplication(); }
+
+    void headingsAreWholeAndPlotsLineUp_data()
+    {
+        QTest::addColumn<QSize>("size");
+        QTest::addColumn<bool>("pointing");
+        QTest::newRow("1280x720") << QSize(1280, 720) << false;
+        QTest::newRow("1280x720, pointing error") << QSize(1280, 720) << true;
+        QTest::newRow("1440x900") << QSize(1440, 900) << false;
+        QTest::newRow("1440x900, pointing error") << QSize(1440, 900) << true;
+    }
+    void headingsAreWholeAndPlotsLineUp()
+    {
+        QFETCH(QSize, size);
+        QFETCH(bool, pointing);
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
+        // A screen of that size holds the window to it, as a window manager
+        // does, whatever the window would ask for.
+        f.window->layout()->setSizeConstraint(QLayout::SetNoConstraint);
+        f.window->setMinimumSize(0, 0);
+        f.window->resize(size);
+        QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
+        QVERIFY(f.connectAndWait());
+        TelemetryCharts *charts = f.window->telemetryCharts();
+        f.window->tabs()->setCurrentWidget(charts);
+        if (pointing) {
+            auto *recorder = f.window->findChild<TelemetryRecorder *>();
+            QVERIFY(recorder);
+            recorder->recordPointingError(0.25);
+        }
+        const int before = charts->redrawCount();
+        QVERIFY(f.waitFor([&] { return charts->redrawCount() > before + 1; }, 10000));
+        QCOMPARE(f.window->size(), size);
+
+        const QStringList keys = {QStringLiteral("AzEl"), QStringLiteral("Speed"), QStringLiteral("Load"),
+                                  QStringLiteral("Temp"), QStringLiteral("Status"), QStringLiteral("Pointing")};
+        const QStringList titles = {QStringLiteral("Az/El (°)"), QStringLiteral("Speed (°/s)"), QStringLiteral("Load"),
+                                    QStringLiteral("Temperature (°C)"), QStringLiteral("Status"),
+                                    QStringLiteral("Pointing error (°)")};
+        QList<QChartView *> shown;
+        for (qsizetype i = 0; i < keys.size(); ++i) {
+            auto *box = charts->findChild<QWidget *>(QStringLiteral("chart%1").arg(keys[i]));
+            QVERIFY2(box, qPrintable(keys[i]));
+            QCOMPARE(box->isVisible(), keys[i] != QLatin1String("Pointing") || pointing);
+            if (!box->isVisible())
+                continue;
+            // The heading is whole: its full text, at no less than the width
+            // it asks for, and the legend beside it at the height its words
+            // need at its width.
+            auto *title = charts->findChild<QLabel *>(QStringLiteral("chart%1Title").arg(keys[i]));
+            QVERIFY2(title, qPrintable(keys[i]));
+            QCOMPARE(title->text(), titles[i]);
+            QVERIFY2(title->width() >= title->sizeHint().width(),
+                     qPrintable(QStringLiteral("%1: %2 < %3").arg(keys[i]).arg(title->width()).arg(title->sizeHint().width())));
+            auto *legend = charts->findChild<QLabel *>(QStringLiteral("chart%1Legend").arg(keys[i]));
+            QVERIFY2(legend, qPrintable(keys[i]));
+            QVERIFY2(legend->height() >= legend->heightForWidth(legend->width()), qPrintable(keys[i]));
+            shown << charts->findChild<QChartView *>(QStringLiteral("chart%1View").arg(keys[i]));
+            QVERIFY(shown.back());
+        }
+        QCOMPARE(shown.size(), pointing ? 6 : 5);
+
+        // Every plot on one left and one right edge, and tall enough to read.
+        auto describe = [&] {
+            QStringList out;
+            for (QChartView *view : shown) {
+                const QRectF r = plotAreaIn(charts, view);
+                out << QStringLiteral("%1 %2..%3 h %4").arg(view->objectName()).arg(r.left()).arg(r.right()).arg(r.height());
+            }
+            return out.join(QStringLiteral("; "));
+        };
+        auto linedUp = [&] {
+            const QRectF first = plotAreaIn(charts, shown.front());
+            for (QChartView *view : shown) {
+                const QRectF r = plotAreaIn(charts, view);
+                if (std::abs(r.left() - first.left()) > 1.0 || std::abs(r.right() - first.right()) > 1.0)
+                    return false;
+            }
+            return true;
+        };
+        QVERIFY2(f.waitFor(linedUp, 5000), qPrintable(describe()));
+        for (QChartView *view : shown)
+            QVERIFY2(plotAreaIn(charts, view).height() >= 30, qPrintable(describe()));
+        QDir().mkpath(QStringLiteral("screenshots"));
+        QVERIFY(f.window->grab().save(QStringLiteral("screenshots/telemetry-%1x%2%3.png")
+                                          .arg(size.width())
+                                          .arg(size.height())
+                                          .arg(pointing ? QStringLiteral("-pointing") : QString())));
+    }
+
+    void statusRegistersAreNamedStates()
+    {
+        TelemetryHistory history;
+        addRecorderSeries(history);
+        const qint64 now = QDateTime::currentMSecsSinceEpoch();
+        history.append(Series::AzStatus, now - 50'000, 1);  // idle
+        history.append(Series::AzStatus, now - 30'000, 6);  // the position servo at work
+        history.append(Series::ElStatus, now - 50'000, 9);  // idle, error
+        history.append(Series::ErrorFlags, now - 50'000, 1); // SatNOGS' "no error"
+        history.append(Series::ErrorFlags, now - 20'000, 8);
+
+        TelemetryCharts charts(&history);
+        charts.resize(700, 900);
+        charts.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&charts));
+        charts.setPaused(true); // the view stays where this test looks
+        StatusLaneView *lanes = charts.statusLanes();
+        QVERIFY(lanes);
+        QVERIFY(WindowFixture::waitFor([&] { return lanes->chart()->plotArea().height() > 30; }, 5000));
+        QCOMPARE(charts.findChild<QChartView *>(QStringLiteral("chartStatusView")), lanes);
+
+        // The lanes are named where the other charts have numbers.
+        QCOMPARE(lanes->laneAxis()->categoriesLabels(),
+                 (QStringList{QStringLiteral("GE"), QStringLiteral("GS el"), QStringLiteral("GS az")}));
+        // Each stretch holds from one change to the next.
+        QCOMPARE(lanes->stretches(0).size(), size_t(2));
+        QCOMPARE(lanes->stretches(0)[1].bits, 6);
+        QCOMPARE(lanes->stretches(0)[1].fromMs, now - 30'000);
+
+        // What the operator reads, pointing at each lane.
+        const QRectF plot = lanes->chart()->mapRectToScene(lanes->chart()->plotArea());
+        const qint64 from = now - charts.windowMs();
+        auto at = [&](qint64 t, int row) {
+            const double x = plot.left() + plot.width() * double(t - from) / double(charts.windowMs());
+            const double y = plot.top() + plot.height() * (row + 0.5) / 3.0;
+            return lanes->mapFromScene(QPointF(x, y));
+        };
+        const QString azMoving = lanes->describeAt(at(now - 10'000, 0));
+        QVERIFY2(azMoving.startsWith(QStringLiteral("GS az")), qPrintable(azMoving));
+        QVERIFY2(azMoving.contains(QStringLiteral("moving, pointing (0x06)")), qPrintable(azMoving));
+        QVERIFY2(lanes->describeAt(at(now - 40'000, 0)).contains(QStringLiteral("idle (0x01)")),
+                 qPrintable(lanes->describeAt(at(now - 40'000, 0))));
+        QVERIFY2(lanes->describeAt(at(now - 10'000, 1)).contains(QStringLiteral("idle, error (0x09)")),
+                 qPrintable(lanes->describeAt(at(now - 10'000, 1))));
+        QVERIFY2(lanes->describeAt(at(now - 40'000, 2)).contains(QStringLiteral("no error (0x01)")),
+                 qPrintable(lanes->describeAt(at(now - 40'000, 2))));
+        QVERIFY2(lanes->describeAt(at(now - 10'000, 2)).contains(QStringLiteral("motor error (0x08)")),
+                 qPrintable(lanes->describeAt(at(now - 10'000, 2))));
+
+        // Drawn in the colour of the state that matters most: moving for
+        // the servo at work, error wherever the error bit is set.
+        const QImage image = lanes->grab().toImage();
+        auto colourAt = [&](qint64 t, int row) {
+            const QPoint p = at(t, row);
+            return image.pixelColor(p.x(), p.y() + 2).rgb(); // below the middle, clear of the names
+        };
+        QCOMPARE(colourAt(now - 2'000, 0), slew::ui::toneColour(StatusTone::Moving).rgb());
+        QCOMPARE(colourAt(now - 2'000, 1), slew::ui::toneColour(StatusTone::Error).rgb());
+        QCOMPARE(colourAt(now - 2'000, 2), slew::ui::toneColour(StatusTone::Error).rgb());
+
+        // An azimuth-only rotator has no elevation lane.
+        charts.setElevationShown(false);
+        QCOMPARE(lanes->laneAxis()->categoriesLabels(), (QStringList{QStringLiteral("GE"), QStringLiteral("GS az")}));
+    }
 
     void aFlappingRegisterCostsAStretchAPixel()
     {
