@@ -14,24 +14,44 @@ std::vector<StatusStretch> statusStretches(const model::TelemetryHistory &histor
                                            qint64 toMs, int columns)
 {
     columns = std::max(1, columns);
-    const qint64 shortestMs = (toMs - fromMs) / columns;
+    const qint64 shortestMs = std::max<qint64>(1, (toMs - fromMs) / columns);
     std::vector<StatusStretch> out;
-    if (const std::optional<QPointF> before = history.sampleBefore(id, fromMs))
-        out.push_back({fromMs, toMs, int(before->y())});
+    int latest = 0;        // the value in force
+    bool blurred = false;  // out.back() holds changes too close together to draw apart
+    // A blurred stretch is one column wide; the value in force after it
+    // carries on from there until `until`.
+    auto carryOn = [&](qint64 until) {
+        if (!blurred)
+            return;
+        blurred = false;
+        const qint64 columnEnd = out.back().fromMs + shortestMs;
+        if (until <= columnEnd)
+            return;
+        out.back().toMs = columnEnd;
+        out.push_back({columnEnd, until, latest});
+    };
+    if (const std::optional<QPointF> before = history.sampleBefore(id, fromMs)) {
+        latest = int(before->y());
+        out.push_back({fromMs, toMs, latest});
+    }
     for (const QPointF &sample : history.decimated(id, fromMs, toMs, columns)) {
         const qint64 t = qint64(sample.x());
         const int bits = int(sample.y());
-        if (!out.empty()) {
-            if (out.back().bits == bits)
-                continue; // the same value again: the stretch goes on
-            if (t - out.back().fromMs < shortestMs) {
-                out.back().bits |= bits; // too short to draw apart
-                continue;
-            }
-            out.back().toMs = t;
+        if (!out.empty() && bits == latest)
+            continue; // the same value again: the stretch goes on
+        if (!out.empty() && t - out.back().fromMs < shortestMs) {
+            out.back().bits |= bits; // too short to draw apart: one stretch with every bit
+            blurred = true;
+            latest = bits;
+            continue;
         }
+        carryOn(t); // with the value in force until this change
+        latest = bits;
+        if (!out.empty())
+            out.back().toMs = t;
         out.push_back({t, toMs, bits});
     }
+    carryOn(toMs);
     return out;
 }
 

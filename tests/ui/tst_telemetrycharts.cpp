@@ -247,7 +247,7 @@ private slots:
         for (int i = 0; i < 600; ++i)
             history.append(gs, 1000 + i * 100, i == 300 ? 9 : (i % 2 ? 6 : 4));
         const std::vector<slew::ui::StatusStretch> stretches = slew::ui::statusStretches(history, gs, 1000, 61'000, 100);
-        QVERIFY2(stretches.size() <= 101, qPrintable(QString::number(stretches.size())));
+        QVERIFY2(stretches.size() <= 2 * 100 + 1, qPrintable(QString::number(stretches.size())));
         QCOMPARE(stretches.front().fromMs, 1000);
         QCOMPARE(stretches.back().toMs, 61'000);
         for (std::size_t i = 1; i < stretches.size(); ++i)
@@ -256,6 +256,23 @@ private slots:
             return (s.bits & 8) && s.fromMs <= 31'000 && s.toMs >= 31'000;
         });
         QVERIFY(errorShown);
+
+        // A change a moment after another shows both in that column only;
+        // the value in force after it is the later one alone.
+        TelemetryHistory quick;
+        const int az = quick.addSeries(QStringLiteral("gs az"));
+        quick.append(az, 10'000, 1);
+        quick.append(az, 10'050, 6);
+        quick.append(az, 30'000, 4); // arrived
+        const std::vector<slew::ui::StatusStretch> blurred = slew::ui::statusStretches(quick, az, 1000, 61'000, 600);
+        QCOMPARE(blurred.size(), size_t(3));
+        QCOMPARE(blurred[0].bits, 7);
+        QCOMPARE(blurred[0].toMs, 10'100); // one column: 100 ms
+        QCOMPARE(blurred[1].fromMs, 10'100);
+        QCOMPARE(blurred[1].toMs, 30'000);
+        QCOMPARE(blurred[1].bits, 6);
+        QCOMPARE(blurred[2].toMs, 61'000);
+        QCOMPARE(blurred[2].bits, 4);
 
         // Sparse changes come back exactly.
         TelemetryHistory sparse;
