@@ -2,13 +2,18 @@
 #include "telemetrycharts.h"
 
 #include "chartaxisticks.h"
+#include "plotareaaligner.h"
+#include "statuslaneview.h"
+#include "telemetrycsv.h"
 
+#include <QCategoryAxis>
 #include <QChart>
 #include <QChartView>
 #include <QComboBox>
 #include <QDateTime>
 #include <QDateTimeAxis>
 #include <QFileDialog>
+#include <QGraphicsLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineSeries>
@@ -45,25 +50,25 @@ std::optional<qint64> keptWindowMs()
     return ms;
 }
 
-// A status register holds its value until the next change: draw it so.
-QList<QPointF> asSteps(const QList<QPointF> &points, qint64 to)
+// A chart's height holds its plot and its time labels; the heading above
+// is extra. Six of them (and the controls) fit a 720-pixel-high window.
+constexpr int kChartMinimumHeight = 64;
+
+QFont smallFont(QFont font)
 {
-    QList<QPointF> out;
-    out.reserve(points.size() * 2 + 1);
-    for (qsizetype i = 0; i < points.size(); ++i) {
-        if (i > 0)
-            out.append(QPointF(points[i].x(), points[i - 1].y()));
-        out.append(points[i]);
-    }
-    if (!points.isEmpty())
-        out.append(QPointF(double(to), points.back().y()));
-    return out;
+    font.setPointSizeF(font.pointSizeF() * 0.85);
+    return font;
+}
+
+bool isCommanded(Series s)
+{
+    return s == Series::AzCommanded || s == Series::ElCommanded;
 }
 
 } // namespace
 
 TelemetryCharts::TelemetryCharts(const model::TelemetryHistory *history, QWidget *parent)
-    : QWidget(parent), m_history(history)
+    : QWidget(parent), m_history(history), m_aligner(new PlotAreaAligner(this))
 {
     setObjectName(QStringLiteral("telemetryCharts"));
     m_window = new QComboBox;
@@ -96,19 +101,21 @@ TelemetryCharts::TelemetryCharts(const model::TelemetryHistory *history, QWidget
     layout->addLayout(controls);
 
     const QColor az(0x4c, 0xd9, 0x64), el(0x3c, 0xb4, 0xf2), azCmd(0xf2, 0xc0, 0x3c), elCmd(0xc0, 0x7c, 0xf2);
-    addPanel(tr("Az/El"), QStringLiteral("°"),
+    addPanel(QStringLiteral("AzEl"), tr("Az/El"), QStringLiteral("°"),
              {{Series::AzActual, az}, {Series::ElActual, el}, {Series::AzCommanded, azCmd}, {Series::ElCommanded, elCmd}});
-    addPanel(tr("Speed"), QStringLiteral("°/s"), {{Series::AzVelocity, az}, {Series::ElVelocity, el}});
-    addPanel(tr("Load"), QString(), {{Series::AzLoad, az}, {Series::ElLoad, el}});
-    addPanel(tr("Temp"), QStringLiteral("°C"), {{Series::Temperature, QColor(0xf2, 0x9a, 0x3c)}});
-    addPanel(tr("Status"), QString(),
-             {{Series::AzStatus, az}, {Series::ElStatus, el}, {Series::ErrorFlags, QColor(0xe5, 0x48, 0x48)}},
-             Drawn::Steps);
-    addPanel(tr("Pointing"), QStringLiteral("°"), {{Series::PointingError, QColor(0xf2, 0x6b, 0x9a)}}, Drawn::Dots);
-    m_panels.back().hiddenUntilRecorded = true;
-    m_panels.back().view->hide();
-    for (Panel &p : m_panels)
-        layout->addWidget(p.view, 1);
+    addPanel(QStringLiteral("Speed"), tr("Speed"), QStringLiteral("°/s"), {{Series::AzVelocity, az}, {Series::ElVelocity, el}});
+    addPanel(QStringLiteral("Load"), tr("Load"), QString(), {{Series::AzLoad, az}, {Series::ElLoad, el}});
+    addPanel(QStringLiteral("Temp"), tr("Temperature"), QStringLiteral("°C"),
+             {{Series::Temperature, QColor(0xf2, 0x9a, 0x3c)}});
+    addStatusPanel();
+    Panel &pointing = addPanel(QStringLiteral("Pointing"), tr("Pointing error"), QStringLiteral("°"),
+                               {{Series::PointingError, QColor(0xf2, 0x6b, 0x9a)}}, Drawn::Dots);
+    pointing.hiddenUntilRecorded = true;
+    pointing.box->hide();
+    for (Panel &p : m_panels) {
+        layout->addWidget(p.box, 1);
+        m_aligner->add(p.chart, p.view);
+    }
 
     connect(m_window, &QComboBox::currentIndexChanged, this,
             [this] { setWindowMs(m_window->currentData().toLongLong()); });
@@ -128,54 +135,101 @@ void TelemetryCharts::setElevationShown(bool shown)
 {
     for (Panel &panel : m_panels) {
         for (const Plotted &p : panel.plotted) {
-            if (TelemetryRecorder::isElevation(p.id))
+            if (p.line && TelemetryRecorder::isElevation(p.id))
                 p.line->setVisible(shown);
         }
+        updateLegend(panel);
+    }
+    const auto &lanes = m_lanes->lanes();
+    for (int i = 0; i < int(lanes.size()); ++i) {
+        if (TelemetryRecorder::isElevation(Series(lanes[size_t(i)].series)))
+            m_lanes->setLaneShown(i, shown);
     }
 }
 
 void TelemetryCharts::setReportsShown(bool inputs, bool statusRegisters)
 {
     for (Panel &panel : m_panels) {
-        const QString name = panel.view->objectName();
-        if (name == QLatin1String("chartSpeed") || name == QLatin1String("chartLoad") || name == QLatin1String("chartTemp"))
+        if (panel.key == QLatin1String("Speed") || panel.key == QLatin1String("Load") || panel.key == QLatin1String("Temp"))
             panel.offered = inputs;
-        else if (name == QLatin1String("chartStatus"))
+        else if (panel.key == QLatin1String("Status"))
             panel.offered = statusRegisters;
         else
             continue;
-        panel.view->setVisible(panel.offered);
+        panel.box->setVisible(panel.offered);
     }
 }
 
-void TelemetryCharts::addPanel(const QString &title, const QString &unit,
-                               std::initializer_list<std::pair<Series, QColor>> series, Drawn drawn)
+QChart *TelemetryCharts::makeChart(QDateTimeAxis **time) const
+{
+    auto *chart = new QChart;
+    chart->setTheme(QChart::ChartThemeDark);
+    chart->setBackgroundRoundness(0);
+    chart->setMargins(QMargins(2, 2, 2, 2));
+    // The heading above the chart carries the legend; and the frame a
+    // chart's layout keeps by default is height a short chart cannot spare.
+    chart->legend()->hide();
+    chart->layout()->setContentsMargins(0, 0, 0, 0);
+    *time = new QDateTimeAxis;
+    (*time)->setFormat(QStringLiteral("HH:mm:ss"));
+    (*time)->setLabelsFont(smallFont(font()));
+    (*time)->setTickCount(6);
+    chart->addAxis(*time, Qt::AlignBottom);
+    return chart;
+}
+
+TelemetryCharts::Panel TelemetryCharts::makePanel(const QString &key, const QString &title, const QString &unit,
+                                                  QChartView *view)
 {
     Panel p;
-    p.chart = new QChart;
-    p.chart->setTheme(QChart::ChartThemeDark);
-    p.chart->setBackgroundRoundness(0);
-    p.chart->setMargins(QMargins(2, 2, 2, 2));
-    p.chart->legend()->setAlignment(Qt::AlignTop); // every plot area then has the same width, so times line up
-    QFont small = p.chart->legend()->font();
-    small.setPointSizeF(small.pointSizeF() * 0.85);
-    p.chart->legend()->setFont(small);
-    p.time = new QDateTimeAxis;
-    p.time->setFormat(QStringLiteral("HH:mm:ss"));
-    p.time->setLabelsFont(small);
-    p.time->setTickCount(6);
-    p.value = new QValueAxis;
-    p.value->setLabelsFont(small);
-    // Whole-number labels and a title without brackets: both have to fit a
-    // chart only a hundred pixels high.
-    p.value->setLabelFormat(QStringLiteral("%.0f"));
-    p.value->setTitleText(unit.isEmpty() ? title : QStringLiteral("%1 %2").arg(title, unit));
-    QFont titleFont = small;
+    p.key = key;
+    p.view = view;
+    p.chart = view->chart();
+    p.time = qobject_cast<QDateTimeAxis *>(p.chart->axes(Qt::Horizontal).value(0));
+    view->setObjectName(QStringLiteral("chart%1View").arg(key));
+    view->setRenderHint(QPainter::Antialiasing);
+    view->setFrameShape(QFrame::NoFrame);
+    view->setMinimumHeight(kChartMinimumHeight);
+
+    QFont titleFont = smallFont(font());
     titleFont.setBold(true);
-    p.value->setTitleFont(titleFont);
-    p.chart->addAxis(p.time, Qt::AlignBottom);
-    p.chart->addAxis(p.value, Qt::AlignLeft);
+    p.title = new QLabel(unit.isEmpty() ? title : QStringLiteral("%1 (%2)").arg(title, unit));
+    p.title->setObjectName(QStringLiteral("chart%1Title").arg(key));
+    p.title->setFont(titleFont);
+    p.legend = new QLabel;
+    p.legend->setObjectName(QStringLiteral("chart%1Legend").arg(key));
+    p.legend->setFont(smallFont(font()));
+    p.legend->setTextFormat(Qt::RichText);
+    p.legend->setWordWrap(true); // a narrow tab takes a second line, not a cut
+    auto *heading = new QHBoxLayout;
+    heading->setContentsMargins(4, 0, 4, 0);
+    heading->setSpacing(12);
+    heading->addWidget(p.title);
+    heading->addWidget(p.legend, 1);
+
+    p.box = new QWidget;
+    p.box->setObjectName(QStringLiteral("chart%1").arg(key));
+    auto *column = new QVBoxLayout(p.box);
+    column->setContentsMargins(0, 0, 0, 0);
+    column->setSpacing(0);
+    column->addLayout(heading);
+    column->addWidget(view, 1);
+    return p;
+}
+
+TelemetryCharts::Panel &TelemetryCharts::addPanel(const QString &key, const QString &title, const QString &unit,
+                                                  std::initializer_list<std::pair<Series, QColor>> series, Drawn drawn)
+{
+    QDateTimeAxis *time = nullptr;
+    QChart *chart = makeChart(&time);
+    auto *value = new QValueAxis;
+    value->setLabelsFont(smallFont(font()));
+    // Whole-number labels: they have to fit a chart only a hundred pixels high.
+    value->setLabelFormat(QStringLiteral("%.0f"));
+    chart->addAxis(value, Qt::AlignLeft);
     const QMetaEnum names = QMetaEnum::fromType<Series>();
+    Panel p = makePanel(key, title, unit, new QChartView(chart));
+    p.value = value;
     for (const auto &[id, colour] : series) {
         QXYSeries *line = nullptr;
         if (drawn == Drawn::Dots) {
@@ -187,22 +241,68 @@ void TelemetryCharts::addPanel(const QString &title, const QString &unit,
         } else {
             line = new QLineSeries;
             QPen pen(colour, 1.5);
-            if (id == Series::AzCommanded || id == Series::ElCommanded)
+            if (isCommanded(id))
                 pen.setStyle(Qt::DashLine);
             line->setPen(pen);
         }
         line->setObjectName(QStringLiteral("series%1").arg(QLatin1String(names.valueToKey(id))));
         line->setName(TelemetryRecorder::seriesLabel(id));
-        p.chart->addSeries(line);
-        line->attachAxis(p.time);
-        line->attachAxis(p.value);
-        p.plotted.push_back({id, line, drawn == Drawn::Steps});
+        chart->addSeries(line);
+        line->attachAxis(time);
+        line->attachAxis(value);
+        p.plotted.push_back({id, line, colour, drawn});
     }
-    p.view = new QChartView(p.chart);
-    p.view->setObjectName(QStringLiteral("chart%1").arg(QString(title).remove(QLatin1Char('/'))));
-    p.view->setRenderHint(QPainter::Antialiasing);
-    p.view->setMinimumHeight(110);
     m_panels.push_back(p);
+    updateLegend(m_panels.back());
+    return m_panels.back();
+}
+
+void TelemetryCharts::addStatusPanel()
+{
+    QDateTimeAxis *time = nullptr;
+    QChart *chart = makeChart(&time);
+    std::vector<StatusLaneView::Lane> lanes = {
+        {TelemetryRecorder::seriesLabel(Series::AzStatus), StatusRegister::AxisStatus, Series::AzStatus},
+        {TelemetryRecorder::seriesLabel(Series::ElStatus), StatusRegister::AxisStatus, Series::ElStatus},
+        {TelemetryRecorder::seriesLabel(Series::ErrorFlags), StatusRegister::ErrorFlags, Series::ErrorFlags},
+    };
+    m_lanes = new StatusLaneView(chart, std::move(lanes));
+    m_lanes->laneAxis()->setLabelsFont(smallFont(font()));
+    Panel p = makePanel(QStringLiteral("Status"), tr("Status"), QString(), m_lanes);
+    for (const StatusLaneView::Lane &lane : m_lanes->lanes())
+        p.plotted.push_back({Series(lane.series), nullptr, QColor(), Drawn::Lines});
+    const QString explained =
+        tr("The controller's status register (GS) for each axis and its error register (GE), by the names of "
+           "their bits. Point at a stretch for its times and raw value.");
+    p.title->setToolTip(explained);
+    p.legend->setToolTip(explained);
+    m_panels.push_back(p);
+    updateLegend(m_panels.back());
+}
+
+void TelemetryCharts::updateLegend(Panel &panel)
+{
+    // A swatch in each line's colour and style, then its name; &nbsp; keeps
+    // the two together when the line wraps.
+    QStringList entries;
+    auto entry = [&entries](const QColor &colour, const QString &swatch, const QString &name) {
+        entries << QStringLiteral("<span style=\"color:%1\">%2</span>&nbsp;%3")
+                       .arg(colour.name(), swatch, name.toHtmlEscaped().replace(QLatin1Char(' '), QStringLiteral("&nbsp;")));
+    };
+    if (panel.view == m_lanes) {
+        for (StatusTone tone : {StatusTone::Idle, StatusTone::Moving, StatusTone::Pointing, StatusTone::Error})
+            entry(toneColour(tone), QStringLiteral("■"), toneName(tone));
+    } else {
+        for (const Plotted &p : panel.plotted) {
+            if (!p.line->isVisible())
+                continue;
+            const QString swatch = p.drawn == Drawn::Dots ? QStringLiteral("●")
+                : isCommanded(p.id)                      ? QStringLiteral("╍")
+                                                         : QStringLiteral("━");
+            entry(p.colour, swatch, p.line->name());
+        }
+    }
+    panel.legend->setText(entries.join(QStringLiteral(" &nbsp; ")));
 }
 
 QXYSeries *TelemetryCharts::series(Series s) const
@@ -253,14 +353,17 @@ void TelemetryCharts::redraw()
     for (Panel &p : m_panels) {
         if (!p.offered)
             continue;
-        if (p.hiddenUntilRecorded && p.view->isHidden()) {
+        if (p.hiddenUntilRecorded && p.box->isHidden()) {
             const bool recorded = std::any_of(p.plotted.begin(), p.plotted.end(),
                                               [this](const Plotted &pl) { return m_history->sampleCount(pl.id) > 0; });
             if (!recorded)
                 continue;
-            p.view->show();
+            p.box->show();
         }
-        redrawPanel(p, from, to);
+        if (p.view == m_lanes)
+            redrawLanes(p, from, to);
+        else
+            redrawPanel(p, from, to);
     }
     ++m_redraws;
 }
@@ -274,16 +377,6 @@ void TelemetryCharts::redrawPanel(Panel &panel, qint64 from, qint64 to)
     lines.reserve(panel.plotted.size());
     for (Plotted &pl : panel.plotted) {
         QList<QPointF> points = history.decimated(pl.id, from, to, columns);
-        if (pl.step) {
-            // The value in force when the window opens is the last one before it.
-            if (points.isEmpty() || points.front().x() > from) {
-                std::optional<QPointF> before;
-                history.forEachSample(pl.id, from - kMaxWindow, from, [&](qint64 t, double v) { before = QPointF(t, v); });
-                if (before)
-                    points.prepend(QPointF(double(from), before->y()));
-            }
-            points = asSteps(points, to);
-        }
         for (const QPointF &pt : points) {
             lo = std::min(lo, pt.y());
             hi = std::max(hi, pt.y());
@@ -307,6 +400,16 @@ void TelemetryCharts::redrawPanel(Panel &panel, qint64 from, qint64 to)
         panel.plotted[i].line->replace(lines[i]);
 }
 
+void TelemetryCharts::redrawLanes(Panel &panel, qint64 from, qint64 to)
+{
+    const int columns = std::max(100, int(panel.chart->plotArea().width()));
+    std::vector<std::vector<StatusStretch>> stretches;
+    for (const StatusLaneView::Lane &lane : m_lanes->lanes())
+        stretches.push_back(statusStretches(*m_history, lane.series, from, to, columns));
+    panel.time->setRange(QDateTime::fromMSecsSinceEpoch(from), QDateTime::fromMSecsSinceEpoch(to));
+    m_lanes->setStretches(from, to, std::move(stretches));
+}
+
 bool TelemetryCharts::exportCsv(const QString &path, QString *error) const
 {
     const qint64 to = m_paused ? m_frozenAt : QDateTime::currentMSecsSinceEpoch();
@@ -317,15 +420,8 @@ bool TelemetryCharts::exportCsv(const QString &path, QString *error) const
             *error = tr("cannot write %1: %2").arg(path, file.errorString());
         return false;
     }
-    file.write("time_utc,unix_ms,series,value\n");
-    const auto &history = *m_history;
-    for (int s = 0; s < TelemetryRecorder::SeriesCount; ++s) {
-        const QByteArray name = TelemetryRecorder::seriesLabel(Series(s)).toUtf8();
-        history.forEachSample(s, from, to, [&](qint64 t, double v) {
-            file.write(QDateTime::fromMSecsSinceEpoch(t, Qt::UTC).toString(Qt::ISODateWithMs).toLatin1() + ','
-                       + QByteArray::number(t) + ',' + name + ',' + QByteArray::number(v, 'g', 8) + '\n');
-        });
-    }
+    // A write that fails makes commit() fail: one check covers both.
+    writeTelemetryCsv(file, *m_history, telemetryCsvColumns(), from, to);
     if (!file.commit()) {
         if (error)
             *error = tr("cannot write %1: %2").arg(path, file.errorString());

@@ -173,6 +173,17 @@ std::optional<QPointF> TelemetryHistory::lastSample(int id) const
     return QPointF(double(*m_baseMs + s.times[i]), double(s.values[i]));
 }
 
+std::optional<QPointF> TelemetryHistory::sampleBefore(int id, qint64 ms) const
+{
+    if (sampleCount(id) == 0)
+        return std::nullopt;
+    const Series &s = m_series[size_t(id)];
+    const qint64 at = lowerBound(s, relative(ms)) - 1;
+    if (at < s.oldest())
+        return std::nullopt;
+    return QPointF(double(*m_baseMs + s.times[slot(at)]), double(s.values[slot(at)]));
+}
+
 std::optional<qint64> TelemetryHistory::firstTimeMs() const
 {
     std::optional<qint64> first;
@@ -298,6 +309,43 @@ void TelemetryHistory::forEachSample(int id, qint64 fromMs, qint64 toMs,
     const qint64 hi = upperBound(s, relative(toMs));
     for (qint64 i = lowerBound(s, relative(fromMs)); i < hi; ++i)
         visit(*m_baseMs + s.times[slot(i)], double(s.values[slot(i)]));
+}
+
+void TelemetryHistory::forEachRow(const std::vector<int> &ids, qint64 fromMs, qint64 toMs,
+                                  const std::function<void(qint64, const std::vector<double> &)> &visit) const
+{
+    if (toMs < fromMs || !m_baseMs)
+        return;
+    // One cursor per series over its samples in the window; each row takes
+    // the earliest time any cursor stands at, and moves those cursors on.
+    struct Cursor {
+        const Series *series = nullptr;
+        qint64 at = 0, end = 0;
+    };
+    std::vector<Cursor> cursors(ids.size());
+    for (std::size_t c = 0; c < ids.size(); ++c) {
+        if (sampleCount(ids[c]) == 0)
+            continue;
+        const Series &s = m_series[size_t(ids[c])];
+        cursors[c] = {&s, lowerBound(s, relative(fromMs)), upperBound(s, relative(toMs))};
+    }
+    std::vector<double> values(ids.size());
+    for (;;) {
+        std::optional<qint32> time;
+        for (const Cursor &c : cursors) {
+            if (c.at < c.end)
+                time = std::min(time.value_or(c.series->times[slot(c.at)]), c.series->times[slot(c.at)]);
+        }
+        if (!time)
+            return;
+        for (std::size_t c = 0; c < cursors.size(); ++c) {
+            Cursor &cur = cursors[c];
+            values[c] = std::numeric_limits<double>::quiet_NaN();
+            for (; cur.at < cur.end && cur.series->times[slot(cur.at)] == *time; ++cur.at)
+                values[c] = double(cur.series->values[slot(cur.at)]);
+        }
+        visit(*m_baseMs + *time, values);
+    }
 }
 
 std::size_t TelemetryHistory::memoryBytes() const

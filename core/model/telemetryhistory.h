@@ -42,6 +42,9 @@ public:
 
     qsizetype sampleCount(int id) const;
     std::optional<QPointF> lastSample(int id) const; // x: ms since the epoch
+    // The newest sample earlier than ms: what a register recorded only on
+    // change held when a window opened there.
+    std::optional<QPointF> sampleBefore(int id, qint64 ms) const;
     std::optional<qint64> firstTimeMs() const;      // oldest sample of any series
 
     // The samples in [fromMs, toMs] for a plot `columns` pixels wide: per
@@ -52,6 +55,14 @@ public:
 
     // Every retained sample in [fromMs, toMs], oldest first.
     void forEachSample(int id, qint64 fromMs, qint64 toMs, const std::function<void(qint64, double)> &visit) const;
+
+    // The series side by side, as a table has them: one call per time at
+    // which any of `ids` has a sample in [fromMs, toMs], oldest first, with
+    // each series' value at that time in `ids` order (NaN where it has none
+    // then). Where one series holds two samples at one time (a clock that
+    // stepped back), the later one is the value.
+    void forEachRow(const std::vector<int> &ids, qint64 fromMs, qint64 toMs,
+                    const std::function<void(qint64, const std::vector<double> &)> &visit) const;
 
     // Bytes held by the samples and summaries (the ring buffers' capacity).
     std::size_t memoryBytes() const;

@@ -9,6 +9,7 @@
 #include "gotopanel.h"
 #include "polarplotwidget.h"
 #include "presetpanel.h"
+#include "statuslaneview.h"
 #include "targetconfirmation.h"
 #include "telemetrycharts.h"
 #include "trafficconsole.h"
@@ -225,7 +226,7 @@ private slots:
         QVERIFY(f.waitFor([&] { return charts->series(TelemetryRecorder::AzActual)->count() > 5; }, 10000));
         QVERIFY(f.waitFor([&] { return charts->series(TelemetryRecorder::AzVelocity)->count() > 0; }, 10000));
         QVERIFY(f.waitFor([&] { return charts->series(TelemetryRecorder::AzCommanded)->count() > 0; }, 10000));
-        QVERIFY(f.waitFor([&] { return charts->series(TelemetryRecorder::AzStatus)->count() > 0; }, 10000));
+        QVERIFY(f.waitFor([&] { return !charts->statusLanes()->stretches(0).empty(); }, 10000)); // GS az
         const double lastAz = charts->series(TelemetryRecorder::AzActual)->points().back().y();
         QVERIFY(lastAz >= 0 && lastAz <= 30.5);
 
@@ -243,7 +244,7 @@ private slots:
         QFile file(csv);
         QVERIFY(file.open(QIODevice::ReadOnly));
         const QList<QByteArray> lines = file.readAll().split('\n');
-        QCOMPARE(lines.front(), QByteArray("time_utc,unix_ms,series,value"));
+        QVERIFY2(lines.front().startsWith("time_utc,unix_ms,Az (deg),El (deg),"), lines.front().constData());
         QVERIFY(lines.size() > 10);
     }
 

@@ -165,6 +165,46 @@ private slots:
         QCOMPARE(h.lastSample(id), std::optional<QPointF>(QPointF(6000, 3)));
     }
 
+    void rowsHoldEverySeriesAtEachTime()
+    {
+        TelemetryHistory h(100);
+        const int az = h.addSeries("az"), el = h.addSeries("el"), gs = h.addSeries("gs");
+        h.append(az, 1000, 16.04);
+        h.append(el, 1000, 45.1);
+        h.append(gs, 1500, 6);
+        h.append(az, 2000, 17);
+        h.append(az, 2000, 18); // a clock that stepped back: two samples at one time
+        h.append(el, 3000, 46);
+        QList<qint64> times;
+        QList<QList<double>> rows;
+        h.forEachRow({az, el, gs}, 1000, 2500, [&](qint64 t, const std::vector<double> &values) {
+            times << t;
+            rows << QList<double>(values.begin(), values.end());
+        });
+        QCOMPARE(times, (QList<qint64>{1000, 1500, 2000})); // 3000 lies outside
+        QCOMPARE(rows[0][0], double(float(16.04)));
+        QCOMPARE(rows[0][1], double(float(45.1)));
+        QVERIFY(std::isnan(rows[0][2]));
+        QVERIFY(std::isnan(rows[1][0]) && std::isnan(rows[1][1]));
+        QCOMPARE(rows[1][2], 6.0);
+        QCOMPARE(rows[2][0], 18.0); // the later of the two
+        int none = 0;
+        h.forEachRow({el}, 1001, 2999, [&](qint64, const std::vector<double> &) { ++none; });
+        QCOMPARE(none, 0);
+    }
+
+    void theSampleBeforeAWindow()
+    {
+        TelemetryHistory h(100);
+        const int gs = h.addSeries("gs");
+        QVERIFY(!h.sampleBefore(gs, 5000));
+        h.append(gs, 1000, 1);
+        h.append(gs, 4000, 6);
+        QCOMPARE(h.sampleBefore(gs, 4000), std::optional<QPointF>(QPointF(1000, 1)));
+        QCOMPARE(h.sampleBefore(gs, 4001), std::optional<QPointF>(QPointF(4000, 6)));
+        QVERIFY(!h.sampleBefore(gs, 1000));
+    }
+
     void seriesAreIndependentAndNamed()
     {
         TelemetryHistory h(100);

@@ -106,8 +106,10 @@ int main(int argc, char *argv[])
             std::abort();
     });
     qsizetype plotted = 0;
-    for (int s = 0; s < TelemetryRecorder::SeriesCount; ++s)
-        plotted += charts.series(TelemetryRecorder::Series(s))->count();
+    for (int s = 0; s < TelemetryRecorder::SeriesCount; ++s) {
+        if (const QXYSeries *line = charts.series(TelemetryRecorder::Series(s)))
+            plotted += line->count(); // the status registers are lanes, not lines
+    }
 
     std::printf("telemetry history: %d series x %d samples (24 h at 10 Hz) = %lld samples\n",
                 int(TelemetryRecorder::SeriesCount), kSamples, (long long)(kSamples) * TelemetryRecorder::SeriesCount);
