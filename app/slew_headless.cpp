@@ -5,6 +5,7 @@
 
 #include "slew_identity.h"
 #include "cli/configfile.h"
+#include "cli/sharedoptions.h"
 #include "cli/slewcommandline.h"
 #include "transport/hostport.h"
 #include "slew_headless.h"
@@ -35,14 +36,12 @@ int fail(const QString &message)
     return 2;
 }
 
-// Text from an option or a config file, safe for the terminal and the
-// journal.
+using slew::cli::OptionLabel;
+
 QString shown(const QString &text)
 {
-    return slew::input::loggableText(text, 80);
+    return slew::cli::shownValue(text);
 }
-
-using OptionLabel = std::function<QString(const QString &)>;
 
 // --track and what goes with it: the target (a satellite from --tle, the
 // sun, the moon, azel:AZ,EL or radec:RA,DEC), --min-el, --clock-start,
@@ -89,8 +88,7 @@ std::optional<slew::bridge::HeadlessConfig::Track> readTrack(const QCommandLineP
         }
         track.target.elements = *tle;
     }
-    const QString minEl = QStringLiteral("min-el"), clockStart = QStringLiteral("clock-start"),
-                  clockRate = QStringLiteral("clock-rate");
+    const QString minEl = QStringLiteral("min-el");
     QString why;
     if (parser.isSet(minEl)) {
         const auto value = slew::input::numberIn(parser.value(minEl), {-5, 90, "°"}, &why);
@@ -100,23 +98,11 @@ std::optional<slew::bridge::HeadlessConfig::Track> readTrack(const QCommandLineP
         }
         track.minElevationDeg = *value;
     }
-    if (parser.isSet(clockStart)) {
-        track.clockStartJulian = slew::sky::julianFromIso(parser.value(clockStart));
-        if (!track.clockStartJulian) {
-            *error = QStringLiteral("%1 %2: expected an ISO 8601 time, as 2024-06-20T12:00:00Z")
-                         .arg(label(clockStart), shown(parser.value(clockStart)));
-            return std::nullopt;
-        }
-    }
-    if (parser.isSet(clockRate)) {
-        const auto value = slew::input::numberIn(parser.value(clockRate), {1, 20, ""}, &why);
-        if (!value || !track.clockStartJulian) {
-            *error = QStringLiteral("%1: %2").arg(label(clockRate),
-                                                  value ? QStringLiteral("needs --clock-start") : why + QStringLiteral(" (1 to 20)"));
-            return std::nullopt;
-        }
-        track.clockRate = *value;
-    }
+    const auto clock = slew::cli::readStationClockOptions(parser, label, error);
+    if (!clock)
+        return std::nullopt;
+    track.clockStartJulian = clock->startJulian;
+    track.clockRate = clock->rate;
     return track;
 }
 
@@ -162,12 +148,8 @@ int runHeadless(int argc, char *argv[])
                   allow = QStringLiteral("rotctld-allow"), maxClients = QStringLiteral("rotctld-max-clients");
 
     slew::bridge::HeadlessConfig config;
-    if (parser.isSet(profile)) {
-        auto loaded = slew::model::RotatorProfile::load(parser.value(profile), &error);
-        if (!loaded)
-            return fail(QStringLiteral("%1: %2").arg(label(profile), error));
-        config.profile = *loaded;
-    }
+    if (!slew::cli::readProfileOptions(parser, label, &config.profile, &error))
+        return fail(error);
     if (parser.isSet(connect))
         config.profile.uri = parser.value(connect);
     if (parser.isSet(dialect)) {
@@ -210,14 +192,6 @@ int runHeadless(int argc, char *argv[])
         if (!rotors)
             return fail(QStringLiteral("%1 %2: %3").arg(label(QStringLiteral("rotors")), shown(list), error));
         config.rotors = *rotors;
-    }
-
-    if (parser.isSet(QStringLiteral("limits"))) {
-        const QString text = parser.value(QStringLiteral("limits"));
-        const auto limits = slew::bridge::parseLimits(text, &error);
-        if (!limits)
-            return fail(QStringLiteral("%1 %2: %3").arg(label(QStringLiteral("limits")), shown(text), error));
-        config.profile.limits = *limits;
     }
 
     if (parser.isSet(QStringLiteral("qth"))) {

@@ -3,6 +3,7 @@
 // else lives in slewui and slewcore. The options are described in cli/.
 
 #include "slew_identity.h"
+#include "cli/sharedoptions.h"
 #include "cli/slewcommandline.h"
 #include "mainwindow.h"
 #include "operatortheme.h"
@@ -11,6 +12,7 @@
 #include "slew_sky.h"
 #include "slew_tune.h"
 #include "rotctldpanel.h"
+#include "timecontroller.h"
 #include "transport/hostport.h"
 #include "windowsnapshot.h"
 
@@ -41,6 +43,11 @@ struct Arguments {
     std::optional<std::pair<QHostAddress, quint16>> rotctldListen;
     std::optional<int> rotctldMaxClients;
     QString station; // --qth, checked: kept as Sky → Station… keeps it
+    // --profile, --limits over it (or over the defaults): the session's
+    // profile before it connects.
+    std::optional<slew::model::RotatorProfile> profile;
+    bool profileFile = false; // --profile: its link and dialect too, unless named
+    slew::cli::StationClockOptions clock; // --clock-start, --clock-rate: a rehearsal
 };
 
 // Returns an error message, or empty when the arguments are usable.
@@ -90,6 +97,19 @@ QString parse(QCommandLineParser &parser, const QStringList &argv, Arguments &ou
             return QStringLiteral("--qth: %1").arg(error);
         out.station = parser.value(QStringLiteral("qth")).trimmed();
     }
+    // As the station service reads them, in the same words.
+    QString error;
+    if (parser.isSet(QStringLiteral("profile")) || parser.isSet(QStringLiteral("limits"))) {
+        slew::model::RotatorProfile profile;
+        if (!slew::cli::readProfileOptions(parser, slew::cli::commandLineLabel, &profile, &error))
+            return error;
+        out.profile = profile;
+        out.profileFile = parser.isSet(QStringLiteral("profile"));
+    }
+    const auto clock = slew::cli::readStationClockOptions(parser, slew::cli::commandLineLabel, &error);
+    if (!clock)
+        return error;
+    out.clock = *clock;
     out.screenshot = parser.value(screenshot);
     if (parser.isSet(settle)) {
         bool ok = false;
@@ -149,12 +169,24 @@ int main(int argc, char *argv[])
 
     slew::session::RotatorSession session;
     slew::ui::MainWindow window(&session);
+    if (args.clock.startJulian)
+        window.timeController()->rehearse(*args.clock.startJulian, args.clock.rate);
     window.show();
     if (!settingsProblem.isEmpty())
         window.reportProblem(settingsProblem);
 
     QString uri = args.connectUri;
     auto dialect = args.dialect;
+    if (args.profile)
+        session.setProfile(*args.profile);
+    if (args.profileFile) {
+        // The profile's link and dialect unless named on the command line,
+        // as the station service takes them.
+        if (uri.isEmpty())
+            uri = args.profile->uri;
+        if (!dialect)
+            dialect = args.profile->dialect;
+    }
     if (uri.isEmpty()) {
         uri = slew::ui::ConnectionBar::rememberedUri();
         if (!dialect)

@@ -25,6 +25,8 @@
 #include "telemetrycharts.h"
 #include "telemetryrecorder.h"
 #include "textfieldfocus.h"
+#include "rehearsalmarker.h"
+#include "timecontroller.h"
 #include "trafficconsole.h"
 #include "trackingpanel.h"
 #include "wizard/setupwizard.h"
@@ -211,6 +213,10 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
         const QString peer = m_rotctld->remoteSteering();
         return peer.isEmpty() ? peer : tr("Remote tracker %1").arg(peer);
     });
+    // The station clock; made after the central widget, so it outlives the tracker that reads it.
+    m_time = new TimeController(session, this);
+    m_tracking->setClock(m_time->clock());
+    new RehearsalMarker(m_time->clock(), this);
     connect(m_tracking, &TrackingPanel::passOverlayChanged, m_plot, &PolarPlotWidget::setPassOverlay);
     connect(m_tracking, &TrackingPanel::passTargetMoved, m_plot, &PolarPlotWidget::setPassTarget);
     // What the tracker measures while it tracks is charted with the rest.
@@ -303,6 +309,9 @@ void MainWindow::buildMenus()
     QAction *sets = sky->addAction(tr("&Element sets…"));
     sets->setObjectName(QStringLiteral("actionElementSets"));
     connect(sets, &QAction::triggered, this, &MainWindow::openElementSets);
+    QAction *time = sky->addAction(tr("&Time controller…"));
+    time->setObjectName(QStringLiteral("actionTimeController"));
+    connect(time, &QAction::triggered, m_time, &TimeController::showController);
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     QAction *keys = help->addAction(tr("&Keyboard"));

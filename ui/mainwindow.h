@@ -37,6 +37,7 @@ class StopButton;
 class TargetConfirmation;
 class TelemetryCharts;
 class TelemetryRecorder;
+class TimeController;
 class TrafficConsole;
 class TrackingPanel;
 
@@ -79,6 +80,8 @@ public:
     RotorsPanel *rotorsPanel() const { return m_rotorsPanel; }
     TrackingPanel *trackingPanel() const { return m_tracking; }
     AlignmentPanel *alignmentPanel() const { return m_alignment; }
+    // Sky → Time controller…: the station clock, and rehearsals.
+    TimeController *timeController() const { return m_time; }
     // The element sets Slew knows, loaded from the cache at start.
     sky::TleSources *elementSets() const { return m_elementSets; }
 
@@ -133,6 +136,7 @@ private:
     RotorsPanel *m_rotorsPanel;
     TrackingPanel *m_tracking;
     AlignmentPanel *m_alignment;
+    TimeController *m_time;
     sky::TleSources *m_elementSets;
 };
 

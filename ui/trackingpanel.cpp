@@ -137,6 +137,10 @@ void TrackingPanel::setStation(const std::optional<sky::Station> &station)
 void TrackingPanel::setClock(const tracking::StationClock *clock)
 {
     m_clock = clock ? clock : &m_systemClock;
+    // A clock started again or sent back to real time: the day's passes are
+    // another day's. (A running tracker plans again by itself: PassRunner.)
+    disconnect(m_clockChanged);
+    m_clockChanged = connect(m_clock, &tracking::StationClock::changed, this, &TrackingPanel::showPasses);
     showPasses();
 }
 

@@ -53,7 +53,8 @@ public:
         m_runner->setOtherSteering(std::move(who));
     }
     // The clock passes are predicted and tracked by; the system's UTC unless
-    // set (a rehearsal). It must outlive the panel.
+    // set (a rehearsal). It must outlive the panel. When it changes the
+    // passes are planned again, and a running tracker plans again too.
     void setClock(const tracking::StationClock *clock);
 
     // Selects the target whose name starts with `name` ("sun", "moon" too).
@@ -95,6 +96,7 @@ private:
     std::optional<sky::Station> m_station;
     tracking::StationClock m_systemClock;
     const tracking::StationClock *m_clock = &m_systemClock;
+    QMetaObject::Connection m_clockChanged;
     std::unique_ptr<tracking::PassRunner> m_runner;
     std::function<QString()> m_otherSteering;
     std::optional<tracking::TargetSky> m_sky; // the chosen target's, while there is a station

@@ -9,6 +9,7 @@
 #include "input/boundedfile.h"
 #include "sky/boundeddownload.h"
 #include "sky/tlesources.h"
+#include "tracking/stationclock.h"
 
 #include <QCommandLineParser>
 
@@ -46,6 +47,31 @@ ProgramOption rotctldListenOption()
             true};
 }
 
+ProgramOption limitsOption()
+{
+    return {{QStringLiteral("limits")},
+            QStringLiteral("travel"),
+            QStringLiteral("The rotator's travel for this run, AZMIN:AZMAX,ELMIN:ELMAX: 0:450,0:180 for an overlap and "
+                           "flip rotator, -180:180,0:90 for a south stop. It replaces the profile's, and every move is "
+                           "checked against it."),
+            true};
+}
+
+ProgramOption clockStartOption(const QString &description)
+{
+    return {{QStringLiteral("clock-start")}, QStringLiteral("time"), description};
+}
+
+// `keepingPace` says how the rotator keeps up with a faster clock.
+ProgramOption clockRateOption(const QString &keepingPace)
+{
+    return {{QStringLiteral("clock-rate")},
+            QStringLiteral("n"),
+            QStringLiteral("With --clock-start: run the station clock n times faster, 1 to %1 (default 1). %2")
+                .arg(tracking::StationClock::kMaxRate)
+                .arg(keepingPace)};
+}
+
 ProgramOption stationOption(const QString &description, bool inConfigFile = false)
 {
     return {{QStringLiteral("qth")}, QStringLiteral("station"), description, inConfigFile};
@@ -65,8 +91,9 @@ ProgramMode makeWindowMode()
 {
     ProgramMode mode;
     mode.title = QStringLiteral("The operator window");
-    mode.synopsis = QStringLiteral("slew [--connect URI] [--dialect NAME] [--rotctld-listen ADDRESS:PORT] "
-                                   "[--goto AZ,EL] [--screenshot FILE.png [--settle-ms MS]]");
+    mode.synopsis = QStringLiteral("slew [--connect URI] [--dialect NAME] [--profile FILE] "
+                                   "[--limits AZMIN:AZMAX,ELMIN:ELMAX] [--rotctld-listen ADDRESS:PORT] [--goto AZ,EL] "
+                                   "[--clock-start ISO8601 [--clock-rate N]] [--screenshot FILE.png [--settle-ms MS]]");
     mode.description = QStringLiteral(
         "Opens the operator window: the polar plot, the jog pad, go-to, Stop, Park and Home, the controller's "
         "configuration, live telemetry charts, the traffic log, the rotctld server and the setup and tuning "
@@ -78,9 +105,17 @@ ProgramMode makeWindowMode()
         connectOption(QStringLiteral("Connect to URI at start: serial:/dev/ttyUSB0?baud=19200, tcp://HOST:PORT, "
                                      "rotctld://HOST:PORT or sim:?az_max=450.")),
         dialectOption(),
+        profileOption(),
+        limitsOption(),
         rotctldListenOption(),
         rotctldMaxClientsOption(),
         {{QStringLiteral("goto")}, QStringLiteral("az,el"), QStringLiteral("Once connected, move to this position.")},
+        clockStartOption(QStringLiteral(
+            "Start in rehearsal: the station clock starts at this UTC instant (ISO 8601) and runs; the passes, the "
+            "plot and tracking follow it, and an orange line says so. Sky, Time controller changes it or goes back "
+            "to real time.")),
+        clockRateOption(QStringLiteral("The built-in simulator (sim:) runs as many times faster, from where it is, "
+                                       "so the antenna keeps up with the plan.")),
         stationOption(QStringLiteral("Set the station (as Sky, Station does, and kept): LAT,LON or LAT,LON,HEIGHT_M, "
                                      "or a Maidenhead locator of 4, 6 or 8 characters (JO65hq).")),
         {{QStringLiteral("screenshot")},
@@ -122,12 +157,7 @@ ProgramMode makeHeadlessMode()
          QStringLiteral("Comma-separated client addresses the rotctld server accepts (default: any)."),
          true},
         rotctldMaxClientsOption(),
-        {{QStringLiteral("limits")},
-         QStringLiteral("travel"),
-         QStringLiteral("The rotator's travel for this run, AZMIN:AZMAX,ELMIN:ELMAX: 0:450,0:180 for an overlap and "
-                        "flip rotator, -180:180,0:90 for a south stop. It replaces the profile's, and every move is "
-                        "checked against it."),
-         true},
+        limitsOption(),
         {{QStringLiteral("track")},
          QStringLiteral("target"),
          QStringLiteral("Track every pass of a satellite (a catalogue number or the start of a name in --tle), the sun "
@@ -146,14 +176,10 @@ ProgramMode makeHeadlessMode()
          QStringLiteral("degrees"),
          QStringLiteral("With --track: passes must climb above this, -5 to 90 (default 0)."),
          true},
-        {{QStringLiteral("clock-start")},
-         QStringLiteral("time"),
-         QStringLiteral("With --track: start the station clock at this UTC instant (ISO 8601) and let it run, to "
-                        "rehearse a pass on the simulator or on the rotator.")},
-        {{QStringLiteral("clock-rate")},
-         QStringLiteral("n"),
-         QStringLiteral("With --clock-start: run the station clock n times faster, 1 to 20 (default 1), to keep pace "
-                        "with a simulator at the same time scale (sim:?time_scale=n, slew-sim --time-scale n).")},
+        clockStartOption(QStringLiteral("With --track: start the station clock at this UTC instant (ISO 8601) and "
+                                        "let it run, to rehearse a pass on the simulator or on the rotator.")),
+        clockRateOption(QStringLiteral("To keep pace, run the simulator at the same time scale (sim:?time_scale=n, "
+                                       "slew-sim --time-scale n).")),
         {{QStringLiteral("rotors")},
          QStringLiteral("list"),
          QStringLiteral("Serve these rotors of a multi-rotor controller (the Micro-2g's 1 to 4, as 1,2,4 or 1-4) over "
@@ -403,6 +429,7 @@ const ProgramDescription &slewProgram()
                             "  slew --tune sim:?kp=12&ki=1&kd=1 --axis az\n"
                             "  slew --passes \"ISS (ZARYA)\" --qth JO65hq --tle amateur.txt --hours 48\n"
                             "  slew --where moon --qth 55.69,12.63,20\n"
+                            "  slew --connect sim: --qth JO65hq --clock-start 2026-11-25T12:00:00Z --clock-rate 5\n"
                             "  slew --update-elements 'https://celestrak.org/NORAD/elements/gp.php?GROUP=amateur&FORMAT=tle'")},
             {QStringLiteral("See also"), QStringLiteral("slew-sim(1), ") + seeAlso()},
         };

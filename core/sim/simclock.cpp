@@ -1,5 +1,7 @@
 #include "simclock.h"
 
+#include <algorithm>
+
 namespace slew::sim {
 
 SimClock::SimClock(Mode mode, double timeScale, QObject *parent)
@@ -18,7 +20,18 @@ double SimClock::now() const
 {
     if (m_mode == Mode::Manual)
         return m_manualNow;
-    return m_timeScale * double(m_elapsed.nsecsElapsed()) / 1e9;
+    return m_wallBase + m_timeScale * double(m_elapsed.nsecsElapsed() - m_wallBaseAtNs) / 1e9;
+}
+
+void SimClock::setTimeScale(double timeScale)
+{
+    if (m_mode != Mode::WallClock)
+        return;
+    // One reading for both: no time is lost or counted twice.
+    const qint64 ns = m_elapsed.nsecsElapsed();
+    m_wallBase += m_timeScale * double(ns - m_wallBaseAtNs) / 1e9;
+    m_wallBaseAtNs = ns;
+    m_timeScale = std::clamp(timeScale, 1.0, maxTimeScale);
 }
 
 void SimClock::advance(double seconds)

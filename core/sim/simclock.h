@@ -35,6 +35,13 @@ public:
     // Manual mode: moves time on and emits advanced(). Ignored on a wall clock.
     void advance(double seconds);
 
+    // Wall clock: from now on, run this many times faster (1 to
+    // maxTimeScale), going on from the present reading, so nothing simulated
+    // jumps: the rotator carries on from where it is. The window's Time
+    // controller keeps a running simulator at the station clock's rate this
+    // way. Ignored on a manual clock, which moves only when advanced.
+    void setTimeScale(double timeScale);
+
 signals:
     // Time moved on: the rotator catches up, connections release what is due.
     void advanced(double now);
@@ -43,6 +50,8 @@ private:
     Mode m_mode;
     double m_timeScale = 1.0;
     double m_manualNow = 0.0;
+    double m_wallBase = 0.0;      // simulated seconds at the last change of scale
+    qint64 m_wallBaseAtNs = 0;    // m_elapsed's reading then
     QElapsedTimer m_elapsed;
     QTimer m_tick;
 };

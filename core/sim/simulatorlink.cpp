@@ -23,6 +23,14 @@ std::optional<double> SimulatorLink::clockSeconds() const
     return m_simulator.clock().now();
 }
 
+bool SimulatorLink::setTimeScale(double scale)
+{
+    if (m_simulator.clock().isManual())
+        return false;
+    m_simulator.clock().setTimeScale(scale);
+    return true;
+}
+
 void SimulatorLink::open()
 {
     if (m_connection)

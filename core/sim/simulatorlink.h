@@ -26,6 +26,7 @@ public:
     bool isOpen() const override { return m_connection != nullptr; }
     std::optional<double> clockSeconds() const override;
     bool clockIsStepped() const override { return m_simulator.clock().isManual(); }
+    bool setTimeScale(double scale) override;
 
     Simulator &simulator() { return m_simulator; }
     // The firmware of the open connection (counters, dialect); null when closed.

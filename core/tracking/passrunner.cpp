@@ -64,6 +64,9 @@ void PassRunner::start(const TrackTarget &target, const sky::Station &station, d
     m_station = station;
     m_minElevation = minElevationDeg;
     m_clock = clock;
+    disconnect(m_clockChanged);
+    m_clockChanged = connect(clock, &StationClock::changed, this,
+                             [this] { startAfresh(tr("the station clock was changed")); });
     m_running = true;
     m_planning = false;
     cancelPlanning();
@@ -82,10 +85,24 @@ void PassRunner::stop(const QString &why)
         return;
     m_running = false;
     m_planning = false;
+    disconnect(m_clockChanged);
     cancelPlanning();
     ++m_generation;
     m_retry.stop();
     m_tracker.stopTracking(why);
+}
+
+void PassRunner::startAfresh(const QString &why)
+{
+    if (!m_running)
+        return;
+    emit logLine(tr("planning again: %1").arg(why));
+    // Not running while the tracker lets go, so its Idle is not taken for
+    // the end of tracking; start() runs again at once.
+    m_running = false;
+    m_retry.stop();
+    m_tracker.stopTracking(why);
+    start(m_target, m_station, m_minElevation, m_clock);
 }
 
 void PassRunner::nextPass()

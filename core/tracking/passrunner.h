@@ -43,7 +43,9 @@ public:
     // would fight over the rotator.
     void setOtherSteering(std::function<QString()> who) { m_otherSteering = std::move(who); }
     // Starts with the next pass (or the one in progress). The clock must
-    // outlive the runner.
+    // outlive the runner. When the clock is changed (started again, another
+    // rate, real time) the runner starts afresh as it would for a new
+    // target: the pass it was on was planned for another time.
     void start(const TrackTarget &target, const sky::Station &station, double minElevationDeg,
                const StationClock *clock);
     void stop(const QString &why);
@@ -64,6 +66,7 @@ signals:
 
 private:
     void nextPass();
+    void startAfresh(const QString &why);
     void onPlanned(const std::optional<PlannedPass> &next, const RotatorReach &reach, double plannedAtJulian);
     void onTrackerState(Tracker::State state, const QString &why);
     static QString isoTime(double julian);
@@ -78,6 +81,7 @@ private:
     std::function<QString()> m_otherSteering;
     QString m_waitingFor; // the other tracker a pass is waiting on, if any
     const StationClock *m_clock = nullptr;
+    QMetaObject::Connection m_clockChanged;
     bool m_running = false;
     bool m_planning = false;
     int m_generation = 0; // a plan still being made when this moves on is of no use

@@ -66,6 +66,15 @@ public:
     // timeouts and the stop hold by it (session/linktimer.h), so a test
     // decides how much time passes and a busy machine changes nothing.
     virtual bool clockIsStepped() const { return false; }
+    // Runs that clock this many times faster than real time from now on,
+    // going on from where it is (a rehearsal at the station clock's rate).
+    // False where the far end keeps no clock of its own to scale: hardware,
+    // and a simulator on a stepped clock.
+    virtual bool setTimeScale(double scale)
+    {
+        Q_UNUSED(scale);
+        return false;
+    }
     // The session calls this with true just before it writes a query it
     // will wait an answer to, and with false once that query is answered,
     // given up or abandoned. Only a link that shares its wire with other

@@ -105,6 +105,13 @@ bool SharedLineLink::clockIsStepped() const
     return m_line && m_line->line() && m_line->line()->clockIsStepped();
 }
 
+bool SharedLineLink::setTimeScale(double scale)
+{
+    // The line's clock is every rotor's on it: a simulated multi-rotor
+    // controller speeds up as one.
+    return m_line && m_line->line() && m_line->line()->setTimeScale(scale);
+}
+
 void SharedLineLink::setAwaitingReply(bool awaiting)
 {
     // The session says so just before it writes the query; anything it

@@ -51,6 +51,7 @@ public:
     LinkHints hints() const override;
     std::optional<double> clockSeconds() const override;
     bool clockIsStepped() const override;
+    bool setTimeScale(double scale) override;
     void setAwaitingReply(bool awaiting) override;
 
     int rotor() const { return m_rotor; }

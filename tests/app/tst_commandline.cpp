@@ -5,9 +5,12 @@
 
 #include "cli/configfile.h"
 #include "cli/manpage.h"
+#include "cli/sharedoptions.h"
 #include "cli/slewcommandline.h"
+#include "sky/utctime.h"
 
 #include <QCommandLineParser>
+#include <QDir>
 #include <QProcess>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -25,9 +28,17 @@ struct SlewRun {
 };
 
 // Runs the slew program to its end, waiting on its finished signal.
-SlewRun runSlew(const QStringList &arguments)
+SlewRun runSlew(const QStringList &arguments, const QString &home = {})
 {
     QProcess slew;
+    if (!home.isEmpty()) {
+        // The window's settings in a home of the test's own.
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(QStringLiteral("HOME"), home);
+        env.insert(QStringLiteral("XDG_CONFIG_HOME"), home);
+        env.insert(QStringLiteral("XDG_CACHE_HOME"), home);
+        slew.setProcessEnvironment(env);
+    }
     QSignalSpy finished(&slew, &QProcess::finished);
     slew.start(QString::fromLocal8Bit(qgetenv("SLEW_BIN")), arguments);
     if (!finished.wait(60000))
@@ -48,6 +59,8 @@ private slots:
     void configFileTextIsEscapedInMessages();
     void valueRefusalsNameTheFileAndLine();
     void manualListsEveryOptionOfEveryMode();
+    void windowReadsTheRehearsalClockAsTheServiceDoes();
+    void windowStartsInRehearsal();
     void manualEscapesRoff();
 };
 
@@ -209,6 +222,65 @@ void CommandLineTest::manualListsEveryOptionOfEveryMode()
     // The page is plain ASCII: groff warns on anything else.
     for (const QChar c : slew)
         QVERIFY2(c.unicode() < 128, qPrintable(QStringLiteral("non-ASCII %1 in the page").arg(c)));
+}
+
+void CommandLineTest::windowReadsTheRehearsalClockAsTheServiceDoes()
+{
+    // The window and the station service take the clock, the profile and the
+    // travel alike, and refuse alike.
+    for (const ProgramMode *mode : {&slewWindowMode(), &slewHeadlessMode()}) {
+        for (const char *option : {"clock-start", "clock-rate", "profile", "limits"})
+            QVERIFY2(mode->find(QString::fromLatin1(option)), option);
+    }
+    const auto read = [](const QStringList &arguments, QString *error) {
+        QCommandLineParser parser;
+        describeTo(parser, slewWindowMode());
+        if (!parser.parse(QStringList{"slew"} + arguments)) {
+            *error = parser.errorText();
+            return std::optional<StationClockOptions>();
+        }
+        return readStationClockOptions(parser, commandLineLabel, error);
+    };
+    QString error;
+    auto clock = read({"--clock-start", "2026-11-25T12:00:00Z", "--clock-rate", "5"}, &error);
+    QVERIFY2(clock, qPrintable(error));
+    QVERIFY(clock->startJulian);
+    QCOMPARE(*clock->startJulian, *slew::sky::julianFromIso("2026-11-25T12:00:00Z"));
+    QCOMPARE(clock->rate, 5.0);
+    clock = read({}, &error);
+    QVERIFY2(clock, qPrintable(error));
+    QVERIFY(!clock->startJulian);
+    QCOMPARE(clock->rate, 1.0);
+
+    QVERIFY(!read({"--clock-rate", "5"}, &error));
+    QCOMPARE(error, QString("--clock-rate: needs --clock-start"));
+    QVERIFY(!read({"--clock-start", "2026-11-25T12:00:00Z", "--clock-rate", "nan"}, &error));
+    QVERIFY2(error.startsWith("--clock-rate: ") && error.endsWith(" (1 to 20)"), qPrintable(error));
+    QVERIFY(!read({"--clock-start", "2026-11-25T12:00:00Z", "--clock-rate", "21"}, &error));
+    QVERIFY2(error.startsWith("--clock-rate: ") && error.endsWith(" (1 to 20)"), qPrintable(error));
+    QVERIFY(!read({"--clock-start", "yesterday"}, &error));
+    QCOMPARE(error, QString("--clock-start yesterday: expected an ISO 8601 time, as 2024-06-20T12:00:00Z"));
+}
+
+void CommandLineTest::windowStartsInRehearsal()
+{
+    QTemporaryDir home;
+    // A rate alone is refused, in the station service's words, before any window.
+    const SlewRun rateAlone = runSlew({"--clock-rate", "5"}, home.path());
+    QCOMPARE(rateAlone.exitCode, 2);
+    QVERIFY2(rateAlone.standardError.contains("slew: --clock-rate: needs --clock-start"),
+             qPrintable(rateAlone.standardError));
+    const SlewRun badTravel = runSlew({"--limits", "0:500,0:90"}, home.path());
+    QCOMPARE(badTravel.exitCode, 2);
+    QVERIFY2(badTravel.standardError.contains("slew: --limits 0:500,0:90: "), qPrintable(badTravel.standardError));
+
+    // With a start the window opens in rehearsal (here drawn to a file, with no display).
+    const QString picture = QDir(home.path()).filePath("rehearsal.png");
+    const SlewRun rehearsal = runSlew({"--connect", "sim:", "--clock-start", "2026-11-25T12:00:00Z", "--clock-rate", "5",
+                                       "--limits", "0:450,0:180", "--screenshot", picture, "--settle-ms", "0"},
+                                      home.path());
+    QVERIFY2(rehearsal.exitCode == 0, qPrintable(rehearsal.standardError));
+    QVERIFY(QFile::exists(picture));
 }
 
 void CommandLineTest::manualEscapesRoff()

@@ -13,6 +13,7 @@
 #include <QIODevice>
 #include <QSignalSpy>
 #include <QTest>
+#include <QTimer>
 
 using namespace slew::sim;
 using slew::transport::createLink;
@@ -49,6 +50,16 @@ class TestSimulatorLink : public QObject {
             reply += d->readAll();
         }
         return reply;
+    }
+
+    // A wall clock runs on wall time: let some pass on the event loop.
+    static bool letWallTimePass(int ms)
+    {
+        QTimer timer;
+        timer.setSingleShot(true);
+        QSignalSpy done(&timer, &QTimer::timeout);
+        timer.start(ms);
+        return done.wait(ms + 10000);
     }
 
     // Lets queued deliveries run: what is due has arrived afterwards.
@@ -182,6 +193,50 @@ private slots:
         SimClock manual(SimClock::Mode::Manual, 8.0);
         manual.advance(1.5);
         QCOMPARE(manual.now(), 1.5);
+    }
+
+    // The window's Time controller sets the pace of a running simulator: it
+    // goes on from the time it reads, so the rotator carries on from where
+    // it is, and runs at the new scale from there. Links with no clock of
+    // their own to scale say so.
+    void aRunningSimulatorTakesANewTimeScaleFromWhereItIs()
+    {
+        auto link = openLink("sim:");
+        QVERIFY(link);
+        const SimClock &clock = simulatorBehind(link.get())->clock();
+        QCOMPARE(clock.timeScale(), 1.0);
+        QElapsedTimer wall;
+        wall.start();
+        const auto wallNow = [&] { return double(wall.nsecsElapsed()) / 1e9; };
+        QVERIFY(letWallTimePass(50));
+        const double w0 = wallNow();
+        const double before = clock.now();
+        QVERIFY(link->setTimeScale(5.0));
+        const double atFive = clock.now();
+        const double w1 = wallNow();
+        QCOMPARE(clock.timeScale(), 5.0);
+        // No jump: on from where it was, by at most five times the moment between.
+        QVERIFY2(atFive >= before && atFive - before <= 5.0 * (w1 - w0),
+                 qPrintable(QStringLiteral("%1 s then %2 s").arg(before).arg(atFive)));
+        QVERIFY(letWallTimePass(50));
+        const double w2 = wallNow();
+        const double simulated = clock.now() - atFive;
+        const double w3 = wallNow();
+        QVERIFY2(simulated >= 5.0 * (w2 - w1) && simulated <= 5.0 * (w3 - w0),
+                 qPrintable(QStringLiteral("%1 s simulated in %2..%3 s").arg(simulated).arg(w2 - w1).arg(w3 - w0)));
+        // Back to real time, held to the simulator's range on the way.
+        QVERIFY(link->setTimeScale(1.0));
+        QCOMPARE(clock.timeScale(), 1.0);
+        QVERIFY(link->setTimeScale(50.0));
+        QCOMPARE(clock.timeScale(), SimClock::maxTimeScale);
+
+        auto manual = openLink("sim:?clock=manual");
+        QVERIFY(manual);
+        QVERIFY(!manual->setTimeScale(5.0));
+        QCOMPARE(simulatorBehind(manual.get())->clock().timeScale(), 1.0);
+        const auto tcp = slew::transport::createLink(QStringLiteral("tcp://127.0.0.1:1"));
+        QVERIFY(tcp.link);
+        QVERIFY(!tcp.link->setTimeScale(5.0));
     }
 
     void badQueryItemsNameTheUri_data()

@@ -6,6 +6,7 @@
 #include "../common/simulatorpump.h"
 #include "linkschemes.h"
 #include "session/rotatorsession.h"
+#include "sky/utctime.h"
 #include "tracking/passrunner.h"
 
 #include <QSignalSpy>
@@ -92,6 +93,40 @@ private slots:
         QVERIFY(!runner.isRunning());
         QVERIFY(!runner.isActive());
         QCOMPARE(runner.tracker().state(), Tracker::State::Idle);
+    }
+
+    // The window's Time controller moves the station clock while a target
+    // is held: the runner lets go of the old plan and plans again by the
+    // clock's new time, as it would for a new target, and keeps tracking.
+    void aClockChangePlansAgain()
+    {
+        RotatorSession session;
+        session.connectTo(QStringLiteral("sim:"));
+        QVERIFY(runEventLoopUntil([&] { return session.capabilities().probed && session.hasPosition(); }, 10000));
+        PassRunner runner(&session);
+        QSignalSpy lines(&runner, &PassRunner::logLine);
+        StationClock clock(slew::sky::julianFromIso(QStringLiteral("2018-01-22T07:00:00Z")), 1.0);
+        const auto target = TrackTarget::parseFixedOrCelestial(QStringLiteral("azel:200,30"), nullptr);
+        QVERIFY(target);
+        runner.start(*target, kStation, 0.0, &clock);
+        QVERIFY(runEventLoopUntil([&] { return runner.isActive() && !runner.tracker().plan().path.isEmpty(); }, 10000));
+        QVERIFY(logged(lines, QStringLiteral("holding azimuth 200.00°, elevation 30.00° until 2018-01-2")));
+
+        clock.rehearse(*slew::sky::julianFromIso(QStringLiteral("2026-11-25T12:00:00Z")), 5.0);
+        QVERIFY(logged(lines, QStringLiteral("planning again: the station clock was changed")));
+        QVERIFY(logged(lines, QStringLiteral("rehearsal clock from 2026-11-25T12:00:0")));
+        QVERIFY(runner.isRunning());
+        QVERIFY(runEventLoopUntil([&] { return logged(lines, QStringLiteral("until 2026-11-2")); }, 10000));
+        QVERIFY(runEventLoopUntil([&] { return runner.isActive(); }, 10000));
+        // Letting go of the old plan is not the end of tracking.
+        QVERIFY(!logged(lines, QStringLiteral("tracking ended")));
+
+        // Back to real time: the same again, and a stop ends it for good.
+        clock.followRealTime();
+        QVERIFY(runner.isRunning());
+        runner.stop(QStringLiteral("done"));
+        clock.rehearse(*slew::sky::julianFromIso(QStringLiteral("2018-01-22T07:00:00Z")), 1.0);
+        QVERIFY(!runner.isRunning());
     }
 };
 

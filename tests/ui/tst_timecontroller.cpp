@@ -1,0 +1,316 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Sky → Time controller…: rehearsing in the window. The station clock
+// started at a chosen UTC time puts the Tracking tab's passes after that
+// time; it runs at the rate chosen, the built-in simulator with it; a change
+// while tracking plans again; and while the clock is not real time the
+// window says so, in the status bar and the title, until it is again.
+//
+// The rates are measured against wall readings taken around each clock
+// reading, so the checks hold however busy the machine is.
+
+#include "windowfixture.h"
+
+#include "connectionbar.h"
+#include "sim/simulator.h"
+#include "sim/simulatorscheme.h"
+#include "sky/skyvector.h"
+#include "sky/tlesources.h"
+#include "sky/utctime.h"
+#include "timecontroller.h"
+#include "trackingpanel.h"
+
+#include <QAction>
+#include <QDateTimeEdit>
+#include <QLabel>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QTableWidget>
+#include <QTest>
+#include <QTimer>
+
+using slew::ui::TimeController;
+using slew::ui::TrackingPanel;
+
+namespace {
+
+const QString kAllSets = QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle");
+
+bool loadSets(slew::sky::TleSources *sets, const QString &file)
+{
+    sets->setUrls({QUrl::fromLocalFile(file)});
+    QSignalSpy loaded(sets, &slew::sky::TleSources::finished);
+    sets->refresh();
+    return loaded.count() > 0 || loaded.wait(5000);
+}
+
+void atJo65hq(TrackingPanel *panel)
+{
+    slew::sky::Station station;
+    QString error;
+    QVERIFY(slew::sky::parseStation(QStringLiteral("JO65hq"), &station, &error));
+    panel->setStation(station);
+}
+
+// The pass table is planned off the window's thread: wait for it.
+bool passesPlanned(const TrackingPanel *panel)
+{
+    return WindowFixture::waitFor([panel] { return !panel->isPlanning(); }, 10000);
+}
+
+QDateTime utc(const QString &iso)
+{
+    return slew::sky::utcFromJulian(*slew::sky::julianFromIso(iso));
+}
+
+// Sky → Time controller…, as the operator opens it.
+TimeController *openTimeController(WindowFixture &f)
+{
+    auto *action = f.find<QAction>(QStringLiteral("actionTimeController"));
+    if (!action)
+        return nullptr;
+    action->trigger();
+    return f.window->timeController();
+}
+
+// Start here, with this time and rate in the fields.
+void startRehearsal(TimeController *time, const QString &iso, int rate)
+{
+    time->startField()->setDateTime(utc(iso));
+    time->rateField()->setValue(rate);
+    QTest::mouseClick(time->startButton(), Qt::LeftButton);
+}
+
+// A wall clock runs on wall time: let some pass on the event loop.
+bool letWallTimePass(int ms)
+{
+    QTimer timer;
+    timer.setSingleShot(true);
+    QSignalSpy done(&timer, &QTimer::timeout);
+    timer.start(ms);
+    return done.wait(ms + 10000);
+}
+
+// Whether `clock` runs `rate` times faster than the wall: station time over
+// a stretch lies between rate times the wall time inside the two readings
+// and rate times the wall time around them.
+bool runsAt(const slew::tracking::StationClock *clock, double rate, QString *seen)
+{
+    QElapsedTimer wall;
+    wall.start();
+    const auto wallNow = [&] { return double(wall.nsecsElapsed()) / 1e9; };
+    const double w0 = wallNow();
+    const double first = clock->nowJulian();
+    const double w1 = wallNow();
+    if (!letWallTimePass(200))
+        return false;
+    const double w2 = wallNow();
+    const double second = clock->nowJulian();
+    const double w3 = wallNow();
+    const double station = (second - first) * slew::sky::kSecondsPerDay;
+    *seen = QStringLiteral("%1 station s in %2..%3 wall s").arg(station).arg(w2 - w1).arg(w3 - w0);
+    const double slack = 0.001; // a Julian date in a double resolves ~40 µs
+    return station >= rate * (w2 - w1) - slack && station <= rate * (w3 - w0) + slack;
+}
+
+double simulatorTimeScale(WindowFixture &f)
+{
+    slew::sim::Simulator *sim = slew::sim::simulatorBehind(f.session.link());
+    return sim ? sim->clock().timeScale() : -1.0;
+}
+
+} // namespace
+
+class TimeControllerTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { WindowFixture::prepareApplication(); }
+
+    void aRehearsalPlansThePassesAfterTheChosenTime()
+    {
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
+        QVERIFY(loadSets(f.window->elementSets(), kAllSets));
+        TrackingPanel *panel = f.window->trackingPanel();
+        atJo65hq(panel);
+        QVERIFY(panel->selectTarget(QStringLiteral("FLOCK 2P-1")));
+        QVERIFY(passesPlanned(panel));
+
+        TimeController *time = openTimeController(f);
+        QVERIFY(time);
+        QVERIFY(time->isVisible());
+        QVERIFY(!time->isModal()); // the window goes on working beside it
+        startRehearsal(time, QStringLiteral("2018-01-22T07:42:45Z"), 1);
+        QVERIFY(passesPlanned(panel));
+        // The pass eleven seconds after the chosen time, as `slew --passes` gives it.
+        QTableWidget *table = panel->passTable();
+        QVERIFY(table->rowCount() > 0);
+        QCOMPARE(table->item(0, 0)->text(), QStringLiteral("01-22 07:42:56"));
+        QCOMPARE(table->item(0, 2)->text(), QStringLiteral("7.1°"));
+        QVERIFY2(panel->countdown()->text().startsWith(QStringLiteral("AOS in 0:00:1")),
+                 qPrintable(panel->countdown()->text()));
+
+        // Started again at noon: the table starts there, and spans the day after.
+        const double noon = *slew::sky::julianFromIso(QStringLiteral("2018-01-22T12:00:00Z"));
+        startRehearsal(time, QStringLiteral("2018-01-22T12:00:00Z"), 1);
+        QVERIFY(passesPlanned(panel));
+        const QList<slew::sky::Pass> passes = panel->passes();
+        QVERIFY(!passes.isEmpty());
+        QVERIFY(passes.first().los.julian > noon);
+        QVERIFY(passes.first().aos.julian > noon - 20.0 / (24 * 60)); // at most one under way
+        for (const slew::sky::Pass &p : passes)
+            QVERIFY(p.aos.julian < noon + 1.0);
+        QVERIFY(table->item(0, 0)->text() != QStringLiteral("01-22 07:42:56"));
+
+        // Real time: none of the rehearsal's passes is listed.
+        QTest::mouseClick(time->realTimeButton(), Qt::LeftButton);
+        QVERIFY(passesPlanned(panel));
+        for (const slew::sky::Pass &p : panel->passes())
+            QVERIFY(p.los.julian > slew::sky::julianNow());
+    }
+
+    void theWindowSaysRehearsalUntilRealTime()
+    {
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
+        auto *marker = f.find<QLabel>(QStringLiteral("rehearsalMarker"));
+        QVERIFY(marker);
+        QVERIFY(marker->isHidden());
+        QVERIFY(!f.window->windowTitle().contains(QStringLiteral("REHEARSAL")));
+
+        TimeController *time = openTimeController(f);
+        QVERIFY(time);
+        startRehearsal(time, QStringLiteral("2026-11-25T14:03:10Z"), 5);
+        QVERIFY(marker->isVisible());
+        QVERIFY2(marker->text().startsWith(QStringLiteral("REHEARSAL: station clock 2026-11-25 14:03:1")),
+                 qPrintable(marker->text()));
+        QVERIFY2(marker->text().endsWith(QStringLiteral(" UTC ×5")), qPrintable(marker->text()));
+        QVERIFY2(f.window->windowTitle().startsWith(QStringLiteral("REHEARSAL ×5 — Slew")),
+                 qPrintable(f.window->windowTitle()));
+        // It keeps time: five station seconds a second.
+        const QString first = marker->text();
+        TRY_VERIFY(marker->text() != first);
+
+        // The title the window gives itself as the link comes up is marked
+        // too, and the mark stays with the Time controller closed.
+        QVERIFY(f.connectAndWait());
+        QVERIFY2(f.window->windowTitle().startsWith(QStringLiteral("REHEARSAL ×5 — Slew — sim:")),
+                 qPrintable(f.window->windowTitle()));
+        time->close();
+        QVERIFY(!time->isVisible());
+        QVERIFY(marker->isVisible());
+        // Another rate: the title says it.
+        time->showController();
+        time->rateField()->setValue(8);
+        QVERIFY2(f.window->windowTitle().startsWith(QStringLiteral("REHEARSAL ×8 — Slew — sim:")),
+                 qPrintable(f.window->windowTitle()));
+        QVERIFY2(marker->text().endsWith(QStringLiteral(" UTC ×8")), qPrintable(marker->text()));
+
+        // Real time: both gone.
+        QTest::mouseClick(time->realTimeButton(), Qt::LeftButton);
+        QVERIFY(marker->isHidden());
+        QCOMPARE(f.window->windowTitle(), QStringLiteral("Slew — %1").arg(f.session.uri()));
+    }
+
+    void theStationClockRunsAtTheRateChosen()
+    {
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
+        TimeController *time = openTimeController(f);
+        QVERIFY(time);
+        const slew::tracking::StationClock *clock = time->clock();
+        QVERIFY(!clock->isRehearsal());
+        startRehearsal(time, QStringLiteral("2026-11-25T12:00:00Z"), 5);
+        QVERIFY(clock->isRehearsal());
+        QString seen;
+        QVERIFY2(runsAt(clock, 5.0, &seen), qPrintable(seen));
+        QVERIFY2(!runsAt(clock, 1.0, &seen), qPrintable(seen));
+
+        // A new rate while rehearsing: on at once, from the time the clock reads.
+        QElapsedTimer wall;
+        wall.start();
+        const double before = clock->nowJulian();
+        time->rateField()->setValue(10);
+        const double after = clock->nowJulian();
+        const double moved = (after - before) * slew::sky::kSecondsPerDay;
+        QVERIFY2(moved >= -0.001 && moved <= 10.0 * double(wall.nsecsElapsed()) / 1e9 + 0.001,
+                 qPrintable(QString::number(moved)));
+        QVERIFY2(runsAt(clock, 10.0, &seen), qPrintable(seen));
+        QVERIFY2(time->stateLine()->text().contains(QStringLiteral("runs ×10")), qPrintable(time->stateLine()->text()));
+    }
+
+    void theSimulatorKeepsPaceWithTheClock()
+    {
+        WindowFixture f(QStringLiteral("sim:")); // the simulator on the wall clock, as an operator runs it
+        QVERIFY(f.connectAndWait());
+        QCOMPARE(simulatorTimeScale(f), 1.0);
+        TimeController *time = openTimeController(f);
+        QVERIFY(time);
+        startRehearsal(time, QStringLiteral("2026-11-25T12:00:00Z"), 5);
+        QCOMPARE(simulatorTimeScale(f), 5.0);
+        QVERIFY2(time->stateLine()->text().contains(QStringLiteral("The simulator runs at the same rate")),
+                 qPrintable(time->stateLine()->text()));
+        // The same link, at another rate: no reconnect.
+        slew::transport::Link *link = f.session.link();
+        time->rateField()->setValue(8);
+        QCOMPARE(f.session.link(), link);
+        QCOMPARE(simulatorTimeScale(f), 8.0);
+
+        // A simulator connected during a rehearsal takes the rate as it connects.
+        f.window->connectionBar()->disconnectFromRotator();
+        TRY_VERIFY(!f.session.isConnected());
+        QVERIFY(f.connectAndWait());
+        QVERIFY(f.session.link() != link);
+        QCOMPARE(simulatorTimeScale(f), 8.0);
+
+        // Real time: the simulator too.
+        QTest::mouseClick(time->realTimeButton(), Qt::LeftButton);
+        QCOMPARE(simulatorTimeScale(f), 1.0);
+        QVERIFY2(time->stateLine()->text().startsWith(QStringLiteral("Real time")),
+                 qPrintable(time->stateLine()->text()));
+    }
+
+    void aSimulatorOnItsOwnClockKeepsItsPace()
+    {
+        // A manual clock (the tests') moves only when stepped: it is not
+        // scaled, and the Time controller says the rotator keeps its pace.
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
+        QVERIFY(f.connectAndWait());
+        TimeController *time = openTimeController(f);
+        QVERIFY(time);
+        startRehearsal(time, QStringLiteral("2026-11-25T12:00:00Z"), 5);
+        QCOMPARE(simulatorTimeScale(f), 1.0);
+        QVERIFY2(time->stateLine()->text().contains(QStringLiteral("keeps its own pace")),
+                 qPrintable(time->stateLine()->text()));
+    }
+
+    void aChangeWhileTrackingPlansAgain()
+    {
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
+        QVERIFY(f.connectAndWait());
+        TrackingPanel *panel = f.window->trackingPanel();
+        atJo65hq(panel);
+        TimeController *time = openTimeController(f);
+        QVERIFY(time);
+        startRehearsal(time, QStringLiteral("2026-11-23T18:00:00Z"), 1);
+        QVERIFY(panel->selectTarget(QStringLiteral("azel:200,30")));
+        QVERIFY(passesPlanned(panel));
+        QTest::mouseClick(panel->trackButton(), Qt::LeftButton);
+        TRY_VERIFY(panel->runner()->isActive());
+
+        QSignalSpy messages(panel, &TrackingPanel::message);
+        startRehearsal(time, QStringLiteral("2026-11-25T06:00:00Z"), 2);
+        bool plannedAgain = false;
+        for (const QList<QVariant> &m : messages)
+            plannedAgain = plannedAgain || m.at(0).toString().contains(QStringLiteral("planning again: the station clock"));
+        QVERIFY(plannedAgain);
+        QVERIFY(panel->runner()->isRunning());
+        TRY_VERIFY(panel->runner()->isActive());
+        // The table is of the new day too.
+        QVERIFY(passesPlanned(panel));
+        QVERIFY(!panel->passes().isEmpty());
+        QVERIFY(panel->passes().first().los.julian > *slew::sky::julianFromIso(QStringLiteral("2026-11-25T06:00:00Z")));
+        QTest::mouseClick(panel->stopTrackingButton(), Qt::LeftButton);
+        QVERIFY(!panel->runner()->isRunning());
+    }
+};
+
+QTEST_MAIN(TimeControllerTest)
+#include "tst_timecontroller.moc"
