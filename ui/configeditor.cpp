@@ -1,5 +1,7 @@
 #include "configeditor.h"
 
+#include "filechooser.h"
+
 #include <QScopeGuard>
 
 #include <utility>
@@ -9,7 +11,6 @@
 #include "model/movegate.h"
 #include "protocol/dialect.h"
 
-#include <QFileDialog>
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -111,17 +112,19 @@ ConfigEditor::ConfigEditor(RotatorSession *session, QWidget *parent) : QWidget(p
     connect(read, &QPushButton::clicked, this, &ConfigEditor::readAll);
     connect(readOne, &QPushButton::clicked, this, [this] { readRegister(m_extra->value()); });
     connect(importButton, &QPushButton::clicked, this, [this] {
-        const QString path = QFileDialog::getOpenFileName(this, tr("Import profile"), {}, tr("Profiles (*.json)"));
-        QString error;
-        if (!path.isEmpty() && !importProfile(path, &error))
-            say(error, true);
+        chooseFile(this, FileChoice::Open, tr("Import profile"), {}, tr("Profiles (*.json)"), [this](const QString &path) {
+            QString error;
+            if (!importProfile(path, &error))
+                say(error, true);
+        });
     });
     connect(exportButton, &QPushButton::clicked, this, [this] {
-        const QString path = QFileDialog::getSaveFileName(this, tr("Export profile"), QStringLiteral("rotator.json"),
-                                                          tr("Profiles (*.json)"));
-        QString error;
-        if (!path.isEmpty())
-            say(exportProfile(path, &error) ? tr("Profile written to %1.").arg(path) : error, !error.isEmpty());
+        chooseFile(this, FileChoice::Save, tr("Export profile"), QStringLiteral("rotator.json"), tr("Profiles (*.json)"),
+                   [this](const QString &path) {
+                       QString error;
+                       say(exportProfile(path, &error) ? tr("Profile written to %1.").arg(path) : error,
+                           !error.isEmpty());
+                   });
     });
     connect(session, &RotatorSession::configValueReceived, this, &ConfigEditor::onValue);
     connect(session, &RotatorSession::requestFailed, this, &ConfigEditor::onRequestFailed);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "elementsetsdialog.h"
 
+#include "filechooser.h"
+
 #include "input/finitenumber.h"
 
 #include "elementsetages.h"
@@ -11,7 +13,6 @@
 #include <QDateTime>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
-#include <QFileDialog>
 #include <QFormLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -111,10 +112,8 @@ ElementSetsDialog::ElementSetsDialog(sky::TleSources *sources, QWidget *parent)
     connect(close, &QDialogButtonBox::rejected, this, &QDialog::reject);
     connect(m_refresh, &QPushButton::clicked, this, &ElementSetsDialog::refresh);
     connect(addFile, &QPushButton::clicked, this, [this] {
-        const QString path = QFileDialog::getOpenFileName(this, tr("Element sets"), QString(),
-                                                          tr("Element sets (*.txt *.tle);;All files (*)"));
-        if (!path.isEmpty())
-            this->addFile(path);
+        chooseFile(this, FileChoice::Open, tr("Element sets"), QString(), tr("Element sets (*.txt *.tle);;All files (*)"),
+                   [this](const QString &path) { this->addFile(path); });
     });
     connect(m_ageLimit, &QDoubleSpinBox::valueChanged, this, [this](double days) {
         QSettings().setValue(QLatin1String(kAgeLimitKey), days);

@@ -388,6 +388,7 @@ QWidget *MainWindow::buildControlColumn()
     column->setMaximumWidth(380);
     auto *l = new QVBoxLayout(column);
     l->setContentsMargins(4, 0, 4, 0);
+    l->setSpacing(4);
     l->addWidget(group(tr("Position"), m_readout));
     l->addWidget(group(tr("Go to"), m_goto));
     l->addWidget(group(tr("Jog: hold, or arrow keys"), m_jog));

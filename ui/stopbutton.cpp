@@ -9,7 +9,9 @@ StopButton::StopButton(session::RotatorSession *session, QWidget *parent)
     setToolTip(tr("Stop both axes now (Space or Esc)"));
     setAutoDefault(false);
     setFocusPolicy(Qt::NoFocus);
-    setMinimumHeight(56);
+    // Big, but not so tall that the control column outgrows a 720-pixel
+    // screen with an alarm shown; it takes more height when there is room.
+    setMinimumHeight(46);
     QFont f = font();
     f.setPointSizeF(f.pointSizeF() * 1.6);
     f.setBold(true);

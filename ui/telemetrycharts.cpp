@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "telemetrycharts.h"
 
+#include "filechooser.h"
+
 #include "chartaxisticks.h"
 #include "plotareaaligner.h"
 #include "statuslaneview.h"
@@ -12,7 +14,6 @@
 #include <QComboBox>
 #include <QDateTime>
 #include <QDateTimeAxis>
-#include <QFileDialog>
 #include <QGraphicsLayout>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -51,8 +52,9 @@ std::optional<qint64> keptWindowMs()
 }
 
 // A chart's height holds its plot and its time labels; the heading above
-// is extra. Six of them (and the controls) fit a 720-pixel-high window.
-constexpr int kChartMinimumHeight = 64;
+// is extra. Six of them (and the controls) fit a 720-pixel-high window even
+// with the alarm banner shown above the tabs (tst_windowlayout).
+constexpr int kChartMinimumHeight = 48;
 
 QFont smallFont(QFont font)
 {
@@ -432,12 +434,11 @@ bool TelemetryCharts::exportCsv(const QString &path, QString *error) const
 
 void TelemetryCharts::chooseExportFile()
 {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export telemetry"), QStringLiteral("telemetry.csv"),
-                                                      tr("CSV files (*.csv)"));
-    if (path.isEmpty())
-        return;
-    QString error;
-    m_message->setText(exportCsv(path, &error) ? tr("Exported to %1").arg(path) : error);
+    chooseFile(this, FileChoice::Save, tr("Export telemetry"), QStringLiteral("telemetry.csv"), tr("CSV files (*.csv)"),
+               [this](const QString &path) {
+                   QString error;
+                   m_message->setText(exportCsv(path, &error) ? tr("Exported to %1").arg(path) : error);
+               });
 }
 
 } // namespace slew::ui

@@ -113,8 +113,12 @@ void walk(QWidget *w, QStringList *faults)
         collectLaidOut(layout, &laidOut);
         for (qsizetype i = 0; i < laidOut.size(); ++i) {
             QWidget *a = laidOut[i];
-            // A widget held to a fixed size by its own maximum is as small as it wants.
-            const QSize least = a->minimumSizeHint().expandedTo(a->minimumSize()).boundedTo(a->maximumSize());
+            // As layouts decide: a minimum size set on the widget wins over its
+            // hint, each way; a maximum below both is as small as it wants.
+            const QSize hint = a->minimumSizeHint();
+            const QSize least = QSize(a->minimumWidth() > 0 ? a->minimumWidth() : hint.width(),
+                                      a->minimumHeight() > 0 ? a->minimumHeight() : hint.height())
+                                    .boundedTo(a->maximumSize());
             const QSizePolicy policy = a->sizePolicy();
             const bool widthMatters = policy.horizontalPolicy() != QSizePolicy::Ignored;
             const bool heightMatters = policy.verticalPolicy() != QSizePolicy::Ignored;

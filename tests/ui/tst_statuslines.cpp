@@ -6,7 +6,8 @@
 // - the plot's "Going to az…" back to its prompt on arrival;
 // - "Parking at…" after the park;
 // - "Reading N registers…" once the last has answered;
-// - a failed connection logged once, and its cause kept in view.
+// - a failed connection logged once, and its cause kept in view;
+// - a file dialog (Export CSV…) that leaves Stop within reach.
 
 #include "windowfixture.h"
 
@@ -17,7 +18,12 @@
 #include "stopbutton.h"
 #include "targetconfirmation.h"
 
+#include <QApplication>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QLabel>
+#include <QPushButton>
+#include <QTemporaryDir>
 #include <QTest>
 
 namespace {
@@ -120,6 +126,24 @@ private slots:
         QVERIFY2(f.waitFor([&] { return textOf(f, "configMessage").startsWith(QStringLiteral("Read ")); }, 20000),
                  qPrintable(textOf(f, "configMessage")));
         QVERIFY2(textOf(f, "configMessage").contains(QStringLiteral("registers.")), qPrintable(textOf(f, "configMessage")));
+    }
+
+    void fileDialogsLeaveStopWithinReach()
+    {
+        // Export CSV…: the file dialog is up, and nothing is modal, so the
+        // window's Stop can still be clicked; choosing a file exports.
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
+        QVERIFY(f.connectAndWait());
+        f.find<QPushButton>(QStringLiteral("chartExport"))->click();
+        auto *dialog = f.window->findChild<QFileDialog *>(QStringLiteral("fileChooser"));
+        QVERIFY(dialog);
+        QVERIFY(dialog->isVisible());
+        QCOMPARE(QApplication::activeModalWidget(), nullptr);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("telemetry.csv"));
+        dialog->selectFile(path);
+        static_cast<QDialog *>(dialog)->accept(); // as its Save button does
+        QVERIFY(QFileInfo::exists(path));
     }
 
     void aFailedConnectionIsLoggedOnceAndItsCauseStays()

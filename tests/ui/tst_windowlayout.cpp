@@ -14,6 +14,7 @@
 #include "operatortheme.h"
 #include "polarplotwidget.h"
 #include "targetconfirmation.h"
+#include "telemetryrecorder.h"
 #include "windowstate.h"
 
 #include <QApplication>
@@ -93,16 +94,6 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
         QVERIFY(f.connectAndWait());
         settle();
-        if (qEnvironmentVariableIsSet("SLEW_LAYOUT_DEBUG")) {
-            std::function<void(QWidget *, int)> dump = [&](QWidget *w, int depth) {
-                if (depth > 7) return;
-                qInfo("%s%s %s min %dx%d size %dx%d", qPrintable(QString(depth * 2, u' ')), w->metaObject()->className(),
-                      qPrintable(w->objectName()), w->minimumSizeHint().width(), w->minimumSizeHint().height(), w->width(), w->height());
-                for (QWidget *c : w->findChildren<QWidget *>(Qt::FindDirectChildrenOnly))
-                    if (!c->isWindow()) dump(c, depth + 1);
-            };
-            dump(f.window.get(), 0);
-        }
         QCOMPARE(f.window->size(), size);
         const QString faults = faultsOnEveryTab(*f.window);
         QVERIFY2(faults.isEmpty(), qPrintable(faults));
@@ -130,6 +121,12 @@ private slots:
             {QStringLiteral("Azimuth motor current over its limit for 3 s: the controller stopped the drive "
                             "and holds it until it is reset from its front panel or with RESET")},
             true);
+        settle();
+        QCOMPARE(f.window->size(), size);
+
+        // Tracking: the pointing error's chart appears under the others.
+        f.window->findChild<slew::ui::TelemetryRecorder *>()->recordPointingError(0.25);
+        f.window->tabs()->setCurrentIndex(0);
         settle();
         QCOMPARE(f.window->size(), size);
 
