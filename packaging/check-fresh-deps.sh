@@ -5,7 +5,8 @@
 #
 #   check-fresh-deps.sh SOURCE_DIR BUILD_DIR
 #
-# The files: the headers the compiler read (ninja's deps log), the CMake
+# The files: the headers the compiler read (ninja's deps log, or with the
+# Makefile generator the compiler's own dependency files), the CMake
 # package configs found (the *_DIR entries of CMakeCache.txt), and the
 # programs and libraries found (its FILEPATH entries: compiler, linker,
 # groff, the peers the tests run) that the build or the tests use. Each file's owning package, from dpkg's file lists, must be
@@ -16,7 +17,14 @@ set -uo pipefail
 src=${1:?usage: check-fresh-deps.sh SOURCE_DIR BUILD_DIR}
 build=${2:?usage: check-fresh-deps.sh SOURCE_DIR BUILD_DIR}
 list=$src/packaging/debian-packages.txt
-[ -f "$build/build.ninja" ] || { echo "no Ninja build in $build: configure and build first"; exit 2; }
+if [ -f "$build/build.ninja" ]; then
+    generator=ninja
+elif [ -f "$build/Makefile" ]; then
+    generator=make
+else
+    echo "no build in $build (neither build.ninja nor Makefile): configure and build first"
+    exit 2
+fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
@@ -39,14 +47,29 @@ dpkg-query -W -f='${Package} ${Essential} ${Priority}\n' \
 sort -u "$work/closure" -o "$work/closure"
 
 # 2. The files the build used.
-(cd "$build" && ninja -t deps) | awk '/^    \//{print $1}' | grep -E '^/(usr|lib|etc)/' > "$work/files"
+if [ "$generator" = ninja ]; then
+    (cd "$build" && ninja -t deps) | awk '/^    \//{print $1}' | grep -E '^/(usr|lib|etc)/' > "$work/files"
+else
+    # Make-style dependency files (target: dep dep \): every path on them.
+    find "$build" \( -name '*.o.d' -o -name compiler_depend.make \) -exec cat {} + \
+      | tr ' \\' '\n\n' | grep -E '^/(usr|lib|etc)/' | sed 's/:$//' > "$work/files"
+    if [ ! -s "$work/files" ]; then
+        echo "no dependency files in $build: build first"
+        exit 2
+    fi
+fi
 sed -nE 's/^[A-Za-z0-9_]+_DIR:PATH=(\/usr\/.*)$/\1/p' "$build/CMakeCache.txt" | while read -r dir; do
     ls "$dir"/*Config.cmake "$dir"/*-config.cmake 2>/dev/null | head -n 1
 done >> "$work/files"
 # A program or library CMake found counts when the build or a test's command
 # line names it, or when it is a peer the tests declare (SLEW_TEST_PEER_*):
 # CMake also finds things nobody then runs (git for CTest, valgrind, EGL).
-cat "$build/build.ninja" "$build"/CMakeFiles/rules.ninja > "$work/commands"
+if [ "$generator" = ninja ]; then
+    cat "$build/build.ninja" "$build"/CMakeFiles/rules.ninja > "$work/commands"
+else
+    find "$build" \( -name build.make -o -name link.txt -o -name flags.make -o -name Makefile \) -exec cat {} + \
+      > "$work/commands"
+fi
 find "$build" -name CTestTestfile.cmake -exec cat {} + >> "$work/commands"
 sed -nE 's/^([A-Za-z0-9_]+):FILEPATH=(\/(usr|bin|lib)\/.*)$/\1 \2/p' "$build/CMakeCache.txt" \
   | while read -r key path; do

@@ -359,13 +359,23 @@ void HeadlessTest::servesOneRotctldPortPerRotor()
     QVERIFY(finished.wait(10000));
     QCOMPARE(slew.exitCode(), 0);
     out += slew.readAllStandardOutput();
-    QFile log(received);
-    QVERIFY(log.open(QIODevice::ReadOnly));
-    const QByteArray wire = log.readAll();
-    for (int n = 1; n <= 4; ++n) {
+    for (int n = 1; n <= 4; ++n)
         QVERIFY2(out.contains(QStringLiteral("rotor %1: rotator stopped").arg(n).toUtf8()), out.constData());
-        QVERIFY2(wire.contains(QStringLiteral("S%1").arg(n).toUtf8()), wire.constData());
-    }
+    // The stops left Slew before it exited; the simulator, another process,
+    // reads and records them in its own time, which under load can be after
+    // Slew is gone. So its record is awaited, not read once.
+    QByteArray wire;
+    const bool allStopsRecorded = QTest::qWaitFor(
+        [&] {
+            QFile log(received);
+            wire = log.open(QIODevice::ReadOnly) ? log.readAll() : QByteArray();
+            for (int n = 1; n <= 4; ++n)
+                if (!wire.contains(QStringLiteral("S%1").arg(n).toUtf8()))
+                    return false;
+            return true;
+        },
+        10000);
+    QVERIFY2(allStopsRecorded, wire.constData());
 }
 
 void HeadlessTest::refusesABadRotorList()
