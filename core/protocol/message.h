@@ -107,7 +107,11 @@ public:
     friend bool operator==(const InlineText &a, const InlineText &b) { return a.view() == b.view(); }
 
 private:
-    void copyFrom(const InlineText &other) { std::memcpy(m_data.data(), other.m_data.data(), size_t(m_size)); }
+    void copyFrom(const InlineText &other)
+    {
+        if (m_size > 0) // most messages carry no text: no call at all
+            std::memcpy(m_data.data(), other.m_data.data(), size_t(m_size));
+    }
 
     // Not cleared on construction: only the first m_size bytes are ever read,
     // and clearing 128 bytes for every token was most of the parser's time.

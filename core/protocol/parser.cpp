@@ -4,6 +4,8 @@
 #include "tokentext.h"
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <cstring>
 
 namespace slew::protocol {
@@ -12,16 +14,40 @@ using namespace text;
 
 namespace {
 
-bool isLineEnd(char c)
+// What each byte is to the token reader, looked up once per byte: a token
+// is scanned once for its end and for bytes it may not hold together.
+enum ByteClass : std::uint8_t {
+    kLineEnd = 1,     // CR, LF
+    kSpace = 2,       // ' ', tab, ';' (Hamlib's get_conf writes `GS\n;` and
+                      // the `;` then prefixes the next command)
+    kUnprintable = 4, // outside printable ASCII
+};
+constexpr std::array<std::uint8_t, 256> kByteClasses = [] {
+    std::array<std::uint8_t, 256> table{};
+    for (int c = 0; c < 256; ++c) {
+        if (c == '\r' || c == '\n')
+            table[size_t(c)] |= kLineEnd;
+        if (c == ' ' || c == '\t' || c == ';')
+            table[size_t(c)] |= kSpace;
+        if (c < 0x21 || c > 0x7e)
+            table[size_t(c)] |= kUnprintable;
+    }
+    return table;
+}();
+
+std::uint8_t classOf(char c)
 {
-    return c == '\r' || c == '\n';
+    return kByteClasses[static_cast<unsigned char>(c)];
 }
 
-// ';' is here because Hamlib's get_conf writes `GS\n;` and the `;` then
-// prefixes the next command.
+bool isLineEnd(char c)
+{
+    return classOf(c) & kLineEnd;
+}
+
 bool isSpace(char c)
 {
-    return c == ' ' || c == '\t' || c == ';';
+    return classOf(c) & kSpace;
 }
 
 bool isBareConfigRead(const Message &m)
@@ -35,6 +61,7 @@ void Parser::reset()
 {
     m_length = 0;
     m_overflow = false;
+    m_tokenUnprintable = false;
     m_hasPending = false;
     m_previousOnLine = Op::Invalid;
     m_previousHadValue = false;
@@ -71,10 +98,12 @@ int Parser::push(char c)
     // and so does GS-232's `W010` for its elevation.
     if (m_length == 0 && !m_overflow && m_hasPending && !pendingWaitsForArgument())
         emitPending(false);
-    if (m_length < int(m_token.size()))
+    if (m_length < int(m_token.size())) {
         m_token[size_t(m_length++)] = c;
-    else
+        m_tokenUnprintable = m_tokenUnprintable || (classOf(c) & kUnprintable);
+    } else {
         m_overflow = true;
+    }
     return m_readyCount;
 }
 
@@ -85,11 +114,21 @@ qsizetype Parser::appendTokenRun(QByteArrayView bytes)
         return 0;
     const qsizetype room = qsizetype(m_token.size()) - m_length;
     const qsizetype limit = std::min(bytes.size(), room);
+    // Copied as it is scanned: tokens are a few bytes, a memcpy call each
+    // cost more than the bytes.
+    char *to = m_token.data() + m_length;
     qsizetype n = 0;
-    while (n < limit && !isLineEnd(bytes[n]) && !isSpace(bytes[n]))
-        ++n;
-    std::memcpy(m_token.data() + m_length, bytes.data(), size_t(n));
+    std::uint8_t seen = 0;
+    for (; n < limit; ++n) {
+        const char c = bytes[n];
+        const std::uint8_t k = classOf(c);
+        if (k & (kLineEnd | kSpace))
+            break;
+        seen |= k;
+        to[n] = c;
+    }
     m_length += int(n);
+    m_tokenUnprintable = m_tokenUnprintable || (seen & kUnprintable);
     return n;
 }
 
@@ -123,9 +162,12 @@ void Parser::finishToken(bool lineEnd)
     const QByteArrayView token(m_token.data(), m_length);
     // Built in place (a message is some 200 bytes; copies showed in profiles).
     const Classified c = [&]() -> Classified {
-        if (m_overflow)
+        if (m_overflow) {
+            if (m_hasPending) // a bare CR or W waiting for its argument: said, not lost
+                emitPending(false);
             return {Message::invalid(token, "token longer than 128 bytes, dropped up to the next separator",
                                      Refusal::Overlong)};
+        }
         if (m_hasPending && isBareConfigRead(m_pending) && allDigits(token) && token.size() <= 5) {
             // SatNOGS: `CR 1` is one command.
             m_hasPending = false;
@@ -139,8 +181,9 @@ void Parser::finishToken(bool lineEnd)
         }
         if (m_hasPending)
             emitPending(false);
-        return classify(token);
+        return classify(token, m_tokenUnprintable ? TokenBytes::Unprintable : TokenBytes::Printable);
     }();
+    m_tokenUnprintable = false;
     m_length = 0;
     m_overflow = false;
     if (c.count == 2)
@@ -149,9 +192,17 @@ void Parser::finishToken(bool lineEnd)
     m_previousOnLine = m.op;
     m_previousHadValue = m.hasValue;
 
+    const bool wantsElevation = isGs232(m_dialect) && m.op == Op::Azimuth && m.hasValue && token.size() > 0
+                                && upper(token[0]) == 'W' && c.count == 1;
+    // The common case, a token that ends its line and waits for nothing,
+    // goes out at once rather than through m_pending (one copy, not two).
+    if (lineEnd && !wantsElevation && !isBareConfigRead(m)) {
+        m_pendingWantsElevation = false;
+        deliver(m, true);
+        return;
+    }
     m_pending = m;
-    m_pendingWantsElevation = isGs232(m_dialect) && m.op == Op::Azimuth && m.hasValue && token.size() > 0
-                              && upper(token[0]) == 'W' && c.count == 1;
+    m_pendingWantsElevation = wantsElevation;
     if (lineEnd)
         emitPending(true);
     else
@@ -164,7 +215,7 @@ Message Parser::parseToken(QByteArrayView token, Dialect d)
     return p.classify(token).first;
 }
 
-Parser::Classified Parser::classify(QByteArrayView t) const
+Parser::Classified Parser::classify(QByteArrayView t, TokenBytes bytes) const
 {
     // The byte loop never hands over an empty token, but parseToken() can;
     // both readers look at the first byte.
@@ -176,7 +227,9 @@ Parser::Classified Parser::classify(QByteArrayView t) const
         return classifyMicro2g(t);
     if (isSpid(m_dialect))
         return {Message::invalid(t, "SPID is read as binary frames, not tokens")};
-    if (!isPrintable(t))
+    // The byte loop has looked at every byte already; a token on its own
+    // (parseToken) is looked at here.
+    if (bytes == TokenBytes::Unprintable || (bytes == TokenBytes::Unchecked && !isPrintable(t)))
         return {Message::invalid(t, "unprintable byte in token")};
     if (isGs232(m_dialect))
         return classifyGs232(t);

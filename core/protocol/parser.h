@@ -105,7 +105,10 @@ private:
     void finishToken(bool lineEnd);
     void emitPending(bool lineEnd);
     void deliver(const Message &m, bool lineEnd);
-    Classified classify(QByteArrayView token) const;
+    // Whether the token's bytes are known to be printable (the byte loop
+    // notes it as it takes them) or must be looked at.
+    enum class TokenBytes { Unchecked, Printable, Unprintable };
+    Classified classify(QByteArrayView token, TokenBytes bytes = TokenBytes::Unchecked) const;
     Message classifyEasycomm(QByteArrayView token) const;
     Classified classifyGs232(QByteArrayView token) const;
     int pushRotctld(char c);
@@ -122,6 +125,7 @@ private:
     std::array<char, InlineText::Capacity> m_token{};
     int m_length = 0;
     bool m_overflow = false;
+    bool m_tokenUnprintable = false; // a byte outside printable ASCII was taken into m_token
     // A token ended by a space waits here until the next byte tells whether
     // its line ended, so that `AZ EL \n` is known to be one line.
     Message m_pending;

@@ -356,6 +356,14 @@ void ParserTest::overlongTokenIsDroppedOnce()
     again.feed(QByteArray(200, 'B') + ' ', [](const Message &) {});
     again.feed("X", [&](const Message &m) { kind = m.refusal; });
     QCOMPARE(kind, Refusal::Overlong);
+
+    // A bare CR waiting for its register, then an overlong token: both are
+    // said, in order; the CR is not lost under the long one.
+    Parser satnogs(Dialect::SatNogs);
+    const QStringList both = parseAll(satnogs, "CR " + QByteArray(200, 'C') + "\n");
+    QCOMPARE(both.size(), 2);
+    QVERIFY2(both[0].contains("CR"), qPrintable(both.join(" / ")));
+    QVERIFY2(both[1].startsWith("unreadable input 'CCCC"), qPrintable(both.join(" / ")));
 }
 
 void ParserTest::nulBytesAreRefused()
