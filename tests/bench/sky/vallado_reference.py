@@ -9,10 +9,12 @@ passes its own), near-earth and deep-space apart, states per CPU-second of
 this thread. python3-sgp4 runs Vallado's C++ when it was built with its
 extension (`accelerated`); the loop over the times then runs in C++
 (Satrec.sgp4_array), and Vallado's integrator carries its resonance state
-from one time to the next as it does in any caller. A short grid is given
-to each call several times over, as several rounds of bench_sky's loop, so
-Python's cost per call (a few microseconds) is spread over 2000 states or
-more.
+from one time to the next as it does in any caller. Each set gets as many
+rounds of the grid in a row as make 2000 states, then the next set, as in
+bench_sky; each call is given 2000 times (a long grid in pieces: the
+integrator's state is the Satrec's, so it goes on across calls). That
+spreads Python's cost per call (a few microseconds) thin, and keeps the
+output arrays as small for one grid as for the other.
 
 A pure-Python python3-sgp4 (Debian 12's is: its package has no extension)
 would time Python, not Vallado's C++, so this says so and measures nothing.
@@ -53,7 +55,9 @@ def states_per_second(satellites, minutes):
     calls = []
     for s in satellites:
         fr = np.tile(s.jdsatepochF + minutes / 1440.0, rounds)
-        calls.append((s, np.full(fr.shape, s.jdsatepoch), fr))
+        jd = np.full(fr.shape, s.jdsatepoch)
+        for start in range(0, len(fr), STATES_PER_CALL):
+            calls.append((s, jd[start:start + STATES_PER_CALL], fr[start:start + STATES_PER_CALL]))
     states = 0
     wall_start = time.perf_counter()
     cpu_start = time.thread_time()
