@@ -197,6 +197,12 @@ QList<Pass> scanPasses(const ElevationFunction &f, const PassWindow &window, con
 
 bool observeSatellite(const Sgp4 &satellite, const Station &station, double julian, LookAngles *out)
 {
+    Sgp4Propagator once(satellite);
+    return observeSatellite(once, station, julian, out);
+}
+
+bool observeSatellite(Sgp4Propagator &satellite, const Station &station, double julian, LookAngles *out)
+{
     const Sgp4State s = satellite.propagateToJulian(julian);
     if (!s.ok())
         return false;
@@ -242,8 +248,12 @@ QList<Pass> predictPasses(const Sgp4 &satellite, const Station &station, const P
     const double perigeeRate = meanMotionRadS * (1.0 + e) * (1.0 + e) / std::pow(1.0 - e * e, 1.5);
     const double groundRate = (perigeeRate + kEarthRotationRadS) * 1.05;
 
+    // The scan asks for times mostly in order: a deep-space set's resonance
+    // integration goes on from one to the next. This call's own, so the
+    // Sgp4 may be scanned on several threads at once.
+    Sgp4Propagator propagator(satellite);
     const ElevationFunction f = [&](double julian) {
-        const Sgp4State s = satellite.propagateToJulian(julian);
+        const Sgp4State s = propagator.propagateToJulian(julian);
         if (!s.ok())
             return ElevationSample{-90.0, 0.0, 0.0};
         const EarthFixedState fixed = temeStateToEarthFixed(s.positionKm, s.velocityKmS, julian);
@@ -273,7 +283,7 @@ QList<Pass> predictPasses(const Sgp4 &satellite, const Station &station, const P
         const int samples = 4;
         for (int i = 0; i <= samples && !p.sunlit; ++i) {
             const double julian = p.aos.julian + (p.los.julian - p.aos.julian) * i / samples;
-            const Sgp4State s = satellite.propagateToJulian(julian);
+            const Sgp4State s = propagator.propagateToJulian(julian);
             p.sunlit = s.ok() && isSunlit(s.positionKm, sun);
         }
     }

@@ -15,6 +15,7 @@
 // passes are of no use to a rotator anyway.
 
 #include "sgp4.h"
+#include "sgp4propagator.h"
 #include "station.h"
 #include "sunmoon.h"
 #include "tle.h"
@@ -92,5 +93,7 @@ QList<Pass> scanPasses(const ElevationFunction &elevation, const PassWindow &win
 
 // The satellite's look angles at a time; false when it cannot be propagated.
 bool observeSatellite(const Sgp4 &satellite, const Station &station, double julian, LookAngles *out);
+// The same for one of a run of times: the propagator carries what it can to the next.
+bool observeSatellite(Sgp4Propagator &satellite, const Station &station, double julian, LookAngles *out);
 
 } // namespace slew::sky

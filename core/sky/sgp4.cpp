@@ -487,6 +487,10 @@ void Sgp4::initialiseDeepSpace(double epochSince1950)
         r.rateOffset = m_meanAnomalyRate + (m_argPerigeeRate + m_nodeRate) - kSiderealRate + m_deepSecular.meanAnomaly
                        + m_deepSecular.argPerigee + m_deepSecular.node - n0;
     }
+    // Every integration starts here, so its rates are worked out once.
+    m_resonanceAtEpoch.lambda = r.lambdaAtEpoch;
+    m_resonanceAtEpoch.meanMotion = n0;
+    resonanceRates(m_resonanceAtEpoch);
 }
 
 void Sgp4::addThirdBodyPeriodics(double t, MeanElements &e) const
@@ -531,62 +535,69 @@ void Sgp4::addThirdBodyPeriodics(double t, MeanElements &e) const
     e.argPerigee = longitude - e.meanAnomaly - cosI * e.node;
 }
 
-void Sgp4::integrateResonance(double t, MeanElements &e, double &meanMotion) const
+void Sgp4::resonanceRates(ResonancePoint &p) const
+{
+    const Resonance &r = m_resonance;
+    const double lambda = p.lambda;
+    p.lambdaDot = p.meanMotion + r.rateOffset;
+    if (r.kind == 1) {
+        constexpr double kFasx2 = 0.13130908, kFasx4 = 2.8843198, kFasx6 = 0.37448087;
+        p.meanMotionDot = r.del1 * std::sin(lambda - kFasx2) + r.del2 * std::sin(2.0 * (lambda - kFasx4))
+                          + r.del3 * std::sin(3.0 * (lambda - kFasx6));
+        p.meanMotionDdot = (r.del1 * std::cos(lambda - kFasx2) + 2.0 * r.del2 * std::cos(2.0 * (lambda - kFasx4))
+                            + 3.0 * r.del3 * std::cos(3.0 * (lambda - kFasx6)))
+                           * p.lambdaDot;
+        return;
+    }
+    constexpr double kG22 = 5.7686396, kG32 = 0.95240898, kG44 = 1.8014998, kG52 = 1.0508330, kG54 = 4.4108898;
+    const double w = m_epoch.argPerigee + m_argPerigeeRate * p.time;
+    const double w2 = 2.0 * w;
+    const double l2 = 2.0 * lambda;
+    p.meanMotionDot = r.d2201 * std::sin(w2 + lambda - kG22) + r.d2211 * std::sin(lambda - kG22)
+                      + r.d3210 * std::sin(w + lambda - kG32) + r.d3222 * std::sin(-w + lambda - kG32)
+                      + r.d4410 * std::sin(w2 + l2 - kG44) + r.d4422 * std::sin(l2 - kG44)
+                      + r.d5220 * std::sin(w + lambda - kG52) + r.d5232 * std::sin(-w + lambda - kG52)
+                      + r.d5421 * std::sin(w + l2 - kG54) + r.d5433 * std::sin(-w + l2 - kG54);
+    p.meanMotionDdot = (r.d2201 * std::cos(w2 + lambda - kG22) + r.d2211 * std::cos(lambda - kG22)
+                        + r.d3210 * std::cos(w + lambda - kG32) + r.d3222 * std::cos(-w + lambda - kG32)
+                        + r.d5220 * std::cos(w + lambda - kG52) + r.d5232 * std::cos(-w + lambda - kG52)
+                        + 2.0
+                              * (r.d4410 * std::cos(w2 + l2 - kG44) + r.d4422 * std::cos(l2 - kG44)
+                                 + r.d5421 * std::cos(w + l2 - kG54) + r.d5433 * std::cos(-w + l2 - kG54)))
+                       * p.lambdaDot;
+}
+
+void Sgp4::integrateResonance(double t, ResonancePoint &carried, MeanElements &e, double &meanMotion) const
 {
     // The resonant terms have no closed form: the mean longitude λ and the
-    // mean motion are integrated with a second-order Taylor step of half a
-    // day from epoch. Starting from epoch every time keeps the result a
-    // function of t alone (the 2006 revision's fix of the original's
-    // dependence on the previous call).
-    const Resonance &r = m_resonance;
-    const double n0 = m_epoch.meanMotion;
+    // mean motion are integrated with second-order Taylor steps of half a
+    // day from epoch towards t, then a Taylor series from the last point to
+    // t. The points lie at whole steps from epoch whatever t is asked for,
+    // so the state is a function of t alone (the 2006 revision's fix of the
+    // original's dependence on the previous call). That also makes a point
+    // reached on the way to an earlier t as good a start as epoch, with
+    // bit-for-bit the same result, as long as it lies between epoch and t:
+    // the steps cannot be run backwards exactly, so a t on the other side
+    // of epoch, or nearer to it, starts again from epoch, as the revision's
+    // own code does.
     constexpr double kStep = 720.0;
-    const double theta = wrapTwoPi(m_gmstAtEpoch + t * kSiderealRate);
+    const bool onTheWay = t * carried.time > 0.0 && std::fabs(t) >= std::fabs(carried.time);
+    ResonancePoint p = onTheWay ? carried : m_resonanceAtEpoch;
     const double step = t > 0 ? kStep : -kStep;
-
-    double lambda = r.lambdaAtEpoch;
-    double n = n0;
-    double time = 0.0;
-    double nDot = 0, nDdot = 0, lambdaDot = 0;
-    for (;;) {
-        if (r.kind == 1) {
-            constexpr double kFasx2 = 0.13130908, kFasx4 = 2.8843198, kFasx6 = 0.37448087;
-            nDot = r.del1 * std::sin(lambda - kFasx2) + r.del2 * std::sin(2.0 * (lambda - kFasx4))
-                   + r.del3 * std::sin(3.0 * (lambda - kFasx6));
-            lambdaDot = n + r.rateOffset;
-            nDdot = (r.del1 * std::cos(lambda - kFasx2) + 2.0 * r.del2 * std::cos(2.0 * (lambda - kFasx4))
-                     + 3.0 * r.del3 * std::cos(3.0 * (lambda - kFasx6)))
-                    * lambdaDot;
-        } else {
-            constexpr double kG22 = 5.7686396, kG32 = 0.95240898, kG44 = 1.8014998, kG52 = 1.0508330,
-                             kG54 = 4.4108898;
-            const double w = m_epoch.argPerigee + m_argPerigeeRate * time;
-            const double w2 = 2.0 * w;
-            const double l2 = 2.0 * lambda;
-            nDot = r.d2201 * std::sin(w2 + lambda - kG22) + r.d2211 * std::sin(lambda - kG22)
-                   + r.d3210 * std::sin(w + lambda - kG32) + r.d3222 * std::sin(-w + lambda - kG32)
-                   + r.d4410 * std::sin(w2 + l2 - kG44) + r.d4422 * std::sin(l2 - kG44)
-                   + r.d5220 * std::sin(w + lambda - kG52) + r.d5232 * std::sin(-w + lambda - kG52)
-                   + r.d5421 * std::sin(w + l2 - kG54) + r.d5433 * std::sin(-w + l2 - kG54);
-            lambdaDot = n + r.rateOffset;
-            nDdot = (r.d2201 * std::cos(w2 + lambda - kG22) + r.d2211 * std::cos(lambda - kG22)
-                     + r.d3210 * std::cos(w + lambda - kG32) + r.d3222 * std::cos(-w + lambda - kG32)
-                     + r.d5220 * std::cos(w + lambda - kG52) + r.d5232 * std::cos(-w + lambda - kG52)
-                     + 2.0
-                           * (r.d4410 * std::cos(w2 + l2 - kG44) + r.d4422 * std::cos(l2 - kG44)
-                              + r.d5421 * std::cos(w + l2 - kG54) + r.d5433 * std::cos(-w + l2 - kG54)))
-                    * lambdaDot;
-        }
-        if (std::fabs(t - time) < kStep)
-            break;
-        lambda += lambdaDot * step + nDot * kStep * kStep / 2.0;
-        n += nDot * step + nDdot * kStep * kStep / 2.0;
-        time += step;
+    while (std::fabs(t - p.time) >= kStep) {
+        p.lambda += p.lambdaDot * step + p.meanMotionDot * kStep * kStep / 2.0;
+        p.meanMotion += p.meanMotionDot * step + p.meanMotionDdot * kStep * kStep / 2.0;
+        p.time += step;
+        resonanceRates(p);
     }
-    const double ft = t - time;
-    meanMotion = n + nDot * ft + nDdot * ft * ft * 0.5;
-    const double longitude = lambda + lambdaDot * ft + nDot * ft * ft * 0.5;
-    e.meanAnomaly = r.kind == 1 ? longitude - e.node - e.argPerigee + theta : longitude - 2.0 * e.node + 2.0 * theta;
+    carried = p;
+
+    const double ft = t - p.time;
+    meanMotion = p.meanMotion + p.meanMotionDot * ft + p.meanMotionDdot * ft * ft * 0.5;
+    const double longitude = p.lambda + p.lambdaDot * ft + p.meanMotionDot * ft * ft * 0.5;
+    const double theta = wrapTwoPi(m_gmstAtEpoch + t * kSiderealRate);
+    e.meanAnomaly = m_resonance.kind == 1 ? longitude - e.node - e.argPerigee + theta
+                                          : longitude - 2.0 * e.node + 2.0 * theta;
 }
 
 double Sgp4::minutesSinceEpoch(double julianDate) const
@@ -600,6 +611,12 @@ Sgp4State Sgp4::propagateToJulian(double julianDate) const
 }
 
 Sgp4State Sgp4::propagate(double t) const
+{
+    ResonancePoint fromEpoch; // at time 0: never taken as a start, so epoch's is used
+    return propagate(t, fromEpoch);
+}
+
+Sgp4State Sgp4::propagate(double t, ResonancePoint &carried) const
 {
     // Secular gravity and drag.
     const double meanAnomalyDf = m_epoch.meanAnomaly + m_meanAnomalyRate * t;
@@ -636,7 +653,7 @@ Sgp4State Sgp4::propagate(double t) const
         m.node += m_deepSecular.node * t;
         m.meanAnomaly += m_deepSecular.meanAnomaly * t;
         if (m_resonance.kind != 0)
-            integrateResonance(t, m, meanMotion);
+            integrateResonance(t, carried, m, meanMotion);
     }
 
     Sgp4State state;

@@ -5,7 +5,7 @@
 // corrections of Vallado, Crawford, Hujsak & Kelso, "Revisiting Spacetrack
 // Report #3" (AIAA 2006-6753): WGS-72 constants, the "improved" operation
 // mode, the Lyddane choice for low inclinations and the resonance integrator
-// restarted from epoch. Elements must be propagated with the same model that
+// stepped from epoch. Elements must be propagated with the same model that
 // fitted them, so the constants here are not a choice.
 //
 // Orbits with periods of 225 minutes or more get the deep-space terms: the
@@ -13,12 +13,16 @@
 // 12-hour and 24-hour orbits with the earth's gravity field.
 //
 // A propagator is built once per element set and is then a pure function of
-// time: propagate() is const and safe to call from any thread.
+// time: propagate() is const and safe to call from any thread. For one set
+// at many times in a row, Sgp4Propagator (sgp4propagator.h) carries the
+// resonance integration from one call to the next, with the same results.
 
 #include "skyvector.h"
 #include "tle.h"
 
 namespace slew::sky {
+
+class Sgp4Propagator;
 
 enum class Sgp4Error {
     None = 0,
@@ -76,12 +80,26 @@ public:
     struct DeepSecular {      // secular rates from the sun and moon, rad/min
         double eccentricity = 0, inclination = 0, meanAnomaly = 0, argPerigee = 0, node = 0;
     };
+    // One point of the resonance integration: the mean longitude λ and the
+    // mean motion a whole number of half-day steps from epoch, with their
+    // rates there (which the next step and the Taylor series to t both use).
+    struct ResonancePoint {
+        double time = 0;      // minutes from epoch
+        double lambda = 0, meanMotion = 0;
+        double lambdaDot = 0, meanMotionDot = 0, meanMotionDdot = 0;
+    };
 
 private:
+    friend class Sgp4Propagator;
+    // The state at t, the resonance integration going on from `carried`
+    // when that is on the way from epoch to t, else from epoch; `carried`
+    // is left at the last point reached.
+    Sgp4State propagate(double minutesSinceEpoch, ResonancePoint &carried) const;
     void initialiseNearEarth(double perigeeKm);
     void initialiseDeepSpace(double epochSince1950);
     void addThirdBodyPeriodics(double t, MeanElements &e) const;
-    void integrateResonance(double t, MeanElements &e, double &meanMotionChange) const;
+    void resonanceRates(ResonancePoint &p) const;
+    void integrateResonance(double t, ResonancePoint &carried, MeanElements &e, double &meanMotion) const;
     Sgp4State positionAndVelocity(const MeanElements &m, double semiMajorAxis, double meanMotion) const;
 
     Tle m_tle;
@@ -109,6 +127,7 @@ private:
     ThirdBody m_sun, m_moon;
     DeepSecular m_deepSecular;
     Resonance m_resonance;
+    ResonancePoint m_resonanceAtEpoch; // where every integration starts
 };
 
 // Greenwich mean sidereal time, IAU-82 (radians, 0..2π), for a UT1 Julian date.

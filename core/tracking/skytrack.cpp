@@ -29,10 +29,11 @@ QList<SkyPoint> sampleSatellitePass(const sky::Sgp4 &satellite, const sky::Stati
     if (!sampleable(duration, stepSeconds))
         return points;
     const int steps = int(std::ceil(duration / stepSeconds));
+    sky::Sgp4Propagator propagator(satellite); // the times go forward: each goes on from the last
     for (int i = 0; i <= steps; ++i) {
         const double seconds = std::min(i * stepSeconds, duration);
         sky::LookAngles look;
-        if (!sky::observeSatellite(satellite, station, pass.aos.julian + seconds / sky::kSecondsPerDay, &look))
+        if (!sky::observeSatellite(propagator, station, pass.aos.julian + seconds / sky::kSecondsPerDay, &look))
             continue;
         points.append(SkyPoint{seconds, look.azimuthDeg, look.elevationDeg});
     }

@@ -119,8 +119,10 @@ std::optional<TrackTarget> TrackTarget::parseFixedOrCelestial(const QString &spe
 
 TargetSky::TargetSky(const TrackTarget &target) : m_target(target)
 {
-    if (target.kind == TrackTarget::Kind::Satellite)
+    if (target.kind == TrackTarget::Kind::Satellite) {
         m_satellite = std::make_shared<const sky::Sgp4>(target.elements);
+        m_ticking.emplace(*m_satellite);
+    }
 }
 
 QList<sky::Pass> TargetSky::passes(const sky::Station &station, const sky::PassWindow &window) const
@@ -179,11 +181,11 @@ QList<SkyPoint> TargetSky::sample(const sky::Station &station, const sky::Pass &
                          pass.los.julian, m_target.isFixed() ? kFixedStepS : kSkyStepS);
 }
 
-std::optional<sky::LookAngles> TargetSky::lookAt(const sky::Station &station, double julian) const
+std::optional<sky::LookAngles> TargetSky::lookAt(const sky::Station &station, double julian)
 {
     sky::LookAngles look;
-    if (m_satellite) {
-        if (!sky::observeSatellite(*m_satellite, station, julian, &look))
+    if (m_ticking) {
+        if (!sky::observeSatellite(*m_ticking, station, julian, &look))
             return std::nullopt;
         return look;
     }

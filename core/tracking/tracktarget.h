@@ -60,12 +60,15 @@ public:
     // planner reads it: seconds from `fromJulian`.
     QList<SkyPoint> sample(const sky::Station &station, const sky::Pass &pass, double fromJulian) const;
     // Where the target is at `julian`; a satellite's range and range rate
-    // too. Empty when a satellite cannot be propagated.
-    std::optional<sky::LookAngles> lookAt(const sky::Station &station, double julian) const;
+    // too. Empty when a satellite cannot be propagated. Asked every tick, so
+    // a satellite's propagation carries on from the last call: not const,
+    // and for one thread at a time (a copy has its own).
+    std::optional<sky::LookAngles> lookAt(const sky::Station &station, double julian);
 
 private:
     TrackTarget m_target;
     std::shared_ptr<const sky::Sgp4> m_satellite; // built once: SGP4 set-up is not free
+    std::optional<sky::Sgp4Propagator> m_ticking; // lookAt's, on *m_satellite (which every copy shares)
 };
 
 } // namespace slew::tracking

@@ -1,15 +1,21 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Sky benchmarks on one core: SGP4 states per second (near-earth and
 // deep-space sets from the real snapshot in tests/data) and pass prediction
-// for 200 satellites over 7 days. Prints the figures README records.
+// for 200 satellites over 7 days. Prints the figures README records, and
+// beside them Vallado's C++ SGP4 timed the same way (vallado_reference.py,
+// through python3-sgp4 when it has its C++ extension).
 
 #include "sky/passes.h"
 #include "sky/sgp4.h"
+#include "sky/sgp4propagator.h"
 #include "sky/tle.h"
 
+#include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QProcess>
 
+#include <algorithm>
 #include <cstdio>
 #include <ctime>
 
@@ -26,8 +32,40 @@ double threadCpuSeconds()
     return t.tv_sec + t.tv_nsec / 1e9;
 }
 
-// States per CPU second over the given sets, each propagated across ±1 day.
-double statesPerSecond(const QList<Sgp4> &sats, double *checksum)
+// The times each set is propagated at, in order: `count` of them evenly
+// from -halfSpan to just short of +halfSpan minutes about its epoch. A day
+// either side is where element sets are mostly used; ten days either side
+// is where a deep-space set's resonance integration, stepping half a day
+// at a time from epoch, costs the most. vallado_reference.py takes the same
+// two numbers.
+//
+// Each set goes over its grid as many rounds in a row as make 2000 states
+// (ten of the short grid, one of the long), then the next set: one set
+// asked for a run of times, as a pass scan asks, and the order the
+// reference calls Vallado's code in, 2000 states a call to keep Python's
+// share small. (Going round all the sets one grid at a time instead costs
+// Slew's figures 10-15 % in cache misses.)
+struct TimeGrid {
+    int count;
+    double halfSpanMinutes;
+    double at(int i) const { return -halfSpanMinutes + i * (2.0 * halfSpanMinutes / count); }
+    int roundsPerSet() const { return std::max(1, 2000 / count); }
+    QString label() const
+    {
+        const double days = halfSpanMinutes / 1440.0;
+        return QStringLiteral("%1 times over +-%2 %3").arg(count).arg(days).arg(days == 1.0 ? "day" : "days");
+    }
+};
+constexpr TimeGrid kGrids[] = {{200, 1440.0}, {10000, 14400.0}};
+
+// How each set is propagated across the grid: as a caller with a run of
+// times does (Sgp4Propagator: the resonance integration carried from one
+// time to the next), or one-off calls that each integrate from epoch.
+enum class Calls { Carried, OneOff };
+
+// States per CPU-second over the given sets, each at every time of the grid,
+// for about a second and a half.
+double statesPerSecond(const QList<Sgp4> &sats, const TimeGrid &grid, Calls calls, double *checksum)
 {
     if (sats.isEmpty())
         return 0;
@@ -37,22 +75,46 @@ double statesPerSecond(const QList<Sgp4> &sats, double *checksum)
     long states = 0;
     double sum = 0;
     while (timer.elapsed() < 1500) {
-        for (const Sgp4 &s : sats) {
-            for (int i = 0; i < 200; ++i) {
-                const Sgp4State st = s.propagate(-1440.0 + i * 14.4);
-                sum += st.positionKm.x;
+        for (qsizetype k = 0; k < sats.size() && timer.elapsed() < 1500; ++k) {
+            const Sgp4 &s = sats[k];
+            Sgp4Propagator propagator(s);
+            for (int round = 0; round < grid.roundsPerSet(); ++round) {
+                for (int i = 0; i < grid.count; ++i) {
+                    const double t = grid.at(i);
+                    const Sgp4State st = calls == Calls::Carried ? propagator.propagate(t) : s.propagate(t);
+                    sum += st.positionKm.x;
+                }
+                states += grid.count;
             }
-            states += 200;
         }
     }
     *checksum += sum;
     return states / (threadCpuSeconds() - cpuStart);
 }
 
+// Vallado's C++ over the same sets and grids, in the same run, so the two
+// see the same load. Debian's python3 is the one python3-sgp4 installs into;
+// a build of it with the C++ extension is found through PYTHONPATH.
+void printValladoReference(const QString &tleFile)
+{
+    QStringList arguments{QStringLiteral(SLEW_BENCH_SKY_DIR "/vallado_reference.py"), tleFile};
+    for (const TimeGrid &grid : kGrids)
+        arguments << QStringLiteral("%1:%2").arg(grid.count).arg(grid.halfSpanMinutes);
+    QProcess python;
+    python.setProcessChannelMode(QProcess::ForwardedErrorChannel);
+    python.start(QStringLiteral("/usr/bin/python3"), arguments);
+    if (!python.waitForFinished(300000)) {
+        std::printf("Vallado reference: not measured (%s)\n", qPrintable(python.errorString()));
+        return;
+    }
+    std::fputs(python.readAllStandardOutput().constData(), stdout);
+}
+
 } // namespace
 
-int main()
+int main(int argc, char **argv)
 {
+    QCoreApplication app(argc, argv); // for QProcess
     QFile file(QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"));
     if (!file.open(QIODevice::ReadOnly)) {
         std::fprintf(stderr, "bench_sky: cannot read %s\n", qPrintable(file.fileName()));
@@ -67,10 +129,17 @@ int main()
         (s.isDeepSpace() ? deepSpace : nearEarth).append(s);
     }
     double checksum = 0;
-    const double near = statesPerSecond(nearEarth, &checksum);
-    const double deep = statesPerSecond(deepSpace, &checksum);
-    std::printf("SGP4 near-earth: %.3g states/s (%d sets)\n", near, int(nearEarth.size()));
-    std::printf("SDP4 deep-space: %.3g states/s (%d sets, within a day of epoch)\n", deep, int(deepSpace.size()));
+    for (const TimeGrid &grid : kGrids) {
+        const double near = statesPerSecond(nearEarth, grid, Calls::Carried, &checksum);
+        const double deep = statesPerSecond(deepSpace, grid, Calls::Carried, &checksum);
+        const double deepOneOff = statesPerSecond(deepSpace, grid, Calls::OneOff, &checksum);
+        const QByteArray label = grid.label().toUtf8();
+        std::printf("SGP4 near-earth, %s: %.3g states/s (%d sets)\n", label.constData(), near, int(nearEarth.size()));
+        std::printf("SDP4 deep-space, %s: %.3g states/s (%d sets); one-off calls, each from epoch: %.3g\n",
+                    label.constData(), deep, int(deepSpace.size()), deepOneOff);
+    }
+    std::fflush(stdout);
+    printValladoReference(file.fileName());
 
     // 200 satellites as they come in the file (a mix of LEO, MEO, GEO and
     // Molniya orbits), over a week from the snapshot's newest epoch.
