@@ -237,6 +237,7 @@ QString sgp4ErrorText(Sgp4Error error)
     case Sgp4Error::PerturbedEccentricity: return QStringLiteral("perturbed eccentricity out of range");
     case Sgp4Error::SemiLatusRectum: return QStringLiteral("semi-latus rectum below zero");
     case Sgp4Error::Decayed: return QStringLiteral("decayed: the orbit is inside the earth");
+    case Sgp4Error::TimeOutOfRange: return QStringLiteral("time not finite, or over 100 years from the epoch");
     }
     return QStringLiteral("unknown error");
 }
@@ -618,6 +619,11 @@ Sgp4State Sgp4::propagate(double t) const
 
 Sgp4State Sgp4::propagate(double t, ResonancePoint &carried) const
 {
+    if (!std::isfinite(t) || std::abs(t) > kMaxYearsFromEpoch * 365.25 * kMinutesPerDay) {
+        Sgp4State refused;
+        refused.error = Sgp4Error::TimeOutOfRange;
+        return refused;
+    }
     // Secular gravity and drag.
     const double meanAnomalyDf = m_epoch.meanAnomaly + m_meanAnomalyRate * t;
     const double argPerigeeDf = m_epoch.argPerigee + m_argPerigeeRate * t;

@@ -31,7 +31,13 @@ enum class Sgp4Error {
     PerturbedEccentricity = 3, // eccentricity after lunar-solar periodics left [0, 1]
     SemiLatusRectum = 4,       // the orbit degenerated (p < 0)
     Decayed = 6,               // the position is below the earth's surface
+    TimeOutOfRange = 7,        // not a finite time, or more than kMaxYearsFromEpoch from the epoch
 };
+
+// The furthest from its epoch a set is propagated: far beyond any use of a
+// set, and it bounds the deep-space resonance integration (half-day steps)
+// to some 73,000 steps rather than looping for ever on a time like 1e300.
+constexpr double kMaxYearsFromEpoch = 100.0;
 
 QString sgp4ErrorText(Sgp4Error error);
 

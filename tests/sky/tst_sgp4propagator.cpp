@@ -13,6 +13,8 @@
 #include <QRandomGenerator>
 #include <QTest>
 
+#include <limits>
+
 #include <cmath>
 
 using namespace slew::sky;
@@ -84,7 +86,26 @@ class TestSgp4Propagator : public QObject {
 private slots:
     void carriedIntegrationMatchesFromEpoch();
     void propagatorsOfOneSetAreIndependent();
+    void aTimeThatIsNoTimeIsRefusedAtOnce();
 };
+
+void TestSgp4Propagator::aTimeThatIsNoTimeIsRefusedAtOnce()
+{
+    // The resonance integration steps half a day at a time: an infinite or
+    // absurd time once looped for ever. Now each is refused, carried or not.
+    const QList<Tle> sets = resonantSets();
+    QVERIFY(!sets.isEmpty());
+    const Sgp4 sgp4(sets.first());
+    Sgp4Propagator carried(sgp4);
+    for (double t : {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+                     std::numeric_limits<double>::quiet_NaN(), 1e300, -1e300, 101 * 365.25 * 1440.0}) {
+        QCOMPARE(int(sgp4.propagate(t).error), int(Sgp4Error::TimeOutOfRange));
+        QCOMPARE(int(carried.propagate(t).error), int(Sgp4Error::TimeOutOfRange));
+    }
+    // A century is still a time, and the carried state still agrees after.
+    QVERIFY(sgp4.propagate(99 * 365.25 * 1440.0).error != Sgp4Error::TimeOutOfRange);
+    QVERIFY(difference(carried.propagate(720.0), sgp4.propagate(720.0)) <= 1e-9);
+}
 
 void TestSgp4Propagator::carriedIntegrationMatchesFromEpoch()
 {
