@@ -283,6 +283,10 @@ QByteArray RotctldServer::answer(Client &c, const QByteArray &line)
     emit commandReceived(c.info.peer, c.info.lastCommand);
 
     const RotctldRequest r = parseRotctldLine(line);
+    // A tracker that asks or steers wants fresh positions: the session
+    // polls at the full rate while one does (session/pollpace.h).
+    if (r.kind != Kind::Unknown && r.kind != Kind::Malformed)
+        m_session->wakePolling();
     if (m_logCommands && r.kind != Kind::GetPosition && r.kind != Kind::Unknown && r.kind != Kind::Malformed)
         logClient(c, tr("rotctld %1: %2").arg(c.info.peer, c.info.lastCommand));
     const auto &profile = m_session->profile();
