@@ -55,9 +55,12 @@ public:
     void advanceTo(double t);
     void advanceBy(double seconds) { advanceTo(m_requestedTime + seconds); }
     double time() const { return m_time; }
-    // Nothing left to happen until a command: both axes were at a standstill
-    // when last advanced, and the motors as cool as the present load keeps
-    // them (to the hundredth of a degree the temperature input reports).
+    // Both axes were at a standstill when last advanced: only the motors'
+    // temperature may still change until a command.
+    bool standingStill() const { return m_standstill; }
+    // Nothing left to happen until a command: standing still, and the
+    // motors as cool as the present load keeps them (to the hundredth of a
+    // degree the temperature input reports).
     bool atRest() const;
 
     // Commands. Angles outside the limits are refused (false) and move nothing.

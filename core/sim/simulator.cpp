@@ -22,7 +22,6 @@ Simulator::Simulator(const SimulatorOptions &options, QObject *parent)
         emit ticked();
     });
     m_pushTick.setTimerType(Qt::PreciseTimer);
-    m_pushTick.setInterval(kPushTickMs);
     connect(&m_pushTick, &QTimer::timeout, this, &Simulator::pushTick);
     // Load a kept state now, so that a bad file is known before a host connects.
     if (options.dialect == protocol::Dialect::Micro2g || !options.stateFile.isEmpty())
@@ -55,8 +54,13 @@ void Simulator::removePushListener()
 
 void Simulator::noteInput()
 {
-    if (m_pushListeners > 0 && !m_clock.isManual() && !m_pushTick.isActive())
-        m_pushTick.start();
+    if (m_pushListeners == 0 || m_clock.isManual())
+        return;
+    // A command may set the rotator moving: pushes at the full pace again.
+    // A tick already at that pace is left to run, or a stream of input
+    // would put it off for ever.
+    if (!m_pushTick.isActive() || m_pushTick.interval() != kPushTickMs)
+        m_pushTick.start(kPushTickMs);
 }
 
 void Simulator::pushTick()
@@ -64,9 +68,12 @@ void Simulator::pushTick()
     syncToNow();
     emit ticked();
     // At rest nothing changes for a push to tell: no tick until input
-    // arrives. (A Micro-2g line pushes nothing.)
+    // arrives. Standing still, only a cooling motor's temperature moves, a
+    // hundredth of a degree in seconds. (A Micro-2g line pushes nothing.)
     if (m_rotator.atRest())
         m_pushTick.stop();
+    else if (m_rotator.standingStill() && m_pushTick.interval() != kCoolingTickMs)
+        m_pushTick.start(kCoolingTickMs);
 }
 
 Micro2gController &Simulator::micro2g()

@@ -37,10 +37,12 @@ public:
 
     // A connection that pushes changes unsolicited (the Easycomm III
     // derivative's controller) needs the rotator run while it changes: on
-    // the wall clock, ticked() then comes every kPushTickMs until the
-    // rotator is at rest (SimulatedRotator::atRest). Counted, one a
-    // connection.
+    // the wall clock, ticked() then comes every kPushTickMs while it moves,
+    // every kCoolingTickMs while only a motor's temperature still drifts,
+    // and not at all once the rotator is at rest (SimulatedRotator::atRest).
+    // Counted, one a connection.
     static constexpr int kPushTickMs = 25;
+    static constexpr int kCoolingTickMs = 1000;
     void addPushListener();
     void removePushListener();
     // The firmware was just given input: a command may have set the
