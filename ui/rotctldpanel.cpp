@@ -197,7 +197,7 @@ void RotctldPanel::refreshClients()
         auto *item = new QTreeWidgetItem(m_clients);
         item->setText(0, c.peer);
         item->setText(1, c.lastCommand);
-        item->setText(2, c.lastSeen.toString(QStringLiteral("HH:mm:ss")));
+        item->setText(2, c.lastSeen.toLocalTime().toString(QStringLiteral("HH:mm:ss")));
         item->setText(3, QString::number(c.commands));
     }
 }

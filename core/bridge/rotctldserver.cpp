@@ -140,7 +140,7 @@ void RotctldServer::onClientArrived(QTcpSocket *s)
     Client c;
     c.socket = s;
     c.info.peer = peerName(s);
-    c.info.lastSeen = QDateTime::currentDateTime();
+    c.info.lastSeen = QDateTime::currentDateTimeUtc();
     c.spare = std::make_shared<transport::SpareSocketHandle>(*s);
     m_clients.insert(s, c);
     connect(s, &QTcpSocket::readyRead, this, [this, s] { onReadyRead(s); });
@@ -240,12 +240,9 @@ void RotctldServer::onReadyRead(QTcpSocket *s)
         return;
     }
     // Every answer of this read leaves in one write: Gpredict reads a `p`
-    // answer with a single recv. Flushed at once, so an answer is on its way
-    // before Qt can read the client's end of input and close the socket.
-    if (!out.isEmpty()) {
-        s->write(out);
-        s->flush();
-    }
+    // answer with a single recv.
+    if (!out.isEmpty())
+        send(c, out);
     if (s->bytesToWrite() > kMaxUnsentAnswers) {
         emit logMessage(tr("rotctld client %1 is not reading its answers; disconnected").arg(c.info.peer));
         c.finished = true;
@@ -259,8 +256,31 @@ void RotctldServer::onReadyRead(QTcpSocket *s)
         });
         return;
     }
-    if (transport::peerFinishedSending(*s))
+    // A client that has finished sending while answers still wait in Qt's
+    // buffer is closed gracefully, once they have left: Qt would drop them
+    // on reading the end of input. With nothing waiting (the answers went
+    // straight out) the end is left to Qt to find, and what the client
+    // sent last is answered through the spare descriptor (onDisconnected):
+    // one system call less for every answer.
+    if (s->bytesToWrite() > 0 && transport::peerFinishedSending(*s))
         finishInput(c);
+}
+
+void RotctldServer::send(Client &c, const QByteArray &out)
+{
+    // Straight to the kernel through the spare descriptor when nothing of
+    // ours waits in Qt's buffer: a write through Qt switches the socket's
+    // write notifier on and off again, and each switch wakes the event
+    // loop once more, for every answer to every tracker. What the kernel
+    // does not take now goes through Qt, flushed at once, so an answer is
+    // on its way before Qt can read the client's end of input and close.
+    qint64 sent = 0;
+    if (c.socket->bytesToWrite() == 0 && c.spare && c.spare->isValid())
+        sent = c.spare->send(out);
+    if (sent < out.size()) {
+        c.socket->write(out.constData() + sent, out.size() - sent);
+        c.socket->flush();
+    }
 }
 
 void RotctldServer::finishInput(Client &c)
@@ -278,11 +298,17 @@ void RotctldServer::finishInput(Client &c)
 QByteArray RotctldServer::answer(Client &c, const QByteArray &line)
 {
     c.info.lastCommand = QString::fromLatin1(line.left(80)).trimmed();
-    c.info.lastSeen = QDateTime::currentDateTime();
+    // UTC: the local time would look up the time zone (a file) for every
+    // answer; the Trackers tab shows it in local time.
+    c.info.lastSeen = QDateTime::currentDateTimeUtc();
     ++c.info.commands;
     emit commandReceived(c.info.peer, c.info.lastCommand);
 
     const RotctldRequest r = parseRotctldLine(line);
+    // A tracker that asks or steers wants fresh positions: the session
+    // polls at the full rate while one does (session/pollpace.h).
+    if (r.kind != Kind::Unknown && r.kind != Kind::Malformed)
+        m_session->wakePolling();
     if (m_logCommands && r.kind != Kind::GetPosition && r.kind != Kind::Unknown && r.kind != Kind::Malformed)
         logClient(c, tr("rotctld %1: %2").arg(c.info.peer, c.info.lastCommand));
     const auto &profile = m_session->profile();

@@ -40,7 +40,7 @@ public:
     struct ClientInfo {
         QString peer;         // "127.0.0.1:53422"
         QString lastCommand;  // the last line received
-        QDateTime lastSeen;
+        QDateTime lastSeen;   // UTC
         int commands = 0;
     };
 
@@ -124,6 +124,8 @@ private:
     // answer the unterminated last line too, then close once all has left.
     void finishInput(Client &client);
     void onDisconnected(QTcpSocket *socket);
+    // Answers to a client, in one write.
+    void send(Client &client, const QByteArray &out);
     QByteArray answer(Client &client, const QByteArray &line);
     // Non-zero (RIG_ENAVAIL) when the request wants elevation from an
     // azimuth-only rotator, which is then logged as refused.

@@ -63,6 +63,8 @@ QString RotatorProfile::validate() const
         return QObject::tr("deadband must be 0° to 10°");
     if (pollHz < 1 || pollHz > 50)
         return QObject::tr("poll rate must be 1 to 50 Hz");
+    if (!(restPollHz >= 0.1 && restPollHz <= pollHz))
+        return QObject::tr("poll rate at rest must be 0.1 Hz to the poll rate (%1 Hz)").arg(pollHz);
     if (!(std::abs(azOffsetDeg) <= 180.0))
         return QObject::tr("azimuth offset must be -180° to 180°");
     if (!(std::abs(elOffsetDeg) <= 20.0))
@@ -92,6 +94,7 @@ QJsonObject RotatorProfile::toJson() const
         {"southStop", southStop},
         {"deadbandDeg", deadbandDeg},
         {"pollHz", pollHz},
+        {"restPollHz", restPollHz},
         {"offsets", QJsonObject{{"az", azOffsetDeg}, {"el", elOffsetDeg}}},
         {"motion", QJsonObject{{"azSpeedDegS", motion.azSpeedDegS}, {"elSpeedDegS", motion.elSpeedDegS},
                                {"azAccelDegS2", motion.azAccelDegS2}, {"elAccelDegS2", motion.elAccelDegS2},
@@ -140,6 +143,7 @@ std::optional<RotatorProfile> RotatorProfile::fromJson(const QJsonObject &o, QSt
         || !readNumber(motion, "responseDelayS", &m.responseDelayS, &err)
         || !readNumber(motion, "trackStepDeg", &m.trackStepDeg, &err)
         || !readNumber(o, "deadbandDeg", &p.deadbandDeg, &err) || !readNumber(o, "pollHz", &poll, &err)
+        || !readNumber(o, "restPollHz", &p.restPollHz, &err)
         || !readGains(o, "azGains", &p.azGains, &err) || !readGains(o, "elGains", &p.elGains, &err))
         return std::nullopt;
     p.pollHz = int(poll);

@@ -49,6 +49,10 @@ struct RotatorProfile {
     std::optional<PidGains> elGains; // CW4..CW6
     double deadbandDeg = 0.5;        // a remote target this close to the last one is not re-sent
     int pollHz = 10;
+    // How often a rotator at rest is polled: nothing moved and nobody asked
+    // for a while (session/pollpace.h). 0.1 Hz to pollHz; the station then
+    // wakes about once a second instead of ten times.
+    double restPollHz = 1.0;
 
     // Calibration: where the antenna points is the controller's reading plus
     // these (found by aligning on the sun or the moon). The session applies

@@ -93,8 +93,36 @@ void RotatorSession::updatePollPace()
         pollMs = std::max(pollMs, 2 * exchangeMs);
         m_replyTimeoutMs = std::max(m_replyTimeoutMs, exchangeMs + 300);
     }
-    m_pollTimer.setInterval(pollMs);
-    m_staleTimer.setInterval(std::max(1500, 3 * pollMs + m_replyTimeoutMs * (m_options.retries + 1)));
+    m_pace.setIntervals(pollMs, int(std::lround(1000.0 / std::max(0.1, m_profile.restPollHz))));
+    retimePolling();
+}
+
+int RotatorSession::staleAfterMs(int pollMs) const
+{
+    // Three polls missed, the last one with all its retries.
+    return std::max(1500, 3 * pollMs + m_replyTimeoutMs * (m_options.retries + 1));
+}
+
+void RotatorSession::retimePolling()
+{
+    m_pollingAtRest = m_pace.resting(nowMs());
+    // Restarted on a change, not only re-set: woken at rest, the next poll
+    // comes one full interval from now, not up to a slow one later. The
+    // stale timer follows, so a rotator polled once a second at rest is
+    // not stale between two polls, and a woken one is missed as soon as
+    // ever. Left alone when nothing changed: a restart would put the stale
+    // alarm off for ever.
+    const int interval = m_pace.intervalMs(nowMs());
+    if (interval != m_pollTimer.interval())
+        m_pollTimer.isActive() ? m_pollTimer.start(interval) : m_pollTimer.setInterval(interval);
+    if (const int stale = staleAfterMs(interval); stale != m_staleTimer.interval())
+        m_staleTimer.isActive() ? m_staleTimer.start(stale) : m_staleTimer.setInterval(stale);
+}
+
+void RotatorSession::wakePolling()
+{
+    m_pace.wake(nowMs());
+    retimePolling();
 }
 
 void RotatorSession::setOptions(const Options &options)
@@ -107,6 +135,20 @@ void RotatorSession::setOptions(const Options &options)
 void RotatorSession::setPolling(bool enabled)
 {
     m_pollingEnabled = enabled;
+    if (m_state != State::Connected)
+        return;
+    // Paused, no poll timer runs: it would only wake the machine to do
+    // nothing. A dialect with a keep-alive sends it instead.
+    if (enabled) {
+        m_keepAliveTimer.stop();
+        m_pace.wake(nowMs());
+        retimePolling();
+        m_pollTimer.start();
+    } else {
+        m_pollTimer.stop();
+        if (protocol::dialectSupports(m_profile.dialect, Op::KeepAlive))
+            m_keepAliveTimer.start();
+    }
 }
 
 qint64 RotatorSession::nowMs() const
@@ -187,12 +229,14 @@ void RotatorSession::onLinkOpened()
     m_pollCount = 0;
     m_textLinesSkipped = 0;
     m_unreadableReplies = 0;
+    m_pace.restart(nowMs()); // a new link: full rate until the rotator is seen at rest
     updatePollPace(); // at the rate of this link's line
     forgetParkRegisters();
     setState(State::Connected, tr("connected to %1").arg(m_uri));
     startProbe();
-    m_pollTimer.start();
-    if (protocol::dialectSupports(m_profile.dialect, Op::KeepAlive))
+    if (m_pollingEnabled)
+        m_pollTimer.start();
+    else if (protocol::dialectSupports(m_profile.dialect, Op::KeepAlive))
         m_keepAliveTimer.start();
 }
 
@@ -290,10 +334,12 @@ void RotatorSession::onFrame(protocol::FrameCheck check, QByteArrayView line)
                              tr("refused a reply with %1: '%2'")
                                  .arg(QString::fromLatin1(protocol::describe(check)), quoted(line.trimmed())));
     }
-    if (m_badFramesInARow == kBadFramesAlarm)
+    if (m_badFramesInARow == kBadFramesAlarm) {
+        wakePolling();
         emit badFramesAlarm(true, tr("%1 replies in a row failed their checksum; last: %2")
                                       .arg(kBadFramesAlarm)
                                       .arg(QString::fromLatin1(protocol::describe(check))));
+    }
 }
 
 void RotatorSession::reportFromController(ControllerLogAllowance::Kind kind, const QString &line)
@@ -315,11 +361,13 @@ void RotatorSession::noteUnreadable(const QString &reason)
 {
     ++m_unreadableReplies;
     const qint64 now = nowMs();
-    if (m_unreadable.noteUnreadable(now))
+    if (m_unreadable.noteUnreadable(now)) {
+        wakePolling();
         emit unreadableRepliesAlarm(true, tr("the controller's replies are unreadable: %1 in the last %2 s (last: %3)")
                                               .arg(m_unreadable.inWindow(now))
                                               .arg(UnreadableReplies::kWindowSeconds)
                                               .arg(reason));
+    }
 }
 
 void RotatorSession::clearUnreadable()
@@ -389,10 +437,13 @@ void RotatorSession::apply(const Message &m)
             m_status = StatusWord{quint16(m.value), true};
             emit statusChanged(m_status);
         }
+        if (m_status.anyMoving())
+            wakePolling(); // moving, whoever moved it
         break;
     case Op::ErrorFlags:
         if (m_errorFlags != int(m.value)) {
             m_errorFlags = int(m.value);
+            wakePolling();
             emit errorFlagsChanged(m_errorFlags);
         }
         break;
@@ -429,6 +480,7 @@ void RotatorSession::apply(const Message &m)
         }
         // The controller may have refused the target, or stopped: resend it.
         m_activeTarget.reset();
+        wakePolling(); // whatever follows an alarm is watched closely
         emit alarmReceived(text);
         reportFromController(ControllerLogAllowance::Kind::Alarm,
                              tr("controller alarm: %1").arg(quoted(m.text.view())));
@@ -464,6 +516,8 @@ void RotatorSession::applyPosition()
     m_azFresh = m_elFresh = false;
     m_failedPolls = 0;
     m_stale = false;
+    m_pace.notePosition(m_az, m_el, nowMs()); // motion wakes the pace
+    retimePolling();
     if (m_state == State::Connected)
         m_staleTimer.start();
     emit positionChanged(m_az, m_el, false);

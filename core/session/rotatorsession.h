@@ -12,6 +12,7 @@
 #include "linktimer.h"
 #include "model/movegate.h"
 #include "model/rotatorprofile.h"
+#include "pollpace.h"
 #include "protocol/checksum.h"
 #include "protocol/micro2glistings.h"
 #include "protocol/parser.h"
@@ -151,10 +152,17 @@ public:
     bool stopHoldPending() const { return m_stopHoldTimer.isActive(); }
 
     bool isPolling() const { return m_pollingEnabled; }
-    // How often position is polled, and how long a reply may take: the
-    // profile's rate and the options' timeout, slowed to what the line
-    // carries where the link knows its baud rate (LinkHints::baud).
-    int pollIntervalMs() const { return m_pollTimer.interval(); }
+    // How often position is polled while anything happens, and how long a
+    // reply may take: the profile's rate and the options' timeout, slowed
+    // to what the line carries where the link knows its baud rate
+    // (LinkHints::baud).
+    int pollIntervalMs() const { return m_pace.fullMs(); }
+    // How often once the rotator rests and nobody asks (PollPace): the
+    // profile's restPollHz, never faster than the full rate.
+    int restPollIntervalMs() const { return m_pace.restMs(); }
+    // Polling at the slow rate now. Any command, a client's request
+    // (wakePolling), an alarm or motion seen in a reply ends it at once.
+    bool pollingAtRest() const { return m_pollingAtRest; }
     // The finest step a set-position expresses: a SPID controller's pulse
     // (from its replies: half a degree at 2 pulses a degree; a Rot1Prog's
     // whole degree), or the dialect's decimals (GS-232: 1°, Easycomm III:
@@ -187,6 +195,10 @@ public:
     CommandResult setCalibration(int rotor, CalibrationPoint point, int value);
 
 public slots:
+    // Someone wants fresh positions (a tracker asked for one, a window is
+    // about to show them): polling at the full rate again, from now.
+    // Commands, alarms and motion wake it by themselves.
+    void wakePolling();
     // What the log allowance has held back about the controller's replies,
     // said now as one summary line (if anything was): for a service about
     // to exit, which would otherwise lose the count. The session says it
@@ -324,6 +336,10 @@ private:
     void forgetParkRegisters();
     void noteParkRegister(int reg, double value); // a CR7/CR8 reply, whoever asked
     void poll();
+    // The poll timer (and the stale timer that follows it) at the interval
+    // the pace says now; a change starts the period afresh.
+    void retimePolling();
+    int staleAfterMs(int pollMs) const;
     void keepAlive();
     void checkSoftLimits();
     void onStale();
@@ -350,6 +366,8 @@ private:
     LinkTimer m_replyTimer;
 
     LinkTimer m_pollTimer;
+    PollPace m_pace;
+    bool m_pollingAtRest = false;
     bool m_pollingEnabled = true;
     int m_pollCount = 0;
     int m_failedPolls = 0;

@@ -363,6 +363,7 @@ CommandResult RotatorSession::stop(Axes axes)
         return refuse(tr("%1 has no stop command").arg(protocol::dialectName(m_profile.dialect)));
     m_activeTarget.reset();
     write(line);
+    wakePolling(); // to see it come to rest
     emit stopSent();
     emit targetCleared();
     // A SPID stop halts every axis: one still held on the jog pad runs on.
@@ -397,6 +398,7 @@ void RotatorSession::writeMove(const QByteArray &line)
     m_stopHoldTimer.stop();
     m_holdAzimuth = m_holdElevation = false;
     write(line);
+    wakePolling(); // the move is watched at the full rate from its start
     emit moveSent();
 }
 
@@ -470,6 +472,7 @@ CommandResult RotatorSession::readConfig(int reg)
     };
     if (m_queue.isFull())
         return refuse(tr("the controller is not keeping up: %1 requests already waiting").arg(m_queue.size()));
+    wakePolling();
     enqueue(std::move(r));
     return {};
 }
@@ -499,6 +502,7 @@ CommandResult RotatorSession::writeConfig(int reg, const QString &value)
             return refuseMove(check.refusal);
     }
     write(protocol::encodeLine({Message::word(Op::ConfigWrite, text, reg)}, m_profile.dialect));
+    wakePolling();
     return {};
 }
 

@@ -100,6 +100,7 @@ CommandResult RotatorSession::requestAdcReadings()
     };
     if (m_queue.isFull())
         return refuse(tr("the controller is not keeping up: %1 requests already waiting").arg(m_queue.size()));
+    wakePolling(); // a calibration page reads with every poll while the operator turns the rotor
     enqueue(std::move(r));
     return {};
 }
@@ -123,6 +124,7 @@ CommandResult RotatorSession::enqueueCalibration(const QByteArray &line, int rot
         if (!ok)
             emit calibrationFailed(rotor, reason);
     };
+    wakePolling();
     enqueue(std::move(r));
     return {};
 }

@@ -182,6 +182,11 @@ void RotatorSession::poll()
 {
     if (m_state != State::Connected || !m_link || !m_link->isOpen() || !m_pollingEnabled || !m_caps.probed)
         return;
+    // A velocity move runs until told otherwise, and only the polls see it
+    // reach the profile's limits: never the slow rate while one runs.
+    if (m_jogSpeed[0] != 0.0 || m_jogSpeed[1] != 0.0)
+        m_pace.wake(nowMs());
+    retimePolling();
     const Dialect d = m_profile.dialect;
     if (m_caps.positionFeedback) {
         const QByteArray line = protocol::encodeQueryPosition(d, m_rotor);

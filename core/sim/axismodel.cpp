@@ -220,6 +220,29 @@ void AxisModel::step(double dt)
     }
 }
 
+AxisModel::State AxisModel::state() const
+{
+    return {m_motor, m_antenna, m_velocity, m_acceleration, m_encoderOffset, m_reading, double(m_readingTicks),
+            m_measuredVelocity, m_reportedVelocity, double(m_mode), m_target, m_velocityTarget, m_integral,
+            m_lastError, m_holdError, m_effort, double(m_relay), double(m_errors), m_stallSeconds, m_frozenSeconds,
+            m_homingTravel, double(m_homingBackOff)};
+}
+
+bool AxisModel::stepAtStandstill(double dt)
+{
+    // Only an axis that is not moving at all, with its speed filters run
+    // down to nothing, can be at a standstill: the comparison is not worth
+    // making before. Noise draws from the generator at every step, so a
+    // noisy encoder never is.
+    if (m_velocity != 0.0 || m_measuredVelocity != 0.0 || m_reportedVelocity != 0.0 || m_faults.encoderNoise > 0.0) {
+        step(dt);
+        return false;
+    }
+    const State before = state();
+    step(dt);
+    return state() == before;
+}
+
 double AxisModel::deliveredEffort(double drive) const
 {
     // At the driver's speed cap or on its ramp, the loop may ask for full

@@ -9,6 +9,7 @@
 
 #include "axisparameters.h"
 
+#include <array>
 #include <cstdint>
 #include <random>
 
@@ -42,6 +43,11 @@ public:
     // Advances the axis by dt seconds. Call with small steps (1 ms): the
     // integration is explicit.
     void step(double dt);
+    // The same, and whether the step left the axis exactly as it was: at a
+    // standstill no further step ends, since a step depends on nothing but
+    // the axis itself (no noise is drawn then). Whoever runs the physics may
+    // skip the steps that would follow until a command.
+    bool stepAtStandstill(double dt);
 
     // Puts the axis at rest at an angle, as if it had been left there.
     void placeAt(double degrees);
@@ -92,6 +98,11 @@ public:
     static constexpr double settleTolerance = 0.1; // degrees
 
 private:
+    // Everything step() may change, to tell a step that changed nothing.
+    // A member added to the physics, the loops or the fault detection
+    // belongs here too.
+    using State = std::array<double, 22>;
+    State state() const;
     double sampleEncoder();
     double positionDrive(double dt);
     // A relay controller's drive: full torque towards the target, or none.

@@ -7,13 +7,8 @@ namespace slew::sim {
 SimClock::SimClock(Mode mode, double timeScale, QObject *parent)
     : QObject(parent), m_mode(mode), m_timeScale(mode == Mode::WallClock ? timeScale : 1.0)
 {
-    if (m_mode == Mode::WallClock) {
+    if (m_mode == Mode::WallClock)
         m_elapsed.start();
-        m_tick.setTimerType(Qt::PreciseTimer);
-        m_tick.setInterval(tickMilliseconds);
-        connect(&m_tick, &QTimer::timeout, this, [this] { emit advanced(now()); });
-        m_tick.start();
-    }
 }
 
 double SimClock::now() const

@@ -1,14 +1,15 @@
 #pragma once
 // Simulated time. In Manual mode time moves only when someone calls
 // advance(), so a test decides exactly how much happens between two checks
-// and never sleeps. In WallClock mode it follows a monotonic clock and ticks
-// on its own every tickMilliseconds, which is what the servers use; a time
-// scale above 1 makes simulated time run that many times faster than the
-// wall clock (a demo, or a test that waits on a long slew, need not wait).
+// and never sleeps. In WallClock mode it follows a monotonic clock, which is
+// what the servers use, and has no timer of its own: whoever needs the
+// simulation brought up to date (a command or a query arriving) reads now()
+// and catches up. A time scale above 1 makes simulated time run that many
+// times faster than the wall clock (a demo, or a test that waits on a long
+// slew, need not wait).
 
 #include <QElapsedTimer>
 #include <QObject>
-#include <QTimer>
 
 namespace slew::sim {
 
@@ -16,9 +17,6 @@ class SimClock : public QObject {
     Q_OBJECT
 public:
     enum class Mode { Manual, WallClock };
-
-    // the Easycomm III derivative's simulator steps every 25 ms; the physics below substeps at 1 ms.
-    static constexpr int tickMilliseconds = 25;
 
     static constexpr double maxTimeScale = 20.0;
 
@@ -43,7 +41,8 @@ public:
     void setTimeScale(double timeScale);
 
 signals:
-    // Time moved on: the rotator catches up, connections release what is due.
+    // A manual clock moved on: the rotator catches up, connections release
+    // what is due. A wall clock never says so: it moves by itself.
     void advanced(double now);
 
 private:
@@ -53,7 +52,6 @@ private:
     double m_wallBase = 0.0;      // simulated seconds at the last change of scale
     qint64 m_wallBaseAtNs = 0;    // m_elapsed's reading then
     QElapsedTimer m_elapsed;
-    QTimer m_tick;
 };
 
 } // namespace slew::sim

@@ -13,6 +13,9 @@ namespace {
 constexpr double kAmbient = 25.0;          // deg C
 constexpr double kHeatingPerAxis = 30.0;   // deg C above ambient at full load, steady state
 constexpr double kThermalSeconds = 60.0;   // time constant of the motor housing
+// Closer than this to where it is heading, the temperature input (two
+// decimals) shows no change any more.
+constexpr double kSettledTemperature = 0.002;
 
 // CR9 as SatNOGS numbers it (0 position, 1 speed), extended for the two
 // modes SatNOGS does not have.
@@ -53,19 +56,40 @@ void SimulatedRotator::advanceTo(double t)
     // Compare in whole steps so that rounding never loses or adds one.
     const auto target = static_cast<long long>(std::floor(m_requestedTime / stepSeconds + 1e-6));
     auto done = static_cast<long long>(std::llround(m_time / stepSeconds));
-    for (; done < target; ++done)
-        step(stepSeconds);
+    while (done < target) {
+        m_standstill = step(stepSeconds);
+        ++done;
+        if (m_standstill && done < target) {
+            // Every step to come would repeat this one exactly, but for the
+            // temperature, which goes on towards where the load holds it:
+            // the same steps' cooling in closed form.
+            const double left = double(target - done);
+            m_temperature = steadyTemperature()
+                + (m_temperature - steadyTemperature()) * std::pow(1.0 - stepSeconds / kThermalSeconds, left);
+            done = target;
+        }
+    }
     m_time = double(done) * stepSeconds;
 }
 
-void SimulatedRotator::step(double dt)
+bool SimulatedRotator::atRest() const
 {
-    m_azimuth.step(dt);
-    m_elevation.step(dt);
+    return m_standstill && std::abs(m_temperature - steadyTemperature()) < kSettledTemperature;
+}
+
+double SimulatedRotator::steadyTemperature() const
+{
     const double loadA = m_azimuth.load() / 100.0;
     const double loadE = m_elevation.load() / 100.0;
-    const double steady = kAmbient + kHeatingPerAxis * (loadA * loadA + loadE * loadE);
-    m_temperature += (steady - m_temperature) * dt / kThermalSeconds;
+    return kAmbient + kHeatingPerAxis * (loadA * loadA + loadE * loadE);
+}
+
+bool SimulatedRotator::step(double dt)
+{
+    const bool azimuthStill = m_azimuth.stepAtStandstill(dt);
+    const bool elevationStill = m_elevation.stepAtStandstill(dt);
+    m_temperature += (steadyTemperature() - m_temperature) * dt / kThermalSeconds;
+    return azimuthStill && elevationStill;
 }
 
 double SimulatedRotator::resolveAzimuth(double degrees) const
@@ -87,6 +111,7 @@ double SimulatedRotator::resolveAzimuth(double degrees) const
 
 bool SimulatedRotator::pointAzimuth(double degrees)
 {
+    commanded();
     const AxisPlant &p = m_azimuth.plant();
     if (!std::isfinite(degrees) || degrees < p.minDegrees || degrees > p.maxDegrees)
         return false;
@@ -97,6 +122,7 @@ bool SimulatedRotator::pointAzimuth(double degrees)
 
 bool SimulatedRotator::pointElevation(double degrees)
 {
+    commanded();
     const AxisPlant &p = m_elevation.plant();
     if (!std::isfinite(degrees) || degrees < p.minDegrees || degrees > p.maxDegrees)
         return false;
@@ -107,12 +133,14 @@ bool SimulatedRotator::pointElevation(double degrees)
 
 void SimulatedRotator::driveAzimuth(double millidegreesPerSecond)
 {
+    commanded();
     m_commandedAzimuthSpeed = millidegreesPerSecond;
     m_azimuth.commandVelocity(millidegreesPerSecond / 1000.0);
 }
 
 void SimulatedRotator::driveElevation(double millidegreesPerSecond)
 {
+    commanded();
     m_commandedElevationSpeed = millidegreesPerSecond;
     m_elevation.commandVelocity(millidegreesPerSecond / 1000.0);
 }
@@ -125,6 +153,7 @@ void SimulatedRotator::park()
 
 void SimulatedRotator::reset()
 {
+    commanded();
     m_azimuth.home();
     m_elevation.home();
     m_commandedAzimuth = m_azimuth.plant().minDegrees;
@@ -156,6 +185,7 @@ std::optional<double> SimulatedRotator::readRegister(int index) const
 
 bool SimulatedRotator::writeRegister(int index, double value)
 {
+    commanded();
     if (!std::isfinite(value))
         return false;
     auto setGain = [&](AxisModel &axis, double PidGains::*gain) {

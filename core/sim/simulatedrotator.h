@@ -4,7 +4,10 @@
 // (CR1..CR13), its inputs (IP0..IP8), status and error registers, a motor
 // temperature, and the Easycomm-level commands (point, drive, stop, park,
 // reset). No I/O and no wall clock: advanceTo() runs the physics in fixed
-// 1 ms steps, so a test can advance it exactly.
+// 1 ms steps, so a test can advance it exactly. Once both axes stand still
+// (a step changes nothing), the steps up to the time asked for are not run
+// one by one: only the motors' cooling goes on, worked out at once. A
+// station left alone for a day catches up in no time.
 
 #include "axismodel.h"
 
@@ -52,14 +55,29 @@ public:
     void advanceTo(double t);
     void advanceBy(double seconds) { advanceTo(m_requestedTime + seconds); }
     double time() const { return m_time; }
+    // Both axes were at a standstill when last advanced: only the motors'
+    // temperature may still change until a command.
+    bool standingStill() const { return m_standstill; }
+    // Nothing left to happen until a command: standing still, and the
+    // motors as cool as the present load keeps them (to the hundredth of a
+    // degree the temperature input reports).
+    bool atRest() const;
 
     // Commands. Angles outside the limits are refused (false) and move nothing.
     bool pointAzimuth(double degrees);
     bool pointElevation(double degrees);
     void driveAzimuth(double millidegreesPerSecond);   // positive is right (CW)
     void driveElevation(double millidegreesPerSecond); // positive is up
-    void stopAzimuth() { m_azimuth.release(); }
-    void stopElevation() { m_elevation.release(); }
+    void stopAzimuth()
+    {
+        commanded();
+        m_azimuth.release();
+    }
+    void stopElevation()
+    {
+        commanded();
+        m_elevation.release();
+    }
     void park();
     void reset(); // homes both axes against their lower switches
 
@@ -80,7 +98,11 @@ public:
 
     AxisModel &axis(Axis a) { return a == Axis::Azimuth ? m_azimuth : m_elevation; }
     const AxisModel &axis(Axis a) const { return a == Axis::Azimuth ? m_azimuth : m_elevation; }
-    void setFaults(Axis a, const AxisFaults &faults) { axis(a).setFaults(faults); }
+    void setFaults(Axis a, const AxisFaults &faults)
+    {
+        commanded();
+        axis(a).setFaults(faults);
+    }
     const RotatorConfig &config() const { return m_config; }
 
     // Where an azimuth command will really go: in the overlap, the one of the
@@ -88,13 +110,18 @@ public:
     double resolveAzimuth(double degrees) const;
 
 private:
-    void step(double dt);
+    // One step of both axes; true when neither changed (AxisModel::stepAtStandstill).
+    bool step(double dt);
+    double steadyTemperature() const;
+    // Any command may set an axis moving: a standstill is for the physics to find again.
+    void commanded() { m_standstill = false; }
 
     RotatorConfig m_config;
     AxisModel m_azimuth;
     AxisModel m_elevation;
     double m_time = 0.0;
     double m_requestedTime = 0.0;
+    bool m_standstill = false; // the last step run changed neither axis
     double m_temperature = 25.0;
     double m_commandedAzimuth = 0.0;
     double m_commandedElevation = 0.0;

@@ -21,6 +21,8 @@ Simulator::Simulator(const SimulatorOptions &options, QObject *parent)
         }
         emit ticked();
     });
+    m_pushTick.setTimerType(Qt::PreciseTimer);
+    connect(&m_pushTick, &QTimer::timeout, this, &Simulator::pushTick);
     // Load a kept state now, so that a bad file is known before a host connects.
     if (options.dialect == protocol::Dialect::Micro2g || !options.stateFile.isEmpty())
         micro2g();
@@ -34,6 +36,44 @@ void Simulator::syncToNow()
         m_micro2g->advance(now - m_micro2gAt);
         m_micro2gAt = now;
     }
+}
+
+void Simulator::addPushListener()
+{
+    ++m_pushListeners;
+    noteInput(); // pushes the first state at once, and on while it changes
+}
+
+void Simulator::removePushListener()
+{
+    if (--m_pushListeners <= 0) {
+        m_pushListeners = 0;
+        m_pushTick.stop();
+    }
+}
+
+void Simulator::noteInput()
+{
+    if (m_pushListeners == 0 || m_clock.isManual())
+        return;
+    // A command may set the rotator moving: pushes at the full pace again.
+    // A tick already at that pace is left to run, or a stream of input
+    // would put it off for ever.
+    if (!m_pushTick.isActive() || m_pushTick.interval() != kPushTickMs)
+        m_pushTick.start(kPushTickMs);
+}
+
+void Simulator::pushTick()
+{
+    syncToNow();
+    emit ticked();
+    // At rest nothing changes for a push to tell: no tick until input
+    // arrives. Standing still, only a cooling motor's temperature moves, a
+    // hundredth of a degree in seconds. (A Micro-2g line pushes nothing.)
+    if (m_rotator.atRest())
+        m_pushTick.stop();
+    else if (m_rotator.standingStill() && m_pushTick.interval() != kCoolingTickMs)
+        m_pushTick.start(kCoolingTickMs);
 }
 
 Micro2gController &Simulator::micro2g()
@@ -67,6 +107,7 @@ void Simulator::setAxisFaults(Axis axis, const AxisFaults &faults)
 {
     syncToNow();
     m_rotator.setFaults(axis, faults);
+    noteInput(); // a fault may set the axis moving (or stop it), for the pushes to tell
 }
 
 void Simulator::setLinkFaults(const LinkFaults &faults)

@@ -12,6 +12,7 @@
 #include "simulatoroptions.h"
 
 #include <QObject>
+#include <QTimer>
 
 #include <memory>
 
@@ -29,8 +30,24 @@ public:
     const SimulatorOptions &options() const { return m_options; }
 
     // Brings the physics up to the clock's present; the firmware calls it
-    // before it answers so a reply is never a tick old.
+    // before it answers, so a reply is never a moment old. On the wall
+    // clock nothing else runs the physics: a simulator nobody talks to
+    // does nothing at all.
     void syncToNow();
+
+    // A connection that pushes changes unsolicited (the Easycomm III
+    // derivative's controller) needs the rotator run while it changes: on
+    // the wall clock, ticked() then comes every kPushTickMs while it moves,
+    // every kCoolingTickMs while only a motor's temperature still drifts,
+    // and not at all once the rotator is at rest (SimulatedRotator::atRest).
+    // Counted, one a connection.
+    static constexpr int kPushTickMs = 25;
+    static constexpr int kCoolingTickMs = 1000;
+    void addPushListener();
+    void removePushListener();
+    // The firmware was just given input: a command may have set the
+    // rotator moving, for the pushes to follow.
+    void noteInput();
 
     // Manual clock: advance time (and the rotator) by this much.
     void advance(double seconds) { m_clock.advance(seconds); }
@@ -57,7 +74,9 @@ public:
     const FirmwareCounters &counters() const { return m_counters; }
 
 signals:
-    void ticked();                // the rotator advanced; push and release what is due
+    // The rotator advanced: push and release what is due. On a manual
+    // clock with every advance(); on the wall clock only for push listeners.
+    void ticked();
     void linkFaultsChanged();
     void connectionsDropped();
     // The state file could not be written while running: the settings the
@@ -65,6 +84,8 @@ signals:
     void stateFileFailed(const QString &error);
 
 private:
+    void pushTick();
+
     SimulatorOptions m_options;
     SimClock m_clock;
     SimulatedRotator m_rotator;
@@ -73,6 +94,8 @@ private:
     std::unique_ptr<Micro2gController> m_micro2g;
     double m_micro2gAt = 0.0; // the clock time the controller has been run up to
     QString m_stateFileError;
+    int m_pushListeners = 0;
+    QTimer m_pushTick; // wall clock only: runs while a listener waits and the rotator is not at rest
 };
 
 } // namespace slew::sim

@@ -48,6 +48,10 @@ SimulatorConnection::SimulatorConnection(Simulator &simulator, QIODevice *device
     m_timer.setTimerType(Qt::PreciseTimer);
     connect(&m_timer, &QTimer::timeout, this, &SimulatorConnection::service);
     connect(&m_simulator, &Simulator::ticked, this, &SimulatorConnection::onTick);
+    if (m_settings.unsolicited) {
+        m_pushListenerOf = &m_simulator;
+        m_simulator.addPushListener();
+    }
     connect(&m_simulator, &Simulator::connectionsDropped, this, [this] {
         if (!m_dropped) {
             m_dropped = true;
@@ -60,6 +64,12 @@ SimulatorConnection::SimulatorConnection(Simulator &simulator, QIODevice *device
             QMetaObject::invokeMethod(this, &SimulatorConnection::readDevice, Qt::QueuedConnection);
     }
     schedule();
+}
+
+SimulatorConnection::~SimulatorConnection()
+{
+    if (m_pushListenerOf)
+        m_pushListenerOf->removePushListener();
 }
 
 double SimulatorConnection::byteSeconds() const
@@ -127,6 +137,7 @@ void SimulatorConnection::process(QByteArrayView bytes, double arrivedAt)
     } else {
         out = m_firmware.receive(bytes);
     }
+    m_simulator.noteInput();
     m_idleFlushAt = m_firmware.awaitingLineEnd() ? m_simulator.clock().now() + kIdleLineEnd : -1.0;
     if (!out.isEmpty())
         answer(std::move(out), arrivedAt);

@@ -41,6 +41,7 @@ class SimulatorConnection : public QObject {
 public:
     SimulatorConnection(Simulator &simulator, QIODevice *device, const ConnectionSettings &settings,
                         QObject *parent = nullptr);
+    ~SimulatorConnection() override;
 
     SimulatorFirmware &firmware() { return m_firmware; }
     QIODevice *device() const { return m_device; }
@@ -100,6 +101,7 @@ private:
     double m_openedAt = 0.0;
     bool m_dropped = false;
     QByteArray *m_finalOutput = nullptr; // set while takeFinalOutput() collects
+    QPointer<Simulator> m_pushListenerOf; // unsolicited: counted there until this goes
     QTimer m_timer;
 };
 

@@ -51,6 +51,7 @@ private slots:
     void resetTakesOnlyResetAll();
     void clientsSeeTheCalibratedPointing();
     void aSpidRotatorBehindTheServer();
+    void aTrackerAskingWakesARestingStation();
 
 private:
     QByteArray ask(QTcpSocket &s, const QByteArray &line);
@@ -675,6 +676,39 @@ void RotctldServerTest::aSpidRotatorBehindTheServer()
     QCOMPARE(ask(s, "R 1"), QByteArray("RPRT -11\n"));
     QCOMPARE(sent.count(), 0);
     QCOMPARE(ask(s, "S"), QByteArray("RPRT 0\n"));
+}
+
+void RotctldServerTest::aTrackerAskingWakesARestingStation()
+{
+    // At rest the session polls once a second (session/pollpace.h); a
+    // tracker that asks for the position wants it fresh, and gets the full
+    // rate at once. The simulator runs on a manual clock here, pumped from
+    // the event loop, so the polls can be counted in the session's time.
+    (new SimulatorPump(0.005, session))->follow(session);
+    model::RotatorProfile p;
+    p.uri = "sim:?clock=manual";
+    QVERIFY(connectSession(p));
+    sim::Simulator *sim = sim::simulatorBehind(session->link());
+    auto pollsIn = [&](double seconds) {
+        QSignalSpy sent(session, &session::RotatorSession::bytesSent);
+        const double until = sim->clock().now() + seconds;
+        if (!runEventLoopUntil([&] { return sim->clock().now() >= until; }, 60000))
+            return -1;
+        return timesSent(sent, "AZ EL\n");
+    };
+    pollsIn(7.0); // left alone longer than the quiet spell before the slow rate (5 s)
+    const int resting = pollsIn(5.0);
+    QVERIFY2(resting >= 4 && resting <= 6, qPrintable(QString::number(resting)));
+    QTcpSocket s;
+    s.connectToHost(QHostAddress::LocalHost, server->port());
+    QVERIFY(runEventLoopUntil([&] { return s.state() == QAbstractSocket::ConnectedState; }, 5000));
+    // Only connecting asks nothing.
+    const int connected = pollsIn(3.0);
+    QVERIFY2(connected <= 4, qPrintable(QString::number(connected)));
+    const QByteArray answer = ask(s, "p");
+    QVERIFY2(answer.count('\n') == 2, answer.constData());
+    const int woken = pollsIn(1.0);
+    QVERIFY2(woken >= 9, qPrintable(QString::number(woken)));
 }
 
 QTEST_MAIN(RotctldServerTest)

@@ -111,6 +111,7 @@ void ModelTest::profileRoundTrip()
     p.azGains = PidGains{1.5, 0.1, 0.05};
     p.deadbandDeg = 1.0;
     p.pollHz = 5;
+    p.restPollHz = 0.5;
     p.azOffsetDeg = -2.5;
     p.elOffsetDeg = 0.75;
     p.motion.azSpeedDegS = 3.1;
@@ -134,6 +135,7 @@ void ModelTest::profileRoundTrip()
     QVERIFY(!back->elGains);
     QCOMPARE(back->deadbandDeg, 1.0);
     QCOMPARE(back->pollHz, 5);
+    QCOMPARE(back->restPollHz, 0.5);
     QCOMPARE(back->azOffsetDeg, -2.5);
     QCOMPARE(back->elOffsetDeg, 0.75);
     QVERIFY(back->motion == p.motion);
@@ -143,6 +145,7 @@ void ModelTest::profileRoundTrip()
     QVERIFY(old);
     QCOMPARE(old->azOffsetDeg, 0.0);
     QVERIFY(old->motion == slew::model::RotatorMotion{});
+    QCOMPARE(old->restPollHz, 1.0); // a station at rest is polled once a second
 }
 
 void ModelTest::profileRefusesBadValues_data()
@@ -155,6 +158,8 @@ void ModelTest::profileRefusesBadValues_data()
     QTest::newRow("park outside") << QByteArray(R"({"park":{"az":10,"el":120}})") << "park position";
     QTest::newRow("gains") << QByteArray(R"({"azGains":[1,2,3]})") << "kp, ki, kd";
     QTest::newRow("poll") << QByteArray(R"({"pollHz":500})") << "poll rate";
+    QTest::newRow("rest poll too slow") << QByteArray(R"({"restPollHz":0.01})") << "poll rate at rest";
+    QTest::newRow("rest poll above the poll") << QByteArray(R"({"pollHz":2,"restPollHz":5})") << "poll rate at rest";
     QTest::newRow("az offset") << QByteArray(R"({"offsets":{"az":200}})") << "azimuth offset";
     QTest::newRow("el offset") << QByteArray(R"({"offsets":{"el":-25}})") << "elevation offset";
     QTest::newRow("speed") << QByteArray(R"({"motion":{"azSpeedDegS":0}})") << "axis speeds";

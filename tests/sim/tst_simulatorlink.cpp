@@ -393,6 +393,63 @@ private slots:
         QVERIFY2(moving.contains("GS258\n"), moving.constData());
     }
 
+    // On the wall clock a simulator nobody talks to does nothing: no tick,
+    // not a step of the physics. A query catches it up from the wall time
+    // that passed, and the answer is where the rotator has got to.
+    void aSimulatorLeftAloneRunsNothingAndCatchesUpWhenAsked()
+    {
+        auto link = openLink("sim:?time_scale=20");
+        QVERIFY(link);
+        Simulator *sim = simulatorBehind(link.get());
+        QSignalSpy ticks(sim, &Simulator::ticked);
+        QSignalSpy advanced(&sim->clock(), &SimClock::advanced);
+        link->device()->write("AZ30.0 EL20.0\n"); // a go-to: no answer
+        settle();
+        QCOMPARE(sim->rotator().axis(Axis::Azimuth).targetPosition(), 30.0);
+        const double ranTo = sim->rotator().time();
+        // 20 simulated seconds: a G-5500 needs about 8 for that move.
+        QVERIFY(letWallTimePass(1000));
+        QCOMPARE(ticks.count(), 0);
+        QCOMPARE(advanced.count(), 0);
+        QCOMPARE(sim->rotator().time(), ranTo);
+        const QByteArray reply = ask(link.get(), "AZ EL\n");
+        const QList<QByteArray> words = reply.trimmed().split(' ');
+        QCOMPARE(words.size(), 2);
+        QVERIFY2(std::abs(words[0].mid(2).toDouble() - 30.0) <= AxisModel::settleTolerance, reply.constData());
+        QVERIFY2(std::abs(words[1].mid(2).toDouble() - 20.0) <= AxisModel::settleTolerance, reply.constData());
+        QVERIFY(sim->rotator().time() >= ranTo + 19.0);
+        QCOMPARE(ticks.count(), 0);
+    }
+
+    // Pushes need the rotator run while it changes, so a connection that
+    // wants them gets ticks then, and none once all is at rest.
+    void unsolicitedPushesTickOnlyWhileSomethingChanges()
+    {
+        auto link = openLink("sim:?unsolicited=1&time_scale=4");
+        QVERIFY(link);
+        Simulator *sim = simulatorBehind(link.get());
+        QIODevice *d = link->device();
+        QSignalSpy ready(d, &QIODevice::readyRead);
+        QByteArray seen;
+        while (!seen.contains("VESlewSim")) {
+            QVERIFY(d->bytesAvailable() > 0 || ready.wait(2000));
+            seen += d->readAll();
+        }
+        QVERIFY2(seen.startsWith("AZ0.00\nEL0.00\nIP0,25.00\n"), seen.constData());
+        QSignalSpy ticks(sim, &Simulator::ticked);
+        QVERIFY(letWallTimePass(300));
+        QCOMPARE(ticks.count(), 0);
+        d->write("AZ2.0\n");
+        seen.clear();
+        while (!seen.contains("AZ2.00\n")) {
+            QVERIFY(d->bytesAvailable() > 0 || ready.wait(5000));
+            seen += d->readAll();
+        }
+        // The way there was pushed too, a tick at a time.
+        QVERIFY2(seen.contains("AZ1."), seen.constData());
+        QVERIFY(ticks.count() >= 2);
+    }
+
     void faultsSwitchAtRunTime()
     {
         auto link = openLink("sim:?clock=manual&jam=az&jam_after=0.5");

@@ -138,6 +138,15 @@ QString Micro2gController::turnTo(int n, double bearing)
 
 void Micro2gController::advance(double seconds)
 {
+    // With no rotor driven there is nothing to step through: the relays
+    // are off and stay so, however long the time.
+    const bool anyDriven = std::any_of(m_rotors.begin(), m_rotors.end(),
+                                       [](const Rotor &r) { return r.handDrive != Drive::Off || r.targetAdc; });
+    if (!anyDriven) {
+        for (Rotor &r : m_rotors)
+            r.drive = Drive::Off;
+        return;
+    }
     while (seconds > 0) {
         const double dt = std::min(seconds, kLongestStep);
         seconds -= dt;
