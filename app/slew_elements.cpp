@@ -9,6 +9,7 @@
 #include "slew_identity.h"
 
 #include "sky/tlesources.h"
+#include "station/station.h"
 #include "input/logtext.h"
 
 #include <QCommandLineParser>
@@ -75,7 +76,9 @@ int runUpdateElements(int argc, char **argv)
                                      "(Sky → Element sets…)")
                           .arg(QLatin1String(kExampleElementSetUrl)));
 
-    TleSources sources(elementSetCacheDirectory());
+    // The station's element sets: the same cache the window and the service read.
+    slew::station::Station station;
+    TleSources &sources = *station.elementSets();
     sources.setUrls(urls);
     int status = 0;
     QObject::connect(&sources, &TleSources::finished, &app, [&sources, &status] {

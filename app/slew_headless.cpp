@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // `slew --headless --connect URI --rotctld-listen ADDR:PORT`: argument parsing
-// and wiring for the station service; the work is in core/bridge. The
+// and wiring for the station service; the work is in core/station. The
 // options are described in cli/.
 
 #include "slew_identity.h"
@@ -10,7 +10,7 @@
 #include "transport/hostport.h"
 #include "slew_headless.h"
 
-#include "bridge/headlessstation.h"
+#include "station/stationservice.h"
 #include "bridge/rotctldserver.h"
 #include "protocol/dialect.h"
 #include "transport/linkfactory.h"
@@ -46,11 +46,11 @@ QString shown(const QString &text)
 // --track and what goes with it: the target (a satellite from --tle, the
 // sun, the moon, azel:AZ,EL or radec:RA,DEC), --min-el, --clock-start,
 // --clock-rate. Messages name each option as `label` gives it.
-std::optional<slew::bridge::HeadlessConfig::Track> readTrack(const QCommandLineParser &parser,
+std::optional<slew::station::ServiceConfig::Track> readTrack(const QCommandLineParser &parser,
                                                               const OptionLabel &label, QString *error)
 {
     using slew::tracking::TrackTarget;
-    slew::bridge::HeadlessConfig::Track track;
+    slew::station::ServiceConfig::Track track;
     const QString trackOption = QStringLiteral("track"), tleOption = QStringLiteral("tle");
     const QString what = parser.value(trackOption).trimmed();
     QString badFixed;
@@ -147,7 +147,7 @@ int runHeadless(int argc, char *argv[])
                   profile = QStringLiteral("profile"), listen = QStringLiteral("rotctld-listen"),
                   allow = QStringLiteral("rotctld-allow"), maxClients = QStringLiteral("rotctld-max-clients");
 
-    slew::bridge::HeadlessConfig config;
+    slew::station::ServiceConfig config;
     if (!slew::cli::readProfileOptions(parser, label, &config.profile, &error))
         return fail(error);
     if (parser.isSet(connect))
@@ -188,7 +188,7 @@ int runHeadless(int argc, char *argv[])
 
     if (parser.isSet(QStringLiteral("rotors"))) {
         const QString list = parser.value(QStringLiteral("rotors"));
-        const auto rotors = slew::bridge::parseRotorList(list, &error);
+        const auto rotors = slew::station::parseRotorList(list, &error);
         if (!rotors)
             return fail(QStringLiteral("%1 %2: %3").arg(label(QStringLiteral("rotors")), shown(list), error));
         config.rotors = *rotors;
@@ -215,13 +215,13 @@ int runHeadless(int argc, char *argv[])
         }
     }
 
-    slew::bridge::HeadlessStation station;
+    slew::station::StationService station;
     if (!station.start(config, &error))
         return fail(error);
 
     slew::cli::TerminationSignalWatcher terminationSignals;
     QObject::connect(&terminationSignals, &slew::cli::TerminationSignalWatcher::terminationRequested, &station,
                      [&station](int number) { station.shutdown(QStringLiteral("signal %1").arg(number)); });
-    QObject::connect(&station, &slew::bridge::HeadlessStation::finished, &app, &QCoreApplication::quit);
+    QObject::connect(&station, &slew::station::StationService::finished, &app, &QCoreApplication::quit);
     return app.exec();
 }

@@ -20,7 +20,7 @@
 #include "protocol/dialect.h"
 #include "bridge/rotctldserver.h"
 #include "session/rotatorsession.h"
-#include "session/stopbeforeexit.h"
+#include "station/station.h"
 #include "sky/station.h"
 #include "input/finitenumber.h"
 #include "input/logtext.h"
@@ -167,8 +167,10 @@ int main(int argc, char *argv[])
         }
     }
 
-    slew::session::RotatorSession session;
-    slew::ui::MainWindow window(&session);
+    // The station first: the window is a view of it, and goes first.
+    slew::station::Station station;
+    slew::session::RotatorSession &session = *station.session();
+    slew::ui::MainWindow window(&station);
     if (args.clock.startJulian)
         window.timeController()->rehearse(*args.clock.startJulian, args.clock.rate);
     window.show();
@@ -204,7 +206,7 @@ int main(int argc, char *argv[])
                          });
     }
     if (args.rotctldMaxClients)
-        window.rotctldServer()->setMaxClients(*args.rotctldMaxClients);
+        station.server()->setMaxClients(*args.rotctldMaxClients);
     window.connectTo(uri, dialect);
     if (args.rotctldListen
         && !window.rotctldPanel()->startListening(args.rotctldListen->first.toString(), args.rotctldListen->second)) {
@@ -216,10 +218,11 @@ int main(int argc, char *argv[])
     // does, stop the rotator and let the stop leave before exiting.
     slew::cli::TerminationSignalWatcher terminationSignals;
     QObject::connect(&terminationSignals, &slew::cli::TerminationSignalWatcher::terminationRequested, &app,
-                     [&session, &window, &app](int number) {
+                     [&station](int number) {
                          std::fprintf(stderr, "slew: signal %d: stopping the rotator, then exiting\n", number);
-                         window.rotctldServer()->close(); // no tracker moves it again meanwhile
-                         slew::session::stopThenCall(session, &app, [] { QCoreApplication::quit(); });
+                         // Every rotor stops, no tracker moves one again meanwhile.
+                         station.shutdown(QStringLiteral("signal %1").arg(number));
                      });
+    QObject::connect(&station, &slew::station::Station::shutDown, &app, &QCoreApplication::quit);
     return app.exec();
 }

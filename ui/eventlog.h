@@ -2,7 +2,7 @@
 // Every alarm, refusal, failure and connection change with its time, newest
 // at the bottom. Bounded: the oldest lines go once kMaxLines is reached.
 
-#include "alarmmonitor.h"
+#include "station/alarmmonitor.h"
 
 #include <QPlainTextEdit>
 
@@ -16,7 +16,7 @@ public:
     explicit EventLog(QWidget *parent = nullptr);
 
 public slots:
-    void addEvent(const QDateTime &when, slew::ui::AlarmMonitor::Severity severity, const QString &text);
+    void addEvent(const QDateTime &when, slew::station::AlarmMonitor::Severity severity, const QString &text);
 };
 
 } // namespace slew::ui

@@ -1,10 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "mainwindow.h"
 
-#include "session/stopbeforeexit.h"
-
 #include "alarmbanner.h"
-#include "alarmmonitor.h"
 #include "configeditor.h"
 #include "elementsetsdialog.h"
 #include "connectionbar.h"
@@ -35,6 +32,8 @@
 #include "windowstate.h"
 
 #include "bridge/rotctldserver.h"
+#include "station/alarmmonitor.h"
+#include "station/station.h"
 #include "session/controllerrotors.h"
 #include "sky/tlesources.h"
 
@@ -70,20 +69,22 @@ QGroupBox *group(const QString &title, QWidget *content)
 
 } // namespace
 
-MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(parent), m_session(session)
+MainWindow::MainWindow(station::Station *station, QWidget *parent)
+    : QMainWindow(parent), m_station(station), m_session(station->session())
 {
     setObjectName(QStringLiteral("mainWindow"));
     setWindowTitle(tr("Slew"));
+    RotatorSession *session = m_session;
     m_connection = new ConnectionBar(session);
     m_banner = new AlarmBanner;
-    m_alarms = new AlarmMonitor(session, this);
+    m_alarms = station->alarms();
     m_recorder = new TelemetryRecorder(session, this);
     m_plot = new PolarPlotWidget;
     m_confirm = new TargetConfirmation;
     m_readout = new PositionReadout(session);
     m_goto = new GotoPanel(session);
     m_jog = new JogPad(session);
-    m_stop = new StopButton(session);
+    m_stop = new StopButton([station] { return bool(station->stop()); });
     m_parkHome = new ParkHomePanel(session);
     m_presets = new PresetPanel(session);
     m_charts = new TelemetryCharts(&m_recorder->history());
@@ -94,24 +95,22 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
     m_config = new ConfigEditor(session);
     m_traffic = new TrafficConsole(session);
     m_log = new EventLog;
-    m_rotctld = new bridge::RotctldServer(session, this);
+    m_rotctld = station->server();
     m_trackers = new RotctldPanel(m_rotctld);
-    // Before the first connection: a multi-rotor controller's line is shared
-    // from the start.
-    m_controllerRotors = new session::ControllerRotors(session, this);
+    m_controllerRotors = station->controllerRotors();
     m_rotorsPanel = new RotorsPanel(m_controllerRotors);
 
     // Offline first: the last good copies, no network until asked.
     // The cache is read on worker threads: the window appears at once, and
     // the sets follow (TleSources::loaded).
-    m_elementSets = new sky::TleSources(sky::elementSetCacheDirectory(), this);
+    m_elementSets = station->elementSets();
     m_elementSets->setUrls(sky::savedElementSetUrls());
     m_elementSets->loadFromCache();
     // A cached copy that cannot be used (over the cap, not a file) says so.
     connect(m_elementSets, &sky::TleSources::loaded, this, [this] {
         for (const sky::TleSourceStatus &s : m_elementSets->status())
             if (!s.error.isEmpty())
-                m_log->addEvent(QDateTime::currentDateTime(), AlarmMonitor::Severity::Warning,
+                m_log->addEvent(QDateTime::currentDateTime(), station::AlarmMonitor::Severity::Warning,
                                 tr("element sets: %1: %2").arg(s.url.toString(), s.error));
     });
     // Whenever a refresh ends, from the dialog or elsewhere: each source
@@ -122,7 +121,7 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
             if (!sky::sourceFailed(s))
                 continue;
             ++failed;
-            m_log->addEvent(QDateTime::currentDateTime(), AlarmMonitor::Severity::Warning,
+            m_log->addEvent(QDateTime::currentDateTime(), station::AlarmMonitor::Severity::Warning,
                             tr("element sets: %1").arg(sky::describeSource(s)));
         }
         // Never "refreshed" when a source kept its old copy.
@@ -132,7 +131,7 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
                                   .arg(m_elementSets->status().size())
                                   .arg(m_elementSets->sets().size()));
     });
-    m_tracking = new TrackingPanel(session, m_elementSets);
+    m_tracking = new TrackingPanel(station);
     m_alignment = new AlignmentPanel(session);
     // The Tracking tab: passes and tracking, and below them the calibration
     // that tracking depends on.
@@ -177,17 +176,17 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
     layout->addWidget(splitter, 1);
     setCentralWidget(central);
 
-    connect(m_alarms, &AlarmMonitor::alarmsChanged, m_banner, &AlarmBanner::showAlarms);
+    connect(m_alarms, &station::AlarmMonitor::alarmsChanged, m_banner, &AlarmBanner::showAlarms);
     // Resting on a limit switch is a state: a quiet line at the foot of the
     // window, not the banner.
     auto *resting = new QLabel;
     resting->setObjectName(QStringLiteral("limitSwitchState"));
     statusBar()->addPermanentWidget(resting);
-    connect(m_alarms, &AlarmMonitor::restingChanged, resting, &QLabel::setText);
-    connect(m_connection, &ConnectionBar::disconnectRequested, m_alarms, &AlarmMonitor::expectDisconnect);
-    connect(m_alarms, &AlarmMonitor::eventLogged, m_log, &EventLog::addEvent);
-    connect(m_alarms, &AlarmMonitor::eventLogged, this,
-            [this](const QDateTime &, AlarmMonitor::Severity, const QString &text) {
+    connect(m_alarms, &station::AlarmMonitor::restingChanged, resting, &QLabel::setText);
+    connect(m_connection, &ConnectionBar::disconnectRequested, m_alarms, &station::AlarmMonitor::expectDisconnect);
+    connect(m_alarms, &station::AlarmMonitor::eventLogged, m_log, &EventLog::addEvent);
+    connect(m_alarms, &station::AlarmMonitor::eventLogged, this,
+            [this](const QDateTime &, station::AlarmMonitor::Severity, const QString &text) {
                 // The resting state has its own place at the foot: the event
                 // log keeps it, the passing message would only say it twice.
                 if (!text.isEmpty() && m_alarms->resting().contains(text))
@@ -197,47 +196,20 @@ MainWindow::MainWindow(RotatorSession *session, QWidget *parent) : QMainWindow(p
     connect(m_stop, &StopButton::stopped, m_jog, &JogPad::releaseAll);
     connect(m_stop, &StopButton::stopped, m_parkHome, &ParkHomePanel::abandonHoming);
     connect(m_stop, &StopButton::stopped, m_confirm, &TargetConfirmation::cancel);
-    // Stop (the button, Space, Esc) stops every rotor on the controller.
-    connect(m_stop, &StopButton::stopped, m_controllerRotors, &session::ControllerRotors::stopOthers);
-    // The operator stays in charge: after a local Stop, trackers may not
-    // move the rotator until the operator hands control back.
-    connect(m_stop, &StopButton::stopped, m_rotctld, [this] {
-        if (m_rotctld->isListening())
-            m_rotctld->holdRemote();
-    });
     wireOperatorActions();
     connect(m_trackers, &RotctldPanel::message, this, &MainWindow::logInfo);
     connect(m_tracking, &TrackingPanel::message, this, &MainWindow::logInfo);
     connect(m_alignment, &AlignmentPanel::message, this, &MainWindow::logInfo);
-    m_tracking->setOtherSteering([this] {
-        const QString peer = m_rotctld->remoteSteering();
-        return peer.isEmpty() ? peer : tr("Remote tracker %1").arg(peer);
-    });
-    // The station clock; made after the central widget, so it outlives the tracker that reads it.
-    m_time = new TimeController(session, this);
-    m_tracking->setClock(m_time->clock());
-    new RehearsalMarker(m_time->clock(), this);
+    m_time = new TimeController(station, this);
+    new RehearsalMarker(station->clock(), this);
     connect(m_tracking, &TrackingPanel::passOverlayChanged, m_plot, &PolarPlotWidget::setPassOverlay);
     connect(m_tracking, &TrackingPanel::passTargetMoved, m_plot, &PolarPlotWidget::setPassTarget);
     // What the tracker measures while it tracks is charted with the rest.
-    connect(&m_tracking->runner()->tracker(), &tracking::Tracker::pointingError, m_recorder,
+    connect(&station->passRunner()->tracker(), &tracking::Tracker::pointingError, m_recorder,
             &TelemetryRecorder::recordPointingError);
-    // While Slew tracks, trackers on the rotctld port are held off.
-    connect(m_tracking, &TrackingPanel::trackingActiveChanged, m_rotctld, [this](bool active) {
-        if (active)
-            m_rotctld->holdRemote(tr("Slew's own tracking"));
-        else
-            m_rotctld->releaseRemote();
-    });
-    {
-        sky::Station station;
-        QString ignored;
-        const QString saved = QSettings().value(QLatin1String(sky::kStationSettingsKey)).toString();
-        if (!saved.isEmpty() && sky::parseStation(saved, &station, &ignored)) {
-            m_tracking->setStation(station);
-            m_alignment->setStation(station);
-        }
-    }
+    // The place the station keeps; the Tracking tab follows it by itself.
+    connect(station, &station::Station::placeChanged, m_alignment, &AlignmentPanel::setStation);
+    station->restoreSavedPlace();
     // Why the link failed stays at the foot of the window until the next
     // attempt, not only for the seconds a passing message lasts.
     auto *linkProblem = new QLabel;
@@ -289,7 +261,8 @@ void MainWindow::buildMenus()
     quit->setShortcut(QKeySequence::Quit);
     connect(quit, &QAction::triggered, this, [this] {
         logInfo(tr("quitting: stopping the rotator first"));
-        session::stopThenCall(*m_session, this, [this] { close(); });
+        connect(m_station, &station::Station::shutDown, this, &QWidget::close);
+        m_station->shutdown(tr("quitting"));
     });
 
     QMenu *sky = menuBar()->addMenu(tr("&Sky"));
@@ -299,8 +272,7 @@ void MainWindow::buildMenus()
         auto *dialog = new StationDialog(this);
         dialog->setAttribute(Qt::WA_DeleteOnClose);
         connect(dialog, &QDialog::accepted, this, [this, dialog] {
-            m_tracking->setStation(dialog->station());
-            m_alignment->setStation(dialog->station());
+            m_station->setPlace(dialog->station());
             logInfo(tr("station set to %1").arg(sky::stationLocator(dialog->station().latitudeDeg,
                                                                     dialog->station().longitudeDeg)));
         });
@@ -370,13 +342,13 @@ void MainWindow::openSetupWizard()
 
 void MainWindow::logInfo(const QString &text)
 {
-    m_log->addEvent(QDateTime::currentDateTime(), AlarmMonitor::Severity::Info, text);
+    m_log->addEvent(QDateTime::currentDateTime(), station::AlarmMonitor::Severity::Info, text);
     statusBar()->showMessage(text, 8000);
 }
 
 void MainWindow::reportProblem(const QString &text)
 {
-    m_log->addEvent(QDateTime::currentDateTime(), AlarmMonitor::Severity::Warning, text);
+    m_log->addEvent(QDateTime::currentDateTime(), station::AlarmMonitor::Severity::Warning, text);
     statusBar()->showMessage(text, 30000);
 }
 
@@ -440,10 +412,10 @@ void MainWindow::sendPickedTarget(double az, double el)
 
 void MainWindow::wireOperatorActions()
 {
-    m_actions = new OperatorActions(new session::MoveWatch(m_session, this), this);
-    connect(m_actions, &OperatorActions::logged, this, [this](AlarmMonitor::Severity severity, const QString &text) {
+    m_actions = new OperatorActions(m_station->moveWatch(), this);
+    connect(m_actions, &OperatorActions::logged, this, [this](station::AlarmMonitor::Severity severity, const QString &text) {
         m_log->addEvent(QDateTime::currentDateTime(), severity, text);
-        statusBar()->showMessage(text, severity == AlarmMonitor::Severity::Info ? 8000 : 30000);
+        statusBar()->showMessage(text, severity == station::AlarmMonitor::Severity::Info ? 8000 : 30000);
     });
     // The lines that say where a move is going clear when it ends.
     connect(m_actions, &OperatorActions::moveEnded, m_confirm, &TargetConfirmation::moveEnded);

@@ -2,8 +2,9 @@
 // The operator window: connection bar and alarm banner on top; the polar
 // plot; the control column (position, go-to, jog, Stop, Park/Home, presets);
 // and tabs with the live charts, the config editor, the traffic console and
-// the event log. It only wires widgets to the session; it holds no protocol
-// state of its own.
+// the event log. It is a view of a Station (core/station/station.h): it
+// wires widgets to the Station's parts and makes none of its own, and holds
+// no protocol state.
 
 #include "session/rotatorsession.h"
 
@@ -14,12 +15,15 @@ class QTabWidget;
 namespace slew::bridge {
 class RotctldServer;
 }
+namespace slew::station {
+class AlarmMonitor;
+class Station;
+}
 
 namespace slew::ui {
 
 class AlarmBanner;
 class AlignmentPanel;
-class AlarmMonitor;
 class ConfigEditor;
 class ConnectionBar;
 class EventLog;
@@ -56,7 +60,10 @@ namespace slew::ui {
 class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
-    explicit MainWindow(session::RotatorSession *session, QWidget *parent = nullptr);
+    // The station must outlive the window.
+    explicit MainWindow(station::Station *station, QWidget *parent = nullptr);
+
+    station::Station *station() const { return m_station; }
 
     ConnectionBar *connectionBar() const { return m_connection; }
     PolarPlotWidget *polarPlot() const { return m_plot; }
@@ -70,7 +77,7 @@ public:
     ConfigEditor *configEditor() const { return m_config; }
     TrafficConsole *trafficConsole() const { return m_traffic; }
     AlarmBanner *alarmBanner() const { return m_banner; }
-    AlarmMonitor *alarmMonitor() const { return m_alarms; }
+    station::AlarmMonitor *alarmMonitor() const { return m_alarms; }
     EventLog *eventLog() const { return m_log; }
     QTabWidget *tabs() const { return m_tabs; }
     bridge::RotctldServer *rotctldServer() const { return m_rotctld; }
@@ -109,10 +116,11 @@ private:
     void buildMenus();
     void logInfo(const QString &text);
 
+    station::Station *m_station;
     session::RotatorSession *m_session;
     ConnectionBar *m_connection;
     AlarmBanner *m_banner;
-    AlarmMonitor *m_alarms;
+    station::AlarmMonitor *m_alarms;
     TelemetryRecorder *m_recorder;
     PolarPlotWidget *m_plot;
     TargetConfirmation *m_confirm;

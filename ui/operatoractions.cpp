@@ -28,12 +28,12 @@ void OperatorActions::moveStarted(const QString &what, std::optional<QPointF> ta
 
 void OperatorActions::action(const QString &text)
 {
-    emit logged(AlarmMonitor::Severity::Info, text);
+    emit logged(station::AlarmMonitor::Severity::Info, text);
 }
 
 void OperatorActions::outcome(const QString &text, bool problem)
 {
-    emit logged(problem ? AlarmMonitor::Severity::Warning : AlarmMonitor::Severity::Info, text);
+    emit logged(problem ? station::AlarmMonitor::Severity::Warning : station::AlarmMonitor::Severity::Info, text);
 }
 
 void OperatorActions::onEnded(Outcome result, QPointF at, double offDeg)

@@ -6,7 +6,7 @@
 // short and how far off, stopped, or replaced by another target. When the
 // move ends, the panels' "Going to…" lines are told to clear.
 
-#include "alarmmonitor.h"
+#include "station/alarmmonitor.h"
 #include "session/movewatch.h"
 
 #include <QObject>
@@ -30,7 +30,7 @@ public slots:
     void outcome(const QString &text, bool problem);
 
 signals:
-    void logged(AlarmMonitor::Severity severity, const QString &text);
+    void logged(station::AlarmMonitor::Severity severity, const QString &text);
     // The move the panels' lines describe has ended, however it ended.
     void moveEnded();
 

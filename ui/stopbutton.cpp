@@ -3,7 +3,11 @@
 namespace slew::ui {
 
 StopButton::StopButton(session::RotatorSession *session, QWidget *parent)
-    : QPushButton(tr("STOP"), parent), m_session(session)
+    : StopButton([session] { return bool(session->stop(session::Axes::Both)); }, parent)
+{
+}
+
+StopButton::StopButton(std::function<bool()> stop, QWidget *parent) : QPushButton(tr("STOP"), parent), m_stop(std::move(stop))
 {
     setObjectName(QStringLiteral("stopButton"));
     setToolTip(tr("Stop both axes now (Space or Esc)"));
@@ -24,7 +28,7 @@ StopButton::StopButton(session::RotatorSession *session, QWidget *parent)
 bool StopButton::stopAll()
 {
     emit stopped(); // first: a running jog or homing must not restart the motion
-    return bool(m_session->stop(session::Axes::Both));
+    return m_stop();
 }
 
 } // namespace slew::ui

@@ -2,10 +2,15 @@
 // The big red Stop. It is never disabled: whatever the state, pressing it
 // sends SA SE on any open link (the session puts it ahead of queued queries).
 // Space and Esc press it from anywhere in the window (KeyboardControl).
+// What a stop is belongs to whoever makes the button: the operator window's
+// is the Station's Stop (every rotor, trackers held off), the wizard's its
+// session's.
 
 #include "session/rotatorsession.h"
 
 #include <QPushButton>
+
+#include <functional>
 
 namespace slew::ui {
 
@@ -13,6 +18,8 @@ class StopButton : public QPushButton {
     Q_OBJECT
 public:
     explicit StopButton(session::RotatorSession *session, QWidget *parent = nullptr);
+    // Stops with `stop`, which says whether a stop went out.
+    explicit StopButton(std::function<bool()> stop, QWidget *parent = nullptr);
 
 public slots:
     bool stopAll();
@@ -21,7 +28,7 @@ signals:
     void stopped(); // after SA SE went out, so other panels can end what they were doing
 
 private:
-    session::RotatorSession *m_session;
+    std::function<bool()> m_stop;
 };
 
 } // namespace slew::ui

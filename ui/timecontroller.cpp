@@ -4,6 +4,8 @@
 #include "rehearsalmarker.h"
 
 #include "sky/skyvector.h"
+#include "station/station.h"
+#include "tracking/simulatorpace.h"
 #include "sky/utctime.h"
 
 #include <QDateTimeEdit>
@@ -28,8 +30,8 @@ double julianOf(const QDateTime &utc)
 
 } // namespace
 
-TimeController::TimeController(session::RotatorSession *session, QWidget *parent)
-    : QDialog(parent), m_clock(std::nullopt, 1.0), m_pace(session, &m_clock)
+TimeController::TimeController(station::Station *station, QWidget *parent)
+    : QDialog(parent), m_clock(station->clock()), m_pace(station->simulatorPace())
 {
     setObjectName(QStringLiteral("timeController"));
     setWindowTitle(tr("Time controller"));
@@ -82,8 +84,8 @@ TimeController::TimeController(session::RotatorSession *session, QWidget *parent
     connect(m_realTimeButton, &QPushButton::clicked, this, &TimeController::followRealTime);
     connect(m_rate, &QSpinBox::valueChanged, this, &TimeController::onRateChosen);
     connect(close, &QDialogButtonBox::rejected, this, &QDialog::hide);
-    connect(&m_clock, &tracking::StationClock::changed, this, &TimeController::showState);
-    connect(&m_pace, &tracking::SimulatorPace::followsChanged, this, &TimeController::showState);
+    connect(m_clock, &tracking::StationClock::changed, this, &TimeController::showState);
+    connect(m_pace, &tracking::SimulatorPace::followsChanged, this, &TimeController::showState);
     connect(&m_tick, &QTimer::timeout, this, &TimeController::showState);
     m_tick.start(1000);
     showState();
@@ -97,12 +99,12 @@ void TimeController::rehearse(double startJulian, double rate)
         const QSignalBlocker quiet(m_rate);
         m_rate->setValue(int(std::lround(rate)));
     }
-    m_clock.rehearse(startJulian, rate);
+    m_clock->rehearse(startJulian, rate);
 }
 
 void TimeController::followRealTime()
 {
-    m_clock.followRealTime();
+    m_clock->followRealTime();
 }
 
 void TimeController::showController()
@@ -116,21 +118,21 @@ void TimeController::onRateChosen(int rate)
 {
     // While rehearsing the clock goes on at the new rate from where it is;
     // in real time the rate waits for Start here.
-    m_clock.setRate(double(rate));
+    m_clock->setRate(double(rate));
 }
 
 void TimeController::showState()
 {
-    m_realTimeButton->setEnabled(m_clock.isRehearsal());
-    if (!m_clock.isRehearsal()) {
+    m_realTimeButton->setEnabled(m_clock->isRehearsal());
+    if (!m_clock->isRehearsal()) {
         m_state->setText(tr("Real time: the station clock is the system's UTC."));
         return;
     }
     QString text = tr("Rehearsal: the station clock reads %1 and runs %2.")
-                       .arg(RehearsalMarker::clockText(m_clock.nowJulian()), RehearsalMarker::rateText(m_clock.rate()));
-    if (m_pace.follows())
+                       .arg(RehearsalMarker::clockText(m_clock->nowJulian()), RehearsalMarker::rateText(m_clock->rate()));
+    if (m_pace->follows())
         text += u' ' + tr("The simulator runs at the same rate.");
-    else if (m_clock.rate() > 1.0)
+    else if (m_clock->rate() > 1.0)
         text += u' ' + tr("The rotator keeps its own pace: only the built-in simulator runs faster with the clock.");
     m_state->setText(text);
 }

@@ -9,7 +9,6 @@
 // (tracking/simulatorpace.h). A non-modal dialog: the window goes on
 // working beside it, and closing it keeps the clock as it is.
 
-#include "tracking/simulatorpace.h"
 #include "tracking/stationclock.h"
 
 #include <QDialog>
@@ -20,8 +19,11 @@ class QLabel;
 class QPushButton;
 class QSpinBox;
 
-namespace slew::session {
-class RotatorSession;
+namespace slew::station {
+class Station;
+}
+namespace slew::tracking {
+class SimulatorPace;
 }
 
 namespace slew::ui {
@@ -29,11 +31,12 @@ namespace slew::ui {
 class TimeController : public QDialog {
     Q_OBJECT
 public:
-    // The session's link is paced with the clock; it must outlive this.
-    explicit TimeController(session::RotatorSession *session, QWidget *parent = nullptr);
+    // Sets the station's clock (and with it the pace of its simulator); the
+    // station must outlive this.
+    explicit TimeController(station::Station *station, QWidget *parent = nullptr);
 
-    // The window's station clock: real time until a rehearsal starts.
-    const tracking::StationClock *clock() const { return &m_clock; }
+    // The station clock: real time until a rehearsal starts.
+    const tracking::StationClock *clock() const { return m_clock; }
 
     // A rehearsal from `startJulian` at `rate` (the command line's
     // --clock-start and --clock-rate, or Start here); the fields show it.
@@ -55,8 +58,8 @@ private:
     void onRateChosen(int rate);
     void showState();
 
-    tracking::StationClock m_clock;
-    tracking::SimulatorPace m_pace;
+    tracking::StationClock *m_clock;
+    const tracking::SimulatorPace *m_pace;
     QDateTimeEdit *m_start;
     QSpinBox *m_rate;
     QPushButton *m_startButton;

@@ -10,6 +10,7 @@
 #include "sky/sunmoon.h"
 #include "sky/tlesources.h"
 #include "sky/utctime.h"
+#include "station/station.h"
 #include "tracking/rotatorreach.h"
 #include "tracking/skytrack.h"
 
@@ -60,8 +61,9 @@ QString badge(const tracking::PassPlan &plan)
 
 } // namespace
 
-TrackingPanel::TrackingPanel(session::RotatorSession *session, sky::TleSources *sets, QWidget *parent)
-    : QWidget(parent), m_session(session), m_sets(sets), m_runner(std::make_unique<tracking::PassRunner>(session))
+TrackingPanel::TrackingPanel(station::Station *station, QWidget *parent)
+    : QWidget(parent), m_station(station), m_session(station->session()), m_sets(station->elementSets()),
+      m_clock(station->clock()), m_runner(station->passRunner())
 {
     setObjectName(QStringLiteral("trackingPanel"));
     m_stationLine = new QLabel;
@@ -108,39 +110,27 @@ TrackingPanel::TrackingPanel(session::RotatorSession *session, sky::TleSources *
     connect(m_picker, &TargetPicker::chosenChanged, this, &TrackingPanel::showPasses);
     connect(m_passes, &QTableWidget::itemSelectionChanged, this, &TrackingPanel::onPassChosen);
     connect(m_track, &QPushButton::clicked, this, &TrackingPanel::startTracking);
-    connect(m_stopTracking, &QPushButton::clicked, this, [this] { m_runner->stop(tr("stopped from the Tracking tab")); });
+    connect(m_stopTracking, &QPushButton::clicked, this, [this] { m_station->untrack(tr("stopped from the Tracking tab")); });
     connect(m_sets, &sky::TleSources::setsChanged, this, &TrackingPanel::showSetAges);
     connect(m_session, &session::RotatorSession::profileChanged, this, &TrackingPanel::showPasses);
-    connect(m_runner.get(), &tracking::PassRunner::logLine, this, &TrackingPanel::message);
-    connect(m_runner.get(), &tracking::PassRunner::activeChanged, this, &TrackingPanel::trackingActiveChanged);
+    connect(m_runner, &tracking::PassRunner::logLine, this, &TrackingPanel::message);
     connect(&m_runner->tracker(), &tracking::Tracker::stateChanged, this, [this] {
         m_stopTracking->setEnabled(m_runner->isRunning());
         m_track->setEnabled(!m_runner->isRunning());
     });
     connect(&m_tick, &QTimer::timeout, this, &TrackingPanel::refreshLive);
     m_tick.start(1000);
-    setStation(std::nullopt);
-}
-
-TrackingPanel::~TrackingPanel()
-{
-    m_runner->stop(tr("the window is closing"));
-}
-
-void TrackingPanel::setStation(const std::optional<sky::Station> &station)
-{
-    m_station = station;
-    m_stationLine->setText(station ? sky::describeStation(*station) : tr("not set: Sky → Station…"));
-    showPasses();
-}
-
-void TrackingPanel::setClock(const tracking::StationClock *clock)
-{
-    m_clock = clock ? clock : &m_systemClock;
+    connect(m_station, &station::Station::placeChanged, this, &TrackingPanel::showStation);
     // A clock started again or sent back to real time: the day's passes are
     // another day's. (A running tracker plans again by itself: PassRunner.)
-    disconnect(m_clockChanged);
-    m_clockChanged = connect(m_clock, &tracking::StationClock::changed, this, &TrackingPanel::showPasses);
+    connect(m_clock, &tracking::StationClock::changed, this, &TrackingPanel::showPasses);
+    showStation();
+}
+
+void TrackingPanel::showStation()
+{
+    const std::optional<sky::Station> place = m_station->place();
+    m_stationLine->setText(place ? sky::describeStation(*place) : tr("not set: Sky → Station…"));
     showPasses();
 }
 
@@ -188,7 +178,8 @@ void TrackingPanel::showPasses()
     m_planning = false;
     const int generation = ++m_generation; // a forecast still running is for another choice
     const auto target = chosenTarget();
-    if (!target || !m_station) {
+    const std::optional<sky::Station> place = m_station->place();
+    if (!target || !place) {
         emit passOverlayChanged(std::nullopt);
         refreshLive();
         emit passesShown();
@@ -208,7 +199,7 @@ void TrackingPanel::showPasses()
         m_planning = false;
         fillPasses(watcher->result());
     });
-    watcher->setFuture(QtConcurrent::run([sky = *m_sky, station = *m_station, window, reach = reach()] {
+    watcher->setFuture(QtConcurrent::run([sky = *m_sky, station = *place, window, reach = reach()] {
         return tracking::forecastPasses(sky, station, window, reach);
     }));
     refreshLive();
@@ -273,7 +264,7 @@ void TrackingPanel::onPassChosen()
 void TrackingPanel::startTracking()
 {
     const auto target = chosenTarget();
-    if (!target || !m_station) {
+    if (!target || !m_station->place()) {
         emit message(tr("tracking needs a target and the station (Sky → Station…)"));
         return;
     }
@@ -281,12 +272,10 @@ void TrackingPanel::startTracking()
         emit message(tr("tracking needs a rotator: connect first"));
         return;
     }
-    if (const QString other = m_otherSteering ? m_otherSteering() : QString(); !other.isEmpty()) {
-        emit message(tr("%1 is steering the rotator: stop it (or Stop, which holds remote trackers off) "
-                        "before Slew tracks, or the two will fight").arg(other));
+    if (const QString refused = m_station->track(*target, 0.0); !refused.isEmpty()) {
+        emit message(refused);
         return;
     }
-    m_runner->start(*target, *m_station, 0.0, m_clock);
     m_track->setEnabled(false);
     m_stopTracking->setEnabled(true);
 }
@@ -314,12 +303,13 @@ void TrackingPanel::refreshLive()
         m_countdown->setText(tr("up now: LOS in %1").arg(hms((next->los.julian - now) * sky::kSecondsPerDay)));
     }
 
-    if (!m_sky || !m_station) {
+    const std::optional<sky::Station> place = m_station->place();
+    if (!m_sky || !place) {
         m_live->clear();
         return;
     }
     QString where;
-    if (const std::optional<sky::LookAngles> look = m_sky->lookAt(*m_station, now)) {
+    if (const std::optional<sky::LookAngles> look = m_sky->lookAt(*place, now)) {
         where = tr("az %1°, el %2°").arg(look->azimuthDeg, 0, 'f', 1).arg(look->elevationDeg, 0, 'f', 1);
         if (m_sky->target().kind == TrackTarget::Kind::Satellite)
             where += tr(", range %1 km, range-rate %2 km/s, Doppler %3 kHz at 435 MHz")

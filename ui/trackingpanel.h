@@ -31,6 +31,9 @@ class RotatorSession;
 namespace slew::sky {
 class TleSources;
 }
+namespace slew::station {
+class Station;
+}
 
 namespace slew::ui {
 
@@ -40,22 +43,13 @@ class TargetPicker;
 class TrackingPanel : public QWidget {
     Q_OBJECT
 public:
-    TrackingPanel(session::RotatorSession *session, sky::TleSources *sets, QWidget *parent = nullptr);
-    ~TrackingPanel() override;
+    // Plans for the station's place by the station's clock, and tracks with
+    // its pass runner; the station must outlive the panel. When the place or
+    // the clock changes the passes are planned again (a running tracker
+    // plans again by itself).
+    explicit TrackingPanel(station::Station *station, QWidget *parent = nullptr);
 
-    // The station to plan for (the window's, from Sky → Station…).
-    void setStation(const std::optional<sky::Station> &station);
-    // Who else steers the rotator now (a remote tracker), or empty: Track is
-    // refused, and a pass waits, while someone does.
-    void setOtherSteering(std::function<QString()> who)
-    {
-        m_otherSteering = who;
-        m_runner->setOtherSteering(std::move(who));
-    }
-    // The clock passes are predicted and tracked by; the system's UTC unless
-    // set (a rehearsal). It must outlive the panel. When it changes the
-    // passes are planned again, and a running tracker plans again too.
-    void setClock(const tracking::StationClock *clock);
+    station::Station *station() const { return m_station; }
 
     // Selects the target whose name starts with `name` ("sun", "moon" too).
     bool selectTarget(const QString &name);
@@ -64,7 +58,7 @@ public:
     QPushButton *stopTrackingButton() const { return m_stopTracking; }
     QLabel *countdown() const { return m_countdown; }
     QLabel *live() const { return m_live; }
-    tracking::PassRunner *runner() const { return m_runner.get(); }
+    tracking::PassRunner *runner() const { return m_runner; }
     TargetPicker *targetPicker() const { return m_picker; }
     ElementSetAges *elementSetAges() const { return m_setAges; }
     // The passes listed; empty while they are being planned (isPlanning).
@@ -78,10 +72,9 @@ signals:
     void message(const QString &text);
     // The pass table is filled (or emptied) for the target chosen.
     void passesShown();
-    // holdsRotator() of the runner changed: the window holds off trackers.
-    void trackingActiveChanged(bool active);
 
 private:
+    void showStation();
     void showSetAges();
     void showPasses();
     void fillPasses(const QList<tracking::PlannedPass> &planned);
@@ -91,14 +84,11 @@ private:
     tracking::RotatorReach reach() const;
     std::optional<tracking::TrackTarget> chosenTarget() const;
 
+    station::Station *m_station;
     session::RotatorSession *m_session;
     sky::TleSources *m_sets;
-    std::optional<sky::Station> m_station;
-    tracking::StationClock m_systemClock;
-    const tracking::StationClock *m_clock = &m_systemClock;
-    QMetaObject::Connection m_clockChanged;
-    std::unique_ptr<tracking::PassRunner> m_runner;
-    std::function<QString()> m_otherSteering;
+    const tracking::StationClock *m_clock;
+    tracking::PassRunner *m_runner;
     std::optional<tracking::TargetSky> m_sky; // the chosen target's, while there is a station
     QList<tracking::PlannedPass> m_planned; // the table's passes, sampled and planned
     bool m_planning = false;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "sharedoptions.h"
 
-#include "bridge/headlessstation.h"
+#include "station/serviceconfig.h"
 #include "input/finitenumber.h"
 #include "input/logtext.h"
 #include "sky/utctime.h"
@@ -37,7 +37,7 @@ bool readProfileOptions(const QCommandLineParser &parser, const OptionLabel &lab
     if (parser.isSet(limitsOption)) {
         const QString text = parser.value(limitsOption);
         QString why;
-        const auto limits = bridge::parseLimits(text, &why);
+        const auto limits = station::parseLimits(text, &why);
         if (!limits) {
             *error = QStringLiteral("%1 %2: %3").arg(label(limitsOption), shownValue(text), why);
             return false;

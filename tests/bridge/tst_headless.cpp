@@ -39,6 +39,7 @@ private slots:
     void refusesABadRotorList();
     void tracksAPassAndHoldsOffRemoteTrackers();
     void holdsAFixedDirection();
+    void logsAlarmsInTheBannersWords();
     void refusesABadTrack();
     void runningOutOfDescriptorsDoesNotSpin();
     void hostileClientCannotFloodTheLog();
@@ -517,6 +518,33 @@ void HeadlessTest::holdsAFixedDirection()
         return std::abs(at.x() - 123.5) < 0.3 && std::abs(at.y() - 41) < 0.3;
     }, 20000), qPrintable(QStringLiteral("at %1, %2").arg(at.x()).arg(at.y())));
     QCOMPARE(ask(client, "P 10 10"), QByteArray("RPRT -9\n"));
+    QSignalSpy finished(&slew, &QProcess::finished);
+    ::kill(pid_t(slew.processId()), SIGTERM);
+    QVERIFY(finished.wait(10000));
+    QCOMPARE(slew.exitCode(), 0);
+}
+
+void HeadlessTest::logsAlarmsInTheBannersWords()
+{
+    // A jammed azimuth on the built-in simulator: the motor error the
+    // window's banner shows ("Controller error: ...", "Axis error (GS): ...",
+    // from the one alarm monitor) is in the service's log, in those words.
+    QProcess slew;
+    quint16 port = 0;
+    QVERIFY2(startSlew(slew, {"--connect", "sim:?jam=az&jam_after=0.3", "--rotctld-listen", "127.0.0.1:0"}, &port),
+             slew.readAllStandardError().constData());
+    QByteArray out = m_startupLog;
+    QTcpSocket client;
+    client.connectToHost(QHostAddress::LocalHost, port);
+    QTRY_COMPARE(client.state(), QAbstractSocket::ConnectedState);
+    QVERIFY(QTest::qWaitFor([&] { return ask(client, "p").count('\n') == 2; }, 10000));
+    QCOMPARE(ask(client, "P 90 0"), QByteArray("RPRT 0\n"));
+    const QRegularExpression alarm(QStringLiteral("Z alarm: (Controller error|Axis error \\(GS\\)): [^\n]*motor"),
+                                   QRegularExpression::CaseInsensitiveOption);
+    QVERIFY2(QTest::qWaitFor([&] {
+        out += slew.readAllStandardOutput();
+        return alarm.match(QString::fromUtf8(out)).hasMatch();
+    }, 15000), out.constData());
     QSignalSpy finished(&slew, &QProcess::finished);
     ::kill(pid_t(slew.processId()), SIGTERM);
     QVERIFY(finished.wait(10000));

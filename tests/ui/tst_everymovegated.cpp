@@ -22,6 +22,7 @@
 #include "gotopanel.h"
 #include "jogpad.h"
 #include "mainwindow.h"
+#include "station/station.h"
 #include "parkhomepanel.h"
 #include "polarplotwidget.h"
 #include "presetpanel.h"
@@ -56,10 +57,11 @@ private slots:
     void init()
     {
         scriptedLinkDialect() = slew::protocol::Dialect::Easycomm3;
-        m_session = std::make_unique<RotatorSession>();
+        m_station = std::make_unique<slew::station::Station>();
+        m_session = m_station->session();
         slew::model::RotatorProfile profile; // 0..360, 0..90, park at 0/90
         m_session->setProfile(profile);
-        m_window = std::make_unique<slew::ui::MainWindow>(m_session.get());
+        m_window = std::make_unique<slew::ui::MainWindow>(m_station.get());
         m_window->show();
         m_session->connectTo(QStringLiteral("scripted:"));
         QTRY_VERIFY(lastScriptedLink());
@@ -77,7 +79,8 @@ private slots:
     void cleanup()
     {
         m_window.reset();
-        m_session.reset();
+        m_session = nullptr;
+        m_station.reset();
     }
 
     void theSessionsOwnCommands()
@@ -151,7 +154,7 @@ private slots:
 
     void theRotctldServer()
     {
-        slew::bridge::RotctldServer server(m_session.get());
+        slew::bridge::RotctldServer server(m_session);
         QString error;
         QVERIFY2(server.listen(QHostAddress::LocalHost, 0, &error), qPrintable(error));
         QTcpSocket tracker;
@@ -169,7 +172,7 @@ private slots:
 
     void theTunerAndSlewctl()
     {
-        slew::tuning::StepExperiment step(m_session.get());
+        slew::tuning::StepExperiment step(m_session);
         expectNothingSent("tuning step ending past the link's azimuth", [&] {
             QVERIFY(!step.start(Axis::Azimuth, 340, 355));
             QVERIFY2(step.error().contains(QStringLiteral("link reports")), qPrintable(step.error()));
@@ -177,7 +180,7 @@ private slots:
         expectNothingSent("tuning step starting past the link's elevation",
                           [&] { QVERIFY(!step.start(Axis::Elevation, 85, 70)); });
 
-        slew::console::ConsoleRunner runner(m_session.get(), false);
+        slew::console::ConsoleRunner runner(m_session, false);
         QSignalSpy finished(&runner, &slew::console::ConsoleRunner::finished);
         expectNothingSent("slewctl goto", [&] {
             QString error;
@@ -251,7 +254,7 @@ private:
     // (sessionRefuses false: the widget showed the gate's preview instead).
     void expectNothingSent(const QByteArray &path, const std::function<void()> &act, bool sessionRefuses = true)
     {
-        QSignalSpy refused(m_session.get(), &RotatorSession::moveRefused);
+        QSignalSpy refused(m_session, &RotatorSession::moveRefused);
         const qsizetype mark = m_device->written.size();
         act();
         if (QTest::currentTestFailed()) {
@@ -265,7 +268,8 @@ private:
             QVERIFY2(refused.count() >= 1, path.constData());
     }
 
-    std::unique_ptr<RotatorSession> m_session;
+    std::unique_ptr<slew::station::Station> m_station;
+    RotatorSession *m_session = nullptr;
     std::unique_ptr<slew::ui::MainWindow> m_window;
     ScriptedDevice *m_device = nullptr;
 };

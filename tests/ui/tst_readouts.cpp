@@ -74,7 +74,7 @@ private slots:
         // and it is opened later.
         ui::EventLog log;
         for (int i = 0; i < 20; ++i)
-            log.addEvent(QDateTime::currentDateTime(), ui::AlarmMonitor::Severity::Warning,
+            log.addEvent(QDateTime::currentDateTime(), station::AlarmMonitor::Severity::Warning,
                          QStringLiteral("a long line from a controller ") + QString(300, u'x'));
         log.resize(400, 200);
         log.show();
@@ -82,7 +82,7 @@ private slots:
         QVERIFY(log.horizontalScrollBar()->maximum() > 0); // there is somewhere to scroll to
         QCOMPARE(log.horizontalScrollBar()->value(), 0);
         // And while it is shown.
-        log.addEvent(QDateTime::currentDateTime(), ui::AlarmMonitor::Severity::Info, QString(500, u'y'));
+        log.addEvent(QDateTime::currentDateTime(), station::AlarmMonitor::Severity::Info, QString(500, u'y'));
         QCOMPARE(log.horizontalScrollBar()->value(), 0);
     }
 };

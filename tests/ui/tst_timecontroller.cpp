@@ -49,7 +49,7 @@ void atJo65hq(TrackingPanel *panel)
     slew::sky::Station station;
     QString error;
     QVERIFY(slew::sky::parseStation(QStringLiteral("JO65hq"), &station, &error));
-    panel->setStation(station);
+    panel->station()->setPlace(station);
 }
 
 // The pass table is planned off the window's thread: wait for it.

@@ -59,8 +59,10 @@ void rehearse(TrackingPanel *panel, const slew::tracking::StationClock &clock)
     slew::sky::Station station;
     QString error;
     QVERIFY(slew::sky::parseStation(QStringLiteral("JO65hq"), &station, &error));
-    panel->setClock(&clock);
-    panel->setStation(station);
+    // The station's own clock, started where the test's is.
+    slew::station::Station *home = panel->station();
+    home->clock()->rehearse(clock.nowJulian(), clock.rate());
+    home->setPlace(station);
 }
 
 // The overlap and flip rotator (450°/180°) on a manual-clock simulator.

@@ -7,14 +7,14 @@
 
 #include "../common/simulatorpump.h"
 #include "../session/fakedevice.h"
-#include "alarmmonitor.h"
+#include "station/alarmmonitor.h"
 #include "session/rotatorsession.h"
 
 #include <QSignalSpy>
 #include <QTest>
 
 using slew::session::RotatorSession;
-using slew::ui::AlarmMonitor;
+using slew::station::AlarmMonitor;
 
 class UnreadableAlarmTest : public QObject {
     Q_OBJECT

@@ -28,7 +28,8 @@ void WindowFixture::prepareApplication()
     slew::sim::registerSimulatorScheme();
 }
 
-WindowFixture::WindowFixture(const QString &uri_) : window(std::make_unique<slew::ui::MainWindow>(&session)), uri(uri_)
+WindowFixture::WindowFixture(const QString &uri_)
+    : session(*station.session()), window(std::make_unique<slew::ui::MainWindow>(&station)), uri(uri_)
 {
     QObject::connect(&session, &slew::session::RotatorSession::bytesSent, &session,
                      [this](const QByteArray &bytes) { sent << QString::fromLatin1(bytes).trimmed(); });

@@ -14,6 +14,7 @@
 #include "../common/simulatorpump.h"
 #include "mainwindow.h"
 #include "session/rotatorsession.h"
+#include "station/station.h"
 
 #include <QElapsedTimer>
 #include <QPointF>
@@ -77,7 +78,10 @@ public:
     // The link's stepped clock where it keeps one, else the wall clock.
     qint64 nowMs() const;
 
-    slew::session::RotatorSession session;
+    // The window's station, as the application makes it; `session` is its
+    // (first) rotor's.
+    slew::station::Station station;
+    slew::session::RotatorSession &session;
     SimulatorPump pump;
     std::unique_ptr<slew::ui::MainWindow> window;
     QString uri;

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <utility>
 
-namespace slew::ui {
+namespace slew::station {
 
 using session::RotatorSession;
 
@@ -104,10 +104,13 @@ void AlarmMonitor::setAlarm(const QString &key, bool on, const QString &text, Se
             return;
         m_active.insert(key, Condition{text, severity});
         log(severity, text);
+        emit alarmRaised(key, text, severity);
     } else {
         if (!m_active.contains(key))
             return;
-        log(Severity::Info, tr("Cleared: %1").arg(m_active.take(key).text));
+        const QString was = m_active.take(key).text;
+        log(Severity::Info, tr("Cleared: %1").arg(was));
+        emit alarmCleared(key, was);
     }
     emit alarmsChanged(activeAlarms(), anySevere());
 }
@@ -242,4 +245,4 @@ void AlarmMonitor::checkEndStop(int axis, int bits, double reportedSpeed)
     }
 }
 
-} // namespace slew::ui
+} // namespace slew::station

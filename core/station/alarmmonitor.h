@@ -18,7 +18,7 @@
 #include <QObject>
 #include <QTimer>
 
-namespace slew::ui {
+namespace slew::station {
 
 class AlarmMonitor : public QObject {
     Q_OBJECT
@@ -42,8 +42,13 @@ public slots:
 
 signals:
     void alarmsChanged(const QStringList &active, bool severe);
-    void eventLogged(const QDateTime &when, slew::ui::AlarmMonitor::Severity severity, const QString &text);
+    void eventLogged(const QDateTime &when, slew::station::AlarmMonitor::Severity severity, const QString &text);
     void restingChanged(const QString &text);
+    // One alarm or warning came or went: the station service logs these,
+    // in the banner's words. `key` names the condition ("link", "ge", "gs",
+    // "stale", "endstop-…", "checksum", "unreadable", "refused-move").
+    void alarmRaised(const QString &key, const QString &text, slew::station::AlarmMonitor::Severity severity);
+    void alarmCleared(const QString &key, const QString &text);
 
 private:
     void setAlarm(const QString &key, bool on, const QString &text, Severity severity = Severity::Alarm);
@@ -85,4 +90,4 @@ private:
     QTimer m_refusedMoveShown;
 };
 
-} // namespace slew::ui
+} // namespace slew::station

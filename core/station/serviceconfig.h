@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// What the station service is asked to run, from its command line or its
+// config file (app/slew_headless.cpp reads both into this), and the parsers
+// for the options whose syntax is the station's own.
+
+#include "model/rotatorlimits.h"
+#include "model/rotatorprofile.h"
+#include "sky/station.h"
+#include "tracking/tracktarget.h"
+
+#include <QHostAddress>
+#include <QList>
+
+#include <optional>
+
+namespace slew::station {
+
+struct ServiceConfig {
+    model::RotatorProfile profile;     // its uri is the link to open
+    QHostAddress rotctldAddress = QHostAddress(QHostAddress::LocalHost);
+    quint16 rotctldPort = 0;
+    bool rotctldEnabled = false;
+    QList<QHostAddress> allowedClients; // empty: any
+    int rotctldMaxClients = 32;         // RotctldServer::kDefaultMaxClients
+    std::optional<sky::Station> station; // --qth / `qth =`: where the antenna stands
+    // --rotors: the rotors of a multi-rotor controller to serve, each with a
+    // session and a rotctld port of its own: rotctldPort, the next port, and
+    // so on (each a free port of its own when rotctldPort is 0). Empty: the
+    // one rotor the URI names, or the controller's default.
+    QList<int> rotors;
+    // --track: follow every pass of a satellite, the sun or the moon with
+    // the (first) rotor until SIGTERM. Needs the station.
+    struct Track {
+        tracking::TrackTarget target;
+        double minElevationDeg = 0;
+        std::optional<double> clockStartJulian; // --clock-start: a rehearsal
+        double clockRate = 1.0;                 // --clock-rate
+    };
+    std::optional<Track> track;
+};
+
+// "AZMIN:AZMAX,ELMIN:ELMAX" (`--limits 0:450,0:180`) as limits, checked;
+// nothing (and why in *error) otherwise.
+std::optional<model::RotatorLimits> parseLimits(const QString &text, QString *error);
+
+// "1,2,4" or "1-4" as rotor numbers 1..4, each once, in the order given;
+// nothing (and why in *error) for anything else.
+std::optional<QList<int>> parseRotorList(const QString &text, QString *error);
+
+} // namespace slew::station

@@ -1,0 +1,264 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "station.h"
+
+#include "alarmmonitor.h"
+
+#include "bridge/rotctldserver.h"
+#include "session/controllerrotors.h"
+#include "session/movewatch.h"
+#include "session/rotatorsession.h"
+#include "session/stopbeforeexit.h"
+#include "sky/tlesources.h"
+#include "tracking/passrunner.h"
+#include "tracking/simulatorpace.h"
+#include "tracking/stationclock.h"
+#include "tracking/tracktarget.h"
+#include "transport/sharedline.h"
+
+#include <QSettings>
+
+namespace slew::station {
+
+using session::RotatorSession;
+
+namespace {
+
+StationOptions windowOptions()
+{
+    StationOptions options;
+    options.followControllerRotors = true;
+    return options;
+}
+
+} // namespace
+
+Station::Station(QObject *parent) : Station(windowOptions(), parent) {}
+
+Station::Station(const StationOptions &options, QObject *parent) : QObject(parent)
+{
+    QList<int> numbers = options.rotors;
+    if (!numbers.isEmpty()) {
+        m_line = std::make_unique<transport::SharedLine>(options.sharedLineUri);
+        if (!m_line->isValid()) {
+            m_error = m_line->error();
+            m_line.reset();
+            numbers.clear(); // no rotors at all: nothing would reach a line
+        }
+    } else {
+        numbers = {0};
+    }
+    if (m_error.isEmpty()) {
+        for (int n : numbers)
+            addRotor(n, options);
+    }
+    // Offline first: nothing is read or fetched until a face asks.
+    m_elementSets = std::make_unique<sky::TleSources>(sky::elementSetCacheDirectory());
+    m_clock = std::make_unique<tracking::StationClock>();
+    if (m_rotors.empty())
+        return;
+    RotatorSession *first = session();
+    // Before the first connection: a multi-rotor controller's line is shared
+    // from the start.
+    if (options.followControllerRotors && !m_line)
+        m_controllerRotors = std::make_unique<session::ControllerRotors>(first);
+    m_moveWatch = std::make_unique<session::MoveWatch>(first);
+    m_pace = std::make_unique<tracking::SimulatorPace>(first, m_clock.get());
+    m_runner = std::make_unique<tracking::PassRunner>(first);
+    wireTracking();
+}
+
+Station::~Station()
+{
+    if (m_runner && m_runner->isRunning())
+        m_runner->stop(tr("the station is closing"));
+}
+
+void Station::addRotor(int number, const StationOptions &options)
+{
+    Rotor &rotor = m_rotors.emplace_back();
+    rotor.number = number;
+    rotor.session = std::make_unique<RotatorSession>();
+    RotatorSession *s = rotor.session.get();
+    RotatorSession::Options sessionOptions = s->options();
+    sessionOptions.autoReconnect = options.autoReconnect;
+    s->setOptions(sessionOptions);
+    if (options.profile)
+        s->setProfile(*options.profile);
+    if (m_line)
+        s->setLinkMaker([line = m_line.get()](const QString &uri) { return line->makeLink(uri); });
+    rotor.server = std::make_unique<bridge::RotctldServer>(s);
+    rotor.alarms = std::make_unique<AlarmMonitor>(s);
+}
+
+void Station::wireTracking()
+{
+    bridge::RotctldServer *server = this->server();
+    // While Slew tracks, trackers on the rotctld port are held off...
+    connect(m_runner.get(), &tracking::PassRunner::activeChanged, this, [this, server](bool active) {
+        if (active)
+            server->holdRemote(tr("Slew's own tracking"));
+        else
+            server->releaseRemote();
+        emit trackingChanged(active);
+    });
+    // ...and while a remote tracker steers, Slew's own tracking waits.
+    m_runner->setOtherSteering([this] { return otherSteering(); });
+}
+
+int Station::rotorNumber(int index) const
+{
+    return index >= 0 && index < rotorCount() ? m_rotors[size_t(index)].number : -1;
+}
+
+RotatorSession *Station::session(int index) const
+{
+    return index >= 0 && index < rotorCount() ? m_rotors[size_t(index)].session.get() : nullptr;
+}
+
+bridge::RotctldServer *Station::server(int index) const
+{
+    return index >= 0 && index < rotorCount() ? m_rotors[size_t(index)].server.get() : nullptr;
+}
+
+AlarmMonitor *Station::alarms(int index) const
+{
+    return index >= 0 && index < rotorCount() ? m_rotors[size_t(index)].alarms.get() : nullptr;
+}
+
+QList<RotatorSession *> Station::everySession() const
+{
+    QList<RotatorSession *> sessions;
+    for (const Rotor &rotor : m_rotors)
+        sessions.append(rotor.session.get());
+    if (m_controllerRotors) {
+        for (RotatorSession *other : m_controllerRotors->rotors()) {
+            if (!sessions.contains(other))
+                sessions.append(other);
+        }
+    }
+    return sessions;
+}
+
+QString Station::rotorUri(int index) const
+{
+    const RotatorSession *s = session(index);
+    if (!s)
+        return {};
+    return m_line ? transport::SharedLine::rotorUri(m_line->uri(), rotorNumber(index)) : s->profile().uri;
+}
+
+void Station::connectRotators()
+{
+    for (int i = 0; i < rotorCount(); ++i)
+        session(i)->connectTo(rotorUri(i));
+}
+
+void Station::disconnectRotators()
+{
+    for (Rotor &rotor : m_rotors) {
+        rotor.alarms->expectDisconnect();
+        rotor.session->disconnectFromRotator();
+    }
+}
+
+session::CommandResult Station::stop()
+{
+    if (m_rotors.empty())
+        return session::CommandResult{m_error};
+    session::CommandResult result = session()->stop(session::Axes::Both);
+    for (size_t i = 1; i < m_rotors.size(); ++i) {
+        if (m_rotors[i].session->isConnected())
+            m_rotors[i].session->stop(session::Axes::Both);
+    }
+    if (m_controllerRotors)
+        m_controllerRotors->stopOthers();
+    // The operator stays in charge: after a local Stop, trackers may not
+    // move the rotator until the operator hands control back.
+    for (Rotor &rotor : m_rotors) {
+        if (rotor.server->isListening())
+            rotor.server->holdRemote();
+    }
+    return result;
+}
+
+void Station::handControlBack()
+{
+    for (Rotor &rotor : m_rotors)
+        rotor.server->releaseRemote();
+}
+
+QString Station::otherSteering() const
+{
+    if (m_rotors.empty())
+        return {};
+    const QString peer = server()->remoteSteering();
+    return peer.isEmpty() ? peer : tr("remote tracker %1").arg(peer);
+}
+
+QString Station::track(const tracking::TrackTarget &target, double minElevationDeg)
+{
+    if (!m_runner)
+        return m_error;
+    if (!m_place)
+        return tr("tracking needs the station's place");
+    if (QString other = otherSteering(); !other.isEmpty()) {
+        other[0] = other[0].toUpper();
+        return tr("%1 is steering the rotator: stop it (or Stop, which holds remote trackers off) "
+                  "before Slew tracks, or the two will fight")
+            .arg(other);
+    }
+    m_runner->start(target, *m_place, minElevationDeg, m_clock.get());
+    return {};
+}
+
+void Station::untrack(const QString &why)
+{
+    if (m_runner)
+        m_runner->stop(why);
+}
+
+void Station::setPlace(const std::optional<sky::Station> &place)
+{
+    m_place = place;
+    emit placeChanged(m_place);
+}
+
+void Station::restoreSavedPlace()
+{
+    sky::Station saved;
+    QString ignored;
+    const QString text = QSettings().value(QLatin1String(sky::kStationSettingsKey)).toString();
+    if (!text.isEmpty() && sky::parseStation(text, &saved, &ignored))
+        setPlace(saved);
+}
+
+void Station::shutdown(const QString &why)
+{
+    if (m_shuttingDown)
+        return;
+    m_shuttingDown = true;
+    if (m_runner)
+        m_runner->stop(why);
+    // No tracker moves a rotor again meanwhile.
+    for (Rotor &rotor : m_rotors)
+        rotor.server->close();
+    const QList<RotatorSession *> sessions = everySession();
+    m_stillStopping = int(sessions.size());
+    if (m_stillStopping == 0) {
+        emit shutDown();
+        return;
+    }
+    for (RotatorSession *s : sessions) {
+        s->reportHeldBack(); // the journal gets the count of what it was spared
+        const bool sent = session::stopThenCall(*s, this, [this] {
+            if (--m_stillStopping == 0)
+                emit shutDown();
+        });
+        for (const Rotor &rotor : m_rotors) {
+            if (sent && rotor.session.get() == s)
+                emit exitStopSent(rotor.number);
+        }
+    }
+}
+
+} // namespace slew::station

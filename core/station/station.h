@@ -1,0 +1,178 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// A ground station: everything Slew runs for one antenna site, with no
+// window. The operator window is a view of a Station; the station service
+// (`slew --headless`) is a Station with a log (stationservice.h). Every rule
+// about how the parts work together is written here once:
+//
+//   - the rotor sessions: one, or one per rotor of a multi-rotor controller
+//     sharing one line (the service's --rotors), or the one the window drives
+//     with the controller's other rotors followed beside it (ControllerRotors);
+//   - a rotctld server per rotor (listening only when a face asks) and its
+//     holds: while Slew tracks, trackers on the port are held off; after the
+//     operator's Stop they are held off until control is handed back; while a
+//     remote tracker steers, Slew's own tracking waits;
+//   - an alarm monitor per rotor, so the window's banner and the service's
+//     log judge the same conditions in the same words;
+//   - the element sets, the station's place and clock (with the built-in
+//     simulator paced to it), the pass runner (the tracker);
+//   - stopping every rotor, and letting the stops leave the link, before exit.
+//
+// Its intent (connect, go to, stop, park, home, track, hand control back,
+// the place, shut down) and its state (signals) are values: positions,
+// targets, plans, alarms, states. A face that needs more reaches the parts
+// through the accessors below, and never makes one of its own.
+
+#include "model/rotatorprofile.h"
+#include "session/sessiontypes.h"
+#include "sky/station.h"
+
+#include <QList>
+#include <QObject>
+#include <QString>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace slew::session {
+class ControllerRotors;
+class MoveWatch;
+class RotatorSession;
+}
+namespace slew::transport {
+class SharedLine;
+}
+namespace slew::bridge {
+class RotctldServer;
+}
+namespace slew::sky {
+class TleSources;
+}
+namespace slew::tracking {
+class PassRunner;
+class SimulatorPace;
+class StationClock;
+struct TrackTarget;
+}
+
+namespace slew::station {
+
+class AlarmMonitor;
+
+struct StationOptions {
+    // The rotors of a multi-rotor controller to serve, each with a session,
+    // an alarm monitor and a rotctld server of its own, all on the one line
+    // `sharedLineUri` names (transport/sharedline.h). Empty: one rotor.
+    QList<int> rotors;
+    QString sharedLineUri;
+    // The window's way with a multi-rotor controller: it drives one rotor
+    // and follows the others as they come (session/controllerrotors.h).
+    bool followControllerRotors = false;
+    // A service keeps trying after a loss; the window leaves it to the operator.
+    bool autoReconnect = false;
+    // Every rotor's profile before it connects (its link is not opened here).
+    std::optional<model::RotatorProfile> profile;
+};
+
+class Station : public QObject {
+    Q_OBJECT
+public:
+    // The window's station: one rotor, the controller's others followed.
+    explicit Station(QObject *parent = nullptr);
+    explicit Station(const StationOptions &options, QObject *parent = nullptr);
+    ~Station() override;
+
+    // False, with error(), when the rotors' shared line could not be made
+    // from its URI: such a station has no rotors.
+    bool isValid() const { return m_error.isEmpty(); }
+    QString error() const { return m_error; }
+
+    // --- The parts, for the faces that show them ---------------------------
+    int rotorCount() const { return int(m_rotors.size()); }
+    // 0 for the one rotor of an ordinary rotator, else the controller's 1..4.
+    int rotorNumber(int index) const;
+    session::RotatorSession *session(int index = 0) const;
+    // The link connectRotators() opens for the rotor: its profile's, or its
+    // address on the shared line.
+    QString rotorUri(int index) const;
+    bridge::RotctldServer *server(int index = 0) const;
+    AlarmMonitor *alarms(int index = 0) const;
+    // The other rotors of the controller the window drives; null when not followed.
+    session::ControllerRotors *controllerRotors() const { return m_controllerRotors.get(); }
+    // Where the first rotor's moves went: arrived, stopped short, replaced.
+    session::MoveWatch *moveWatch() const { return m_moveWatch.get(); }
+    sky::TleSources *elementSets() const { return m_elementSets.get(); }
+    tracking::StationClock *clock() const { return m_clock.get(); }
+    tracking::SimulatorPace *simulatorPace() const { return m_pace.get(); }
+    tracking::PassRunner *passRunner() const { return m_runner.get(); }
+
+    // --- Intent -------------------------------------------------------------
+    // Opens every rotor's link (rotorUri()).
+    void connectRotators();
+    // Closes every rotor's link, as the operator asks: not a loss, so no
+    // "link lost" alarm, and what can no longer be known is cleared.
+    void disconnectRotators();
+    // The operator's Stop: every rotor on the controller stops, Slew's own
+    // tracking is not restarted by it, and trackers on the rotctld port are
+    // held off until handControlBack(). Always sent when there is a link.
+    session::CommandResult stop();
+    // Trackers on the rotctld port may steer again after the operator's Stop.
+    void handControlBack();
+    // Follows every pass of `target` above `minElevationDeg` with the first
+    // rotor, by the station's clock. Empty when started, else why not: the
+    // place is not set, or a remote tracker steers the rotator.
+    QString track(const tracking::TrackTarget &target, double minElevationDeg);
+    void untrack(const QString &why);
+    // Who steers the first rotor from outside now ("remote tracker
+    // 127.0.0.1:5533"), or empty.
+    QString otherSteering() const;
+
+    // Where the antenna stands; nothing until set.
+    std::optional<sky::Station> place() const { return m_place; }
+    void setPlace(const std::optional<sky::Station> &place);
+    // The place kept in the settings (Sky → Station…, --qth), if any.
+    void restoreSavedPlace();
+
+    // Stops Slew's tracking, closes the rotctld servers, stops every rotor
+    // and emits shutDown() once every stop has left its link (at once when
+    // there is none). Said again, it does nothing more.
+    void shutdown(const QString &why);
+    bool isShuttingDown() const { return m_shuttingDown; }
+
+signals:
+    void placeChanged(const std::optional<slew::sky::Station> &place);
+    // Slew's own tracking holds the first rotor, or no longer does.
+    void trackingChanged(bool holdsRotator);
+    // shutdown() sent rotor `number`'s stop (0: the one rotor); not said
+    // for a rotor with no link to send it on.
+    void exitStopSent(int number);
+    // Every rotor's stop has left the link: the process may end.
+    void shutDown();
+
+private:
+    struct Rotor {
+        int number = 0;
+        std::unique_ptr<session::RotatorSession> session;
+        std::unique_ptr<bridge::RotctldServer> server;
+        std::unique_ptr<AlarmMonitor> alarms;
+    };
+    void addRotor(int number, const StationOptions &options);
+    void wireTracking();
+    QList<session::RotatorSession *> everySession() const;
+
+    QString m_error;
+    std::unique_ptr<transport::SharedLine> m_line; // with several rotors: the one link they share
+    std::vector<Rotor> m_rotors;
+    std::unique_ptr<session::ControllerRotors> m_controllerRotors;
+    std::unique_ptr<session::MoveWatch> m_moveWatch;
+    std::unique_ptr<sky::TleSources> m_elementSets;
+    std::unique_ptr<tracking::StationClock> m_clock;
+    std::unique_ptr<tracking::SimulatorPace> m_pace;
+    std::unique_ptr<tracking::PassRunner> m_runner;
+    std::optional<sky::Station> m_place;
+    bool m_shuttingDown = false;
+    int m_stillStopping = 0;
+};
+
+} // namespace slew::station

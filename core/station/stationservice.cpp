@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "stationservice.h"
+
+#include "station.h"
+#include "stationlog.h"
+
+#include "bridge/rotctldserver.h"
+#include "protocol/dialect.h"
+#include "session/rotatorsession.h"
+#include "tracking/passrunner.h"
+#include "tracking/stationclock.h"
+#include "transport/linkfactory.h"
+
+namespace slew::station {
+
+StationService::StationService(std::FILE *logFile, QObject *parent) : QObject(parent), m_logFile(logFile) {}
+
+StationService::~StationService() = default;
+
+session::RotatorSession *StationService::session() const
+{
+    return m_station ? m_station->session() : nullptr;
+}
+
+bridge::RotctldServer *StationService::server() const
+{
+    return m_station && m_station->server() && m_station->server()->isListening() ? m_station->server() : nullptr;
+}
+
+tracking::PassRunner *StationService::passRunner() const
+{
+    return m_station && m_tracking ? m_station->passRunner() : nullptr;
+}
+
+int StationService::rotorCount() const
+{
+    return m_station ? m_station->rotorCount() : 0;
+}
+
+bool StationService::listen(int index, const ServiceConfig &config, quint16 port, QString *error)
+{
+    bridge::RotctldServer *server = m_station->server(index);
+    server->setAllowedClients(config.allowedClients);
+    server->setMaxClients(config.rotctldMaxClients);
+    server->setDeadband(config.profile.deadbandDeg);
+    server->setLogCommands(true); // polls excepted, escaped and rate-limited per client
+    const int number = m_station->rotorNumber(index);
+    const QString who = number > 0 ? tr("rotor %1: ").arg(number) : QString();
+    if (!server->listen(config.rotctldAddress, port, error)) {
+        if (number > 0)
+            *error = who + *error;
+        return false;
+    }
+    // The ready line scripts wait for, with the real port.
+    m_log->write(who + tr("rotctld listening on %1:%2").arg(server->address().toString()).arg(server->port()));
+    return true;
+}
+
+bool StationService::start(const ServiceConfig &config, QString *error)
+{
+    StationOptions options;
+    options.autoReconnect = true; // a service keeps trying after a loss
+    options.profile = config.profile;
+    // A rotctld:// peer speaks one dialect whatever the profile names (the
+    // window takes it from the link's hints the same way).
+    if (transport::linkHintsFor(config.profile.uri).dialect == protocol::dialectName(protocol::Dialect::Rotctld))
+        options.profile->dialect = protocol::Dialect::Rotctld;
+    options.rotors = config.rotors;
+    options.sharedLineUri = config.profile.uri;
+    if (config.rotctldEnabled && !config.rotors.isEmpty() && config.rotctldPort != 0
+        && int(config.rotctldPort) + config.rotors.size() - 1 > 65535) {
+        *error = tr("--rotors: %1 ports from %2 run past 65535").arg(config.rotors.size()).arg(config.rotctldPort);
+        return false;
+    }
+    m_station = std::make_unique<Station>(options);
+    if (!m_station->isValid()) {
+        *error = m_station->error();
+        return false;
+    }
+    m_log = std::make_unique<StationLog>(m_station.get(), m_logFile);
+    connect(m_station.get(), &Station::shutDown, this, &StationService::finished);
+    if (config.station) {
+        m_log->write(tr("station: %1").arg(sky::describeStation(*config.station)));
+        m_station->setPlace(config.station);
+    }
+
+    if (config.rotctldEnabled) {
+        for (int i = 0; i < m_station->rotorCount(); ++i) {
+            const quint16 port = config.rotctldPort == 0 ? 0 : quint16(config.rotctldPort + i);
+            if (!listen(i, config, port, error))
+                return false;
+        }
+    }
+    if (config.track) {
+        if (!config.station) {
+            *error = tr("--track needs the station (--qth)");
+            return false;
+        }
+        if (config.track->clockStartJulian)
+            m_station->clock()->rehearse(*config.track->clockStartJulian, config.track->clockRate);
+        m_tracking = true;
+        if (const QString refused = m_station->track(config.track->target, config.track->minElevationDeg);
+            !refused.isEmpty()) {
+            *error = refused;
+            return false;
+        }
+    }
+    for (int i = 0; i < m_station->rotorCount(); ++i) {
+        const int number = m_station->rotorNumber(i);
+        m_log->write((number > 0 ? tr("rotor %1: ").arg(number) : QString())
+                     + tr("connecting to %1").arg(m_station->rotorUri(i)));
+    }
+    m_station->connectRotators();
+    return true;
+}
+
+void StationService::shutdown(const QString &why)
+{
+    if (!m_station || m_station->isShuttingDown())
+        return;
+    m_log->write(tr("stopping: %1").arg(why));
+    m_station->shutdown(why);
+}
+
+} // namespace slew::station

@@ -1,0 +1,271 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A Station driven with no window, as the station service and a remote face
+// would drive it: connect to the built-in simulator, a tracker's `P` through
+// the rotctld server, Slew's own tracking of a fixed direction with the
+// reverse hold (trackers held off while it tracks, its tracking refused
+// while a tracker steers), the operator's Stop holding trackers off until
+// control is handed back, an alarm raised and cleared and written to the
+// service's log in the banner's words, and every rotor stopped before exit.
+
+#include "../common/simulatorpump.h"
+#include "linkschemes.h"
+
+#include "bridge/rotctldserver.h"
+#include "session/rotatorsession.h"
+#include "station/alarmmonitor.h"
+#include "station/station.h"
+#include "station/stationlog.h"
+#include "tracking/passrunner.h"
+#include "tracking/tracktarget.h"
+
+#include <QSignalSpy>
+#include <QTcpSocket>
+#include <QTest>
+
+#include <cstdio>
+
+using slew::station::AlarmMonitor;
+using slew::station::Station;
+using slew::station::StationOptions;
+
+namespace {
+
+const slew::sky::Station kPlace{55.7, 12.6, 10, {}};
+
+StationOptions onTheSimulator(const QString &uri)
+{
+    StationOptions options;
+    options.autoReconnect = true;
+    slew::model::RotatorProfile profile;
+    profile.uri = uri;
+    options.profile = profile;
+    return options;
+}
+
+// A rotctld client (Gpredict's part): one line out, one answer back.
+class Tracker {
+public:
+    explicit Tracker(quint16 port)
+    {
+        m_socket.connectToHost(QHostAddress::LocalHost, port);
+    }
+    bool connected() { return runEventLoopUntil([&] { return m_socket.state() == QAbstractSocket::ConnectedState; }, 5000); }
+    // `lines`: how many lines the answer has (`p` gives two).
+    QByteArray ask(const QByteArray &line, int lines = 1)
+    {
+        m_socket.write(line + '\n');
+        QByteArray reply;
+        runEventLoopUntil(
+            [&] {
+                reply += m_socket.readAll();
+                return reply.count('\n') >= lines;
+            },
+            5000);
+        return reply;
+    }
+
+private:
+    QTcpSocket m_socket;
+};
+
+// Connects the station's rotor to its simulator, pumped on its manual
+// clock, and waits for the probe and a position.
+bool connectAndWait(Station &station, SimulatorPump &pump)
+{
+    slew::session::RotatorSession *rotor = station.session();
+    pump.follow(rotor);
+    station.connectRotators();
+    return runEventLoopUntil([&] { return rotor->capabilities().probed && rotor->hasPosition(); }, 10000);
+}
+
+bool listening(slew::bridge::RotctldServer *server)
+{
+    QString error;
+    const bool ok = server->listen(QHostAddress::LocalHost, 0, &error);
+    if (!ok)
+        qWarning("rotctld server: %s", qPrintable(error));
+    return ok;
+}
+
+// What a StationLog wrote, read back from its file.
+QString logText(std::FILE *file)
+{
+    std::fflush(file);
+    const long size = std::ftell(file);
+    QByteArray bytes(qsizetype(size), '\0');
+    std::rewind(file);
+    const size_t got = std::fread(bytes.data(), 1, size_t(size), file);
+    std::fseek(file, 0, SEEK_END);
+    return QString::fromUtf8(bytes.left(qsizetype(got)));
+}
+
+} // namespace
+
+class StationTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { slew::registerLinkSchemes(); }
+
+    void tracksAndHoldsTrackersOffWithNoWindow()
+    {
+        Station station(onTheSimulator(QStringLiteral("sim:?model=satnogs&clock=manual")));
+        QVERIFY(station.isValid());
+        slew::session::RotatorSession *rotor = station.session();
+        SimulatorPump pump;
+        QVERIFY(connectAndWait(station, pump));
+
+        slew::bridge::RotctldServer *server = station.server();
+        QVERIFY(listening(server));
+        Tracker gpredict(server->port());
+        QVERIFY(gpredict.connected());
+        QCOMPARE(gpredict.ask("P 120 30"), QByteArray("RPRT 0\n"));
+        QVERIFY(runEventLoopUntil([&] { return std::abs(rotor->azimuth() - 120) < 0.5 && std::abs(rotor->elevation() - 30) < 0.5; },
+                                  20000));
+
+        // While that tracker steers, Slew's own tracking is refused, saying who.
+        const auto fixed = slew::tracking::TrackTarget::parseFixedOrCelestial(QStringLiteral("azel:200,40"), nullptr);
+        QVERIFY(fixed);
+        QCOMPARE(station.track(*fixed, 0.0), QStringLiteral("tracking needs the station's place"));
+        station.setPlace(kPlace);
+        const QString refused = station.track(*fixed, 0.0);
+        QVERIFY2(refused.startsWith(QStringLiteral("Remote tracker 127.0.0.1:")) && refused.contains(QStringLiteral("is steering")),
+                 qPrintable(refused));
+        QVERIFY(!station.passRunner()->isRunning());
+    }
+
+    void ownTrackingHoldsTrackersOff()
+    {
+        Station station(onTheSimulator(QStringLiteral("sim:?model=satnogs&clock=manual")));
+        slew::session::RotatorSession *rotor = station.session();
+        SimulatorPump pump;
+        QVERIFY(connectAndWait(station, pump));
+        slew::bridge::RotctldServer *server = station.server();
+        QVERIFY(listening(server));
+
+        station.setPlace(kPlace);
+        QSignalSpy tracking(&station, &Station::trackingChanged);
+        const auto fixed = slew::tracking::TrackTarget::parseFixedOrCelestial(QStringLiteral("azel:200,40"), nullptr);
+        QCOMPARE(station.track(*fixed, 0.0), QString());
+        QVERIFY(runEventLoopUntil([&] { return station.passRunner()->holdsRotator(); }, 10000));
+        QCOMPARE(tracking.count(), 1);
+        QVERIFY(tracking.last().at(0).toBool());
+        QVERIFY(server->isRemoteHeld());
+        QVERIFY(runEventLoopUntil([&] { return std::abs(rotor->azimuth() - 200) < 0.5 && std::abs(rotor->elevation() - 40) < 0.5; },
+                                  30000));
+
+        // A tracker's move is refused (Hamlib's -9) while Slew tracks; its
+        // reads are still answered.
+        Tracker gpredict(server->port());
+        QVERIFY(gpredict.connected());
+        QCOMPARE(gpredict.ask("P 10 10"), QByteArray("RPRT -9\n"));
+        const QList<QByteArray> position = gpredict.ask("p", 2).split('\n');
+        QCOMPARE(position.size(), 3);
+        QVERIFY(std::abs(position[0].toDouble() - 200) < 1.0);
+
+        // Tracking handed back: the tracker steers again.
+        station.untrack(QStringLiteral("test"));
+        QVERIFY(runEventLoopUntil([&] { return !server->isRemoteHeld(); }, 5000));
+        QVERIFY(!tracking.last().at(0).toBool());
+        QCOMPARE(gpredict.ask("P 10 10"), QByteArray("RPRT 0\n"));
+    }
+
+    void theOperatorsStopHoldsTrackersOffUntilHandedBack()
+    {
+        Station station(onTheSimulator(QStringLiteral("sim:?model=satnogs&clock=manual")));
+        slew::session::RotatorSession *rotor = station.session();
+        SimulatorPump pump;
+        QVERIFY(connectAndWait(station, pump));
+        slew::bridge::RotctldServer *server = station.server();
+        QVERIFY(listening(server));
+        Tracker gpredict(server->port());
+        QVERIFY(gpredict.connected());
+        QCOMPARE(gpredict.ask("P 90 45"), QByteArray("RPRT 0\n"));
+
+        QSignalSpy sent(rotor, &slew::session::RotatorSession::bytesSent);
+        QVERIFY(station.stop());
+        QVERIFY(!sent.isEmpty()); // the stop went out at once
+        QVERIFY(server->isRemoteHeld());
+        QCOMPARE(gpredict.ask("P 90 45"), QByteArray("RPRT -9\n"));
+        QVERIFY(gpredict.ask("S").startsWith("RPRT 0")); // a stop is always obeyed
+        station.handControlBack();
+        QCOMPARE(gpredict.ask("P 90 45"), QByteArray("RPRT 0\n"));
+    }
+
+    void aJamIsLoggedInTheBannersWords()
+    {
+        Station station(onTheSimulator(QStringLiteral("sim:?jam=az&jam_after=0.3&clock=manual")));
+        std::FILE *file = std::tmpfile();
+        QVERIFY(file);
+        slew::station::StationLog log(&station, file);
+        slew::session::RotatorSession *rotor = station.session();
+        SimulatorPump pump;
+        QVERIFY(connectAndWait(station, pump));
+
+        AlarmMonitor *alarms = station.alarms();
+        QSignalSpy raised(alarms, &AlarmMonitor::alarmRaised);
+        QSignalSpy cleared(alarms, &AlarmMonitor::alarmCleared);
+        QVERIFY(rotor->gotoPosition(90, 0));
+        QVERIFY(runEventLoopUntil([&] { return alarms->anySevere(); }, 15000));
+        // What the window's banner shows (AlarmBanner::showAlarms is given
+        // activeAlarms()), the service's log says, word for word.
+        const QStringList banner = alarms->activeAlarms();
+        QVERIFY(!banner.isEmpty());
+        QVERIFY(runEventLoopUntil([&] {
+            const QString text = logText(file);
+            return std::all_of(banner.begin(), banner.end(),
+                               [&](const QString &a) { return text.contains(QStringLiteral("alarm: ") + a); });
+        }, 5000));
+
+        // A disconnect clears what can no longer be known; the log says so.
+        station.disconnectRotators();
+        QVERIFY(runEventLoopUntil([&] { return alarms->activeAlarms().isEmpty(); }, 5000));
+        QVERIFY(!cleared.isEmpty());
+        const QString text = logText(file);
+        for (const QString &a : banner)
+            QVERIFY2(text.contains(QStringLiteral("cleared: ") + a), qPrintable(text));
+        std::fclose(file);
+    }
+
+    void everyRotorStopsBeforeExit()
+    {
+        Station station(onTheSimulator(QStringLiteral("sim:?model=satnogs&clock=manual")));
+        slew::session::RotatorSession *rotor = station.session();
+        SimulatorPump pump;
+        QVERIFY(connectAndWait(station, pump));
+        slew::bridge::RotctldServer *server = station.server();
+        QVERIFY(listening(server));
+        QVERIFY(rotor->gotoPosition(300, 60));
+
+        QStringList sent;
+        connect(rotor, &slew::session::RotatorSession::bytesSent, this,
+                [&](const QByteArray &bytes) { sent << QString::fromLatin1(bytes).trimmed(); });
+        QSignalSpy stopSent(&station, &Station::exitStopSent);
+        QSignalSpy down(&station, &Station::shutDown);
+        station.shutdown(QStringLiteral("test"));
+        QVERIFY(!server->isListening()); // no tracker moves it again meanwhile
+        QCOMPARE(stopSent.count(), 1);
+        QCOMPARE(stopSent.first().at(0).toInt(), 0);
+        QVERIFY(down.isEmpty() || sent.join(u' ').contains(QStringLiteral("SA")));
+        QVERIFY(runEventLoopUntil([&] { return !down.isEmpty(); }, 5000));
+        QVERIFY2(sent.join(u' ').contains(QStringLiteral("SA")), qPrintable(sent.join(u'|')));
+        station.shutdown(QStringLiteral("again")); // said twice: nothing more
+        QCOMPARE(stopSent.count(), 1);
+    }
+
+    void aBadSharedLineMakesNoRotors()
+    {
+        StationOptions options;
+        options.rotors = {1, 2};
+        options.sharedLineUri = QStringLiteral("nosuchscheme://x");
+        Station station(options);
+        QVERIFY(!station.isValid());
+        QVERIFY(!station.error().isEmpty());
+        QCOMPARE(station.rotorCount(), 0);
+        QSignalSpy down(&station, &Station::shutDown);
+        station.shutdown(QStringLiteral("test"));
+        QCOMPARE(down.count(), 1);
+    }
+};
+
+QTEST_GUILESS_MAIN(StationTest)
+#include "tst_station.moc"
