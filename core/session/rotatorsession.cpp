@@ -5,6 +5,8 @@
 
 #include "rotatorsession.h"
 
+#include "micro2gcalibration.h"
+
 #include "input/logtext.h"
 #include "protocol/encoder.h"
 #include "protocol/operations.h"
@@ -25,7 +27,6 @@ using protocol::Op;
 namespace {
 
 constexpr int kMaxReconnectDelayMs = 30000;
-constexpr qint64 kEchoWindowMs = 1000;
 // How much of a controller's bad line a log line quotes (escaped).
 constexpr int kQuotedChars = 60;
 
@@ -42,6 +43,7 @@ RotatorSession::RotatorSession(QObject *parent) : QObject(parent), m_queue(m_opt
     qRegisterMetaType<Capabilities>();
     qRegisterMetaType<StatusWord>();
     m_clock.start();
+    m_micro2g = std::make_unique<Micro2gCalibration>(this);
 
     m_replyTimer.setSingleShot(true);
     connect(&m_replyTimer, &LinkTimer::timeout, this, &RotatorSession::onReplyTimeout);
@@ -222,8 +224,7 @@ void RotatorSession::onLinkOpened()
     m_checksum = m_link->hints().checksum;
     m_rotor = m_link->hints().rotor.value_or(0);
     m_activeTarget.reset();
-    m_deviceEchoes = false;
-    m_sent = {}; // stamped with the last link's clock
+    m_echoes.reset();
     m_reconnectAttempt = 0;
     m_failedPolls = 0;
     m_pollCount = 0;
@@ -386,38 +387,10 @@ void RotatorSession::clearBadFrames()
         emit badFramesAlarm(false, {});
 }
 
-bool RotatorSession::isEcho(const Message &m)
-{
-    // Unmistakable echoes: a command, or a query form, coming back. Seeing one
-    // tells us this controller echoes what it hears.
-    if (protocol::operationInfo(m.op).commandOnly
-        || (m.op != Op::Alarm && m.op != Op::Invalid && !m.hasValue && m.text.isEmpty())) {
-        m_deviceEchoes = true;
-        return true;
-    }
-    if (m.op == Op::VelocityLeft || m.op == Op::VelocityRight || m.op == Op::VelocityUp
-        || m.op == Op::VelocityDown)
-        return true; // a controller reports speed in IP7/IP8, never as VL..VD
-    // A set position coming back reads exactly like a position report, so it
-    // is only taken for an echo from a controller known to echo, and only
-    // when it repeats what was sent within the last second.
-    if (!m_deviceEchoes || (m.op != Op::Azimuth && m.op != Op::Elevation))
-        return false;
-    const qint64 now = nowMs();
-    for (const Sent &s : m_sent) {
-        if (now - s.atMs <= kEchoWindowMs && s.message.op == m.op && s.message.hasValue
-            && std::abs(s.message.value - m.value) < 1e-9)
-            return true;
-    }
-    return false;
-}
-
 void RotatorSession::apply(const Message &m)
 {
-    if (isEcho(m)) {
-        ++m_echoesIgnored;
+    if (m_echoes.isEcho(m, nowMs()))
         return;
-    }
     if (m.op != Op::Invalid && m.op != Op::Alarm && m_unreadable.noteReadable(nowMs()))
         emit unreadableRepliesAlarm(false, {});
     switch (m.op) {
@@ -464,7 +437,7 @@ void RotatorSession::apply(const Message &m)
         break;
     case Op::Calibration:
     case Op::AdcReadings:
-        if (!applyMicro2gListing(m))
+        if (!m_listingReader || !m_listingReader(m))
             return;
         break;
     case Op::Alarm: {

@@ -9,12 +9,12 @@
 // profile's limits. Everything is driven by signals; nothing here waits.
 
 #include "controllerlogallowance.h"
+#include "echofilter.h"
 #include "linktimer.h"
 #include "model/movegate.h"
 #include "model/rotatorprofile.h"
 #include "pollpace.h"
 #include "protocol/checksum.h"
-#include "protocol/micro2glistings.h"
 #include "protocol/parser.h"
 #include "requestqueue.h"
 #include "transport/linkfactory.h"
@@ -36,6 +36,8 @@ class Link;
 }
 
 namespace slew::session {
+
+class Micro2gCalibration;
 
 class RotatorSession : public QObject {
     Q_OBJECT
@@ -133,7 +135,7 @@ public:
     const Telemetry &telemetry() const { return m_telemetry; }
     QString version() const { return m_version; }
     int queuedRequests() const { return m_queue.size(); }
-    int echoesIgnored() const { return m_echoesIgnored; }
+    int echoesIgnored() const { return m_echoes.ignored(); }
     // The link's lines carry the XOR checksum (`checksum=1`, link.h), and
     // how many received lines were refused for a wrong or missing one.
     bool checksumming() const { return m_checksum; }
@@ -180,19 +182,9 @@ public:
     bool unreadableRepliesAlarmed() const { return m_unreadable.raised(); }
     void setPolling(bool enabled);
 
-    // The Micro-2g program's two-point calibration (docs/protocol.md,
-    // "Micro-2g"; rotatorsession_micro2g.cpp). Each goes through the request
-    // queue like any query, so it never cuts into a poll's answer. Every
-    // `Z` line that comes back is handed on by calibrationReceived(), every
-    // `V` item by adcReadingReceived(); a calibration request the controller
-    // refuses (`?>`) or leaves unanswered ends in calibrationFailed().
-    enum class CalibrationPoint { LeftStop, RightStop, DegreeRange };
-    CommandResult requestCalibration(int rotor); // `Z`, done when rotor's line is in
-    CommandResult requestAdcReadings();          // `V`
-    // `ZnL mmm` / `ZnR mmm` (the present reading is that stop, at bearing
-    // mmm, 0..359) or `ZnD mmm` (90..540 degrees of travel), and `Z` after
-    // it on the same request, so what the controller now holds comes back.
-    CommandResult setCalibration(int rotor, CalibrationPoint point, int value);
+    // The Micro-2g program's calibration listings, asked for on this link
+    // (micro2gcalibration.h).
+    Micro2gCalibration *micro2g() const { return m_micro2g.get(); }
 
 public slots:
     // Someone wants fresh positions (a tracker asked for one, a window is
@@ -281,12 +273,25 @@ signals:
     // escaped, cut and rate-limited here, with a summary of what was held
     // back, so every receiver may log each one as it comes.
     void errorOccurred(const QString &message);
-    // The Micro-2g listings, read (requestCalibration() and the rest above).
-    void calibrationReceived(int rotor, const slew::protocol::Micro2gCalibration &calibration);
-    void adcReadingReceived(int rotor, int counts);
-    void calibrationFailed(int rotor, const QString &reason);
 
 private:
+    // The session's helpers, each a part of one conversation with the
+    // controller kept in a file of its own, ask through the hooks below.
+    friend class Micro2gCalibration;
+    // A request of a helper's own: refused, as the session's own are (the
+    // result, and commandRefused()), with no link or a full queue.
+    // SameLine::Shared: one with the same line already waiting serves this
+    // asker too, and nothing is added.
+    enum class SameLine { Queued, Shared };
+    CommandResult queueRequest(Request request, SameLine same);
+    CommandResult requireLink();
+    // Reads the listing lines (Op::Calibration, Op::AdcReadings) that arrive:
+    // says whether a line was one; one that is not (an echoed command)
+    // completes no request.
+    void setListingReader(std::function<bool(const protocol::Message &)> reader) { m_listingReader = std::move(reader); }
+    // The controller dropped its target (its scale changed under it).
+    void forgetActiveTarget() { m_activeTarget.reset(); }
+
     void setState(State s, const QString &detail = {});
     void openLink();
     void onLinkOpened();
@@ -304,14 +309,9 @@ private:
     void applyPosition();
     void applyInput(int index, double value);
     void applyConfig(int reg, const QString &text, bool numeric, double value);
-    // A Z or V listing: handed on; false when it is a command's echo instead.
-    bool applyMicro2gListing(const protocol::Message &m);
-    CommandResult enqueueCalibration(const QByteArray &line, int rotor);
-    bool isEcho(const protocol::Message &m);
 
     CommandResult refuse(const QString &reason);
     CommandResult refuseMove(const QString &reason); // refuse(), and moveRefused()
-    CommandResult requireLink();
     // The gate's answer to one message of a raw line, empty when it may go.
     QString rawMoveRefusal(const protocol::Message &m) const;
     std::optional<double> knownAzimuth() const;
@@ -325,7 +325,7 @@ private:
     void write(const QByteArray &line);
     void writeMove(const QByteArray &line); // a new move: the pending stop hold is void
     void sendStopHold();
-    void rememberSent(const protocol::Message &m);
+    void rememberSent(const protocol::Message &m) { m_echoes.noteSent(m, nowMs()); }
     bool enqueue(Request r);
     void sendNext();
     void onReplyTimeout();
@@ -395,13 +395,7 @@ private:
     Telemetry m_telemetry;
     QString m_version;
 
-    // Recently sent set-commands, to recognise a controller that echoes them.
-    struct Sent {
-        protocol::Message message;
-        qint64 atMs;
-    };
-    std::array<Sent, 8> m_sent{};
-    int m_sentNext = 0;
+    EchoFilter m_echoes; // recently sent set-commands, to recognise a controller that echoes them
     QElapsedTimer m_clock; // the wall clock, for links that keep no stepped clock
     // Writes a set-position the gate has already passed, and makes it the
     // active target; go-to and relative moves share it. Pointing frame in,
@@ -424,14 +418,14 @@ private:
     QByteArray spidMoveFrame() const;
     void updatePollPace();
     qint64 nowMs() const;  // the link's time where it is stepped, else m_clock's
-    int m_echoesIgnored = 0;
     int m_replyTimeoutMs = 500;
     int m_textLinesSkipped = 0;
     ControllerLogAllowance m_controllerLog;
     LinkTimer m_heldBackReport; // a summary does not wait for the next allowed line for ever
     UnreadableReplies m_unreadable;
+    std::function<bool(const protocol::Message &)> m_listingReader;
+    std::unique_ptr<Micro2gCalibration> m_micro2g;
     qint64 m_unreadableReplies = 0;
-    bool m_deviceEchoes = false; // this controller was seen echoing what it hears
 };
 
 } // namespace slew::session

@@ -34,6 +34,19 @@ CommandResult RotatorSession::refuseMove(const QString &reason)
     return refuse(reason);
 }
 
+CommandResult RotatorSession::queueRequest(Request request, SameLine same)
+{
+    if (auto linked = requireLink(); !linked)
+        return linked;
+    if (same == SameLine::Shared && m_queue.contains(request.line))
+        return {}; // one is on its way: its answer serves this asker too
+    if (m_queue.isFull())
+        return refuse(tr("the controller is not keeping up: %1 requests already waiting").arg(m_queue.size()));
+    wakePolling(); // whoever asks wants fresh answers
+    enqueue(std::move(request));
+    return {};
+}
+
 CommandResult RotatorSession::requireLink()
 {
     if (m_state == State::Connected && m_link && m_link->isOpen())
@@ -50,12 +63,6 @@ void RotatorSession::write(const QByteArray &line)
     const QByteArray framed = m_checksum ? protocol::withChecksums(line) : line;
     m_link->device()->write(framed);
     emit bytesSent(framed);
-}
-
-void RotatorSession::rememberSent(const Message &m)
-{
-    m_sent[size_t(m_sentNext)] = Sent{m, nowMs()};
-    m_sentNext = (m_sentNext + 1) % int(m_sent.size());
 }
 
 bool RotatorSession::enqueue(Request r)

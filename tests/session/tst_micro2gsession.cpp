@@ -9,6 +9,7 @@
 #include "linkschemes.h"
 #include "sim/simulator.h"
 #include "sim/simulatoroptions.h"
+#include "session/micro2gcalibration.h"
 #include "session/rotatorsession.h"
 
 #include <QSignalSpy>
@@ -16,6 +17,7 @@
 #include <QTest>
 
 using slew::session::Axis;
+using slew::session::Micro2gCalibration;
 using slew::session::RotatorSession;
 
 class Micro2gSessionTest : public QObject {
@@ -82,17 +84,17 @@ private slots:
         QVERIFY(open(s, QStringLiteral("sim:?clock=manual&dialect=micro2g&rotor=2")));
         slew::sim::Simulator *sim = slew::sim::simulatorBehind(s.link());
         QSignalSpy sent(&s, &RotatorSession::bytesSent);
-        QSignalSpy calibrations(&s, &RotatorSession::calibrationReceived);
-        QSignalSpy readings(&s, &RotatorSession::adcReadingReceived);
-        QSignalSpy failed(&s, &RotatorSession::calibrationFailed);
+        QSignalSpy calibrations(s.micro2g(), &Micro2gCalibration::calibrationReceived);
+        QSignalSpy readings(s.micro2g(), &Micro2gCalibration::adcReadingReceived);
+        QSignalSpy failed(s.micro2g(), &Micro2gCalibration::calibrationFailed);
 
         // `Z` lists every rotor; each line is handed on.
-        QVERIFY(s.requestCalibration(2));
+        QVERIFY(s.micro2g()->request(2));
         TRY_COMPARE(calibrations.count(), 4);
         QCOMPARE(calibrations.at(1).at(0).toInt(), 2);
         QCOMPARE(calibrations.at(1).at(1).value<slew::protocol::Micro2gCalibration>(),
                  (slew::protocol::Micro2gCalibration{2, 3990, 0, 2440, 90, 450}));
-        QVERIFY(s.requestAdcReadings());
+        QVERIFY(s.micro2g()->requestAdcReadings());
         TRY_COMPARE(readings.count(), 4);
         QCOMPARE(readings.at(1).at(0).toInt(), 2);
         QCOMPARE(readings.at(1).at(1).toInt(), 3990);
@@ -101,7 +103,7 @@ private slots:
         // controller now holds comes back.
         sent.clear();
         calibrations.clear();
-        QVERIFY(s.setCalibration(2, RotatorSession::CalibrationPoint::LeftStop, 180));
+        QVERIFY(s.micro2g()->set(2, Micro2gCalibration::Point::LeftStop, 180));
         TRY_VERIFY(calibrations.count() == 4);
         QVERIFY(wrote(sent, "Z2L 180\rZ\r"));
         QCOMPARE(sim->micro2g().calibration(2).leftBearing, 180.0);
@@ -109,17 +111,17 @@ private slots:
 
         // Refused before a byte: out of range, or another rotor number.
         sent.clear();
-        QVERIFY(!s.setCalibration(2, RotatorSession::CalibrationPoint::DegreeRange, 600));
-        QVERIFY(!s.setCalibration(2, RotatorSession::CalibrationPoint::RightStop, 360));
-        QVERIFY(!s.setCalibration(5, RotatorSession::CalibrationPoint::LeftStop, 0));
-        QVERIFY(!s.requestCalibration(0));
+        QVERIFY(!s.micro2g()->set(2, Micro2gCalibration::Point::DegreeRange, 600));
+        QVERIFY(!s.micro2g()->set(2, Micro2gCalibration::Point::RightStop, 360));
+        QVERIFY(!s.micro2g()->set(5, Micro2gCalibration::Point::LeftStop, 0));
+        QVERIFY(!s.micro2g()->request(0));
         for (const auto &args : sent)
             QVERIFY2(!args.at(0).toByteArray().startsWith('Z'), args.at(0).toByteArray().constData());
 
         // Refused by the controller: the right stop on the left stop's
         // reading. The request fails with the controller's words, and its
         // calibration is as it was.
-        QVERIFY(s.setCalibration(2, RotatorSession::CalibrationPoint::RightStop, 270));
+        QVERIFY(s.micro2g()->set(2, Micro2gCalibration::Point::RightStop, 270));
         TRY_COMPARE(failed.count(), 1);
         QCOMPARE(failed.first().at(0).toInt(), 2);
         QVERIFY2(failed.first().at(1).toString().contains(QStringLiteral("10 counts")),

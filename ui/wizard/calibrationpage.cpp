@@ -21,7 +21,7 @@
 namespace slew::ui {
 
 using session::RotatorSession;
-using Point = RotatorSession::CalibrationPoint;
+using Point = session::Micro2gCalibration::Point;
 
 namespace {
 
@@ -148,7 +148,7 @@ CalibrationPage::CalibrationPage(SetupWizard *wizard) : QWizardPage(wizard), m_w
     connect(m_setRight, &QPushButton::clicked, this, [this] { send(Point::RightStop, m_rightBearing->value()); });
     connect(m_setRange, &QPushButton::clicked, this, [this] { send(Point::DegreeRange, m_range->value()); });
     connect(m_readBack, &QPushButton::clicked, this, [this] {
-        if (const auto asked = m_wizard->session()->requestCalibration(m_rotor); !asked) {
+        if (const auto asked = m_wizard->session()->micro2g()->request(m_rotor); !asked) {
             setStatus(asked.refusal, true);
             return;
         }
@@ -161,9 +161,9 @@ CalibrationPage::CalibrationPage(SetupWizard *wizard) : QWizardPage(wizard), m_w
 
     RotatorSession *s = wizard->session();
     connect(s, &RotatorSession::positionChanged, this, &CalibrationPage::onPosition);
-    connect(s, &RotatorSession::adcReadingReceived, this, &CalibrationPage::onReading);
-    connect(s, &RotatorSession::calibrationReceived, this, &CalibrationPage::onCalibration);
-    connect(s, &RotatorSession::calibrationFailed, this, &CalibrationPage::onRefused);
+    connect(s->micro2g(), &session::Micro2gCalibration::adcReadingReceived, this, &CalibrationPage::onReading);
+    connect(s->micro2g(), &session::Micro2gCalibration::calibrationReceived, this, &CalibrationPage::onCalibration);
+    connect(s->micro2g(), &session::Micro2gCalibration::calibrationFailed, this, &CalibrationPage::onRefused);
     connect(s, &RotatorSession::alarmReceived, this, [this](const QString &text) {
         if (m_waiting)
             m_alarm = text;
@@ -185,7 +185,7 @@ void CalibrationPage::initializePage()
     m_waiting = false;
     setStatus({}, false);
     m_heldText->setText(tr("Reading the calibration…"));
-    if (const auto asked = m_wizard->session()->requestCalibration(m_rotor))
+    if (const auto asked = m_wizard->session()->micro2g()->request(m_rotor))
         m_waiting = true;
     else
         m_heldText->setText(asked.refusal);
@@ -208,7 +208,7 @@ void CalibrationPage::onPosition()
     // A reading for every position the session polls: the readings keep
     // the session's pace (and its clock), whatever the link.
     if (isActive())
-        m_wizard->session()->requestAdcReadings();
+        m_wizard->session()->micro2g()->requestAdcReadings();
     updateControls();
 }
 
@@ -236,7 +236,7 @@ void CalibrationPage::send(Point point, int value)
         setStatus(tr("Wait until the rotor is at rest at its stop."), true);
         return;
     }
-    const auto sent = m_wizard->session()->setCalibration(m_rotor, point, value);
+    const auto sent = m_wizard->session()->micro2g()->set(m_rotor, point, value);
     if (!sent) {
         setStatus(sent.refusal, true);
         return;

@@ -10,6 +10,7 @@
 // calibrated, a go-to aims with the very calibration being replaced.
 
 #include "protocol/micro2glistings.h"
+#include "session/micro2gcalibration.h"
 #include "session/rotatorsession.h"
 
 #include <QList>
@@ -52,7 +53,7 @@ private:
     void onReading(int rotor, int counts);
     void onCalibration(int rotor, const protocol::Micro2gCalibration &held);
     void onRefused(int rotor, const QString &reason);
-    void send(session::RotatorSession::CalibrationPoint point, int value);
+    void send(session::Micro2gCalibration::Point point, int value);
     bool atRest() const;
     void updateControls();
     QString describeHeld() const;
