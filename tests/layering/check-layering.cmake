@@ -22,9 +22,11 @@ set(allowed_tuning "session;model;protocol;transport;input")
 set(allowed_bridge "session;model;protocol;transport;input")
 set(allowed_console "session;tuning;model;protocol;transport;input")
 set(allowed_tracking "session;model;protocol;transport;sky;input")
+# radio: links to the radio and the Doppler steering, beside the tracker.
+set(allowed_radio "tracking;session;sky;model;protocol;transport;input")
 # station: one ground station's parts and their rules; the faces (ui, app) sit on it.
-set(allowed_station "bridge;tracking;session;sky;model;protocol;transport;input")
-set(areas input protocol transport sky model session sim tuning bridge console tracking station)
+set(allowed_station "radio;bridge;tracking;session;sky;model;protocol;transport;input")
+set(areas input protocol transport sky model session sim tuning bridge console tracking radio station)
 
 file(GLOB_RECURSE files RELATIVE ${CORE} ${CORE}/*.h ${CORE}/*.cpp)
 set(faults "")
