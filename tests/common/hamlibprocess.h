@@ -1,11 +1,12 @@
 #pragma once
-// Runs Hamlib's real programs (rotctl, rotctld) from Debian's libhamlib-utils
-// for the bridge tests, waiting only on signals.
+// Runs Hamlib's real programs (rotctl, rotctld, rigctld) from Debian's
+// libhamlib-utils for the bridge and radio tests, waiting only on signals.
 
 #include <QProcess>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTcpServer>
+#include <QTcpSocket>
 #include <QTest>
 
 inline QString hamlibProgram(const char *name)
@@ -46,4 +47,24 @@ inline quint16 freeTcpPort()
     QTcpServer s;
     s.listen(QHostAddress::LocalHost, 0);
     return s.serverPort();
+}
+
+// Starts a Hamlib daemon (rigctld, rotctld) with the arguments on a free
+// loopback port; returns the port once it accepts a connection, 0 if it
+// never does.
+inline quint16 startHamlibDaemon(QProcess &p, const char *name, const QStringList &arguments)
+{
+    const quint16 port = freeTcpPort();
+    p.setProgram(hamlibProgram(name));
+    p.setArguments(arguments + QStringList{"-T", "127.0.0.1", "-t", QString::number(port)});
+    p.start();
+    const bool up = QTest::qWaitFor(
+        [&] {
+            QTcpSocket probe;
+            QSignalSpy connected(&probe, &QTcpSocket::connected);
+            probe.connectToHost(QHostAddress::LocalHost, port);
+            return connected.wait(200);
+        },
+        10000);
+    return up ? port : 0;
 }
