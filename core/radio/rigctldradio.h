@@ -19,8 +19,8 @@
 // and in range: rigctld 4.5.4 with its dummy rig answers `F nan` with
 // RPRT 0 and then reads a frequency of -9223372036854775808. A mode as one
 // token of letters and digits: rigctld reads what follows a command on its
-// line as further commands (`+F 145800000 extra` answers five more
-// records). set_vfo (`V`) is never sent: without its argument rigctld
+// line as further commands (`+F 145800000 extra` answers six more
+// lines). set_vfo (`V`) is never sent: without its argument rigctld
 // takes the next line as the VFO, and a command it does not know
 // (`\nonsense`) gets no answer at all, which the reply timeout catches.
 //
