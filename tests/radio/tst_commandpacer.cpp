@@ -9,6 +9,8 @@
 #include <QSignalSpy>
 #include <QTest>
 
+#include <algorithm>
+
 using namespace slew::radio;
 
 class CommandPacerTest : public QObject {

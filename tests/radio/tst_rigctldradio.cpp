@@ -89,7 +89,8 @@ private:
             if (holding)
                 m_held << a;
             else if (answerDelayMs > 0)
-                QTimer::singleShot(answerDelayMs, this, [this, a] { answer(a); });
+                // Precise: a coarse timer may fire 5 % early.
+                QTimer::singleShot(answerDelayMs, Qt::PreciseTimer, this, [this, a] { answer(a); });
             else
                 answer(a);
         }
