@@ -4,6 +4,26 @@
 #include <algorithm>
 
 namespace slew::radio {
+namespace {
+
+QString frequencyKey(const std::optional<double> &hz)
+{
+    // 17 significant digits give back the same double, so equal keys are
+    // equal frequencies.
+    return hz ? QString::number(*hz, 'g', 17) : QStringLiteral("-");
+}
+
+// The frequencies, sense and mode as one key: equal keys, the same
+// transponder (the second half of sameTransponder).
+QString tuningKey(const Transponder &t)
+{
+    return QStringList{frequencyKey(t.uplinkLowHz), frequencyKey(t.uplinkHighHz), frequencyKey(t.downlinkLowHz),
+                       frequencyKey(t.downlinkHighHz), t.inverting ? QStringLiteral("i") : QStringLiteral("n"),
+                       t.mode.toCaseFolded()}
+        .join(u'|');
+}
+
+} // namespace
 
 bool sameTransponder(const Transponder &a, const Transponder &b)
 {
@@ -11,22 +31,23 @@ bool sameTransponder(const Transponder &a, const Transponder &b)
         return false;
     if (!a.uuid.isEmpty() && a.uuid == b.uuid)
         return true;
-    return a.uplinkLowHz == b.uplinkLowHz && a.uplinkHighHz == b.uplinkHighHz && a.downlinkLowHz == b.downlinkLowHz
-           && a.downlinkHighHz == b.downlinkHighHz && a.inverting == b.inverting
-           && a.mode.compare(b.mode, Qt::CaseInsensitive) == 0;
+    return tuningKey(a) == tuningKey(b);
 }
 
 int TransponderSet::merge(const QList<Transponder> &transponders)
 {
     int dropped = 0;
     for (const Transponder &t : transponders) {
-        QList<Transponder> &held = m_bySatellite[t.noradId];
-        const bool repeat = std::any_of(held.cbegin(), held.cend(), [&](const Transponder &h) { return sameTransponder(h, t); });
-        if (repeat) {
+        Held &held = m_bySatellite[t.noradId];
+        const QString tuning = tuningKey(t);
+        if ((!t.uuid.isEmpty() && held.uuids.contains(t.uuid)) || held.tunings.contains(tuning)) {
             ++dropped;
             continue;
         }
-        held.append(t);
+        held.list.append(t);
+        if (!t.uuid.isEmpty())
+            held.uuids.insert(t.uuid);
+        held.tunings.insert(tuning);
         ++m_size;
     }
     return dropped;
@@ -37,7 +58,7 @@ std::optional<Transponder> TransponderSet::defaultFor(int noradId) const
     const auto it = m_bySatellite.constFind(noradId);
     if (it == m_bySatellite.cend())
         return std::nullopt;
-    const QList<Transponder> &list = *it;
+    const QList<Transponder> &list = it->list;
     const auto linear = std::find_if(list.cbegin(), list.cend(), [](const Transponder &t) { return t.alive && t.isLinear(); });
     if (linear != list.cend())
         return *linear;
@@ -51,7 +72,7 @@ QList<int> TransponderSet::satellites() const
 {
     QList<int> numbers;
     for (auto it = m_bySatellite.cbegin(); it != m_bySatellite.cend(); ++it)
-        if (!it->isEmpty())
+        if (!it->list.isEmpty())
             numbers.append(it.key());
     std::sort(numbers.begin(), numbers.end());
     return numbers;

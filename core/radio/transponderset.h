@@ -9,6 +9,8 @@
 
 #include <QHash>
 #include <QList>
+#include <QSet>
+#include <QString>
 
 #include <optional>
 
@@ -29,7 +31,7 @@ public:
 
     // A satellite's transponders, in the order they were merged; none for a
     // satellite with none.
-    QList<Transponder> forSatellite(int noradId) const { return m_bySatellite.value(noradId); }
+    QList<Transponder> forSatellite(int noradId) const { return m_bySatellite.value(noradId).list; }
 
     // The transponder to tune a satellite to when the user has not picked
     // one: the first alive linear transponder (the passband is what an
@@ -45,7 +47,15 @@ public:
     bool isEmpty() const { return m_size == 0; }
 
 private:
-    QHash<int, QList<Transponder>> m_bySatellite;
+    // What makes a transponder the same as another (sameTransponder), kept
+    // in sets so that a merge of n transponders takes time in n, not n²: a
+    // list of a hundred thousand entries for one satellite must not stall.
+    struct Held {
+        QList<Transponder> list;
+        QSet<QString> uuids;
+        QSet<QString> tunings;
+    };
+    QHash<int, Held> m_bySatellite;
     int m_size = 0;
 };
 

@@ -11,6 +11,7 @@
 #include "radio/transponderset.h"
 
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QTemporaryDir>
 #include <QTest>
@@ -121,6 +122,7 @@ private slots:
     void setKeepsEachSatellitesTransponders();
     void mergeDropsRepeatsAcrossSources();
     void defaultIsTheFirstAliveLinear();
+    void mergeTakesTimeInTheCount();
 
     // SatNOGS DB
     void satnogsSampleReads();
@@ -295,6 +297,23 @@ void TestTransponders::defaultIsTheFirstAliveLinear()
     dead.merge({deadBeacon, deadLinear});
     QVERIFY(!dead.defaultFor(24278));
     QVERIFY(!set.defaultFor(25544));
+}
+
+void TestTransponders::mergeTakesTimeInTheCount()
+{
+    // A list of many entries for one satellite (a file a user names can
+    // hold anything up to its cap) merges in time in the count: comparing
+    // each with all those held took minutes at this size.
+    QList<Transponder> many;
+    for (int i = 0; i < 100000; ++i)
+        many << beacon(25544, 100e6 + i);
+    QElapsedTimer timer;
+    timer.start();
+    TransponderSet set;
+    QCOMPARE(set.merge(many), 0);
+    QCOMPARE(set.merge(many), many.size());
+    QCOMPARE(set.size(), many.size());
+    QVERIFY2(timer.elapsed() < 20000, qPrintable(QString::number(timer.elapsed())));
 }
 
 // ---- SatNOGS DB --------------------------------------------------------
