@@ -6,6 +6,7 @@
 #include "rotatorsession.h"
 
 #include "micro2gcalibration.h"
+#include "stationradio.h"
 
 #include "input/logtext.h"
 #include "protocol/encoder.h"
@@ -44,6 +45,7 @@ RotatorSession::RotatorSession(QObject *parent) : QObject(parent), m_queue(m_opt
     qRegisterMetaType<StatusWord>();
     m_clock.start();
     m_micro2g = std::make_unique<Micro2gCalibration>(this);
+    m_stationRadio = std::make_unique<StationRadio>(this);
 
     m_replyTimer.setSingleShot(true);
     connect(&m_replyTimer, &LinkTimer::timeout, this, &RotatorSession::onReplyTimeout);
@@ -472,8 +474,14 @@ void RotatorSession::apply(const Message &m)
         noteUnreadable(reason);
         return;
     }
+    case Op::UplinkFreq:
+    case Op::DownlinkFreq:
+    case Op::UplinkMode:
+    case Op::DownlinkMode:
+        m_stationRadio->read(m);
+        break;
     default:
-        break; // Easycomm II controllers may report UP/DN/modes; nothing to do with them
+        break;
     }
     if (m_onWire && m_queue.offer(m)) {
         const Request *front = m_queue.front();

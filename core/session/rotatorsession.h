@@ -38,6 +38,7 @@ class Link;
 namespace slew::session {
 
 class Micro2gCalibration;
+class StationRadio;
 
 class RotatorSession : public QObject {
     Q_OBJECT
@@ -185,6 +186,9 @@ public:
     // The Micro-2g program's calibration listings, asked for on this link
     // (micro2gcalibration.h).
     Micro2gCalibration *micro2g() const { return m_micro2g.get(); }
+    // The Easycomm station commands for the radios (UP, DN, UM, DM) on this
+    // link (stationradio.h).
+    StationRadio *stationRadio() const { return m_stationRadio.get(); }
 
 public slots:
     // Someone wants fresh positions (a tracker asked for one, a window is
@@ -278,6 +282,7 @@ private:
     // The session's helpers, each a part of one conversation with the
     // controller kept in a file of its own, ask through the hooks below.
     friend class Micro2gCalibration;
+    friend class StationRadio;
     // A request of a helper's own: refused, as the session's own are (the
     // result, and commandRefused()), with no link or a full queue.
     // SameLine::Shared: one with the same line already waiting serves this
@@ -425,6 +430,7 @@ private:
     UnreadableReplies m_unreadable;
     std::function<bool(const protocol::Message &)> m_listingReader;
     std::unique_ptr<Micro2gCalibration> m_micro2g;
+    std::unique_ptr<StationRadio> m_stationRadio;
     qint64 m_unreadableReplies = 0;
 };
 

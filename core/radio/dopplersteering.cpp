@@ -1,0 +1,258 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "dopplersteering.h"
+
+#include "radiolink.h"
+
+#include "sky/observation.h"
+#include "tracking/stationclock.h"
+
+#include <QDateTime>
+
+#include <algorithm>
+#include <cmath>
+
+namespace slew::radio {
+
+namespace {
+
+// How long a frequency Slew sent may still be read back: the radio's
+// latency and a read on its way, with room to spare.
+constexpr qint64 kOwnEchoMs = 3000;
+constexpr size_t kRecentSent = 32;
+constexpr double kMsPerDay = 86400000.0;
+// The Doppler rate is taken over this span around the moment.
+constexpr double kRateSpanS = 0.5;
+// A frequency is held at most this long before the next is due: the lead
+// by half the hold never reaches further ahead than half of it.
+constexpr double kLongestHoldS = 2.0;
+
+// Readings this close to a frequency are that frequency: two steps, for a
+// radio that rounds what it is sent to its own step, and never under 5 Hz,
+// below any turn of a dial worth following.
+double sameFrequencyHz(double stepHz)
+{
+    return std::max(2.0 * stepHz, 5.0);
+}
+
+} // namespace
+
+DopplerSteering::DopplerSteering(RadioLink *link, QObject *parent) : QObject(parent), m_link(link)
+{
+    connect(link, &RadioLink::frequenciesRead, this, &DopplerSteering::onRead);
+    connect(&m_timer, &QTimer::timeout, this, [this] {
+        if (m_clock)
+            step(m_clock->nowJulian(), QDateTime::currentMSecsSinceEpoch() - m_timerStartMs);
+    });
+}
+
+void DopplerSteering::begin(const SatelliteFrequencies &satellite, RangeRate rangeRate)
+{
+    m_satellite = satellite;
+    m_rangeRate = std::move(rangeRate);
+    m_sentReceive.reset();
+    m_sentTransmit.reset();
+    m_recentReceive.clear();
+    m_sendTimes.clear();
+    m_dial.reset();
+    m_receiveTaken = true;
+    m_readPending = false;
+    m_lastReadMs = -1;
+}
+
+void DopplerSteering::end()
+{
+    m_rangeRate = nullptr;
+    m_dial.reset();
+}
+
+void DopplerSteering::start(const tracking::StationClock *clock)
+{
+    m_clock = clock;
+    m_timerStartMs = QDateTime::currentMSecsSinceEpoch();
+    m_timer.start(m_settings.stepMs);
+}
+
+void DopplerSteering::stop()
+{
+    m_timer.stop();
+    m_clock = nullptr;
+}
+
+int DopplerSteering::leadMs() const
+{
+    return m_settings.leadMs >= 0 ? m_settings.leadMs : m_link->latencyMs();
+}
+
+double DopplerSteering::tuningStepHz() const
+{
+    return std::max(1.0, m_link->tuningStepHz());
+}
+
+void DopplerSteering::step(double julian, qint64 nowMs)
+{
+    m_lastJulian = julian;
+    m_nowMs = nowMs;
+    if (!m_rangeRate || !m_link->isOpen())
+        return;
+    // The dial is read again and again while it is followed; a new receive
+    // frequency goes out when a reading has shown the last one taken.
+    if (m_settings.followDial && !m_readPending
+        && (m_lastReadMs < 0 || nowMs - m_lastReadMs >= m_settings.readBackMs)) {
+        m_readPending = true;
+        m_lastReadMs = nowMs;
+        m_link->readFrequencies(); // its answer may come at once (onRead)
+    }
+    sendDue();
+}
+
+bool DopplerSteering::withinBudget()
+{
+    while (!m_sendTimes.empty() && m_nowMs - m_sendTimes.front() >= 1000)
+        m_sendTimes.pop_front();
+    return int(m_sendTimes.size()) < m_settings.maxCommandsPerSecond;
+}
+
+void DopplerSteering::noteSent()
+{
+    m_sendTimes.push_back(m_nowMs);
+    ++m_commandsSent;
+}
+
+void DopplerSteering::sendDue()
+{
+    if (m_dial || !m_rangeRate || !m_link->isOpen())
+        return; // the operator's hand is on the dial: nothing is sent over it
+    // What will be due once the radio has taken the command, and how fast
+    // it moves then.
+    const double at = m_lastJulian + leadMs() / kMsPerDay;
+    const std::optional<double> now = m_rangeRate(at);
+    const std::optional<double> before = m_rangeRate(at - kRateSpanS / 2 / 86400.0);
+    const std::optional<double> after = m_rangeRate(at + kRateSpanS / 2 / 86400.0);
+    if (!now || !before || !after || !std::isfinite(*now) || !std::isfinite(*before) || !std::isfinite(*after))
+        return;
+    const RadioTuning wanted = tuningFor(m_satellite, *now);
+    const RadioTuning early = tuningFor(m_satellite, *before), late = tuningFor(m_satellite, *after);
+    const double receiveRate = (late.receiveHz - early.receiveHz) / kRateSpanS; // Hz/s
+    const double transmitRate = wanted.transmitHz ? (*late.transmitHz - *early.transmitHz) / kRateSpanS : 0.0;
+
+    // The budget shared by rate^(2/3); each frequency's step from its share.
+    const double receiveWeight = std::cbrt(receiveRate * receiveRate);
+    const double transmitWeight = wanted.transmitHz ? std::cbrt(transmitRate * transmitRate) : 0.0;
+    const double budget = std::max(1, m_settings.maxCommandsPerSecond);
+    const double weights = receiveWeight + transmitWeight;
+    auto stepFor = [&](double rate, double weight) {
+        const double share = weights > 0 ? budget * weight / weights : budget;
+        return std::max({m_settings.thresholdHz, tuningStepHz(), std::abs(rate) / std::max(share, 0.5)});
+    };
+    // Due once the frequency held lags the wanted one by half its step (it
+    // was sent half a step ahead), or is off by a whole step either way.
+    auto due = [](std::optional<double> held, double want, double rate, double step) {
+        if (!held)
+            return true;
+        const double lag = (want - *held) * (rate >= 0 ? 1.0 : -1.0);
+        return lag > step / 2 || std::abs(want - *held) > step;
+    };
+    // Half the hold ahead: the value that will be due in the middle of it.
+    auto ahead = [](double want, double rate, double step) {
+        if (rate == 0.0)
+            return want;
+        const double holdS = std::min(step / std::abs(rate), kLongestHoldS);
+        return want + rate * holdS / 2;
+    };
+    bool sent = false;
+    const double receiveStep = stepFor(receiveRate, receiveWeight);
+    const bool receiveMayGo = !m_settings.followDial || m_receiveTaken;
+    if (receiveMayGo && due(m_sentReceive, wanted.receiveHz, receiveRate, receiveStep) && withinBudget()) {
+        const double hz = quantised(ahead(wanted.receiveHz, receiveRate, receiveStep), tuningStepHz());
+        m_link->setReceiveHz(hz);
+        m_sentReceive = hz;
+        m_receiveTaken = false;
+        m_recentReceive.push_back({hz, m_nowMs});
+        if (m_recentReceive.size() > kRecentSent)
+            m_recentReceive.pop_front();
+        noteSent();
+        sent = true;
+    }
+    if (wanted.transmitHz) {
+        const double transmitStep = stepFor(transmitRate, transmitWeight);
+        if (due(m_sentTransmit, *wanted.transmitHz, transmitRate, transmitStep) && withinBudget()) {
+            const double hz = quantised(ahead(*wanted.transmitHz, transmitRate, transmitStep), tuningStepHz());
+            m_link->setTransmitHz(hz);
+            m_sentTransmit = hz;
+            noteSent();
+            sent = true;
+        }
+    }
+    if (sent && m_sentReceive)
+        emit tuned(RadioTuning{*m_sentReceive, m_sentTransmit});
+}
+
+bool DopplerSteering::isOwn(double receiveHz) const
+{
+    // A reading that matches a recent command is Slew's own, even an older
+    // one that the radio had not yet replaced when it was read.
+    const double tolerance = sameFrequencyHz(tuningStepHz());
+    for (const Sent &s : m_recentReceive) {
+        if (m_nowMs - s.atMs <= kOwnEchoMs && std::abs(s.hz - receiveHz) <= tolerance)
+            return true;
+    }
+    return false;
+}
+
+void DopplerSteering::onRead(const RadioFrequencies &frequencies)
+{
+    m_readPending = false;
+    if (!m_rangeRate || !m_settings.followDial || !frequencies.receiveHz || !m_sentReceive)
+        return;
+    const double read = *frequencies.receiveHz;
+    const double tolerance = sameFrequencyHz(tuningStepHz());
+    if (!m_dial) {
+        if (std::abs(read - *m_sentReceive) <= tolerance) {
+            m_receiveTaken = true; // the radio holds what was sent last: the next may go
+            sendDue();
+            return;
+        }
+        if (isOwn(read))
+            return; // an older command of Slew's: the last is not taken yet
+        m_dial = Dial{read, m_nowMs}; // the operator's hand: hold still and watch
+        return;
+    }
+    // A command of Slew's that was on its way when the hand moved lands
+    // over the turn: the reading is Slew's, the operator's point is still
+    // the one seen, and it is put back below.
+    const bool overwritten = isOwn(read);
+    if (!overwritten && std::abs(read - m_dial->hz) > tolerance) {
+        m_dial = Dial{read, m_nowMs}; // still turning
+        return;
+    }
+    if (m_nowMs - m_dial->sinceMs < m_settings.dialRestMs)
+        return;
+    adoptDial(overwritten);
+}
+
+void DopplerSteering::adoptDial(bool overwritten)
+{
+    const double point = m_dial->hz;
+    // At rest: the operator's new point. It is heard on the ground; the
+    // satellite's frequency behind it is what Doppler is corrected from.
+    const std::optional<double> rangeRate = m_rangeRate(m_lastJulian);
+    const bool corrected = m_satellite.correct != DopplerOn::UplinkOnly;
+    const double atSatellite = corrected && rangeRate ? point / sky::dopplerFactor(*rangeRate) : point;
+    const double offset = atSatellite - (m_satellite.downlinkHz + m_satellite.downlinkOffsetHz);
+    m_satellite.downlinkHz += offset;
+    if (m_satellite.uplinkHz && m_satellite.uplinkFollows != UplinkFollowsDial::No)
+        *m_satellite.uplinkHz += m_satellite.uplinkFollows == UplinkFollowsDial::OppositeWay ? -offset : offset;
+    m_receiveTaken = true;
+    m_dial.reset();
+    if (overwritten) {
+        m_sentReceive.reset(); // the radio holds Slew's old value: the operator's goes out now
+    } else {
+        // What the radio holds is right for now: no command sent back over it.
+        m_sentReceive = point;
+        m_recentReceive.push_back({point, m_nowMs});
+    }
+    emit dialFollowed(offset);
+    sendDue();
+}
+
+} // namespace slew::radio

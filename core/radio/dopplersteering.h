@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Keeps a radio on a satellite's Doppler-corrected frequencies while a pass
+// is tracked, through a RadioLink:
+//
+//   - The command leads by the radio's latency (measured by the link, or
+//     set): the frequency sent is the one due when the radio has taken it,
+//     and further by half the time it will be held, so the error swings
+//     from -step/2 to +step/2 around the truth instead of 0 to step.
+//   - Commands are a budget (maxCommandsPerSecond, F and I together, in
+//     any sliding second): the step each frequency may drift before it is
+//     sent again is the larger of the threshold, the radio's tuning step,
+//     and what its Doppler rate over its share of the budget allows; the
+//     shares go by rate^(2/3), which makes the sum of the two squared
+//     errors least. The link keeps only the newest value waiting, so a slow
+//     bus skips stale values instead of queueing them.
+//   - The dial: the receive frequency is read back. A new receive
+//     frequency goes out only after a reading has shown the last one taken:
+//     a reading that is none of Slew's recent frequencies is the operator's
+//     hand. Slew then sends nothing until the dial has rested (dialRestMs),
+//     takes the new point as the operator's, moves the uplink with it (the
+//     opposite way on an inverting transponder), and goes on correcting
+//     from there. It never sends the old frequency back over a turn.
+//
+// step() does one round at a given time, so tests and benchmarks run it on
+// simulated time; start() runs it from a timer on the station clock.
+
+#include "doppler.h"
+
+#include <QObject>
+#include <QTimer>
+
+#include <deque>
+#include <functional>
+#include <optional>
+
+namespace slew::tracking {
+class StationClock;
+}
+
+namespace slew::radio {
+
+class RadioLink;
+struct RadioFrequencies;
+
+class DopplerSteering : public QObject {
+    Q_OBJECT
+public:
+    struct Settings {
+        double thresholdHz = 2.0;     // the least drift worth a command
+        int maxCommandsPerSecond = 19; // F and I together, in any sliding second
+        int leadMs = -1;              // -1: the link's measured latency
+        int stepMs = 20;              // how often start()'s timer runs step()
+        int readBackMs = 40;          // how often the dial is read, when it is followed
+        int dialRestMs = 400;         // a dial that has rested this long is the operator's new point
+        bool followDial = true;
+    };
+    // The range-rate (km/s) at a Julian date; nothing when it is unknown.
+    using RangeRate = std::function<std::optional<double>(double julian)>;
+
+    explicit DopplerSteering(RadioLink *link, QObject *parent = nullptr);
+
+    void setSettings(const Settings &settings) { m_settings = settings; }
+    const Settings &settings() const { return m_settings; }
+
+    // Steers from now on; a second call replaces the satellite.
+    void begin(const SatelliteFrequencies &satellite, RangeRate rangeRate);
+    void end();
+    bool isSteering() const { return bool(m_rangeRate); }
+    // The satellite's frequencies as they now stand: the operator's dial
+    // turns are in them.
+    const SatelliteFrequencies &satellite() const { return m_satellite; }
+
+    // One round at `julian` (the station clock) and `nowMs` (a monotonic
+    // clock of the same pace).
+    void step(double julian, qint64 nowMs);
+    // step() from a timer on `clock` (which must outlive this).
+    void start(const tracking::StationClock *clock);
+    void stop();
+
+    // What Slew last told the radio, quantised as sent.
+    std::optional<double> sentReceiveHz() const { return m_sentReceive; }
+    std::optional<double> sentTransmitHz() const { return m_sentTransmit; }
+    bool dialTurning() const { return m_dial.has_value(); }
+    int commandsSent() const { return m_commandsSent; }
+
+signals:
+    void tuned(const slew::radio::RadioTuning &tuning);
+    // The operator's dial moved the downlink by this much (Hz, at the satellite).
+    void dialFollowed(double offsetHz);
+
+private:
+    void onRead(const RadioFrequencies &frequencies);
+    // The dial has rested: its point is the operator's. `overwritten`: a
+    // command of Slew's landed over the turn, and the point is sent back.
+    void adoptDial(bool overwritten);
+    // Sends what has drifted past its step, as the budget allows.
+    void sendDue();
+    bool withinBudget();
+    void noteSent();
+    bool isOwn(double receiveHz) const;
+    int leadMs() const;
+    double tuningStepHz() const;
+
+    RadioLink *m_link;
+    Settings m_settings;
+    SatelliteFrequencies m_satellite;
+    RangeRate m_rangeRate;
+    std::optional<double> m_sentReceive, m_sentTransmit;
+    struct Sent {
+        double hz;
+        qint64 atMs;
+    };
+    std::deque<Sent> m_recentReceive; // to tell Slew's own commands from the dial
+    struct Dial {
+        double hz;          // where the dial was last read
+        qint64 sinceMs;     // since when it has read that
+    };
+    std::optional<Dial> m_dial;
+    bool m_receiveTaken = true; // a reading has shown the last receive frequency on the radio
+    bool m_readPending = false;
+    std::deque<qint64> m_sendTimes; // the last second's commands, for the budget
+    double m_lastJulian = 0;
+    qint64 m_nowMs = 0;
+    qint64 m_lastReadMs = -1;
+    int m_commandsSent = 0;
+    const tracking::StationClock *m_clock = nullptr;
+    QTimer m_timer;
+    qint64 m_timerStartMs = 0;
+};
+
+} // namespace slew::radio

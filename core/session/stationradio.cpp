@@ -1,0 +1,110 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "stationradio.h"
+
+#include "rotatorsession.h"
+
+#include "protocol/dialect.h"
+#include "protocol/encoder.h"
+#include "protocol/operations.h"
+
+#include <cmath>
+
+namespace slew::session {
+
+using protocol::Message;
+using protocol::Op;
+
+namespace {
+
+// Ten digits: what the protocol tables carry for UP and DN.
+constexpr double kHighestHz = 9999999999.0;
+
+Op frequencyOp(StationRadio::Path path)
+{
+    return path == StationRadio::Path::Uplink ? Op::UplinkFreq : Op::DownlinkFreq;
+}
+
+Op modeOp(StationRadio::Path path)
+{
+    return path == StationRadio::Path::Uplink ? Op::UplinkMode : Op::DownlinkMode;
+}
+
+} // namespace
+
+StationRadio::StationRadio(RotatorSession *session) : m_session(session) {}
+
+bool StationRadio::isSupported() const
+{
+    return protocol::dialectSupports(m_session->profile().dialect, Op::UplinkFreq);
+}
+
+bool StationRadio::canRead() const
+{
+    // Easycomm I is one line out and nothing back.
+    return isSupported() && m_session->profile().dialect != protocol::Dialect::Easycomm1;
+}
+
+CommandResult StationRadio::refuseUnlessSupported()
+{
+    if (auto linked = m_session->requireLink(); !linked)
+        return linked;
+    if (!isSupported())
+        return m_session->refuse(
+            tr("%1 has no station radio commands (UP, DN)").arg(protocol::dialectName(m_session->profile().dialect)));
+    return {};
+}
+
+CommandResult StationRadio::setFrequency(Path path, double hz)
+{
+    if (auto usable = refuseUnlessSupported(); !usable)
+        return usable;
+    if (!std::isfinite(hz) || hz < 1.0 || hz > kHighestHz)
+        return m_session->refuse(tr("a radio frequency is 1 Hz to 9999999999 Hz (ten digits), not %1").arg(hz, 0, 'f', 0));
+    m_session->write(protocol::encodeLine({Message::number(frequencyOp(path), std::round(hz))}, m_session->profile().dialect));
+    return {};
+}
+
+CommandResult StationRadio::setMode(Path path, const QString &mode)
+{
+    if (auto usable = refuseUnlessSupported(); !usable)
+        return usable;
+    const QByteArray text = mode.trimmed().toUpper().toLatin1();
+    bool plain = !text.isEmpty() && text.size() <= 8;
+    for (char c : text)
+        plain = plain && ((c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'));
+    if (!plain)
+        return m_session->refuse(tr("a radio mode is 1 to 8 letters or digits (USB, FM), not '%1'").arg(mode.left(20)));
+    m_session->write(protocol::encodeLine({Message::word(modeOp(path), text)}, m_session->profile().dialect));
+    return {};
+}
+
+CommandResult StationRadio::readFrequency(Path path)
+{
+    if (auto usable = refuseUnlessSupported(); !usable)
+        return usable;
+    if (!canRead())
+        return m_session->refuse(tr("%1 answers no station radio queries").arg(protocol::dialectName(m_session->profile().dialect)));
+    Request r;
+    r.line = protocol::encodeLine({Message::query(frequencyOp(path))}, m_session->profile().dialect);
+    r.expects[0] = Expectation{frequencyOp(path), -1};
+    r.expectCount = 1;
+    r.attemptsLeft = 1; // a newer reading is asked for soon enough
+    r.purpose = RequestPurpose::User;
+    return m_session->queueRequest(std::move(r), RotatorSession::SameLine::Shared);
+}
+
+void StationRadio::read(const Message &m)
+{
+    const Path path = (m.op == Op::UplinkFreq || m.op == Op::UplinkMode) ? Path::Uplink : Path::Downlink;
+    if (m.op == Op::UplinkFreq || m.op == Op::DownlinkFreq) {
+        // The parser takes numbers as finite only; out of range is not a reading.
+        if (m.hasValue && m.value >= 0 && m.value <= kHighestHz)
+            emit frequencyReported(path, m.value);
+        return;
+    }
+    const QString mode = QString::fromLatin1(m.text.view().toByteArray());
+    if (!mode.isEmpty())
+        emit modeReported(path, mode);
+}
+
+} // namespace slew::session
