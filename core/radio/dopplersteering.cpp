@@ -78,6 +78,13 @@ void DopplerSteering::stop()
     m_clock = nullptr;
 }
 
+bool DopplerSteering::followsDial() const
+{
+    // A radio that answers no readings (a controller on Easycomm I) is
+    // steered blind.
+    return m_settings.followDial && m_link->canReadBack();
+}
+
 int DopplerSteering::leadMs() const
 {
     return m_settings.leadMs >= 0 ? m_settings.leadMs : m_link->latencyMs();
@@ -96,8 +103,7 @@ void DopplerSteering::step(double julian, qint64 nowMs)
         return;
     // The dial is read again and again while it is followed; a new receive
     // frequency goes out when a reading has shown the last one taken.
-    if (m_settings.followDial && !m_readPending
-        && (m_lastReadMs < 0 || nowMs - m_lastReadMs >= m_settings.readBackMs)) {
+    if (followsDial() && !m_readPending && (m_lastReadMs < 0 || nowMs - m_lastReadMs >= m_settings.readBackMs)) {
         m_readPending = true;
         m_lastReadMs = nowMs;
         m_link->readFrequencies(); // its answer may come at once (onRead)
@@ -161,7 +167,7 @@ void DopplerSteering::sendDue()
     };
     bool sent = false;
     const double receiveStep = stepFor(receiveRate, receiveWeight);
-    const bool receiveMayGo = !m_settings.followDial || m_receiveTaken;
+    const bool receiveMayGo = !followsDial() || m_receiveTaken;
     if (receiveMayGo && due(m_sentReceive, wanted.receiveHz, receiveRate, receiveStep) && withinBudget()) {
         const double hz = quantised(ahead(wanted.receiveHz, receiveRate, receiveStep), tuningStepHz());
         m_link->setReceiveHz(hz);
@@ -202,7 +208,7 @@ bool DopplerSteering::isOwn(double receiveHz) const
 void DopplerSteering::onRead(const RadioFrequencies &frequencies)
 {
     m_readPending = false;
-    if (!m_rangeRate || !m_settings.followDial || !frequencies.receiveHz || !m_sentReceive)
+    if (!m_rangeRate || !followsDial() || !frequencies.receiveHz || !m_sentReceive)
         return;
     const double read = *frequencies.receiveHz;
     const double tolerance = sameFrequencyHz(tuningStepHz());

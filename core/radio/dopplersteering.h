@@ -99,6 +99,7 @@ private:
     bool withinBudget();
     void noteSent();
     bool isOwn(double receiveHz) const;
+    bool followsDial() const;
     int leadMs() const;
     double tuningStepHz() const;
 

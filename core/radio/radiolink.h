@@ -49,6 +49,10 @@ public:
     virtual void setMode(const QString &mode, int passbandHz) = 0;
     // Asks for both frequencies; frequenciesRead() follows.
     virtual void readFrequencies() = 0;
+    // Readings show the radio's own frequency, dial turns included: the
+    // dial can be followed only where they do (a controller's UP/DN answers
+    // say only what it was told).
+    virtual bool canReadBack() const { return true; }
 
     // The radio's tuning step (Hz) where known, else 1.
     virtual double tuningStepHz() const { return 1.0; }

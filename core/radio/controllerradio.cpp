@@ -1,0 +1,172 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "controllerradio.h"
+
+#include "session/rotatorsession.h"
+#include "session/stationradio.h"
+
+namespace slew::radio {
+
+using session::RotatorSession;
+using session::StationRadio;
+
+namespace {
+
+// A reading the controller has not answered by then is given up: the
+// session's own reply timeout and retries are well inside it.
+constexpr int kReadTimeoutMs = 3000;
+
+} // namespace
+
+ControllerRadioLink::ControllerRadioLink(RotatorSession *session, QObject *parent)
+    : RadioLink(parent), m_session(session)
+{
+    connect(&m_pacer, &CommandPacer::ready, this, &ControllerRadioLink::send);
+    m_readTimeout.setSingleShot(true);
+    m_readTimeout.setInterval(kReadTimeoutMs);
+    connect(&m_readTimeout, &QTimer::timeout, this,
+            [this] { finishRead(false, tr("the controller did not answer UP/DN")); });
+    connect(session->stationRadio(), &StationRadio::frequencyReported, this,
+            [this](StationRadio::Path path, double hz) { onReported(int(path), hz); });
+    connect(session, &RotatorSession::stateChanged, this, [this](RotatorSession::State s, const QString &detail) {
+        if (s != RotatorSession::State::Connected && m_state != State::Closed)
+            setState(State::Closed, tr("the rotator's link: %1").arg(detail));
+    });
+}
+
+void ControllerRadioLink::setState(State state, const QString &detail)
+{
+    if (state != State::Open) {
+        m_pacer.clear();
+        m_readTimeout.stop();
+        m_readInFlight = false;
+    }
+    m_state = state;
+    emit stateChanged(state, detail);
+}
+
+void ControllerRadioLink::open()
+{
+    if (!m_session->isConnected()) {
+        setState(State::Closed, tr("connect the rotator first: the radio is behind its controller"));
+        return;
+    }
+    if (!m_session->stationRadio()->isSupported()) {
+        setState(State::Closed, tr("the controller's dialect has no station radio commands (UP, DN)"));
+        return;
+    }
+    setState(State::Open, tr("the radio behind the controller, on %1").arg(m_session->uri()));
+    // The first reading measures how long a round trip takes.
+    readFrequencies();
+}
+
+void ControllerRadioLink::close()
+{
+    setState(State::Closed, tr("closed"));
+}
+
+bool ControllerRadioLink::canReadBack() const
+{
+    return false; // the controller tells what it was told, not where the dial is
+}
+
+void ControllerRadioLink::setReceiveHz(double hz)
+{
+    if (m_state != State::Open)
+        return;
+    m_receiveHz = hz;
+    m_pacer.submit({CommandKind::ReceiveFrequency, QStringLiteral("DN%1").arg(hz, 0, 'f', 0)});
+}
+
+void ControllerRadioLink::setTransmitHz(double hz)
+{
+    if (m_state != State::Open)
+        return;
+    m_transmitHz = hz;
+    m_pacer.submit({CommandKind::TransmitFrequency, QStringLiteral("UP%1").arg(hz, 0, 'f', 0)});
+}
+
+void ControllerRadioLink::setMode(const QString &mode, int)
+{
+    if (m_state != State::Open)
+        return;
+    m_mode = mode;
+    m_pacer.submit({CommandKind::Mode, QStringLiteral("DM%1 UM%1").arg(mode)});
+}
+
+void ControllerRadioLink::readFrequencies()
+{
+    if (m_state != State::Open || !m_session->stationRadio()->canRead())
+        return;
+    m_pacer.submit({CommandKind::Read, QStringLiteral("DN UP")});
+}
+
+void ControllerRadioLink::send(const PacedCommand &command)
+{
+    StationRadio *radio = m_session->stationRadio();
+    session::CommandResult result;
+    switch (command.kind) {
+    case CommandKind::ReceiveFrequency:
+        result = radio->setFrequency(StationRadio::Path::Downlink, m_receiveHz); // the newest
+        break;
+    case CommandKind::TransmitFrequency:
+        result = radio->setFrequency(StationRadio::Path::Uplink, m_transmitHz);
+        break;
+    case CommandKind::Mode:
+        result = radio->setMode(StationRadio::Path::Downlink, m_mode);
+        if (result)
+            result = radio->setMode(StationRadio::Path::Uplink, m_mode);
+        break;
+    case CommandKind::Split:
+        break;
+    case CommandKind::Read:
+        m_reading = {};
+        m_readInFlight = true;
+        m_readSince.start();
+        m_readTimeout.start();
+        result = radio->readFrequency(StationRadio::Path::Downlink);
+        if (result)
+            result = radio->readFrequency(StationRadio::Path::Uplink);
+        if (!result) {
+            finishRead(false, result.refusal);
+            return;
+        }
+        emit commandSent(command.text);
+        return; // finished when the answers are in
+    }
+    if (result)
+        emit commandSent(command.text);
+    else
+        emit commandFailed(command.text, result.refusal);
+    m_pacer.finished(); // a setting has no answer: written is done
+}
+
+void ControllerRadioLink::onReported(int path, double hz)
+{
+    if (!m_readInFlight)
+        return;
+    if (path == int(StationRadio::Path::Downlink))
+        m_reading.receiveHz = hz;
+    else
+        m_reading.transmitHz = hz;
+    if (m_reading.receiveHz && m_reading.transmitHz)
+        finishRead(true, {});
+}
+
+void ControllerRadioLink::finishRead(bool ok, const QString &why)
+{
+    if (!m_readInFlight)
+        return;
+    m_readInFlight = false;
+    m_readTimeout.stop();
+    if (ok) {
+        // Each answer waits for the polls ahead of it in the session's
+        // queue: the latency a command meets is about that long.
+        m_latencyMs = int(m_readSince.elapsed());
+        emit frequenciesRead(m_reading);
+    } else {
+        emit commandFailed(QStringLiteral("DN UP"), why);
+    }
+    m_pacer.finished();
+}
+
+} // namespace slew::radio

@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The radio behind the rotator controller: a station controller that drives
+// the radios itself takes Doppler-corrected frequencies on the rotator's own
+// link, as the Easycomm tables' station commands (`DN` receive, `UP`
+// transmit, `DM`/`UM` modes; session/stationradio.h). URI: `controller`.
+//
+// It goes through the rotator session's queue, so a frequency never delays
+// a poll's answer or a stop, and through a CommandPacer like every radio
+// link, so only the newest frequency waits. The controller's answers to
+// UP/DN say what it was told, not what the radio's dial shows, so the dial
+// is not followed on this path (canReadBack() is false); readings still
+// check what the controller holds, where the dialect answers them
+// (Easycomm II and later; Easycomm I takes settings blind).
+
+#include "commandpacer.h"
+#include "radiolink.h"
+
+#include <QElapsedTimer>
+#include <QTimer>
+
+#include <optional>
+
+namespace slew::session {
+class RotatorSession;
+}
+
+namespace slew::radio {
+
+class ControllerRadioLink : public RadioLink {
+    Q_OBJECT
+public:
+    // The session must outlive this.
+    explicit ControllerRadioLink(session::RotatorSession *session, QObject *parent = nullptr);
+
+    void open() override;
+    void close() override;
+    State state() const override { return m_state; }
+    QString uri() const override { return QStringLiteral("controller"); }
+    void setReceiveHz(double hz) override;
+    void setTransmitHz(double hz) override;
+    void setSplit(bool) override {} // the controller has a line for each path already
+    void setMode(const QString &mode, int passbandHz) override;
+    void readFrequencies() override;
+    bool canReadBack() const override;
+    int latencyMs() const override { return m_latencyMs; }
+    void setMinimumIntervalMs(int ms) override { m_pacer.setMinimumIntervalMs(ms); }
+
+private:
+    void setState(State state, const QString &detail);
+    void send(const PacedCommand &command);
+    void onReported(int path, double hz);
+    void finishRead(bool ok, const QString &why);
+
+    session::RotatorSession *m_session;
+    CommandPacer m_pacer;
+    State m_state = State::Closed;
+    double m_receiveHz = 0, m_transmitHz = 0; // the newest asked for
+    QString m_mode;
+    // A read on its way: what has come back of it, and since when.
+    RadioFrequencies m_reading;
+    bool m_readInFlight = false;
+    QElapsedTimer m_readSince;
+    QTimer m_readTimeout;
+    int m_latencyMs = 0;
+};
+
+} // namespace slew::radio
