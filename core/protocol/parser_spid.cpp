@@ -33,7 +33,6 @@ int Parser::pushSpid(char c)
 
 int Parser::flushSpid()
 {
-    m_readyCount = 0;
     m_spid.flush([this](const spid::Frame &f) { deliverSpid(f); });
     return m_readyCount;
 }
@@ -71,7 +70,7 @@ void Parser::deliverSpid(const spid::Frame &f)
                 deliver(Message::query(op), false);
         }
         if (m_readyCount > 0) // the reader refuses a move without a direction
-            m_ready[size_t(m_readyCount - 1)].lineEnd = true;
+            slot(m_readyCount - 1).lineEnd = true;
         return;
     }
 }
