@@ -195,7 +195,7 @@ int Parser::readToken(QByteArrayView token)
     if (m_hasPending && isBareConfigRead(nextSlot()) && allDigits(token) && token.size() <= 5) {
         // SatNOGS: `CR 1` is one command; it takes the bare CR's place.
         m_hasPending = false;
-        build([&] { return Message::query(Op::ConfigRead, token.toInt()); });
+        build([&] { return Message::query(Op::ConfigRead, digitsValue(token)); });
         return 1;
     }
     if (m_hasPending && m_pendingWantsElevation && allDigits(token) && token.size() <= 3) {
@@ -203,7 +203,7 @@ int Parser::readToken(QByteArrayView token)
         m_hasPending = false;
         m_pendingWantsElevation = false;
         publish(false); // the held azimuth
-        build([&] { return Message::number(Op::Elevation, token.toInt()); });
+        build([&] { return Message::number(Op::Elevation, digitsValue(token)); });
         return 2;
     }
     if (m_hasPending)

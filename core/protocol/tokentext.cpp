@@ -72,14 +72,14 @@ bool parseSigned64(QByteArrayView s, double *out)
 }
 
 // `n,value` as in IP0,23.5 / CR1,0.8 / AN0,65535 / SatNOGS' bare `1,0.8`.
-bool splitIndexed(QByteArrayView rest, int *index, QByteArrayView *value)
+bool splitIndexed(QByteArrayView rest, int *index, std::optional<QByteArrayView> *value)
 {
     const qsizetype comma = rest.indexOf(',');
     const QByteArrayView number = comma < 0 ? rest : rest.first(comma);
     if (!allDigits(number) || number.size() > 5)
         return false;
-    *index = number.toInt();
-    *value = comma < 0 ? QByteArrayView() : rest.sliced(comma + 1);
+    *index = digitsValue(number);
+    *value = comma < 0 ? std::nullopt : std::optional<QByteArrayView>(rest.sliced(comma + 1));
     return true;
 }
 
