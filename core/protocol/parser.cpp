@@ -108,8 +108,11 @@ int Parser::push(char c)
 
 qsizetype Parser::appendTokenRun(QByteArrayView bytes)
 {
-    if (m_length == 0 || m_overflow || m_dialect == Dialect::Rotctld || m_dialect == Dialect::Micro2g
-        || isSpid(m_dialect))
+    // A token's first byte comes here too, unless a message is pending:
+    // push() takes that byte, as it may release the message for feed() to
+    // hand out.
+    if ((m_length == 0 && m_hasPending) || m_overflow || m_dialect == Dialect::Rotctld
+        || m_dialect == Dialect::Micro2g || isSpid(m_dialect))
         return 0;
     const qsizetype room = qsizetype(m_token.size()) - m_length;
     const qsizetype limit = std::min(bytes.size(), room);

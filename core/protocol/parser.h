@@ -51,7 +51,7 @@ public:
     void feed(QByteArrayView bytes, Sink &&sink)
     {
         for (qsizetype at = 0; at < bytes.size();) {
-            // The middle of a token goes in as a run: one call, not one a byte.
+            // A token goes in as a run: one call, not one a byte.
             at += appendTokenRun(bytes.sliced(at));
             if (at == bytes.size())
                 break;
@@ -95,9 +95,9 @@ private:
     };
 
     int push(char c); // returns how many messages are ready
-    // Inside a token of a line dialect: appends the bytes up to the next
-    // separator (or the token's capacity), which push() would take one by
-    // one with nothing to deliver; returns how many it took.
+    // In a line dialect: appends the bytes up to the next separator (or the
+    // token's capacity), which push() would take one by one with nothing to
+    // deliver; returns how many it took.
     qsizetype appendTokenRun(QByteArrayView bytes);
     void finishToken(bool lineEnd);
     int readToken(QByteArrayView token);
