@@ -110,9 +110,8 @@ qsizetype Parser::appendTokenRun(QByteArrayView bytes)
 {
     // A token's first byte comes here too, unless a message is pending:
     // push() takes that byte, as it may release the message for feed() to
-    // hand out.
-    if ((m_length == 0 && m_hasPending) || m_overflow || m_dialect == Dialect::Rotctld
-        || m_dialect == Dialect::Micro2g || isSpid(m_dialect))
+    // hand out. (The dialect is asked again in case a sink changed it.)
+    if ((m_length == 0 && m_hasPending) || m_overflow || !readsTokens())
         return 0;
     const qsizetype room = qsizetype(m_token.size()) - m_length;
     const qsizetype limit = std::min(bytes.size(), room);
@@ -132,17 +131,6 @@ qsizetype Parser::appendTokenRun(QByteArrayView bytes)
     m_length += int(n);
     m_tokenUnprintable = m_tokenUnprintable || (seen & kUnprintable);
     return n;
-}
-
-void Parser::deliver(const Message &m, bool lineEnd)
-{
-    // Only another dialect's reader copies a message in while one is held
-    // (the dialect changed in the middle of a line): the held one moves up
-    // a slot, so that it is still there should the dialect change back.
-    if (m_hasPending)
-        slot(m_readyCount + 1) = nextSlot();
-    nextSlot() = m;
-    publish(lineEnd);
 }
 
 bool Parser::pendingWaitsForArgument() const

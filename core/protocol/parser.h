@@ -31,6 +31,7 @@
 #include <QByteArrayView>
 
 #include <array>
+#include <concepts>
 #include <new>
 
 namespace slew::protocol {
@@ -50,6 +51,11 @@ public:
     template <typename Sink>
     void feed(QByteArrayView bytes, Sink &&sink)
     {
+        if (!readsTokens()) { // rotctld and Micro-2g lines, SPID frames
+            for (char c : bytes)
+                handOut(push(c), sink);
+            return;
+        }
         for (qsizetype at = 0; at < bytes.size();) {
             // A token goes in as a run: one call, not one a byte.
             at += appendTokenRun(bytes.sliced(at));
@@ -94,10 +100,16 @@ private:
         int count = 1;
     };
 
+    // Whether the dialect is read a token at a time (Easycomm, GS-232),
+    // rather than a line (rotctld, Micro-2g) or a frame (SPID).
+    bool readsTokens() const
+    {
+        return m_dialect != Dialect::Rotctld && m_dialect != Dialect::Micro2g && !isSpid(m_dialect);
+    }
     int push(char c); // returns how many messages are ready
-    // In a line dialect: appends the bytes up to the next separator (or the
-    // token's capacity), which push() would take one by one with nothing to
-    // deliver; returns how many it took.
+    // In a dialect read in tokens: appends the bytes up to the next
+    // separator (or the token's capacity), which push() would take one by
+    // one with nothing to deliver; returns how many it took.
     qsizetype appendTokenRun(QByteArrayView bytes);
     void finishToken(bool lineEnd);
     int readToken(QByteArrayView token);
@@ -141,8 +153,31 @@ private:
         nextSlot().lineEnd = lineEnd;
         ++m_readyCount;
     }
-    // Copies a message made elsewhere into the next slot, ready.
-    void deliver(const Message &m, bool lineEnd);
+    // Builds the message make() returns in the next slot, ready (SPID's
+    // frames).
+    template <std::invocable Make>
+    void deliver(Make &&make, bool lineEnd)
+    {
+        moveHeldOutOfTheWay();
+        build(make);
+        publish(lineEnd);
+    }
+    // The same for a message made elsewhere, a copy (the readers that
+    // classify into a Classified: GS-232, rotctld, Micro-2g).
+    void deliver(const Message &m, bool lineEnd)
+    {
+        moveHeldOutOfTheWay();
+        nextSlot() = m;
+        publish(lineEnd);
+    }
+    // Only another dialect's reader delivers while a message is held (the
+    // dialect changed in the middle of a line): the held one moves up a
+    // slot, so that it is still there should the dialect change back.
+    void moveHeldOutOfTheWay()
+    {
+        if (m_hasPending)
+            slot(m_readyCount + 1) = nextSlot();
+    }
     // Hands the n ready messages to sink and frees their slots; a pending
     // message stays where it is, now the first slot after the ready ones.
     template <typename Sink>
