@@ -7,10 +7,15 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 
 namespace slew::protocol {
 
 using namespace text;
+
+// Parser::build() makes a message over the one its slot held before,
+// without destroying that one first.
+static_assert(std::is_trivially_destructible_v<Message>, "a slot's old message must need no destructor");
 
 namespace {
 
