@@ -7,10 +7,15 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 
 namespace slew::protocol {
 
 using namespace text;
+
+// Parser::build() makes a message over the one its slot held before,
+// without destroying that one first.
+static_assert(std::is_trivially_destructible_v<Message>, "a slot's old message must need no destructor");
 
 namespace {
 
@@ -72,7 +77,6 @@ void Parser::reset()
 
 int Parser::push(char c)
 {
-    m_readyCount = 0;
     if (m_dialect == Dialect::Rotctld)
         return pushRotctld(c);
     if (m_dialect == Dialect::Micro2g)
@@ -109,8 +113,10 @@ int Parser::push(char c)
 
 qsizetype Parser::appendTokenRun(QByteArrayView bytes)
 {
-    if (m_length == 0 || m_overflow || m_dialect == Dialect::Rotctld || m_dialect == Dialect::Micro2g
-        || isSpid(m_dialect))
+    // A token's first byte comes here too, unless a message is pending:
+    // push() takes that byte, as it may release the message for feed() to
+    // hand out. (The dialect is asked again in case a sink changed it.)
+    if ((m_length == 0 && m_hasPending) || m_overflow || !readsTokens())
         return 0;
     const qsizetype room = qsizetype(m_token.size()) - m_length;
     const qsizetype limit = std::min(bytes.size(), room);
@@ -132,81 +138,86 @@ qsizetype Parser::appendTokenRun(QByteArrayView bytes)
     return n;
 }
 
-void Parser::deliver(const Message &m, bool lineEnd)
-{
-    Message &slot = m_ready[size_t(m_readyCount++)];
-    slot = m;
-    slot.lineEnd = lineEnd;
-}
-
 bool Parser::pendingWaitsForArgument() const
 {
-    return m_hasPending && (isBareConfigRead(m_pending) || m_pendingWantsElevation);
+    return m_hasPending && (isBareConfigRead(nextSlot()) || m_pendingWantsElevation);
 }
 
 void Parser::emitPending(bool lineEnd)
 {
     m_hasPending = false;
-    if (isBareConfigRead(m_pending)) {
-        deliver(Message::invalid("CR", "config read without a register number"), lineEnd);
+    if (isBareConfigRead(nextSlot())) {
+        build([] { return Message::invalid("CR", "config read without a register number"); });
     } else if (m_pendingWantsElevation) {
         m_pendingWantsElevation = false;
-        deliver(Message::invalid("W", "W needs an azimuth and an elevation (W010 020)"), lineEnd);
-    } else {
-        deliver(m_pending, lineEnd);
+        build([] { return Message::invalid("W", "W needs an azimuth and an elevation (W010 020)"); });
     }
+    publish(lineEnd);
 }
 
 void Parser::finishToken(bool lineEnd)
 {
     const QByteArrayView token(m_token.data(), m_length);
-    // Built in place (a message is some 200 bytes; copies showed in profiles).
-    const Classified c = [&]() -> Classified {
-        if (m_overflow) {
-            if (m_hasPending) // a bare CR or W waiting for its argument: said, not lost
-                emitPending(false);
-            return {Message::invalid(token, "token longer than 128 bytes, dropped up to the next separator",
-                                     Refusal::Overlong)};
-        }
-        if (m_hasPending && isBareConfigRead(m_pending) && allDigits(token) && token.size() <= 5) {
-            // SatNOGS: `CR 1` is one command.
-            m_hasPending = false;
-            return {Message::query(Op::ConfigRead, token.toInt())};
-        }
-        if (m_hasPending && m_pendingWantsElevation && allDigits(token) && token.size() <= 3) {
-            // GS-232: `W010 020` sets both axes.
-            m_hasPending = false;
-            m_pendingWantsElevation = false;
-            return {m_pending, Message::number(Op::Elevation, token.toInt())};
-        }
-        if (m_hasPending)
-            emitPending(false);
-        return classify(token, m_tokenUnprintable ? TokenBytes::Unprintable : TokenBytes::Printable);
-    }();
+    const int count = readToken(token);
     m_tokenUnprintable = false;
     m_length = 0;
     m_overflow = false;
-    if (c.count == 2)
-        deliver(c.first, false);
-    const Message &m = c.count == 2 ? c.second : c.first;
+    // The token's (last) message is held in the next slot until its line
+    // end is known; a line end hands it out at once.
+    const Message &m = nextSlot();
     m_previousOnLine = m.op;
     m_previousHadValue = m.hasValue;
-
-    const bool wantsElevation = isGs232(m_dialect) && m.op == Op::Azimuth && m.hasValue && token.size() > 0
-                                && upper(token[0]) == 'W' && c.count == 1;
-    // The common case, a token that ends its line and waits for nothing,
-    // goes out at once rather than through m_pending (one copy, not two).
-    if (lineEnd && !wantsElevation && !isBareConfigRead(m)) {
-        m_pendingWantsElevation = false;
-        deliver(m, true);
-        return;
-    }
-    m_pending = m;
-    m_pendingWantsElevation = wantsElevation;
+    m_pendingWantsElevation = isGs232(m_dialect) && m.op == Op::Azimuth && m.hasValue && token.size() > 0
+                              && upper(token[0]) == 'W' && count == 1;
+    m_hasPending = true;
     if (lineEnd)
         emitPending(true);
-    else
-        m_hasPending = true;
+}
+
+// Builds what the token reads as in the next slot, after settling the
+// pending message (a bare CR or W may take this token as its argument).
+// Returns how many messages the token made; of two, the first is ready.
+int Parser::readToken(QByteArrayView token)
+{
+    if (m_overflow) {
+        if (m_hasPending) // a bare CR or W waiting for its argument: said, not lost
+            emitPending(false);
+        build([&] {
+            return Message::invalid(token, "token longer than 128 bytes, dropped up to the next separator",
+                                    Refusal::Overlong);
+        });
+        return 1;
+    }
+    if (m_hasPending && isBareConfigRead(nextSlot()) && allDigits(token) && token.size() <= 5) {
+        // SatNOGS: `CR 1` is one command; it takes the bare CR's place.
+        m_hasPending = false;
+        build([&] { return Message::query(Op::ConfigRead, digitsValue(token)); });
+        return 1;
+    }
+    if (m_hasPending && m_pendingWantsElevation && allDigits(token) && token.size() <= 3) {
+        // GS-232: `W010 020` sets both axes.
+        m_hasPending = false;
+        m_pendingWantsElevation = false;
+        publish(false); // the held azimuth
+        build([&] { return Message::number(Op::Elevation, digitsValue(token)); });
+        return 2;
+    }
+    if (m_hasPending)
+        emitPending(false);
+    // The byte loop has looked at every byte already.
+    if (m_tokenUnprintable) {
+        build([&] { return Message::invalid(token, "unprintable byte in token"); });
+        return 1;
+    }
+    if (isGs232(m_dialect)) {
+        const Classified c = classifyGs232(token);
+        if (c.count == 2)
+            deliver(c.first, false);
+        nextSlot() = c.count == 2 ? c.second : c.first;
+        return c.count;
+    }
+    build([&] { return classifyEasycomm(token); });
+    return 1;
 }
 
 Message Parser::parseToken(QByteArrayView token, Dialect d)
@@ -215,10 +226,11 @@ Message Parser::parseToken(QByteArrayView token, Dialect d)
     return p.classify(token).first;
 }
 
-Parser::Classified Parser::classify(QByteArrayView t, TokenBytes bytes) const
+Parser::Classified Parser::classify(QByteArrayView t) const
 {
-    // The byte loop never hands over an empty token, but parseToken() can;
-    // both readers look at the first byte.
+    // parseToken's way in, a token on its own (the byte loop reads its
+    // tokens with readToken, which knows their bytes already). Both
+    // readers look at the first byte.
     if (t.isEmpty())
         return {Message::invalid(t, "empty token", Refusal::Unknown)};
     if (m_dialect == Dialect::Rotctld)
@@ -227,9 +239,7 @@ Parser::Classified Parser::classify(QByteArrayView t, TokenBytes bytes) const
         return classifyMicro2g(t);
     if (isSpid(m_dialect))
         return {Message::invalid(t, "SPID is read as binary frames, not tokens")};
-    // The byte loop has looked at every byte already; a token on its own
-    // (parseToken) is looked at here.
-    if (bytes == TokenBytes::Unprintable || (bytes == TokenBytes::Unchecked && !isPrintable(t)))
+    if (!isPrintable(t))
         return {Message::invalid(t, "unprintable byte in token")};
     if (isGs232(m_dialect))
         return classifyGs232(t);

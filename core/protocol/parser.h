@@ -31,6 +31,8 @@
 #include <QByteArrayView>
 
 #include <array>
+#include <concepts>
+#include <new>
 
 namespace slew::protocol {
 
@@ -49,14 +51,17 @@ public:
     template <typename Sink>
     void feed(QByteArrayView bytes, Sink &&sink)
     {
+        if (!readsTokens()) { // rotctld and Micro-2g lines, SPID frames
+            for (char c : bytes)
+                handOut(push(c), sink);
+            return;
+        }
         for (qsizetype at = 0; at < bytes.size();) {
-            // The middle of a token goes in as a run: one call, not one a byte.
+            // A token goes in as a run: one call, not one a byte.
             at += appendTokenRun(bytes.sliced(at));
             if (at == bytes.size())
                 break;
-            const int n = push(bytes[at++]);
-            for (int i = 0; i < n; ++i)
-                sink(static_cast<const Message &>(m_ready[i]));
+            handOut(push(bytes[at++]), sink);
         }
     }
 
@@ -65,9 +70,7 @@ public:
     template <typename Sink>
     void flush(Sink &&sink)
     {
-        const int n = isSpid(m_dialect) ? flushSpid() : push('\n');
-        for (int i = 0; i < n; ++i)
-            sink(static_cast<const Message &>(m_ready[i]));
+        handOut(isSpid(m_dialect) ? flushSpid() : push('\n'), sink);
     }
 
     void reset();
@@ -97,18 +100,22 @@ private:
         int count = 1;
     };
 
-    int push(char c); // returns how many messages are ready in m_ready
-    // Inside a token of a line dialect: appends the bytes up to the next
+    // Whether the dialect is read a token at a time (Easycomm, GS-232),
+    // rather than a line (rotctld, Micro-2g) or a frame (SPID).
+    bool readsTokens() const
+    {
+        return m_dialect != Dialect::Rotctld && m_dialect != Dialect::Micro2g && !isSpid(m_dialect);
+    }
+    int push(char c); // returns how many messages are ready
+    // In a dialect read in tokens: appends the bytes up to the next
     // separator (or the token's capacity), which push() would take one by
     // one with nothing to deliver; returns how many it took.
     qsizetype appendTokenRun(QByteArrayView bytes);
     void finishToken(bool lineEnd);
+    int readToken(QByteArrayView token);
     void emitPending(bool lineEnd);
-    void deliver(const Message &m, bool lineEnd);
-    // Whether the token's bytes are known to be printable (the byte loop
-    // notes it as it takes them) or must be looked at.
-    enum class TokenBytes { Unchecked, Printable, Unprintable };
-    Classified classify(QByteArrayView token, TokenBytes bytes = TokenBytes::Unchecked) const;
+    bool pendingWaitsForArgument() const;
+    Classified classify(QByteArrayView token) const;
     Message classifyEasycomm(QByteArrayView token) const;
     Classified classifyGs232(QByteArrayView token) const;
     int pushRotctld(char c);
@@ -119,18 +126,78 @@ private:
     int pushSpid(char c);
     int flushSpid();
     void deliverSpid(const spid::Frame &f);
-    bool pendingWaitsForArgument() const;
+
+    // Messages are made in a ring of slots and handed out from there: the
+    // ready ones first, then the slot where the next message is built (and
+    // where a pending one is held). A message is some 200 bytes; copying it
+    // two or three times on its way out took some 15 % of the parser's time.
+    // The ready array this replaced had 16 slots for one byte's messages (a
+    // SPID byte may release a rejected frame's text lines); the ring holds
+    // a pending message besides, so it has 32, a power of two so that it
+    // wraps with a mask.
+    static constexpr unsigned kSlots = 32;
+    Message &slot(int i) { return m_slots[(m_firstReady + unsigned(i)) % kSlots]; }
+    const Message &slot(int i) const { return m_slots[(m_firstReady + unsigned(i)) % kSlots]; }
+    Message &nextSlot() { return slot(m_readyCount); }
+    const Message &nextSlot() const { return slot(m_readyCount); }
+    // Builds the message make() returns right in the next slot: a returned
+    // Message initializes the slot itself, with no copy on the way.
+    template <typename Make>
+    void build(Make &&make)
+    {
+        ::new (static_cast<void *>(&nextSlot())) Message(make());
+    }
+    // The message in the next slot is ready.
+    void publish(bool lineEnd)
+    {
+        nextSlot().lineEnd = lineEnd;
+        ++m_readyCount;
+    }
+    // Builds the message make() returns in the next slot, ready (SPID's
+    // frames).
+    template <std::invocable Make>
+    void deliver(Make &&make, bool lineEnd)
+    {
+        moveHeldOutOfTheWay();
+        build(make);
+        publish(lineEnd);
+    }
+    // The same for a message made elsewhere, a copy (the readers that
+    // classify into a Classified: GS-232, rotctld, Micro-2g).
+    void deliver(const Message &m, bool lineEnd)
+    {
+        moveHeldOutOfTheWay();
+        nextSlot() = m;
+        publish(lineEnd);
+    }
+    // Only another dialect's reader delivers while a message is held (the
+    // dialect changed in the middle of a line): the held one moves up a
+    // slot, so that it is still there should the dialect change back.
+    void moveHeldOutOfTheWay()
+    {
+        if (m_hasPending)
+            slot(m_readyCount + 1) = nextSlot();
+    }
+    // Hands the n ready messages to sink and frees their slots; a pending
+    // message stays where it is, now the first slot after the ready ones.
+    template <typename Sink>
+    void handOut(int n, Sink &sink)
+    {
+        for (int i = 0; i < n; ++i)
+            sink(static_cast<const Message &>(slot(i)));
+        m_firstReady = (m_firstReady + unsigned(n)) % kSlots;
+        m_readyCount = 0;
+    }
 
     Dialect m_dialect;
     std::array<char, InlineText::Capacity> m_token{};
     int m_length = 0;
     bool m_overflow = false;
     bool m_tokenUnprintable = false; // a byte outside printable ASCII was taken into m_token
-    // A token ended by a space waits here until the next byte tells whether
-    // its line ended, so that `AZ EL \n` is known to be one line.
-    Message m_pending;
+    // A token ended by a space is held in nextSlot() until the next byte
+    // tells whether its line ended, so that `AZ EL \n` is known to be one line.
     bool m_hasPending = false;
-    // GS-232's `W010 020`: the azimuth waits in m_pending for its elevation.
+    // GS-232's `W010 020`: the held azimuth waits for its elevation.
     bool m_pendingWantsElevation = false;
     // Line context: the mode word after UPnnn / DNnnn (Easycomm I).
     Op m_previousOnLine = Op::Invalid;
@@ -140,9 +207,8 @@ private:
     bool m_azimuthBroken = false; // that first line was not a number (already reported)
     double m_heldAzimuth = 0.0;
     spid::Parser m_spid;
-    // One byte completes at most two messages of a line dialect; a SPID
-    // byte may release a few text lines held in a rejected frame as well.
-    std::array<Message, 16> m_ready;
+    std::array<Message, kSlots> m_slots;
+    unsigned m_firstReady = 0;
     int m_readyCount = 0;
 };
 

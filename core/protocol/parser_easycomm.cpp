@@ -70,9 +70,9 @@ Message Parser::classifyEasycomm(QByteArrayView t) const
     // SatNOGS' answer to `CR n` has no prefix: `1,0.80`.
     if (isDigit(t[0])) {
         int index = -1;
-        QByteArrayView value;
-        if (t.contains(',') && splitIndexed(t, &index, &value) && !value.isEmpty())
-            return indexedReply(Op::ConfigValue, index, value);
+        std::optional<QByteArrayView> value;
+        if (splitIndexed(t, &index, &value) && value && !value->isEmpty())
+            return indexedReply(Op::ConfigValue, index, *value);
         return Message::invalid(t, "number without a command", Refusal::Unknown);
     }
 
@@ -127,16 +127,16 @@ Message Parser::classifyEasycomm(QByteArrayView t) const
     };
     auto indexed = [&](Op op, bool valueRequired) {
         int index = -1;
-        QByteArrayView value;
+        std::optional<QByteArrayView> value;
         if (!splitIndexed(rest, &index, &value))
             return Message::invalid(t, "register or input number missing or malformed");
-        if (t.contains(',') && value.isEmpty())
+        if (value && value->isEmpty())
             return Message::invalid(t, "value missing after the comma");
-        if (valueRequired && value.isEmpty())
+        if (!value && valueRequired)
             return Message::invalid(t, "value missing");
-        if (value.isEmpty())
+        if (!value)
             return Message::query(op, index);
-        return indexedReply(op, index, value);
+        return indexedReply(op, index, *value);
     };
 
     const char a = upper(t[0]);

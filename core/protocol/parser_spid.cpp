@@ -33,7 +33,6 @@ int Parser::pushSpid(char c)
 
 int Parser::flushSpid()
 {
-    m_readyCount = 0;
     m_spid.flush([this](const spid::Frame &f) { deliverSpid(f); });
     return m_readyCount;
 }
@@ -41,37 +40,40 @@ int Parser::flushSpid()
 void Parser::deliverSpid(const spid::Frame &f)
 {
     using Kind = spid::Frame::Kind;
-    // A frame names both axes at once; Rot1Prog's only the azimuth.
+    // Each message is built in its slot: deliver() takes what makes it.
+    // A command names both axes at once; Rot1Prog's only the azimuth.
     const bool twoAxes = m_dialect != Dialect::Rot1Prog;
-    auto axes = [&](const Message &azimuth, const Message &elevation) {
+    auto axes = [&](auto azimuth, auto elevation) {
         deliver(azimuth, !twoAxes);
         if (twoAxes)
             deliver(elevation, true);
     };
+    auto query = [](Op op) { return [op] { return Message::query(op); }; };
+    auto number = [](Op op, double value) { return [op, value] { return Message::number(op, value); }; };
     switch (f.kind) {
     case Kind::Reply:
         // A position needs both axes: Rot1Prog's elevation reads 0.
-        deliver(Message::number(Op::Azimuth, f.azimuth), false);
-        deliver(Message::number(Op::Elevation, f.elevation), true);
+        deliver(number(Op::Azimuth, f.azimuth), false);
+        deliver(number(Op::Elevation, f.elevation), true);
         return;
-    case Kind::Text: deliver(Message::word(Op::Alarm, f.text.view()), true); return;
+    case Kind::Text: deliver([&] { return Message::word(Op::Alarm, f.text.view()); }, true); return;
     case Kind::Skipped:
-    case Kind::Refused: deliver(Message::invalid({}, f.reason), true); return;
+    case Kind::Refused: deliver([&] { return Message::invalid({}, f.reason); }, true); return;
     case Kind::Command: break;
     }
     switch (f.command) {
-    case spid::Command::Status: axes(Message::query(Op::Azimuth), Message::query(Op::Elevation)); return;
+    case spid::Command::Status: axes(query(Op::Azimuth), query(Op::Elevation)); return;
     case spid::Command::Set:
-        axes(Message::number(Op::Azimuth, f.azimuth), Message::number(Op::Elevation, f.elevation));
+        axes(number(Op::Azimuth, f.azimuth), number(Op::Elevation, f.elevation));
         return;
-    case spid::Command::Stop: axes(Message::query(Op::StopAzimuth), Message::query(Op::StopElevation)); return;
+    case spid::Command::Stop: axes(query(Op::StopAzimuth), query(Op::StopElevation)); return;
     case spid::Command::Move:
         for (const auto &[bit, op] : kMoveBits) {
             if (f.moveDirections & bit)
-                deliver(Message::query(op), false);
+                deliver(query(op), false);
         }
         if (m_readyCount > 0) // the reader refuses a move without a direction
-            m_ready[size_t(m_readyCount - 1)].lineEnd = true;
+            slot(m_readyCount - 1).lineEnd = true;
         return;
     }
 }

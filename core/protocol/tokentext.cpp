@@ -20,34 +20,30 @@ bool parseDecimal(QByteArrayView s, double *out, int *decimals)
     }
     // The digits as one whole number and a power of ten to divide it by: one
     // correctly rounded division, the nearest double to what was written for
-    // the up to 15 significant digits a device sends, and no pow() per reply.
+    // the up to 15 digits a device sends, and no pow() per reply.
     std::uint64_t mantissa = 0;
     int digits = 0;
-    int significant = 0; // digits from the first non-zero one on
-    auto take = [&](char c) {
-        mantissa = mantissa * 10 + std::uint64_t(c - '0');
-        significant += (mantissa != 0 && significant < 99) ? 1 : 0;
-    };
     for (; i < s.size() && isDigit(s[i]); ++i, ++digits)
-        take(s[i]);
+        mantissa = mantissa * 10 + std::uint64_t(s[i] - '0');
     int fraction = 0;
     if (i < s.size() && (s[i] == '.' || s[i] == ',')) {
         ++i;
         for (; i < s.size() && isDigit(s[i]); ++i, ++fraction)
-            take(s[i]);
+            mantissa = mantissa * 10 + std::uint64_t(s[i] - '0');
     }
     if (i != s.size() || digits + fraction == 0)
         return false;
-    static constexpr double kPowersOfTen[] = {1e0, 1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,
-                                              1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17,
-                                              1e18, 1e19, 1e20, 1e21, 1e22};
+    static constexpr double kPowersOfTen[] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                              1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+    constexpr int kExactDigits = 15; // any whole number of 15 digits is exact in a double
     double value = 0.0;
-    if (significant <= 15 && fraction < int(std::size(kPowersOfTen))) {
+    if (digits + fraction <= kExactDigits) {
         // Both exact in a double, so the quotient is correctly rounded.
         value = double(mantissa) / kPowersOfTen[fraction];
     } else {
-        // More digits than a double holds (the whole number may have wrapped
-        // too): from_chars reads it correctly rounded, whatever the locale.
+        // More digits than are sure to be exact (the whole number may have
+        // wrapped too): from_chars reads it correctly rounded, whatever the
+        // locale. Leading zeros count here, to keep the digit loops bare.
         char copy[32];
         const QByteArrayView digitsOnly = s.sliced(s[0] == '+' || s[0] == '-' ? 1 : 0);
         for (qsizetype k = 0; k < digitsOnly.size(); ++k)
@@ -72,14 +68,14 @@ bool parseSigned64(QByteArrayView s, double *out)
 }
 
 // `n,value` as in IP0,23.5 / CR1,0.8 / AN0,65535 / SatNOGS' bare `1,0.8`.
-bool splitIndexed(QByteArrayView rest, int *index, QByteArrayView *value)
+bool splitIndexed(QByteArrayView rest, int *index, std::optional<QByteArrayView> *value)
 {
     const qsizetype comma = rest.indexOf(',');
     const QByteArrayView number = comma < 0 ? rest : rest.first(comma);
     if (!allDigits(number) || number.size() > 5)
         return false;
-    *index = number.toInt();
-    *value = comma < 0 ? QByteArrayView() : rest.sliced(comma + 1);
+    *index = digitsValue(number);
+    *value = comma < 0 ? std::nullopt : std::optional<QByteArrayView>(rest.sliced(comma + 1));
     return true;
 }
 

@@ -8,6 +8,8 @@
 
 #include <QByteArrayView>
 
+#include <optional>
+
 namespace slew::protocol::text {
 
 inline bool isDigit(char c)
@@ -27,6 +29,16 @@ inline bool allDigits(QByteArrayView s)
             return false;
     }
     return true;
+}
+// The value of digits allDigits() accepted, at most 9 of them so that it fits
+// an int. Not QByteArrayView::toInt(): it goes through QLocaleData, a chain
+// of calls per indexed reply for a few digits.
+inline int digitsValue(QByteArrayView digits)
+{
+    int v = 0;
+    for (char c : digits)
+        v = v * 10 + (c - '0');
+    return v;
 }
 // Whether token starts with mnemonic (given in capitals), letters compared
 // in upper case. Pass literals or QByteArrayView constants: their length is
@@ -56,8 +68,9 @@ inline bool parseUnsigned(QByteArrayView s, int maxDigits, double *out)
     return true;
 }
 bool parseSigned64(QByteArrayView s, double *out);
-// `n,value` as in IP0,23.5 / CR1,0.8 / AN0,65535 / SatNOGS' bare `1,0.8`.
-bool splitIndexed(QByteArrayView rest, int *index, QByteArrayView *value);
+// `n,value` as in IP0,23.5 / CR1,0.8 / AN0,65535 / SatNOGS' bare `1,0.8`;
+// *value is what follows the comma, none when there is no comma.
+bool splitIndexed(QByteArrayView rest, int *index, std::optional<QByteArrayView> *value);
 // YY:MM:DD:HH:mm:SS naming a real moment: month 1..12, a day the month
 // has (20YY's leap years), hour 0..23, minute and second 0..59.
 bool isValidTime(QByteArrayView s);
