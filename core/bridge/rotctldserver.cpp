@@ -26,6 +26,37 @@ QString peerName(const QTcpSocket *s)
     return QStringLiteral("%1:%2").arg(s->peerAddress().toString()).arg(s->peerPort());
 }
 
+// Only requests that may move the rotator wake the session's full rate.
+// A tracker that only reads (Gpredict asks `p` every cycle, engaged all day
+// long) leaves a resting station at the rest rate: waking on every read
+// would keep a watched station at the full rate for good. Its answers stay
+// true: at rest the rotator stood still at the last poll, and nothing Slew
+// sends has moved it since (a command wakes the full rate). Only something
+// outside Slew can move it (the controller's own buttons); that shows
+// within one rest interval (1 s by default) and is watched at the full rate
+// from then on, so a reading tracker sees it at most about one Gpredict
+// cycle (1 s by default) late. A rotator that stops answering is noticed at
+// the rest rate's pace, a few seconds, as with nobody asking.
+bool wakesPolling(RotctldRequest::Kind kind)
+{
+    switch (kind) {
+    case Kind::SetPosition:
+    case Kind::Stop:
+    case Kind::Park:
+    case Kind::Reset:
+    case Kind::Move:
+        return true;
+    case Kind::GetPosition:
+    case Kind::GetInfo:
+    case Kind::DumpState:
+    case Kind::Quit:
+    case Kind::Unknown:
+    case Kind::Malformed:
+        return false;
+    }
+    return false;
+}
+
 double bearingDifference(double a, double b)
 {
     const double d = std::fmod(std::abs(a - b), 360.0);
@@ -305,9 +336,11 @@ QByteArray RotctldServer::answer(Client &c, const QByteArray &line)
     emit commandReceived(c.info.peer, c.info.lastCommand);
 
     const RotctldRequest r = parseRotctldLine(line);
-    // A tracker that asks or steers wants fresh positions: the session
-    // polls at the full rate while one does (session/pollpace.h).
-    if (r.kind != Kind::Unknown && r.kind != Kind::Malformed)
+    // A tracker that steers has the move watched at the full rate from its
+    // start (session/pollpace.h), also when the deadband holds its P back
+    // (the rotator may still be on its way there) or the move is refused.
+    // Reading does not wake it (wakesPolling says why).
+    if (wakesPolling(r.kind))
         m_session->wakePolling();
     if (m_logCommands && r.kind != Kind::GetPosition && r.kind != Kind::Unknown && r.kind != Kind::Malformed)
         logClient(c, tr("rotctld %1: %2").arg(c.info.peer, c.info.lastCommand));
