@@ -353,7 +353,7 @@ QByteArray RotctldServer::answer(Client &c, const QByteArray &line)
         double az = std::fmod(m_session->azimuth(), 360.0);
         if (az < 0)
             az += 360.0;
-        return formatPosition(r, az, m_session->elevation());
+        return m_positionAnswer.answer(r, az, m_session->elevation());
     }
     case Kind::SetPosition:
         if (const int refused = refuseElevation(c, r.el != 0.0); refused != 0)

@@ -10,6 +10,7 @@
 // overlong line or vanishes disturbs no one else.
 
 #include "input/logtext.h"
+#include "positionanswer.h"
 #include "rotctldrequest.h"
 #include "transport/boundedtcpserver.h"
 
@@ -150,6 +151,7 @@ private:
     bool m_logCommands = false;
     QElapsedTimer m_clock;
     QTimer m_suppressedReport; // runs while some client has lines held back
+    PositionAnswer m_positionAnswer;
 };
 
 } // namespace slew::bridge
