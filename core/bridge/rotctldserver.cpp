@@ -7,7 +7,9 @@
 #include <QTcpSocket>
 #include <QTimer>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace slew::bridge {
 
@@ -55,6 +57,11 @@ bool wakesPolling(RotctldRequest::Kind kind)
         return false;
     }
     return false;
+}
+
+bool isQuit(QByteArrayView line)
+{
+    return line == "q" || line == "Q" || line == "\\quit";
 }
 
 double bearingDifference(double a, double b)
@@ -210,45 +217,55 @@ void RotctldServer::onDisconnected(QTcpSocket *s)
     emit clientsChanged();
 }
 
-QByteArray RotctldServer::consume(Client &c, const QByteArray &bytes, bool *quit)
+QByteArray RotctldServer::consume(Client &c, QByteArrayView bytes, bool *quit)
 {
     QByteArray out;
     *quit = false;
-    for (char ch : bytes) {
-        if (ch == '\n' || ch == '\r') {
-            if (c.discarding) {
-                c.discarding = false;
-            } else if (!c.buffer.isEmpty()) {
-                const QByteArray line = c.buffer.trimmed();
-                c.buffer.clear();
-                if (line == "q" || line == "Q" || line == "\\quit") {
-                    *quit = true;
-                    return out;
-                }
-                out += answer(c, line);
-            }
-            continue;
-        }
-        if (c.discarding)
-            continue;
-        if (c.buffer.size() >= kMaxLine) {
+    while (!bytes.isEmpty()) {
+        // Up to the next line end, or all there is.
+        const qsizetype end = std::find_if(bytes.begin(), bytes.end(), [](char ch) { return ch == '\n' || ch == '\r'; })
+                              - bytes.begin();
+        const bool ended = end < bytes.size();
+        const QByteArrayView part = bytes.first(end);
+        bytes = bytes.sliced(ended ? end + 1 : end);
+        if (!c.discarding && c.buffer.size() + part.size() > kMaxLine) {
             // Refused once, then everything up to the line end is dropped.
             c.buffer.clear();
             c.discarding = true;
             out += "RPRT -1\n";
             logClient(c, tr("rotctld client %1 sent a line over %2 bytes; refused").arg(c.info.peer).arg(kMaxLine));
+        }
+        if (c.discarding) {
+            c.discarding = !ended;
             continue;
         }
-        c.buffer += ch;
+        if (!ended) {
+            c.buffer += part;
+            continue;
+        }
+        if (c.buffer.isEmpty() && part.isEmpty())
+            continue; // the \n of \r\n, or an empty line
+        // A line read whole is answered from where it was read.
+        QByteArray joined;
+        QByteArrayView line = part;
+        if (!c.buffer.isEmpty()) {
+            joined = std::exchange(c.buffer, {}).append(part);
+            line = joined;
+        }
+        line = line.trimmed();
+        if (isQuit(line)) {
+            *quit = true;
+            return out;
+        }
+        out += answer(c, line);
     }
     return out;
 }
 
 QByteArray RotctldServer::answerLastLine(Client &c)
 {
-    const QByteArray last = c.buffer.trimmed();
-    c.buffer.clear();
-    if (c.discarding || last.isEmpty() || last == "q" || last == "Q" || last == "\\quit")
+    const QByteArray last = std::exchange(c.buffer, {}).trimmed();
+    if (c.discarding || last.isEmpty() || isQuit(last))
         return {};
     return answer(c, last);
 }
@@ -261,9 +278,12 @@ void RotctldServer::onReadyRead(QTcpSocket *s)
     Client &c = *it;
     if (c.finished)
         return;
-    // All Qt holds, which the read buffer size keeps to one chunk.
+    // All Qt holds, which the read buffer size keeps to one chunk, read
+    // where it is answered from: no copy on the heap for every line.
+    char bytes[kReadChunk];
+    const qint64 n = s->read(bytes, sizeof bytes);
     bool quit = false;
-    const QByteArray out = consume(c, s->readAll(), &quit);
+    const QByteArray out = consume(c, QByteArrayView(bytes, std::max<qint64>(n, 0)), &quit);
     if (quit) {
         c.finished = true;
         s->write(out);
@@ -326,16 +346,21 @@ void RotctldServer::finishInput(Client &c)
     s->disconnectFromHost();
 }
 
-QByteArray RotctldServer::answer(Client &c, const QByteArray &line)
+QByteArray RotctldServer::answer(Client &c, QByteArrayView line)
 {
-    c.info.lastCommand = QString::fromLatin1(line.left(80)).trimmed();
+    // Trackers send the same line over and over (`p`): it is read once.
+    if (!c.lastRequest || line != QByteArrayView(c.lastLine)) {
+        c.lastLine = line.toByteArray();
+        c.lastRequest = parseRotctldLine(line);
+        c.info.lastCommand = QString::fromLatin1(line.first(std::min<qsizetype>(line.size(), 80))).trimmed();
+    }
+    const RotctldRequest r = *c.lastRequest; // shares its bytes; c may go while it is answered
     // UTC: the local time would look up the time zone (a file) for every
     // answer; the Trackers tab shows it in local time.
     c.info.lastSeen = QDateTime::currentDateTimeUtc();
     ++c.info.commands;
     emit commandReceived(c.info.peer, c.info.lastCommand);
 
-    const RotctldRequest r = parseRotctldLine(line);
     // A tracker that steers has the move watched at the full rate from its
     // start (session/pollpace.h), also when the deadband holds its P back
     // (the rotator may still be on its way there) or the move is refused.

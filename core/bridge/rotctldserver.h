@@ -22,6 +22,7 @@
 #include <QTimer>
 
 #include <memory>
+#include <optional>
 
 class QTcpSocket;
 
@@ -113,12 +114,15 @@ private:
         std::shared_ptr<transport::SpareSocketHandle> spare;
         input::LogAllowance logAllowance;
         ClientInfo info;
+        // The last line and what it asks: trackers repeat theirs (`p`).
+        QByteArray lastLine;
+        std::optional<RotctldRequest> lastRequest;
     };
 
     void onClientArrived(QTcpSocket *socket);
     void onReadyRead(QTcpSocket *socket);
     // Lines out of bytes, answers out of lines; true in *quit on `q`.
-    QByteArray consume(Client &client, const QByteArray &bytes, bool *quit);
+    QByteArray consume(Client &client, QByteArrayView bytes, bool *quit);
     // The answer to an unterminated last line, at the end of input.
     QByteArray answerLastLine(Client &client);
     // The client sent its last byte (a one-shot `printf 'p\n' | nc -N`):
@@ -127,7 +131,7 @@ private:
     void onDisconnected(QTcpSocket *socket);
     // Answers to a client, in one write.
     void send(Client &client, const QByteArray &out);
-    QByteArray answer(Client &client, const QByteArray &line);
+    QByteArray answer(Client &client, QByteArrayView line);
     // Non-zero (RIG_ENAVAIL) when the request wants elevation from an
     // azimuth-only rotator, which is then logged as refused.
     int refuseElevation(Client &c, bool wantsElevation);

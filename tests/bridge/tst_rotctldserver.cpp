@@ -36,6 +36,7 @@ private slots:
     void stopBringsTheAntennaToRest_data();
     void stopBringsTheAntennaToRest();
     void rawSocketGetsBothLinesInOneRead();
+    void linesInPiecesAndBlankLines();
     void extendedAnswers();
     void outOfRangeIsRefusedAndNothingSent();
     void deadbandSuppressesRepeatedTargets();
@@ -223,6 +224,44 @@ void RotctldServerTest::rawSocketGetsBothLinesInOneRead()
     QCOMPARE(ask(s, "P 42,5 5,5"), QByteArray("RPRT 0\n")); // comma decimals
     QCOMPARE(session->targetAzimuth(), 42.5);
     QCOMPARE(ask(s, "S"), QByteArray("RPRT 0\n"));
+}
+
+void RotctldServerTest::linesInPiecesAndBlankLines()
+{
+    QTcpSocket s;
+    s.connectToHost(QHostAddress::LocalHost, server->port());
+    QTRY_COMPARE(s.state(), QAbstractSocket::ConnectedState);
+    QByteArray got;
+    auto send = [&](const QByteArray &bytes, int lines) {
+        got.clear();
+        s.write(bytes);
+        return QTest::qWaitFor([&] { return (got += s.readAll()).count('\n') >= lines; }, 5000);
+    };
+    // A line in pieces, ended by \r\n.
+    s.write("P 1");
+    QVERIFY(s.waitForBytesWritten(5000));
+    QTest::qWait(50);
+    QVERIFY(send("0 5\r\n", 1));
+    QCOMPARE(got, QByteArray("RPRT 0\n"));
+    QCOMPARE(session->targetAzimuth(), 10.0);
+    // Empty lines are skipped; one of blanks is an empty command.
+    QVERIFY(send("\n\r\n  \nS\n", 2));
+    QCOMPARE(got, QByteArray("RPRT -1\nRPRT 0\n"));
+    // The longest line taken, and one byte more, which is refused once.
+    const QByteArray longest = "p" + QByteArray(bridge::RotctldServer::kMaxLine - 1, ' ');
+    QVERIFY(send(longest + "\n", 2));
+    QVERIFY2(!got.startsWith("RPRT"), got.constData());
+    s.write(longest.left(600));
+    QVERIFY(s.waitForBytesWritten(5000));
+    QTest::qWait(50);
+    QVERIFY(send(longest.mid(600) + " \nS\n", 2));
+    QCOMPARE(got, QByteArray("RPRT -1\nRPRT 0\n"));
+    // A repeated line, then another and the first again, each answered as itself.
+    QVERIFY(send("p\np\nP 20 10\nS\np\n", 8));
+    const QList<QByteArray> lines = got.split('\n');
+    QCOMPARE(lines.mid(4, 2), QList<QByteArray>({"RPRT 0", "RPRT 0"}));
+    QCOMPARE(lines.mid(0, 2), lines.mid(2, 2));
+    QCOMPARE(server->clients().value(0).lastCommand, QStringLiteral("p"));
 }
 
 void RotctldServerTest::extendedAnswers()
