@@ -260,7 +260,11 @@ void RotctldServerTest::linesInPiecesAndBlankLines()
     QVERIFY(send("p\np\nP 20 10\nS\np\n", 8));
     const QList<QByteArray> lines = got.split('\n');
     QCOMPARE(lines.mid(4, 2), QList<QByteArray>({"RPRT 0", "RPRT 0"}));
-    QCOMPARE(lines.mid(0, 2), lines.mid(2, 2));
+    for (int i : {0, 1, 2, 3, 6, 7}) {
+        bool number = false;
+        lines.value(i).toDouble(&number);
+        QVERIFY2(number, got.constData());
+    }
     QCOMPARE(server->clients().value(0).lastCommand, QStringLiteral("p"));
 }
 
