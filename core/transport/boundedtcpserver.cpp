@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "boundedtcpserver.h"
 
+#include "tcpconnection.h"
+
 #include <QSocketNotifier>
 #include <QTcpSocket>
 
@@ -121,16 +123,25 @@ void BoundedTcpServer::acceptPending()
                 return;
             }
         }
-        auto *socket = new QTcpSocket(this);
-        if (!socket->setSocketDescriptor(fd)) {
-            ::close(fd);
-            delete socket;
-            continue;
+        if (m_bare && m_clients < m_maxClients) {
+            auto *connection = new TcpConnection(fd, this);
+            count(connection);
+            emit connectionArrived(connection);
+        } else {
+            // A refused client is told why through Qt in either case.
+            auto *socket = new QTcpSocket(this);
+            if (!socket->setSocketDescriptor(fd)) {
+                ::close(fd);
+                delete socket;
+                continue;
+            }
+            if (m_clients >= m_maxClients) {
+                refuse(socket);
+            } else {
+                count(socket);
+                emit clientArrived(socket);
+            }
         }
-        if (m_clients >= m_maxClients)
-            refuse(socket);
-        else
-            take(socket);
         // This one is served, but the next would eat into the reserve.
         if (m_reserved > 0 && descriptorsLow(lowestFreeDescriptor(listener))) {
             waitForDescriptors(tr("%1 descriptors kept for the rest of the process").arg(m_reserved));
@@ -139,17 +150,16 @@ void BoundedTcpServer::acceptPending()
     }
 }
 
-void BoundedTcpServer::take(QTcpSocket *socket)
+void BoundedTcpServer::count(QObject *client)
 {
     ++m_clients;
-    connect(socket, &QObject::destroyed, this, [this] {
+    connect(client, &QObject::destroyed, this, [this] {
         --m_clients;
         m_refusedSinceNotice = 0;
         // A descriptor came free: try the waiting clients now.
         if (m_waitingForDescriptors)
             resumeAccepting();
     });
-    emit clientArrived(socket);
 }
 
 void BoundedTcpServer::refuse(QTcpSocket *socket)
