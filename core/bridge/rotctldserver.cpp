@@ -2,9 +2,8 @@
 #include "rotctldserver.h"
 
 #include "session/rotatorsession.h"
-#include "transport/endofinput.h"
+#include "transport/tcpconnection.h"
 
-#include <QTcpSocket>
 #include <QTimer>
 
 #include <algorithm>
@@ -20,12 +19,13 @@ using session::RotatorSession;
 namespace {
 
 constexpr qint64 kReadChunk = 16 * 1024; // per event, so a flood cannot starve the GUI
-// A client that has finished sending but does not read its answers.
+// A client that is done (its end of input, or `q`) but does not read its
+// answers is cut off after this.
 constexpr int kCloseLingerMs = 5000;
 
-QString peerName(const QTcpSocket *s)
+QString peerName(const transport::TcpConnection *c)
 {
-    return QStringLiteral("%1:%2").arg(s->peerAddress().toString()).arg(s->peerPort());
+    return QStringLiteral("%1:%2").arg(c->peerAddress().toString()).arg(c->peerPort());
 }
 
 // Only requests that may move the rotator wake the session's full rate.
@@ -99,7 +99,8 @@ RotctldServer::RotctldServer(session::RotatorSession *session, QObject *parent)
     m_clock.start();
     m_suppressedReport.setInterval(5000);
     connect(&m_suppressedReport, &QTimer::timeout, this, &RotctldServer::reportAllSuppressed);
-    connect(&m_server, &transport::BoundedTcpServer::clientArrived, this, &RotctldServer::onClientArrived);
+    m_server.setBareConnections(true);
+    connect(&m_server, &transport::BoundedTcpServer::connectionArrived, this, &RotctldServer::onClientArrived);
     connect(&m_server, &transport::BoundedTcpServer::notice, this,
             [this](const QString &text) { emit logMessage(tr("rotctld server: %1").arg(text)); });
 }
@@ -124,11 +125,11 @@ bool RotctldServer::listen(const QHostAddress &address, quint16 port, QString *e
 void RotctldServer::close()
 {
     m_server.close();
-    const auto sockets = m_clients.keys();
-    for (QTcpSocket *s : sockets) {
-        s->disconnect(this);
-        s->abort();
-        s->deleteLater();
+    const auto connections = m_clients.keys();
+    for (transport::TcpConnection *c : connections) {
+        c->disconnect(this);
+        c->abort();
+        c->deleteLater();
     }
     const bool had = !m_clients.isEmpty();
     m_clients.clear();
@@ -163,57 +164,38 @@ QList<RotctldServer::ClientInfo> RotctldServer::clients() const
     return out;
 }
 
-void RotctldServer::onClientArrived(QTcpSocket *s)
+void RotctldServer::onClientArrived(transport::TcpConnection *connection)
 {
-    if (!m_allowed.isEmpty() && !m_allowed.contains(s->peerAddress())) {
-        emit logMessage(tr("refused rotctld client %1: not in the allowed list").arg(peerName(s)));
-        s->abort();
-        s->deleteLater();
+    if (!m_allowed.isEmpty() && !m_allowed.contains(connection->peerAddress())) {
+        emit logMessage(tr("refused rotctld client %1: not in the allowed list").arg(peerName(connection)));
+        connection->abort();
+        connection->deleteLater();
         return;
     }
-    s->setSocketOption(QAbstractSocket::LowDelayOption, 1);
-    // Qt reads no more than this ahead of us, so everything it has read is
-    // answered before it can see the client's end of input.
-    s->setReadBufferSize(kReadChunk);
+    connection->setNoDelay(true);
     Client c;
-    c.socket = s;
-    c.info.peer = peerName(s);
+    c.connection = connection;
+    c.info.peer = peerName(connection);
     c.info.lastSeen = QDateTime::currentDateTimeUtc();
-    c.spare = std::make_shared<transport::SpareSocketHandle>(*s);
-    m_clients.insert(s, c);
-    connect(s, &QTcpSocket::readyRead, this, [this, s] { onReadyRead(s); });
-    connect(s, &QTcpSocket::disconnected, this, [this, s] { onDisconnected(s); });
+    m_clients.insert(connection, c);
+    // Said again while anything is left to read: one chunk a turn of the
+    // event loop, so a flood cannot starve the rest.
+    connect(connection, &transport::TcpConnection::readable, this, [this, connection] { onReadable(connection); });
+    connect(connection, &transport::TcpConnection::closed, this, [this, connection] { drop(connection); });
     emit logMessage(tr("rotctld client %1 connected").arg(c.info.peer));
     emit clientsChanged();
-    if (s->bytesAvailable() > 0)
-        QTimer::singleShot(0, this, [this, s] {
-            if (m_clients.contains(s))
-                onReadyRead(s);
-        });
 }
 
-void RotctldServer::onDisconnected(QTcpSocket *s)
+void RotctldServer::drop(transport::TcpConnection *connection)
 {
-    const auto it = m_clients.find(s);
+    const auto it = m_clients.find(connection);
     if (it == m_clients.end())
         return;
-    Client &c = *it;
-    // Qt saw the client's end of input first and closed: what it sent last
-    // is answered through the spare descriptor, if it still listens.
-    if (!c.finished && c.spare && c.spare->peerAwaitsAnswers()) {
-        c.finished = true;
-        bool quit = false;
-        QByteArray out = consume(c, s->readAll(), &quit);
-        if (!quit)
-            out += answerLastLine(c);
-        c.spare->send(out);
-    }
-    if (c.spare)
-        c.spare->close();
-    reportSuppressed(c);
-    emit logMessage(tr("rotctld client %1 left").arg(c.info.peer));
+    connection->abort(); // if still open
+    reportSuppressed(*it);
+    emit logMessage(tr("rotctld client %1 left").arg(it->info.peer));
     m_clients.erase(it);
-    s->deleteLater();
+    connection->deleteLater();
     emit clientsChanged();
 }
 
@@ -270,80 +252,51 @@ QByteArray RotctldServer::answerLastLine(Client &c)
     return answer(c, last);
 }
 
-void RotctldServer::onReadyRead(QTcpSocket *s)
+void RotctldServer::onReadable(transport::TcpConnection *connection)
 {
-    auto it = m_clients.find(s);
+    auto it = m_clients.find(connection);
     if (it == m_clients.end())
         return;
     Client &c = *it;
-    if (c.finished)
-        return;
-    // All Qt holds, which the read buffer size keeps to one chunk, read
-    // where it is answered from: no copy on the heap for every line.
+    // One chunk, read where it is answered from: no copy on the heap for
+    // every line.
     char bytes[kReadChunk];
-    const qint64 n = s->read(bytes, sizeof bytes);
-    bool quit = false;
-    const QByteArray out = consume(c, QByteArrayView(bytes, std::max<qint64>(n, 0)), &quit);
-    if (quit) {
-        c.finished = true;
-        s->write(out);
-        s->disconnectFromHost();
+    const qint64 n = connection->read(bytes, sizeof bytes);
+    if (!connection->isOpen()) { // reset: nobody to answer
+        drop(connection);
         return;
     }
+    if (n == 0) {
+        if (connection->atEnd())
+            finishInput(c);
+        return;
+    }
+    bool quit = false;
+    const QByteArray out = consume(c, QByteArrayView(bytes, n), &quit);
     // Every answer of this read leaves in one write: Gpredict reads a `p`
     // answer with a single recv.
-    if (!out.isEmpty())
-        send(c, out);
-    if (s->bytesToWrite() > kMaxUnsentAnswers) {
+    connection->write(out);
+    if (quit)
+        connection->finish(kCloseLingerMs);
+    if (!connection->isOpen()) {
+        drop(connection);
+        return;
+    }
+    if (connection->bytesToWrite() > kMaxUnsentAnswers) {
         emit logMessage(tr("rotctld client %1 is not reading its answers; disconnected").arg(c.info.peer));
-        c.finished = true;
-        s->abort();
-        return;
-    }
-    if (s->bytesAvailable() > 0) {
-        QTimer::singleShot(0, this, [this, s] {
-            if (m_clients.contains(s))
-                onReadyRead(s);
-        });
-        return;
-    }
-    // A client that has finished sending while answers still wait in Qt's
-    // buffer is closed gracefully, once they have left: Qt would drop them
-    // on reading the end of input. With nothing waiting (the answers went
-    // straight out) the end is left to Qt to find, and what the client
-    // sent last is answered through the spare descriptor (onDisconnected):
-    // one system call less for every answer.
-    if (s->bytesToWrite() > 0 && transport::peerFinishedSending(*s))
-        finishInput(c);
-}
-
-void RotctldServer::send(Client &c, const QByteArray &out)
-{
-    // Straight to the kernel through the spare descriptor when nothing of
-    // ours waits in Qt's buffer: a write through Qt switches the socket's
-    // write notifier on and off again, and each switch wakes the event
-    // loop once more, for every answer to every tracker. What the kernel
-    // does not take now goes through Qt, flushed at once, so an answer is
-    // on its way before Qt can read the client's end of input and close.
-    qint64 sent = 0;
-    if (c.socket->bytesToWrite() == 0 && c.spare && c.spare->isValid())
-        sent = c.spare->send(out);
-    if (sent < out.size()) {
-        c.socket->write(out.constData() + sent, out.size() - sent);
-        c.socket->flush();
+        drop(connection);
     }
 }
 
 void RotctldServer::finishInput(Client &c)
 {
-    QTcpSocket *s = c.socket;
-    c.finished = true;
-    if (const QByteArray out = answerLastLine(c); !out.isEmpty())
-        s->write(out);
+    transport::TcpConnection *connection = c.connection;
+    connection->write(answerLastLine(c));
     // Closes once the answers have left; a client that never reads them is
     // cut off.
-    QTimer::singleShot(kCloseLingerMs, s, [s] { s->abort(); });
-    s->disconnectFromHost();
+    connection->finish(kCloseLingerMs);
+    if (!connection->isOpen())
+        drop(connection);
 }
 
 QByteArray RotctldServer::answer(Client &c, QByteArrayView line)

@@ -37,6 +37,7 @@ private slots:
     void stopBringsTheAntennaToRest();
     void rawSocketGetsBothLinesInOneRead();
     void linesInPiecesAndBlankLines();
+    void quitClosesAfterTheAnswersBeforeIt();
     void extendedAnswers();
     void outOfRangeIsRefusedAndNothingSent();
     void deadbandSuppressesRepeatedTargets();
@@ -266,6 +267,20 @@ void RotctldServerTest::linesInPiecesAndBlankLines()
         QVERIFY2(number, got.constData());
     }
     QCOMPARE(server->clients().value(0).lastCommand, QStringLiteral("p"));
+}
+
+void RotctldServerTest::quitClosesAfterTheAnswersBeforeIt()
+{
+    for (const QByteArray quit : {"q", "Q", "\\quit"}) {
+        QTcpSocket s;
+        s.connectToHost(QHostAddress::LocalHost, server->port());
+        QTRY_COMPARE(s.state(), QAbstractSocket::ConnectedState);
+        QSignalSpy gone(&s, &QTcpSocket::disconnected);
+        s.write("S\n_\n" + quit + "\nS\n");
+        QVERIFY(gone.wait(5000));
+        QCOMPARE(s.readAll(), QByteArray("RPRT 0\nSlew rotator bridge (SlewSim-1.0)\n"));
+        QTRY_COMPARE(server->clients().size(), 0);
+    }
 }
 
 void RotctldServerTest::extendedAnswers()
