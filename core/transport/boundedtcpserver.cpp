@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "boundedtcpserver.h"
 
+#include "descriptorset.h"
 #include "tcpconnection.h"
 
 #include <QSocketNotifier>
@@ -80,6 +81,14 @@ void BoundedTcpServer::setMaxClients(int count)
     m_maxClients = std::max(1, count);
 }
 
+void BoundedTcpServer::setBareConnections(bool on)
+{
+    m_bare = on;
+    // Kept once made: connections handed out go on being watched in it.
+    if (on && !m_bareWatcher)
+        m_bareWatcher = std::make_unique<DescriptorSet>();
+}
+
 void BoundedTcpServer::setReservedDescriptors(int count)
 {
     m_reserved = std::max(0, count);
@@ -124,7 +133,7 @@ void BoundedTcpServer::acceptPending()
             }
         }
         if (m_bare && m_clients < m_maxClients) {
-            auto *connection = new TcpConnection(fd, this);
+            auto *connection = new TcpConnection(fd, m_bareWatcher.get(), this);
             count(connection);
             emit connectionArrived(connection);
         } else {

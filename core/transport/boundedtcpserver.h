@@ -31,6 +31,7 @@ class QTcpSocket;
 
 namespace slew::transport {
 
+class DescriptorSet;
 class TcpConnection;
 
 class BoundedTcpServer : public QObject {
@@ -58,7 +59,9 @@ public:
     // Clients handed out as bare connections (connectionArrived) rather
     // than QTcpSockets (clientArrived): for a server whose clients ask a
     // little, often (tcpconnection.h says what QTcpSocket costs them).
-    void setBareConnections(bool on) { m_bare = on; }
+    // They are watched together, behind one notifier (descriptorset.h).
+    void setBareConnections(bool on);
+    bool bareConnections() const { return m_bare; }
 
     // Descriptors kept free for the rest of the process (at least 0).
     void setReservedDescriptors(int count);
@@ -97,6 +100,7 @@ private:
     int m_reserved = kDefaultReservedDescriptors;
     int m_clients = 0;
     bool m_bare = false;
+    std::unique_ptr<DescriptorSet> m_bareWatcher; // from the first setBareConnections(true)
     bool m_waitingForDescriptors = false;
     qint64 m_refusedSinceNotice = 0;
     qint64 m_acceptRetries = 0;

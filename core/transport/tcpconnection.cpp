@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "tcpconnection.h"
 
-#include <QSocketNotifier>
-
 #include <cerrno>
 #include <fcntl.h>
 #include <netinet/in.h>
@@ -12,7 +10,8 @@
 
 namespace slew::transport {
 
-TcpConnection::TcpConnection(int descriptor, QObject *parent) : QObject(parent), m_fd(descriptor)
+TcpConnection::TcpConnection(int descriptor, DescriptorSet *watcher, QObject *parent)
+    : QObject(parent), m_fd(descriptor), m_watcher(watcher)
 {
     if (m_fd < 0)
         return;
@@ -26,11 +25,16 @@ TcpConnection::TcpConnection(int descriptor, QObject *parent) : QObject(parent),
         else if (peer.ss_family == AF_INET6)
             m_peerPort = ntohs(reinterpret_cast<const sockaddr_in6 *>(&peer)->sin6_port);
     }
-    m_readNotifier = std::make_unique<QSocketNotifier>(m_fd, QSocketNotifier::Read);
-    connect(m_readNotifier.get(), &QSocketNotifier::activated, this, &TcpConnection::readable);
-    m_writeNotifier = std::make_unique<QSocketNotifier>(m_fd, QSocketNotifier::Write);
-    m_writeNotifier->setEnabled(false);
-    connect(m_writeNotifier.get(), &QSocketNotifier::activated, this, &TcpConnection::onWritable);
+    if (m_watcher) {
+        m_key = m_watcher->add(m_fd, DescriptorSet::Readable, [this](int events) {
+            if (events & DescriptorSet::Readable)
+                emit readable();
+            if (events & DescriptorSet::Writable)
+                onWritable();
+        });
+    }
+    if (m_key == 0) // nothing would ever say it can be read
+        closeDescriptor();
     m_linger.setSingleShot(true);
     connect(&m_linger, &QTimer::timeout, this, [this] {
         closeDescriptor();
@@ -84,7 +88,7 @@ void TcpConnection::write(QByteArrayView bytes)
     }
     if (sent < bytes.size()) {
         m_pending.append(bytes.sliced(sent));
-        m_writeNotifier->setEnabled(true);
+        watch();
     }
 }
 
@@ -93,7 +97,7 @@ void TcpConnection::finish(int lingerMs)
     if (m_fd < 0)
         return;
     m_finishing = true;
-    m_readNotifier->setEnabled(false);
+    watch();
     if (bytesToWrite() == 0) {
         closeGracefully();
         return;
@@ -124,8 +128,16 @@ qint64 TcpConnection::sendNow(QByteArrayView bytes)
     return sent;
 }
 
+void TcpConnection::watch()
+{
+    if (m_watcher && m_key != 0)
+        m_watcher->watch(m_key, (m_finishing ? 0 : DescriptorSet::Readable) | (bytesToWrite() > 0 ? DescriptorSet::Writable : 0));
+}
+
 void TcpConnection::onWritable()
 {
+    if (m_fd < 0) // closed by what it read this turn
+        return;
     const qint64 sent = sendNow(QByteArrayView(m_pending).sliced(m_pendingFrom));
     if (sent < 0) {
         closeDescriptor();
@@ -137,7 +149,7 @@ void TcpConnection::onWritable()
         return;
     m_pending.clear();
     m_pendingFrom = 0;
-    m_writeNotifier->setEnabled(false);
+    watch();
     if (m_finishing) {
         closeGracefully();
         emit closed();
@@ -156,11 +168,9 @@ void TcpConnection::closeDescriptor()
     if (m_fd < 0)
         return;
     m_linger.stop();
-    // Later: this may run inside one of their own signals.
-    for (std::unique_ptr<QSocketNotifier> *n : {&m_readNotifier, &m_writeNotifier}) {
-        (*n)->setEnabled(false);
-        n->release()->deleteLater();
-    }
+    if (m_watcher)
+        m_watcher->remove(m_key);
+    m_key = 0;
     ::close(m_fd);
     m_fd = -1;
     m_pending.clear();

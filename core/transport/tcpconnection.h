@@ -11,30 +11,34 @@
 // bench_idle, a bare Qt server answering every line from a QTcpSocket took
 // a third more CPU per answer than the same one reading the descriptor.
 //
-// Here read() takes what the kernel holds, write() hands the kernel what it
-// takes now and keeps the rest until the peer reads it, finish() closes once
-// everything has left (or after a linger, for a peer that never reads),
-// abort() closes at once. What the owner calls may close the connection on
-// the spot (a reset, a finish with nothing left to send): isOpen() says so,
-// and no signal follows. closed() is only for what happens later, by itself.
+// The descriptor is watched in a DescriptorSet shared with the server's
+// other clients, so that the event loop polls one descriptor for all of
+// them. read() takes what the kernel holds, write() hands the kernel what
+// it takes now and keeps the rest until the peer reads it, finish() closes
+// once everything has left (or after a linger, for a peer that never
+// reads), abort() closes at once. What the owner calls may close the
+// connection on the spot (a reset, a finish with nothing left to send):
+// isOpen() says so, and no signal follows. closed() is only for what
+// happens later, by itself. From its own signals it is deleted later
+// (deleteLater), as any QObject.
+
+#include "descriptorset.h"
 
 #include <QByteArray>
 #include <QByteArrayView>
 #include <QHostAddress>
 #include <QObject>
+#include <QPointer>
 #include <QTimer>
-
-#include <memory>
-
-class QSocketNotifier;
 
 namespace slew::transport {
 
 class TcpConnection : public QObject {
     Q_OBJECT
 public:
-    // Takes the descriptor (a connected TCP socket) and makes it non-blocking.
-    explicit TcpConnection(int descriptor, QObject *parent = nullptr);
+    // Takes the descriptor (a connected TCP socket), makes it non-blocking
+    // and watches it in `watcher`, shared with the server's other clients.
+    TcpConnection(int descriptor, DescriptorSet *watcher, QObject *parent = nullptr);
     ~TcpConnection() override; // closes, without a signal
 
     bool isOpen() const { return m_fd >= 0; }
@@ -77,13 +81,16 @@ private:
     // Done writing: our end of the stream, then the descriptor.
     void closeGracefully();
 
+    // Reading until finish(), writing while something waits.
+    void watch();
+
     int m_fd = -1;
     bool m_atEnd = false;
     bool m_finishing = false;
     QHostAddress m_peerAddress;
     quint16 m_peerPort = 0;
-    std::unique_ptr<QSocketNotifier> m_readNotifier;
-    std::unique_ptr<QSocketNotifier> m_writeNotifier; // enabled while something waits
+    QPointer<DescriptorSet> m_watcher;
+    quint64 m_key = 0;
     QByteArray m_pending;
     qsizetype m_pendingFrom = 0; // what of m_pending has left
     QTimer m_linger;

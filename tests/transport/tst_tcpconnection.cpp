@@ -19,6 +19,7 @@
 #include <memory>
 #include <utility>
 
+using slew::transport::DescriptorSet;
 using slew::transport::TcpConnection;
 
 namespace {
@@ -26,6 +27,7 @@ namespace {
 // A loopback TCP connection: our end as a TcpConnection, the peer's as a
 // blocking descriptor the test drives by hand.
 struct Pair {
+    DescriptorSet watcher;
     std::unique_ptr<TcpConnection> ours;
     int peer = -1;
     quint16 peerPort = 0;
@@ -58,7 +60,7 @@ std::unique_ptr<Pair> connectPair()
     length = sizeof local;
     ::getsockname(pair->peer, reinterpret_cast<sockaddr *>(&local), &length);
     pair->peerPort = ntohs(local.sin_port);
-    pair->ours = std::make_unique<TcpConnection>(::accept4(listener, nullptr, nullptr, SOCK_CLOEXEC));
+    pair->ours = std::make_unique<TcpConnection>(::accept4(listener, nullptr, nullptr, SOCK_CLOEXEC), &pair->watcher);
     ::close(listener);
     return pair;
 }
