@@ -172,6 +172,11 @@ void RotctldServer::onClientArrived(transport::TcpConnection *connection)
         connection->deleteLater();
         return;
     }
+    if (!connection->isOpen()) { // could not be watched (out of memory for epoll)
+        emit logMessage(tr("rotctld client %1 could not be served; closed").arg(peerName(connection)));
+        connection->deleteLater();
+        return;
+    }
     connection->setNoDelay(true);
     Client c;
     c.connection = connection;
