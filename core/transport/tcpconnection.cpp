@@ -62,6 +62,7 @@ qint64 TcpConnection::read(char *into, qint64 size)
             return n;
         if (n == 0) {
             m_atEnd = true;
+            watch(); // the end stays readable: said once is enough
             break;
         }
         if (errno == EINTR)
@@ -131,7 +132,8 @@ qint64 TcpConnection::sendNow(QByteArrayView bytes)
 void TcpConnection::watch()
 {
     if (m_watcher && m_key != 0)
-        m_watcher->watch(m_key, (m_finishing ? 0 : DescriptorSet::Readable) | (bytesToWrite() > 0 ? DescriptorSet::Writable : 0));
+        m_watcher->watch(m_key, (m_finishing || m_atEnd ? 0 : DescriptorSet::Readable)
+                                    | (bytesToWrite() > 0 ? DescriptorSet::Writable : 0));
 }
 
 void TcpConnection::onWritable()
@@ -145,8 +147,15 @@ void TcpConnection::onWritable()
         return;
     }
     m_pendingFrom += sent;
-    if (bytesToWrite() > 0)
+    if (bytesToWrite() > 0) {
+        // What has left goes once it is most of the buffer: a peer that
+        // reads as fast as it is written to would keep it all otherwise.
+        if (m_pendingFrom > m_pending.size() / 2) {
+            m_pending.remove(0, m_pendingFrom);
+            m_pendingFrom = 0;
+        }
         return;
+    }
     m_pending.clear();
     m_pendingFrom = 0;
     watch();

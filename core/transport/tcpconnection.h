@@ -66,7 +66,7 @@ public:
 
 signals:
     // Something to read, or the peer's end of input (level-triggered: said
-    // again while it is not read). Not after finish().
+    // again while it is not read). Not after finish() or the end of input.
     void readable();
     // Closed by itself: everything left after finish(), the linger ran out,
     // or sending the rest failed.
