@@ -2,12 +2,13 @@
 #include "rotctldserver.h"
 
 #include "session/rotatorsession.h"
-#include "transport/endofinput.h"
+#include "transport/tcpconnection.h"
 
-#include <QTcpSocket>
 #include <QTimer>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace slew::bridge {
 
@@ -18,12 +19,49 @@ using session::RotatorSession;
 namespace {
 
 constexpr qint64 kReadChunk = 16 * 1024; // per event, so a flood cannot starve the GUI
-// A client that has finished sending but does not read its answers.
+// A client that is done (its end of input, or `q`) but does not read its
+// answers is cut off after this.
 constexpr int kCloseLingerMs = 5000;
 
-QString peerName(const QTcpSocket *s)
+QString peerName(const transport::TcpConnection *c)
 {
-    return QStringLiteral("%1:%2").arg(s->peerAddress().toString()).arg(s->peerPort());
+    return QStringLiteral("%1:%2").arg(c->peerAddress().toString()).arg(c->peerPort());
+}
+
+// Only requests that may move the rotator wake the session's full rate.
+// A tracker that only reads (Gpredict asks `p` every cycle, engaged all day
+// long) leaves a resting station at the rest rate: waking on every read
+// would keep a watched station at the full rate for good. Its answers stay
+// true: at rest the rotator stood still at the last poll, and nothing Slew
+// sends has moved it since (a command wakes the full rate). Only something
+// outside Slew can move it (the controller's own buttons); that shows
+// within one rest interval (1 s by default) and is watched at the full rate
+// from then on, so a reading tracker sees it at most about one Gpredict
+// cycle (1 s by default) late. A rotator that stops answering is noticed at
+// the rest rate's pace, a few seconds, as with nobody asking.
+bool wakesPolling(RotctldRequest::Kind kind)
+{
+    switch (kind) {
+    case Kind::SetPosition:
+    case Kind::Stop:
+    case Kind::Park:
+    case Kind::Reset:
+    case Kind::Move:
+        return true;
+    case Kind::GetPosition:
+    case Kind::GetInfo:
+    case Kind::DumpState:
+    case Kind::Quit:
+    case Kind::Unknown:
+    case Kind::Malformed:
+        return false;
+    }
+    return false;
+}
+
+bool isQuit(QByteArrayView line)
+{
+    return line == "q" || line == "Q" || line == "\\quit";
 }
 
 double bearingDifference(double a, double b)
@@ -61,7 +99,8 @@ RotctldServer::RotctldServer(session::RotatorSession *session, QObject *parent)
     m_clock.start();
     m_suppressedReport.setInterval(5000);
     connect(&m_suppressedReport, &QTimer::timeout, this, &RotctldServer::reportAllSuppressed);
-    connect(&m_server, &transport::BoundedTcpServer::clientArrived, this, &RotctldServer::onClientArrived);
+    m_server.setBareConnections(true);
+    connect(&m_server, &transport::BoundedTcpServer::connectionArrived, this, &RotctldServer::onClientArrived);
     connect(&m_server, &transport::BoundedTcpServer::notice, this,
             [this](const QString &text) { emit logMessage(tr("rotctld server: %1").arg(text)); });
 }
@@ -86,11 +125,11 @@ bool RotctldServer::listen(const QHostAddress &address, quint16 port, QString *e
 void RotctldServer::close()
 {
     m_server.close();
-    const auto sockets = m_clients.keys();
-    for (QTcpSocket *s : sockets) {
-        s->disconnect(this);
-        s->abort();
-        s->deleteLater();
+    const auto connections = m_clients.keys();
+    for (transport::TcpConnection *c : connections) {
+        c->disconnect(this);
+        c->abort();
+        c->deleteLater();
     }
     const bool had = !m_clients.isEmpty();
     m_clients.clear();
@@ -125,189 +164,166 @@ QList<RotctldServer::ClientInfo> RotctldServer::clients() const
     return out;
 }
 
-void RotctldServer::onClientArrived(QTcpSocket *s)
+void RotctldServer::onClientArrived(transport::TcpConnection *connection)
 {
-    if (!m_allowed.isEmpty() && !m_allowed.contains(s->peerAddress())) {
-        emit logMessage(tr("refused rotctld client %1: not in the allowed list").arg(peerName(s)));
-        s->abort();
-        s->deleteLater();
+    if (!m_allowed.isEmpty() && !m_allowed.contains(connection->peerAddress())) {
+        emit logMessage(tr("refused rotctld client %1: not in the allowed list").arg(peerName(connection)));
+        connection->abort();
+        connection->deleteLater();
         return;
     }
-    s->setSocketOption(QAbstractSocket::LowDelayOption, 1);
-    // Qt reads no more than this ahead of us, so everything it has read is
-    // answered before it can see the client's end of input.
-    s->setReadBufferSize(kReadChunk);
+    if (!connection->isOpen()) { // could not be watched (out of memory for epoll)
+        emit logMessage(tr("rotctld client %1 could not be served; closed").arg(peerName(connection)));
+        connection->deleteLater();
+        return;
+    }
+    connection->setNoDelay(true);
     Client c;
-    c.socket = s;
-    c.info.peer = peerName(s);
+    c.connection = connection;
+    c.info.peer = peerName(connection);
     c.info.lastSeen = QDateTime::currentDateTimeUtc();
-    c.spare = std::make_shared<transport::SpareSocketHandle>(*s);
-    m_clients.insert(s, c);
-    connect(s, &QTcpSocket::readyRead, this, [this, s] { onReadyRead(s); });
-    connect(s, &QTcpSocket::disconnected, this, [this, s] { onDisconnected(s); });
+    m_clients.insert(connection, c);
+    // Said again while anything is left to read: one chunk a turn of the
+    // event loop, so a flood cannot starve the rest.
+    connect(connection, &transport::TcpConnection::readable, this, [this, connection] { onReadable(connection); });
+    connect(connection, &transport::TcpConnection::closed, this, [this, connection] { drop(connection); });
     emit logMessage(tr("rotctld client %1 connected").arg(c.info.peer));
     emit clientsChanged();
-    if (s->bytesAvailable() > 0)
-        QTimer::singleShot(0, this, [this, s] {
-            if (m_clients.contains(s))
-                onReadyRead(s);
-        });
 }
 
-void RotctldServer::onDisconnected(QTcpSocket *s)
+void RotctldServer::drop(transport::TcpConnection *connection)
 {
-    const auto it = m_clients.find(s);
+    const auto it = m_clients.find(connection);
     if (it == m_clients.end())
         return;
-    Client &c = *it;
-    // Qt saw the client's end of input first and closed: what it sent last
-    // is answered through the spare descriptor, if it still listens.
-    if (!c.finished && c.spare && c.spare->peerAwaitsAnswers()) {
-        c.finished = true;
-        bool quit = false;
-        QByteArray out = consume(c, s->readAll(), &quit);
-        if (!quit)
-            out += answerLastLine(c);
-        c.spare->send(out);
-    }
-    if (c.spare)
-        c.spare->close();
-    reportSuppressed(c);
-    emit logMessage(tr("rotctld client %1 left").arg(c.info.peer));
+    connection->abort(); // if still open
+    reportSuppressed(*it);
+    emit logMessage(tr("rotctld client %1 left").arg(it->info.peer));
     m_clients.erase(it);
-    s->deleteLater();
+    connection->deleteLater();
     emit clientsChanged();
 }
 
-QByteArray RotctldServer::consume(Client &c, const QByteArray &bytes, bool *quit)
+QByteArray RotctldServer::consume(Client &c, QByteArrayView bytes, bool *quit)
 {
     QByteArray out;
     *quit = false;
-    for (char ch : bytes) {
-        if (ch == '\n' || ch == '\r') {
-            if (c.discarding) {
-                c.discarding = false;
-            } else if (!c.buffer.isEmpty()) {
-                const QByteArray line = c.buffer.trimmed();
-                c.buffer.clear();
-                if (line == "q" || line == "Q" || line == "\\quit") {
-                    *quit = true;
-                    return out;
-                }
-                out += answer(c, line);
-            }
-            continue;
-        }
-        if (c.discarding)
-            continue;
-        if (c.buffer.size() >= kMaxLine) {
+    while (!bytes.isEmpty()) {
+        // Up to the next line end, or all there is.
+        const qsizetype end = std::find_if(bytes.begin(), bytes.end(), [](char ch) { return ch == '\n' || ch == '\r'; })
+                              - bytes.begin();
+        const bool ended = end < bytes.size();
+        const QByteArrayView part = bytes.first(end);
+        bytes = bytes.sliced(ended ? end + 1 : end);
+        if (!c.discarding && c.buffer.size() + part.size() > kMaxLine) {
             // Refused once, then everything up to the line end is dropped.
             c.buffer.clear();
             c.discarding = true;
             out += "RPRT -1\n";
             logClient(c, tr("rotctld client %1 sent a line over %2 bytes; refused").arg(c.info.peer).arg(kMaxLine));
+        }
+        if (c.discarding) {
+            c.discarding = !ended;
             continue;
         }
-        c.buffer += ch;
+        if (!ended) {
+            c.buffer += part;
+            continue;
+        }
+        if (c.buffer.isEmpty() && part.isEmpty())
+            continue; // the \n of \r\n, or an empty line
+        // A line read whole is answered from where it was read.
+        QByteArray joined;
+        QByteArrayView line = part;
+        if (!c.buffer.isEmpty()) {
+            joined = std::exchange(c.buffer, {}).append(part);
+            line = joined;
+        }
+        line = line.trimmed();
+        if (isQuit(line)) {
+            *quit = true;
+            return out;
+        }
+        out += answer(c, line);
     }
     return out;
 }
 
 QByteArray RotctldServer::answerLastLine(Client &c)
 {
-    const QByteArray last = c.buffer.trimmed();
-    c.buffer.clear();
-    if (c.discarding || last.isEmpty() || last == "q" || last == "Q" || last == "\\quit")
+    const QByteArray last = std::exchange(c.buffer, {}).trimmed();
+    if (c.discarding || last.isEmpty() || isQuit(last))
         return {};
     return answer(c, last);
 }
 
-void RotctldServer::onReadyRead(QTcpSocket *s)
+void RotctldServer::onReadable(transport::TcpConnection *connection)
 {
-    auto it = m_clients.find(s);
+    auto it = m_clients.find(connection);
     if (it == m_clients.end())
         return;
     Client &c = *it;
-    if (c.finished)
-        return;
-    // All Qt holds, which the read buffer size keeps to one chunk.
-    bool quit = false;
-    const QByteArray out = consume(c, s->readAll(), &quit);
-    if (quit) {
-        c.finished = true;
-        s->write(out);
-        s->disconnectFromHost();
+    // One chunk, read where it is answered from: no copy on the heap for
+    // every line.
+    char bytes[kReadChunk];
+    const qint64 n = connection->read(bytes, sizeof bytes);
+    if (!connection->isOpen()) { // reset: nobody to answer
+        drop(connection);
         return;
     }
+    if (n == 0) {
+        if (connection->atEnd())
+            finishInput(c);
+        return;
+    }
+    bool quit = false;
+    const QByteArray out = consume(c, QByteArrayView(bytes, n), &quit);
     // Every answer of this read leaves in one write: Gpredict reads a `p`
     // answer with a single recv.
-    if (!out.isEmpty())
-        send(c, out);
-    if (s->bytesToWrite() > kMaxUnsentAnswers) {
+    connection->write(out);
+    if (quit)
+        connection->finish(kCloseLingerMs);
+    if (!connection->isOpen()) {
+        drop(connection);
+        return;
+    }
+    if (connection->bytesToWrite() > kMaxUnsentAnswers) {
         emit logMessage(tr("rotctld client %1 is not reading its answers; disconnected").arg(c.info.peer));
-        c.finished = true;
-        s->abort();
-        return;
-    }
-    if (s->bytesAvailable() > 0) {
-        QTimer::singleShot(0, this, [this, s] {
-            if (m_clients.contains(s))
-                onReadyRead(s);
-        });
-        return;
-    }
-    // A client that has finished sending while answers still wait in Qt's
-    // buffer is closed gracefully, once they have left: Qt would drop them
-    // on reading the end of input. With nothing waiting (the answers went
-    // straight out) the end is left to Qt to find, and what the client
-    // sent last is answered through the spare descriptor (onDisconnected):
-    // one system call less for every answer.
-    if (s->bytesToWrite() > 0 && transport::peerFinishedSending(*s))
-        finishInput(c);
-}
-
-void RotctldServer::send(Client &c, const QByteArray &out)
-{
-    // Straight to the kernel through the spare descriptor when nothing of
-    // ours waits in Qt's buffer: a write through Qt switches the socket's
-    // write notifier on and off again, and each switch wakes the event
-    // loop once more, for every answer to every tracker. What the kernel
-    // does not take now goes through Qt, flushed at once, so an answer is
-    // on its way before Qt can read the client's end of input and close.
-    qint64 sent = 0;
-    if (c.socket->bytesToWrite() == 0 && c.spare && c.spare->isValid())
-        sent = c.spare->send(out);
-    if (sent < out.size()) {
-        c.socket->write(out.constData() + sent, out.size() - sent);
-        c.socket->flush();
+        drop(connection);
     }
 }
 
 void RotctldServer::finishInput(Client &c)
 {
-    QTcpSocket *s = c.socket;
-    c.finished = true;
-    if (const QByteArray out = answerLastLine(c); !out.isEmpty())
-        s->write(out);
+    transport::TcpConnection *connection = c.connection;
+    connection->write(answerLastLine(c));
     // Closes once the answers have left; a client that never reads them is
     // cut off.
-    QTimer::singleShot(kCloseLingerMs, s, [s] { s->abort(); });
-    s->disconnectFromHost();
+    connection->finish(kCloseLingerMs);
+    if (!connection->isOpen())
+        drop(connection);
 }
 
-QByteArray RotctldServer::answer(Client &c, const QByteArray &line)
+QByteArray RotctldServer::answer(Client &c, QByteArrayView line)
 {
-    c.info.lastCommand = QString::fromLatin1(line.left(80)).trimmed();
+    // Trackers send the same line over and over (`p`): it is read once.
+    if (!c.lastRequest || line != QByteArrayView(c.lastLine)) {
+        c.lastLine = line.toByteArray();
+        c.lastRequest = parseRotctldLine(line);
+        c.info.lastCommand = QString::fromLatin1(line.first(std::min<qsizetype>(line.size(), 80))).trimmed();
+    }
+    const RotctldRequest r = *c.lastRequest; // shares its bytes; c may go while it is answered
     // UTC: the local time would look up the time zone (a file) for every
     // answer; the Trackers tab shows it in local time.
     c.info.lastSeen = QDateTime::currentDateTimeUtc();
     ++c.info.commands;
     emit commandReceived(c.info.peer, c.info.lastCommand);
 
-    const RotctldRequest r = parseRotctldLine(line);
-    // A tracker that asks or steers wants fresh positions: the session
-    // polls at the full rate while one does (session/pollpace.h).
-    if (r.kind != Kind::Unknown && r.kind != Kind::Malformed)
+    // A tracker that steers has the move watched at the full rate from its
+    // start (session/pollpace.h), also when the deadband holds its P back
+    // (the rotator may still be on its way there) or the move is refused.
+    // Reading does not wake it (wakesPolling says why).
+    if (wakesPolling(r.kind))
         m_session->wakePolling();
     if (m_logCommands && r.kind != Kind::GetPosition && r.kind != Kind::Unknown && r.kind != Kind::Malformed)
         logClient(c, tr("rotctld %1: %2").arg(c.info.peer, c.info.lastCommand));
@@ -320,7 +336,7 @@ QByteArray RotctldServer::answer(Client &c, const QByteArray &line)
         double az = std::fmod(m_session->azimuth(), 360.0);
         if (az < 0)
             az += 360.0;
-        return formatPosition(r, az, m_session->elevation());
+        return m_positionAnswer.answer(r, az, m_session->elevation());
     }
     case Kind::SetPosition:
         if (const int refused = refuseElevation(c, r.el != 0.0); refused != 0)

@@ -10,6 +10,7 @@
 // overlong line or vanishes disturbs no one else.
 
 #include "input/logtext.h"
+#include "positionanswer.h"
 #include "rotctldrequest.h"
 #include "transport/boundedtcpserver.h"
 
@@ -20,12 +21,10 @@
 #include <QObject>
 #include <QTimer>
 
-#include <memory>
-
-class QTcpSocket;
+#include <optional>
 
 namespace slew::transport {
-class SpareSocketHandle;
+class TcpConnection;
 }
 
 namespace slew::session {
@@ -103,30 +102,28 @@ signals:
 
 private:
     struct Client {
-        QTcpSocket *socket = nullptr;
+        transport::TcpConnection *connection = nullptr;
         QByteArray buffer;
         bool discarding = false; // inside an overlong line
-        bool finished = false;   // quit, or end of input: nothing more is read
-        // Keeps the connection open after Qt closes on the client's end of
-        // input, so the answers to its last lines still reach it.
-        std::shared_ptr<transport::SpareSocketHandle> spare;
         input::LogAllowance logAllowance;
         ClientInfo info;
+        // The last line and what it asks: trackers repeat theirs (`p`).
+        QByteArray lastLine;
+        std::optional<RotctldRequest> lastRequest;
     };
 
-    void onClientArrived(QTcpSocket *socket);
-    void onReadyRead(QTcpSocket *socket);
+    void onClientArrived(transport::TcpConnection *connection);
+    void onReadable(transport::TcpConnection *connection);
     // Lines out of bytes, answers out of lines; true in *quit on `q`.
-    QByteArray consume(Client &client, const QByteArray &bytes, bool *quit);
+    QByteArray consume(Client &client, QByteArrayView bytes, bool *quit);
     // The answer to an unterminated last line, at the end of input.
     QByteArray answerLastLine(Client &client);
     // The client sent its last byte (a one-shot `printf 'p\n' | nc -N`):
     // answer the unterminated last line too, then close once all has left.
     void finishInput(Client &client);
-    void onDisconnected(QTcpSocket *socket);
-    // Answers to a client, in one write.
-    void send(Client &client, const QByteArray &out);
-    QByteArray answer(Client &client, const QByteArray &line);
+    // Forgets a client whose connection has closed, or closes it.
+    void drop(transport::TcpConnection *connection);
+    QByteArray answer(Client &client, QByteArrayView line);
     // Non-zero (RIG_ENAVAIL) when the request wants elevation from an
     // azimuth-only rotator, which is then logged as refused.
     int refuseElevation(Client &c, bool wantsElevation);
@@ -140,7 +137,7 @@ private:
 
     session::RotatorSession *m_session;
     transport::BoundedTcpServer m_server;
-    QHash<QTcpSocket *, Client> m_clients;
+    QHash<transport::TcpConnection *, Client> m_clients;
     QList<QHostAddress> m_allowed;
     double m_deadband = 0.5;
     bool m_remoteHeld = false;
@@ -150,6 +147,7 @@ private:
     bool m_logCommands = false;
     QElapsedTimer m_clock;
     QTimer m_suppressedReport; // runs while some client has lines held back
+    PositionAnswer m_positionAnswer;
 };
 
 } // namespace slew::bridge

@@ -191,9 +191,10 @@ public:
     StationRadio *stationRadio() const { return m_stationRadio.get(); }
 
 public slots:
-    // Someone wants fresh positions (a tracker asked for one, a window is
-    // about to show them): polling at the full rate again, from now.
-    // Commands, alarms and motion wake it by themselves.
+    // Someone wants the rotator watched closely (a tracker steers, even
+    // when its target is held back by the deadband and nothing is sent):
+    // polling at the full rate again, from now. Commands, alarms and motion
+    // wake it by themselves; reading the position does not.
     void wakePolling();
     // What the log allowance has held back about the controller's replies,
     // said now as one summary line (if anything was): for a service about

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "boundedtcpserver.h"
 
+#include "descriptorset.h"
+#include "tcpconnection.h"
+
 #include <QSocketNotifier>
 #include <QTcpSocket>
 
@@ -78,6 +81,14 @@ void BoundedTcpServer::setMaxClients(int count)
     m_maxClients = std::max(1, count);
 }
 
+void BoundedTcpServer::setBareConnections(bool on)
+{
+    m_bare = on;
+    // Kept once made: connections handed out go on being watched in it.
+    if (on && !m_bareWatcher)
+        m_bareWatcher = std::make_unique<DescriptorSet>();
+}
+
 void BoundedTcpServer::setReservedDescriptors(int count)
 {
     m_reserved = std::max(0, count);
@@ -121,16 +132,25 @@ void BoundedTcpServer::acceptPending()
                 return;
             }
         }
-        auto *socket = new QTcpSocket(this);
-        if (!socket->setSocketDescriptor(fd)) {
-            ::close(fd);
-            delete socket;
-            continue;
+        if (m_bare && m_clients < m_maxClients) {
+            auto *connection = new TcpConnection(fd, m_bareWatcher.get(), this);
+            count(connection);
+            emit connectionArrived(connection);
+        } else {
+            // A refused client is told why through Qt in either case.
+            auto *socket = new QTcpSocket(this);
+            if (!socket->setSocketDescriptor(fd)) {
+                ::close(fd);
+                delete socket;
+                continue;
+            }
+            if (m_clients >= m_maxClients) {
+                refuse(socket);
+            } else {
+                count(socket);
+                emit clientArrived(socket);
+            }
         }
-        if (m_clients >= m_maxClients)
-            refuse(socket);
-        else
-            take(socket);
         // This one is served, but the next would eat into the reserve.
         if (m_reserved > 0 && descriptorsLow(lowestFreeDescriptor(listener))) {
             waitForDescriptors(tr("%1 descriptors kept for the rest of the process").arg(m_reserved));
@@ -139,17 +159,16 @@ void BoundedTcpServer::acceptPending()
     }
 }
 
-void BoundedTcpServer::take(QTcpSocket *socket)
+void BoundedTcpServer::count(QObject *client)
 {
     ++m_clients;
-    connect(socket, &QObject::destroyed, this, [this] {
+    connect(client, &QObject::destroyed, this, [this] {
         --m_clients;
         m_refusedSinceNotice = 0;
         // A descriptor came free: try the waiting clients now.
         if (m_waitingForDescriptors)
             resumeAccepting();
     });
-    emit clientArrived(socket);
 }
 
 void BoundedTcpServer::refuse(QTcpSocket *socket)

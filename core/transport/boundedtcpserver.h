@@ -31,6 +31,9 @@ class QTcpSocket;
 
 namespace slew::transport {
 
+class DescriptorSet;
+class TcpConnection;
+
 class BoundedTcpServer : public QObject {
     Q_OBJECT
 public:
@@ -53,6 +56,12 @@ public:
     int maxClients() const { return m_maxClients; }
     // What a client over the limit reads before it is closed (may be empty).
     void setRefusal(const QByteArray &line) { m_refusal = line; }
+    // Clients handed out as bare connections (connectionArrived) rather
+    // than QTcpSockets (clientArrived): for a server whose clients ask a
+    // little, often (tcpconnection.h says what QTcpSocket costs them).
+    // They are watched together, behind one notifier (descriptorset.h).
+    void setBareConnections(bool on);
+    bool bareConnections() const { return m_bare; }
 
     // Descriptors kept free for the rest of the process (at least 0).
     void setReservedDescriptors(int count);
@@ -69,6 +78,8 @@ signals:
     // A client within the limit. The receiver handles it; the server counts
     // it until the socket is destroyed.
     void clientArrived(QTcpSocket *socket);
+    // The same with setBareConnections(true), counted until it is destroyed.
+    void connectionArrived(slew::transport::TcpConnection *connection);
     // Something the operator should know, ready for a log.
     void notice(const QString &text);
 
@@ -77,7 +88,8 @@ private:
     void waitForDescriptors(const QString &why);
     void resumeAccepting();
     bool descriptorsLow(int lowestFree) const;
-    void take(QTcpSocket *socket);
+    // Counts a client until it is destroyed.
+    void count(QObject *client);
     void refuse(QTcpSocket *socket);
 
     QTcpServer m_server;
@@ -87,6 +99,8 @@ private:
     int m_maxClients = kDefaultMaxClients;
     int m_reserved = kDefaultReservedDescriptors;
     int m_clients = 0;
+    bool m_bare = false;
+    std::unique_ptr<DescriptorSet> m_bareWatcher; // from the first setBareConnections(true)
     bool m_waitingForDescriptors = false;
     qint64 m_refusedSinceNotice = 0;
     qint64 m_acceptRetries = 0;

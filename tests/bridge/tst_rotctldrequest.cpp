@@ -3,6 +3,7 @@
 // 4.5's rotctld does (the expected strings were captured from `rotctld -m 1`).
 
 #include "input/logtext.h"
+#include "bridge/positionanswer.h"
 #include "bridge/rotctldrequest.h"
 
 #include <QTest>
@@ -47,6 +48,7 @@ private slots:
     void answers();
     void errorsAreNamed();
     void hugeAnglesAreAnsweredWhole();
+    void aKeptPositionAnswerIsTheFormattedOne();
 };
 
 void RotctldRequestTest::parse_data()
@@ -165,6 +167,26 @@ void RotctldRequestTest::hugeAnglesAreAnsweredWhole()
     QVERIFY(state.contains("\nmin_az=-17976931348623157"));
     QVERIFY(state.contains(".000000\nmax_az=17976931348623157"));
     QVERIFY(state.endsWith("done\n"));
+}
+
+// PositionAnswer hands the next asker the answer it formatted for the
+// last: whatever the positions, the request or their order, it is
+// formatPosition's.
+void RotctldRequestTest::aKeptPositionAnswerIsTheFormattedOne()
+{
+    PositionAnswer kept;
+    const RotctldRequest plain = parseRotctldLine("p");
+    const RotctldRequest extended = parseRotctldLine("+\\get_pos");
+    const RotctldRequest separated = parseRotctldLine(";\\get_pos");
+    const double positions[][2] = {{0, 0}, {0, 0}, {-0.0, 0}, {0, -0.0}, {0, 0}, {123.4, 45.6}, {123.4, 45.6},
+                                   {123.404, 45.6}, {359.996, 90}, {1e308, 1e-308}, {0.004, 0}, {-0.004, 0}};
+    for (const auto &at : positions) {
+        for (const RotctldRequest *r : {&plain, &extended, &plain, &separated, &plain}) {
+            QCOMPARE(kept.answer(*r, at[0], at[1]), formatPosition(*r, at[0], at[1]));
+        }
+    }
+    QCOMPARE(kept.answer(plain, -0.0, 0), QByteArray("-0.00\n0.00\n"));
+    QCOMPARE(kept.answer(plain, 0.0, 0), QByteArray("0.00\n0.00\n"));
 }
 
 QTEST_GUILESS_MAIN(RotctldRequestTest)

@@ -21,6 +21,8 @@
 #include <QTcpSocket>
 #include <QTest>
 
+#include <functional>
+
 using namespace slew;
 
 class RotctldServerTest : public QObject {
@@ -34,6 +36,8 @@ private slots:
     void stopBringsTheAntennaToRest_data();
     void stopBringsTheAntennaToRest();
     void rawSocketGetsBothLinesInOneRead();
+    void linesInPiecesAndBlankLines();
+    void quitClosesAfterTheAnswersBeforeIt();
     void extendedAnswers();
     void outOfRangeIsRefusedAndNothingSent();
     void deadbandSuppressesRepeatedTargets();
@@ -51,7 +55,8 @@ private slots:
     void resetTakesOnlyResetAll();
     void clientsSeeTheCalibratedPointing();
     void aSpidRotatorBehindTheServer();
-    void aTrackerAskingWakesARestingStation();
+    void aTrackerReadingLeavesAStationAtRest();
+    void aTrackerSteeringWakesARestingStation();
 
 private:
     QByteArray ask(QTcpSocket &s, const QByteArray &line);
@@ -60,6 +65,8 @@ private:
     // Hamlib's rotctl (netrotctl at `where`) reads this position within 20 s.
     static bool rotctlReadsPosition(const QString &where, double az, double el);
     bool connectSession(const model::RotatorProfile &profile);
+    // A session on a manual clock, at rest; polls counted in its time.
+    std::function<int(double)> restingStation();
     session::RotatorSession *session = nullptr;
     bridge::RotctldServer *server = nullptr;
 };
@@ -218,6 +225,62 @@ void RotctldServerTest::rawSocketGetsBothLinesInOneRead()
     QCOMPARE(ask(s, "P 42,5 5,5"), QByteArray("RPRT 0\n")); // comma decimals
     QCOMPARE(session->targetAzimuth(), 42.5);
     QCOMPARE(ask(s, "S"), QByteArray("RPRT 0\n"));
+}
+
+void RotctldServerTest::linesInPiecesAndBlankLines()
+{
+    QTcpSocket s;
+    s.connectToHost(QHostAddress::LocalHost, server->port());
+    QTRY_COMPARE(s.state(), QAbstractSocket::ConnectedState);
+    QByteArray got;
+    auto send = [&](const QByteArray &bytes, int lines) {
+        got.clear();
+        s.write(bytes);
+        return QTest::qWaitFor([&] { return (got += s.readAll()).count('\n') >= lines; }, 5000);
+    };
+    // A line in pieces, ended by \r\n.
+    s.write("P 1");
+    QVERIFY(s.waitForBytesWritten(5000));
+    QTest::qWait(50);
+    QVERIFY(send("0 5\r\n", 1));
+    QCOMPARE(got, QByteArray("RPRT 0\n"));
+    QCOMPARE(session->targetAzimuth(), 10.0);
+    // Empty lines are skipped; one of blanks is an empty command.
+    QVERIFY(send("\n\r\n  \nS\n", 2));
+    QCOMPARE(got, QByteArray("RPRT -1\nRPRT 0\n"));
+    // The longest line taken, and one byte more, which is refused once.
+    const QByteArray longest = "p" + QByteArray(bridge::RotctldServer::kMaxLine - 1, ' ');
+    QVERIFY(send(longest + "\n", 2));
+    QVERIFY2(!got.startsWith("RPRT"), got.constData());
+    s.write(longest.left(600));
+    QVERIFY(s.waitForBytesWritten(5000));
+    QTest::qWait(50);
+    QVERIFY(send(longest.mid(600) + " \nS\n", 2));
+    QCOMPARE(got, QByteArray("RPRT -1\nRPRT 0\n"));
+    // A repeated line, then another and the first again, each answered as itself.
+    QVERIFY(send("p\np\nP 20 10\nS\np\n", 8));
+    const QList<QByteArray> lines = got.split('\n');
+    QCOMPARE(lines.mid(4, 2), QList<QByteArray>({"RPRT 0", "RPRT 0"}));
+    for (int i : {0, 1, 2, 3, 6, 7}) {
+        bool number = false;
+        lines.value(i).toDouble(&number);
+        QVERIFY2(number, got.constData());
+    }
+    QCOMPARE(server->clients().value(0).lastCommand, QStringLiteral("p"));
+}
+
+void RotctldServerTest::quitClosesAfterTheAnswersBeforeIt()
+{
+    for (const QByteArray quit : {"q", "Q", "\\quit"}) {
+        QTcpSocket s;
+        s.connectToHost(QHostAddress::LocalHost, server->port());
+        QTRY_COMPARE(s.state(), QAbstractSocket::ConnectedState);
+        QSignalSpy gone(&s, &QTcpSocket::disconnected);
+        s.write("S\n_\n" + quit + "\nS\n");
+        QVERIFY(gone.wait(5000));
+        QCOMPARE(s.readAll(), QByteArray("RPRT 0\nSlew rotator bridge (SlewSim-1.0)\n"));
+        QTRY_COMPARE(server->clients().size(), 0);
+    }
 }
 
 void RotctldServerTest::extendedAnswers()
@@ -678,35 +741,81 @@ void RotctldServerTest::aSpidRotatorBehindTheServer()
     QCOMPARE(ask(s, "S"), QByteArray("RPRT 0\n"));
 }
 
-void RotctldServerTest::aTrackerAskingWakesARestingStation()
+// The session of the two cases below on a manual clock, pumped from the
+// event loop, so that polls are counted in the session's time; left alone
+// longer than the quiet spell before the slow rate (5 s). How many position
+// polls go out in the session's next `seconds`.
+std::function<int(double)> RotctldServerTest::restingStation()
 {
-    // At rest the session polls once a second (session/pollpace.h); a
-    // tracker that asks for the position wants it fresh, and gets the full
-    // rate at once. The simulator runs on a manual clock here, pumped from
-    // the event loop, so the polls can be counted in the session's time.
     (new SimulatorPump(0.005, session))->follow(session);
     model::RotatorProfile p;
     p.uri = "sim:?clock=manual";
-    QVERIFY(connectSession(p));
+    if (!connectSession(p))
+        return {};
     sim::Simulator *sim = sim::simulatorBehind(session->link());
-    auto pollsIn = [&](double seconds) {
+    auto pollsIn = [this, sim](double seconds) {
         QSignalSpy sent(session, &session::RotatorSession::bytesSent);
         const double until = sim->clock().now() + seconds;
         if (!runEventLoopUntil([&] { return sim->clock().now() >= until; }, 60000))
             return -1;
         return timesSent(sent, "AZ EL\n");
     };
-    pollsIn(7.0); // left alone longer than the quiet spell before the slow rate (5 s)
+    pollsIn(7.0);
+    return pollsIn;
+}
+
+void RotctldServerTest::aTrackerReadingLeavesAStationAtRest()
+{
+    // At rest the session polls once a second (session/pollpace.h). A
+    // tracker that only reads gets the position the rotator stood still at
+    // (rotctldserver.cpp, wakesPolling), and the station stays at rest.
+    const auto pollsIn = restingStation();
+    QVERIFY(pollsIn);
     const int resting = pollsIn(5.0);
     QVERIFY2(resting >= 4 && resting <= 6, qPrintable(QString::number(resting)));
     QTcpSocket s;
     s.connectToHost(QHostAddress::LocalHost, server->port());
     QVERIFY(runEventLoopUntil([&] { return s.state() == QAbstractSocket::ConnectedState; }, 5000));
-    // Only connecting asks nothing.
-    const int connected = pollsIn(3.0);
-    QVERIFY2(connected <= 4, qPrintable(QString::number(connected)));
+    // Ten reads a second, the information and the limits too, for 3 s.
+    int reading = 0;
+    for (int i = 0; i < 30; ++i) {
+        const QByteArray line = i % 10 == 5 ? "_" : i % 10 == 7 ? "\\dump_state" : "p";
+        QVERIFY2(!ask(s, line).isEmpty(), line.constData());
+        const int polls = pollsIn(0.1);
+        QVERIFY(polls >= 0);
+        reading += polls;
+    }
+    QVERIFY2(reading <= 4, qPrintable(QString::number(reading)));
     const QByteArray answer = ask(s, "p");
-    QVERIFY2(answer.count('\n') == 2, answer.constData());
+    QCOMPARE(answer, QStringLiteral("%1\n%2\n")
+                         .arg(session->azimuth(), 0, 'f', 2)
+                         .arg(session->elevation(), 0, 'f', 2)
+                         .toLatin1());
+}
+
+void RotctldServerTest::aTrackerSteeringWakesARestingStation()
+{
+    // A tracker that steers has the move watched at the full rate at once,
+    // also when the deadband holds back its repeated P: it is the rotator's
+    // target, which it may not have reached.
+    const auto pollsIn = restingStation();
+    QVERIFY(pollsIn);
+    QTcpSocket s;
+    s.connectToHost(QHostAddress::LocalHost, server->port());
+    QVERIFY(runEventLoopUntil([&] { return s.state() == QAbstractSocket::ConnectedState; }, 5000));
+    const QByteArray here = QStringLiteral("P %1 %2")
+                                .arg(session->azimuth(), 0, 'f', 2)
+                                .arg(session->elevation(), 0, 'f', 2)
+                                .toLatin1();
+    QCOMPARE(ask(s, here), QByteArray("RPRT 0\n"));
+    const int steered = pollsIn(1.0);
+    QVERIFY2(steered >= 9, qPrintable(QString::number(steered)));
+    pollsIn(7.0);
+    const int resting = pollsIn(3.0);
+    QVERIFY2(resting <= 4, qPrintable(QString::number(resting)));
+    const int suppressedBefore = server->movesSuppressedByDeadband();
+    QCOMPARE(ask(s, here), QByteArray("RPRT 0\n"));
+    QCOMPARE(server->movesSuppressedByDeadband(), suppressedBefore + 1);
     const int woken = pollsIn(1.0);
     QVERIFY2(woken >= 9, qPrintable(QString::number(woken)));
 }

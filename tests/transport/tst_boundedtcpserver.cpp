@@ -10,6 +10,7 @@
 //   pauses without spinning, and resumes once descriptors come free.
 
 #include "transport/boundedtcpserver.h"
+#include "transport/tcpconnection.h"
 
 #include <QElapsedTimer>
 #include <QSignalSpy>
@@ -78,6 +79,7 @@ private slots:
     void pausesBeforeTheReserveAndLetsTheWaitingIn();
     void runningOutPausesWithoutSpinningAndResumes();
     void clientLimitRefusesPolitely();
+    void bareConnectionsAreCountedAndLimitedAlike();
 };
 
 void BoundedTcpServerTest::pausesBeforeTheReserveAndLetsTheWaitingIn()
@@ -204,6 +206,37 @@ void BoundedTcpServerTest::clientLimitRefusesPolitely()
     for (const QList<QVariant> &args : arrived)
         delete args.at(0).value<QTcpSocket *>();
     QCOMPARE(server.clientCount(), 0);
+}
+
+void BoundedTcpServerTest::bareConnectionsAreCountedAndLimitedAlike()
+{
+    BoundedTcpServer server;
+    server.setBareConnections(true);
+    server.setMaxClients(2);
+    server.setRefusal("busy\n");
+    QSignalSpy sockets(&server, &BoundedTcpServer::clientArrived);
+    std::vector<slew::transport::TcpConnection *> arrived;
+    connect(&server, &BoundedTcpServer::connectionArrived, this,
+            [&](slew::transport::TcpConnection *c) { arrived.push_back(c); });
+    QVERIFY(server.listen(QHostAddress::LocalHost, 0));
+    std::vector<std::unique_ptr<QTcpSocket>> clients;
+    for (int i = 0; i < 4; ++i) {
+        clients.push_back(std::make_unique<QTcpSocket>());
+        clients.back()->connectToHost(QHostAddress::LocalHost, server.serverPort());
+    }
+    QTRY_COMPARE(arrived.size(), size_t(2));
+    QTRY_COMPARE(clients[2]->state(), QAbstractSocket::UnconnectedState);
+    QTRY_COMPARE(clients[3]->state(), QAbstractSocket::UnconnectedState);
+    QCOMPARE(clients[2]->readAll(), QByteArray("busy\n"));
+    QCOMPARE(clients[3]->readAll(), QByteArray("busy\n"));
+    QCOMPARE(sockets.count(), 0);
+    QCOMPARE(server.clientCount(), 2);
+    QVERIFY(arrived[0]->isOpen());
+    QCOMPARE(arrived[0]->peerPort(), clients[0]->localPort());
+    for (slew::transport::TcpConnection *c : arrived)
+        delete c;
+    QCOMPARE(server.clientCount(), 0);
+    QTRY_COMPARE(clients[0]->state(), QAbstractSocket::UnconnectedState); // closed with it
 }
 
 QTEST_GUILESS_MAIN(BoundedTcpServerTest)

@@ -12,7 +12,11 @@
 // time (utime + stime) and RSS. Then, for each server in turn, N clients
 // (10) on their own TCP connections each ask `p` at HZ (10) for S seconds:
 // the server's CPU per answer (on-CPU nanoseconds of every thread, from
-// schedstat). A benchmark may block: it is a measuring client, not product
+// schedstat). Then the same for both servers at once, measured over the
+// same S seconds: on a machine that is busy with other work, what that work
+// costs a server (its caches, a core to wait for) changes from one ten
+// seconds to the next, and weighs on both alike only when they are measured
+// together. A benchmark may block: it is a measuring client, not product
 // code.
 #include <QCoreApplication>
 #include <QDir>
@@ -186,10 +190,14 @@ struct Load {
     Sample before, after;
 };
 
-// N clients on their own connections, each asking `p` at `rate`, for `seconds`.
-Load askFromClients(const Server &server, const Settings &settings)
+// N clients for each server, on their own connections, each asking `p` at
+// `rate`, for `seconds`: one Load a server. Given several servers, they are
+// asked at the same time and measured over the same window, so that what
+// else the machine does weighs on each alike.
+std::vector<Load> askFromClients(const std::vector<const Server *> &servers, const Settings &settings)
 {
     struct Client {
+        size_t server = 0;
         int fd = -1;
         QByteArray pending;
         int lines = 0;
@@ -197,21 +205,34 @@ Load askFromClients(const Server &server, const Settings &settings)
         qint64 sentNs = 0;
         qint64 nextNs = 0;
     };
-    Load load;
-    std::vector<Client> clients(size_t(settings.clients));
+    std::vector<Load> loads(servers.size());
+    std::vector<Client> clients;
     const qint64 periodNs = qint64(1e9 / settings.rate);
-    for (size_t i = 0; i < clients.size(); ++i) {
-        clients[i].fd = connectTo(server.port);
-        if (clients[i].fd < 0) {
-            std::printf("client %zu could not connect\n", i);
-            return load;
+    const auto closeAll = [&] {
+        for (Client &c : clients)
+            ::close(c.fd);
+    };
+    for (size_t s = 0; s < servers.size(); ++s) {
+        for (int i = 0; i < settings.clients; ++i) {
+            Client c;
+            c.server = s;
+            c.fd = connectTo(servers[s]->port);
+            if (c.fd < 0) {
+                std::printf("client %d of %s could not connect\n", i, servers[s]->name);
+                closeAll();
+                return {};
+            }
+            ::fcntl(c.fd, F_SETFL, O_NONBLOCK);
+            // Spread over the period, as trackers started at different times
+            // are; the servers' clients in turn, so that no two ask at once.
+            const qint64 slot = qint64(i) * qint64(servers.size()) + qint64(s);
+            c.nextNs = slot * periodNs / (qint64(settings.clients) * qint64(servers.size()));
+            clients.push_back(c);
         }
-        ::fcntl(clients[i].fd, F_SETFL, O_NONBLOCK);
-        // Spread over the period, as trackers started at different times are.
-        clients[i].nextNs = qint64(i) * periodNs / qint64(clients.size());
     }
     ::usleep(200 * 1000); // every client accepted, its thread (rotctld) started
-    load.before = sample(server.pid());
+    for (size_t s = 0; s < servers.size(); ++s)
+        loads[s].before = sample(servers[s]->pid());
     QElapsedTimer clock;
     clock.start();
     const qint64 endNs = qint64(settings.seconds * 1e9);
@@ -222,7 +243,7 @@ Load askFromClients(const Server &server, const Settings &settings)
         for (Client &c : clients) {
             if (now >= c.nextNs) {
                 if (c.waiting) {
-                    ++load.late;
+                    ++loads[c.server].late;
                 } else if (::write(c.fd, "p\n", 2) == 2) {
                     c.waiting = true;
                     c.sentNs = now;
@@ -243,6 +264,7 @@ Load askFromClients(const Server &server, const Settings &settings)
             if (!(fds[i].revents & POLLIN))
                 continue;
             Client &c = clients[i];
+            Load &load = loads[c.server];
             char buffer[512];
             const ssize_t n = ::read(c.fd, buffer, sizeof buffer);
             if (n <= 0)
@@ -262,10 +284,10 @@ Load askFromClients(const Server &server, const Settings &settings)
             }
         }
     }
-    load.after = sample(server.pid());
-    for (Client &c : clients)
-        ::close(c.fd);
-    return load;
+    for (size_t s = 0; s < servers.size(); ++s)
+        loads[s].after = sample(servers[s]->pid());
+    closeAll();
+    return loads;
 }
 
 struct RestFigures {
@@ -278,10 +300,10 @@ struct LoadFigures {
     double microsPerAnswer = 0, ticksMicrosPerAnswer = 0;
 };
 
-LoadFigures measureLoad(const Server &server, const Settings &settings)
+LoadFigures figures(const Load &load)
 {
     LoadFigures f;
-    f.load = askFromClients(server, settings);
+    f.load = load;
     const Sample &before = f.load.before, &after = f.load.after;
     if (f.load.answers > 0) {
         f.microsPerAnswer = 1e6 * (after.onCpuSeconds - before.onCpuSeconds) / double(f.load.answers);
@@ -356,12 +378,17 @@ int main(int argc, char *argv[])
         restFigures.push_back(r);
     }
 
-    std::printf("%d clients asking `p` at %.0f Hz each for %.0f s, one server at a time...\n", settings.clients,
-                settings.rate, settings.seconds);
+    std::printf("%d clients asking `p` at %.0f Hz each for %.0f s, one server at a time, then all at once...\n",
+                settings.clients, settings.rate, settings.seconds);
     std::fflush(stdout);
-    std::vector<LoadFigures> loadFigures;
-    for (const Server *s : servers)
-        loadFigures.push_back(measureLoad(*s, settings));
+    std::vector<LoadFigures> loadFigures, togetherFigures;
+    for (const Server *s : servers) {
+        const std::vector<Load> alone = askFromClients({s}, settings);
+        loadFigures.push_back(figures(alone.empty() ? Load{} : alone.front()));
+    }
+    for (const Load &l : askFromClients(servers, settings))
+        togetherFigures.push_back(figures(l));
+    togetherFigures.resize(servers.size());
 
     std::printf("\n%-44s", "");
     for (const Server *s : servers)
@@ -376,14 +403,18 @@ int main(int argc, char *argv[])
     row("  CPU, % of one core", [&](size_t i) { return QString::number(restFigures[i].cpuPercent, 'f', 2); });
     row("  RSS, MiB", [&](size_t i) { return QString::number(restFigures[i].rssMiB, 'f', 1); });
     row("  threads", [&](size_t i) { return QString::number(restFigures[i].threads); });
-    std::printf("\n%d clients x %.0f Hz `p` (%.0f s):", settings.clients, settings.rate, settings.seconds);
-    row("  answers (refused, not asked: still waiting)", [&](size_t i) {
-        const Load &l = loadFigures[i].load;
-        return QStringLiteral("%1 (%2, %3)").arg(l.answers).arg(l.refused).arg(l.late);
-    });
-    row("  CPU per answer, us (schedstat)", [&](size_t i) { return QString::number(loadFigures[i].microsPerAnswer, 'f', 1); });
-    row("  CPU per answer, us (utime+stime)", [&](size_t i) { return QString::number(loadFigures[i].ticksMicrosPerAnswer, 'f', 1); });
-    row("  slowest answer, ms", [&](size_t i) { return QString::number(loadFigures[i].load.worstMs, 'f', 1); });
+    const auto loadRows = [&](const char *how, const std::vector<LoadFigures> &f) {
+        std::printf("\n%d clients x %.0f Hz `p` (%.0f s), %s:", settings.clients, settings.rate, settings.seconds, how);
+        row("  answers (refused, not asked: still waiting)", [&](size_t i) {
+            const Load &l = f[i].load;
+            return QStringLiteral("%1 (%2, %3)").arg(l.answers).arg(l.refused).arg(l.late);
+        });
+        row("  CPU per answer, us (schedstat)", [&](size_t i) { return QString::number(f[i].microsPerAnswer, 'f', 1); });
+        row("  CPU per answer, us (utime+stime)", [&](size_t i) { return QString::number(f[i].ticksMicrosPerAnswer, 'f', 1); });
+        row("  slowest answer, ms", [&](size_t i) { return QString::number(f[i].load.worstMs, 'f', 1); });
+    };
+    loadRows("one server at a time", loadFigures);
+    loadRows("all at once", togetherFigures);
     std::printf("\n");
     return 0;
 }
