@@ -29,7 +29,7 @@
 
 namespace slew::radio {
 
-enum class CommandKind { ReceiveFrequency, TransmitFrequency, Mode, Split, Read };
+enum class CommandKind { ReceiveFrequency, TransmitFrequency, Mode, TransmitMode, Split, Read };
 
 struct PacedCommand {
     CommandKind kind = CommandKind::Read;

@@ -90,7 +90,15 @@ void ControllerRadioLink::setMode(const QString &mode, int)
     if (m_state != State::Open)
         return;
     m_mode = mode;
-    m_pacer.submit({CommandKind::Mode, QStringLiteral("DM%1 UM%1").arg(mode)});
+    m_pacer.submit({CommandKind::Mode, QStringLiteral("DM%1").arg(mode)});
+}
+
+void ControllerRadioLink::setTransmitMode(const QString &mode, int)
+{
+    if (m_state != State::Open)
+        return;
+    m_transmitMode = mode;
+    m_pacer.submit({CommandKind::TransmitMode, QStringLiteral("UM%1").arg(mode)});
 }
 
 void ControllerRadioLink::readFrequencies()
@@ -113,8 +121,9 @@ void ControllerRadioLink::send(const PacedCommand &command)
         break;
     case CommandKind::Mode:
         result = radio->setMode(StationRadio::Path::Downlink, m_mode);
-        if (result)
-            result = radio->setMode(StationRadio::Path::Uplink, m_mode);
+        break;
+    case CommandKind::TransmitMode:
+        result = radio->setMode(StationRadio::Path::Uplink, m_transmitMode);
         break;
     case CommandKind::Split:
         break;

@@ -40,7 +40,8 @@ public:
     void setReceiveHz(double hz) override;
     void setTransmitHz(double hz) override;
     void setSplit(bool) override {} // the controller has a line for each path already
-    void setMode(const QString &mode, int passbandHz) override;
+    void setMode(const QString &mode, int passbandHz) override;         // DM
+    void setTransmitMode(const QString &mode, int passbandHz) override; // UM
     void readFrequencies() override;
     bool canReadBack() const override;
     int latencyMs() const override { return m_latencyMs; }
@@ -56,7 +57,7 @@ private:
     CommandPacer m_pacer;
     State m_state = State::Closed;
     double m_receiveHz = 0, m_transmitHz = 0; // the newest asked for
-    QString m_mode;
+    QString m_mode, m_transmitMode;
     // A read on its way: what has come back of it, and since when.
     RadioFrequencies m_reading;
     bool m_readInFlight = false;

@@ -47,6 +47,9 @@ public:
     virtual void setSplit(bool on) = 0;
     // A Hamlib mode name (USB, LSB, CW, FM, ...) and passband (0: the radio's default).
     virtual void setMode(const QString &mode, int passbandHz) = 0;
+    // The transmit side's mode with split on (rigctld's `X`, set_split_mode):
+    // an inverting linear transponder takes LSB up and gives USB down.
+    virtual void setTransmitMode(const QString &mode, int passbandHz) = 0;
     // Asks for both frequencies; frequenciesRead() follows.
     virtual void readFrequencies() = 0;
     // Readings show the radio's own frequency, dial turns included: the

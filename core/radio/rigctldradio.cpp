@@ -166,7 +166,18 @@ void RigctldRadioLink::setSplit(bool on)
 
 void RigctldRadioLink::setMode(const QString &mode, int passbandHz)
 {
-    const QString command = QStringLiteral("+M %1 %2").arg(mode).arg(passbandHz);
+    submitMode(CommandKind::Mode, Exchange::SetMode, QStringLiteral("+M"), mode, passbandHz);
+}
+
+void RigctldRadioLink::setTransmitMode(const QString &mode, int passbandHz)
+{
+    submitMode(CommandKind::TransmitMode, Exchange::SetTransmitMode, QStringLiteral("+X"), mode, passbandHz);
+}
+
+void RigctldRadioLink::submitMode(CommandKind kind, Exchange exchange, const QString &verb, const QString &mode,
+                                  int passbandHz)
+{
+    const QString command = QStringLiteral("%1 %2 %3").arg(verb, mode).arg(passbandHz);
     if (!isModeToken(mode)) {
         emit commandFailed(input::loggableText(command, 60),
                            tr("not sent: a mode is a Hamlib mode name of letters and digits (USB, FM, PKTUSB)"));
@@ -178,7 +189,7 @@ void RigctldRadioLink::setMode(const QString &mode, int passbandHz)
                                         .arg(kMaxPassbandHz));
         return;
     }
-    submit(CommandKind::Mode, Exchange::SetMode, command);
+    submit(kind, exchange, command);
 }
 
 void RigctldRadioLink::readFrequencies()
@@ -211,6 +222,8 @@ RigctldReply RigctldRadioLink::replyFor(Exchange exchange, RigctldReply::Form fo
         return RigctldReply("set_split_vfo", {}, form);
     case Exchange::SetMode:
         return RigctldReply("set_mode", {}, form);
+    case Exchange::SetTransmitMode:
+        return RigctldReply("set_split_mode", {}, form);
     }
     Q_UNREACHABLE();
 }
@@ -362,6 +375,7 @@ void RigctldRadioLink::finishExchange(const PacedCommand &command, const Rigctld
     case Exchange::SetReceive:
     case Exchange::SetTransmit:
     case Exchange::SetMode:
+    case Exchange::SetTransmitMode:
         break;
     case Exchange::ReadReceive: {
         const std::optional<double> hz = refused ? std::nullopt : valueIn(kFrequencyRange);

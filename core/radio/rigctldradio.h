@@ -12,6 +12,7 @@
 //   +I hz         set_split_freq  the transmit frequency, on the split VFO
 //   +S 1 VFOB     set_split_vfo   split on, transmitting on VFOB (+S 0 VFOA: off)
 //   +M mode pb    set_mode
+//   +X mode pb    set_split_mode  the transmit side's mode
 //   +f, +i        get_freq, get_split_freq
 //   +n            get_ts          the tuning step
 //
@@ -83,6 +84,7 @@ public:
     void setTransmitHz(double hz) override;
     void setSplit(bool on) override;
     void setMode(const QString &mode, int passbandHz) override;
+    void setTransmitMode(const QString &mode, int passbandHz) override;
     void readFrequencies() override;
 
     double tuningStepHz() const override { return m_tuningStepHz; }
@@ -108,12 +110,14 @@ private:
         SetSplitOn,
         SetSplitOff,
         SetMode,
+        SetTransmitMode,
         ReadReceive,
         ReadTransmit,
     };
 
     static RigctldReply replyFor(Exchange exchange, RigctldReply::Form form);
     void submit(CommandKind kind, Exchange exchange, const QString &text);
+    void submitMode(CommandKind kind, Exchange exchange, const QString &verb, const QString &mode, int passbandHz);
     bool acceptFrequency(const QString &command, double hz);
     void send(const PacedCommand &command);
     void onConnected();

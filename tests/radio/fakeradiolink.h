@@ -27,12 +27,26 @@ public:
     void setTransmitHz(double hz) override { schedule(false, hz); }
     void setSplit(bool) override {}
     void setMode(const QString &, int) override {}
+    void setTransmitMode(const QString &, int) override {}
     void readFrequencies() override
     {
         slew::radio::RadioFrequencies f;
         f.receiveHz = receive;
         f.transmitHz = transmit;
-        emit frequenciesRead(f);
+        if (answerLater)
+            m_unanswered.push_back(f); // what the radio held when asked
+        else
+            emit frequenciesRead(f);
+    }
+    // Reads are answered by answerReads(), as a real link's answer comes
+    // back after commands sent meanwhile have been queued.
+    bool answerLater = false;
+    void answerReads()
+    {
+        std::deque<slew::radio::RadioFrequencies> due;
+        due.swap(m_unanswered);
+        for (const auto &f : due)
+            emit frequenciesRead(f);
     }
     double tuningStepHz() const override { return step; }
     int latencyMs() const override { return latency; }
@@ -66,5 +80,6 @@ private:
         qint64 atMs;
     };
     std::deque<Pending> m_pending;
+    std::deque<slew::radio::RadioFrequencies> m_unanswered;
     State m_state = State::Open;
 };

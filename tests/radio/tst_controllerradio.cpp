@@ -99,6 +99,12 @@ private slots:
         const auto held = read.last().at(0).value<slew::radio::RadioFrequencies>();
         QCOMPARE(*held.receiveHz, lastDown);
         QCOMPARE(*held.transmitHz, lastUp);
+
+        // Each path's mode on its own line: an inverting linear
+        // transponder takes LSB up and gives USB down.
+        radio.setMode("USB", 0);
+        radio.setTransmitMode("LSB", 0);
+        QVERIFY(runEventLoopUntil([&] { return record().contains("DMUSB") && record().contains("UMLSB"); }, 5000));
         session.disconnectFromRotator();
     }
 

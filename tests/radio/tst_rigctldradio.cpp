@@ -166,7 +166,7 @@ namespace {
 // What a rigctld says to a command on a connection of our own, in the
 // default form: `lines` lines of answer. What reached rigctld, not what
 // the link believes.
-QList<QByteArray> askRigctld(quint16 port, const QByteArray &command, int lines)
+QList<QByteArray> askRigctldOnce(quint16 port, const QByteArray &command, int lines)
 {
     QTcpSocket client;
     QSignalSpy connected(&client, &QTcpSocket::connected);
@@ -181,6 +181,16 @@ QList<QByteArray> askRigctld(quint16 port, const QByteArray &command, int lines)
     QList<QByteArray> out = answer.split('\n');
     out.removeLast(); // after the last line end
     return out;
+}
+
+// What rigctld holds, asked on a connection of the test's own. rigctld
+// 4.5.4 now and then (about one connection in a hundred here, while another
+// client is connected) accepts a connection and closes it five seconds
+// later without answering: such a connection is asked again, once.
+QList<QByteArray> askRigctld(quint16 port, const QByteArray &command, int lines)
+{
+    QList<QByteArray> out = askRigctldOnce(port, command, lines);
+    return out.isEmpty() ? askRigctldOnce(port, command, lines) : out;
 }
 
 QStringList sentTexts(const QSignalSpy &spy)
@@ -645,6 +655,11 @@ void RigctldRadioTest::realRigctldSplitReachesTheRadio()
     QCOMPARE(askRigctld(port, "f", 1), (QList<QByteArray>{"145900000"}));
     QCOMPARE(askRigctld(port, "i", 1), (QList<QByteArray>{"435100000"}));
     QCOMPARE(askRigctld(port, "s", 2), (QList<QByteArray>{"1", "VFOB"}));
+
+    // An inverting linear transponder: LSB up, USB down.
+    link.setTransmitMode("LSB", 0);
+    QTRY_VERIFY(!static_cast<RigctldRadioLink &>(link).pacer().isBusy());
+    QCOMPARE(askRigctld(port, "x", 2), (QList<QByteArray>{"LSB", "0"}));
 
     link.setSplit(false);
     link.setMode("USB", 2400);
