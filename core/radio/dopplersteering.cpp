@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace slew::radio {
 
@@ -57,6 +58,71 @@ void DopplerSteering::begin(const SatelliteFrequencies &satellite, RangeRate ran
     m_receiveTaken = true;
     m_readPending = false;
     m_lastReadMs = -1;
+    m_receivesSent = 0;
+    m_receivesBeforeRead = 0;
+    m_heldReceive.clear();
+    m_heldTransmit.clear();
+    m_sumSquares = 0;
+    m_worst = 0;
+    m_samples = 0;
+    m_commandsAtBegin = m_commandsSent;
+}
+
+DopplerFigures DopplerSteering::figures() const
+{
+    DopplerFigures f;
+    f.samples = m_samples;
+    f.rmsHz = m_samples > 0 ? std::sqrt(m_sumSquares / m_samples) : 0.0;
+    f.worstHz = m_worst;
+    f.commands = m_commandsSent - m_commandsAtBegin;
+    return f;
+}
+
+void DopplerSteering::noteHeld(std::deque<Held> &held, double hz, qint64 fromMs)
+{
+    held.push_back({hz, fromMs});
+    // Only the newest value already on the radio, and those still on
+    // their way, are ever asked for.
+    while (held.size() > kRecentSent)
+        held.pop_front();
+}
+
+std::optional<double> DopplerSteering::heldAt(const std::deque<Held> &held, qint64 nowMs)
+{
+    for (auto it = held.rbegin(); it != held.rend(); ++it) {
+        if (it->fromMs <= nowMs)
+            return it->hz;
+    }
+    return std::nullopt;
+}
+
+void DopplerSteering::measure()
+{
+    if (!m_rangeRate || m_dial)
+        return;
+    const std::optional<double> rangeRate = m_rangeRate(m_lastJulian);
+    if (!rangeRate || !std::isfinite(*rangeRate))
+        return;
+    const RadioTuning truth = tuningFor(m_satellite, *rangeRate);
+    double receiveError = std::numeric_limits<double>::quiet_NaN();
+    double transmitError = std::numeric_limits<double>::quiet_NaN();
+    auto count = [this](double error) {
+        m_sumSquares += error * error;
+        m_worst = std::max(m_worst, std::abs(error));
+        ++m_samples;
+    };
+    if (const std::optional<double> held = heldAt(m_heldReceive, m_nowMs)) {
+        receiveError = *held - truth.receiveHz;
+        count(receiveError);
+    }
+    if (truth.transmitHz) {
+        if (const std::optional<double> held = heldAt(m_heldTransmit, m_nowMs)) {
+            transmitError = *held - *truth.transmitHz;
+            count(transmitError);
+        }
+    }
+    if (std::isfinite(receiveError) || std::isfinite(transmitError))
+        emit measured(receiveError, transmitError);
 }
 
 void DopplerSteering::end()
@@ -105,10 +171,12 @@ void DopplerSteering::step(double julian, qint64 nowMs)
     // frequency goes out when a reading has shown the last one taken.
     if (followsDial() && !m_readPending && (m_lastReadMs < 0 || nowMs - m_lastReadMs >= m_settings.readBackMs)) {
         m_readPending = true;
+        m_receivesBeforeRead = m_receivesSent;
         m_lastReadMs = nowMs;
         m_link->readFrequencies(); // its answer may come at once (onRead)
     }
     sendDue();
+    measure();
 }
 
 bool DopplerSteering::withinBudget()
@@ -176,6 +244,8 @@ void DopplerSteering::sendDue()
         m_recentReceive.push_back({hz, m_nowMs});
         if (m_recentReceive.size() > kRecentSent)
             m_recentReceive.pop_front();
+        noteHeld(m_heldReceive, hz, m_nowMs + leadMs());
+        ++m_receivesSent;
         noteSent();
         sent = true;
     }
@@ -185,6 +255,7 @@ void DopplerSteering::sendDue()
             const double hz = quantised(ahead(*wanted.transmitHz, transmitRate, transmitStep), tuningStepHz());
             m_link->setTransmitHz(hz);
             m_sentTransmit = hz;
+            noteHeld(m_heldTransmit, hz, m_nowMs + leadMs());
             noteSent();
             sent = true;
         }
@@ -209,6 +280,10 @@ void DopplerSteering::onRead(const RadioFrequencies &frequencies)
 {
     m_readPending = false;
     if (!m_rangeRate || !followsDial() || !frequencies.receiveHz || !m_sentReceive)
+        return;
+    // A read asked before Slew's first frequency of the pass shows where
+    // the radio was left before it: no turn of the dial, and nothing to judge.
+    if (m_receivesBeforeRead == 0)
         return;
     const double read = *frequencies.receiveHz;
     const double tolerance = sameFrequencyHz(tuningStepHz());
@@ -256,6 +331,7 @@ void DopplerSteering::adoptDial(bool overwritten)
         // What the radio holds is right for now: no command sent back over it.
         m_sentReceive = point;
         m_recentReceive.push_back({point, m_nowMs});
+        noteHeld(m_heldReceive, point, m_nowMs); // already on the radio
     }
     emit dialFollowed(offset);
     sendDue();

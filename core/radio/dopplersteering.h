@@ -24,6 +24,13 @@
 //
 // step() does one round at a given time, so tests and benchmarks run it on
 // simulated time; start() runs it from a timer on the station clock.
+//
+// Each round also measures how far the radio is from the truth: the
+// frequency it holds (the last one sent, from when the radio has taken it:
+// a lead after it was sent) against the Doppler-corrected frequency due at
+// that moment, on each path Slew tunes. figures() sums them over the pass
+// (from begin()); rounds while the operator's hand is on the dial, and
+// before the radio has taken a first command, are not counted.
 
 #include "doppler.h"
 
@@ -42,6 +49,15 @@ namespace slew::radio {
 
 class RadioLink;
 struct RadioFrequencies;
+
+// How far the radio was from the truth over a pass, receive and transmit
+// paths together, in hertz.
+struct DopplerFigures {
+    double rmsHz = 0;
+    double worstHz = 0; // the largest error, unsigned
+    int samples = 0;    // one a round and path
+    int commands = 0;   // frequencies sent
+};
 
 class DopplerSteering : public QObject {
     Q_OBJECT
@@ -83,11 +99,16 @@ public:
     std::optional<double> sentTransmitHz() const { return m_sentTransmit; }
     bool dialTurning() const { return m_dial.has_value(); }
     int commandsSent() const { return m_commandsSent; }
+    // The pass so far (since begin()).
+    DopplerFigures figures() const;
 
 signals:
     void tuned(const slew::radio::RadioTuning &tuning);
     // The operator's dial moved the downlink by this much (Hz, at the satellite).
     void dialFollowed(double offsetHz);
+    // A round's error on the receive path (the radio's frequency less the
+    // truth, Hz), and the transmit path's when Slew tunes it (else NaN).
+    void measured(double receiveErrorHz, double transmitErrorHz);
 
 private:
     void onRead(const RadioFrequencies &frequencies);
@@ -99,6 +120,15 @@ private:
     bool withinBudget();
     void noteSent();
     bool isOwn(double receiveHz) const;
+    // Notes `hz` as on the radio from `takenAtMs` on.
+    struct Held {
+        double hz;
+        qint64 fromMs;
+    };
+    static void noteHeld(std::deque<Held> &held, double hz, qint64 fromMs);
+    // What the radio holds at `nowMs`, as far as known.
+    static std::optional<double> heldAt(const std::deque<Held> &held, qint64 nowMs);
+    void measure();
     bool followsDial() const;
     int leadMs() const;
     double tuningStepHz() const;
@@ -120,11 +150,18 @@ private:
     std::optional<Dial> m_dial;
     bool m_receiveTaken = true; // a reading has shown the last receive frequency on the radio
     bool m_readPending = false;
+    int m_receivesSent = 0;       // receive frequencies sent since begin()
+    int m_receivesBeforeRead = 0; // ...when the pending read was asked
     std::deque<qint64> m_sendTimes; // the last second's commands, for the budget
     double m_lastJulian = 0;
     qint64 m_nowMs = 0;
     qint64 m_lastReadMs = -1;
     int m_commandsSent = 0;
+    std::deque<Held> m_heldReceive, m_heldTransmit; // sent, and from when each is on the radio
+    double m_sumSquares = 0;
+    double m_worst = 0;
+    int m_samples = 0;
+    int m_commandsAtBegin = 0;
     const tracking::StationClock *m_clock = nullptr;
     QTimer m_timer;
     qint64 m_timerStartMs = 0;

@@ -210,6 +210,32 @@ private slots:
         QCOMPARE(followed.count(), 1);
     }
 
+    void theRadiosFrequencyBeforeAosIsNoDial()
+    {
+        // At AOS the radio is on another frequency (where the operator left
+        // it). The first round asks for a reading and sends the first
+        // frequency; the answer comes back after, and shows what the radio
+        // held when asked: not a turn of the dial.
+        FakeRadioLink radio;
+        radio.latency = 40;
+        radio.answerLater = true;
+        radio.receive = 145.0e6;
+        DopplerSteering steering(&radio);
+        SatelliteFrequencies sat;
+        sat.downlinkHz = 435.85e6;
+        steering.begin(sat, sweep);
+        QSignalSpy followed(&steering, &DopplerSteering::dialFollowed);
+        for (qint64 ms = 0; ms <= 5000; ms += 20) {
+            radio.advanceTo(ms);
+            steering.step(julianAt(ms), ms);
+            radio.answerReads();
+        }
+        QCOMPARE(followed.count(), 0);
+        QVERIFY(!steering.dialTurning());
+        QVERIFY(std::abs(*radio.receive - 435.85e6) < 20000);
+        QVERIFY(steering.figures().worstHz < 50);
+    }
+
     void sendsNothingWhileTheDialTurns()
     {
         FakeRadioLink radio;
