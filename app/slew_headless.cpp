@@ -10,6 +10,7 @@
 #include "transport/hostport.h"
 #include "slew_headless.h"
 
+#include "station/radiooptions.h"
 #include "station/stationservice.h"
 #include "bridge/rotctldserver.h"
 #include "protocol/dialect.h"
@@ -105,6 +106,65 @@ std::optional<slew::station::ServiceConfig::Track> readTrack(const QCommandLineP
     track.clockRate = clock->rate;
     return track;
 }
+
+// --radio and what goes with it. Messages name each option as `label` gives it.
+std::optional<slew::station::RadioOptions> readRadio(const QCommandLineParser &parser, const OptionLabel &label,
+                                                     QString *error)
+{
+    using namespace slew::station;
+    RadioOptions radio;
+    radio.uri = parser.value(QStringLiteral("radio")).trimmed();
+    QString why;
+    // Each option's value through its parser; false with the message made.
+    auto read = [&](const char *name, auto parse, auto assign) {
+        const QString option = QString::fromLatin1(name);
+        if (!parser.isSet(option))
+            return true;
+        const auto value = parse(parser.value(option), &why);
+        if (!value) {
+            *error = QStringLiteral("%1: %2").arg(label(option), why);
+            return false;
+        }
+        assign(*value);
+        return true;
+    };
+    if (!read("downlink", slew::radio::parseFrequency, [&](double hz) { radio.downlinkHz = hz; })
+        || !read("uplink", slew::radio::parseFrequency, [&](double hz) { radio.uplinkHz = hz; })
+        || !read("downlink-offset", slew::radio::parseFrequencyOffset, [&](double hz) { radio.downlinkOffsetHz = hz; })
+        || !read("uplink-offset", slew::radio::parseFrequencyOffset, [&](double hz) { radio.uplinkOffsetHz = hz; })
+        || !read("downlink-mode", parseModeName, [&](const QString &m) { radio.downlinkMode = m; })
+        || !read("uplink-mode", parseModeName, [&](const QString &m) { radio.uplinkMode = m; })
+        || !read("doppler", parseDopplerOn, [&](slew::radio::DopplerOn on) { radio.correct = on; })
+        || !read("uplink-follows", parseUplinkFollows, [&](slew::radio::UplinkFollowsDial f) { radio.uplinkFollows = f; }))
+        return std::nullopt;
+    radio.transponderFiles = parser.values(QStringLiteral("transponders"));
+    radio.transponderName = parser.value(QStringLiteral("transponder"));
+    const QString transponders = QStringLiteral("transponders");
+    const bool byHand = radio.downlinkHz || radio.uplinkHz;
+    if (byHand && !radio.transponderFiles.isEmpty()) {
+        *error = QStringLiteral("%1 and --downlink/--uplink: give the frequencies one way").arg(label(transponders));
+        return std::nullopt;
+    }
+    if (radio.uplinkHz && !radio.downlinkHz) {
+        *error = QStringLiteral("%1 needs --downlink too").arg(label(QStringLiteral("uplink")));
+        return std::nullopt;
+    }
+    if (!byHand && radio.transponderFiles.isEmpty()) {
+        *error = QStringLiteral("%1 needs its frequencies: --downlink (and --uplink), or --transponders FILE")
+                     .arg(label(QStringLiteral("radio")));
+        return std::nullopt;
+    }
+    if (parser.isSet(QStringLiteral("transponder")) && radio.transponderFiles.isEmpty()) {
+        *error = QStringLiteral("%1 goes with --transponders").arg(label(QStringLiteral("transponder")));
+        return std::nullopt;
+    }
+    return radio;
+}
+
+// The radio's options, each of which goes with --radio.
+const char *const kRadioOptions[] = {"downlink",        "uplink",         "downlink-mode", "uplink-mode",
+                                     "doppler",         "uplink-follows", "downlink-offset", "uplink-offset",
+                                     "transponders",    "transponder"};
 
 } // namespace
 
@@ -212,6 +272,21 @@ int runHeadless(int argc, char *argv[])
         for (const char *option : {"tle", "min-el", "clock-start", "clock-rate"}) {
             if (parser.isSet(QString::fromLatin1(option)))
                 return fail(QStringLiteral("%1 goes with --track").arg(label(QString::fromLatin1(option))));
+        }
+    }
+
+    if (parser.isSet(QStringLiteral("radio"))) {
+        if (!config.track || config.track->target.kind != slew::tracking::TrackTarget::Kind::Satellite)
+            return fail(QStringLiteral("%1 goes with --track of a satellite: Doppler is a satellite's")
+                            .arg(label(QStringLiteral("radio"))));
+        auto radio = readRadio(parser, label, &error);
+        if (!radio)
+            return fail(error);
+        config.radio = *radio;
+    } else {
+        for (const char *option : kRadioOptions) {
+            if (parser.isSet(QString::fromLatin1(option)))
+                return fail(QStringLiteral("%1 goes with --radio").arg(label(QString::fromLatin1(option))));
         }
     }
 

@@ -135,7 +135,8 @@ ProgramMode makeHeadlessMode()
     mode.synopsis = QStringLiteral("slew --headless [--config FILE] [--connect URI] [--dialect NAME] "
                                    "[--profile FILE] [--limits AZMIN:AZMAX,ELMIN:ELMAX] [--rotctld-listen ADDRESS:PORT] "
                                    "[--rotctld-allow ADDRESSES] [--rotors LIST] [--qth STATION --tle FILE "
-                                   "--track CATNR|NAME|sun|moon|azel:AZ,EL|radec:RA,DEC [--min-el DEG] [--clock-start ISO8601] [--clock-rate N]]");
+                                   "--track CATNR|NAME|sun|moon|azel:AZ,EL|radec:RA,DEC [--min-el DEG] [--clock-start ISO8601] [--clock-rate N] "
+                                   "[--radio URI (--downlink FREQ [--uplink FREQ] | --transponders FILE [--transponder NAME])]]");
     mode.description = QStringLiteral(
         "Runs Slew with no window and no display, as a station service: it keeps the link to the rotator open "
         "and reconnects after a loss, serves the rotctld protocol to trackers, and logs one line per event on "
@@ -146,7 +147,9 @@ ProgramMode makeHeadlessMode()
         {{QStringLiteral("config")},
          QStringLiteral("file"),
          QStringLiteral("Read settings from FILE, one `name = value` a line, where name is one of connect, dialect, "
-                        "profile, limits, rotctld-listen, rotctld-allow, rotctld-max-clients, rotors, qth, tle, track, min-el. Options on the "
+                        "profile, limits, rotctld-listen, rotctld-allow, rotctld-max-clients, rotors, qth, tle, track, min-el, and the radio's "
+                        "radio, downlink, uplink, downlink-mode, uplink-mode, doppler, uplink-follows, downlink-offset, "
+                        "uplink-offset, transponders, transponder. Options on the "
                         "command line win over the file.")},
         connectOption(QStringLiteral("The rotator's link URI (default sim:, the built-in simulator).")),
         dialectOption(),
@@ -180,6 +183,55 @@ ProgramMode makeHeadlessMode()
                                         "let it run, to rehearse a pass on the simulator or on the rotator.")),
         clockRateOption(QStringLiteral("To keep pace, run the simulator at the same time scale (sim:?time_scale=n, "
                                        "slew-sim --time-scale n).")),
+        {{QStringLiteral("radio")},
+         QStringLiteral("uri"),
+         QStringLiteral("With --track of a satellite: keep this radio on its Doppler-corrected frequencies while a "
+                        "pass is tracked, and log the Doppler error at LOS. rigctld://HOST:PORT (Hamlib's rigctld, "
+                        "port 4532 by default), hamlib:MODEL?device=PATH&baud=N (libhamlib in process; MODEL as "
+                        "rigctl -l lists it), sim: (a simulated radio), or controller (the rotator controller's own "
+                        "UP and DN: Easycomm II and III). The frequencies come from --downlink and --uplink or from "
+                        "--transponders."),
+         true},
+        {{QStringLiteral("downlink")},
+         QStringLiteral("freq"),
+         QStringLiteral("With --radio: what the satellite transmits, as 145.8M, 435.125 MHz, 1296200k or hertz."),
+         true},
+        {{QStringLiteral("uplink")},
+         QStringLiteral("freq"),
+         QStringLiteral("With --radio: what the satellite listens on; the radio is put in split and transmits there, "
+                        "Doppler-corrected."),
+         true},
+        {{QStringLiteral("downlink-mode")},
+         QStringLiteral("mode"),
+         QStringLiteral("With --radio: the receive mode at AOS (a Hamlib name: USB, LSB, CW, FM, AM, PKTUSB...)."),
+         true},
+        {{QStringLiteral("uplink-mode")}, QStringLiteral("mode"), QStringLiteral("With --radio: the transmit mode at AOS."), true},
+        {{QStringLiteral("doppler")},
+         QStringLiteral("paths"),
+         QStringLiteral("With --radio: correct both paths (the default), the downlink only or the uplink only "
+                        "(both, downlink, uplink)."),
+         true},
+        {{QStringLiteral("uplink-follows")},
+         QStringLiteral("how"),
+         QStringLiteral("With --radio: when the operator turns the receive dial, move the uplink the same way, the "
+                        "opposite way (an inverting transponder) or not at all (same, opposite, no). A transponder "
+                        "from --transponders sets this itself."),
+         true},
+        {{QStringLiteral("downlink-offset")},
+         QStringLiteral("freq"),
+         QStringLiteral("With --radio: a calibration offset added to the downlink (signed, as -1.2k; within 1 MHz)."),
+         true},
+        {{QStringLiteral("uplink-offset")}, QStringLiteral("freq"), QStringLiteral("With --radio: the same for the uplink."), true},
+        {{QStringLiteral("transponders")},
+         QStringLiteral("file"),
+         QStringLiteral("With --radio: the satellite's transponders from a SatNOGS DB transmitter list (.json) or a "
+                        "Gpredict .trsp file; may be given more than once. Its first alive linear transponder is "
+                        "tuned (else its first alive one) unless --transponder names another."),
+         true},
+        {{QStringLiteral("transponder")},
+         QStringLiteral("name"),
+         QStringLiteral("With --transponders: the transponder to tune, by the start of its description."),
+         true},
         {{QStringLiteral("rotors")},
          QStringLiteral("list"),
          QStringLiteral("Serve these rotors of a multi-rotor controller (the Micro-2g's 1 to 4, as 1,2,4 or 1-4) over "

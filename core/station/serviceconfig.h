@@ -4,6 +4,8 @@
 // config file (app/slew_headless.cpp reads both into this), and the parsers
 // for the options whose syntax is the station's own.
 
+#include "radiooptions.h"
+
 #include "model/rotatorlimits.h"
 #include "model/rotatorprofile.h"
 #include "sky/station.h"
@@ -38,6 +40,9 @@ struct ServiceConfig {
         double clockRate = 1.0;                 // --clock-rate
     };
     std::optional<Track> track;
+    // --radio and what goes with it: the radio tuned for Doppler while the
+    // tracked satellite is up. Needs a satellite's --track.
+    std::optional<RadioOptions> radio;
 };
 
 // "AZMIN:AZMAX,ELMIN:ELMAX" (`--limits 0:450,0:180`) as limits, checked;

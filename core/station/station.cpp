@@ -2,6 +2,7 @@
 #include "station.h"
 
 #include "alarmmonitor.h"
+#include "dopplerradio.h"
 
 #include "bridge/rotctldserver.h"
 #include "session/controllerrotors.h"
@@ -64,6 +65,7 @@ Station::Station(const StationOptions &options, QObject *parent) : QObject(paren
     m_moveWatch = std::make_unique<session::MoveWatch>(first);
     m_pace = std::make_unique<tracking::SimulatorPace>(first, m_clock.get());
     m_runner = std::make_unique<tracking::PassRunner>(first);
+    m_radio = std::make_unique<DopplerRadio>(first, m_runner.get(), m_clock.get());
     wireTracking();
 }
 
@@ -71,6 +73,7 @@ Station::~Station()
 {
     if (m_runner && m_runner->isRunning())
         m_runner->stop(tr("the station is closing"));
+    m_radio.reset(); // it follows the runner, which goes next
 }
 
 void Station::addRotor(int number, const StationOptions &options)

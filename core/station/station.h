@@ -16,6 +16,8 @@
 //     log judge the same conditions in the same words;
 //   - the element sets, the station's place and clock (with the built-in
 //     simulator paced to it), the pass runner (the tracker);
+//   - the radio, kept on the tracked satellite's Doppler-corrected
+//     frequencies during a pass (dopplerradio.h);
 //   - stopping every rotor, and letting the stops leave the link, before exit.
 //
 // Its intent (connect, go to, stop, park, home, track, hand control back,
@@ -59,6 +61,7 @@ struct TrackTarget;
 namespace slew::station {
 
 class AlarmMonitor;
+class DopplerRadio;
 
 struct StationOptions {
     // The rotors of a multi-rotor controller to serve, each with a session,
@@ -106,6 +109,9 @@ public:
     tracking::StationClock *clock() const { return m_clock.get(); }
     tracking::SimulatorPace *simulatorPace() const { return m_pace.get(); }
     tracking::PassRunner *passRunner() const { return m_runner.get(); }
+    // The radio, tuned for Doppler while the pass runner tracks a satellite
+    // (dopplerradio.h); null for a station with no rotor.
+    DopplerRadio *radio() const { return m_radio.get(); }
 
     // --- Intent -------------------------------------------------------------
     // Opens every rotor's link (rotorUri()).
@@ -170,6 +176,7 @@ private:
     std::unique_ptr<tracking::StationClock> m_clock;
     std::unique_ptr<tracking::SimulatorPace> m_pace;
     std::unique_ptr<tracking::PassRunner> m_runner;
+    std::unique_ptr<DopplerRadio> m_radio; // after the runner and clock it follows
     std::optional<sky::Station> m_place;
     bool m_shuttingDown = false;
     int m_stillStopping = 0;

@@ -2,6 +2,7 @@
 #include "stationlog.h"
 
 #include "alarmmonitor.h"
+#include "dopplerradio.h"
 #include "station.h"
 
 #include "bridge/rotctldserver.h"
@@ -22,6 +23,8 @@ StationLog::StationLog(Station *station, std::FILE *file, QObject *parent)
         followRotor(i);
     if (tracking::PassRunner *runner = station->passRunner())
         connect(runner, &tracking::PassRunner::logLine, this, [this](const QString &line) { write(tr("track: %1").arg(line)); });
+    if (DopplerRadio *radio = station->radio())
+        connect(radio, &DopplerRadio::logLine, this, &StationLog::write);
     connect(station, &Station::exitStopSent, this, [this](int number) {
         write((number > 0 ? tr("rotor %1: ").arg(number) : QString()) + tr("rotator stopped"));
     });

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "stationservice.h"
 
+#include "dopplerradio.h"
 #include "station.h"
 #include "stationlog.h"
 
@@ -105,12 +106,39 @@ bool StationService::start(const ServiceConfig &config, QString *error)
             return false;
         }
     }
+    if (config.radio && !startRadio(config, error))
+        return false;
     for (int i = 0; i < m_station->rotorCount(); ++i) {
         const int number = m_station->rotorNumber(i);
         m_log->write((number > 0 ? tr("rotor %1: ").arg(number) : QString())
                      + tr("connecting to %1").arg(m_station->rotorUri(i)));
     }
     m_station->connectRotators();
+    return true;
+}
+
+bool StationService::startRadio(const ServiceConfig &config, QString *error)
+{
+    if (!config.track || config.track->target.kind != tracking::TrackTarget::Kind::Satellite) {
+        *error = tr("--radio goes with --track of a satellite: Doppler is a satellite's");
+        return false;
+    }
+    const int norad = config.track->target.elements.catalogueNumber;
+    QStringList notes;
+    const std::optional<radio::RadioPlan> plan = resolveRadioPlan(*config.radio, norad, &notes, error);
+    if (!plan)
+        return false;
+    DopplerRadio *radio = m_station->radio();
+    QString why;
+    if (!radio->setLink(config.radio->uri, &why)) {
+        *error = tr("--radio: %1").arg(why);
+        return false;
+    }
+    for (const QString &note : std::as_const(notes))
+        m_log->write(tr("radio: %1").arg(note));
+    radio->setPlan(plan);
+    m_log->write(tr("radio: connecting to %1").arg(radio->linkUri()));
+    radio->connectRadio();
     return true;
 }
 

@@ -57,6 +57,9 @@ public:
     // remote trackers are held off.
     bool holdsRotator() const { return m_tracker.hasRotator(); }
     const Tracker &tracker() const { return m_tracker; }
+    // What is tracked and from where, as start() was told.
+    const TrackTarget &target() const { return m_target; }
+    const sky::Station &station() const { return m_station; }
     int passesDone() const { return m_passesDone; }
 
 signals:

@@ -1,0 +1,346 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "dopplerradio.h"
+
+#include "radio/controllerradio.h"
+#include "radio/radiolinks.h"
+#include "session/rotatorsession.h"
+#include "tracking/passrunner.h"
+#include "tracking/stationclock.h"
+#include "tracking/tracktarget.h"
+
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace slew::station {
+
+using radio::RadioLink;
+using tracking::Tracker;
+
+namespace {
+
+// A lost radio is tried again after these many seconds, then every last one.
+constexpr std::array kReopenSeconds{1, 2, 5, 10, 30};
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+QString megahertz(double hz)
+{
+    return QStringLiteral("%1 MHz").arg(hz / 1e6, 0, 'f', 6);
+}
+
+// The larger of two errors, either of which may be NaN (not measured).
+double larger(double held, double error)
+{
+    if (!std::isfinite(error))
+        return held;
+    return !std::isfinite(held) || std::abs(error) > std::abs(held) ? error : held;
+}
+
+} // namespace
+
+DopplerRadio::DopplerRadio(session::RotatorSession *session, tracking::PassRunner *runner,
+                           const tracking::StationClock *clock, QObject *parent)
+    : QObject(parent), m_session(session), m_runner(runner), m_clock(clock), m_worstReceive(kNaN),
+      m_worstTransmit(kNaN)
+{
+    m_reopen.setSingleShot(true);
+    connect(&m_reopen, &QTimer::timeout, this, [this] {
+        if (m_wanted && m_link && m_link->state() == RadioLink::State::Closed)
+            m_link->open();
+    });
+    connect(&m_runner->tracker(), &Tracker::stateChanged, this, &DopplerRadio::onPassState);
+    // The controller's radio rides on the rotator's link: it comes back with it.
+    connect(m_session, &session::RotatorSession::stateChanged, this, [this] {
+        if (m_wanted && m_link && isControllers() && m_session->isConnected()
+            && m_link->state() == RadioLink::State::Closed)
+            m_link->open();
+    });
+}
+
+DopplerRadio::~DopplerRadio()
+{
+    // The steering speaks to the link: it goes first.
+    m_steering.reset();
+}
+
+bool DopplerRadio::setLink(const QString &uri, QString *error)
+{
+    std::unique_ptr<RadioLink> link;
+    if (uri.trimmed() == QLatin1String(kControllerUri)) {
+        link = std::make_unique<radio::ControllerRadioLink>(m_session);
+    } else if (!uri.trimmed().isEmpty()) {
+        QString why;
+        link = radio::makeRadioLink(uri, &why);
+        if (!link) {
+            if (error)
+                *error = why;
+            return false;
+        }
+    }
+    if (isSteering())
+        end(tr("the radio was changed"));
+    m_reopen.stop();
+    m_reopenAttempt = 0;
+    m_steering.reset();
+    if (m_link)
+        m_link->close();
+    m_link = std::move(link);
+    m_foundReceiveHz.reset();
+    if (!m_link)
+        return true;
+    m_steering = std::make_unique<radio::DopplerSteering>(m_link.get());
+    connect(m_steering.get(), &radio::DopplerSteering::measured, this, &DopplerRadio::onMeasured);
+    connect(m_steering.get(), &radio::DopplerSteering::dialFollowed, this, [this](double offsetHz) {
+        emit logLine(tr("radio: the operator's dial moved the downlink by %1 Hz; followed")
+                         .arg(offsetHz, 0, 'f', 0));
+    });
+    connect(m_link.get(), &RadioLink::stateChanged, this, &DopplerRadio::onLinkState);
+    connect(m_link.get(), &RadioLink::frequenciesRead, this, [this](const radio::RadioFrequencies &f) {
+        // What the radio was on before Slew tuned it, to put back after
+        // LOS: the answer to readFound()'s read. A pass waits for it (see
+        // begin()): the steering would take it for the operator's dial.
+        if (!m_readingFound)
+            return;
+        if (f.receiveHz)
+            m_foundReceiveHz = f.receiveHz;
+        m_readingFound = false;
+        onPassState();
+    });
+    connect(m_link.get(), &RadioLink::commandFailed, this, &DopplerRadio::onCommandFailed);
+    if (m_wanted)
+        m_link->open();
+    return true;
+}
+
+void DopplerRadio::onCommandFailed(const QString &command, const QString &why)
+{
+    if (m_readingFound) {
+        // Whatever failed, the radio was not read: a pass need not wait for it.
+        m_readingFound = false;
+        QMetaObject::invokeMethod(this, &DopplerRadio::onPassState, Qt::QueuedConnection);
+    }
+    // A radio that refuses every frequency would refuse twenty a second:
+    // the same refusal is said once a minute, with how many were not said.
+    if (why == m_lastFailure && m_sinceFailure.isValid() && m_sinceFailure.elapsed() < kRepeatedFailureMs) {
+        ++m_failuresNotSaid;
+        return;
+    }
+    QString line = tr("radio: %1: %2").arg(command, why);
+    if (m_failuresNotSaid > 0)
+        line += tr(" (%n more like the last not said)", nullptr, m_failuresNotSaid);
+    emit logLine(line);
+    m_lastFailure = why;
+    m_failuresNotSaid = 0;
+    m_sinceFailure.start();
+}
+
+void DopplerRadio::connectRadio()
+{
+    m_wanted = true;
+    m_reopenAttempt = 0;
+    // The controller's radio opens with the rotator's link (see the constructor).
+    if (isControllers() && !m_session->isConnected())
+        return;
+    if (m_link && m_link->state() == RadioLink::State::Closed)
+        m_link->open();
+}
+
+void DopplerRadio::disconnectRadio()
+{
+    m_wanted = false;
+    m_reopen.stop();
+    if (isSteering())
+        end(tr("the radio was disconnected"));
+    if (m_link)
+        m_link->close();
+}
+
+void DopplerRadio::onLinkState(RadioLink::State state, const QString &detail)
+{
+    emit linkStateChanged(state, detail);
+    switch (state) {
+    case RadioLink::State::Opening:
+        break;
+    case RadioLink::State::Open:
+        m_reopenAttempt = 0;
+        emit logLine(tr("radio: connected to %1 (%2); latency %3 ms, tuning step %4 Hz")
+                         .arg(m_link->uri(), detail)
+                         .arg(m_link->latencyMs())
+                         .arg(m_link->tuningStepHz(), 0, 'f', 0));
+        readFound();
+        onPassState(); // a pass already up is tuned from now on
+        break;
+    case RadioLink::State::Closed:
+        m_readingFound = false;
+        if (isSteering())
+            end(tr("the radio's link closed"));
+        if (m_wanted) {
+            emit logLine(tr("radio: %1: %2").arg(m_link->uri(), detail));
+            scheduleReopen();
+        }
+        break;
+    }
+}
+
+void DopplerRadio::scheduleReopen()
+{
+    // The controller's link comes back with the rotator's (see the constructor).
+    if (isControllers() && !m_session->isConnected())
+        return;
+    const int seconds = kReopenSeconds[std::min<size_t>(size_t(m_reopenAttempt), kReopenSeconds.size() - 1)];
+    ++m_reopenAttempt;
+    m_reopen.start(seconds * 1000);
+}
+
+bool DopplerRadio::isControllers() const
+{
+    return m_link && m_link->uri() == QLatin1String(kControllerUri);
+}
+
+bool DopplerRadio::passIsUp() const
+{
+    return m_runner->isRunning() && m_runner->tracker().state() == Tracker::State::Tracking
+           && m_runner->target().kind == tracking::TrackTarget::Kind::Satellite;
+}
+
+void DopplerRadio::onPassState()
+{
+    const Tracker::State state = m_runner->tracker().state();
+    if (state == Tracker::State::Waiting && !isSteering())
+        readFound(); // the radio as it stands before AOS
+    const bool up = passIsUp();
+    if (up && !isSteering())
+        begin();
+    else if (!up && isSteering())
+        end(state == Tracker::State::Done ? QStringLiteral("LOS") : tr("the pass ended"));
+}
+
+void DopplerRadio::readFound()
+{
+    if (!m_link || !m_link->isOpen() || !m_link->canReadBack())
+        return;
+    m_readingFound = true;
+    m_link->readFrequencies();
+}
+
+QString DopplerRadio::describePlan() const
+{
+    const radio::SatelliteFrequencies &f = m_plan->frequencies;
+    QString text = tr("downlink %1").arg(megahertz(f.downlinkHz + f.downlinkOffsetHz));
+    if (!m_plan->receiveMode.isEmpty())
+        text += QLatin1Char(' ') + m_plan->receiveMode;
+    if (f.uplinkHz) {
+        text += tr(", uplink %1").arg(megahertz(*f.uplinkHz + f.uplinkOffsetHz));
+        if (!m_plan->transmitMode.isEmpty())
+            text += QLatin1Char(' ') + m_plan->transmitMode;
+    }
+    switch (f.correct) {
+    case radio::DopplerOn::Both:
+        break;
+    case radio::DopplerOn::DownlinkOnly:
+        text += tr(", Doppler on the downlink only");
+        break;
+    case radio::DopplerOn::UplinkOnly:
+        text += tr(", Doppler on the uplink only");
+        break;
+    }
+    if (!m_plan->name.isEmpty())
+        text += tr(" (%1)").arg(m_plan->name);
+    return text;
+}
+
+void DopplerRadio::begin()
+{
+    if (!m_plan || !m_link || !m_link->isOpen() || !m_steering || m_readingFound)
+        return; // begun when the radio has been read (or could not be)
+    const tracking::TrackTarget &target = m_runner->target();
+    if (m_plan->noradId != 0 && m_plan->noradId != target.elements.catalogueNumber) {
+        emit logLine(tr("radio: not tuned: its frequencies are for NORAD %1, the pass is of %2 (NORAD %3)")
+                         .arg(m_plan->noradId)
+                         .arg(target.name())
+                         .arg(target.elements.catalogueNumber));
+        return;
+    }
+    // The radio's modes and split first: the pacer keeps their order ahead
+    // of the frequencies that follow.
+    if (!m_plan->receiveMode.isEmpty())
+        m_link->setMode(m_plan->receiveMode, 0);
+    const bool tunesUplink = m_plan->frequencies.uplinkHz.has_value();
+    if (tunesUplink) {
+        m_link->setSplit(true);
+        m_splitTurnedOn = true;
+        if (!m_plan->transmitMode.isEmpty())
+            m_link->setTransmitMode(m_plan->transmitMode, 0);
+    }
+    // The same sky the tracker follows, a copy of its own: lookAt() carries
+    // the propagation on from call to call.
+    auto sky = std::make_shared<tracking::TargetSky>(target);
+    const sky::Station place = m_runner->station();
+    m_steering->begin(m_plan->frequencies, [sky, place](double julian) -> std::optional<double> {
+        const std::optional<sky::LookAngles> look = sky->lookAt(place, julian);
+        return look ? std::optional<double>(look->rangeRateKmS) : std::nullopt;
+    });
+    m_steering->start(m_clock);
+    m_worstReceive = m_worstTransmit = kNaN;
+    m_sinceMeasured.start();
+    emit logLine(tr("radio: AOS: tuning %1 for %2 on %3").arg(target.name(), describePlan(), m_link->uri()));
+    emit steeringChanged(true);
+}
+
+void DopplerRadio::end(const QString &why, bool putBack)
+{
+    if (!m_steering || !m_steering->isSteering())
+        return;
+    m_lastFigures = m_steering->figures();
+    m_steering->stop();
+    m_steering->end();
+    if (putBack)
+        this->putBack();
+    const radio::DopplerFigures &f = m_lastFigures;
+    emit logLine(tr("radio: %1: Doppler error RMS %2 Hz, worst %3 Hz over %4 readings; %5 frequencies sent")
+                     .arg(why)
+                     .arg(f.rmsHz, 0, 'f', 1)
+                     .arg(f.worstHz, 0, 'f', 1)
+                     .arg(f.samples)
+                     .arg(f.commands));
+    emit steeringChanged(false);
+}
+
+void DopplerRadio::putBack()
+{
+    if (!m_link || !m_link->isOpen())
+        return;
+    if (m_splitTurnedOn) {
+        m_link->setSplit(false);
+        m_splitTurnedOn = false;
+    }
+    if (m_foundReceiveHz)
+        m_link->setReceiveHz(*m_foundReceiveHz);
+}
+
+void DopplerRadio::setPlan(const std::optional<RadioPlan> &plan)
+{
+    m_plan = plan;
+    if (isSteering())
+        end(tr("new frequencies"), false);
+    onPassState();
+}
+
+radio::DopplerFigures DopplerRadio::figures() const
+{
+    return isSteering() ? m_steering->figures() : m_lastFigures;
+}
+
+void DopplerRadio::onMeasured(double receiveErrorHz, double transmitErrorHz)
+{
+    m_worstReceive = larger(m_worstReceive, receiveErrorHz);
+    m_worstTransmit = larger(m_worstTransmit, transmitErrorHz);
+    if (m_sinceMeasured.isValid() && m_sinceMeasured.elapsed() < kMeasuredIntervalMs)
+        return;
+    m_sinceMeasured.start();
+    emit measured(m_worstReceive, m_worstTransmit);
+    m_worstReceive = m_worstTransmit = kNaN;
+}
+
+} // namespace slew::station
