@@ -235,7 +235,11 @@ void DopplerSteering::sendDue()
     };
     bool sent = false;
     const double receiveStep = stepFor(receiveRate, receiveWeight);
-    const bool receiveMayGo = !followsDial() || m_receiveTaken;
+    // While the dial is followed, a receive frequency goes out only in
+    // answer to a reading that has just shown the last one taken: from a
+    // timer instead, it could land on a turn made since that reading, and
+    // the turn would never be seen.
+    const bool receiveMayGo = !followsDial() || (m_receiveTaken && m_answeringRead);
     if (receiveMayGo && due(m_sentReceive, wanted.receiveHz, receiveRate, receiveStep) && withinBudget()) {
         const double hz = quantised(ahead(wanted.receiveHz, receiveRate, receiveStep), tuningStepHz());
         m_link->setReceiveHz(hz);
@@ -278,8 +282,21 @@ bool DopplerSteering::isOwn(double receiveHz) const
 
 void DopplerSteering::onRead(const RadioFrequencies &frequencies)
 {
+    m_answeringRead = true;
+    judgeReading(frequencies);
+    m_answeringRead = false;
+}
+
+void DopplerSteering::judgeReading(const RadioFrequencies &frequencies)
+{
     m_readPending = false;
-    if (!m_rangeRate || !followsDial() || !frequencies.receiveHz || !m_sentReceive)
+    if (!m_rangeRate || !followsDial())
+        return;
+    if (!m_sentReceive) {
+        sendDue(); // the pass's first frequency, in answer to the first reading
+        return;
+    }
+    if (!frequencies.receiveHz)
         return;
     // A read asked before Slew's first frequency of the pass shows where
     // the radio was left before it: no turn of the dial, and nothing to judge.
@@ -315,8 +332,11 @@ void DopplerSteering::adoptDial(bool overwritten)
 {
     const double point = m_dial->hz;
     // At rest: the operator's new point. It is heard on the ground; the
-    // satellite's frequency behind it is what Doppler is corrected from.
-    const std::optional<double> rangeRate = m_rangeRate(m_lastJulian);
+    // satellite's frequency behind it is what Doppler is corrected from, as
+    // it was when the dial came to that point (the Doppler has moved on
+    // while it rested, and that is no part of the operator's turn).
+    const double pointJulian = m_lastJulian - double(m_nowMs - m_dial->sinceMs) / kMsPerDay;
+    const std::optional<double> rangeRate = m_rangeRate(pointJulian);
     const bool corrected = m_satellite.correct != DopplerOn::UplinkOnly;
     const double atSatellite = corrected && rangeRate ? point / sky::dopplerFactor(*rangeRate) : point;
     const double offset = atSatellite - (m_satellite.downlinkHz + m_satellite.downlinkOffsetHz);

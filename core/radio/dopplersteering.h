@@ -15,8 +15,9 @@
 //     errors least. The link keeps only the newest value waiting, so a slow
 //     bus skips stale values instead of queueing them.
 //   - The dial: the receive frequency is read back. A new receive
-//     frequency goes out only after a reading has shown the last one taken:
-//     a reading that is none of Slew's recent frequencies is the operator's
+//     frequency goes out only in answer to a reading that has just shown the
+//     last one taken (so it cannot land unseen on a turn made since): a
+//     reading that is none of Slew's recent frequencies is the operator's
 //     hand. Slew then sends nothing until the dial has rested (dialRestMs),
 //     takes the new point as the operator's, moves the uplink with it (the
 //     opposite way on an inverting transponder), and goes on correcting
@@ -112,6 +113,7 @@ signals:
 
 private:
     void onRead(const RadioFrequencies &frequencies);
+    void judgeReading(const RadioFrequencies &frequencies);
     // The dial has rested: its point is the operator's. `overwritten`: a
     // command of Slew's landed over the turn, and the point is sent back.
     void adoptDial(bool overwritten);
@@ -150,6 +152,7 @@ private:
     std::optional<Dial> m_dial;
     bool m_receiveTaken = true; // a reading has shown the last receive frequency on the radio
     bool m_readPending = false;
+    bool m_answeringRead = false; // in onRead(): a reading has just come
     int m_receivesSent = 0;       // receive frequencies sent since begin()
     int m_receivesBeforeRead = 0; // ...when the pending read was asked
     std::deque<qint64> m_sendTimes; // the last second's commands, for the budget

@@ -106,10 +106,11 @@ private slots:
         const double sent = number(askRigctld(port, "i", 1).value(0));
         QVERIFY2(sent < 145.95e6 - 300 && sent > 145.95e6 - 4000, QByteArray::number(sent, 'f', 0).constData());
 
-        // The operator turns the dial 2 kHz up: Slew sends nothing over it,
-        // and once it rests takes it as the operator's new point.
-        QVERIFY(askRigctld(port, QByteArray("F ") + QByteArray::number(heard + 2000, 'f', 0), 1)
-                == QList<QByteArray>{"RPRT 0"});
+        // The operator turns the dial 2 kHz up, in five clicks: Slew sends
+        // nothing over it, and once it rests takes it as the new point.
+        for (int click = 1; click <= 5; ++click)
+            QVERIFY(askRigctld(port, QByteArray("F ") + QByteArray::number(heard + 400 * click, 'f', 0), 1)
+                    == QList<QByteArray>{"RPRT 0"});
         QVERIFY2(logged("radio: the operator's dial moved the downlink by "), out.constData());
         const QRegularExpressionMatch moved =
             QRegularExpression("dial moved the downlink by (-?\\d+) Hz").match(QString::fromUtf8(out));
