@@ -8,6 +8,7 @@
 #include "cli/slewcommandline.h"
 #include "slew_identity.h"
 
+#include "radio/transpondersources.h"
 #include "sky/tlesources.h"
 #include "station/station.h"
 #include "input/logtext.h"
@@ -23,6 +24,7 @@ using namespace slew::sky;
 namespace {
 
 const char kOption[] = "--update-elements";
+const char kTranspondersOption[] = "--update-transponders";
 
 int refuse(const QString &message)
 {
@@ -86,6 +88,60 @@ int runUpdateElements(int argc, char **argv)
         for (const TleSourceStatus &s : sources.status()) {
             std::fprintf(stdout, "%s\n", qPrintable(describeSource(s)));
             if (sourceFailed(s))
+                failed << s.url.toString();
+        }
+        std::fflush(stdout);
+        if (!failed.isEmpty()) {
+            std::fprintf(stderr, "slew: %lld of %lld sources not refreshed: %s\n", qlonglong(failed.size()),
+                         qlonglong(sources.status().size()), qPrintable(failed.join(QStringLiteral(", "))));
+            status = 1;
+        }
+        QCoreApplication::exit(status);
+    });
+    sources.refresh();
+    app.exec();
+    return status;
+}
+
+bool wantsUpdateTransponders(int argc, char **argv)
+{
+    for (int i = 1; i < argc; ++i)
+        if (std::strcmp(argv[i], kTranspondersOption) == 0)
+            return true;
+    return false;
+}
+
+int runUpdateTransponders(int argc, char **argv)
+{
+    using namespace slew::radio;
+    QCoreApplication app(argc, argv);
+    setUpSlewApplication();
+    QCommandLineParser parser;
+    slew::cli::describeTo(parser, slew::cli::slewUpdateTranspondersMode());
+    parser.addPositionalArgument(QStringLiteral("URL"), QStringLiteral("The sources to refresh and keep."),
+                                 QStringLiteral("[URL...]"));
+    parser.process(app);
+
+    QList<QUrl> urls;
+    QString error;
+    if (!readUrls(parser.positionalArguments(), &urls, &error))
+        return refuse(error);
+    if (urls.isEmpty())
+        urls = savedTransponderUrls();
+    if (urls.isEmpty())
+        urls = {QUrl(QString::fromLatin1(kSatnogsTransmittersUrl))};
+    // Kept, so the window and `slew --headless --radio` read the same cache.
+    saveTransponderUrls(urls);
+
+    slew::station::Station station;
+    TransponderSources &sources = *station.transponders();
+    sources.setUrls(urls);
+    int status = 0;
+    QObject::connect(&sources, &TransponderSources::finished, &app, [&sources, &status] {
+        QStringList failed;
+        for (const TransponderSourceStatus &s : sources.status()) {
+            std::fprintf(stdout, "%s\n", qPrintable(describeTransponderSource(s)));
+            if (!s.fetched || !s.error.isEmpty())
                 failed << s.url.toString();
         }
         std::fflush(stdout);

@@ -9,3 +9,8 @@ bool wantsUpdateElements(int argc, char **argv);
 // Returns the exit code: 0 every source refreshed, 1 one or more did not
 // (each named), 2 bad arguments or no sources.
 int runUpdateElements(int argc, char **argv);
+
+// `slew --update-transponders [URL…]`: the same for the transponder sources
+// (core/radio's TransponderSources); the URLs given are kept as the sources.
+bool wantsUpdateTransponders(int argc, char **argv);
+int runUpdateTransponders(int argc, char **argv);

@@ -149,11 +149,6 @@ std::optional<slew::station::RadioOptions> readRadio(const QCommandLineParser &p
         *error = QStringLiteral("%1 needs --downlink too").arg(label(QStringLiteral("uplink")));
         return std::nullopt;
     }
-    if (!byHand && radio.transponderFiles.isEmpty()) {
-        *error = QStringLiteral("%1 needs its frequencies: --downlink (and --uplink), or --transponders FILE")
-                     .arg(label(QStringLiteral("radio")));
-        return std::nullopt;
-    }
     if (parser.isSet(QStringLiteral("transponder")) && radio.transponderFiles.isEmpty()) {
         *error = QStringLiteral("%1 goes with --transponders").arg(label(QStringLiteral("transponder")));
         return std::nullopt;

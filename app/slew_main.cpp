@@ -137,6 +137,8 @@ int main(int argc, char *argv[])
     // And refreshing the element sets into the window's cache.
     if (wantsUpdateElements(argc, argv))
         return runUpdateElements(argc, argv);
+    if (wantsUpdateTransponders(argc, argv))
+        return runUpdateTransponders(argc, argv);
     // A screenshot, --help and --version need no display: choose the
     // offscreen platform before the application object picks one.
     for (int i = 1; i < argc; ++i) {

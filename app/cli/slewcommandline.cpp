@@ -9,6 +9,8 @@
 #include "input/boundedfile.h"
 #include "sky/boundeddownload.h"
 #include "sky/tlesources.h"
+#include "radio/transponderimport.h"
+#include "radio/transpondersources.h"
 #include "tracking/stationclock.h"
 
 #include <QCommandLineParser>
@@ -362,6 +364,32 @@ ProgramMode makeUpdateElementsMode()
     return mode;
 }
 
+ProgramMode makeUpdateTranspondersMode()
+{
+    ProgramMode mode;
+    mode.title = QStringLiteral("Refreshing transponders");
+    mode.synopsis = QStringLiteral("slew --update-transponders [URL...]");
+    mode.description =
+        QStringLiteral(
+            "Refreshes transponder sources into the cache the window and the station service read (beside the "
+            "element sets'): SatNOGS DB's transmitter list (%1, or a saved copy as a file URL) and Gpredict .trsp "
+            "files (file:///path/25544.trsp, named after the satellite's catalogue number). The URLs given are "
+            "kept as the sources; without a URL it refreshes the kept ones, or SatNOGS DB's list when none are "
+            "kept. One line per source, as for the element sets. A download is given up when it is larger than "
+            "%2, sends no data for %3 or takes longer than %4 in all; a new copy replaces the cached one only when "
+            "at most one entry in ten is skipped and it keeps at least half of the cached copy's satellites. "
+            "`slew --headless --radio URI` tunes from this cache when it is given neither --downlink nor "
+            "--transponders.")
+            .arg(QLatin1String(radio::kSatnogsTransmittersUrl), slew::input::byteSizeText(radio::kLargestTransmitterList),
+                 sky::durationText(radio::kTransponderSilenceMs), sky::durationText(radio::kTransponderTransferMs));
+    mode.options = {
+        {{QStringLiteral("update-transponders")},
+         {},
+         QStringLiteral("Refresh the transponders from the URLs that follow, or from the kept sources.")},
+    };
+    return mode;
+}
+
 ProgramMode makeSimMode()
 {
     ProgramMode mode;
@@ -428,7 +456,7 @@ const ProgramDescription &slewProgram()
             "rotator is attached. Every move, from the operator, a tracker, a preset or a raw command, is checked "
             "against the rotator's limits before a byte is sent.");
         p.modes = {makeWindowMode(), makeHeadlessMode(), makeTuneMode(), makePassesMode(), makeWhereMode(),
-                   makeUpdateElementsMode()};
+                   makeUpdateElementsMode(), makeUpdateTranspondersMode()};
         p.sections = {
             {QStringLiteral("Links"),
              QStringLiteral("A link is named by a URI, the same on the command line, in the window and in profiles:\n"
@@ -518,6 +546,11 @@ const ProgramMode &slewWhereMode()
 const ProgramMode &slewUpdateElementsMode()
 {
     return slewProgram().modes.at(5);
+}
+
+const ProgramMode &slewUpdateTranspondersMode()
+{
+    return slewProgram().modes.at(6);
 }
 
 const ProgramDescription &slewSimProgram()

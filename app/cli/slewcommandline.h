@@ -17,6 +17,7 @@ const ProgramMode &slewTuneMode();
 const ProgramMode &slewPassesMode();
 const ProgramMode &slewWhereMode();
 const ProgramMode &slewUpdateElementsMode();
+const ProgramMode &slewUpdateTranspondersMode();
 
 // slew-sim: the simulated rotator as a server.
 const ProgramDescription &slewSimProgram();

@@ -3,11 +3,11 @@
 
 #include "elementsetcheck.h"
 
+#include "input/atomicfile.h"
 #include "input/boundedfile.h"
 
 #include <QDir>
 #include <QFileInfo>
-#include <QSaveFile>
 
 namespace slew::sky {
 namespace {
@@ -62,13 +62,9 @@ SourceUpdate fromCache(const QUrl &url, const CachedCopy &copy, const QString &w
 
 QString save(const QString &cacheFile, const QByteArray &text)
 {
-    if (!QDir().mkpath(QFileInfo(cacheFile).absolutePath()))
-        return QStringLiteral("the cache directory %1 cannot be made").arg(QFileInfo(cacheFile).absolutePath());
     // Written whole or not at all: a crash or a full disk leaves the old copy.
-    QSaveFile file(cacheFile);
-    if (!file.open(QIODevice::WriteOnly) || file.write(text) != text.size() || !file.commit())
-        return QStringLiteral("the new copy was not cached: %1: %2").arg(cacheFile, file.errorString());
-    return {};
+    const QString why = input::saveAtomically(cacheFile, text);
+    return why.isEmpty() ? why : QStringLiteral("the new copy was not cached: %1").arg(why);
 }
 
 } // namespace

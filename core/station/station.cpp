@@ -5,6 +5,7 @@
 #include "dopplerradio.h"
 
 #include "bridge/rotctldserver.h"
+#include "radio/transpondersources.h"
 #include "session/controllerrotors.h"
 #include "session/movewatch.h"
 #include "session/rotatorsession.h"
@@ -54,6 +55,7 @@ Station::Station(const StationOptions &options, QObject *parent) : QObject(paren
     }
     // Offline first: nothing is read or fetched until a face asks.
     m_elementSets = std::make_unique<sky::TleSources>(sky::elementSetCacheDirectory());
+    m_transponders = std::make_unique<radio::TransponderSources>(radio::transponderCacheDirectory());
     m_clock = std::make_unique<tracking::StationClock>();
     if (m_rotors.empty())
         return;

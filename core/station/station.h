@@ -51,6 +51,9 @@ class RotctldServer;
 namespace slew::sky {
 class TleSources;
 }
+namespace slew::radio {
+class TransponderSources;
+}
 namespace slew::tracking {
 class PassRunner;
 class SimulatorPace;
@@ -106,6 +109,9 @@ public:
     // Where the first rotor's moves went: arrived, stopped short, replaced.
     session::MoveWatch *moveWatch() const { return m_moveWatch.get(); }
     sky::TleSources *elementSets() const { return m_elementSets.get(); }
+    // The satellites' transponders, cached beside the element sets; like
+    // them, nothing is read or fetched until a face asks.
+    radio::TransponderSources *transponders() const { return m_transponders.get(); }
     tracking::StationClock *clock() const { return m_clock.get(); }
     tracking::SimulatorPace *simulatorPace() const { return m_pace.get(); }
     tracking::PassRunner *passRunner() const { return m_runner.get(); }
@@ -173,6 +179,7 @@ private:
     std::unique_ptr<session::ControllerRotors> m_controllerRotors;
     std::unique_ptr<session::MoveWatch> m_moveWatch;
     std::unique_ptr<sky::TleSources> m_elementSets;
+    std::unique_ptr<radio::TransponderSources> m_transponders;
     std::unique_ptr<tracking::StationClock> m_clock;
     std::unique_ptr<tracking::SimulatorPace> m_pace;
     std::unique_ptr<tracking::PassRunner> m_runner;

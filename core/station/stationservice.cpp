@@ -6,11 +6,14 @@
 #include "stationlog.h"
 
 #include "bridge/rotctldserver.h"
+#include "radio/transpondersources.h"
 #include "protocol/dialect.h"
 #include "session/rotatorsession.h"
 #include "tracking/passrunner.h"
 #include "tracking/stationclock.h"
 #include "transport/linkfactory.h"
+
+#include <QFileInfo>
 
 namespace slew::station {
 
@@ -124,8 +127,22 @@ bool StationService::startRadio(const ServiceConfig &config, QString *error)
         return false;
     }
     const int norad = config.track->target.elements.catalogueNumber;
+    RadioOptions options = *config.radio;
+    if (!options.downlinkHz && options.transponderFiles.isEmpty()) {
+        // Neither given: the transponders `slew --update-transponders` cached.
+        for (const QUrl &url : radio::savedTransponderUrls()) {
+            const QString file = m_station->transponders()->cacheFile(url);
+            if (QFileInfo::exists(file))
+                options.transponderFiles << file;
+        }
+        if (options.transponderFiles.isEmpty()) {
+            *error = tr("--radio needs its frequencies: --downlink (and --uplink), --transponders FILE, or "
+                        "transponders cached by slew --update-transponders");
+            return false;
+        }
+    }
     QStringList notes;
-    const std::optional<radio::RadioPlan> plan = resolveRadioPlan(*config.radio, norad, &notes, error);
+    const std::optional<radio::RadioPlan> plan = resolveRadioPlan(options, norad, &notes, error);
     if (!plan)
         return false;
     DopplerRadio *radio = m_station->radio();

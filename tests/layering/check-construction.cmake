@@ -12,7 +12,8 @@
 cmake_minimum_required(VERSION 3.25)
 
 set(parts RotatorSession RotctldServer PassRunner Tracker AlarmMonitor TleSources ControllerRotors
-          SharedLine StationClock SimulatorPace MoveWatch ConsoleRunner)
+          SharedLine StationClock SimulatorPace MoveWatch ConsoleRunner DopplerRadio DopplerSteering
+          TransponderSources)
 # file (relative to ROOT) = the parts it may make
 set(allowed_app/slewctl_main.cpp "RotatorSession;ConsoleRunner")
 
