@@ -137,6 +137,15 @@ std::optional<slew::station::RadioOptions> readRadio(const QCommandLineParser &p
         || !read("doppler", parseDopplerOn, [&](slew::radio::DopplerOn on) { radio.correct = on; })
         || !read("uplink-follows", parseUplinkFollows, [&](slew::radio::UplinkFollowsDial f) { radio.uplinkFollows = f; }))
         return std::nullopt;
+    if (parser.isSet(QStringLiteral("transponder-invert"))) {
+        if (radio.uplinkFollows && *radio.uplinkFollows != slew::radio::UplinkFollowsDial::OppositeWay) {
+            *error = QStringLiteral("%1 and --uplink-follows say different things")
+                         .arg(label(QStringLiteral("transponder-invert")));
+            return std::nullopt;
+        }
+        radio.uplinkFollows = slew::radio::UplinkFollowsDial::OppositeWay;
+    }
+    radio.restoreAfterPass = parser.isSet(QStringLiteral("radio-restore"));
     radio.transponderFiles = parser.values(QStringLiteral("transponders"));
     radio.transponderName = parser.value(QStringLiteral("transponder"));
     const QString transponders = QStringLiteral("transponders");
@@ -159,7 +168,7 @@ std::optional<slew::station::RadioOptions> readRadio(const QCommandLineParser &p
 // The radio's options, each of which goes with --radio.
 const char *const kRadioOptions[] = {"downlink",        "uplink",         "downlink-mode", "uplink-mode",
                                      "doppler",         "uplink-follows", "downlink-offset", "uplink-offset",
-                                     "transponders",    "transponder"};
+                                     "transponders",    "transponder",    "transponder-invert", "radio-restore"};
 
 } // namespace
 

@@ -81,6 +81,19 @@ std::optional<ConfiguredArguments> parseConfigText(const QString &text, const QS
         firstLine.insert(name, i);
         if (value.isEmpty())
             continue; // `profile =` in the example: not set
+        if (option->valueName.isEmpty()) {
+            // A switch: `radio-restore = true`.
+            const QString answer = value.toLower();
+            if (answer != u"true" && answer != u"false" && answer != u"yes" && answer != u"no") {
+                *error = QStringLiteral("%1: %2 is a switch: true or false, not '%3'").arg(where, name, shown(value));
+                return std::nullopt;
+            }
+            if (answer == u"true" || answer == u"yes") {
+                result.arguments << QStringLiteral("--%1").arg(name);
+                result.origins.insert(name, where);
+            }
+            continue;
+        }
         result.arguments << QStringLiteral("--%1=%2").arg(name, value);
         result.origins.insert(name, where);
     }

@@ -151,7 +151,7 @@ ProgramMode makeHeadlessMode()
          QStringLiteral("Read settings from FILE, one `name = value` a line, where name is one of connect, dialect, "
                         "profile, limits, rotctld-listen, rotctld-allow, rotctld-max-clients, rotors, qth, tle, track, min-el, and the radio's "
                         "radio, downlink, uplink, downlink-mode, uplink-mode, doppler, uplink-follows, downlink-offset, "
-                        "uplink-offset, transponders, transponder. Options on the "
+                        "uplink-offset, transponders, transponder, transponder-invert, radio-restore. Options on the "
                         "command line win over the file.")},
         connectOption(QStringLiteral("The rotator's link URI (default sim:, the built-in simulator).")),
         dialectOption(),
@@ -218,6 +218,16 @@ ProgramMode makeHeadlessMode()
          QStringLiteral("With --radio: when the operator turns the receive dial, move the uplink the same way, the "
                         "opposite way (an inverting transponder) or not at all (same, opposite, no). A transponder "
                         "from --transponders sets this itself."),
+         true},
+        {{QStringLiteral("transponder-invert")},
+         {},
+         QStringLiteral("With --radio: the frequencies given are an inverting linear transponder's: the uplink follows "
+                        "the operator's dial the opposite way (as --uplink-follows opposite)."),
+         true},
+        {{QStringLiteral("radio-restore")},
+         {},
+         QStringLiteral("With --radio: after each pass put the radio back on the frequency it was found on before AOS, "
+                        "with split off again if Slew turned it on. Without it the radio is left where the pass ended."),
          true},
         {{QStringLiteral("downlink-offset")},
          QStringLiteral("freq"),

@@ -295,8 +295,9 @@ void DopplerRadio::end(const QString &why, bool putBack)
     m_lastFigures = m_steering->figures();
     m_steering->stop();
     m_steering->end();
-    if (putBack)
+    if (putBack && m_restoreAfterPass)
         this->putBack();
+    m_splitTurnedOn = false;
     const radio::DopplerFigures &f = m_lastFigures;
     emit logLine(tr("radio: %1: Doppler error RMS %2 Hz, worst %3 Hz over %4 readings; %5 frequencies sent")
                      .arg(why)

@@ -11,9 +11,12 @@
 //     frequency it sets the receive mode and, with an uplink, split and the
 //     transmit mode.
 //   - It ends with the tracker's pass: at LOS, on Stop, untrack, a lost
-//     rotator link. The radio is then put back as it was found at the
-//     first reading before AOS: its receive frequency, and split off again
-//     when Slew turned it on. (Modes are not read back, so not restored.)
+//     rotator link. Split stays on through the pass. When the operator
+//     asks (setRestoreAfterPass), the radio is then put back as it was
+//     found at the last reading before AOS: its receive frequency, and split
+//     off again when Slew turned it on; otherwise it is left where the pass
+//     ended, as Gpredict leaves it. (Modes are not read back, so not
+//     restored.)
 //   - A lost radio link is opened again after 1, 2, 5, 10 and then every
 //     30 seconds for as long as the station wants its radio; the
 //     controller's link, which rides on the rotator's, when the rotator's
@@ -80,6 +83,10 @@ public:
     void setPlan(const std::optional<RadioPlan> &plan);
     const std::optional<RadioPlan> &plan() const { return m_plan; }
 
+    // Put the radio back as it was found before AOS, after each pass.
+    void setRestoreAfterPass(bool restore) { m_restoreAfterPass = restore; }
+    bool restoresAfterPass() const { return m_restoreAfterPass; }
+
     // Figures of the pass being tuned, or of the last one.
     bool isSteering() const { return m_steering && m_steering->isSteering(); }
     radio::DopplerFigures figures() const;
@@ -118,6 +125,7 @@ private:
     std::unique_ptr<radio::DopplerSteering> m_steering;
     std::optional<RadioPlan> m_plan;
     bool m_wanted = false;
+    bool m_restoreAfterPass = false;
     int m_reopenAttempt = 0;
     QTimer m_reopen;
     // The radio as it was found before AOS, to put back after LOS.

@@ -27,6 +27,7 @@ struct RadioOptions {
     double downlinkOffsetHz = 0, uplinkOffsetHz = 0;          // --downlink-offset, --uplink-offset
     QStringList transponderFiles;        // --transponders: SatNOGS DB JSON lists, Gpredict .trsp files
     QString transponderName;             // --transponder: the start of a description
+    bool restoreAfterPass = false;       // --radio-restore
 };
 
 // "both", "downlink" or "uplink".

@@ -153,6 +153,7 @@ bool StationService::startRadio(const ServiceConfig &config, QString *error)
     }
     for (const QString &note : std::as_const(notes))
         m_log->write(tr("radio: %1").arg(note));
+    radio->setRestoreAfterPass(config.radio->restoreAfterPass);
     radio->setPlan(plan);
     m_log->write(tr("radio: connecting to %1").arg(radio->linkUri()));
     radio->connectRadio();

@@ -79,6 +79,11 @@ void CommandLineTest::configFileBecomesOptions()
                                            "--rotctld-listen=127.0.0.1:4533 # not a comment: part of it"}));
     // Each value knows its line, for the messages about it later.
     QCOMPARE(args->label("connect"), QString("t.conf:3: connect"));
+    // A switch is set by true (or yes), and left out by false.
+    const auto switches = parseConfigText(QStringLiteral("radio-restore = true\ntransponder-invert = no\n"),
+                                          QStringLiteral("s.conf"), slewHeadlessMode(), &error);
+    QVERIFY2(switches, qPrintable(error));
+    QCOMPARE(switches->arguments, QStringList{"--radio-restore"});
     QCOMPARE(args->label("rotctld-listen"), QString("t.conf:6: rotctld-listen"));
     QCOMPARE(args->label("profile"), QString("--profile")); // empty: not set by the file
 }
@@ -95,6 +100,8 @@ void CommandLineTest::configFileRefusesWhatItCannotMean_data()
     QTest::newRow("a name twice") << "connect = sim:\n# the real one\nconnect = tcp://192.0.2.1:1"
                                   << "t.conf:3: 'connect' is set again; it was set on line 1 already";
     QTest::newRow("twice, once empty") << "profile =\nprofile = a.json" << "t.conf:2: 'profile' is set again";
+    QTest::newRow("a switch that is not") << "radio-restore = maybe"
+                                          << "t.conf:1: radio-restore is a switch: true or false, not 'maybe'";
 }
 
 void CommandLineTest::configFileRefusesWhatItCannotMean()

@@ -80,7 +80,7 @@ private slots:
                    {"--headless", "--connect", "sim:", "--limits", "0:450,0:180", "--qth", "JO65hq", "--tle", kTle,
                     "--track", "FLOCK 2P-1", "--clock-start", "2018-01-22T09:17:40Z", "--clock-rate", "20", "--radio",
                     QStringLiteral("rigctld://127.0.0.1:%1").arg(port), "--downlink", "435.85M", "--uplink",
-                    "145.95M", "--downlink-mode", "usb", "--uplink-mode", "LSB", "--uplink-follows", "opposite"});
+                    "145.95M", "--downlink-mode", "usb", "--uplink-mode", "LSB", "--transponder-invert", "--radio-restore"});
         QByteArray out;
         auto logged = [&](const char *text, int ms = 20000) {
             return QTest::qWaitFor(
