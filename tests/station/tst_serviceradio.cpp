@@ -8,6 +8,10 @@
 // badly is refused before anything starts, saying which option is wrong.
 
 #include "../common/hamlibprocess.h"
+#include "../sim/slewsimprocess.h"
+
+#include <QFile>
+#include <QTemporaryDir>
 
 #include <QProcess>
 #include <QRegularExpression>
@@ -140,6 +144,81 @@ private slots:
         QCOMPARE(slew.exitCode(), 0);
         rigctld.terminate();
         QTRY_COMPARE(rigctld.state(), QProcess::NotRunning);
+    }
+
+    void tunesTheControllersRadioThroughAPass()
+    {
+        // The rotator controller drives the radios itself (Easycomm II's
+        // UP/DN): slew-sim, a real process at the same 20 times, records
+        // every line it receives.
+        QTemporaryDir dir;
+        const QString received = dir.filePath("received.log");
+        SlewSimProcess sim;
+        QVERIFY2(sim.start({"--listen", "127.0.0.1:0", "--dialect", "easycomm2", "--time-scale", "20", "--az-max",
+                            "450", "--el-max", "180", "--log-received", received}),
+                 qPrintable(sim.error()));
+        QProcess slew;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.remove("DISPLAY");
+        env.remove("QT_QPA_PLATFORM");
+        slew.setProcessEnvironment(env);
+        slew.start(qEnvironmentVariable("SLEW_BIN"),
+                   {"--headless", "--connect", QStringLiteral("tcp://127.0.0.1:%1").arg(sim.port()), "--dialect",
+                    "easycomm2", "--limits", "0:450,0:180", "--qth", "JO65hq", "--tle", kTle, "--track", "FLOCK 2P-1",
+                    "--clock-start", "2018-01-22T09:17:40Z", "--clock-rate", "20", "--radio", "controller", "--downlink",
+                    "435.85M", "--uplink", "145.95M", "--downlink-mode", "USB", "--uplink-mode", "LSB"});
+        QByteArray out;
+        auto logged = [&](const char *text, int ms) {
+            return QTest::qWaitFor(
+                       [&] {
+                           out += slew.readAllStandardOutput();
+                           return out.contains(text) || slew.state() == QProcess::NotRunning;
+                       },
+                       ms)
+                   && out.contains(text);
+        };
+        QVERIFY2(logged("radio: AOS: tuning FLOCK 2P-1 for downlink 435.850000 MHz USB, uplink 145.950000 MHz LSB on "
+                        "controller",
+                        20000),
+                 (out + slew.readAllStandardError()).constData());
+        QVERIFY2(logged("radio: LOS: Doppler error RMS ", 40000), out.constData());
+        QFile record(received);
+        QVERIFY(record.open(QIODevice::ReadOnly));
+        const QList<QByteArray> lines = record.readAll().split('\n');
+        // The modes, then Doppler-corrected frequencies on both paths: the
+        // downlink above its nominal one while the satellite comes, below
+        // it after; the uplink the other way round.
+        QVERIFY(lines.contains("DMUSB"));
+        QVERIFY(lines.contains("UMLSB"));
+        double highestDown = 0, lowestDown = 1e12, highestUp = 0, lowestUp = 1e12;
+        int downs = 0, ups = 0;
+        for (const QByteArray &line : lines) {
+            const QByteArray t = line.trimmed();
+            if (t.size() > 2 && (t.startsWith("DN") || t.startsWith("UP"))) {
+                bool ok = false;
+                const double hz = t.mid(2).toDouble(&ok);
+                if (!ok)
+                    continue; // a query (DN alone) has no number
+                if (t.startsWith("DN")) {
+                    ++downs;
+                    highestDown = std::max(highestDown, hz);
+                    lowestDown = std::min(lowestDown, hz);
+                } else {
+                    ++ups;
+                    highestUp = std::max(highestUp, hz);
+                    lowestUp = std::min(lowestUp, hz);
+                }
+            }
+        }
+        QVERIFY2(downs > 20 && ups > 20, qPrintable(QString("%1 DN, %2 UP").arg(downs).arg(ups)));
+        QVERIFY2(highestDown > 435.85e6 + 5000 && lowestDown < 435.85e6 - 5000,
+                 qPrintable(QString("%1 .. %2").arg(lowestDown, 0, 'f', 0).arg(highestDown, 0, 'f', 0)));
+        QVERIFY2(lowestUp < 145.95e6 - 1500 && highestUp > 145.95e6 + 1500,
+                 qPrintable(QString("%1 .. %2").arg(lowestUp, 0, 'f', 0).arg(highestUp, 0, 'f', 0)));
+        QSignalSpy finished(&slew, &QProcess::finished);
+        ::kill(pid_t(slew.processId()), SIGTERM);
+        QVERIFY(finished.wait(10000));
+        QCOMPARE(slew.exitCode(), 0);
     }
 
     void refusesABadRadio_data()
