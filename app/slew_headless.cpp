@@ -132,8 +132,8 @@ std::optional<slew::station::RadioOptions> readRadio(const QCommandLineParser &p
         || !read("uplink", slew::radio::parseFrequency, [&](double hz) { radio.uplinkHz = hz; })
         || !read("downlink-offset", slew::radio::parseFrequencyOffset, [&](double hz) { radio.downlinkOffsetHz = hz; })
         || !read("uplink-offset", slew::radio::parseFrequencyOffset, [&](double hz) { radio.uplinkOffsetHz = hz; })
-        || !read("downlink-mode", parseModeName, [&](const QString &m) { radio.downlinkMode = m; })
-        || !read("uplink-mode", parseModeName, [&](const QString &m) { radio.uplinkMode = m; })
+        || !read("downlink-mode", slew::radio::parseModeName, [&](const QString &m) { radio.downlinkMode = m; })
+        || !read("uplink-mode", slew::radio::parseModeName, [&](const QString &m) { radio.uplinkMode = m; })
         || !read("doppler", parseDopplerOn, [&](slew::radio::DopplerOn on) { radio.correct = on; })
         || !read("uplink-follows", parseUplinkFollows, [&](slew::radio::UplinkFollowsDial f) { radio.uplinkFollows = f; }))
         return std::nullopt;

@@ -6,6 +6,9 @@
 #include "cli/slewcommandline.h"
 #include "console/consolecommand.h"
 #include "console/consolerunner.h"
+#include "console/radiocommand.h"
+#include "console/radiorunner.h"
+#include "radio/radiolinks.h"
 #include "linkschemes.h"
 #include "model/rotatorprofile.h"
 #include "protocol/dialect.h"
@@ -97,6 +100,35 @@ private:
     QByteArray m_buffer;
 };
 
+// `slewctl --radio URI [COMMAND]`: one command to a radio, then what it holds.
+int runRadio(QCoreApplication &app, const QString &uri, const QStringList &words, bool json)
+{
+    QString error;
+    const std::optional<slew::console::RadioCommand> command = slew::console::parseRadioCommand(words, &error);
+    if (!command)
+        return badArgument(error);
+    std::unique_ptr<slew::radio::RadioLink> link = slew::radio::makeRadioLink(uri, &error);
+    if (!link)
+        return badArgument(error);
+    slew::console::RadioRunner runner(link.get(), json);
+    QObject::connect(&runner, &slew::console::RadioRunner::output, &app, [](const QString &l) { say(stdout, l); });
+    QObject::connect(&runner, &slew::console::RadioRunner::problem, &app,
+                     [json](const QString &l) { say(stderr, json ? l : QStringLiteral("slewctl: ") + l); });
+    int exitCode = 0;
+    QObject::connect(&runner, &slew::console::RadioRunner::finished, &app, [&](ExitCode code) {
+        exitCode = int(code);
+        app.quit();
+    });
+    slew::cli::TerminationSignalWatcher interrupts;
+    QObject::connect(&interrupts, &slew::cli::TerminationSignalWatcher::terminationRequested, &app, [&] {
+        exitCode = int(ExitCode::Failed);
+        app.quit();
+    });
+    runner.run(*command);
+    app.exec();
+    return exitCode;
+}
+
 } // namespace
 
 int main(int argc, char *argv[])
@@ -120,6 +152,8 @@ int main(int argc, char *argv[])
         parser.showVersion();
 
     const QStringList positional = parser.positionalArguments();
+    if (parser.isSet(QStringLiteral("radio")))
+        return runRadio(app, parser.value(QStringLiteral("radio")), positional, parser.isSet(QStringLiteral("json")));
     if (positional.isEmpty())
         return badArgument(QStringLiteral("which rotator? e.g. slewctl sim: get"));
     slew::model::RotatorProfile profile;

@@ -2,6 +2,7 @@
 #include "slewcommandline.h"
 
 #include "console/consolecommand.h"
+#include "console/radiocommand.h"
 #include "bridge/rotctldserver.h"
 #include "protocol/dialect.h"
 #include "sim/simulatoroptions.h"
@@ -597,7 +598,7 @@ const ProgramDescription &slewctlProgram()
         ProgramMode mode;
         mode.title = QStringLiteral("Options");
         mode.synopsis = QStringLiteral("slewctl [--json] [--dialect NAME] [--profile FILE] [--timeout SECONDS] URI "
-                                       "[COMMAND [ARGUMENTS]]");
+                                       "[COMMAND [ARGUMENTS]] | slewctl [--json] --radio URI [RADIO COMMAND]");
         mode.description = QStringLiteral(
             "Sends one command to a rotator and prints the result, or, without a command, reads commands at a "
             "prompt (or from standard input) until quit. It uses the same core as the Slew window: every move "
@@ -609,6 +610,11 @@ const ProgramDescription &slewctlProgram()
             {{QStringLiteral("timeout")},
              QStringLiteral("seconds"),
              QStringLiteral("How long --wait waits for the rotator to arrive (default 600).")},
+            {{QStringLiteral("radio")},
+             QStringLiteral("uri"),
+             QStringLiteral("Speak to a radio instead of a rotator (rigctld://HOST:PORT, hamlib:MODEL?device=PATH&baud=N, "
+                            "sim:): the words that follow are one radio command (see Radio commands), after which "
+                            "the frequencies the radio holds are printed.")},
         };
         p.modes = {mode};
         p.description = mode.description;
@@ -616,8 +622,13 @@ const ProgramDescription &slewctlProgram()
         for (const QString &line : console::consoleCommandSummary().split(u'\n', Qt::SkipEmptyParts))
             commands += QStringLiteral("  ") + line + u'\n';
         commands.chop(1);
+        QString radioCommands;
+        for (const QString &line : console::radioCommandSummary().split(u'\n', Qt::SkipEmptyParts))
+            radioCommands += QStringLiteral("  ") + line + u'\n';
+        radioCommands.chop(1);
         p.sections = {
             {QStringLiteral("Commands"), commands},
+            {QStringLiteral("Radio commands"), radioCommands},
             {QStringLiteral("Exit status"),
              QStringLiteral("0 done; 1 the controller did not answer, a read-back differed or --wait timed out; 2 a "
                             "bad argument; 3 no link to the rotator, or it was lost; 4 the move or line was refused "
@@ -627,7 +638,8 @@ const ProgramDescription &slewctlProgram()
                             "  slewctl serial:/dev/ttyUSB0?baud=9600 --dialect easycomm2 get\n"
                             "  slewctl --json tcp://127.0.0.1:4533 watch --interval 0.5\n"
                             "  slewctl sim: raw 'AZ EL'\n"
-                            "  slewctl sim: config set 1 0.8")},
+                            "  slewctl sim: config set 1 0.8\n"
+                            "  slewctl --radio rigctld://127.0.0.1:4532 freq 145.8M")},
             {QStringLiteral("See also"), QStringLiteral("slew(1), slew-sim(1), ") + seeAlso()},
         };
         return p;

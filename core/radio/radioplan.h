@@ -47,6 +47,9 @@ std::optional<RadioPlan> planFor(const Transponder &transponder, QString *note, 
 // slip ("145.8" was meant as megahertz): write it with its unit.
 std::optional<double> parseFrequency(const QString &text, QString *error);
 
+// A Hamlib mode name: 1 to 8 letters or digits ("USB", "PKTUSB"), upper-cased.
+std::optional<QString> parseModeName(const QString &text, QString *error);
+
 // A calibration offset in hertz, signed, with the same units: "-1.2k",
 // "350". Within ±1 MHz: a crystal drifts kilohertz, not more.
 std::optional<double> parseFrequencyOffset(const QString &text, QString *error);

@@ -212,6 +212,8 @@ RigctldReply RigctldRadioLink::replyFor(Exchange exchange, RigctldReply::Form fo
         return RigctldReply("get_split_freq", "TX Frequency", form);
     case Exchange::OpeningStep:
         return RigctldReply("get_ts", "Tuning Step", form);
+    case Exchange::OpeningSplit:
+        return RigctldReply("get_split_vfo", "Split", form);
     case Exchange::OpeningLatency:
     case Exchange::SetReceive:
         return RigctldReply("set_freq", {}, form);
@@ -362,6 +364,18 @@ void RigctldRadioLink::finishExchange(const PacedCommand &command, const Rigctld
         } else if (const std::optional<double> step = valueIn(kStepRange)) {
             m_tuningStepHz = *step > 0 ? *step : 1.0; // 0: rigctld has none set
         }
+        // Whether split is on already (the operator's, or a pass before):
+        // reads then ask the transmit frequency too. Asked only of a peer
+        // that answers in the extended form: the default form's two bare
+        // lines could not be told from a stray one.
+        if (m_peerForm == RigctldReply::Form::Extended)
+            next = PacedCommand{CommandKind::Read, QStringLiteral("+s"), int(Exchange::OpeningSplit)};
+        else
+            opened = true;
+        break;
+    case Exchange::OpeningSplit:
+        failure.clear(); // a backend without get_split_vfo: split is then taken as off
+        m_splitOn = !refused && reply.value() && reply.value()->trimmed() == QLatin1String("1");
         opened = true;
         break;
     case Exchange::SetSplitOn:

@@ -14,6 +14,7 @@
 //   +M mode pb    set_mode
 //   +X mode pb    set_split_mode  the transmit side's mode
 //   +f, +i        get_freq, get_split_freq
+//   +s            get_split_vfo   at opening: whether split is on
 //   +n            get_ts          the tuning step
 //
 // Only what rigctld can take goes out. Frequencies in whole hertz, finite
@@ -26,7 +27,8 @@
 // (`\nonsense`) gets no answer at all, which the reply timeout catches.
 //
 // Opening: connect, read `+f`, then time `+F` with the frequency just read
-// to its RPRT, and ask `+n`; then Open. The latency is the set's, not the
+// to its RPRT, ask `+n`, and (of a peer answering in the extended form)
+// `+s`, whether split is on already; then Open. The latency is the set's, not the
 // read's: Hamlib answers get_freq from its cache (500 ms by default)
 // without a byte to the radio, while a set always reaches the radio, and
 // above 100 MHz Hamlib reads the frequency back before it answers
@@ -105,6 +107,7 @@ private:
         OpeningRead,
         OpeningLatency,
         OpeningStep,
+        OpeningSplit,
         SetReceive,
         SetTransmit,
         SetSplitOn,

@@ -40,18 +40,6 @@ std::optional<radio::UplinkFollowsDial> parseUplinkFollows(const QString &text, 
     return std::nullopt;
 }
 
-std::optional<QString> parseModeName(const QString &text, QString *error)
-{
-    static const QRegularExpression kMode(QStringLiteral("^[A-Za-z0-9]{1,8}$"));
-    const QString t = text.trimmed();
-    if (!kMode.match(t).hasMatch()) {
-        *error = QObject::tr("'%1' is not a Hamlib mode name (USB, LSB, CW, FM, AM, PKTUSB, ...)")
-                     .arg(input::loggableText(text, 24));
-        return std::nullopt;
-    }
-    return t.toUpper();
-}
-
 namespace {
 
 // The satellite's transponders from every file, in the order given.

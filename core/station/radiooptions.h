@@ -34,8 +34,6 @@ struct RadioOptions {
 std::optional<radio::DopplerOn> parseDopplerOn(const QString &text, QString *error);
 // "no", "same" or "opposite".
 std::optional<radio::UplinkFollowsDial> parseUplinkFollows(const QString &text, QString *error);
-// A Hamlib mode name: 1 to 8 letters or digits ("USB", "PKTUSB"), upper-cased.
-std::optional<QString> parseModeName(const QString &text, QString *error);
 
 // What to tune for satellite `noradId`. Reads the transponder files (SatNOGS
 // DB's list by its .json name, Gpredict's by .trsp), when given; *notes

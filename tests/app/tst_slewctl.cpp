@@ -4,6 +4,7 @@
 // for a refused move, a lost link and a bad argument; JSON for scripts; the
 // prompt fed from a pipe; Ctrl-C during a watch and during a --wait move.
 
+#include "../common/hamlibprocess.h"
 #include "../sim/slewsimprocess.h"
 
 #include <QFile>
@@ -69,6 +70,7 @@ private slots:
     void interruptEndsAWatch();
     void interruptStopsAWaitingMove();
     void waitSaysWhereAMoveStoppedShort();
+    void tunesARadioThroughRigctld();
 
 private:
     QTemporaryDir m_dir;
@@ -267,6 +269,44 @@ void SlewctlTest::waitSaysWhereAMoveStoppedShort()
     QVERIFY2(err.contains("stopped ") && err.contains("° from the target"), err.constData());
     out += p.readAllStandardOutput();
     QVERIFY2(out.trimmed().split('\n').last().startsWith("az "), out.constData());
+}
+
+void SlewctlTest::tunesARadioThroughRigctld()
+{
+    // `slewctl --radio`: one command to Hamlib's real rigctld (its dummy
+    // rig), then what the radio holds, read back.
+    QProcess rigctld;
+    const quint16 port = startHamlibDaemon(rigctld, "rigctld", {"-m", "1"});
+    QVERIFY(port);
+    const QString uri = QStringLiteral("rigctld://127.0.0.1:%1").arg(port);
+    Run r = slewctl({"--radio", uri, "freq", "145.8M"});
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    QCOMPARE(r.out.trimmed(), QString("receive 145800000 Hz"));
+    r = slewctl({"--radio", uri, "split", "on"});
+    QCOMPARE(r.exitCode, 0);
+    // A new connection knows split is on, so the transmit side is read too.
+    r = slewctl({"--json", "--radio", uri, "tx", "435.1M"});
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+    QCOMPARE(o.value("receive_hz").toDouble(), 145.8e6);
+    QCOMPARE(o.value("transmit_hz").toDouble(), 435.1e6);
+    r = slewctl({"--radio", uri, "mode", "usb"});
+    QCOMPARE(r.exitCode, 0);
+    // Words that make no command, and values that are no frequency or
+    // mode, are refused before anything connects.
+    for (const QStringList &bad : {QStringList{"freq", "nan"}, QStringList{"freq", "145.8"}, QStringList{"mode", "USB 2400"},
+                                   QStringList{"split", "maybe"}, QStringList{"fly"}}) {
+        r = slewctl(QStringList{"--radio", uri} + bad);
+        QVERIFY2(r.exitCode == 2, qPrintable(bad.join(' ') + ": " + r.err));
+        QVERIFY(r.err.startsWith("slewctl: "));
+    }
+    r = slewctl({"--radio", "nosuch://x"});
+    QCOMPARE(r.exitCode, 2);
+    QVERIFY2(r.err.contains("unknown radio link kind 'nosuch'"), qPrintable(r.err));
+    r = slewctl({"--radio", QStringLiteral("rigctld://127.0.0.1:%1").arg(freeTcpPort())});
+    QCOMPARE(r.exitCode, 3); // no link
+    rigctld.terminate();
+    QTRY_COMPARE(rigctld.state(), QProcess::NotRunning);
 }
 
 QTEST_GUILESS_MAIN(SlewctlTest)

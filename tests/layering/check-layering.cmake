@@ -20,7 +20,7 @@ set(allowed_session "model;protocol;transport;input")
 set(allowed_sim "model;protocol;transport;input")
 set(allowed_tuning "session;model;protocol;transport;input")
 set(allowed_bridge "session;model;protocol;transport;input")
-set(allowed_console "session;tuning;model;protocol;transport;input")
+set(allowed_console "radio;session;tuning;model;protocol;transport;input")
 set(allowed_tracking "session;model;protocol;transport;sky;input")
 # radio: links to the radio and the Doppler steering, beside the tracker.
 set(allowed_radio "tracking;session;sky;model;protocol;transport;input")

@@ -210,10 +210,10 @@ private slots:
     void modeNamesAndChoices()
     {
         QString error;
-        QCOMPARE(slew::station::parseModeName(" usb ", &error).value_or(""), QString("USB"));
-        QVERIFY(!slew::station::parseModeName("USB 2400", &error));
-        QVERIFY(!slew::station::parseModeName("USB\nq", &error));
-        QVERIFY(!slew::station::parseModeName("", &error));
+        QCOMPARE(slew::radio::parseModeName(" usb ", &error).value_or(""), QString("USB"));
+        QVERIFY(!slew::radio::parseModeName("USB 2400", &error));
+        QVERIFY(!slew::radio::parseModeName("USB\nq", &error));
+        QVERIFY(!slew::radio::parseModeName("", &error));
         QCOMPARE(slew::station::parseDopplerOn("Uplink", &error).value_or(DopplerOn::Both), DopplerOn::UplinkOnly);
         QVERIFY(!slew::station::parseDopplerOn("up", &error));
         QCOMPARE(slew::station::parseUplinkFollows("opposite", &error).value_or(UplinkFollowsDial::No),

@@ -43,7 +43,7 @@ public:
     QList<QByteArray> received;
     QList<qint64> receivedAtMs;
     int overlapping = 0; // commands that came before the one before was answered
-    QByteArray rx = "145800000", tx = "0", step = "10";
+    QByteArray rx = "145800000", tx = "0", step = "10", split = "0";
     QElapsedTimer clock;
 
     int heldCount() const { return int(m_held.size()); }
@@ -109,6 +109,8 @@ private:
             return "get_split_freq:\nTX Frequency: " + tx + "\nRPRT 0\n";
         if (line == "+n")
             return "get_ts:\nTuning Step: " + step + "\nRPRT 0\n";
+        if (line == "+s")
+            return "get_split_vfo:\nSplit: " + split + "\nTX VFO: VFOB\nRPRT 0\n";
         if (line.startsWith("+F ")) {
             rx = arg;
             return "set_freq: " + arg + "\nRPRT 0\n";
@@ -269,8 +271,8 @@ void RigctldRadioTest::opensReadingFrequencyLatencyAndStep()
     QCOMPARE(link.state(), RadioLink::State::Opening);
     QTRY_COMPARE_WITH_TIMEOUT(link.state(), RadioLink::State::Open, 10000);
     // Read the frequency, set it back unchanged to time the round trip, ask the step.
-    QCOMPARE(sentTexts(sent), (QStringList{"+f", "+F 145800000", "+n"}));
-    QCOMPARE(fake.received, (QList<QByteArray>{"+f", "+F 145800000", "+n"}));
+    QCOMPARE(sentTexts(sent), (QStringList{"+f", "+F 145800000", "+n", "+s"}));
+    QCOMPARE(fake.received, (QList<QByteArray>{"+f", "+F 145800000", "+n", "+s"}));
     QVERIFY2(link.latencyMs() >= 40, qPrintable(QString::number(link.latencyMs())));
     QCOMPARE(link.tuningStepHz(), 10.0);
     QCOMPARE(states.count(), 2);
@@ -378,6 +380,18 @@ void RigctldRadioTest::readsBothFrequenciesWhenSplit()
     QCOMPARE(f.receiveHz.value_or(0), 145800000.0);
     QCOMPARE(f.transmitHz.value_or(0), 435100000.0);
     QCOMPARE(sentTexts(sent), (QStringList{"+f", "+S 1 VFOB", "+I 435100000", "+f", "+i"}));
+
+    // Split already on when the link opens (the operator's, or a pass
+    // before): the first read asks the transmit frequency too.
+    FakeRigctld splitAlready;
+    splitAlready.split = "1";
+    splitAlready.tx = "435200000";
+    const auto second = openOn(splitAlready);
+    QVERIFY(second);
+    QSignalSpy secondRead(second.get(), &RadioLink::frequenciesRead);
+    second->readFrequencies();
+    QVERIFY(secondRead.wait(5000));
+    QCOMPARE(secondRead.at(0).at(0).value<RadioFrequencies>().transmitHz.value_or(0), 435200000.0);
 }
 
 void RigctldRadioTest::refusalsChangeNothing()
@@ -484,8 +498,8 @@ void RigctldRadioTest::unsendableValuesAreRefusedHere()
     QCOMPARE(failed.at(4).at(1).toString(), QStringLiteral("not sent: 2e+12 Hz is outside 1..1e+12 Hz"));
     QCOMPARE(failed.at(5).at(0).toString(), QStringLiteral("+M USB\\x0aq 0"));
     QCOMPARE(link->state(), RadioLink::State::Open);
-    // The fake heard the opening only.
-    QCOMPARE(fake.received.size(), 3);
+    // The fake heard the opening only (+f, +F, +n, +s).
+    QCOMPARE(fake.received.size(), 4);
 }
 
 void RigctldRadioTest::brokenStreamsClose_data()
@@ -635,7 +649,7 @@ void RigctldRadioTest::realRigctldSplitReachesTheRadio()
     link.open();
     QTRY_COMPARE_WITH_TIMEOUT(link.state(), RadioLink::State::Open, 15000);
     // The dummy rig starts on 145 MHz and has no tuning step set (get_ts: 0).
-    QCOMPARE(sentTexts(sent), (QStringList{"+f", "+F 145000000", "+n"}));
+    QCOMPARE(sentTexts(sent), (QStringList{"+f", "+F 145000000", "+n", "+s"}));
     QCOMPARE(link.tuningStepHz(), 1.0);
     QVERIFY(link.latencyMs() >= 0);
     qInfo("rigctld -m 1 answered a set in %d ms", link.latencyMs());
