@@ -135,6 +135,7 @@ std::optional<slew::station::RadioOptions> readRadio(const QCommandLineParser &p
         || !read("downlink-mode", slew::radio::parseModeName, [&](const QString &m) { radio.downlinkMode = m; })
         || !read("uplink-mode", slew::radio::parseModeName, [&](const QString &m) { radio.uplinkMode = m; })
         || !read("doppler", parseDopplerOn, [&](slew::radio::DopplerOn on) { radio.correct = on; })
+        || !read("radio-vfos", parseVfoLayout, [&](slew::radio::VfoLayout l) { radio.vfos = l; })
         || !read("uplink-follows", parseUplinkFollows, [&](slew::radio::UplinkFollowsDial f) { radio.uplinkFollows = f; }))
         return std::nullopt;
     if (parser.isSet(QStringLiteral("transponder-invert"))) {
@@ -168,7 +169,8 @@ std::optional<slew::station::RadioOptions> readRadio(const QCommandLineParser &p
 // The radio's options, each of which goes with --radio.
 const char *const kRadioOptions[] = {"downlink",        "uplink",         "downlink-mode", "uplink-mode",
                                      "doppler",         "uplink-follows", "downlink-offset", "uplink-offset",
-                                     "transponders",    "transponder",    "transponder-invert", "radio-restore"};
+                                     "transponders",    "transponder",    "transponder-invert", "radio-restore",
+                                     "radio-vfos"};
 
 } // namespace
 

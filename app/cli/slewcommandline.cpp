@@ -152,7 +152,7 @@ ProgramMode makeHeadlessMode()
          QStringLiteral("Read settings from FILE, one `name = value` a line, where name is one of connect, dialect, "
                         "profile, limits, rotctld-listen, rotctld-allow, rotctld-max-clients, rotors, qth, tle, track, min-el, and the radio's "
                         "radio, downlink, uplink, downlink-mode, uplink-mode, doppler, uplink-follows, downlink-offset, "
-                        "uplink-offset, transponders, transponder, transponder-invert, radio-restore. Options on the "
+                        "uplink-offset, transponders, transponder, transponder-invert, radio-restore, radio-vfos. Options on the "
                         "command line win over the file.")},
         connectOption(QStringLiteral("The rotator's link URI (default sim:, the built-in simulator).")),
         dialectOption(),
@@ -224,6 +224,12 @@ ProgramMode makeHeadlessMode()
          {},
          QStringLiteral("With --radio: the frequencies given are an inverting linear transponder's: the uplink follows "
                         "the operator's dial the opposite way (as --uplink-follows opposite)."),
+         true},
+        {{QStringLiteral("radio-vfos")},
+         QStringLiteral("layout"),
+         QStringLiteral("With --radio: split (the default: receive on VFOA, transmit on VFOB with split on, as "
+                        "Gpredict does) or main-sub (receive on Sub, transmit on Main, no split: the IC-9700 and "
+                        "its kind in satellite mode, turned on at the radio; through rigctld it needs rigctld -o)."),
          true},
         {{QStringLiteral("radio-restore")},
          {},

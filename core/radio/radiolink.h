@@ -18,6 +18,16 @@
 
 namespace slew::radio {
 
+// Which of the radio's VFOs carry the two paths.
+enum class VfoLayout {
+    // Receive on VFOA, transmit on VFOB with split on (`S 1 VFOB`): most
+    // radios, and Gpredict's way.
+    Split,
+    // Receive on Sub, transmit on Main: the IC-9700 and its kind in their
+    // satellite mode (turned on at the radio), with no split.
+    MainSub,
+};
+
 // What the radio holds, as last read back. Hertz.
 struct RadioFrequencies {
     std::optional<double> receiveHz;
@@ -56,6 +66,14 @@ public:
     // dial can be followed only where they do (a controller's UP/DN answers
     // say only what it was told).
     virtual bool canReadBack() const { return true; }
+
+    // The VFOs the paths use, from the next opening on. Empty when the link
+    // can use them; else why not (the link then keeps Split).
+    virtual QString setVfoLayout(VfoLayout layout)
+    {
+        return layout == VfoLayout::Split ? QString() : tr("%1 has no Main and Sub VFOs to address").arg(uri());
+    }
+    virtual VfoLayout vfoLayout() const { return VfoLayout::Split; }
 
     // The radio's tuning step (Hz) where known, else 1.
     virtual double tuningStepHz() const { return 1.0; }

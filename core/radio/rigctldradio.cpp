@@ -79,6 +79,7 @@ void RigctldRadioLink::open()
     m_receiveRead.reset();
     m_peerForm = RigctldReply::Form::Either;
     m_splitOn = false;
+    m_vfoMode = false;
     m_latencyMs = 0;
     m_tuningStepHz = 1.0;
     setState(State::Opening, tr("%1: connecting to %2:%3").arg(m_uri, m_host).arg(m_port));
@@ -144,34 +145,64 @@ void RigctldRadioLink::submit(CommandKind kind, Exchange exchange, const QString
     m_pacer.submit({kind, text, int(exchange)});
 }
 
+QString RigctldRadioLink::setVfoLayout(VfoLayout layout)
+{
+    m_layout = layout; // checked at the next opening, when VFO mode is known
+    return {};
+}
+
+QString RigctldRadioLink::line(const char *verb, Path path, const QString &arguments) const
+{
+    QString text = QLatin1Char('+') + QLatin1String(verb);
+    if (m_vfoMode) {
+        const bool mainSub = m_layout == VfoLayout::MainSub;
+        text += QLatin1Char(' ')
+                + (mainSub ? (path == Path::Receive ? QStringLiteral("Sub") : QStringLiteral("Main"))
+                           : QStringLiteral("VFOA")); // split commands name the receive VFO
+    }
+    if (!arguments.isEmpty())
+        text += QLatin1Char(' ') + arguments;
+    return text;
+}
+
 void RigctldRadioLink::setReceiveHz(double hz)
 {
     if (acceptFrequency(QStringLiteral("+F"), hz))
-        submit(CommandKind::ReceiveFrequency, Exchange::SetReceive, QStringLiteral("+F ") + hzText(hz));
+        submit(CommandKind::ReceiveFrequency, Exchange::SetReceive, line("F", Path::Receive, hzText(hz)));
 }
 
 void RigctldRadioLink::setTransmitHz(double hz)
 {
-    if (acceptFrequency(QStringLiteral("+I"), hz))
-        submit(CommandKind::TransmitFrequency, Exchange::SetTransmit, QStringLiteral("+I ") + hzText(hz));
+    if (!acceptFrequency(QStringLiteral("+I"), hz))
+        return;
+    if (m_layout == VfoLayout::MainSub)
+        submit(CommandKind::TransmitFrequency, Exchange::SetTransmit, line("F", Path::Transmit, hzText(hz)));
+    else
+        submit(CommandKind::TransmitFrequency, Exchange::SetTransmit, line("I", Path::Transmit, hzText(hz)));
 }
 
 void RigctldRadioLink::setSplit(bool on)
 {
+    if (m_layout == VfoLayout::MainSub)
+        return; // Main and Sub are the two paths already: no split
     if (on)
-        submit(CommandKind::Split, Exchange::SetSplitOn, QStringLiteral("+S 1 VFOB"));
+        submit(CommandKind::Split, Exchange::SetSplitOn, line("S", Path::Receive, QStringLiteral("1 VFOB")));
     else
-        submit(CommandKind::Split, Exchange::SetSplitOff, QStringLiteral("+S 0 VFOA"));
+        submit(CommandKind::Split, Exchange::SetSplitOff, line("S", Path::Receive, QStringLiteral("0 VFOA")));
 }
 
 void RigctldRadioLink::setMode(const QString &mode, int passbandHz)
 {
-    submitMode(CommandKind::Mode, Exchange::SetMode, QStringLiteral("+M"), mode, passbandHz);
+    submitMode(CommandKind::Mode, Exchange::SetMode, line("M", Path::Receive), mode, passbandHz);
 }
 
 void RigctldRadioLink::setTransmitMode(const QString &mode, int passbandHz)
 {
-    submitMode(CommandKind::TransmitMode, Exchange::SetTransmitMode, QStringLiteral("+X"), mode, passbandHz);
+    // With Main/Sub the transmit VFO's own mode; with split, the split mode.
+    if (m_layout == VfoLayout::MainSub)
+        submitMode(CommandKind::TransmitMode, Exchange::SetTransmitMode, line("M", Path::Transmit), mode, passbandHz);
+    else
+        submitMode(CommandKind::TransmitMode, Exchange::SetTransmitMode, line("X", Path::Transmit), mode, passbandHz);
 }
 
 void RigctldRadioLink::submitMode(CommandKind kind, Exchange exchange, const QString &verb, const QString &mode,
@@ -194,22 +225,25 @@ void RigctldRadioLink::submitMode(CommandKind kind, Exchange exchange, const QSt
 
 void RigctldRadioLink::readFrequencies()
 {
-    submit(CommandKind::Read, Exchange::ReadReceive, QStringLiteral("+f"));
+    submit(CommandKind::Read, Exchange::ReadReceive, line("f", Path::Receive));
 }
 
 // --- The wire -------------------------------------------------------------
 
-RigctldReply RigctldRadioLink::replyFor(Exchange exchange, RigctldReply::Form form)
+RigctldReply RigctldRadioLink::replyFor(Exchange exchange, RigctldReply::Form form) const
 {
+    const bool mainSub = m_layout == VfoLayout::MainSub; // the transmit path is Main's own frequency and mode
     // What rigctld echoes for each command in the extended form, and the
     // record a get answers with (the rigctld manual, "Extended Response
     // Protocol"; seen on the wire from rigctld 4.5.4).
     switch (exchange) {
+    case Exchange::OpeningVfoMode: // answered in a line of its own (takeVfoModeAnswer)
     case Exchange::OpeningRead:
     case Exchange::ReadReceive:
         return RigctldReply("get_freq", "Frequency", form);
     case Exchange::ReadTransmit:
-        return RigctldReply("get_split_freq", "TX Frequency", form);
+        return mainSub ? RigctldReply("get_freq", "Frequency", form)
+                       : RigctldReply("get_split_freq", "TX Frequency", form);
     case Exchange::OpeningStep:
         return RigctldReply("get_ts", "Tuning Step", form);
     case Exchange::OpeningSplit:
@@ -218,21 +252,24 @@ RigctldReply RigctldRadioLink::replyFor(Exchange exchange, RigctldReply::Form fo
     case Exchange::SetReceive:
         return RigctldReply("set_freq", {}, form);
     case Exchange::SetTransmit:
-        return RigctldReply("set_split_freq", {}, form);
+        return RigctldReply(mainSub ? "set_freq" : "set_split_freq", {}, form);
     case Exchange::SetSplitOn:
     case Exchange::SetSplitOff:
         return RigctldReply("set_split_vfo", {}, form);
     case Exchange::SetMode:
         return RigctldReply("set_mode", {}, form);
     case Exchange::SetTransmitMode:
-        return RigctldReply("set_split_mode", {}, form);
+        return RigctldReply(mainSub ? "set_mode" : "set_split_mode", {}, form);
     }
     Q_UNREACHABLE();
 }
 
 void RigctldRadioLink::send(const PacedCommand &command)
 {
-    m_reply = std::make_unique<RigctldReply>(replyFor(Exchange(command.tag), m_peerForm));
+    if (Exchange(command.tag) == Exchange::OpeningVfoMode)
+        m_reply.reset(); // its answer is a line of its own: takeVfoModeAnswer()
+    else
+        m_reply = std::make_unique<RigctldReply>(replyFor(Exchange(command.tag), m_peerForm));
     m_sentAt.start();
     m_deadline.start(m_replyTimeoutMs);
     m_socket.write(command.text.toLatin1() + '\n');
@@ -245,7 +282,7 @@ void RigctldRadioLink::onConnected()
     m_deadline.stop();
     // Small command lines must leave at once, not wait for Nagle.
     m_socket.setSocketOption(QAbstractSocket::LowDelayOption, 1);
-    m_pacer.submit({CommandKind::Read, QStringLiteral("+f"), int(Exchange::OpeningRead)});
+    m_pacer.submit({CommandKind::Read, QStringLiteral("+\\chk_vfo"), int(Exchange::OpeningVfoMode)});
 }
 
 void RigctldRadioLink::onSocketError()
@@ -288,8 +325,40 @@ void RigctldRadioLink::onReadyRead()
     }
 }
 
+void RigctldRadioLink::takeVfoModeAnswer(QByteArrayView answer)
+{
+    // rigctld 4.5 answers `ChkVFO: 1` (older ones `CHKVFO 1`, the default
+    // form a bare `1`); a program that speaks rigctld's protocol without
+    // knowing the command refuses it (`RPRT -11`), and is not in VFO mode.
+    QByteArray text = answer.trimmed().toByteArray();
+    for (const QByteArray prefix : {QByteArray("ChkVFO:"), QByteArray("CHKVFO")}) {
+        if (text.startsWith(prefix))
+            text = text.mid(prefix.size()).trimmed();
+    }
+    if (text == "1" || text == "0") {
+        m_vfoMode = text == "1";
+    } else if (!text.startsWith("RPRT ")) {
+        fail(tr("%1: unreadable answer to \\chk_vfo: '%2'")
+                 .arg(m_uri, input::loggableText(QString::fromLatin1(answer), 40)));
+        return;
+    }
+    m_deadline.stop();
+    if (m_layout == VfoLayout::MainSub && !m_vfoMode) {
+        fail(tr("%1: receiving on Sub and transmitting on Main needs rigctld in VFO mode: start it with -o "
+                "(--vfo)")
+                 .arg(m_uri));
+        return;
+    }
+    m_pacer.finished(PacedCommand{CommandKind::Read, line("f", Path::Receive), int(Exchange::OpeningRead)});
+}
+
 void RigctldRadioLink::takeLine(QByteArrayView line)
 {
+    const std::optional<PacedCommand> &inFlight = m_pacer.inFlight();
+    if (!m_reply && inFlight && Exchange(inFlight->tag) == Exchange::OpeningVfoMode) {
+        takeVfoModeAnswer(line);
+        return;
+    }
     if (!m_reply) {
         fail(tr("%1: rigctld sent '%2', which nothing asked for")
                  .arg(m_uri, input::loggableText(QString::fromLatin1(line), 40)));
@@ -347,14 +416,14 @@ void RigctldRadioLink::finishExchange(const PacedCommand &command, const Rigctld
             return;
         }
         m_receiveRead = hz;
-        next = PacedCommand{CommandKind::ReceiveFrequency, QStringLiteral("+F ") + hzText(*hz),
+        next = PacedCommand{CommandKind::ReceiveFrequency, line("F", Path::Receive, hzText(*hz)),
                             int(Exchange::OpeningLatency)};
         break;
     }
     case Exchange::OpeningLatency:
         if (!refused)
             m_latencyMs = int(m_sentAt.elapsed());
-        next = PacedCommand{CommandKind::Read, QStringLiteral("+n"), int(Exchange::OpeningStep)};
+        next = PacedCommand{CommandKind::Read, line("n", Path::Receive), int(Exchange::OpeningStep)};
         break;
     case Exchange::OpeningStep:
         // A backend without get_ts refuses it (RPRT -11): the step is then
@@ -368,8 +437,8 @@ void RigctldRadioLink::finishExchange(const PacedCommand &command, const Rigctld
         // reads then ask the transmit frequency too. Asked only of a peer
         // that answers in the extended form: the default form's two bare
         // lines could not be told from a stray one.
-        if (m_peerForm == RigctldReply::Form::Extended)
-            next = PacedCommand{CommandKind::Read, QStringLiteral("+s"), int(Exchange::OpeningSplit)};
+        if (m_peerForm == RigctldReply::Form::Extended && m_layout == VfoLayout::Split)
+            next = PacedCommand{CommandKind::Read, line("s", Path::Receive), int(Exchange::OpeningSplit)};
         else
             opened = true;
         break;
@@ -395,9 +464,12 @@ void RigctldRadioLink::finishExchange(const PacedCommand &command, const Rigctld
         const std::optional<double> hz = refused ? std::nullopt : valueIn(kFrequencyRange);
         if (!hz)
             break;
-        if (m_splitOn) {
+        if (m_layout == VfoLayout::MainSub) {
             m_receiveRead = hz;
-            next = PacedCommand{CommandKind::Read, QStringLiteral("+i"), int(Exchange::ReadTransmit)};
+            next = PacedCommand{CommandKind::Read, line("f", Path::Transmit), int(Exchange::ReadTransmit)};
+        } else if (m_splitOn) {
+            m_receiveRead = hz;
+            next = PacedCommand{CommandKind::Read, line("i", Path::Transmit), int(Exchange::ReadTransmit)};
         } else {
             read = RadioFrequencies{hz, std::nullopt};
         }

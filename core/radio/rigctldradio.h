@@ -26,6 +26,15 @@
 // takes the next line as the VFO, and a command it does not know
 // (`\nonsense`) gets no answer at all, which the reply timeout catches.
 //
+// VFO mode (rigctld -o, --vfo): every command then names its VFO, and a
+// command without one is misread (`+F 145800000` takes the number for a
+// VFO). Opening asks `+\chk_vfo` first and names VFOA in every command
+// when it answers 1. The Main/Sub layout (receive on Sub, transmit on Main,
+// for the IC-9700 in satellite mode) needs VFO mode: `+F Sub hz` and
+// `+F Main hz`, `+M Sub mode pb` and `+M Main mode pb`, reads `+f Sub` and
+// `+f Main`, and no split; without VFO mode the link does not open, and says
+// to start rigctld with -o.
+//
 // Opening: connect, read `+f`, then time `+F` with the frequency just read
 // to its RPRT, ask `+n`, and (of a peer answering in the extended form)
 // `+s`, whether split is on already; then Open. The latency is the set's, not the
@@ -88,6 +97,10 @@ public:
     void setMode(const QString &mode, int passbandHz) override;
     void setTransmitMode(const QString &mode, int passbandHz) override;
     void readFrequencies() override;
+    QString setVfoLayout(VfoLayout layout) override;
+    VfoLayout vfoLayout() const override { return m_layout; }
+    // rigctld was started in VFO mode (-o): every command names its VFO.
+    bool inVfoMode() const { return m_vfoMode; }
 
     double tuningStepHz() const override { return m_tuningStepHz; }
     int latencyMs() const override { return m_latencyMs; }
@@ -104,6 +117,7 @@ public:
 private:
     // What each exchange is, carried through the pacer as its tag.
     enum class Exchange {
+        OpeningVfoMode,
         OpeningRead,
         OpeningLatency,
         OpeningStep,
@@ -118,9 +132,15 @@ private:
         ReadTransmit,
     };
 
-    static RigctldReply replyFor(Exchange exchange, RigctldReply::Form form);
+    RigctldReply replyFor(Exchange exchange, RigctldReply::Form form) const;
     void submit(CommandKind kind, Exchange exchange, const QString &text);
     void submitMode(CommandKind kind, Exchange exchange, const QString &verb, const QString &mode, int passbandHz);
+    // A command line: `+F 145800000`, or in VFO mode `+F VFOA 145800000`
+    // (`+F Sub 145800000` for the receive path with Main/Sub).
+    enum class Path { Receive, Transmit };
+    QString line(const char *verb, Path path, const QString &arguments = {}) const;
+    // The answer to \chk_vfo: one line of its own, in no form of RigctldReply's.
+    void takeVfoModeAnswer(QByteArrayView line);
     bool acceptFrequency(const QString &command, double hz);
     void send(const PacedCommand &command);
     void onConnected();
@@ -135,6 +155,8 @@ private:
     void fail(const QString &reason);
 
     QString m_uri;
+    VfoLayout m_layout = VfoLayout::Split;
+    bool m_vfoMode = false;
     QString m_host;
     quint16 m_port;
     QTcpSocket m_socket;

@@ -78,6 +78,13 @@ bool DopplerRadio::setLink(const QString &uri, QString *error)
             return false;
         }
     }
+    if (link) {
+        if (const QString why = link->setVfoLayout(m_layout); !why.isEmpty()) {
+            if (error)
+                *error = why;
+            return false;
+        }
+    }
     if (isSteering())
         end(tr("the radio was changed"));
     m_reopen.stop();
@@ -133,6 +140,16 @@ void DopplerRadio::onCommandFailed(const QString &command, const QString &why)
     m_lastFailure = why;
     m_failuresNotSaid = 0;
     m_sinceFailure.start();
+}
+
+QString DopplerRadio::setVfoLayout(radio::VfoLayout layout)
+{
+    if (m_link) {
+        if (QString why = m_link->setVfoLayout(layout); !why.isEmpty())
+            return why;
+    }
+    m_layout = layout;
+    return {};
 }
 
 void DopplerRadio::connectRadio()

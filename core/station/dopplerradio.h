@@ -83,6 +83,12 @@ public:
     void setPlan(const std::optional<RadioPlan> &plan);
     const std::optional<RadioPlan> &plan() const { return m_plan; }
 
+    // Which VFOs carry the two paths (radio/radiolink.h): split (VFOA/VFOB)
+    // or Main/Sub. Empty when the link can, else why not; it applies to
+    // links made after it too, and from the link's next opening.
+    QString setVfoLayout(radio::VfoLayout layout);
+    radio::VfoLayout vfoLayout() const { return m_layout; }
+
     // Put the radio back as it was found before AOS, after each pass.
     void setRestoreAfterPass(bool restore) { m_restoreAfterPass = restore; }
     bool restoresAfterPass() const { return m_restoreAfterPass; }
@@ -126,6 +132,7 @@ private:
     std::optional<RadioPlan> m_plan;
     bool m_wanted = false;
     bool m_restoreAfterPass = false;
+    radio::VfoLayout m_layout = radio::VfoLayout::Split;
     int m_reopenAttempt = 0;
     QTimer m_reopen;
     // The radio as it was found before AOS, to put back after LOS.

@@ -27,6 +27,17 @@ std::optional<radio::DopplerOn> parseDopplerOn(const QString &text, QString *err
     return std::nullopt;
 }
 
+std::optional<radio::VfoLayout> parseVfoLayout(const QString &text, QString *error)
+{
+    const QString t = text.trimmed().toLower();
+    if (t == u"split")
+        return radio::VfoLayout::Split;
+    if (t == u"main-sub")
+        return radio::VfoLayout::MainSub;
+    *error = QObject::tr("'%1': expected split or main-sub").arg(input::loggableText(text, 24));
+    return std::nullopt;
+}
+
 std::optional<radio::UplinkFollowsDial> parseUplinkFollows(const QString &text, QString *error)
 {
     const QString t = text.trimmed().toLower();

@@ -8,6 +8,7 @@
 // top.
 
 #include "radio/doppler.h"
+#include "radio/radiolink.h"
 #include "radio/radioplan.h"
 
 #include <QString>
@@ -28,10 +29,13 @@ struct RadioOptions {
     QStringList transponderFiles;        // --transponders: SatNOGS DB JSON lists, Gpredict .trsp files
     QString transponderName;             // --transponder: the start of a description
     bool restoreAfterPass = false;       // --radio-restore
+    radio::VfoLayout vfos = radio::VfoLayout::Split; // --radio-vfos
 };
 
 // "both", "downlink" or "uplink".
 std::optional<radio::DopplerOn> parseDopplerOn(const QString &text, QString *error);
+// "split" or "main-sub".
+std::optional<radio::VfoLayout> parseVfoLayout(const QString &text, QString *error);
 // "no", "same" or "opposite".
 std::optional<radio::UplinkFollowsDial> parseUplinkFollows(const QString &text, QString *error);
 

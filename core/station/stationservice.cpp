@@ -146,8 +146,8 @@ bool StationService::startRadio(const ServiceConfig &config, QString *error)
     if (!plan)
         return false;
     DopplerRadio *radio = m_station->radio();
-    QString why;
-    if (!radio->setLink(config.radio->uri, &why)) {
+    QString why = radio->setVfoLayout(config.radio->vfos);
+    if (!why.isEmpty() || !radio->setLink(config.radio->uri, &why)) {
         *error = tr("--radio: %1").arg(why);
         return false;
     }

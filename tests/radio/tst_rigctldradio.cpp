@@ -43,7 +43,7 @@ public:
     QList<QByteArray> received;
     QList<qint64> receivedAtMs;
     int overlapping = 0; // commands that came before the one before was answered
-    QByteArray rx = "145800000", tx = "0", step = "10", split = "0";
+    QByteArray rx = "145800000", tx = "0", step = "10", split = "0", chkVfo = "0";
     QElapsedTimer clock;
 
     int heldCount() const { return int(m_held.size()); }
@@ -103,6 +103,8 @@ private:
     QByteArray usual(const QByteArray &line)
     {
         const QByteArray arg = line.mid(3);
+        if (line == "+\\chk_vfo")
+            return "ChkVFO: " + chkVfo + "\n"; // a line of its own, as rigctld 4.5 answers it
         if (line == "+f")
             return "get_freq:\nFrequency: " + rx + "\nRPRT 0\n";
         if (line == "+i")
@@ -155,6 +157,8 @@ private slots:
     void realRigctldSplitReachesTheRadio();
     void realRigctldHundredSetsNewestWins();
     void realRigctldGoingAwayCloses();
+    void vfoModeNamesTheVfo();
+    void realRigctldInVfoModeMainAndSub();
 
 private:
     // A link to the fake, open.
@@ -271,8 +275,8 @@ void RigctldRadioTest::opensReadingFrequencyLatencyAndStep()
     QCOMPARE(link.state(), RadioLink::State::Opening);
     QTRY_COMPARE_WITH_TIMEOUT(link.state(), RadioLink::State::Open, 10000);
     // Read the frequency, set it back unchanged to time the round trip, ask the step.
-    QCOMPARE(sentTexts(sent), (QStringList{"+f", "+F 145800000", "+n", "+s"}));
-    QCOMPARE(fake.received, (QList<QByteArray>{"+f", "+F 145800000", "+n", "+s"}));
+    QCOMPARE(sentTexts(sent), (QStringList{"+\\chk_vfo", "+f", "+F 145800000", "+n", "+s"}));
+    QCOMPARE(fake.received, (QList<QByteArray>{"+\\chk_vfo", "+f", "+F 145800000", "+n", "+s"}));
     QVERIFY2(link.latencyMs() >= 40, qPrintable(QString::number(link.latencyMs())));
     QCOMPARE(link.tuningStepHz(), 10.0);
     QCOMPARE(states.count(), 2);
@@ -498,8 +502,8 @@ void RigctldRadioTest::unsendableValuesAreRefusedHere()
     QCOMPARE(failed.at(4).at(1).toString(), QStringLiteral("not sent: 2e+12 Hz is outside 1..1e+12 Hz"));
     QCOMPARE(failed.at(5).at(0).toString(), QStringLiteral("+M USB\\x0aq 0"));
     QCOMPARE(link->state(), RadioLink::State::Open);
-    // The fake heard the opening only (+f, +F, +n, +s).
-    QCOMPARE(fake.received.size(), 4);
+    // The fake heard the opening only (+\chk_vfo, +f, +F, +n, +s).
+    QCOMPARE(fake.received.size(), 5);
 }
 
 void RigctldRadioTest::brokenStreamsClose_data()
@@ -649,7 +653,7 @@ void RigctldRadioTest::realRigctldSplitReachesTheRadio()
     link.open();
     QTRY_COMPARE_WITH_TIMEOUT(link.state(), RadioLink::State::Open, 15000);
     // The dummy rig starts on 145 MHz and has no tuning step set (get_ts: 0).
-    QCOMPARE(sentTexts(sent), (QStringList{"+f", "+F 145000000", "+n", "+s"}));
+    QCOMPARE(sentTexts(sent), (QStringList{"+\\chk_vfo", "+f", "+F 145000000", "+n", "+s"}));
     QCOMPARE(link.tuningStepHz(), 1.0);
     QVERIFY(link.latencyMs() >= 0);
     qInfo("rigctld -m 1 answered a set in %d ms", link.latencyMs());
@@ -743,6 +747,85 @@ void RigctldRadioTest::realRigctldGoingAwayCloses()
     QTRY_COMPARE(rigctld.state(), QProcess::NotRunning);
     QTRY_COMPARE_WITH_TIMEOUT(link->state(), RadioLink::State::Closed, 10000);
     QCOMPARE(states.last().at(1).toString(), link->uri() + ": rigctld closed the connection");
+}
+
+void RigctldRadioTest::vfoModeNamesTheVfo()
+{
+    // rigctld -o: every command names its VFO, or its number is read as one.
+    FakeRigctld fake;
+    fake.chkVfo = "1";
+    fake.answerOverride = [](const QByteArray &line) -> std::optional<QByteArray> {
+        if (line == "+f VFOA")
+            return QByteArray("get_freq: VFOA\nFrequency: 145800000\nRPRT 0\n");
+        if (line.startsWith("+F VFOA "))
+            return "set_freq: " + line.mid(3) + "\nRPRT 0\n";
+        if (line == "+n VFOA")
+            return QByteArray("get_ts: VFOA\nTuning Step: 0\nRPRT 0\n");
+        if (line == "+s VFOA")
+            return QByteArray("get_split_vfo: VFOA\nSplit: 0\nTX VFO: VFOB\nRPRT 0\n");
+        if (line.startsWith("+S VFOA ") || line.startsWith("+I VFOA "))
+            return QByteArray((line[1] == 'S' ? "set_split_vfo: " : "set_split_freq: ") + line.mid(3) + "\nRPRT 0\n");
+        return std::nullopt; // anything else: RPRT -4, which the test sees below
+    };
+    const auto link = openOn(fake);
+    QVERIFY(link);
+    QVERIFY(link->inVfoMode());
+    QSignalSpy failed(link.get(), &RadioLink::commandFailed);
+    link->setSplit(true);
+    link->setReceiveHz(145900000);
+    link->setTransmitHz(435100000);
+    QTRY_VERIFY(!link->pacer().isBusy() && link->pacer().waitingCount() == 0);
+    QCOMPARE(failed.count(), 0);
+    QCOMPARE(fake.received.mid(1), (QList<QByteArray>{"+f VFOA", "+F VFOA 145800000", "+n VFOA", "+s VFOA",
+                                                       "+S VFOA 1 VFOB", "+F VFOA 145900000", "+I VFOA 435100000"}));
+}
+
+void RigctldRadioTest::realRigctldInVfoModeMainAndSub()
+{
+    // The IC-9700's way in satellite mode, on Hamlib's own rigctld in VFO
+    // mode: receive on Sub, transmit on Main, each read back on its own.
+    QProcess rigctld;
+    const quint16 port = startHamlibDaemon(rigctld, "rigctld", {"-m", "1", "-o"});
+    QVERIFY(port);
+    RigctldRadioLink link(QStringLiteral("rigctld://127.0.0.1:%1").arg(port), "127.0.0.1", port);
+    QCOMPARE(link.setVfoLayout(VfoLayout::MainSub), QString());
+    QSignalSpy failed(&link, &RadioLink::commandFailed);
+    link.open();
+    QTRY_COMPARE_WITH_TIMEOUT(link.state(), RadioLink::State::Open, 15000);
+    QVERIFY(link.inVfoMode());
+    link.setSplit(true); // nothing to do with Main and Sub
+    link.setMode("USB", 0);
+    link.setTransmitMode("LSB", 0);
+    link.setReceiveHz(435850000);
+    link.setTransmitHz(145950000);
+    QSignalSpy read(&link, &RadioLink::frequenciesRead);
+    link.readFrequencies();
+    QVERIFY(read.wait(10000));
+    const auto f = read.at(0).at(0).value<RadioFrequencies>();
+    QCOMPARE(f.receiveHz.value_or(0), 435850000.0);
+    QCOMPARE(f.transmitHz.value_or(0), 145950000.0);
+    QCOMPARE(failed.count(), 0);
+    QCOMPARE(askRigctld(port, "f Sub", 1), (QList<QByteArray>{"435850000"}));
+    QCOMPARE(askRigctld(port, "f Main", 1), (QList<QByteArray>{"145950000"}));
+    QCOMPARE(askRigctld(port, "m Sub", 2).value(0), QByteArray("USB"));
+    QCOMPARE(askRigctld(port, "m Main", 2).value(0), QByteArray("LSB"));
+    QCOMPARE(askRigctld(port, "s VFOA", 2).value(0), QByteArray("0")); // split never turned on
+    link.close();
+
+    // Main and Sub from a rigctld not in VFO mode: refused at opening, saying how.
+    QProcess plain;
+    const quint16 plainPort = startHamlibDaemon(plain, "rigctld", {"-m", "1"});
+    QVERIFY(plainPort);
+    RigctldRadioLink second(QStringLiteral("rigctld://127.0.0.1:%1").arg(plainPort), "127.0.0.1", plainPort);
+    second.setVfoLayout(VfoLayout::MainSub);
+    QSignalSpy states(&second, &RadioLink::stateChanged);
+    second.open();
+    QTRY_COMPARE_WITH_TIMEOUT(second.state(), RadioLink::State::Closed, 15000);
+    QVERIFY2(states.last().at(1).toString().contains("start it with -o"), qPrintable(states.last().at(1).toString()));
+    rigctld.terminate();
+    plain.terminate();
+    QTRY_COMPARE(rigctld.state(), QProcess::NotRunning);
+    QTRY_COMPARE(plain.state(), QProcess::NotRunning);
 }
 
 QTEST_GUILESS_MAIN(RigctldRadioTest)

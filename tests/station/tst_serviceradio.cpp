@@ -254,6 +254,12 @@ private slots:
             << track + QStringList{"--radio", "rigctld://127.0.0.1", "--transponders",
                                    SLEW_TEST_DATA_DIR "/transponders/satnogs-transmitters.json"}
             << "has no transponder for NORAD 41617";
+        QTest::newRow("a layout it does not know")
+            << track + QStringList{"--radio", "rigctld://127.0.0.1", "--downlink", "437.8M", "--radio-vfos", "ab"}
+            << "--radio-vfos: 'ab': expected split or main-sub";
+        QTest::newRow("main and sub behind the controller")
+            << track + QStringList{"--radio", "controller", "--downlink", "437.8M", "--radio-vfos", "main-sub"}
+            << "controller has no Main and Sub VFOs";
         QTest::newRow("uplink only without an uplink")
             << track + QStringList{"--radio", "rigctld://127.0.0.1", "--downlink", "437.8M", "--doppler", "uplink"}
             << "Doppler on the uplink only, but there is no uplink";
