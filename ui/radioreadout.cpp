@@ -43,6 +43,11 @@ RadioReadout::RadioReadout(station::Station *station, QWidget *parent) : QWidget
     m_shift = valueLabel(QStringLiteral("radioDopplerNow"));
     m_dial = valueLabel(QStringLiteral("radioDial"));
     m_figures = valueLabel(QStringLiteral("radioFigures"));
+    // What the radio holds is what the operator glances at during a pass.
+    QFont glance = m_sent->font();
+    glance.setPointSizeF(glance.pointSizeF() * 1.15);
+    glance.setBold(true);
+    m_sent->setFont(glance);
     auto *form = new QFormLayout(this);
     form->setContentsMargins(0, 0, 0, 0);
     form->setVerticalSpacing(3);
