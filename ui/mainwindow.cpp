@@ -13,6 +13,7 @@
 #include "polarplotwidget.h"
 #include "positionreadout.h"
 #include "presetpanel.h"
+#include "radiopanel.h"
 #include "rotatormotion.h"
 #include "rotctldpanel.h"
 #include "rotorspanel.h"
@@ -33,6 +34,7 @@
 
 #include "bridge/rotctldserver.h"
 #include "station/alarmmonitor.h"
+#include "station/dopplerradio.h"
 #include "station/station.h"
 #include "session/controllerrotors.h"
 #include "sky/tlesources.h"
@@ -139,11 +141,15 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     auto *trackingLayout = new QVBoxLayout(trackingTab);
     trackingLayout->addWidget(m_tracking, 1);
     trackingLayout->addWidget(m_alignment);
+    // The radio has a tab of its own: its link, its frequencies and its
+    // live lines do not fit beside the passes on a 720-pixel screen.
+    m_radio = new RadioPanel(station);
 
     m_tabs = new QTabWidget;
     m_tabs->setObjectName(QStringLiteral("mainTabs"));
     m_tabs->addTab(m_charts, tr("Telemetry"));
     m_tabs->addTab(trackingTab, tr("Tracking"));
+    m_tabs->addTab(m_radio, tr("Radio"));
     m_tabs->addTab(m_config, tr("Configuration"));
     m_tabs->addTab(m_traffic, tr("Traffic"));
     m_tabs->addTab(m_trackers, tr("Trackers"));
@@ -199,6 +205,7 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     wireOperatorActions();
     connect(m_trackers, &RotctldPanel::message, this, &MainWindow::logInfo);
     connect(m_tracking, &TrackingPanel::message, this, &MainWindow::logInfo);
+    connect(m_radio, &RadioPanel::message, this, &MainWindow::logInfo);
     connect(m_alignment, &AlignmentPanel::message, this, &MainWindow::logInfo);
     m_time = new TimeController(station, this);
     new RehearsalMarker(station->clock(), this);
@@ -207,6 +214,8 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     // What the tracker measures while it tracks is charted with the rest.
     connect(&station->passRunner()->tracker(), &tracking::Tracker::pointingError, m_recorder,
             &TelemetryRecorder::recordPointingError);
+    // And what the radio measures while it tunes a pass.
+    connect(station->radio(), &station::DopplerRadio::measured, m_recorder, &TelemetryRecorder::recordDopplerError);
     // The place the station keeps; the Tracking tab follows it by itself.
     connect(station, &station::Station::placeChanged, m_alignment, &AlignmentPanel::setStation);
     station->restoreSavedPlace();

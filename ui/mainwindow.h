@@ -1,8 +1,8 @@
 #pragma once
 // The operator window: connection bar and alarm banner on top; the polar
 // plot; the control column (position, go-to, jog, Stop, Park/Home, presets);
-// and tabs with the live charts, the config editor, the traffic console and
-// the event log. It is a view of a Station (core/station/station.h): it
+// and tabs with the live charts, tracking, the radio, the config editor, the
+// traffic console and the event log. It is a view of a Station (core/station/station.h): it
 // wires widgets to the Station's parts and makes none of its own, and holds
 // no protocol state.
 
@@ -35,6 +35,7 @@ class ParkHomePanel;
 class PolarPlotWidget;
 class PositionReadout;
 class PresetPanel;
+class RadioPanel;
 class RotctldPanel;
 class RotorsPanel;
 class StopButton;
@@ -86,6 +87,8 @@ public:
     session::ControllerRotors *controllerRotors() const { return m_controllerRotors; }
     RotorsPanel *rotorsPanel() const { return m_rotorsPanel; }
     TrackingPanel *trackingPanel() const { return m_tracking; }
+    // The station's radio: its link, the frequencies to tune, the pass's Doppler.
+    RadioPanel *radioPanel() const { return m_radio; }
     AlignmentPanel *alignmentPanel() const { return m_alignment; }
     // Sky → Time controller…: the station clock, and rehearsals.
     TimeController *timeController() const { return m_time; }
@@ -143,6 +146,7 @@ private:
     session::ControllerRotors *m_controllerRotors;
     RotorsPanel *m_rotorsPanel;
     TrackingPanel *m_tracking;
+    RadioPanel *m_radio;
     AlignmentPanel *m_alignment;
     TimeController *m_time;
     sky::TleSources *m_elementSets;

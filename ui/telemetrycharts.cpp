@@ -114,6 +114,14 @@ TelemetryCharts::TelemetryCharts(const model::TelemetryHistory *history, QWidget
                                {{Series::PointingError, QColor(0xf2, 0x6b, 0x9a)}}, Drawn::Dots);
     pointing.hiddenUntilRecorded = true;
     pointing.box->hide();
+    // Under the pointing error, on the same time axis: the antenna and the
+    // radio during one pass, one above the other.
+    Panel &doppler = addPanel(QStringLiteral("Doppler"), tr("Doppler error"), QStringLiteral("Hz"),
+                              {{Series::ReceiveDopplerError, QColor(0x4c, 0xd9, 0xc8)},
+                               {Series::TransmitDopplerError, QColor(0xf2, 0xc0, 0x3c)}},
+                              Drawn::Dots);
+    doppler.hiddenUntilRecorded = true;
+    doppler.box->hide();
     for (Panel &p : m_panels) {
         layout->addWidget(p.box, 1);
         m_aligner->add(p.chart, p.view);

@@ -2,9 +2,10 @@
 // Live charts of the recorded telemetry: position actual vs commanded, speed
 // (IP7/IP8), load (IP5/IP6), temperature (IP0), the status and error
 // registers (GS, GE) as lanes of named states, and the pointing error while
-// Slew tracks, as dots: a line would join one pass to the next across the
-// hours between them. That panel appears once there is a pointing error to
-// show, so a window that never tracks keeps its room.
+// Slew tracks, and under it the radio's Doppler error on each path, as dots:
+// a line would join one pass to the next across the hours between them.
+// Those two panels appear once there is something to show, so a window that
+// never tracks keeps its room.
 // Each chart is headed by a line with its name, unit and legend, read
 // across: a title turned on its side beside the axis has only the chart's
 // height, a hundred pixels or less, and was cut to "Spe…". The plot areas

@@ -30,6 +30,8 @@ QString unitOf(Series s)
     case Series::AzVelocity:
     case Series::ElVelocity: return QStringLiteral("deg/s");
     case Series::Temperature: return QStringLiteral("degC");
+    case Series::ReceiveDopplerError:
+    case Series::TransmitDopplerError: return QStringLiteral("Hz");
     default: return {}; // load is the controller's own number; the registers are bits
     }
 }
@@ -89,6 +91,10 @@ std::vector<TelemetryCsvColumn> telemetryCsvColumns()
         // is finer than any rotator points.
         if (series == Series::PointingError)
             c.decimals = 3;
+        // The radio's error, measured against a frequency to the hertz:
+        // a tenth is all there is to it.
+        if (series == Series::ReceiveDopplerError || series == Series::TransmitDopplerError)
+            c.decimals = 1;
         columns.push_back(c);
     }
     return columns;

@@ -59,6 +59,8 @@ QString TelemetryRecorder::seriesLabel(Series s)
     case ElStatus: return tr("GS el");
     case ErrorFlags: return tr("GE");
     case PointingError: return tr("Pointing error");
+    case ReceiveDopplerError: return tr("Receive Doppler error");
+    case TransmitDopplerError: return tr("Transmit Doppler error");
     default: return {};
     }
 }
@@ -78,6 +80,16 @@ void TelemetryRecorder::record(Series s, qint64 now, double value, bool onlyOnCh
 void TelemetryRecorder::recordPointingError(double degrees)
 {
     record(PointingError, QDateTime::currentMSecsSinceEpoch(), degrees, false);
+    emit recorded();
+}
+
+void TelemetryRecorder::recordDopplerError(double receiveHz, double transmitHz)
+{
+    // A path that is not tuned is not recorded: a gap, not zeros (record()
+    // skips NaN).
+    const qint64 now = QDateTime::currentMSecsSinceEpoch();
+    record(ReceiveDopplerError, now, receiveHz, false);
+    record(TransmitDopplerError, now, transmitHz, false);
     emit recorded();
 }
 

@@ -2,7 +2,8 @@
 // Writes what the session reports into a TelemetryHistory: position, the
 // commanded position (CR10/CR11), speed, load, temperature, and the status
 // and error registers; and, while Slew tracks, the pointing error the
-// tracker measures. Recording goes on while the charts are paused.
+// tracker measures and the Doppler error the radio measures on each path.
+// Recording goes on while the charts are paused.
 
 #include "model/telemetryhistory.h"
 #include "session/rotatorsession.h"
@@ -18,7 +19,8 @@ class TelemetryRecorder : public QObject {
 public:
     enum Series {
         AzActual, ElActual, AzCommanded, ElCommanded, AzVelocity, ElVelocity,
-        AzLoad, ElLoad, Temperature, AzStatus, ElStatus, ErrorFlags, PointingError, SeriesCount
+        AzLoad, ElLoad, Temperature, AzStatus, ElStatus, ErrorFlags, PointingError,
+        ReceiveDopplerError, TransmitDopplerError, SeriesCount
     };
     Q_ENUM(Series)
 
@@ -40,6 +42,10 @@ public slots:
     // tracker measures it on each position while it tracks. Between passes
     // nothing is recorded: the series has a gap, not zeros.
     void recordPointingError(double degrees);
+    // How far the radio is from the Doppler-corrected frequency on the
+    // receive and the transmit path, in hertz (station/dopplerradio.h's
+    // measured(): at most five a second); NaN for a path not tuned.
+    void recordDopplerError(double receiveHz, double transmitHz);
 
 signals:
     void recorded(); // something was added

@@ -167,6 +167,7 @@ void DopplerRadio::disconnectRadio()
 {
     m_wanted = false;
     m_reopen.stop();
+    m_reopenAttempt = 0;
     if (isSteering())
         end(tr("the radio was disconnected"));
     if (m_link)
@@ -208,6 +209,7 @@ void DopplerRadio::scheduleReopen()
     const int seconds = kReopenSeconds[std::min<size_t>(size_t(m_reopenAttempt), kReopenSeconds.size() - 1)];
     ++m_reopenAttempt;
     m_reopen.start(seconds * 1000);
+    emit reopenScheduled(m_reopenAttempt, seconds);
 }
 
 bool DopplerRadio::isControllers() const

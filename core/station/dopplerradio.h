@@ -77,6 +77,8 @@ public:
     void connectRadio();
     void disconnectRadio();
     bool isWanted() const { return m_wanted; }
+    // Tries since the link was last open (0 while it is, or not wanted).
+    int reopenAttempts() const { return m_reopenAttempt; }
 
     // What to tune: takes effect at once during a pass (the steering starts
     // over with it), else at the next AOS. Nothing: the radio is left alone.
@@ -102,6 +104,8 @@ public:
 
 signals:
     void linkStateChanged(slew::radio::RadioLink::State state, const QString &detail);
+    // A lost link is opened again in `seconds`: try number `attempt` since it was last open.
+    void reopenScheduled(int attempt, int seconds);
     void steeringChanged(bool steering);
     // The Doppler error on the receive path (Hz): the largest of the rounds
     // since the last one said, with its sign; and the transmit path's (NaN

@@ -4,18 +4,22 @@
 # about how the parts work together is written once. This check reads every
 # source under ui/ and app/ and fails naming each place that makes one of
 # the core's station parts itself: `new T(`, `make_unique<T>`,
-# `make_shared<T>`, or a variable `T name;` / `T name(...)` / `T name{...}`.
-# slewctl is one conversation with one controller, and keeps its bare session.
+# `make_shared<T>`, or a variable `T name;` / `T name(...)` / `T name{...}`,
+# or that calls a factory of one (a radio link from its URI).
+# slewctl is one conversation with one controller, or one radio, and keeps
+# its bare session or radio link.
 #
 #   cmake -DROOT=path/to/source -P check-construction.cmake
 
 cmake_minimum_required(VERSION 3.25)
 
 set(parts RotatorSession RotctldServer PassRunner Tracker AlarmMonitor TleSources ControllerRotors
-          SharedLine StationClock SimulatorPace MoveWatch ConsoleRunner DopplerRadio DopplerSteering
-          TransponderSources)
+          SharedLine StationClock SimulatorPace MoveWatch ConsoleRunner TransponderSources
+          DopplerRadio DopplerSteering RadioLink RigctldRadioLink ControllerRadioLink)
+# Functions that make a part; the part each makes.
+set(factories "makeRadioLink=RadioLink")
 # file (relative to ROOT) = the parts it may make
-set(allowed_app/slewctl_main.cpp "RotatorSession;ConsoleRunner")
+set(allowed_app/slewctl_main.cpp "RotatorSession;ConsoleRunner;RadioLink")
 
 file(GLOB_RECURSE files RELATIVE ${ROOT} ${ROOT}/ui/*.h ${ROOT}/ui/*.cpp ${ROOT}/app/*.h ${ROOT}/app/*.cpp)
 set(faults "")
@@ -33,6 +37,14 @@ foreach(file ${files})
            OR text MATCHES "make_(unique|shared)<${q}${part}>"
            OR text MATCHES "(^|[\n;{}(])[ \t]*(const[ \t]+)?${q}${part}[ \t]+[a-zA-Z_][a-zA-Z0-9_]*[ \t]*[;({]")
             list(APPEND faults "${file}: makes a ${part}, where it should take the Station's")
+        endif()
+    endforeach()
+    foreach(factory ${factories})
+        string(REPLACE "=" ";" pair "${factory}")
+        list(GET pair 0 function)
+        list(GET pair 1 part)
+        if(NOT part IN_LIST allowed_${file} AND text MATCHES "${function}[ \t]*\\(")
+            list(APPEND faults "${file}: makes a ${part} (${function}), where it should take the Station's")
         endif()
     endforeach()
 endforeach()

@@ -346,6 +346,7 @@ private slots:
         history.append(Series::AzActual, t4, 359.99);
         history.append(Series::ElActual, t4, -0.5);
         history.append(Series::PointingError, t4, 0.1234567);
+        history.append(Series::ReceiveDopplerError, t4, -2.345);
 
         TelemetryCharts charts(&history);
         charts.setWindowMs(5 * 60 * 1000);
@@ -365,7 +366,9 @@ private slots:
                                     QStringLiteral("Az load"),         QStringLiteral("El load"),
                                     QStringLiteral("Temperature (degC)"), QStringLiteral("GS az"),
                                     QStringLiteral("GS el"),           QStringLiteral("GE"),
-                                    QStringLiteral("Pointing error (deg)")};
+                                    QStringLiteral("Pointing error (deg)"),
+                                    QStringLiteral("Receive Doppler error (Hz)"),
+                                    QStringLiteral("Transmit Doppler error (Hz)")};
         QCOMPARE(csvFields(lines.takeFirst()), header);
         QCOMPARE(lines.size(), 4); // one row per time, not per sample
 
@@ -387,7 +390,8 @@ private slots:
                            QStringLiteral("0x0c homing error, motor error, possible over-temperature")}}));
         QCOMPARE(csvFields(lines[3]), row(t4, {{QStringLiteral("Az (deg)"), QStringLiteral("359.99")},
                                                {QStringLiteral("El (deg)"), QStringLiteral("-0.5")},
-                                               {QStringLiteral("Pointing error (deg)"), QStringLiteral("0.123")}}));
+                                               {QStringLiteral("Pointing error (deg)"), QStringLiteral("0.123")},
+                                               {QStringLiteral("Receive Doppler error (Hz)"), QStringLiteral("-2.3")}}));
         QVERIFY(!lines[0].contains(QStringLiteral("16.040001")));
     }
 };

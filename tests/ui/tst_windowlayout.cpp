@@ -124,8 +124,10 @@ private slots:
         settle();
         QCOMPARE(f.window->size(), size);
 
-        // Tracking: the pointing error's chart appears under the others.
+        // Tracking: the pointing error's chart appears under the others, and
+        // the radio's Doppler error under it.
         f.window->findChild<slew::ui::TelemetryRecorder *>()->recordPointingError(0.25);
+        f.window->findChild<slew::ui::TelemetryRecorder *>()->recordDopplerError(1.5, -0.5);
         f.window->tabs()->setCurrentIndex(0);
         settle();
         QCOMPARE(f.window->size(), size);

@@ -1,0 +1,528 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The Radio tab in the operator window, on a real X11 server: a radio URI
+// the station refuses is said and changes nothing; frequencies are read as
+// the station service reads them, a bad one refused under its field with no
+// plan set, good ones set the station radio's plan; what is applied is kept
+// per satellite and comes back when that satellite is tracked again, and at
+// the next start with the radio's link. With Hamlib's own rigctld (dummy
+// rig) as the radio, the panel connects and says so, says the tries after
+// the radio is lost, and through a rehearsed pass of FLOCK 2P-1 over JO65hq
+// (2018-01-22, AOS 09:15:45 above 0°, on the built-in rotator simulator at
+// 20 times) shows what the radio is sent, the Doppler shift and the pass's
+// figures, which stay after LOS, while the Telemetry tab charts the Doppler
+// error. The tab holds at 1280x720 with every line filled.
+
+#include "../common/hamlibprocess.h"
+#include "layoutfaults.h"
+#include "windowfixture.h"
+
+#include "linkschemes.h"
+#include "operatortheme.h"
+#include "radiolinkbox.h"
+#include "radiopanel.h"
+#include "radioplanform.h"
+#include "sky/tlesources.h"
+#include "sky/utctime.h"
+#include "station/dopplerradio.h"
+#include "telemetrycharts.h"
+#include "telemetryrecorder.h"
+#include "trackingpanel.h"
+
+#include <QApplication>
+#include <QComboBox>
+#include <QGroupBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QProcess>
+#include <QPushButton>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QTabWidget>
+#include <QTest>
+#include <QXYSeries>
+
+using slew::radio::DopplerOn;
+using slew::radio::RadioPlan;
+using slew::radio::UplinkFollowsDial;
+using slew::station::DopplerRadio;
+using slew::ui::RadioPanel;
+using slew::ui::TelemetryRecorder;
+using slew::ui::TrackingPanel;
+
+namespace {
+
+const QString kAllSets = QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle");
+constexpr int kFlock = 41617;
+constexpr int kJpss = 43013;
+
+bool loadSets(slew::sky::TleSources *sets)
+{
+    sets->setUrls({QUrl::fromLocalFile(kAllSets)});
+    QSignalSpy loaded(sets, &slew::sky::TleSources::finished);
+    sets->refresh();
+    return loaded.count() > 0 || loaded.wait(5000);
+}
+
+// The station at JO65hq on a clock started at `iso`, `rate` times real time.
+void rehearse(WindowFixture &f, const QString &iso, double rate)
+{
+    slew::sky::Station place;
+    QString error;
+    QVERIFY2(slew::sky::parseStation(QStringLiteral("JO65hq"), &place, &error), qPrintable(error));
+    f.station.clock()->rehearse(*slew::sky::julianFromIso(iso), rate);
+    f.station.setPlace(place);
+}
+
+// Tracks `name` from the Tracking tab, as the operator does.
+bool track(WindowFixture &f, const QString &name)
+{
+    TrackingPanel *tracking = f.window->trackingPanel();
+    if (!tracking->selectTarget(name))
+        return false;
+    QTest::mouseClick(tracking->trackButton(), Qt::LeftButton);
+    return tracking->runner()->isRunning();
+}
+
+// Once the pass is planned and waited for: the Tracking tab's Track comes
+// back with the tracker's state.
+void untrack(WindowFixture &f)
+{
+    const slew::tracking::Tracker &tracker = f.window->trackingPanel()->runner()->tracker();
+    if (!QTest::qWaitFor([&] { return tracker.state() != slew::tracking::Tracker::State::Idle; }, 10000))
+        qWarning("the pass was never planned");
+    QTest::mouseClick(f.window->trackingPanel()->stopTrackingButton(), Qt::LeftButton);
+}
+
+// The Radio tab brought to the front, as the operator would to type in it.
+RadioPanel *radioTab(WindowFixture &f)
+{
+    RadioPanel *panel = f.window->radioPanel();
+    f.window->tabs()->setCurrentWidget(panel);
+    // Typed digits reach a field only while it has the focus (the window
+    // takes 1 to 9 for the presets otherwise): the window must be active.
+    f.window->activateWindow();
+    if (!QTest::qWaitForWindowActive(f.window.get()))
+        qWarning("the window did not become active");
+    return panel;
+}
+
+template <typename T>
+T *in(RadioPanel *panel, const char *name)
+{
+    T *found = panel->findChild<T *>(QString::fromLatin1(name));
+    if (!found)
+        qWarning("no %s in the Radio tab", name);
+    return found;
+}
+
+QString textOf(RadioPanel *panel, const char *name)
+{
+    const QLabel *label = in<QLabel>(panel, name);
+    return label ? label->text() : QString();
+}
+
+// Types into a frequency or offset field, or a mode's editable list.
+void type(RadioPanel *panel, const char *name, const QString &text)
+{
+    QWidget *w = in<QWidget>(panel, name);
+    if (auto *combo = qobject_cast<QComboBox *>(w))
+        WindowFixture::typeInto(combo->lineEdit(), text);
+    else if (auto *field = qobject_cast<QLineEdit *>(w))
+        WindowFixture::typeInto(field, text);
+}
+
+void choose(RadioPanel *panel, const char *name, const QString &word)
+{
+    auto *combo = in<QComboBox>(panel, name);
+    combo->setCurrentIndex(combo->findData(word));
+}
+
+void apply(RadioPanel *panel)
+{
+    QTest::mouseClick(in<QPushButton>(panel, "radioApply"), Qt::LeftButton);
+}
+
+void connectRadio(RadioPanel *panel, const QString &uri)
+{
+    type(panel, "radioUri", uri);
+    QTest::mouseClick(in<QPushButton>(panel, "radioConnect"), Qt::LeftButton);
+}
+
+// An error label shown under its field, saying `words`.
+bool refusedWith(RadioPanel *panel, const char *name, const QString &words)
+{
+    const QLabel *label = in<QLabel>(panel, name);
+    if (label && !(label->isVisible() && label->text().contains(words)))
+        qWarning("%s: '%s'%s", name, qPrintable(label->text()), label->isVisible() ? "" : " (not shown)");
+    return label && label->isVisible() && label->text().contains(words);
+}
+
+// FLOCK 2P-1's transponder as an operator writes it: 70 cm down in USB, 2 m up
+// in LSB (an inverting linear transponder), with its calibration.
+void typeLinearTransponder(RadioPanel *panel)
+{
+    type(panel, "radioDownlink", QStringLiteral("435.85M"));
+    type(panel, "radioUplink", QStringLiteral("145.95 MHz"));
+    type(panel, "radioReceiveMode", QStringLiteral("usb"));
+    type(panel, "radioTransmitMode", QStringLiteral("LSB"));
+    type(panel, "radioDownlinkOffset", QStringLiteral("-1.2k"));
+    type(panel, "radioUplinkOffset", QStringLiteral("350"));
+    choose(panel, "radioDoppler", QStringLiteral("both"));
+    choose(panel, "radioUplinkFollows", QStringLiteral("opposite"));
+}
+
+} // namespace
+
+class RadioPanelTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase()
+    {
+        QCOMPARE(QGuiApplication::platformName(), QStringLiteral("xcb"));
+        QVERIFY2(!hamlibProgram("rigctld").isEmpty(), "rigctld is not installed: packaging/dev.sh installs libhamlib-utils");
+        WindowFixture::prepareApplication();
+        slew::registerLinkSchemes();
+        slew::ui::applyOperatorTheme(*qobject_cast<QApplication *>(QCoreApplication::instance()));
+    }
+
+    // Each test starts with no radio kept: the last one's would connect.
+    void init() { QSettings().remove(QStringLiteral("radio")); }
+
+    void aRefusedUriIsSaidAndChangesNothing()
+    {
+        WindowFixture f;
+        RadioPanel *panel = radioTab(f);
+        DopplerRadio *radio = f.station.radio();
+        const QStringList offered = panel->linkBox()->offeredUris();
+        QVERIFY2(offered.contains(QStringLiteral("sim:")) && offered.contains(QStringLiteral("rigctld://127.0.0.1:4532"))
+                     && offered.contains(QStringLiteral("controller")),
+                 qPrintable(offered.join(u' ')));
+
+        connectRadio(panel, QStringLiteral("nosuch://x"));
+        QVERIFY(refusedWith(panel, "radioLinkRefusal", QStringLiteral("nosuch://x: unknown radio link kind 'nosuch'")));
+        QCOMPARE(radio->linkUri(), QString());
+        QVERIFY(!radio->isWanted());
+        QVERIFY(!QSettings().contains(QStringLiteral("radio/uri")));
+        QVERIFY(!panel->linkBox()->offeredUris().contains(QStringLiteral("nosuch://x")));
+
+        // A radio held is kept through a refusal: here one that never answers.
+        const quint16 nobody = freeTcpPort();
+        const QString held = QStringLiteral("rigctld://127.0.0.1:%1").arg(nobody);
+        connectRadio(panel, held);
+        QVERIFY(!in<QLabel>(panel, "radioLinkRefusal")->isVisible());
+        QCOMPARE(radio->linkUri(), held);
+        QVERIFY(radio->isWanted());
+        // (Not a prefix of a URI offered, which the list would complete.)
+        connectRadio(panel, QStringLiteral("rigctld://:4532"));
+        QVERIFY(refusedWith(panel, "radioLinkRefusal", QStringLiteral("no host named")));
+        QCOMPARE(radio->linkUri(), held);
+        QVERIFY(radio->isWanted());
+        QCOMPARE(QSettings().value(QStringLiteral("radio/uri")).toString(), held);
+        QTest::mouseClick(in<QPushButton>(panel, "radioDisconnect"), Qt::LeftButton);
+        QVERIFY(!radio->isWanted());
+    }
+
+    void badFrequenciesAreRefusedUnderTheirFields()
+    {
+        WindowFixture f;
+        f.window->resize(1280, 720);
+        RadioPanel *panel = radioTab(f);
+        DopplerRadio *radio = f.station.radio();
+
+        // Megahertz without the unit, NaN, a mode with a passband in it, a
+        // calibration of megahertz, and a field left empty.
+        type(panel, "radioDownlink", QStringLiteral("145.8"));
+        type(panel, "radioUplink", QStringLiteral("nan"));
+        type(panel, "radioReceiveMode", QStringLiteral("USB 2400"));
+        type(panel, "radioDownlinkOffset", QStringLiteral("2M"));
+        apply(panel);
+        // Every refusal at once still fits the smallest screen, whole.
+        type(panel, "radioTransmitMode", QStringLiteral("SSB/CW"));
+        type(panel, "radioUplinkOffset", QStringLiteral("lots"));
+        apply(panel);
+        QCoreApplication::processEvents();
+        const QString faults = layoutFaults(f.window.get()).join(QLatin1Char('\n'));
+        QVERIFY2(faults.isEmpty(), qPrintable(faults));
+        QCOMPARE(f.window->size(), QSize(1280, 720));
+        QVERIFY(refusedWith(panel, "radioTransmitModeError", QStringLiteral("'SSB/CW' is not a Hamlib mode")));
+        QVERIFY(refusedWith(panel, "radioUplinkOffsetError", QStringLiteral("'lots' is not a frequency")));
+        type(panel, "radioTransmitMode", QString());
+        type(panel, "radioUplinkOffset", QString());
+        apply(panel);
+        QVERIFY(refusedWith(panel, "radioDownlinkError", QStringLiteral("145.8 Hz is below 1 MHz")));
+        QVERIFY(refusedWith(panel, "radioUplinkError", QStringLiteral("'nan' is not a frequency")));
+        QVERIFY(refusedWith(panel, "radioReceiveModeError", QStringLiteral("'USB 2400' is not a Hamlib mode name")));
+        QVERIFY(refusedWith(panel, "radioDownlinkOffsetError", QStringLiteral("Downlink calibration")));
+        QVERIFY(!in<QLabel>(panel, "radioUplinkOffsetError")->isVisible());
+        QVERIFY(textOf(panel, "radioPlanState").startsWith(QStringLiteral("Not applied")));
+        QVERIFY(!radio->plan());
+        QVERIFY(!QSettings().contains(QStringLiteral("radio/lastPlan")));
+
+        type(panel, "radioDownlink", QString());
+        type(panel, "radioUplink", QString());
+        type(panel, "radioReceiveMode", QString());
+        type(panel, "radioDownlinkOffset", QString());
+        apply(panel);
+        QVERIFY(refusedWith(panel, "radioDownlinkError", QStringLiteral("is needed")));
+        QVERIFY(!radio->plan());
+
+        // Right one by one, wrong only together: Doppler on an uplink there is not.
+        type(panel, "radioDownlink", QStringLiteral("437.8M"));
+        choose(panel, "radioDoppler", QStringLiteral("uplink"));
+        apply(panel);
+        QVERIFY(!in<QLabel>(panel, "radioDownlinkError")->isVisible());
+        QVERIFY(refusedWith(panel, "radioDopplerError", QStringLiteral("no uplink")));
+        QVERIFY(!radio->plan());
+        // No number the panel shows is NaN.
+        for (const QLabel *label : panel->findChildren<QLabel *>())
+            QVERIFY2(!label->text().contains(QStringLiteral("nan"), Qt::CaseSensitive)
+                         || label->objectName() == QLatin1String("radioUplinkError"),
+                     qPrintable(label->objectName() + QStringLiteral(": ") + label->text()));
+    }
+
+    void goodFrequenciesSetTheRadiosPlan()
+    {
+        WindowFixture f;
+        RadioPanel *panel = radioTab(f);
+        DopplerRadio *radio = f.station.radio();
+        typeLinearTransponder(panel);
+        apply(panel);
+        QVERIFY2(!panel->planForm()->showsRefusal(), qPrintable(textOf(panel, "radioPlanState")));
+        QVERIFY(radio->plan());
+        const RadioPlan &plan = *radio->plan();
+        QCOMPARE(plan.frequencies.downlinkHz, 435.85e6);
+        QVERIFY(plan.frequencies.uplinkHz);
+        QCOMPARE(*plan.frequencies.uplinkHz, 145.95e6);
+        QCOMPARE(plan.frequencies.downlinkOffsetHz, -1200.0);
+        QCOMPARE(plan.frequencies.uplinkOffsetHz, 350.0);
+        QCOMPARE(plan.frequencies.correct, DopplerOn::Both);
+        QCOMPARE(plan.frequencies.uplinkFollows, UplinkFollowsDial::OppositeWay);
+        QCOMPARE(plan.receiveMode, QStringLiteral("USB"));
+        QCOMPARE(plan.transmitMode, QStringLiteral("LSB"));
+        QCOMPARE(plan.noradId, 0); // nothing tracked: for whatever is
+        QCOMPARE(textOf(panel, "radioPlanState"),
+                 QStringLiteral("Applied for any satellite tracked: downlink 435.848 800 MHz USB, uplink 145.950 350 MHz LSB."));
+        QCOMPARE(textOf(panel, "radioNominal"),
+                 QStringLiteral("down 435.850 000 MHz (calibration −1 200 Hz), up 145.950 000 MHz (calibration +350 Hz)"));
+
+        // Downlink only, receive only, the dial followed by nothing.
+        type(panel, "radioUplink", QString());
+        type(panel, "radioTransmitMode", QString());
+        type(panel, "radioDownlinkOffset", QString());
+        choose(panel, "radioDoppler", QStringLiteral("downlink"));
+        choose(panel, "radioUplinkFollows", QStringLiteral("no"));
+        apply(panel);
+        QVERIFY(radio->plan());
+        QVERIFY(!radio->plan()->frequencies.uplinkHz);
+        QCOMPARE(radio->plan()->frequencies.downlinkOffsetHz, 0.0);
+        QCOMPARE(radio->plan()->frequencies.correct, DopplerOn::DownlinkOnly);
+        QCOMPARE(radio->plan()->frequencies.uplinkFollows, UplinkFollowsDial::No);
+    }
+
+    void frequenciesAreKeptPerSatellite()
+    {
+        {
+            WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
+            QVERIFY(f.connectAndWait());
+            QVERIFY(loadSets(f.window->elementSets()));
+            rehearse(f, QStringLiteral("2018-01-22T09:00:00Z"), 1.0);
+            RadioPanel *panel = radioTab(f);
+            DopplerRadio *radio = f.station.radio();
+            auto *planBox = in<QGroupBox>(panel, "radioPlanBox");
+            QCOMPARE(planBox->title(), QStringLiteral("Frequencies for any satellite tracked"));
+
+            // FLOCK 2P-1 tracked: what is applied is for it, and kept for it.
+            QVERIFY(track(f, QStringLiteral("FLOCK 2P-1")));
+            QTRY_COMPARE(planBox->title(), QStringLiteral("Frequencies for FLOCK 2P-1 (NORAD 41617)"));
+            typeLinearTransponder(panel);
+            apply(panel);
+            QVERIFY(radio->plan());
+            QCOMPARE(radio->plan()->noradId, kFlock);
+            untrack(f);
+            QTRY_COMPARE(planBox->title(), QStringLiteral("Frequencies for any satellite tracked"));
+
+            // Another satellite with nothing kept: the fields stay, and the
+            // panel says the radio's frequencies are another satellite's.
+            QVERIFY(track(f, QStringLiteral("JPSS-1")));
+            QTRY_COMPARE(planBox->title(), QStringLiteral("Frequencies for JPSS-1 (NORAD 43013)"));
+            QCOMPARE(radio->plan()->noradId, kFlock);
+            QCOMPARE(in<QLineEdit>(panel, "radioDownlink")->text(), QStringLiteral("435.85M"));
+            QVERIFY2(textOf(panel, "radioPlanState").contains(QStringLiteral("Not for the satellite tracked")),
+                     qPrintable(textOf(panel, "radioPlanState")));
+            type(panel, "radioDownlink", QStringLiteral("7812.5M"));
+            type(panel, "radioUplink", QString());
+            type(panel, "radioDownlinkOffset", QStringLiteral("+3k"));
+            choose(panel, "radioDoppler", QStringLiteral("downlink"));
+            apply(panel);
+            QCOMPARE(radio->plan()->noradId, kJpss);
+            QCOMPARE(radio->plan()->frequencies.downlinkHz, 7812.5e6);
+            untrack(f);
+
+            // FLOCK 2P-1 again: its own frequencies and offsets, applied.
+            QVERIFY(track(f, QStringLiteral("FLOCK 2P-1")));
+            QTRY_COMPARE(radio->plan()->noradId, kFlock);
+            QCOMPARE(radio->plan()->frequencies.downlinkHz, 435.85e6);
+            QCOMPARE(radio->plan()->frequencies.downlinkOffsetHz, -1200.0);
+            QCOMPARE(*radio->plan()->frequencies.uplinkHz, 145.95e6);
+            QCOMPARE(in<QLineEdit>(panel, "radioDownlink")->text(), QStringLiteral("435.85M"));
+            QCOMPARE(in<QLineEdit>(panel, "radioDownlinkOffset")->text(), QStringLiteral("-1.2k"));
+            QCOMPARE(in<QComboBox>(panel, "radioUplinkFollows")->currentData().toString(), QStringLiteral("opposite"));
+            // And JPSS-1's, as written.
+            QCOMPARE(QSettings().value(QStringLiteral("radio/plans/43013/downlink")).toString(), QStringLiteral("7812.5M"));
+            QCOMPARE(QSettings().value(QStringLiteral("radio/plans/43013/downlinkOffset")).toString(), QStringLiteral("+3k"));
+            untrack(f);
+        }
+
+        // The next start: the frequencies applied last are the radio's again.
+        WindowFixture again;
+        RadioPanel *panel = radioTab(again);
+        DopplerRadio *radio = again.station.radio();
+        QVERIFY(radio->plan());
+        QCOMPARE(radio->plan()->noradId, kFlock);
+        QCOMPARE(radio->plan()->frequencies.downlinkHz, 435.85e6);
+        QCOMPARE(in<QLineEdit>(panel, "radioUplink")->text(), QStringLiteral("145.95 MHz"));
+        QCOMPARE(in<QComboBox>(panel, "radioTransmitMode")->currentText(), QStringLiteral("LSB"));
+    }
+
+    void connectsToRigctldAndSaysWhenItIsLost()
+    {
+        QProcess rigctld;
+        const quint16 port = startHamlibDaemon(rigctld, "rigctld", {"-m", "1"});
+        QVERIFY(port);
+        const QString uri = QStringLiteral("rigctld://127.0.0.1:%1").arg(port);
+        {
+            WindowFixture f;
+            RadioPanel *panel = radioTab(f);
+            DopplerRadio *radio = f.station.radio();
+            connectRadio(panel, uri);
+            QTRY_VERIFY_WITH_TIMEOUT(radio->link() && radio->link()->isOpen(), 10000);
+            QTRY_VERIFY2(textOf(panel, "radioLinkState").startsWith(QStringLiteral("Open: ") + uri),
+                         qPrintable(textOf(panel, "radioLinkState")));
+            QVERIFY(in<QPushButton>(panel, "radioDisconnect")->isEnabled());
+            QCOMPARE(panel->linkBox()->offeredUris().value(0), uri); // the last used first
+
+            // A refusal leaves the open link as it is.
+            connectRadio(panel, QStringLiteral("rigctld://127.0.0.1:99999"));
+            QVERIFY(refusedWith(panel, "radioLinkRefusal", QStringLiteral("rigctld://127.0.0.1:99999")));
+            QCOMPARE(radio->linkUri(), uri);
+            QVERIFY(radio->link()->isOpen());
+            QVERIFY(textOf(panel, "radioLinkState").startsWith(QStringLiteral("Open: ")));
+        }
+
+        // The next start connects again, to the radio kept.
+        {
+            WindowFixture again;
+            RadioPanel *panel = radioTab(again);
+            DopplerRadio *radio = again.station.radio();
+            QCOMPARE(radio->linkUri(), uri);
+            QTRY_VERIFY_WITH_TIMEOUT(radio->link()->isOpen(), 10000);
+            QCOMPARE(in<QComboBox>(panel, "radioUri")->currentText(), uri);
+
+            // rigctld goes away: the panel says so, and each try again.
+            rigctld.terminate();
+            QTRY_COMPARE(rigctld.state(), QProcess::NotRunning);
+            QTRY_VERIFY2_WITH_TIMEOUT(textOf(panel, "radioLinkState").contains(QStringLiteral("(attempt 2)")),
+                                      qPrintable(textOf(panel, "radioLinkState")), 15000);
+            QVERIFY(textOf(panel, "radioLinkState").contains(QStringLiteral("trying again in")));
+
+            QTest::mouseClick(in<QPushButton>(panel, "radioDisconnect"), Qt::LeftButton);
+            QTRY_COMPARE(textOf(panel, "radioLinkState"), QStringLiteral("Not connected"));
+            QVERIFY(!in<QPushButton>(panel, "radioDisconnect")->isEnabled());
+            QCOMPARE(QSettings().value(QStringLiteral("radio/connected")).toBool(), false);
+        }
+    }
+
+    void showsAndChartsAPassAsTheRadioIsTuned()
+    {
+        QProcess rigctld;
+        const quint16 port = startHamlibDaemon(rigctld, "rigctld", {"-m", "1"});
+        QVERIFY(port);
+        // The built-in rotator simulator on its own wall clock: the station
+        // paces it to the rehearsal.
+        WindowFixture f;
+        f.window->resize(1280, 720);
+        QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
+        QVERIFY(f.connectAndWait());
+        QVERIFY(loadSets(f.window->elementSets()));
+        RadioPanel *panel = radioTab(f);
+        DopplerRadio *radio = f.station.radio();
+        connectRadio(panel, QStringLiteral("rigctld://127.0.0.1:%1").arg(port));
+        QTRY_VERIFY_WITH_TIMEOUT(radio->link() && radio->link()->isOpen(), 10000);
+        typeLinearTransponder(panel);
+        type(panel, "radioDownlinkOffset", QString());
+        type(panel, "radioUplinkOffset", QString());
+        apply(panel);
+        QVERIFY(radio->plan());
+        QCOMPARE(textOf(panel, "radioFigures"), QStringLiteral("no pass tuned yet"));
+        QCOMPARE(textOf(panel, "radioSent"), QStringLiteral("nothing yet"));
+
+        // Ten seconds (of the station's clock) before AOS, at 20 times.
+        rehearse(f, QStringLiteral("2018-01-22T09:15:35Z"), 20.0);
+        QVERIFY(track(f, QStringLiteral("FLOCK 2P-1")));
+        f.window->tabs()->setCurrentWidget(panel);
+        QSignalSpy steering(radio, &DopplerRadio::steeringChanged);
+        QTRY_VERIFY_WITH_TIMEOUT(radio->isSteering(), 30000);
+
+        // Early in the pass the satellite comes closer: the downlink is
+        // heard above its frequency, the uplink sent below it.
+        QTRY_VERIFY2(textOf(panel, "radioSent").startsWith(QStringLiteral("receive 435.8"))
+                         && textOf(panel, "radioSent").contains(QStringLiteral(", transmit 145.9")),
+                     qPrintable(textOf(panel, "radioSent")));
+        QTRY_VERIFY2(textOf(panel, "radioDopplerNow").startsWith(QStringLiteral("downlink +"))
+                         && textOf(panel, "radioDopplerNow").contains(QStringLiteral(", uplink −")),
+                     qPrintable(textOf(panel, "radioDopplerNow")));
+        QTRY_VERIFY2(textOf(panel, "radioFigures").startsWith(QStringLiteral("this pass: error RMS ")),
+                     qPrintable(textOf(panel, "radioFigures")));
+        QCOMPARE(textOf(panel, "radioDial"), QStringLiteral("not turned"));
+        const QString firstSent = textOf(panel, "radioSent");
+        QTRY_VERIFY(textOf(panel, "radioSent") != firstSent); // it follows the pass
+
+        // The tab holds at 1280x720 with every line filled.
+        const QString faults = layoutFaults(f.window.get()).join(QLatin1Char('\n'));
+        QVERIFY2(faults.isEmpty(), qPrintable(faults));
+
+        // The Doppler error on the Telemetry tab, under the pointing error,
+        // both paths.
+        slew::ui::TelemetryCharts *charts = f.window->telemetryCharts();
+        QXYSeries *receive = charts->series(TelemetryRecorder::ReceiveDopplerError);
+        QXYSeries *transmit = charts->series(TelemetryRecorder::TransmitDopplerError);
+        QVERIFY(receive && transmit);
+        auto plotted = [&](QXYSeries *series) {
+            charts->redraw();
+            return series->count();
+        };
+        QTRY_VERIFY(plotted(receive) > 5 && plotted(transmit) > 5);
+        auto *box = charts->findChild<QWidget *>(QStringLiteral("chartDoppler"));
+        QVERIFY(box && !box->isHidden());
+        for (const QPointF &p : receive->points())
+            QVERIFY2(std::isfinite(p.y()) && std::abs(p.y()) < 1000.0, qPrintable(QString::number(p.y())));
+        f.window->tabs()->setCurrentWidget(charts);
+        QVERIFY(f.window->findChild<QWidget *>(QStringLiteral("chartPointing"))->isVisible());
+        QVERIFY(box->isVisible());
+        QVERIFY(box->geometry().top() > f.window->findChild<QWidget *>(QStringLiteral("chartPointing"))->geometry().top());
+        const QString chartFaults = layoutFaults(f.window.get()).join(QLatin1Char('\n'));
+        QVERIFY2(chartFaults.isEmpty(), qPrintable(chartFaults));
+        f.window->tabs()->setCurrentWidget(panel);
+
+        // LOS (09:27:10): the pass's figures and what was sent last stay.
+        QTRY_VERIFY_WITH_TIMEOUT(!radio->isSteering(), 60000);
+        QVERIFY2(textOf(panel, "radioFigures").startsWith(QStringLiteral("last pass: error RMS ")),
+                 qPrintable(textOf(panel, "radioFigures")));
+        QVERIFY(radio->figures().samples > 50);
+        QVERIFY(radio->figures().commands > 10);
+        QVERIFY(textOf(panel, "radioSent").startsWith(QStringLiteral("receive 435.8")));
+        for (const QLabel *label : panel->findChildren<QLabel *>())
+            QVERIFY2(!label->text().contains(QStringLiteral("nan"), Qt::CaseInsensitive),
+                     qPrintable(label->objectName() + QStringLiteral(": ") + label->text()));
+        QDir().mkpath(QStringLiteral("screenshots"));
+        QVERIFY(f.window->grab().save(QStringLiteral("screenshots/radio-tab-after-los.png")));
+
+        untrack(f);
+        f.station.radio()->disconnectRadio();
+        rigctld.terminate();
+        QTRY_COMPARE(rigctld.state(), QProcess::NotRunning);
+    }
+};
+
+QTEST_MAIN(RadioPanelTest)
+#include "tst_radiopanel.moc"

@@ -1,0 +1,196 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "radiopanel.h"
+
+#include "frequencytext.h"
+#include "radiolinkbox.h"
+#include "radioplanform.h"
+#include "radioplansettings.h"
+#include "radioreadout.h"
+
+#include "sky/tlesources.h"
+#include "station/dopplerradio.h"
+#include "station/station.h"
+#include "tracking/passrunner.h"
+
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+namespace slew::ui {
+
+namespace {
+
+QGroupBox *box(const QString &title, QWidget *content, const QString &name)
+{
+    auto *group = new QGroupBox(title);
+    group->setObjectName(name);
+    auto *layout = new QVBoxLayout(group);
+    // Tight, as the control column's groups: the tab must fit 1280x720.
+    layout->setContentsMargins(6, 2, 6, 4);
+    layout->addWidget(content);
+    return group;
+}
+
+QString describePlan(const radio::RadioPlan &plan)
+{
+    const radio::SatelliteFrequencies &f = plan.frequencies;
+    QString text = QObject::tr("downlink %1").arg(groupedMegahertz(f.downlinkHz + f.downlinkOffsetHz));
+    if (!plan.receiveMode.isEmpty())
+        text += QLatin1Char(' ') + plan.receiveMode;
+    if (f.uplinkHz) {
+        text += QObject::tr(", uplink %1").arg(groupedMegahertz(*f.uplinkHz + f.uplinkOffsetHz));
+        if (!plan.transmitMode.isEmpty())
+            text += QLatin1Char(' ') + plan.transmitMode;
+    }
+    return text;
+}
+
+} // namespace
+
+RadioPanel::RadioPanel(station::Station *station, QWidget *parent) : QWidget(parent), m_station(station)
+{
+    setObjectName(QStringLiteral("radioPanel"));
+    station::DopplerRadio *radio = m_station->radio();
+    m_link = new RadioLinkBox(radio);
+    m_form = new RadioPlanForm;
+    m_readout = new RadioReadout(m_station);
+    m_apply = new QPushButton(tr("Apply"));
+    m_apply->setObjectName(QStringLiteral("radioApply"));
+    m_apply->setAutoDefault(false);
+    m_apply->setToolTip(tr("Tune the radio to these during the satellite's passes, and keep them for it"));
+    m_planState = new QLabel;
+    m_planState->setObjectName(QStringLiteral("radioPlanState"));
+    m_planState->setWordWrap(true);
+
+    auto *plan = new QWidget;
+    auto *planLayout = new QVBoxLayout(plan);
+    planLayout->setContentsMargins(0, 0, 0, 0);
+    planLayout->setSpacing(4);
+    planLayout->addWidget(m_form);
+    auto *applyRow = new QHBoxLayout;
+    applyRow->addWidget(m_apply, 0, Qt::AlignTop);
+    applyRow->addWidget(m_planState, 1);
+    planLayout->addLayout(applyRow);
+
+    m_planBox = box(QString(), plan, QStringLiteral("radioPlanBox"));
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->setSpacing(4);
+    layout->addWidget(box(tr("Radio"), m_link, QStringLiteral("radioLinkGroup")));
+    layout->addWidget(m_planBox);
+    layout->addWidget(box(tr("During the pass"), m_readout, QStringLiteral("radioReadoutGroup")));
+    layout->addStretch(1);
+
+    connect(m_apply, &QPushButton::clicked, this, &RadioPanel::apply);
+    connect(m_form, &RadioPlanForm::applyAsked, this, &RadioPanel::apply);
+    connect(m_link, &RadioLinkBox::message, this, &RadioPanel::message);
+    connect(radio, &station::DopplerRadio::logLine, this, &RadioPanel::message);
+    // A satellite tracked: its own frequencies, when it has some kept. The
+    // runner says a line as it starts (before it has planned a pass, so
+    // before the tracker's state moves) and its tracker's state follows it
+    // to the end.
+    const tracking::PassRunner *runner = m_station->passRunner();
+    connect(runner, &tracking::PassRunner::logLine, this, &RadioPanel::onTracking);
+    connect(&runner->tracker(), &tracking::Tracker::stateChanged, this, &RadioPanel::onTracking);
+    // A runner stopped while it plans says nothing: looked at each second too.
+    connect(&m_watch, &QTimer::timeout, this, &RadioPanel::onTracking);
+    m_watch.start(1000);
+    // Names for the NORAD numbers come with the element sets.
+    connect(m_station->elementSets(), &sky::TleSources::setsChanged, this, &RadioPanel::showPlanState);
+
+    // What was applied last is the radio's again, for the satellite it was for.
+    if (const std::optional<int> last = lastAppliedRadioPlan()) {
+        if (const std::optional<RadioPlanTexts> kept = keptRadioPlan(*last)) {
+            m_form->setTexts(*kept);
+            if (std::optional<radio::RadioPlan> restored = m_form->readPlan(*last)) {
+                m_station->radio()->setPlan(restored);
+                m_readout->refresh();
+            }
+        }
+    }
+    onTracking();
+    showPlanState();
+}
+
+int RadioPanel::trackedNorad() const
+{
+    const tracking::PassRunner *runner = m_station->passRunner();
+    if (!runner->isRunning() || runner->target().kind != tracking::TrackTarget::Kind::Satellite)
+        return 0;
+    return runner->target().elements.catalogueNumber;
+}
+
+QString RadioPanel::describeSatellite(int noradId) const
+{
+    if (noradId == 0)
+        return tr("any satellite tracked");
+    for (const sky::Tle &set : m_station->elementSets()->sets())
+        if (set.catalogueNumber == noradId)
+            return tr("%1 (NORAD %2)").arg(set.displayName()).arg(noradId);
+    return tr("NORAD %1").arg(noradId);
+}
+
+void RadioPanel::onTracking()
+{
+    const int norad = trackedNorad();
+    if (norad != 0 && norad != m_tracked) {
+        m_tracked = norad;
+        if (const std::optional<RadioPlanTexts> kept = keptRadioPlan(norad)) {
+            m_form->setTexts(*kept);
+            if (apply())
+                emit message(tr("radio: %1's frequencies, as kept: %2")
+                                 .arg(describeSatellite(norad), describePlan(*m_station->radio()->plan())));
+        }
+    } else if (norad == 0) {
+        m_tracked = 0;
+    }
+    showPlanState();
+}
+
+bool RadioPanel::apply()
+{
+    const int norad = trackedNorad();
+    const std::optional<radio::RadioPlan> plan = m_form->readPlan(norad);
+    m_refused = !plan;
+    if (!plan) {
+        showPlanState();
+        return false;
+    }
+    m_station->radio()->setPlan(plan);
+    keepRadioPlan(norad, m_form->texts());
+    showPlanState();
+    m_readout->refresh(); // the radio says nothing when its plan changes
+    return true;
+}
+
+void RadioPanel::showPlanState()
+{
+    const int norad = trackedNorad();
+    m_planBox->setTitle(tr("Frequencies for %1").arg(describeSatellite(norad)));
+    const std::optional<radio::RadioPlan> &plan = m_station->radio()->plan();
+    QString text;
+    QString colour;
+    if (m_refused) {
+        text = tr("Not applied: put right what is marked above.");
+        colour = QStringLiteral("#e54848");
+    } else if (!plan) {
+        text = tr("Nothing applied: the radio is left alone.");
+    } else {
+        text = tr("Applied for %1: %2.").arg(describeSatellite(plan->noradId), describePlan(*plan));
+        if (plan->noradId != 0 && norad != 0 && plan->noradId != norad) {
+            // The radio would not be tuned for this pass (DopplerRadio
+            // checks the plan's satellite at AOS): say so before AOS.
+            text += tr(" Not for the satellite tracked: Apply to tune it.");
+            colour = QStringLiteral("#f2a33c");
+        }
+    }
+    m_planState->setText(text);
+    // Asked each second: a style set again would polish the label again.
+    const QString style = colour.isEmpty() ? QString() : QStringLiteral("color:%1;").arg(colour);
+    if (m_planState->styleSheet() != style)
+        m_planState->setStyleSheet(style);
+}
+
+} // namespace slew::ui
