@@ -7,6 +7,8 @@
 #include "radioplansettings.h"
 #include "radioreadout.h"
 
+#include "radio/transponderset.h"
+#include "radio/transpondersources.h"
 #include "sky/tlesources.h"
 #include "station/dopplerradio.h"
 #include "station/station.h"
@@ -69,8 +71,15 @@ RadioPanel::RadioPanel(station::Station *station, QWidget *parent) : QWidget(par
     planLayout->setContentsMargins(0, 0, 0, 0);
     planLayout->setSpacing(4);
     planLayout->addWidget(m_form);
+    auto *refresh = new QPushButton(tr("Refresh transponders"));
+    refresh->setObjectName(QStringLiteral("radioRefreshTransponders"));
+    refresh->setAutoDefault(false);
+    refresh->setToolTip(tr("Fetch the transponder lists (SatNOGS DB's, unless others are kept) into the cache "
+                           "beside the element sets"));
+    connect(refresh, &QPushButton::clicked, this, &RadioPanel::refreshTransponders);
     auto *applyRow = new QHBoxLayout;
     applyRow->addWidget(m_apply, 0, Qt::AlignTop);
+    applyRow->addWidget(refresh, 0, Qt::AlignTop);
     applyRow->addWidget(m_planState, 1);
     planLayout->addLayout(applyRow);
 
@@ -85,6 +94,18 @@ RadioPanel::RadioPanel(station::Station *station, QWidget *parent) : QWidget(par
 
     connect(m_apply, &QPushButton::clicked, this, &RadioPanel::apply);
     connect(m_form, &RadioPlanForm::applyAsked, this, &RadioPanel::apply);
+    connect(m_form, &RadioPlanForm::noted, this, &RadioPanel::message);
+    // The transponders cached beside the element sets: read at once (no
+    // network); fetched only when the operator asks (Refresh transponders).
+    radio::TransponderSources *transponders = m_station->transponders();
+    connect(transponders, &radio::TransponderSources::transpondersChanged, this, &RadioPanel::showTransponders);
+    connect(transponders, &radio::TransponderSources::finished, this, [this, transponders] {
+        for (const radio::TransponderSourceStatus &s : transponders->status())
+            emit message(tr("transponders: %1").arg(radio::describeTransponderSource(s)));
+    });
+    if (transponders->urls().isEmpty())
+        transponders->setUrls(radio::savedTransponderUrls());
+    transponders->loadFromCache();
     connect(m_link, &RadioLinkBox::message, this, &RadioPanel::message);
     connect(radio, &station::DopplerRadio::logLine, this, &RadioPanel::message);
     // A satellite tracked: its own frequencies, when it has some kept. The
@@ -132,9 +153,31 @@ QString RadioPanel::describeSatellite(int noradId) const
     return tr("NORAD %1").arg(noradId);
 }
 
+void RadioPanel::refreshTransponders()
+{
+    radio::TransponderSources *transponders = m_station->transponders();
+    if (transponders->urls().isEmpty()) {
+        // None kept yet: SatNOGS DB's list, kept from now on.
+        const QList<QUrl> urls{QUrl(QString::fromLatin1(radio::kSatnogsTransmittersUrl))};
+        radio::saveTransponderUrls(urls);
+        transponders->setUrls(urls);
+    }
+    emit message(tr("transponders: refreshing from %n source(s)", nullptr, int(transponders->urls().size())));
+    transponders->refresh();
+}
+
+void RadioPanel::showTransponders()
+{
+    const int norad = trackedNorad();
+    m_form->setTransponders(norad != 0 ? m_station->transponders()->transponders().forSatellite(norad)
+                                       : QList<radio::Transponder>());
+}
+
 void RadioPanel::onTracking()
 {
     const int norad = trackedNorad();
+    if (norad != m_tracked)
+        showTransponders();
     if (norad != 0 && norad != m_tracked) {
         m_tracked = norad;
         if (const std::optional<RadioPlanTexts> kept = keptRadioPlan(norad)) {
@@ -142,6 +185,17 @@ void RadioPanel::onTracking()
             if (apply())
                 emit message(tr("radio: %1's frequencies, as kept: %2")
                                  .arg(describeSatellite(norad), describePlan(*m_station->radio()->plan())));
+        } else if (const std::optional<radio::Transponder> t =
+                       m_station->transponders()->transponders().defaultFor(norad)) {
+            // Nothing kept for it: its default transponder, filled in for
+            // the operator to look at and Apply.
+            const QList<radio::Transponder> all = m_station->transponders()->transponders().forSatellite(norad);
+            for (int i = 0; i < all.size(); ++i) {
+                if (radio::sameTransponder(all[i], *t)) {
+                    m_form->pickTransponder(i);
+                    break;
+                }
+            }
         }
     } else if (norad == 0) {
         m_tracked = 0;

@@ -4,10 +4,13 @@
 // operator sets it up and watches it. Three parts, each its own widget:
 //
 //   - the link (radiolinkbox.h): which radio, Connect, its state;
-//   - what to tune (radioplanform.h), by hand for now, applied to the radio
-//     for the satellite tracked (or any satellite, when none is) and kept
-//     in the settings per satellite: tracking a satellite again brings its
-//     frequencies and offsets back, and applies them;
+//   - what to tune (radioplanform.h), by hand or from one of the tracked
+//     satellite's transponders (the station's cache, refreshed when the
+//     operator asks), applied to the radio for the satellite tracked (or
+//     any satellite, when none is) and kept in the settings per satellite:
+//     tracking a satellite again brings its frequencies and offsets back,
+//     and applies them; one with none kept gets its default transponder
+//     filled in, to Apply;
 //   - the live lines of a pass (radioreadout.h).
 //
 // The Doppler error the radio measures is charted on the Telemetry tab,
@@ -58,6 +61,8 @@ private:
     int trackedNorad() const;
     QString describeSatellite(int noradId) const;
     void onTracking();
+    void showTransponders();
+    void refreshTransponders();
     void showPlanState();
 
     station::Station *m_station;

@@ -29,9 +29,11 @@ RadioPlanForm::RadioPlanForm(QWidget *parent) : QWidget(parent)
     setObjectName(QStringLiteral("radioPlanForm"));
     m_transponder = new QComboBox;
     m_transponder->setObjectName(QStringLiteral("radioTransponder"));
-    m_transponder->addItem(tr("frequencies by hand"));
-    m_transponder->setEnabled(false);
-    m_transponder->setToolTip(tr("no transponders loaded"));
+    setTransponders({});
+    connect(m_transponder, &QComboBox::activated, this, [this](int item) {
+        if (item > 0)
+            pickTransponder(item - 1);
+    });
 
     m_downlink = addFrequencyField(QStringLiteral("radioDownlink"), tr("435.85M"),
                                    tr("What the satellite sends on: 145.8M, 435.125 MHz, 1296200k, or hertz"));
@@ -106,6 +108,70 @@ RadioPlanForm::RadioPlanForm(QWidget *parent) : QWidget(parent)
     grid->setColumnStretch(1, 3);
     grid->setColumnStretch(2, 1);
     grid->setColumnStretch(3, 2);
+}
+
+void RadioPlanForm::setTransponders(const QList<radio::Transponder> &transponders)
+{
+    m_transponders = transponders;
+    m_transponder->clear();
+    m_transponder->addItem(tr("frequencies by hand"));
+    for (const radio::Transponder &t : transponders) {
+        QString item = t.displayName();
+        if (t.downlinkLowHz)
+            item += QStringLiteral(" · %1 MHz").arg(*t.downlinkLowHz / 1e6, 0, 'f', 3);
+        if (!t.mode.isEmpty())
+            item += QLatin1Char(' ') + t.mode;
+        if (!t.alive)
+            item += tr(" (not alive)");
+        m_transponder->addItem(item);
+    }
+    m_transponder->setEnabled(!transponders.isEmpty());
+    m_transponder->setToolTip(transponders.isEmpty()
+                                  ? tr("no transponders known for this satellite (Refresh transponders, or slew "
+                                       "--update-transponders)")
+                                  : tr("Fill the fields from one of the satellite's transponders"));
+}
+
+void RadioPlanForm::pickTransponder(int index)
+{
+    if (index < 0 || index >= m_transponders.size())
+        return;
+    QString note, why;
+    const std::optional<radio::RadioPlan> plan = radio::planFor(m_transponders[index], &note, &why);
+    clearRefusals();
+    if (!plan) {
+        refuse(m_transponder, m_downlinkError, why);
+        return;
+    }
+    m_transponder->setCurrentIndex(index + 1);
+    // Megahertz to the hertz, without trailing zeros: what an operator types.
+    auto megahertz = [](double hz) {
+        QString text = QString::number(hz / 1e6, 'f', 6);
+        while (text.endsWith(u'0'))
+            text.chop(1);
+        if (text.endsWith(u'.'))
+            text.chop(1);
+        return text + QLatin1Char('M');
+    };
+    RadioPlanTexts t = texts(); // the calibration and the paths stay the operator's
+    t.downlink = megahertz(plan->frequencies.downlinkHz);
+    t.uplink = plan->frequencies.uplinkHz ? megahertz(*plan->frequencies.uplinkHz) : QString();
+    t.receiveMode = plan->receiveMode;
+    t.transmitMode = plan->transmitMode;
+    switch (plan->frequencies.uplinkFollows) {
+    case radio::UplinkFollowsDial::No:
+        t.uplinkFollows = QStringLiteral("no");
+        break;
+    case radio::UplinkFollowsDial::SameWay:
+        t.uplinkFollows = QStringLiteral("same");
+        break;
+    case radio::UplinkFollowsDial::OppositeWay:
+        t.uplinkFollows = QStringLiteral("opposite");
+        break;
+    }
+    setTexts(t);
+    if (!note.isEmpty())
+        emit noted(tr("%1: %2").arg(m_transponders[index].displayName(), note));
 }
 
 QLineEdit *RadioPlanForm::addFrequencyField(const QString &name, const QString &placeholder, const QString &tip)

@@ -6,12 +6,16 @@
 // Doppler, how the uplink follows the operator's dial, and the calibration
 // offsets. Read by the station service's rules (its --downlink, --uplink,
 // ... options): a bad field gets its message under it, and no plan is made.
-// Room is left for a transponder picker: disabled until transponders are
-// loaded.
+// Or from the tracked satellite's transponders (the station's cache of
+// SatNOGS DB and Gpredict lists): picking one fills the fields from it,
+// which the operator may then change (a calibration offset, a mode).
 
 #include "radioplansettings.h"
 
 #include "radio/radioplan.h"
+#include "radio/transponder.h"
+
+#include <QList>
 
 #include <QWidget>
 
@@ -37,9 +41,19 @@ public:
     // True while some field shows a refusal.
     bool showsRefusal() const;
 
+    // The satellite's transponders to pick from (none: the picker is off).
+    // The fields are left as they are.
+    void setTransponders(const QList<radio::Transponder> &transponders);
+    // Fills the fields from the transponder at `index` of those set, as
+    // picking it does.
+    void pickTransponder(int index);
+
 signals:
     // Return pressed in a field: the operator means Apply.
     void applyAsked();
+    // Something the operator should know of a transponder picked (a mode
+    // left as the radio has it).
+    void noted(const QString &text);
 
 private:
     QLineEdit *addFrequencyField(const QString &name, const QString &placeholder, const QString &tip);
@@ -49,6 +63,7 @@ private:
     void clearRefusals();
 
     QComboBox *m_transponder;
+    QList<radio::Transponder> m_transponders;
     QLineEdit *m_downlink, *m_uplink, *m_downlinkOffset, *m_uplinkOffset;
     QComboBox *m_receiveMode, *m_transmitMode, *m_doppler, *m_follows;
     QLabel *m_downlinkError, *m_uplinkError, *m_receiveModeError, *m_transmitModeError, *m_downlinkOffsetError,

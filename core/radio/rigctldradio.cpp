@@ -331,7 +331,7 @@ void RigctldRadioLink::takeVfoModeAnswer(QByteArrayView answer)
     // form a bare `1`); a program that speaks rigctld's protocol without
     // knowing the command refuses it (`RPRT -11`), and is not in VFO mode.
     QByteArray text = answer.trimmed().toByteArray();
-    for (const QByteArray prefix : {QByteArray("ChkVFO:"), QByteArray("CHKVFO")}) {
+    for (const QByteArrayView prefix : {QByteArrayView("ChkVFO:"), QByteArrayView("CHKVFO")}) {
         if (text.startsWith(prefix))
             text = text.mid(prefix.size()).trimmed();
     }
@@ -409,6 +409,8 @@ void RigctldRadioLink::finishExchange(const PacedCommand &command, const Rigctld
         failure = tr("refused: %1").arg(refusalText(reply.code()));
 
     switch (exchange) {
+    case Exchange::OpeningVfoMode:
+        break; // answered by takeVfoModeAnswer(), never through here
     case Exchange::OpeningRead: {
         const std::optional<double> hz = refused ? std::nullopt : valueIn(kFrequencyRange);
         if (!hz) {

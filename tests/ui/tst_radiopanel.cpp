@@ -21,6 +21,7 @@
 #include "radiolinkbox.h"
 #include "radiopanel.h"
 #include "radioplanform.h"
+#include "radio/transpondersources.h"
 #include "sky/tlesources.h"
 #include "sky/utctime.h"
 #include "station/dopplerradio.h"
@@ -37,6 +38,8 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QFile>
 #include <QTabWidget>
 #include <QTest>
 #include <QXYSeries>
@@ -382,6 +385,59 @@ private slots:
         QCOMPARE(radio->plan()->frequencies.downlinkHz, 435.85e6);
         QCOMPARE(in<QLineEdit>(panel, "radioUplink")->text(), QStringLiteral("145.95 MHz"));
         QCOMPARE(in<QComboBox>(panel, "radioTransmitMode")->currentText(), QStringLiteral("LSB"));
+    }
+
+    void aSatellitesTranspondersFillTheFields()
+    {
+        // FLOCK 2P-1 given two transponders in a Gpredict file named after
+        // it, loaded through the station's transponder sources as the
+        // Refresh button does.
+        QTemporaryDir dir;
+        QFile trsp(dir.filePath(QStringLiteral("41617.trsp")));
+        QVERIFY(trsp.open(QIODevice::WriteOnly));
+        trsp.write("[Mode V/U linear]\nUP_LOW=145900000\nUP_HIGH=146000000\nDOWN_LOW=435800000\n"
+                   "DOWN_HIGH=435900000\nINVERT=true\nMODE=SSB\n\n[CW beacon]\nDOWN_LOW=435795000\nMODE=CW\n");
+        trsp.close();
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
+        QVERIFY(f.connectAndWait());
+        QVERIFY(loadSets(f.window->elementSets()));
+        rehearse(f, QStringLiteral("2018-01-22T09:00:00Z"), 1.0);
+        slew::radio::TransponderSources *sources = f.station.transponders();
+        sources->setUrls({QUrl::fromLocalFile(trsp.fileName())});
+        QSignalSpy refreshed(sources, &slew::radio::TransponderSources::finished);
+        sources->refresh();
+        QVERIFY(refreshed.wait(10000));
+        RadioPanel *panel = radioTab(f);
+        auto *picker = in<QComboBox>(panel, "radioTransponder");
+        QVERIFY(!picker->isEnabled()); // nothing tracked: nothing to pick from
+        QVERIFY(in<QPushButton>(panel, "radioRefreshTransponders"));
+
+        // Tracked, with nothing kept for it: its default transponder (the
+        // linear one) fills the fields, the middle of the passband and the
+        // uplink paired with it, for the operator to Apply.
+        QVERIFY(track(f, QStringLiteral("FLOCK 2P-1")));
+        QTRY_VERIFY(picker->isEnabled());
+        QCOMPARE(picker->count(), 3);
+        QCOMPARE(picker->currentIndex(), 1);
+        QCOMPARE(in<QLineEdit>(panel, "radioDownlink")->text(), QStringLiteral("435.85M"));
+        QCOMPARE(in<QLineEdit>(panel, "radioUplink")->text(), QStringLiteral("145.95M"));
+        QCOMPARE(in<QComboBox>(panel, "radioReceiveMode")->currentText(), QStringLiteral("USB"));
+        QCOMPARE(in<QComboBox>(panel, "radioTransmitMode")->currentText(), QStringLiteral("LSB"));
+        QCOMPARE(in<QComboBox>(panel, "radioUplinkFollows")->currentData().toString(), QStringLiteral("opposite"));
+
+        // The beacon picked: its one frequency, no uplink; a calibration
+        // typed before stays the operator's.
+        type(panel, "radioDownlinkOffset", QStringLiteral("-700"));
+        panel->planForm()->pickTransponder(1);
+        QCOMPARE(in<QLineEdit>(panel, "radioDownlink")->text(), QStringLiteral("435.795M"));
+        QVERIFY(in<QLineEdit>(panel, "radioUplink")->text().isEmpty());
+        QCOMPARE(in<QLineEdit>(panel, "radioDownlinkOffset")->text(), QStringLiteral("-700"));
+        apply(panel);
+        QVERIFY(f.station.radio()->plan());
+        QCOMPARE(f.station.radio()->plan()->frequencies.downlinkHz, 435.795e6);
+        QCOMPARE(f.station.radio()->plan()->frequencies.downlinkOffsetHz, -700.0);
+        QCOMPARE(f.station.radio()->plan()->receiveMode, QStringLiteral("CW"));
+        untrack(f);
     }
 
     void connectsToRigctldAndSaysWhenItIsLost()
