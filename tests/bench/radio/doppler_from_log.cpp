@@ -18,7 +18,9 @@
 // satellite's time, the held receive and transmit frequencies are compared
 // with the truth from this element set: ground receive = f(1 − ṙ/c), uplink
 // sent = f/(1 − ṙ/c) (core/radio/doppler.h), ṙ from SGP4 and the station
-// (core/sky). Sampling starts once both paths have been set.
+// (core/sky). Sampling starts once both paths are on the Doppler curve
+// (within 100 kHz: a controller that begins at AOS has not yet tuned), and ends
+// early where the controller turns split off (`S 0`: Slew's own LOS).
 //
 // Printed: RMS, worst and mean error of each path and of both together (as
 // Slew's LOS log line counts them); frequency commands a second (mean, and
@@ -55,6 +57,7 @@ namespace {
 
 constexpr double kUnixEpochJulian = 2440587.5;
 constexpr double kSecondsPerDay = 86400.0;
+constexpr double kTrackingHz = 100e3;
 
 struct Held {
     double atMs; // the log's UTC, when rigctld answered
@@ -72,6 +75,7 @@ struct Log {
     std::vector<double> frequencySends;  // F and I, when sent
     std::vector<double> allSends;        // every command
     std::vector<Reading> readings;
+    std::vector<double> splitOff; // `S 0`: the controller's end of a pass
     int refused = 0, unanswered = 0;
     double firstMs = 0, lastMs = 0;
 };
@@ -139,6 +143,8 @@ std::optional<Log> readLog(const QString &path, QString *error)
                 }
             } else if (word == QLatin1String("f") || word == QLatin1String("i")) {
                 pendingRead[conn] = word == QLatin1String("f") ? 'f' : 'i';
+            } else if (word == QLatin1String("S") && argument.startsWith(QLatin1Char('0'))) {
+                log.splitOff.push_back(t);
             }
         } else if (direction == QLatin1String("<")) {
             const QString text = rest.trimmed();
@@ -201,13 +207,16 @@ int countWithin(const std::vector<double> &times, double fromMs, double toMs)
 }
 
 struct PathFigures {
-    double sumSquares = 0, sum = 0, worst = 0;
+    double sumSquares = 0, sum = 0, worst = 0, worstAtMs = 0;
     qint64 samples = 0;
-    void add(double error)
+    void add(double error, double atMs)
     {
         sumSquares += error * error;
         sum += error;
-        worst = std::max(worst, std::abs(error));
+        if (std::abs(error) > worst) {
+            worst = std::abs(error);
+            worstAtMs = atMs;
+        }
         ++samples;
     }
     double rms() const { return samples ? std::sqrt(sumSquares / double(samples)) : 0.0; }
@@ -299,11 +308,24 @@ int main(int argc, char **argv)
     };
     auto truthAt = [&](double julian) { return radio::tuningFor(frequencies, rangeRate(julian)); };
 
-    const double aosMs = logMsOf(pass->aos.julian), losMs = logMsOf(pass->los.julian);
-    const double lengthS = (losMs - aosMs) / 1000.0;
+    const double aosMs = logMsOf(pass->aos.julian);
+    double losMs = logMsOf(pass->los.julian);
+    auto withMs = [](double julian) { return sky::utcFromJulian(julian).toString(Qt::ISODateWithMs); };
     std::printf("pass: %s, AOS %s, TCA %s, LOS %s, max el %.1f°, %.0f s\n", qPrintable(tle->name),
-                qPrintable(sky::isoUtc(pass->aos.julian)), qPrintable(sky::isoUtc(pass->tca.julian)),
-                qPrintable(sky::isoUtc(pass->los.julian)), pass->maxElevationDeg(), lengthS);
+                qPrintable(withMs(pass->aos.julian)), qPrintable(withMs(pass->tca.julian)),
+                qPrintable(withMs(pass->los.julian)), pass->maxElevationDeg(),
+                (pass->los.julian - pass->aos.julian) * kSecondsPerDay);
+    // A controller that ends its pass itself (Slew turns split off and puts
+    // the radio back where it found it) ends the figures there: what it
+    // tunes after its own LOS is no Doppler tracking.
+    for (double t : log->splitOff) {
+        if (t > aosMs && t < losMs) {
+            std::printf("the controller turned split off %.0f ms before LOS: the figures end there\n", losMs - t);
+            losMs = t;
+            break;
+        }
+    }
+    const double lengthS = (losMs - aosMs) / 1000.0;
 
     PathFigures rx, tx;
     double firstSampleMs = -1;
@@ -311,20 +333,30 @@ int main(int argc, char **argv)
         const std::optional<double> r = heldAt(log->receive, ms), t = heldAt(log->transmit, ms);
         if (!r || !t)
             continue;
-        if (firstSampleMs < 0)
-            firstSampleMs = ms;
         const radio::RadioTuning truth = truthAt(julianOf(ms));
-        rx.add(*r - truth.receiveHz);
-        tx.add(*t - *truth.transmitHz);
+        if (firstSampleMs < 0) {
+            // Tracking has begun once both paths are on the Doppler curve:
+            // the shift is at most some 10 kHz at 435 MHz, so a frequency
+            // 100 kHz off is what the radio was left on before (Slew begins
+            // at AOS; until its first F and I it holds the operator's).
+            if (std::abs(*r - truth.receiveHz) > kTrackingHz || std::abs(*t - *truth.transmitHz) > kTrackingHz)
+                continue;
+            firstSampleMs = ms;
+        }
+        rx.add(*r - truth.receiveHz, ms);
+        tx.add(*t - *truth.transmitHz, ms);
     }
     if (rx.samples == 0) {
         std::fprintf(stderr, "doppler_from_log: the radio was never set on both paths during the pass\n");
         return 1;
     }
-    std::printf("sampled every 10 ms from %s (%.0f ms after AOS: both paths set) to LOS: %lld samples\n",
-                qPrintable(sky::isoUtc(julianOf(firstSampleMs))), firstSampleMs - aosMs, (long long)rx.samples);
-    std::printf("downlink: RMS %6.2f Hz, worst %6.1f Hz, mean %+6.2f Hz\n", rx.rms(), rx.worst, rx.mean());
-    std::printf("uplink:   RMS %6.2f Hz, worst %6.1f Hz, mean %+6.2f Hz\n", tx.rms(), tx.worst, tx.mean());
+    std::printf("sampled every 10 ms from %s (%.0f ms after AOS: both paths tracking) to %s: %lld samples\n",
+                qPrintable(withMs(julianOf(firstSampleMs))), firstSampleMs - aosMs, qPrintable(withMs(julianOf(losMs))),
+                (long long)rx.samples);
+    std::printf("downlink: RMS %6.2f Hz, worst %6.1f Hz (AOS + %.2f s), mean %+6.2f Hz\n", rx.rms(), rx.worst,
+                (rx.worstAtMs - aosMs) / 1000.0, rx.mean());
+    std::printf("uplink:   RMS %6.2f Hz, worst %6.1f Hz (AOS + %.2f s), mean %+6.2f Hz\n", tx.rms(), tx.worst,
+                (tx.worstAtMs - aosMs) / 1000.0, tx.mean());
     std::printf("both:     RMS %6.2f Hz, worst %6.1f Hz (as Slew's LOS line counts them)\n",
                 std::sqrt((rx.sumSquares + tx.sumSquares) / double(rx.samples + tx.samples)),
                 std::max(rx.worst, tx.worst));
