@@ -13,10 +13,18 @@
 # not given; this build's GUI allows 10 to 10000). REFRESH_MS is the
 # module's data refresh, which is also how often the Doppler shift the
 # radio controller sends is recomputed (default 300 ms; the preferences
-# allow 100 to 10000). Gpredict itself is then run as
-#   HOME=HOME gpredict
-# and the satellite's .sat file comes from Gpredict's own satellites.dat on
-# its first start (the same element set as tests/data).
+# allow 100 to 10000). The satellite's .sat file comes from Gpredict's own
+# satellites.dat on its first start (the same element set as tests/data).
+#
+# Gpredict is then run with its real-time clock shifted by a whole number
+# of seconds, OFFSET, so that the 2018 pass comes in real time (libfaketime
+# from Debian's faketime package; the monotonic clock left alone):
+#   HOME=HOME FAKETIME="${OFFSET}s" FAKETIME_DONT_FAKE_MONOTONIC=1 \
+#     LD_PRELOAD=/usr/lib/x86_64-linux-gnu/faketime/libfaketime.so.1 gpredict
+# and OFFSET is doppler_from_log's --offset. In its window: the module's
+# menu, Radio Control, T (tune to the transponder), Track, Engage. With a
+# CYCLE_MS of 10 the spin button shows 10 but the controller keeps 1000 ms
+# until the spin is moved: press + then -.
 set -eu
 home=$1
 port=$2
