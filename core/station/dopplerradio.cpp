@@ -226,8 +226,12 @@ bool DopplerRadio::passIsUp() const
 void DopplerRadio::onPassState()
 {
     const Tracker::State state = m_runner->tracker().state();
-    if (state == Tracker::State::Waiting && !isSteering())
-        readFound(); // the radio as it stands before AOS
+    // The radio as it stands before AOS: read once as the pass is waited
+    // for. (This runs again when that read is answered: asked again then,
+    // the radio would be read back to back until AOS.)
+    if (state == Tracker::State::Waiting && m_lastPassState != Tracker::State::Waiting && !isSteering())
+        readFound();
+    m_lastPassState = state;
     const bool up = passIsUp();
     if (up && !isSteering())
         begin();
@@ -237,7 +241,7 @@ void DopplerRadio::onPassState()
 
 void DopplerRadio::readFound()
 {
-    if (!m_link || !m_link->isOpen() || !m_link->canReadBack())
+    if (!m_link || !m_link->isOpen() || !m_link->canReadBack() || m_readingFound)
         return;
     m_readingFound = true;
     m_link->readFrequencies();

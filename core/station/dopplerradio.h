@@ -32,6 +32,7 @@
 #include "radio/radioplan.h"
 #include "radio/dopplersteering.h"
 #include "radio/radiolink.h"
+#include "tracking/tracker.h"
 
 #include <QElapsedTimer>
 #include <QObject>
@@ -142,6 +143,7 @@ private:
     // The radio as it was found before AOS, to put back after LOS.
     std::optional<double> m_foundReceiveHz;
     bool m_readingFound = false;
+    tracking::Tracker::State m_lastPassState = tracking::Tracker::State::Idle;
     bool m_splitTurnedOn = false;
     radio::DopplerFigures m_lastFigures;
     static constexpr qint64 kRepeatedFailureMs = 60000;

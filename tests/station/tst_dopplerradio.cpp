@@ -1,0 +1,91 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The station's radio between passes: a Station with the built-in rotator
+// simulator waits for FLOCK 2P-1's pass, its radio on Hamlib's real rigctld
+// (dummy rig). Before AOS the radio is read once, to know where it was
+// found, and is otherwise left alone: a radio on a CAT bus must not be
+// read back to back while nothing is tuned.
+
+#include "../common/hamlibprocess.h"
+#include "linkschemes.h"
+#include "radio/radiolink.h"
+#include "session/rotatorsession.h"
+#include "sky/station.h"
+#include "sky/tle.h"
+#include "sky/utctime.h"
+#include "station/dopplerradio.h"
+#include "station/station.h"
+#include "tracking/passrunner.h"
+#include "tracking/stationclock.h"
+#include "tracking/tracktarget.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+using slew::radio::RadioLink;
+using slew::station::DopplerRadio;
+using slew::station::Station;
+
+class DopplerRadioTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { slew::registerLinkSchemes(); }
+
+    void leavesTheRadioAloneBeforeAos()
+    {
+        QProcess rigctld;
+        const quint16 port = startHamlibDaemon(rigctld, "rigctld", {"-m", "1"});
+        QVERIFY(port);
+
+        Station station;
+        slew::sky::Station place;
+        QString error;
+        QVERIFY(slew::sky::parseStation(QStringLiteral("JO65hq"), &place, &error));
+        station.setPlace(place);
+        // Five minutes before AOS (09:17:51), in real time.
+        station.clock()->rehearse(*slew::sky::julianFromIso(QStringLiteral("2018-01-22T09:12:51Z")), 1.0);
+        const slew::sky::TleFile sets = slew::sky::readTleFile(QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"));
+        const slew::sky::Tle *flock = slew::sky::findOneTle(sets.sets, QStringLiteral("FLOCK 2P-1"), &error);
+        QVERIFY2(flock, qPrintable(error));
+        station.session()->connectTo(QStringLiteral("sim:"));
+        QTRY_VERIFY(station.session()->isConnected());
+        slew::tracking::TrackTarget target;
+        target.elements = *flock;
+        QCOMPARE(station.track(target, 0.0), QString());
+        QTRY_COMPARE_WITH_TIMEOUT(station.passRunner()->tracker().state(), slew::tracking::Tracker::State::Waiting,
+                                  20000);
+
+        DopplerRadio *radio = station.radio();
+        QVERIFY2(radio->setLink(QStringLiteral("rigctld://127.0.0.1:%1").arg(port), &error), qPrintable(error));
+        slew::radio::RadioPlan plan;
+        plan.frequencies.downlinkHz = 435.85e6;
+        plan.frequencies.uplinkHz = 145.95e6;
+        plan.noradId = flock->catalogueNumber;
+        radio->setPlan(plan);
+        QSignalSpy sent(radio->link(), &RadioLink::commandSent);
+        QSignalSpy read(radio->link(), &RadioLink::frequenciesRead);
+        radio->connectRadio();
+        QTRY_COMPARE_WITH_TIMEOUT(radio->link()->state(), RadioLink::State::Open, 15000);
+        // Where the radio was found is read once...
+        QTRY_COMPARE_WITH_TIMEOUT(read.count(), 1, 10000);
+        // ...and nothing is asked after it: a command of the test's, given
+        // now, is the next on the wire. (Read again on each answer, the
+        // radio was read back to back until AOS, some 3,000 times a second.)
+        radio->link()->setMode(QStringLiteral("USB"), 0);
+        auto texts = [&] {
+            QStringList all;
+            for (const QList<QVariant> &args : std::as_const(sent))
+                all << args.at(0).toString();
+            return all;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(texts().contains(QStringLiteral("+M USB 0")), 10000);
+        const QStringList before = texts().mid(0, texts().indexOf(QStringLiteral("+M USB 0")));
+        // The opening's read and the one of where the radio was found.
+        QVERIFY2(before.count(QStringLiteral("+f")) == 2, qPrintable(before.join(", ")));
+        QVERIFY(!radio->isSteering());
+        rigctld.terminate();
+        QTRY_COMPARE(rigctld.state(), QProcess::NotRunning);
+    }
+};
+
+QTEST_GUILESS_MAIN(DopplerRadioTest)
+#include "tst_dopplerradio.moc"
