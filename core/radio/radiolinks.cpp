@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "radiolinks.h"
 
+#include "hamlibradio.h"
+#include "hamliburi.h"
 #include "rigctldradio.h"
 
 #include <QUrl>
@@ -23,7 +25,7 @@ std::unique_ptr<RadioLink> makeRadioLink(const QString &uri, QString *error)
     const QString trimmed = uri.trimmed();
     if (trimmed.isEmpty()) {
         if (error)
-            *error = QObject::tr("no radio link given (expected rigctld://host:port)");
+            *error = QObject::tr("no radio link given (expected rigctld://host:port, hamlib:MODEL or sim:)");
         return nullptr;
     }
     const QUrl url(trimmed, QUrl::StrictMode);
@@ -40,9 +42,16 @@ std::unique_ptr<RadioLink> makeRadioLink(const QString &uri, QString *error)
             return refuse(error, trimmed, QObject::tr("port 0 is no rigctld's port"));
         return std::make_unique<RigctldRadioLink>(trimmed, url.host(), quint16(port));
     }
+    if (scheme == QLatin1String("hamlib") || scheme == QLatin1String("sim")) {
+        QString why;
+        std::optional<HamlibRadioConfig> config = hamlibRadioConfig(url, trimmed, &why);
+        if (!config)
+            return refuse(error, trimmed, why);
+        return std::make_unique<HamlibRadioLink>(std::move(*config));
+    }
     if (scheme.isEmpty())
-        return refuse(error, trimmed, QObject::tr("no scheme (expected rigctld://host:port)"));
-    return refuse(error, trimmed, QObject::tr("unknown radio link kind '%1' (known: rigctld)").arg(scheme));
+        return refuse(error, trimmed, QObject::tr("no scheme (expected rigctld://host:port, hamlib:MODEL or sim:)"));
+    return refuse(error, trimmed, QObject::tr("unknown radio link kind '%1' (known: rigctld, hamlib, sim)").arg(scheme));
 }
 
 } // namespace slew::radio

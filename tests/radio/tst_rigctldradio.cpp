@@ -223,8 +223,8 @@ void RigctldRadioTest::uris_data()
     QTest::addColumn<QString>("message"); // part of the refusal
     QTest::newRow("default port") << "rigctld://127.0.0.1" << 4532 << "";
     QTest::newRow("port") << "rigctld://radio.local:4600" << 4600 << "";
-    QTest::newRow("unknown scheme") << "hamlib://127.0.0.1:4532" << 0
-                                    << "hamlib://127.0.0.1:4532: unknown radio link kind 'hamlib' (known: rigctld)";
+    QTest::newRow("unknown scheme") << "flrig://127.0.0.1:12345" << 0
+                                    << "flrig://127.0.0.1:12345: unknown radio link kind 'flrig' (known: rigctld, hamlib, sim)";
     QTest::newRow("no host") << "rigctld://:4532" << 0 << "rigctld://:4532: no host named";
     QTest::newRow("no scheme") << "127.0.0.1:4532" << 0 << "127.0.0.1:4532:";
     QTest::newRow("bad port") << "rigctld://127.0.0.1:70000" << 0 << "rigctld://127.0.0.1:70000: not a valid URI";
