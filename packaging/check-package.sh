@@ -41,11 +41,12 @@ for program in slew slew-sim slewctl; do
     fi
 done
 
-# The control fields: the Qt libraries as dependencies, the licence.
+# The control fields: the Qt libraries and libhamlib as dependencies, the licence.
 fields=$work/control/control
 grep -qE '^Depends:.*libqt6widgets6' "$fields" || fail "Depends lacks the Qt widgets library: $(grep ^Depends "$fields")"
 grep -qE '^Depends:.*libqt6charts6' "$fields" || fail "Depends lacks Qt Charts"
 grep -qE '^Depends:.*libqt6serialport6' "$fields" || fail "Depends lacks Qt SerialPort"
+grep -qE '^Depends:.*libhamlib4' "$fields" || fail "Depends lacks libhamlib, which the in-process radio link uses"
 grep -q 'License: GPL-3.0-or-later' "$fields" || fail "the description does not state the licence"
 grep -q '^License: GPL-3.0+' "$root/usr/share/doc/slew/copyright" || fail "no copyright file with the licence"
 
