@@ -12,6 +12,7 @@
 #include "sky/station.h"
 #include "sky/tle.h"
 #include "sky/utctime.h"
+#include "radio/dopplersteering.h"
 #include "station/dopplerradio.h"
 #include "station/station.h"
 #include "tracking/passrunner.h"
@@ -84,6 +85,53 @@ private slots:
         QVERIFY(!radio->isSteering());
         rigctld.terminate();
         QTRY_COMPARE(rigctld.state(), QProcess::NotRunning);
+    }
+
+    void tunesAPassAlreadyUpWithoutTakingItsOwnFrequenciesForTheDial()
+    {
+        // As in the window: the pass is up, the radio (sim:, libhamlib in
+        // process) connected, and only then the frequencies applied.
+        Station station;
+        slew::sky::Station place;
+        QString error;
+        QVERIFY(slew::sky::parseStation(QStringLiteral("JO65hq"), &place, &error));
+        station.setPlace(place);
+        station.clock()->rehearse(*slew::sky::julianFromIso(QStringLiteral("2018-01-22T09:19:00Z")), 5.0);
+        const slew::sky::TleFile sets = slew::sky::readTleFile(QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"));
+        const slew::sky::Tle *flock = slew::sky::findOneTle(sets.sets, QStringLiteral("FLOCK 2P-1"), &error);
+        QVERIFY2(flock, qPrintable(error));
+        station.session()->connectTo(QStringLiteral("sim:"));
+        QTRY_VERIFY(station.session()->isConnected());
+        slew::tracking::TrackTarget target;
+        target.elements = *flock;
+        QCOMPARE(station.track(target, 0.0), QString());
+        QTRY_COMPARE_WITH_TIMEOUT(station.passRunner()->tracker().state(), slew::tracking::Tracker::State::Tracking,
+                                  20000);
+        DopplerRadio *radio = station.radio();
+        QVERIFY2(radio->setLink(QStringLiteral("sim:"), &error), qPrintable(error));
+        QSignalSpy read(radio->link(), &RadioLink::frequenciesRead);
+        radio->connectRadio();
+        QTRY_COMPARE_WITH_TIMEOUT(radio->link()->state(), RadioLink::State::Open, 15000);
+        QTRY_COMPARE_WITH_TIMEOUT(read.count(), 1, 10000);
+        QSignalSpy followed(radio->steering(), &slew::radio::DopplerSteering::dialFollowed);
+        QSignalSpy lines(radio, &DopplerRadio::logLine);
+        slew::radio::RadioPlan plan;
+        plan.frequencies.downlinkHz = 435.85e6;
+        plan.frequencies.uplinkHz = 145.95e6;
+        plan.frequencies.uplinkFollows = slew::radio::UplinkFollowsDial::OppositeWay;
+        plan.receiveMode = QStringLiteral("USB");
+        plan.transmitMode = QStringLiteral("LSB");
+        plan.noradId = flock->catalogueNumber;
+        radio->setPlan(plan);
+        QVERIFY(radio->isSteering());
+        // Until a hundred frequencies have been sent, nothing the radio
+        // reads back is taken for a turn of the dial.
+        QTRY_VERIFY_WITH_TIMEOUT(radio->steering()->commandsSent() > 100, 30000);
+        QStringList said;
+        for (const QList<QVariant> &args : std::as_const(lines))
+            said << args.at(0).toString();
+        QVERIFY2(followed.isEmpty(), qPrintable(said.join('\n')));
+        QVERIFY2(radio->figures().worstHz < 500, qPrintable(QString::number(radio->figures().worstHz)));
     }
 };
 
