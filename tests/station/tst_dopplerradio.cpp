@@ -26,6 +26,40 @@ using slew::radio::RadioLink;
 using slew::station::DopplerRadio;
 using slew::station::Station;
 
+namespace {
+
+// FLOCK 2P-1 from the test element sets.
+slew::sky::Tle flock()
+{
+    QString error;
+    static const slew::sky::TleFile sets =
+        slew::sky::readTleFile(QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"));
+    const slew::sky::Tle *found = slew::sky::findOneTle(sets.sets, QStringLiteral("FLOCK 2P-1"), &error);
+    return found ? *found : slew::sky::Tle{};
+}
+
+// The station at JO65hq on the built-in rotator simulator, its clock from
+// `iso` at `rate`, tracking FLOCK 2P-1 until the tracker is in `state`.
+bool trackFlock(Station &station, const QString &iso, double rate, slew::tracking::Tracker::State state)
+{
+    slew::sky::Station place;
+    QString error;
+    if (!slew::sky::parseStation(QStringLiteral("JO65hq"), &place, &error))
+        return false;
+    station.setPlace(place);
+    station.clock()->rehearse(*slew::sky::julianFromIso(iso), rate);
+    station.session()->connectTo(QStringLiteral("sim:"));
+    if (!QTest::qWaitFor([&] { return station.session()->isConnected(); }, 10000))
+        return false;
+    slew::tracking::TrackTarget target;
+    target.elements = flock();
+    if (target.elements.catalogueNumber == 0 || !station.track(target, 0.0).isEmpty())
+        return false;
+    return QTest::qWaitFor([&] { return station.passRunner()->tracker().state() == state; }, 20000);
+}
+
+} // namespace
+
 class DopplerRadioTest : public QObject {
     Q_OBJECT
 private slots:
@@ -38,29 +72,15 @@ private slots:
         QVERIFY(port);
 
         Station station;
-        slew::sky::Station place;
-        QString error;
-        QVERIFY(slew::sky::parseStation(QStringLiteral("JO65hq"), &place, &error));
-        station.setPlace(place);
         // Five minutes before AOS (09:17:51), in real time.
-        station.clock()->rehearse(*slew::sky::julianFromIso(QStringLiteral("2018-01-22T09:12:51Z")), 1.0);
-        const slew::sky::TleFile sets = slew::sky::readTleFile(QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"));
-        const slew::sky::Tle *flock = slew::sky::findOneTle(sets.sets, QStringLiteral("FLOCK 2P-1"), &error);
-        QVERIFY2(flock, qPrintable(error));
-        station.session()->connectTo(QStringLiteral("sim:"));
-        QTRY_VERIFY(station.session()->isConnected());
-        slew::tracking::TrackTarget target;
-        target.elements = *flock;
-        QCOMPARE(station.track(target, 0.0), QString());
-        QTRY_COMPARE_WITH_TIMEOUT(station.passRunner()->tracker().state(), slew::tracking::Tracker::State::Waiting,
-                                  20000);
-
+        QVERIFY(trackFlock(station, QStringLiteral("2018-01-22T09:12:51Z"), 1.0, slew::tracking::Tracker::State::Waiting));
+        QString error;
         DopplerRadio *radio = station.radio();
         QVERIFY2(radio->setLink(QStringLiteral("rigctld://127.0.0.1:%1").arg(port), &error), qPrintable(error));
         slew::radio::RadioPlan plan;
         plan.frequencies.downlinkHz = 435.85e6;
         plan.frequencies.uplinkHz = 145.95e6;
-        plan.noradId = flock->catalogueNumber;
+        plan.noradId = flock().catalogueNumber;
         radio->setPlan(plan);
         QSignalSpy sent(radio->link(), &RadioLink::commandSent);
         QSignalSpy read(radio->link(), &RadioLink::frequenciesRead);
@@ -92,21 +112,8 @@ private slots:
         // As in the window: the pass is up, the radio (sim:, libhamlib in
         // process) connected, and only then the frequencies applied.
         Station station;
-        slew::sky::Station place;
+        QVERIFY(trackFlock(station, QStringLiteral("2018-01-22T09:19:00Z"), 5.0, slew::tracking::Tracker::State::Tracking));
         QString error;
-        QVERIFY(slew::sky::parseStation(QStringLiteral("JO65hq"), &place, &error));
-        station.setPlace(place);
-        station.clock()->rehearse(*slew::sky::julianFromIso(QStringLiteral("2018-01-22T09:19:00Z")), 5.0);
-        const slew::sky::TleFile sets = slew::sky::readTleFile(QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"));
-        const slew::sky::Tle *flock = slew::sky::findOneTle(sets.sets, QStringLiteral("FLOCK 2P-1"), &error);
-        QVERIFY2(flock, qPrintable(error));
-        station.session()->connectTo(QStringLiteral("sim:"));
-        QTRY_VERIFY(station.session()->isConnected());
-        slew::tracking::TrackTarget target;
-        target.elements = *flock;
-        QCOMPARE(station.track(target, 0.0), QString());
-        QTRY_COMPARE_WITH_TIMEOUT(station.passRunner()->tracker().state(), slew::tracking::Tracker::State::Tracking,
-                                  20000);
         DopplerRadio *radio = station.radio();
         QVERIFY2(radio->setLink(QStringLiteral("sim:"), &error), qPrintable(error));
         QSignalSpy read(radio->link(), &RadioLink::frequenciesRead);
@@ -121,7 +128,7 @@ private slots:
         plan.frequencies.uplinkFollows = slew::radio::UplinkFollowsDial::OppositeWay;
         plan.receiveMode = QStringLiteral("USB");
         plan.transmitMode = QStringLiteral("LSB");
-        plan.noradId = flock->catalogueNumber;
+        plan.noradId = flock().catalogueNumber;
         radio->setPlan(plan);
         QVERIFY(radio->isSteering());
         // Until a hundred frequencies have been sent, nothing the radio

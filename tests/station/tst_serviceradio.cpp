@@ -55,6 +55,43 @@ double number(const QByteArray &line)
     return line.trimmed().toDouble();
 }
 
+// `slew --headless ARGS` as a service runs, with no display, and its log
+// as it comes.
+struct Service {
+    QProcess process;
+    QByteArray out;
+
+    explicit Service(const QStringList &arguments)
+    {
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.remove("DISPLAY");
+        env.remove("QT_QPA_PLATFORM");
+        process.setProcessEnvironment(env);
+        process.start(qEnvironmentVariable("SLEW_BIN"), QStringList{"--headless"} + arguments);
+    }
+    // Whether the log says `text` within `ms` (the process ending stops the wait).
+    bool logged(const char *text, int ms = 20000)
+    {
+        return QTest::qWaitFor(
+                   [&] {
+                       out += process.readAllStandardOutput();
+                       return out.contains(text) || process.state() == QProcess::NotRunning;
+                   },
+                   ms)
+               && out.contains(text);
+    }
+    QByteArray said() { return out + process.readAllStandardError(); }
+};
+
+// The rehearsal every pass test runs: FLOCK 2P-1 over JO65hq from
+// 2018-01-22T09:17:40Z at 20 times, with the radio given after it.
+QStringList rehearsedPass(const QStringList &rotator, const QStringList &radio)
+{
+    return rotator + QStringList{"--limits", "0:450,0:180", "--qth", "JO65hq", "--tle", kTle, "--track", "FLOCK 2P-1",
+                                 "--clock-start", "2018-01-22T09:17:40Z", "--clock-rate", "20"}
+           + radio;
+}
+
 } // namespace
 
 class ServiceRadioTest : public QObject {
@@ -75,27 +112,13 @@ private slots:
 
         // FLOCK 2P-1 over JO65hq: AOS 09:17:51, max 56°, LOS 09:25:04 UTC; at
         // 20 times, 22 s of the test's time.
-        QProcess slew;
-        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-        env.remove("DISPLAY");
-        env.remove("QT_QPA_PLATFORM");
-        slew.setProcessEnvironment(env);
-        slew.start(qEnvironmentVariable("SLEW_BIN"),
-                   {"--headless", "--connect", "sim:", "--limits", "0:450,0:180", "--qth", "JO65hq", "--tle", kTle,
-                    "--track", "FLOCK 2P-1", "--clock-start", "2018-01-22T09:17:40Z", "--clock-rate", "20", "--radio",
-                    QStringLiteral("rigctld://127.0.0.1:%1").arg(port), "--downlink", "435.85M", "--uplink",
-                    "145.95M", "--downlink-mode", "usb", "--uplink-mode", "LSB", "--transponder-invert", "--radio-restore"});
-        QByteArray out;
-        auto logged = [&](const char *text, int ms = 20000) {
-            return QTest::qWaitFor(
-                [&] {
-                    out += slew.readAllStandardOutput();
-                    return out.contains(text) || slew.state() == QProcess::NotRunning;
-                },
-                ms)
-                   && out.contains(text);
-        };
-        QVERIFY2(logged("radio: connected to rigctld://"), (out + slew.readAllStandardError()).constData());
+        Service slew(rehearsedPass({"--connect", "sim:"},
+                                   {"--radio", QStringLiteral("rigctld://127.0.0.1:%1").arg(port), "--downlink", "435.85M",
+                                    "--uplink", "145.95M", "--downlink-mode", "usb", "--uplink-mode", "LSB",
+                                    "--transponder-invert", "--radio-restore"}));
+        QByteArray &out = slew.out;
+        auto logged = [&](const char *text, int ms = 20000) { return slew.logged(text, ms); };
+        QVERIFY2(logged("radio: connected to rigctld://"), (out + slew.process.readAllStandardError()).constData());
         QVERIFY2(logged("radio: AOS: tuning FLOCK 2P-1 for downlink 435.850000 MHz USB, uplink 145.950000 MHz LSB"),
                  out.constData());
 
@@ -146,10 +169,10 @@ private slots:
                  (askRigctld(port, "f", 1).value(0) + " " + before.value(0) + "\n" + out.right(1500)).constData());
         QVERIFY(!out.contains("radio: +"));  // no command refused on the way
 
-        QSignalSpy finished(&slew, &QProcess::finished);
-        ::kill(pid_t(slew.processId()), SIGTERM);
+        QSignalSpy finished(&slew.process, &QProcess::finished);
+        ::kill(pid_t(slew.process.processId()), SIGTERM);
         QVERIFY(finished.wait(10000));
-        QCOMPARE(slew.exitCode(), 0);
+        QCOMPARE(slew.process.exitCode(), 0);
         rigctld.terminate();
         QTRY_COMPARE(rigctld.state(), QProcess::NotRunning);
     }
@@ -158,27 +181,12 @@ private slots:
     {
         // sim:: Hamlib's dummy rig in Slew's own process, on libhamlib's
         // worker thread: the same pass, the same log.
-        QProcess slew;
-        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-        env.remove("DISPLAY");
-        env.remove("QT_QPA_PLATFORM");
-        slew.setProcessEnvironment(env);
-        slew.start(qEnvironmentVariable("SLEW_BIN"),
-                   {"--headless", "--connect", "sim:", "--limits", "0:450,0:180", "--qth", "JO65hq", "--tle", kTle,
-                    "--track", "FLOCK 2P-1", "--clock-start", "2018-01-22T09:17:40Z", "--clock-rate", "20", "--radio",
-                    "sim:", "--downlink", "435.85M", "--uplink", "145.95M", "--downlink-mode", "USB", "--uplink-mode",
-                    "LSB", "--transponder-invert"});
-        QByteArray out;
-        auto logged = [&](const char *text, int ms) {
-            return QTest::qWaitFor(
-                       [&] {
-                           out += slew.readAllStandardOutput();
-                           return out.contains(text) || slew.state() == QProcess::NotRunning;
-                       },
-                       ms)
-                   && out.contains(text);
-        };
-        QVERIFY2(logged("radio: connected to sim:", 20000), (out + slew.readAllStandardError()).constData());
+        Service slew(rehearsedPass({"--connect", "sim:"}, {"--radio", "sim:", "--downlink", "435.85M", "--uplink", "145.95M",
+                                                          "--downlink-mode", "USB", "--uplink-mode", "LSB",
+                                                          "--transponder-invert"}));
+        QByteArray &out = slew.out;
+        auto logged = [&](const char *text, int ms) { return slew.logged(text, ms); };
+        QVERIFY2(logged("radio: connected to sim:", 20000), (out + slew.process.readAllStandardError()).constData());
         QVERIFY2(logged("radio: AOS: tuning FLOCK 2P-1 for downlink 435.850000 MHz USB, uplink 145.950000 MHz LSB on "
                         "sim:",
                         20000),
@@ -192,10 +200,10 @@ private slots:
         QVERIFY(figures.captured(3).toInt() > 100);
         QVERIFY(figures.captured(4).toInt() > 20);
         QVERIFY(!out.contains("radio: +") && !out.contains("radio: set_")); // nothing refused on the way
-        QSignalSpy finished(&slew, &QProcess::finished);
-        ::kill(pid_t(slew.processId()), SIGTERM);
+        QSignalSpy finished(&slew.process, &QProcess::finished);
+        ::kill(pid_t(slew.process.processId()), SIGTERM);
         QVERIFY(finished.wait(10000));
-        QCOMPARE(slew.exitCode(), 0);
+        QCOMPARE(slew.process.exitCode(), 0);
     }
 
     void tunesTheControllersRadioThroughAPass()
@@ -209,30 +217,16 @@ private slots:
         QVERIFY2(sim.start({"--listen", "127.0.0.1:0", "--dialect", "easycomm2", "--time-scale", "20", "--az-max",
                             "450", "--el-max", "180", "--log-received", received}),
                  qPrintable(sim.error()));
-        QProcess slew;
-        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-        env.remove("DISPLAY");
-        env.remove("QT_QPA_PLATFORM");
-        slew.setProcessEnvironment(env);
-        slew.start(qEnvironmentVariable("SLEW_BIN"),
-                   {"--headless", "--connect", QStringLiteral("tcp://127.0.0.1:%1").arg(sim.port()), "--dialect",
-                    "easycomm2", "--limits", "0:450,0:180", "--qth", "JO65hq", "--tle", kTle, "--track", "FLOCK 2P-1",
-                    "--clock-start", "2018-01-22T09:17:40Z", "--clock-rate", "20", "--radio", "controller", "--downlink",
-                    "435.85M", "--uplink", "145.95M", "--downlink-mode", "USB", "--uplink-mode", "LSB"});
-        QByteArray out;
-        auto logged = [&](const char *text, int ms) {
-            return QTest::qWaitFor(
-                       [&] {
-                           out += slew.readAllStandardOutput();
-                           return out.contains(text) || slew.state() == QProcess::NotRunning;
-                       },
-                       ms)
-                   && out.contains(text);
-        };
+        Service slew(rehearsedPass({"--connect", QStringLiteral("tcp://127.0.0.1:%1").arg(sim.port()), "--dialect",
+                                    "easycomm2"},
+                                   {"--radio", "controller", "--downlink", "435.85M", "--uplink", "145.95M",
+                                    "--downlink-mode", "USB", "--uplink-mode", "LSB"}));
+        QByteArray &out = slew.out;
+        auto logged = [&](const char *text, int ms) { return slew.logged(text, ms); };
         QVERIFY2(logged("radio: AOS: tuning FLOCK 2P-1 for downlink 435.850000 MHz USB, uplink 145.950000 MHz LSB on "
                         "controller",
                         20000),
-                 (out + slew.readAllStandardError()).constData());
+                 (out + slew.process.readAllStandardError()).constData());
         QVERIFY2(logged("radio: LOS: Doppler error RMS ", 40000), out.constData());
         QFile record(received);
         QVERIFY(record.open(QIODevice::ReadOnly));
@@ -267,10 +261,10 @@ private slots:
                  qPrintable(QString("%1 .. %2").arg(lowestDown, 0, 'f', 0).arg(highestDown, 0, 'f', 0)));
         QVERIFY2(lowestUp < 145.95e6 - 1500 && highestUp > 145.95e6 + 1500,
                  qPrintable(QString("%1 .. %2").arg(lowestUp, 0, 'f', 0).arg(highestUp, 0, 'f', 0)));
-        QSignalSpy finished(&slew, &QProcess::finished);
-        ::kill(pid_t(slew.processId()), SIGTERM);
+        QSignalSpy finished(&slew.process, &QProcess::finished);
+        ::kill(pid_t(slew.process.processId()), SIGTERM);
         QVERIFY(finished.wait(10000));
-        QCOMPARE(slew.exitCode(), 0);
+        QCOMPARE(slew.process.exitCode(), 0);
     }
 
     void refusesABadRadio_data()
@@ -320,12 +314,11 @@ private slots:
     {
         QFETCH(QStringList, args);
         QFETCH(QString, says);
-        QProcess slew;
-        QSignalSpy finished(&slew, &QProcess::finished);
-        slew.start(qEnvironmentVariable("SLEW_BIN"), QStringList{"--headless", "--connect", "sim:"} + args);
-        QVERIFY(finished.wait(10000));
-        QCOMPARE(slew.exitCode(), 2);
-        const QByteArray err = slew.readAllStandardError();
+        Service slew(QStringList{"--connect", "sim:"} + args);
+        QSignalSpy finished(&slew.process, &QProcess::finished);
+        QVERIFY(slew.process.state() == QProcess::NotRunning || finished.wait(10000));
+        QCOMPARE(slew.process.exitCode(), 2);
+        const QByteArray err = slew.process.readAllStandardError();
         QVERIFY2(err.contains(says.toUtf8()), err.constData());
     }
 };
