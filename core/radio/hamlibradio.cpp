@@ -298,15 +298,20 @@ HamlibJob HamlibRadioLink::jobFor(const PacedCommand &command) const
 void HamlibRadioLink::send(const PacedCommand &command)
 {
     m_sentAt.start();
-    m_worker->post(jobFor(command));
+    HamlibJob job = jobFor(command);
+    job.serial = ++m_lastSerial;
+    m_worker->post(job);
     if (Exchange(command.tag) != Exchange::OpeningPort)
         emit commandSent(command.text);
 }
 
 void HamlibRadioLink::onDone(const HamlibResult &result)
 {
-    // A result of a session this link has left, or of nothing it waits for.
-    if (result.session != *m_session || !m_pacer.inFlight())
+    // A result of a session this link has left, or of nothing it waits for:
+    // only the answer to the job on the wire now is that command's (a read
+    // of the transmit frequency taken for the receive one's answer would
+    // be followed as a turn of the operator's dial).
+    if (result.session != *m_session || !m_pacer.inFlight() || result.serial != m_lastSerial)
         return;
     const PacedCommand command = *m_pacer.inFlight();
     finishExchange(command, result);

@@ -157,6 +157,7 @@ private:
     };
     std::map<CommandKind, Values> m_newest;
     QElapsedTimer m_sentAt;
+    quint64 m_lastSerial = 0; // the number of the job on the wire (HamlibJob::serial)
     State m_state = State::Closed;
     VfoLayout m_wantedLayout = VfoLayout::Split; // from the next opening on
     VfoLayout m_layout = VfoLayout::Split;       // this opening's

@@ -101,6 +101,7 @@ void HamlibWorker::run(const HamlibJob &job)
 
     HamlibResult result;
     result.session = job.session;
+    result.serial = job.serial;
     result.call = job.call;
     {
         const std::lock_guard turn(hamlibTurn());

@@ -62,10 +62,12 @@ struct HamlibJob {
     double hz = 0;         // SetFreq, SetSplitFreq
     quint64 mode = 0;      // SetMode, SetSplitMode: Hamlib's rmode_t
     qint64 passbandHz = 0; // SetMode, SetSplitMode: 0 the mode's default, -1 unchanged
+    quint64 serial = 0;    // the link's number for this job, given back with its result
 };
 
 struct HamlibResult {
     int session = 0;
+    quint64 serial = 0; // the job's
     HamlibCall call = HamlibCall::GetFreq;
     int code = 0;     // what Hamlib returned: 0, or a negative RIG_E... code
     double value = 0; // a frequency or a step read, in Hz; GetSplit: 1 when on
