@@ -86,8 +86,8 @@ void HamlibRadioLink::open()
         connect(m_worker, &HamlibWorker::done, this, &HamlibRadioLink::onDone, Qt::QueuedConnection);
     }
     setState(State::Opening, m_config.device.isEmpty()
-                                 ? tr("%1: opening the %2").arg(m_config.uri, m_config.modelName)
-                                 : tr("%1: opening the %2 on %3").arg(m_config.uri, m_config.modelName, m_config.device));
+                                 ? tr("%1: opening the %2").arg(label(), m_config.modelName)
+                                 : tr("%1: opening the %2 on %3").arg(label(), m_config.modelName, m_config.device));
     m_pacer.submit({CommandKind::Read, QStringLiteral("rig_open"), int(Exchange::OpeningPort)});
 }
 
@@ -103,7 +103,7 @@ void HamlibRadioLink::close()
         return;
     m_state = State::Closed;
     leaveSession();
-    emit stateChanged(State::Closed, tr("%1: closed").arg(m_config.uri));
+    emit stateChanged(State::Closed, tr("%1: closed").arg(label()));
 }
 
 void HamlibRadioLink::leaveSession()
@@ -334,7 +334,7 @@ void HamlibRadioLink::finishExchange(const PacedCommand &command, const HamlibRe
     if (exchange == Exchange::OpeningPort) {
         if (failed) {
             const QString where = m_config.device.isEmpty() ? tr("the %1").arg(m_config.modelName) : m_config.device;
-            QString reason = tr("%1: cannot open %2: %3").arg(m_config.uri, where, words);
+            QString reason = tr("%1: cannot open %2: %3").arg(label(), where, words);
             if (!result.detail.isEmpty())
                 reason += tr(" (%1)").arg(result.detail);
             fail(reason);
@@ -344,7 +344,7 @@ void HamlibRadioLink::finishExchange(const PacedCommand &command, const HamlibRe
         return;
     }
     if (isLoss(result.code)) {
-        QString reason = tr("%1: %2 failed: %3").arg(m_config.uri, command.text, words);
+        QString reason = tr("%1: %2 failed: %3").arg(label(), command.text, words);
         if (result.code == -RIG_ETIMEOUT)
             reason += tr(", %1 times in a row").arg(m_timeoutsInARow);
         fail(reason);
@@ -374,7 +374,7 @@ void HamlibRadioLink::finishExchange(const PacedCommand &command, const HamlibRe
     case Exchange::OpeningRead: {
         const std::optional<double> hz = frequency();
         if (!hz) {
-            fail(tr("%1: cannot read the frequency: %2").arg(m_config.uri, failure));
+            fail(tr("%1: cannot read the frequency: %2").arg(label(), failure));
             return;
         }
         m_receiveRead = wholeHz(*hz);
@@ -447,12 +447,18 @@ void HamlibRadioLink::finishExchange(const PacedCommand &command, const HamlibRe
         becomeOpen();
 }
 
+QString HamlibRadioLink::label() const
+{
+    // "sim: closed", not "sim:: closed": a URI may end in its colon.
+    return m_config.uri.endsWith(QLatin1Char(':')) ? m_config.uri.chopped(1) : m_config.uri;
+}
+
 void HamlibRadioLink::becomeOpen()
 {
     if (m_state != State::Opening)
         return; // closed by a handler of the signals before
     setState(State::Open, tr("%1: open at %2 Hz; a set answered in %3 ms")
-                              .arg(m_config.uri, hzText(m_receiveRead.value_or(0)))
+                              .arg(label(), hzText(m_receiveRead.value_or(0)))
                               .arg(m_latencyMs));
 }
 

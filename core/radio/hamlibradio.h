@@ -137,6 +137,8 @@ private:
     // True when the failure means the radio is gone.
     bool isLoss(int code);
     void becomeOpen();
+    // The URI as messages start with it, without a colon of its own at the end.
+    QString label() const;
     void setState(State state, const QString &detail);
     // Closes with the reason; the command in flight, if any, failed with it.
     void fail(const QString &reason);

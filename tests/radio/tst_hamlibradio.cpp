@@ -231,10 +231,10 @@ void HamlibRadioTest::opensWithMeasuredLatency()
     QCOMPARE(link->tuningStepHz(), 1.0);
     QCOMPARE(states.count(), 2);
     QCOMPARE(states.at(0).at(0).value<RadioLink::State>(), RadioLink::State::Opening);
-    QCOMPARE(states.at(0).at(1).toString(), QStringLiteral("sim:: opening the Hamlib Dummy"));
+    QCOMPARE(states.at(0).at(1).toString(), QStringLiteral("sim: opening the Hamlib Dummy"));
     QCOMPARE(states.at(1).at(0).value<RadioLink::State>(), RadioLink::State::Open);
     QCOMPARE(states.at(1).at(1).toString(),
-             QStringLiteral("sim:: open at 145000000 Hz; a set answered in %1 ms").arg(link->latencyMs()));
+             QStringLiteral("sim: open at 145000000 Hz; a set answered in %1 ms").arg(link->latencyMs()));
     QCOMPARE(link->uri(), QStringLiteral("sim:"));
 }
 
@@ -410,7 +410,7 @@ void HamlibRadioTest::closeWhileOpeningThenReopen()
     link->open();
     link->close(); // while rig_open is on the worker
     QCOMPARE(link->state(), RadioLink::State::Closed);
-    QCOMPARE(states.last().at(1).toString(), QStringLiteral("sim:: closed"));
+    QCOMPARE(states.last().at(1).toString(), QStringLiteral("sim: closed"));
     // The owner opens it again: a new opening, the first one's results unheard.
     link->open();
     QTRY_COMPARE_WITH_TIMEOUT(link->state(), RadioLink::State::Open, 15000);
