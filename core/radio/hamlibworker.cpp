@@ -127,11 +127,15 @@ void HamlibWorker::run(const HamlibJob &job)
             case HamlibCall::SetFreq:
                 result.code = rig_set_freq(m_rig, vfo, job.hz);
                 break;
+            // The split calls name the transmit VFO. Named as the current
+            // one, Hamlib 4.5.4's dummy rig sets and reads VFO A, the
+            // receive side: a receive reading then shows the transmit
+            // frequency, and was followed as a turn of the dial.
             case HamlibCall::SetSplitFreq:
-                result.code = rig_set_split_freq(m_rig, RIG_VFO_CURR, job.hz);
+                result.code = rig_set_split_freq(m_rig, RIG_VFO_TX, job.hz);
                 break;
             case HamlibCall::GetSplitFreq:
-                result.code = rig_get_split_freq(m_rig, RIG_VFO_CURR, &hz);
+                result.code = rig_get_split_freq(m_rig, RIG_VFO_TX, &hz);
                 result.value = hz;
                 break;
             case HamlibCall::GetSplit:
@@ -148,7 +152,7 @@ void HamlibWorker::run(const HamlibJob &job)
                 result.code = rig_set_mode(m_rig, vfo, rmode_t(job.mode), pbwidth_t(job.passbandHz));
                 break;
             case HamlibCall::SetSplitMode:
-                result.code = rig_set_split_mode(m_rig, RIG_VFO_CURR, rmode_t(job.mode), pbwidth_t(job.passbandHz));
+                result.code = rig_set_split_mode(m_rig, RIG_VFO_TX, rmode_t(job.mode), pbwidth_t(job.passbandHz));
                 break;
             case HamlibCall::GetStep:
                 result.value = tuningStepHz(job.vfo);
@@ -179,6 +183,11 @@ int HamlibWorker::openRig(QString *detail)
         code = setting("civaddr", QByteArray::number(m_config.civAddress), detail);
     if (code == RIG_OK) {
         code = rig_open(m_rig);
+        // Readings are of the radio, not of Hamlib's memory of what it was
+        // sent: the dial is followed from them (its cache would hide a turn
+        // for up to half a second, and hid the fault below).
+        if (code == RIG_OK)
+            rig_set_cache_timeout_ms(m_rig, HAMLIB_CACHE_ALL, 0);
         // Hamlib says "IO error" for a device that is not there and one
         // the user may not open alike; the file says which.
         if (code != RIG_OK && !m_config.device.isEmpty()) {

@@ -40,19 +40,19 @@ enum class HamlibCall {
     Open,         // rig_init, the settings, rig_open
     GetFreq,      // rig_get_freq
     SetFreq,      // rig_set_freq
-    SetSplitFreq, // rig_set_split_freq
-    GetSplitFreq, // rig_get_split_freq
+    SetSplitFreq, // rig_set_split_freq (RIG_VFO_TX)
+    GetSplitFreq, // rig_get_split_freq (RIG_VFO_TX)
     GetSplit,     // rig_get_split_vfo: whether split is on
     SplitOn,      // rig_set_split_vfo(current, on, VFO B)
     SplitOff,     // rig_set_split_vfo(current, off, VFO A)
     SetMode,      // rig_set_mode
-    SetSplitMode, // rig_set_split_mode
+    SetSplitMode, // rig_set_split_mode (RIG_VFO_TX)
     GetStep,      // rig_get_ts, else the model's finest step for the mode
     Close,        // rig_close and rig_cleanup
     Finish,       // Close, then the thread ends
 };
 
-// The VFO a call names. The split calls name the current one.
+// The VFO a call names. The split calls name the transmit VFO (RIG_VFO_TX).
 enum class HamlibVfo { Current, Main, Sub };
 
 struct HamlibJob {
