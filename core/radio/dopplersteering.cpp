@@ -6,7 +6,6 @@
 #include "sky/observation.h"
 #include "tracking/stationclock.h"
 
-#include <QDateTime>
 
 #include <algorithm>
 #include <cmath>
@@ -20,6 +19,9 @@ namespace {
 // latency and a read on its way, with room to spare.
 constexpr qint64 kOwnEchoMs = 3000;
 constexpr size_t kRecentSent = 32;
+// A read unanswered this long has failed (a failure brings no reading); a
+// read answered later still is judged against kOwnEchoMs of Slew's own.
+constexpr qint64 kReadGivenUpMs = 2000;
 constexpr double kMsPerDay = 86400000.0;
 // The Doppler rate is taken over this span around the moment.
 constexpr double kRateSpanS = 0.5;
@@ -42,7 +44,13 @@ DopplerSteering::DopplerSteering(RadioLink *link, QObject *parent) : QObject(par
     connect(link, &RadioLink::frequenciesRead, this, &DopplerSteering::onRead);
     connect(&m_timer, &QTimer::timeout, this, [this] {
         if (m_clock)
-            step(m_clock->nowJulian(), QDateTime::currentMSecsSinceEpoch() - m_timerStartMs);
+            step(m_clock->nowJulian(), m_monotonic.elapsed());
+    });
+    m_monotonic.start();
+    // A link that closes or opens again has lost whatever was on its way.
+    connect(link, &RadioLink::stateChanged, this, [this] {
+        m_readPending = false;
+        m_recentReceive.clear();
     });
 }
 
@@ -52,12 +60,17 @@ void DopplerSteering::begin(const SatelliteFrequencies &satellite, RangeRate ran
     m_rangeRate = std::move(rangeRate);
     m_sentReceive.reset();
     m_sentTransmit.reset();
-    m_recentReceive.clear();
     m_sendTimes.clear();
     m_dial.reset();
     m_receiveTaken = true;
-    m_readPending = false;
-    m_lastReadMs = -1;
+    // What is on its way to the radio belongs to the link, not to the
+    // pass: a read still unanswered stays awaited (asked again now, the
+    // pacer would put the new read where the old one stood, ahead of
+    // this pass's first frequency), and the frequencies sent before are
+    // still Slew's own when a reading shows them (m_recentReceive). Both
+    // matter when begin() comes again on an open link (the window's Apply
+    // during a pass): forgotten, the last frequency of before read back
+    // after the first of now is taken for a turn of the dial.
     m_receivesSent = 0;
     m_receivesBeforeRead = 0;
     m_heldReceive.clear();
@@ -134,7 +147,6 @@ void DopplerSteering::end()
 void DopplerSteering::start(const tracking::StationClock *clock)
 {
     m_clock = clock;
-    m_timerStartMs = QDateTime::currentMSecsSinceEpoch();
     m_timer.start(m_settings.stepMs);
 }
 
@@ -167,6 +179,10 @@ void DopplerSteering::step(double julian, qint64 nowMs)
     m_nowMs = nowMs;
     if (!m_rangeRate || !m_link->isOpen())
         return;
+    // A read that fails is answered by no reading: given up after a while,
+    // or the receive frequency would wait for it for the rest of the pass.
+    if (m_readPending && nowMs - m_lastReadMs >= kReadGivenUpMs)
+        m_readPending = false;
     // The dial is read again and again while it is followed; a new receive
     // frequency goes out when a reading has shown the last one taken.
     if (followsDial() && !m_readPending && (m_lastReadMs < 0 || nowMs - m_lastReadMs >= m_settings.readBackMs)) {

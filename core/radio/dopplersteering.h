@@ -35,6 +35,7 @@
 
 #include "doppler.h"
 
+#include <QElapsedTimer>
 #include <QObject>
 #include <QTimer>
 
@@ -167,7 +168,7 @@ private:
     int m_commandsAtBegin = 0;
     const tracking::StationClock *m_clock = nullptr;
     QTimer m_timer;
-    qint64 m_timerStartMs = 0;
+    QElapsedTimer m_monotonic; // start()'s nowMs: one clock for the steering's whole life
 };
 
 } // namespace slew::radio

@@ -30,6 +30,8 @@ public:
     void setTransmitMode(const QString &, int) override {}
     void readFrequencies() override
     {
+        if (failReads)
+            return; // a read the radio did not answer: a real link says so in commandFailed, and reads nothing
         slew::radio::RadioFrequencies f;
         f.receiveHz = receive;
         f.transmitHz = transmit;
@@ -41,6 +43,7 @@ public:
     // Reads are answered by answerReads(), as a real link's answer comes
     // back after commands sent meanwhile have been queued.
     bool answerLater = false;
+    bool failReads = false;
     void answerReads()
     {
         std::deque<slew::radio::RadioFrequencies> due;

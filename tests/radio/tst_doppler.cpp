@@ -236,6 +236,67 @@ private slots:
         QVERIFY(steering.figures().worstHz < 50);
     }
 
+    void beginningAgainTakesNoEarlierFrequencyForTheDial()
+    {
+        // Begun again on an open link (the window's Apply during a pass):
+        // the radio still takes, and reads back, frequencies of the first
+        // begin() for a latency after it. They are Slew's own, not a turn.
+        FakeRadioLink radio;
+        radio.latency = 300;
+        DopplerSteering steering(&radio);
+        SatelliteFrequencies sat;
+        sat.downlinkHz = 435.85e6;
+        sat.uplinkHz = 145.95e6;
+        steering.begin(sat, sweep);
+        QSignalSpy followed(&steering, &DopplerSteering::dialFollowed);
+        qint64 ms = 0;
+        auto runUntil = [&](qint64 end) {
+            for (; ms <= end; ms += 20) {
+                radio.advanceTo(ms);
+                steering.step(julianAt(ms), ms);
+            }
+        };
+        runUntil(20000);
+        for (int again = 0; again < 20; ++again) {
+            steering.begin(sat, sweep);
+            runUntil(ms + 70 + 37 * again); // at every phase of the commands on their way
+        }
+        runUntil(ms + 5000);
+        QCOMPARE(followed.count(), 0);
+        QVERIFY(!steering.dialTurning());
+        const RadioTuning truth = tuningFor(sat, *sweep(julianAt(ms)));
+        QVERIFY(std::abs(*radio.receive - truth.receiveHz) < 20);
+    }
+
+    void aReadThatFailsDoesNotStopTheReceiveSide()
+    {
+        // A read the radio never answers (a timeout on the bus) holds the
+        // next receive frequency back for a while, not for the rest of the pass.
+        FakeRadioLink radio;
+        radio.latency = 40;
+        DopplerSteering steering(&radio);
+        SatelliteFrequencies sat;
+        sat.downlinkHz = 435.85e6;
+        steering.begin(sat, sweep);
+        qint64 ms = 0;
+        auto runUntil = [&](qint64 end) {
+            for (; ms <= end; ms += 20) {
+                radio.advanceTo(ms);
+                steering.step(julianAt(ms), ms);
+            }
+        };
+        runUntil(5000);
+        radio.failReads = true;
+        runUntil(5100); // a read asked, and lost
+        radio.failReads = false;
+        const qsizetype sentBefore = radio.sent.size();
+        runUntil(15000);
+        QVERIFY(radio.sent.size() > sentBefore + 20);
+        const RadioTuning truth = tuningFor(sat, *sweep(julianAt(ms)));
+        QVERIFY2(std::abs(*radio.receive - truth.receiveHz) < 20,
+                 qPrintable(QString::number(*radio.receive - truth.receiveHz)));
+    }
+
     void sendsNothingWhileTheDialTurns()
     {
         FakeRadioLink radio;
