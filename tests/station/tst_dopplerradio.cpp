@@ -12,6 +12,7 @@
 #include "sky/station.h"
 #include "sky/tle.h"
 #include "sky/utctime.h"
+#include "radio/doppler.h"
 #include "radio/dopplersteering.h"
 #include "station/dopplerradio.h"
 #include "station/station.h"
@@ -20,6 +21,7 @@
 #include "tracking/tracktarget.h"
 
 #include <QSignalSpy>
+#include <QTcpSocket>
 #include <QTest>
 
 using slew::radio::RadioLink;
@@ -107,6 +109,74 @@ private slots:
         QTRY_COMPARE(rigctld.state(), QProcess::NotRunning);
     }
 
+    void aSecondClientReadsTheDopplerOfTheMoment()
+    {
+        // Near the top of the pass, in real time, on Hamlib's real rigctld:
+        // what a second client reads of the radio is the Doppler-corrected
+        // frequency of that moment, on both paths, within the figures the
+        // steering is held to (worst under 20 Hz), widened by how far the
+        // Doppler moved while the question was on its way.
+        QProcess rigctld;
+        const quint16 port = startHamlibDaemon(rigctld, "rigctld", {"-m", "1"});
+        QVERIFY(port);
+        Station station;
+        QVERIFY(trackFlock(station, QStringLiteral("2018-01-22T09:20:40Z"), 1.0, slew::tracking::Tracker::State::Tracking));
+        QString error;
+        DopplerRadio *radio = station.radio();
+        QVERIFY2(radio->setLink(QStringLiteral("rigctld://127.0.0.1:%1").arg(port), &error), qPrintable(error));
+        slew::radio::RadioPlan plan;
+        plan.frequencies.downlinkHz = 435.85e6;
+        plan.frequencies.uplinkHz = 145.95e6;
+        plan.noradId = flock().catalogueNumber;
+        radio->setPlan(plan);
+        radio->connectRadio();
+        QTRY_VERIFY_WITH_TIMEOUT(radio->isSteering() && radio->steering()->commandsSent() > 20, 15000);
+
+        slew::tracking::TrackTarget target;
+        target.elements = flock();
+        slew::tracking::TargetSky sky(target);
+        const slew::sky::Station place = station.passRunner()->station();
+        auto truth = [&](double julian) {
+            return slew::radio::tuningFor(plan.frequencies, sky.lookAt(place, julian)->rangeRateKmS);
+        };
+        QTcpSocket eyes;
+        eyes.connectToHost(QHostAddress::LocalHost, port);
+        QVERIFY(QTest::qWaitFor([&] { return eyes.state() == QAbstractSocket::ConnectedState; }, 5000));
+        auto ask = [&](const QByteArray &command) {
+            eyes.write(command + '\n');
+            QByteArray line;
+            QTest::qWaitFor(
+                [&] {
+                    line += eyes.readAll();
+                    return line.endsWith('\n');
+                },
+                5000);
+            return line.trimmed().toDouble();
+        };
+        double worstDown = 0, worstUp = 0;
+        for (int i = 0; i < 20; ++i) {
+            const double before = station.clock()->nowJulian();
+            const double down = ask("f");
+            const double up = ask("i");
+            const double after = station.clock()->nowJulian();
+            // Off by no more than 20 Hz from the truth at some moment of the question.
+            auto offBy = [](double read, double a, double b) {
+                const double low = std::min(a, b), high = std::max(a, b);
+                return read < low ? low - read : read > high ? read - high : 0.0;
+            };
+            worstDown = std::max(worstDown, offBy(down, truth(before).receiveHz, truth(after).receiveHz));
+            worstUp = std::max(worstUp, offBy(up, *truth(before).transmitHz, *truth(after).transmitHz));
+            // Asked again once the radio has been sent something new.
+            const int sent = radio->steering()->commandsSent();
+            QVERIFY(QTest::qWaitFor([&] { return radio->steering()->commandsSent() > sent; }, 5000));
+        }
+        qInfo("read back: worst %.1f Hz down, %.1f Hz up beyond the truth", worstDown, worstUp);
+        QVERIFY2(worstDown < 20 && worstUp < 20, qPrintable(QStringLiteral("%1 %2").arg(worstDown).arg(worstUp)));
+        QVERIFY(radio->figures().worstHz < 20);
+        rigctld.terminate();
+        QTRY_COMPARE(rigctld.state(), QProcess::NotRunning);
+    }
+
     void tunesAPassAlreadyUpWithoutTakingItsOwnFrequenciesForTheDial()
     {
         // As in the window: the pass is up, the radio (sim:, libhamlib in
@@ -131,9 +201,18 @@ private slots:
         plan.noradId = flock().catalogueNumber;
         radio->setPlan(plan);
         QVERIFY(radio->isSteering());
-        // Until a hundred frequencies have been sent, nothing the radio
-        // reads back is taken for a turn of the dial.
-        QTRY_VERIFY_WITH_TIMEOUT(radio->steering()->commandsSent() > 100, 30000);
+        QTRY_VERIFY_WITH_TIMEOUT(radio->steering()->commandsSent() > 50, 30000);
+        // Applied again during the pass, as the window's Apply does: the
+        // steering starts over on the same radio.
+        radio->setPlan(plan);
+        QVERIFY(radio->isSteering());
+        // Until a hundred and fifty frequencies have been sent, nothing the
+        // radio reads back is taken for a turn of the dial. (Before the
+        // split calls named the transmit VFO, Hamlib 4.5.4's dummy set the
+        // receive VFO to the transmit frequency; and before begin() kept
+        // what was on its way, the last frequency of the first Apply, read
+        // back after the first of the second, was taken for a turn.)
+        QTRY_VERIFY_WITH_TIMEOUT(radio->steering()->commandsSent() > 150, 30000);
         QStringList said;
         for (const QList<QVariant> &args : std::as_const(lines))
             said << args.at(0).toString();
