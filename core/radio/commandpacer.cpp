@@ -44,6 +44,13 @@ void CommandPacer::clear()
     m_sinceFinished.invalidate(); // a new connection starts without a wait
 }
 
+void CommandPacer::dropWaiting()
+{
+    m_waiting.clear();
+    if (!m_followUp)
+        m_quietTimer.stop(); // nothing left to wait out the interval for
+}
+
 void CommandPacer::setMinimumIntervalMs(int ms)
 {
     m_minimumIntervalMs = std::max(ms, 0);

@@ -48,6 +48,9 @@ public:
     void finished(const std::optional<PacedCommand> &next = std::nullopt);
     // Forgets the command on the wire and every waiting one (link closed).
     void clear();
+    // Forgets the waiting commands; the one on the wire, and the rest of its
+    // exchange, go on.
+    void dropWaiting();
 
     void setMinimumIntervalMs(int ms);
     int minimumIntervalMs() const { return m_minimumIntervalMs; }

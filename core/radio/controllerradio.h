@@ -46,6 +46,7 @@ public:
     bool canReadBack() const override;
     int latencyMs() const override { return m_latencyMs; }
     void setMinimumIntervalMs(int ms) override { m_pacer.setMinimumIntervalMs(ms); }
+    void dropWaiting() override { m_pacer.dropWaiting(); }
 
 private:
     void setState(State state, const QString &detail);

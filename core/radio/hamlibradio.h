@@ -97,6 +97,7 @@ public:
     double tuningStepHz() const override { return m_tuningStepHz; }
     int latencyMs() const override { return m_latencyMs; }
     void setMinimumIntervalMs(int ms) override { m_pacer.setMinimumIntervalMs(ms); }
+    void dropWaiting() override { m_pacer.dropWaiting(); }
 
     const HamlibRadioConfig &config() const { return m_config; }
     // For tests and the traffic view: what the pacer holds.

@@ -62,6 +62,10 @@ public:
     virtual void setTransmitMode(const QString &mode, int passbandHz) = 0;
     // Asks for both frequencies; frequenciesRead() follows.
     virtual void readFrequencies() = 0;
+    // Forgets the commands not sent yet (the one on the wire finishes): a
+    // pass that ends, or the operator's Stop of radio control, leaves
+    // nothing of its own to reach the radio after it.
+    virtual void dropWaiting() = 0;
     // Readings show the radio's own frequency, dial turns included: the
     // dial can be followed only where they do (a controller's UP/DN answers
     // say only what it was told).

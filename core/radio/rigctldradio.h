@@ -105,6 +105,7 @@ public:
     double tuningStepHz() const override { return m_tuningStepHz; }
     int latencyMs() const override { return m_latencyMs; }
     void setMinimumIntervalMs(int ms) override { m_pacer.setMinimumIntervalMs(ms); }
+    void dropWaiting() override { m_pacer.dropWaiting(); }
     // How long a command may go unanswered before the link gives up on it.
     void setReplyTimeoutMs(int ms) { m_replyTimeoutMs = qMax(ms, 1); }
 

@@ -232,7 +232,7 @@ void DopplerRadio::onPassState()
     if (state == Tracker::State::Waiting && m_lastPassState != Tracker::State::Waiting && !isSteering())
         readFound();
     m_lastPassState = state;
-    const bool up = passIsUp();
+    const bool up = passIsUp() && !m_held;
     if (up && !isSteering())
         begin();
     else if (!up && isSteering())
@@ -273,9 +273,26 @@ QString DopplerRadio::describePlan() const
     return text;
 }
 
+void DopplerRadio::holdControl(bool held)
+{
+    if (held == m_held)
+        return;
+    m_held = held;
+    if (held) {
+        if (isSteering())
+            end(tr("control stopped by the operator, the radio left as it is"), false);
+        else
+            emit logLine(tr("radio: control stopped by the operator"));
+    } else {
+        emit logLine(tr("radio: control resumed by the operator"));
+    }
+    emit controlHeldChanged(held);
+    onPassState(); // a pass still up is tuned again
+}
+
 void DopplerRadio::begin()
 {
-    if (!m_plan || !m_link || !m_link->isOpen() || !m_steering || m_readingFound)
+    if (m_held || !m_plan || !m_link || !m_link->isOpen() || !m_steering || m_readingFound)
         return; // begun when the radio has been read (or could not be)
     const tracking::TrackTarget &target = m_runner->target();
     if (m_plan->noradId != 0 && m_plan->noradId != target.elements.catalogueNumber) {
@@ -318,6 +335,7 @@ void DopplerRadio::end(const QString &why, bool putBack)
     m_lastFigures = m_steering->figures();
     m_steering->stop();
     m_steering->end();
+    m_link->dropWaiting(); // none of the pass's frequencies lands after it
     if (putBack && m_restoreAfterPass)
         this->putBack();
     m_splitTurnedOn = false;

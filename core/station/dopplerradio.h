@@ -21,6 +21,8 @@
 //     30 seconds for as long as the station wants its radio; the
 //     controller's link, which rides on the rotator's, when the rotator's
 //     link is back.
+//   - The operator may stop radio control (holdControl): steering ends and
+//     stays off until resumed.
 //   - The radio never holds up the rotator: its link is its own, or for the
 //     controller's UP/DN a place in the rotator session's queue like any
 //     query; the station's Stop does not wait for it.
@@ -96,6 +98,13 @@ public:
     void setRestoreAfterPass(bool restore) { m_restoreAfterPass = restore; }
     bool restoresAfterPass() const { return m_restoreAfterPass; }
 
+    // The operator's Stop of radio control: the steering ends at once and
+    // the radio is left where it is, on its open link, for the operator's
+    // hands; no pass is tuned until control is resumed, which tunes a pass
+    // still up from then on.
+    void holdControl(bool held);
+    bool isControlHeld() const { return m_held; }
+
     // Figures of the pass being tuned, or of the last one.
     bool isSteering() const { return m_steering && m_steering->isSteering(); }
     radio::DopplerFigures figures() const;
@@ -108,6 +117,7 @@ signals:
     // A lost link is opened again in `seconds`: try number `attempt` since it was last open.
     void reopenScheduled(int attempt, int seconds);
     void steeringChanged(bool steering);
+    void controlHeldChanged(bool held);
     // The Doppler error on the receive path (Hz): the largest of the rounds
     // since the last one said, with its sign; and the transmit path's (NaN
     // when not tuned).
@@ -137,6 +147,7 @@ private:
     std::optional<RadioPlan> m_plan;
     bool m_wanted = false;
     bool m_restoreAfterPass = false;
+    bool m_held = false;
     radio::VfoLayout m_layout = radio::VfoLayout::Split;
     int m_reopenAttempt = 0;
     QTimer m_reopen;

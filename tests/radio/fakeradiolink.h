@@ -54,6 +54,7 @@ public:
     double tuningStepHz() const override { return step; }
     int latencyMs() const override { return latency; }
     void setMinimumIntervalMs(int) override {}
+    void dropWaiting() override {} // a command here is on the radio's bus at once
 
     // The radio's clock: what was sent takes effect once its latency is over.
     void advanceTo(qint64 ms)

@@ -22,6 +22,7 @@ private slots:
     void minimumIntervalFromEndToStart();
     void synchronousAnswersDoNotRecurse();
     void clearForgetsEverything();
+    void dropWaitingKeepsTheExchangeOnTheWire();
 };
 
 namespace {
@@ -152,6 +153,24 @@ void CommandPacerTest::clearForgetsEverything()
     // A new connection starts without waiting out the old interval.
     pacer.submit({CommandKind::Read, "f"});
     QCOMPARE(ready.count(), 2);
+}
+
+void CommandPacerTest::dropWaitingKeepsTheExchangeOnTheWire()
+{
+    CommandPacer pacer;
+    QSignalSpy ready(&pacer, &CommandPacer::ready);
+    pacer.submit({CommandKind::Read, "f"});
+    pacer.submit({CommandKind::ReceiveFrequency, "F 1"});
+    pacer.submit({CommandKind::TransmitFrequency, "I 2"});
+    pacer.dropWaiting();
+    QCOMPARE(pacer.waitingCount(), 0);
+    QVERIFY(pacer.isBusy()); // the read on the wire finishes...
+    pacer.finished(PacedCommand{CommandKind::Read, "i"});
+    QCOMPARE(ready.count(), 2); // ...its second half included
+    QCOMPARE(ready.at(1).at(0).value<PacedCommand>().text, QStringLiteral("i"));
+    pacer.finished();
+    QCOMPARE(ready.count(), 2); // and nothing that waited follows
+    QVERIFY(!pacer.isBusy());
 }
 
 QTEST_GUILESS_MAIN(CommandPacerTest)
