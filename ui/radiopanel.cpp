@@ -6,6 +6,7 @@
 #include "radioplanform.h"
 #include "radioplansettings.h"
 #include "radioreadout.h"
+#include "radiovfochoice.h"
 
 #include "radio/transponderset.h"
 #include "radio/transpondersources.h"
@@ -55,6 +56,7 @@ RadioPanel::RadioPanel(station::Station *station, QWidget *parent) : QWidget(par
 {
     setObjectName(QStringLiteral("radioPanel"));
     station::DopplerRadio *radio = m_station->radio();
+    auto *vfos = new RadioVfoChoice(radio); // before the link box, which may connect at once
     m_link = new RadioLinkBox(radio);
     m_form = new RadioPlanForm;
     m_readout = new RadioReadout(m_station);
@@ -87,9 +89,28 @@ RadioPanel::RadioPanel(station::Station *station, QWidget *parent) : QWidget(par
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     layout->setSpacing(4);
-    layout->addWidget(box(tr("Radio"), m_link, QStringLiteral("radioLinkGroup")));
+    auto *radioBox = new QWidget;
+    auto *radioLayout = new QVBoxLayout(radioBox);
+    radioLayout->setContentsMargins(0, 0, 0, 0);
+    radioLayout->setSpacing(3);
+    radioLayout->addWidget(m_link);
+    radioLayout->addWidget(vfos);
+    layout->addWidget(box(tr("Radio"), radioBox, QStringLiteral("radioLinkGroup")));
     layout->addWidget(m_planBox);
-    layout->addWidget(box(tr("During the pass"), m_readout, QStringLiteral("radioReadoutGroup")));
+    // The operator's hand back on the radio at any moment; and off again.
+    m_hold = new QPushButton;
+    m_hold->setObjectName(QStringLiteral("radioHold"));
+    m_hold->setAutoDefault(false);
+    connect(m_hold, &QPushButton::clicked, this, [radio] { radio->holdControl(!radio->isControlHeld()); });
+    connect(radio, &station::DopplerRadio::controlHeldChanged, this, &RadioPanel::showHold);
+    showHold();
+    auto *during = new QWidget;
+    auto *duringLayout = new QVBoxLayout(during);
+    duringLayout->setContentsMargins(0, 0, 0, 0);
+    duringLayout->setSpacing(4);
+    duringLayout->addWidget(m_readout);
+    duringLayout->addWidget(m_hold, 0, Qt::AlignLeft);
+    layout->addWidget(box(tr("During the pass"), during, QStringLiteral("radioReadoutGroup")));
     layout->addStretch(1);
 
     connect(m_apply, &QPushButton::clicked, this, &RadioPanel::apply);
@@ -107,6 +128,7 @@ RadioPanel::RadioPanel(station::Station *station, QWidget *parent) : QWidget(par
         transponders->setUrls(radio::savedTransponderUrls());
     transponders->loadFromCache();
     connect(m_link, &RadioLinkBox::message, this, &RadioPanel::message);
+    connect(vfos, &RadioVfoChoice::message, this, &RadioPanel::message);
     connect(radio, &station::DopplerRadio::logLine, this, &RadioPanel::message);
     // A satellite tracked: its own frequencies, when it has some kept. The
     // runner says a line as it starts (before it has planned a pass, so
@@ -133,6 +155,15 @@ RadioPanel::RadioPanel(station::Station *station, QWidget *parent) : QWidget(par
     }
     onTracking();
     showPlanState();
+}
+
+void RadioPanel::showHold()
+{
+    const bool held = m_station->radio()->isControlHeld();
+    m_hold->setText(held ? tr("Resume radio control") : tr("Stop radio control"));
+    m_hold->setToolTip(held ? tr("Tune the radio for Doppler again, from now on")
+                            : tr("Send the radio nothing more: it stays where it is, for your hands, until resumed"));
+    m_readout->refresh();
 }
 
 int RadioPanel::trackedNorad() const

@@ -3,7 +3,8 @@
 // The Radio tab: the station's radio (station/dopplerradio.h) as the
 // operator sets it up and watches it. Three parts, each its own widget:
 //
-//   - the link (radiolinkbox.h): which radio, Connect, its state;
+//   - the link (radiolinkbox.h): which radio, Connect, its state; and
+//     its VFOs and whether it is put back after LOS (radiovfochoice.h);
 //   - what to tune (radioplanform.h), by hand or from one of the tracked
 //     satellite's transponders (the station's cache, refreshed when the
 //     operator asks), applied to the radio for the satellite tracked (or
@@ -11,7 +12,8 @@
 //     tracking a satellite again brings its frequencies and offsets back,
 //     and applies them; one with none kept gets its default transponder
 //     filled in, to Apply;
-//   - the live lines of a pass (radioreadout.h).
+//   - the live lines of a pass (radioreadout.h), and Stop radio control:
+//     the operator's hands back on the radio, until resumed.
 //
 // The Doppler error the radio measures is charted on the Telemetry tab,
 // under the pointing error (the window wires it to the recorder).
@@ -64,6 +66,7 @@ private:
     void showTransponders();
     void refreshTransponders();
     void showPlanState();
+    void showHold(); // the Stop/Resume radio control button as the radio stands
 
     station::Station *m_station;
     RadioLinkBox *m_link;
@@ -71,6 +74,7 @@ private:
     RadioReadout *m_readout;
     QGroupBox *m_planBox;
     QPushButton *m_apply;
+    QPushButton *m_hold;
     QLabel *m_planState;
     int m_tracked = 0; // the satellite whose frequencies the fields were last given for
     bool m_refused = false;

@@ -91,6 +91,13 @@ std::optional<sky::LookAngles> RadioReadout::lookNow()
     return m_sky->lookAt(runner->station(), m_station->clock()->nowJulian());
 }
 
+std::optional<sky::LookAngles> RadioReadout::lookIn(double seconds)
+{
+    if (!m_sky)
+        return std::nullopt;
+    return m_sky->lookAt(m_station->passRunner()->station(), m_station->clock()->nowJulian() + seconds / 86400.0);
+}
+
 void RadioReadout::refresh()
 {
     const station::DopplerRadio *radio = m_station->radio();
@@ -125,18 +132,30 @@ void RadioReadout::refresh()
         sent << tr("receive %1").arg(groupedMegahertz(*m_lastReceive));
     if (m_lastTransmit)
         sent << tr("transmit %1").arg(groupedMegahertz(*m_lastTransmit));
-    m_sent->setText(sent.isEmpty() ? tr("nothing yet") : sent.join(tr(", ")));
+    QString sentText = sent.isEmpty() ? tr("nothing yet") : sent.join(tr(", "));
+    if (radio->isControlHeld())
+        sentText = sent.isEmpty() ? tr("nothing: radio control stopped") : tr("%1; radio control stopped").arg(sentText);
+    m_sent->setText(sentText);
 
     const std::optional<sky::LookAngles> look = lookNow();
+    // A second later: how fast the shift moves (what the steering keeps up with).
+    const std::optional<sky::LookAngles> later = look ? lookIn(1.0) : std::nullopt;
     if (plan && look) {
         const radio::SatelliteFrequencies &f = plan->frequencies;
         const double down = f.downlinkHz + f.downlinkOffsetHz;
-        const double rangeRate = look->rangeRateKmS;
-        QString text = tr("downlink %1").arg(signedHertz(radio::downlinkOnGroundHz(down, rangeRate) - down));
-        if (f.uplinkHz) {
-            const double up = *f.uplinkHz + f.uplinkOffsetHz;
-            text += tr(", uplink %1").arg(signedHertz(radio::uplinkToSendHz(up, rangeRate) - up));
-        }
+        auto shift = [&](double hz, double rangeRate, bool uplink) {
+            return uplink ? radio::uplinkToSendHz(hz, rangeRate) - hz : radio::downlinkOnGroundHz(hz, rangeRate) - hz;
+        };
+        auto path = [&](const QString &name, double hz, bool uplink) {
+            QString text = tr("%1 %2").arg(name, signedHertz(shift(hz, look->rangeRateKmS, uplink)));
+            if (later)
+                text += tr(" (%1/s)").arg(signedHertz(shift(hz, later->rangeRateKmS, uplink)
+                                                       - shift(hz, look->rangeRateKmS, uplink)));
+            return text;
+        };
+        QString text = path(tr("downlink"), down, false);
+        if (f.uplinkHz)
+            text += tr(", ") + path(tr("uplink"), *f.uplinkHz + f.uplinkOffsetHz, true);
         // Before AOS it is what the radio will be sent first; after LOS, of
         // no use until the next pass.
         if (look->elevationDeg < 0)

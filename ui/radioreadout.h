@@ -2,7 +2,7 @@
 #pragma once
 // The Radio panel's live lines while a satellite is tracked: its frequencies
 // as applied (with the calibration), what the radio was last sent (receive
-// and transmit), the Doppler shift now on each path, how far the operator's
+// and transmit), the Doppler shift now on each path and how fast it moves, how far the operator's
 // dial has moved the downlink, and the pass's Doppler figures (RMS and worst
 // error, frequencies sent). After LOS the last pass's figures and the last
 // frequencies sent stay shown until the next pass is tuned.
@@ -36,6 +36,8 @@ private:
     // Where the tracked satellite is now (its range-rate in km/s with it);
     // nothing when no satellite is tracked.
     std::optional<sky::LookAngles> lookNow();
+    // The same satellite `seconds` from now (after lookNow()).
+    std::optional<sky::LookAngles> lookIn(double seconds);
 
     station::Station *m_station;
     QLabel *m_nominal;

@@ -30,12 +30,14 @@
 #include "trackingpanel.h"
 
 #include <QApplication>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QGroupBox>
 #include <QLabel>
 #include <QLineEdit>
 #include <QProcess>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -223,6 +225,45 @@ private slots:
         QCOMPARE(QSettings().value(QStringLiteral("radio/uri")).toString(), held);
         QTest::mouseClick(in<QPushButton>(panel, "radioDisconnect"), Qt::LeftButton);
         QVERIFY(!radio->isWanted());
+    }
+
+    void vfosAndPuttingBackAreTheRadiosAndKept()
+    {
+        {
+            WindowFixture f;
+            RadioPanel *panel = radioTab(f);
+            DopplerRadio *radio = f.station.radio();
+            QCOMPARE(radio->vfoLayout(), slew::radio::VfoLayout::Split);
+            QVERIFY(!radio->restoresAfterPass());
+            choose(panel, "radioVfos", QStringLiteral("main-sub"));
+            QCOMPARE(radio->vfoLayout(), slew::radio::VfoLayout::MainSub);
+            QTest::mouseClick(in<QCheckBox>(panel, "radioRestore"), Qt::LeftButton);
+            QVERIFY(radio->restoresAfterPass());
+            // The controller's UP/DN has no Main and Sub: refused as a radio
+            // while satellite mode is chosen...
+            connectRadio(panel, QStringLiteral("controller"));
+            QVERIFY(refusedWith(panel, "radioLinkRefusal", QStringLiteral("no Main and Sub VFOs")));
+            QCOMPARE(radio->linkUri(), QString());
+            // ...and satellite mode refused while it is the radio.
+            choose(panel, "radioVfos", QStringLiteral("split"));
+            connectRadio(panel, QStringLiteral("controller"));
+            QCOMPARE(radio->linkUri(), QStringLiteral("controller"));
+            choose(panel, "radioVfos", QStringLiteral("main-sub"));
+            QVERIFY(refusedWith(panel, "radioVfoRefusal", QStringLiteral("controller has no Main and Sub VFOs to "
+                                                                          "address; the radio keeps split")));
+            QCOMPARE(radio->vfoLayout(), slew::radio::VfoLayout::Split);
+            choose(panel, "radioVfos", QStringLiteral("split"));
+            QVERIFY(!in<QLabel>(panel, "radioVfoRefusal")->isVisible());
+            choose(panel, "radioVfos", QStringLiteral("main-sub"));
+            QTest::mouseClick(in<QPushButton>(panel, "radioDisconnect"), Qt::LeftButton);
+        }
+        // Both are kept for the next start.
+        QSettings().remove(QStringLiteral("radio/uri"));
+        WindowFixture f;
+        RadioPanel *panel = radioTab(f);
+        QCOMPARE(f.station.radio()->vfoLayout(), slew::radio::VfoLayout::MainSub);
+        QVERIFY(f.station.radio()->restoresAfterPass());
+        QVERIFY(in<QCheckBox>(panel, "radioRestore")->isChecked());
     }
 
     void badFrequenciesAreRefusedUnderTheirFields()
@@ -529,9 +570,44 @@ private slots:
                      qPrintable(textOf(panel, "radioDopplerNow")));
         QTRY_VERIFY2(textOf(panel, "radioFigures").startsWith(QStringLiteral("this pass: error RMS ")),
                      qPrintable(textOf(panel, "radioFigures")));
+        // How fast the shift moves, on both paths: near AOS the downlink
+        // falls (the satellite comes closer ever more slowly).
+        QTRY_VERIFY2(QRegularExpression(QStringLiteral("^downlink \\+[0-9 ]+ Hz \\(−[0-9 ]+ Hz/s\\), uplink −[0-9 ]+ Hz "
+                                                       "\\(\\+[0-9 ]+ Hz/s\\)"))
+                         .match(textOf(panel, "radioDopplerNow"))
+                         .hasMatch(),
+                     qPrintable(textOf(panel, "radioDopplerNow")));
         QCOMPARE(textOf(panel, "radioDial"), QStringLiteral("not turned"));
         const QString firstSent = textOf(panel, "radioSent");
         QTRY_VERIFY(textOf(panel, "radioSent") != firstSent); // it follows the pass
+
+        // Stop radio control: nothing more reaches the radio, until resumed.
+        auto *hold = in<QPushButton>(panel, "radioHold");
+        QCOMPARE(hold->text(), QStringLiteral("Stop radio control"));
+        QTest::mouseClick(hold, Qt::LeftButton);
+        QVERIFY(!radio->isSteering());
+        QCOMPARE(hold->text(), QStringLiteral("Resume radio control"));
+        QSignalSpy sentWhileHeld(radio->link(), &slew::radio::RadioLink::commandSent);
+        const double heldAt = f.station.clock()->nowJulian();
+        QTRY_VERIFY(f.station.clock()->nowJulian() > heldAt + 20.0 / 86400.0); // 20 s of the pass, at 20 times
+        // (A read on the wire when Stop was pressed may finish: it sets nothing.)
+        for (const QList<QVariant> &args : std::as_const(sentWhileHeld))
+            QVERIFY2(args.at(0).toString().startsWith(QStringLiteral("+f"))
+                         || args.at(0).toString().startsWith(QStringLiteral("+i")),
+                     qPrintable(args.at(0).toString()));
+        QVERIFY(!radio->isSteering());
+        QTRY_VERIFY2(textOf(panel, "radioSent").endsWith(QStringLiteral("; radio control stopped")),
+                     qPrintable(textOf(panel, "radioSent")));
+        QTest::mouseClick(hold, Qt::LeftButton);
+        QTRY_VERIFY(radio->isSteering());
+        QCOMPARE(hold->text(), QStringLiteral("Stop radio control"));
+        QTRY_VERIFY(sentWhileHeld.count() > 0);
+        QTRY_VERIFY(!textOf(panel, "radioSent").contains(QStringLiteral("stopped")));
+        QTRY_VERIFY(textOf(panel, "radioFigures").startsWith(QStringLiteral("this pass: error RMS ")));
+        QTRY_VERIFY(textOf(panel, "radioSent").startsWith(QStringLiteral("receive 435.8")));
+        QTRY_VERIFY(radio->figures().samples > 200);
+        QDir().mkpath(QStringLiteral("screenshots"));
+        QVERIFY(f.window->grab().save(QStringLiteral("screenshots/radio-tab-during-pass.png")));
 
         // The tab holds at 1280x720 with every line filled.
         const QString faults = layoutFaults(f.window.get()).join(QLatin1Char('\n'));
