@@ -145,13 +145,13 @@ private slots:
         auto ask = [&](const QByteArray &command) {
             eyes.write(command + '\n');
             QByteArray line;
-            QTest::qWaitFor(
+            const bool answered = QTest::qWaitFor(
                 [&] {
                     line += eyes.readAll();
                     return line.endsWith('\n');
                 },
                 5000);
-            return line.trimmed().toDouble();
+            return answered ? line.trimmed().toDouble() : 0.0;
         };
         double worstDown = 0, worstUp = 0;
         for (int i = 0; i < 20; ++i) {
