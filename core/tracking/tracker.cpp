@@ -58,6 +58,7 @@ bool Tracker::track(const QList<SkyPoint> &pass, const PassPlan &plan, double ao
     m_now = std::move(now);
     m_prepositioned = false;
     m_lastSent.reset();
+    m_lastCommand.reset();
     m_figures = TrackingFigures{};
     m_sumSquares = 0;
     m_timer.followClockOf(m_session->link());
@@ -126,10 +127,35 @@ SkyPoint Tracker::targetNow() const
     return m_pass.isEmpty() ? SkyPoint{} : skyAt(secondsFromAos());
 }
 
+double Tracker::commandFor(double azimuth) const
+{
+    const model::RotatorLimits &limits = m_reach.limits;
+    if (!m_session->hasPosition() || limits.azMax - limits.azMin <= 360.0)
+        return azimuth;
+    // The same bearing a turn away, where the travel has it.
+    std::optional<double> twin;
+    for (const double other : {azimuth + 360.0, azimuth - 360.0})
+        if (other >= limits.azMin && other <= limits.azMax)
+            twin = other;
+    const double here = m_session->azimuth();
+    if (!twin || std::abs(here - azimuth) <= std::abs(here - *twin))
+        return azimuth;
+    // A controller that takes a bearing to the nearer of its two angles
+    // (the Micro-2g program does, and so does the simulator) would go to the
+    // twin: first an angle on the way that only one position has, until the
+    // antenna is nearer the one planned.
+    const double low = limits.azMax - 360.0, high = limits.azMin + 360.0;
+    return std::clamp(azimuth, low + 1.0, high - 1.0);
+}
+
 bool Tracker::send(double az, double el, bool duringPass)
 {
+    const double command = commandFor(az);
+    // The same waypoint already on its way: nothing new to say.
+    if (command != az && m_lastCommand && m_lastCommand->first == command && m_lastCommand->second == el)
+        return true;
     m_sending = true;
-    const session::CommandResult sent = m_session->gotoUnwrapped(az, el);
+    const session::CommandResult sent = m_session->gotoUnwrapped(command, el);
     m_sending = false;
     if (!sent) {
         // Never pushed on blindly: the planned point should always pass the
@@ -138,6 +164,7 @@ bool Tracker::send(double az, double el, bool duringPass)
         return false;
     }
     m_lastSent = std::pair{az, el};
+    m_lastCommand = std::pair{command, el};
     if (duringPass)
         ++m_figures.commands;
     return true;
@@ -174,6 +201,8 @@ void Tracker::tick()
                                                  .arg(travel, 0, 'f', 0)
                                                  .arg(std::max(0.0, -t), 0, 'f', 0));
             }
+        } else if (onWaypoint() && !send(aos.azimuth, aos.elevation, false)) {
+            return; // on the way to the AOS point by a waypoint: the point itself once it is the nearer
         }
         if (t < 0)
             return;
@@ -202,7 +231,8 @@ void Tracker::tick()
     const double halfStep = rate > 1e-6 ? std::min(0.5 * m_settings.minimumStepDeg / rate, 10.0) : 0.0;
     const PathPoint want = pathAt(std::min(t + m_settings.leadSeconds + halfStep, end));
     const bool moved = !m_lastSent || std::abs(want.azimuth - m_lastSent->first) > m_settings.minimumStepDeg
-                       || std::abs(want.elevation - m_lastSent->second) > m_settings.minimumStepDeg;
+                       || std::abs(want.elevation - m_lastSent->second) > m_settings.minimumStepDeg
+                       || onWaypoint();
     if (moved)
         send(want.azimuth, want.elevation, true);
 }

@@ -112,6 +112,12 @@ private:
     PathPoint pathAt(double seconds) const;
     SkyPoint skyAt(double seconds) const;
     bool send(double az, double el, bool duringPass);
+    // The azimuth to command for the plan's (mechanical) `azimuth`: itself,
+    // or, where the antenna is nearer the same bearing's other angle on an
+    // overlap rotator, a waypoint only one angle has (see the .cpp).
+    double commandFor(double azimuth) const;
+    // The last command was a waypoint, not the plan's own azimuth.
+    bool onWaypoint() const { return m_lastSent && m_lastCommand && m_lastCommand->first != m_lastSent->first; }
 
     session::RotatorSession *m_session;
     TrackerSettings m_settings;
@@ -125,7 +131,8 @@ private:
     QString m_error;
     bool m_prepositioned = false;
     bool m_sending = false; // our own commands are not someone else's stop
-    std::optional<std::pair<double, double>> m_lastSent;
+    std::optional<std::pair<double, double>> m_lastSent;    // the plan's position last asked for
+    std::optional<std::pair<double, double>> m_lastCommand; // what went on the wire for it
     TrackingFigures m_figures;
     double m_sumSquares = 0;
 };

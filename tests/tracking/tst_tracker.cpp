@@ -120,6 +120,40 @@ private slots:
         QCOMPARE(states.last().at(0).value<Tracker::State>(), Tracker::State::Done);
     }
 
+    void reachesItsAosPointWhereTheOverlapOffersTwo()
+    {
+        // The antenna stands at 300° (a pass before left it there). The next
+        // pass rises in the north-east and sets in the south-west: on a 450°
+        // rotator only its angles from 0° can follow it to the end (from
+        // 360° the travel runs out at 450°), so the plan starts there. The
+        // simulator, like the Micro-2g program, takes a bearing below 360° to
+        // the nearer of its two angles: asked for it at once, it would go to
+        // the one in the overlap. A waypoint only one angle has comes first.
+        Rig rig;
+        QVERIFY(rig.open(450, 180));
+        QVERIFY(rig.session.gotoUnwrapped(300, 10));
+        QVERIFY(runEventLoopUntil([&] { return std::abs(rig.session.azimuth() - 300) < 0.5; }, 30000));
+        const QList<SkyPoint> pass = greatCirclePass(110, 40, true);
+        Tracker tracker(&rig.session);
+        stayAfterThePass(tracker);
+        std::optional<double> errorAtAos;
+        connect(&tracker, &Tracker::pointingError, this, [&](double deg, double) {
+            if (!errorAtAos)
+                errorAtAos = deg;
+        });
+        rig.targets.clear();
+        QVERIFY2(tracker.track(pass, kAos, rig.reach, rig.clockWithAosIn(150, kAos)), qPrintable(tracker.error()));
+        QVERIFY2(tracker.plan().path.front().azimuth < 90, qPrintable(tracker.plan().describe()));
+        QVERIFY(runEventLoopUntil([&] { return tracker.state() == Tracker::State::Done; }, 30000));
+        QVERIFY(errorAtAos && *errorAtAos < 1.0);
+        QVERIFY2(tracker.figures().worstDeg < 1.0, qPrintable(QString::number(tracker.figures().worstDeg)));
+        QVERIFY(!rig.targets.isEmpty());
+        QVERIFY2(rig.targets.first().x() > 90 && rig.targets.first().x() < 360,
+                 qPrintable(QString::number(rig.targets.first().x()))); // the waypoint
+        for (const QPointF &t : std::as_const(rig.targets))
+            QVERIFY2(t.x() <= 360, qPrintable(QString::number(t.x()))); // never into the overlap
+    }
+
     void followsAPassWithCalibrationOffsets()
     {
         // A rotator whose readings are 4° east and 1.5° high of where the
