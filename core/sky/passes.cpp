@@ -16,6 +16,12 @@ constexpr double kCrossingTolerance = 0.01 * kSecond;
 constexpr double kPeakTolerance = 0.5 * kSecond;
 // A pass still going on at the window's end is followed this far at most.
 constexpr double kFollowBeyondWindow = 1.0;
+// The longest step the scan takes behind a horizon mask (passes.h).
+constexpr double kLongestStepBehindMaskS = 300.0;
+
+QList<Pass> scanAboveThreshold(const ElevationFunction &f, const PassWindow &window, const PassScan &scan);
+QList<Pass> scanAboveMask(const ElevationFunction &f, const PassWindow &window, const PassScan &scan,
+                          const HorizonMask &horizon);
 
 // The time where the elevation crosses the threshold, given one end of the
 // bracket below it and the other above; the answer is on the "above" side,
@@ -103,7 +109,46 @@ PassPoint pointAt(const ElevationFunction &f, double julian)
 
 } // namespace
 
-QList<Pass> scanPasses(const ElevationFunction &f, const PassWindow &window, const PassScan &scan)
+QList<Pass> scanPasses(const ElevationFunction &f, const PassWindow &window, const PassScan &scan,
+                       const HorizonMask *horizon)
+{
+    if (horizon)
+        return scanAboveMask(f, window, scan, *horizon);
+    return scanAboveThreshold(f, window, scan);
+}
+
+namespace {
+
+QList<Pass> scanAboveMask(const ElevationFunction &f, const PassWindow &window, const PassScan &scan,
+                          const HorizonMask &horizon)
+{
+    const double floor = window.minElevationDeg;
+    // The one threshold stands for both: the elevation is lowered by as
+    // much as the mask rises over the window's minimum at its azimuth.
+    const ElevationFunction masked = [&](double julian) {
+        ElevationSample s = f(julian);
+        // A bound from geometry holds for the minimum, and so for the mask,
+        // only while the object is below the minimum: above it, the mask can
+        // hide it or show it at any moment.
+        if (!(s.elevationDeg < floor))
+            s.quietSeconds = 0;
+        s.elevationDeg -= std::max(0.0, horizon.elevationAt(s.azimuthDeg) - floor);
+        return s;
+    };
+    PassScan steps = scan;
+    steps.maxStepS = std::min(scan.maxStepS, kLongestStepBehindMaskS);
+    steps.inPassStepS = std::min(scan.inPassStepS, kLongestStepBehindMaskS);
+    QList<Pass> passes = scanAboveThreshold(masked, window, steps);
+    for (Pass &p : passes) {
+        // The object's own elevations: at AOS, that is the mask's there.
+        p.aos = pointAt(f, p.aos.julian);
+        p.los = pointAt(f, p.los.julian);
+        p.tca = pointAt(f, goldenSectionPeak(f, p.aos.julian, p.los.julian));
+    }
+    return passes;
+}
+
+QList<Pass> scanAboveThreshold(const ElevationFunction &f, const PassWindow &window, const PassScan &scan)
 {
     QList<Pass> passes;
     const double threshold = window.minElevationDeg;
@@ -195,6 +240,8 @@ QList<Pass> scanPasses(const ElevationFunction &f, const PassWindow &window, con
     return passes;
 }
 
+} // namespace
+
 bool observeSatellite(const Sgp4 &satellite, const Station &station, double julian, LookAngles *out)
 {
     Sgp4Propagator once(satellite);
@@ -272,7 +319,7 @@ QList<Pass> predictPasses(const Sgp4 &satellite, const Station &station, const P
     scan.inPassStepS = 60.0;
     scan.maxStepS = 3600.0;
 
-    QList<Pass> passes = scanPasses(f, window, scan);
+    QList<Pass> passes = scanPasses(f, window, scan, station.horizon.get());
     for (Pass &p : passes) {
         p.name = tle.displayName();
         p.catalogueNumber = tle.catalogueNumber;
@@ -303,7 +350,7 @@ namespace {
 
 // Anything that turns with the sky: it rises no faster than the sky turns.
 QList<Pass> skyPasses(const std::function<BodyPosition(double)> &position, const QString &name,
-                      const PassWindow &window)
+                      const PassWindow &window, const HorizonMask *horizon)
 {
     const ElevationFunction f = [&](double julian) {
         const BodyPosition p = position(julian);
@@ -314,7 +361,7 @@ QList<Pass> skyPasses(const std::function<BodyPosition(double)> &position, const
     scan.maxElevationRateDegS = degrees(kEarthRotationRadS) * 1.05;
     scan.inPassStepS = 600.0;
     scan.maxStepS = 3600.0;
-    QList<Pass> passes = scanPasses(f, window, scan);
+    QList<Pass> passes = scanPasses(f, window, scan, horizon);
     for (Pass &p : passes) {
         p.name = name;
         p.sunlit = true;
@@ -327,13 +374,15 @@ QList<Pass> skyPasses(const std::function<BodyPosition(double)> &position, const
 QList<Pass> predictBodyPasses(SkyBody body, const Station &station, const PassWindow &window)
 {
     return skyPasses([&](double julian) { return bodyPosition(body, station, julian); },
-                     body == SkyBody::Sun ? QStringLiteral("Sun") : QStringLiteral("Moon"), window);
+                     body == SkyBody::Sun ? QStringLiteral("Sun") : QStringLiteral("Moon"), window,
+                     station.horizon.get());
 }
 
 QList<Pass> predictCelestialPasses(double ra, double dec, const Station &station, const PassWindow &window)
 {
     return skyPasses([&](double julian) { return celestialPosition(ra, dec, station, julian); },
-                     QStringLiteral("RA %1° Dec %2°").arg(ra, 0, 'f', 3).arg(dec, 0, 'f', 3), window);
+                     QStringLiteral("RA %1° Dec %2°").arg(ra, 0, 'f', 3).arg(dec, 0, 'f', 3), window,
+                     station.horizon.get());
 }
 
 } // namespace slew::sky

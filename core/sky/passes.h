@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Pass prediction: when a satellite (or the sun, or the moon) is above a
-// minimum elevation at the station. A pass has its acquisition (AOS), the
+// minimum elevation at the station, and above its horizon mask
+// (horizonmask.h) where it has one. A pass has its acquisition (AOS), the
 // time of closest approach (TCA, taken as the moment of highest elevation,
 // which is what an antenna cares about) and its loss (LOS), each with the
 // azimuth, and whether the satellite is in sunlight during it.
@@ -89,7 +90,13 @@ struct PassScan {
     double inPassStepS = 30.0;
     double maxStepS = 600.0;
 };
-QList<Pass> scanPasses(const ElevationFunction &elevation, const PassWindow &window, const PassScan &scan);
+// With a horizon mask, a pass is where the elevation is above the mask as
+// well as the window's minimum; its points (AOS, TCA, LOS) are then the
+// object's own elevations. Behind a mask the scan takes steps of at most
+// five minutes: a gap in the mask narrower than that, crossed in less
+// time, can be missed (of no use to a rotator either).
+QList<Pass> scanPasses(const ElevationFunction &elevation, const PassWindow &window, const PassScan &scan,
+                       const HorizonMask *horizon = nullptr);
 
 // The satellite's look angles at a time; false when it cannot be propagated.
 bool observeSatellite(const Sgp4 &satellite, const Station &station, double julian, LookAngles *out);

@@ -5,7 +5,11 @@
 // know their station by its Maidenhead locator instead; a locator stands for
 // the centre of the square it names.
 
+#include "horizonmask.h"
+
 #include <QString>
+
+#include <memory>
 
 namespace slew::sky {
 
@@ -14,11 +18,17 @@ struct Station {
     double longitudeDeg = 0;
     double heightM = 0;
     QString locator; // as given, when the station came from one
+    // What hides the sky here (horizonmask.h); none: a flat horizon. Every
+    // pass predicted for the station rises and sets on it.
+    std::shared_ptr<const HorizonMask> horizon;
 };
 
 // Where the window keeps the station (QSettings key), as the text typed;
 // the command line falls back to it when --qth is not given.
 inline constexpr char kStationSettingsKey[] = "sky/station";
+// Where the window keeps the path of the station's horizon mask file
+// (horizonmask.h); the sky commands fall back to it as to the station.
+inline constexpr char kHorizonSettingsKey[] = "sky/horizonFile";
 
 // "LAT,LON", "LAT,LON,HEIGHT_M" or a 4, 6 or 8 character locator
 // ("JO65", "JO65hq", "JO65hq42"). On refusal, *error says why.

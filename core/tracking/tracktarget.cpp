@@ -135,8 +135,9 @@ QList<sky::Pass> TargetSky::passes(const sky::Station &station, const sky::PassW
         return sky::predictCelestialPasses(m_target.rightAscensionDeg, m_target.declinationDeg, station, window);
     case TrackTarget::Kind::Fixed: break;
     }
-    if (m_target.elevationDeg < window.minElevationDeg)
-        return {};
+    if (m_target.elevationDeg < window.minElevationDeg
+        || (station.horizon && m_target.elevationDeg < station.horizon->elevationAt(m_target.azimuthDeg)))
+        return {}; // below the minimum, or behind what hides the sky there
     sky::Pass held;
     held.name = m_target.name();
     const sky::PassPoint point{0, m_target.azimuthDeg, m_target.elevationDeg};

@@ -117,13 +117,13 @@ void TestObservation::lookAngles_data()
     QTest::addColumn<double>("az");
     QTest::addColumn<double>("el");
     QTest::addColumn<double>("range");
-    const Station origin{0, 0, 0, {}};
+    const Station origin{0, 0, 0, {}, {}};
     const double r = 6378.137;
     QTest::newRow("overhead") << origin << r + 1000 << 0.0 << 0.0 << -1.0 << 90.0 << 1000.0;
     QTest::newRow("due east on the horizon") << origin << r << 1000.0 << 0.0 << 90.0 << 0.0 << 1000.0;
     QTest::newRow("due north on the horizon") << origin << r << 0.0 << 1000.0 << 0.0 << 0.0 << 1000.0;
     QTest::newRow("due west, 45 up") << origin << r + 1000 << -1000.0 << 0.0 << 270.0 << 45.0 << std::sqrt(2.0) * 1000;
-    QTest::newRow("pole, south at 45") << Station{90, 0, 0, {}} << 1000.0 << 0.0 << 6356.752314 + 1000 << 180.0 << 45.0
+    QTest::newRow("pole, south at 45") << Station{90, 0, 0, {}, {}} << 1000.0 << 0.0 << 6356.752314 + 1000 << 180.0 << 45.0
                                         << std::sqrt(2.0) * 1000;
 }
 
@@ -145,7 +145,7 @@ void TestObservation::lookAngles()
 
 void TestObservation::rangeRateAndDoppler()
 {
-    const Station origin{0, 0, 0, {}};
+    const Station origin{0, 0, 0, {}, {}};
     // Overhead and climbing straight up at 7 km/s: receding at 7 km/s.
     const LookAngles away = lookAnglesEarthFixed(origin, {6378.137 + 500, 0, 0}, {7, 0, 0});
     QVERIFY(std::fabs(away.rangeRateKmS - 7.0) < 1e-12);
@@ -166,7 +166,7 @@ void TestObservation::rangeRateAndDoppler()
 
 void TestObservation::geodeticRoundTrip()
 {
-    const Station s{45.0, 10.0, 500000.0, {}};
+    const Station s{45.0, 10.0, 500000.0, {}, {}};
     const Geodetic g = earthFixedToGeodetic(stationEarthFixed(s));
     QVERIFY(std::fabs(g.latitudeDeg - 45.0) < 1e-9);
     QVERIFY(std::fabs(g.longitudeDeg - 10.0) < 1e-9);

@@ -121,8 +121,8 @@ void TestPasses::matchesBruteForce_data()
     QTest::addColumn<QString>("satellite");
     QTest::addColumn<double>("minElevation");
     QTest::addColumn<Station>("station");
-    const Station copenhagen{55.6875, 12.625, 20, {}};
-    const Station quito{-0.2, -78.5, 2850, {}};
+    const Station copenhagen{55.6875, 12.625, 20, {}, {}};
+    const Station quito{-0.2, -78.5, 2850, {}, {}};
     QTest::newRow("ISS, horizon") << QStringLiteral("ISS (ZARYA)") << 0.0 << copenhagen;
     QTest::newRow("NOAA 18, 10 degrees") << QStringLiteral("NOAA 18") << 10.0 << copenhagen;
     QTest::newRow("AO-91, equator") << QStringLiteral("FOX-1B (AO-91)") << 5.0 << quito;
@@ -175,7 +175,7 @@ void TestPasses::allSatellitesSortedByAos()
     QList<Tle> some;
     for (const QString &name : {QStringLiteral("ISS (ZARYA)"), QStringLiteral("NOAA 18"), QStringLiteral("FOX-1B")})
         some.append(*named(sets, name));
-    const Station station{55.6875, 12.625, 20, {}};
+    const Station station{55.6875, 12.625, 20, {}, {}};
     const double start = std::floor(Sgp4(some[0]).epochJulian());
     const PassWindow window{start, start + 1.0, 0.0};
     const QList<Pass> all = predictPasses(some, station, window);
@@ -256,13 +256,13 @@ void TestPasses::decayedSatelliteHasNoPasses()
                      QStringLiteral("2 28872  96.4736 157.9986 0303955 244.0492 110.6523 16.46015938 10708"), &tle,
                      &r, false));
     const Sgp4 sat(tle);
-    const QList<Pass> passes = predictPasses(sat, Station{0, 0, 0, {}}, {sat.epochJulian() + 1, sat.epochJulian() + 2, 0});
+    const QList<Pass> passes = predictPasses(sat, Station{0, 0, 0, {}, {}}, {sat.epochJulian() + 1, sat.epochJulian() + 2, 0});
     QVERIFY(passes.isEmpty());
 }
 
 void TestPasses::sunAndMoonAgreeWithPyEphem()
 {
-    const Station station{51.4779, -0.0015, 46, {}};
+    const Station station{51.4779, -0.0015, 46, {}, {}};
     const double start = 2460481.5; // 2024-06-20 00:00 UTC
     const PassWindow window{start, start + 3.0, kRiseSetElevationDeg};
 

@@ -61,15 +61,15 @@ void TestSunMoon::agreesWithPyEphem()
     QList<Case> cases;
     // Fixed cases a person can check: noon in Greenwich at the June
     // solstice, a southern station, the poles, a mountain.
-    cases.append({{51.4779, -0.0015, 46, {}}, 2460482.0});
-    cases.append({{-33.9, 18.4, 120, {}}, 2451545.0});
-    cases.append({{89.9, 0, 0, {}}, 2455000.25});
-    cases.append({{-89.9, 0, 2835, {}}, 2458000.75});
-    cases.append({{19.82, -155.47, 4200, {}}, 2461000.1});
+    cases.append({{51.4779, -0.0015, 46, {}, {}}, 2460482.0});
+    cases.append({{-33.9, 18.4, 120, {}, {}}, 2451545.0});
+    cases.append({{89.9, 0, 0, {}, {}}, 2455000.25});
+    cases.append({{-89.9, 0, 2835, {}, {}}, 2458000.75});
+    cases.append({{19.82, -155.47, 4200, {}, {}}, 2461000.1});
     QRandomGenerator random(12);
     while (cases.size() < 400) {
         const Station s{degrees(std::asin(random.generateDouble() * 2 - 1)), random.generateDouble() * 360 - 180,
-                        random.generateDouble() * 3000, {}};
+                        random.generateDouble() * 3000, {}, {}};
         // 1980..2040
         cases.append({s, 2444239.5 + random.generateDouble() * 60 * 365.25});
     }

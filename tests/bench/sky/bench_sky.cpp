@@ -147,7 +147,7 @@ int main(int argc, char **argv)
     double start = 0;
     for (const Tle &t : sets)
         start = std::max(start, t.epochJulian());
-    const Station station{55.6875, 12.625, 20, {}};
+    const Station station{55.6875, 12.625, 20, {}, {}};
     QElapsedTimer timer;
     timer.start();
     const double cpuStart = threadCpuSeconds();
