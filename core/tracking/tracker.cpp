@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "tracker.h"
 
+#include "stationclock.h"
+
 #include "session/rotatorsession.h"
 #include "sky/skyvector.h"
 
@@ -127,6 +129,19 @@ SkyPoint Tracker::targetNow() const
     return m_pass.isEmpty() ? SkyPoint{} : skyAt(secondsFromAos());
 }
 
+void Tracker::sleepUntilDue(double stationSeconds)
+{
+    // Hours before a pass there is nothing to do but look again: the timer
+    // wakes at a twentieth of the time left (the station clock may run up to
+    // StationClock::kMaxRate times the rotator's), at most every 30 s, and
+    // ticks at its own pace again in the last seconds. A station waiting
+    // for its next pass keeps quiet (README: a station at rest).
+    const double waitMs = stationSeconds / StationClock::kMaxRate * 1000.0;
+    const int interval = int(std::clamp(waitMs, double(m_settings.tickMs), kLongestWaitMs));
+    if (m_timer.interval() != interval || !m_timer.isActive())
+        m_timer.start(interval);
+}
+
 double Tracker::commandFor(double azimuth) const
 {
     const model::RotatorLimits &limits = m_reach.limits;
@@ -187,20 +202,24 @@ void Tracker::tick()
             } else {
                 needed += 360.0 / m_reach.azimuthRateDegS;
             }
-            if (t >= -needed) {
-                if (!send(aos.azimuth, aos.elevation, false))
-                    return;
-                m_prepositioned = true;
-                // Started too late to be there on time: say so, with by how much.
-                const double travel = needed - m_settings.arriveEarlySeconds;
-                if (t <= -travel)
-                    setState(State::Waiting, tr("moving to the AOS point"));
-                else
-                    setState(State::Waiting, tr("the AOS point is %1 s away at this rotator's speed and AOS is in %2 s: "
-                                                "tracking starts late")
-                                                 .arg(travel, 0, 'f', 0)
-                                                 .arg(std::max(0.0, -t), 0, 'f', 0));
+            if (t < -needed) {
+                sleepUntilDue(-needed - t);
+                return;
             }
+            if (m_timer.interval() != m_settings.tickMs)
+                m_timer.start(m_settings.tickMs);
+            if (!send(aos.azimuth, aos.elevation, false))
+                return;
+            m_prepositioned = true;
+            // Started too late to be there on time: say so, with by how much.
+            const double travel = needed - m_settings.arriveEarlySeconds;
+            if (t <= -travel)
+                setState(State::Waiting, tr("moving to the AOS point"));
+            else
+                setState(State::Waiting, tr("the AOS point is %1 s away at this rotator's speed and AOS is in %2 s: "
+                                            "tracking starts late")
+                                             .arg(travel, 0, 'f', 0)
+                                             .arg(std::max(0.0, -t), 0, 'f', 0));
         } else if (onWaypoint() && !send(aos.azimuth, aos.elevation, false)) {
             return; // on the way to the AOS point by a waypoint: the point itself once it is the nearer
         }

@@ -116,6 +116,9 @@ private:
     // or, where the antenna is nearer the same bearing's other angle on an
     // overlap rotator, a waypoint only one angle has (see the .cpp).
     double commandFor(double azimuth) const;
+    // Waiting long before the move to the AOS point: the next tick later.
+    void sleepUntilDue(double stationSeconds);
+    static constexpr double kLongestWaitMs = 30000.0;
     // The last command was a waypoint, not the plan's own azimuth.
     bool onWaypoint() const { return m_lastSent && m_lastCommand && m_lastCommand->first != m_lastSent->first; }
 
