@@ -25,8 +25,9 @@ set(allowed_tracking "session;model;protocol;transport;sky;input")
 # radio: links to the radio and the Doppler steering, beside the tracker.
 set(allowed_radio "tracking;session;sky;model;protocol;transport;input")
 # station: one ground station's parts and their rules; the faces (ui, app) sit on it.
-set(allowed_station "radio;bridge;tracking;session;sky;model;protocol;transport;input")
-set(areas input protocol transport sky model session sim tuning bridge console tracking radio station)
+set(allowed_schedule "tracking;sky;model;input")
+set(allowed_station "schedule;radio;bridge;tracking;session;sky;model;protocol;transport;input")
+set(areas input protocol transport sky model session sim tuning bridge console tracking radio schedule station)
 
 file(GLOB_RECURSE files RELATIVE ${CORE} ${CORE}/*.h ${CORE}/*.cpp)
 set(faults "")
