@@ -32,10 +32,14 @@ struct ServiceConfig {
     // one rotor the URI names, or the controller's default.
     QList<int> rotors;
     // --track: follow every pass of a satellite, the sun or the moon with
-    // the (first) rotor until SIGTERM. Needs the station.
+    // the (first) rotor until SIGTERM; given more than once, the passes of
+    // all of them by a schedule, the first the highest priority
+    // (schedulerunner.h). Needs the station.
     struct Track {
-        tracking::TrackTarget target;
+        QList<tracking::TrackTarget> targets; // at least one
+        const tracking::TrackTarget &target() const { return targets.first(); }
         double minElevationDeg = 0;
+        double guardSeconds = 30; // --guard: between two passes of a schedule
         std::optional<double> clockStartJulian; // --clock-start: a rehearsal
         double clockRate = 1.0;                 // --clock-rate
     };

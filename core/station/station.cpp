@@ -3,6 +3,7 @@
 
 #include "alarmmonitor.h"
 #include "dopplerradio.h"
+#include "schedulerunner.h"
 
 #include "bridge/rotctldserver.h"
 #include "radio/transpondersources.h"
@@ -68,11 +69,17 @@ Station::Station(const StationOptions &options, QObject *parent) : QObject(paren
     m_pace = std::make_unique<tracking::SimulatorPace>(first, m_clock.get());
     m_runner = std::make_unique<tracking::PassRunner>(first);
     m_radio = std::make_unique<DopplerRadio>(first, m_runner.get(), m_clock.get());
+    m_schedule = std::make_unique<ScheduleRunner>(first, m_runner.get(), m_clock.get());
+    // New elements make a new plan (the schedule takes each target's newest).
+    connect(m_elementSets.get(), &sky::TleSources::setsChanged, m_schedule.get(),
+            [this] { m_schedule->updateElements(m_elementSets->sets()); });
     wireTracking();
 }
 
 Station::~Station()
 {
+    if (m_schedule)
+        m_schedule->stop(tr("the station is closing"));
     if (m_runner && m_runner->isRunning())
         m_runner->stop(tr("the station is closing"));
     m_radio.reset(); // it follows the runner, which goes next
@@ -212,12 +219,35 @@ QString Station::track(const tracking::TrackTarget &target, double minElevationD
                   "before Slew tracks, or the two will fight")
             .arg(other);
     }
+    m_schedule->stop(tr("one target is tracked instead"));
     m_runner->start(target, *m_place, minElevationDeg, m_clock.get());
+    return {};
+}
+
+QString Station::runSchedule(const QList<tracking::TrackTarget> &targets, const ScheduleOptions &options)
+{
+    if (!m_runner)
+        return m_error;
+    if (!m_place)
+        return tr("a schedule needs the station's place");
+    if (targets.isEmpty())
+        return tr("a schedule needs at least one target");
+    if (QString other = otherSteering(); !other.isEmpty()) {
+        other[0] = other[0].toUpper();
+        return tr("%1 is steering the rotator: stop it (or Stop, which holds remote trackers off) "
+                  "before Slew tracks, or the two will fight")
+            .arg(other);
+    }
+    if (m_runner->isRunning())
+        m_runner->stop(tr("a schedule is run instead"));
+    m_schedule->start(targets, *m_place, options);
     return {};
 }
 
 void Station::untrack(const QString &why)
 {
+    if (m_schedule)
+        m_schedule->stop(why);
     if (m_runner)
         m_runner->stop(why);
 }
@@ -228,13 +258,25 @@ void Station::setPlace(const std::optional<sky::Station> &place)
     emit placeChanged(m_place);
 }
 
-void Station::restoreSavedPlace()
+QString Station::restoreSavedPlace()
 {
     sky::Station saved;
     QString ignored;
-    const QString text = QSettings().value(QLatin1String(sky::kStationSettingsKey)).toString();
-    if (!text.isEmpty() && sky::parseStation(text, &saved, &ignored))
-        setPlace(saved);
+    const QSettings settings;
+    const QString text = settings.value(QLatin1String(sky::kStationSettingsKey)).toString();
+    if (text.isEmpty() || !sky::parseStation(text, &saved, &ignored))
+        return {};
+    QString problem;
+    const QString horizon = settings.value(QLatin1String(sky::kHorizonSettingsKey)).toString();
+    if (!horizon.isEmpty()) {
+        const sky::HorizonFile read = sky::readHorizonFile(horizon);
+        if (read.mask)
+            saved.horizon = read.mask;
+        else
+            problem = tr("the station's horizon mask: %1; the horizon is taken as flat").arg(read.error);
+    }
+    setPlace(saved);
+    return problem;
 }
 
 void Station::shutdown(const QString &why)
@@ -242,6 +284,8 @@ void Station::shutdown(const QString &why)
     if (m_shuttingDown)
         return;
     m_shuttingDown = true;
+    if (m_schedule)
+        m_schedule->stop(why);
     if (m_runner)
         m_runner->stop(why);
     // No tracker moves a rotor again meanwhile.

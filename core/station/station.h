@@ -18,6 +18,8 @@
 //     simulator paced to it), the pass runner (the tracker);
 //   - the radio, kept on the tracked satellite's Doppler-corrected
 //     frequencies during a pass (dopplerradio.h);
+//   - the schedule of several targets by priority (schedulerunner.h), on
+//     the same pass runner, planned again when the element sets change;
 //   - stopping every rotor, and letting the stops leave the link, before exit.
 //
 // Its intent (connect, go to, stop, park, home, track, hand control back,
@@ -65,6 +67,8 @@ namespace slew::station {
 
 class AlarmMonitor;
 class DopplerRadio;
+class ScheduleRunner;
+struct ScheduleOptions;
 
 struct StationOptions {
     // The rotors of a multi-rotor controller to serve, each with a session,
@@ -118,6 +122,9 @@ public:
     // The radio, tuned for Doppler while the pass runner tracks a satellite
     // (dopplerradio.h); null for a station with no rotor.
     DopplerRadio *radio() const { return m_radio.get(); }
+    // Several targets by priority, pass after pass (schedulerunner.h); null
+    // for a station with no rotor.
+    ScheduleRunner *scheduleRunner() const { return m_schedule.get(); }
 
     // --- Intent -------------------------------------------------------------
     // Opens every rotor's link (rotorUri()).
@@ -135,6 +142,11 @@ public:
     // rotor, by the station's clock. Empty when started, else why not: the
     // place is not set, or a remote tracker steers the rotator.
     QString track(const tracking::TrackTarget &target, double minElevationDeg);
+    // Follows the passes of several targets, taken by priority (the first
+    // highest) where they overlap and only where the rotator can get from
+    // one to the next: the schedule (schedulerunner.h). Empty when started,
+    // else why not, as track(). A single track() ends it, as untrack() does.
+    QString runSchedule(const QList<tracking::TrackTarget> &targets, const ScheduleOptions &options);
     void untrack(const QString &why);
     // Who steers the first rotor from outside now ("remote tracker
     // 127.0.0.1:5533"), or empty.
@@ -143,8 +155,10 @@ public:
     // Where the antenna stands; nothing until set.
     std::optional<sky::Station> place() const { return m_place; }
     void setPlace(const std::optional<sky::Station> &place);
-    // The place kept in the settings (Sky → Station…, --qth), if any.
-    void restoreSavedPlace();
+    // The place kept in the settings (Sky → Station…, --qth), if any, with
+    // its horizon mask file. Empty, or why the mask kept could not be read
+    // (the place is then set with a flat horizon).
+    QString restoreSavedPlace();
 
     // Stops Slew's tracking, closes the rotctld servers, stops every rotor
     // and emits shutDown() once every stop has left its link (at once when
@@ -184,6 +198,7 @@ private:
     std::unique_ptr<tracking::SimulatorPace> m_pace;
     std::unique_ptr<tracking::PassRunner> m_runner;
     std::unique_ptr<DopplerRadio> m_radio; // after the runner and clock it follows
+    std::unique_ptr<ScheduleRunner> m_schedule; // after the runner it drives
     std::optional<sky::Station> m_place;
     bool m_shuttingDown = false;
     int m_stillStopping = 0;

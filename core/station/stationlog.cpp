@@ -3,6 +3,7 @@
 
 #include "alarmmonitor.h"
 #include "dopplerradio.h"
+#include "schedulerunner.h"
 #include "station.h"
 
 #include "bridge/rotctldserver.h"
@@ -25,6 +26,9 @@ StationLog::StationLog(Station *station, std::FILE *file, QObject *parent)
         connect(runner, &tracking::PassRunner::logLine, this, [this](const QString &line) { write(tr("track: %1").arg(line)); });
     if (DopplerRadio *radio = station->radio())
         connect(radio, &DopplerRadio::logLine, this, &StationLog::write);
+    if (ScheduleRunner *schedule = station->scheduleRunner())
+        connect(schedule, &ScheduleRunner::logLine, this, &StationLog::write); // its lines say "schedule:"
+
     connect(station, &Station::exitStopSent, this, [this](int number) {
         write((number > 0 ? tr("rotor %1: ").arg(number) : QString()) + tr("rotator stopped"));
     });

@@ -2,6 +2,7 @@
 #include "stationservice.h"
 
 #include "dopplerradio.h"
+#include "schedulerunner.h"
 #include "station.h"
 #include "stationlog.h"
 
@@ -85,6 +86,8 @@ bool StationService::start(const ServiceConfig &config, QString *error)
     connect(m_station.get(), &Station::shutDown, this, &StationService::finished);
     if (config.station) {
         m_log->write(tr("station: %1").arg(sky::describeStation(*config.station)));
+        if (config.station->horizon)
+            m_log->write(tr("station: horizon mask: %1").arg(config.station->horizon->describe()));
         m_station->setPlace(config.station);
     }
 
@@ -103,8 +106,16 @@ bool StationService::start(const ServiceConfig &config, QString *error)
         if (config.track->clockStartJulian)
             m_station->clock()->rehearse(*config.track->clockStartJulian, config.track->clockRate);
         m_tracking = true;
-        if (const QString refused = m_station->track(config.track->target, config.track->minElevationDeg);
-            !refused.isEmpty()) {
+        QString refused;
+        if (config.track->targets.size() == 1) {
+            refused = m_station->track(config.track->target(), config.track->minElevationDeg);
+        } else {
+            ScheduleOptions schedule;
+            schedule.minElevationDeg = config.track->minElevationDeg;
+            schedule.guardSeconds = config.track->guardSeconds;
+            refused = m_station->runSchedule(config.track->targets, schedule);
+        }
+        if (!refused.isEmpty()) {
             *error = refused;
             return false;
         }
@@ -122,11 +133,12 @@ bool StationService::start(const ServiceConfig &config, QString *error)
 
 bool StationService::startRadio(const ServiceConfig &config, QString *error)
 {
-    if (!config.track || config.track->target.kind != tracking::TrackTarget::Kind::Satellite) {
-        *error = tr("--radio goes with --track of a satellite: Doppler is a satellite's");
+    if (!config.track || config.track->targets.size() != 1
+        || config.track->target().kind != tracking::TrackTarget::Kind::Satellite) {
+        *error = tr("--radio goes with one --track of a satellite: Doppler is a satellite's");
         return false;
     }
-    const int norad = config.track->target.elements.catalogueNumber;
+    const int norad = config.track->target().elements.catalogueNumber;
     RadioOptions options = *config.radio;
     if (!options.downlinkHz && options.transponderFiles.isEmpty()) {
         // Neither given: the transponders `slew --update-transponders` cached.

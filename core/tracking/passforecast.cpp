@@ -36,4 +36,31 @@ std::optional<PlannedPass> forecastNextPass(const TargetSky &target, const sky::
     return std::nullopt;
 }
 
+std::optional<PlannedPass> forecastPassBetween(const TargetSky &target, const sky::Station &station,
+                                               const sky::PassWindow &window, double nowJulian, double marginSeconds,
+                                               double fromJulian, double untilJulian, const RotatorReach &reach,
+                                               const PlannerOptions &options)
+{
+    const double margin = marginSeconds / sky::kSecondsPerDay;
+    const double until = std::min(untilJulian, window.endJulian);
+    for (sky::Pass p : target.passes(station, window)) {
+        if (window.stop && window.stop->load())
+            return std::nullopt;
+        const double from = std::max({p.aos.julian, nowJulian, fromJulian});
+        const double to = std::min(p.los.julian, until);
+        if (to <= from + margin)
+            continue;
+        // Sampled to the end of what was taken: the pass's LOS, or the
+        // piece's end for a long target.
+        if (to < p.los.julian) {
+            p.los.julian = to;
+            p.losClipped = true;
+        }
+        PlannedPass next{p, from, target.sample(station, p, from), {}};
+        next.plan = planPass(next.points, reach, options);
+        return next;
+    }
+    return std::nullopt;
+}
+
 } // namespace slew::tracking

@@ -38,4 +38,13 @@ std::optional<PlannedPass> forecastNextPass(const TargetSky &target, const sky::
                                             const sky::PassWindow &window, double nowJulian, double marginSeconds,
                                             const RotatorReach &reach, const PlannerOptions &options);
 
+// The schedule's pass (schedule/schedule.h): the first pass in `window`
+// still up `marginSeconds` after `nowJulian`, sampled from the latest of its
+// AOS, now and `fromJulian` to the earliest of its LOS and `untilJulian` (a
+// long target's piece between other passes), and planned.
+std::optional<PlannedPass> forecastPassBetween(const TargetSky &target, const sky::Station &station,
+                                               const sky::PassWindow &window, double nowJulian, double marginSeconds,
+                                               double fromJulian, double untilJulian, const RotatorReach &reach,
+                                               const PlannerOptions &options);
+
 } // namespace slew::tracking

@@ -59,22 +59,58 @@ bool PassRunner::isActive() const
 void PassRunner::start(const TrackTarget &target, const sky::Station &station, double minElevationDeg,
                        const StationClock *clock)
 {
+    m_one.reset();
+    begin(target, station, minElevationDeg, clock);
+}
+
+void PassRunner::startOne(const TrackTarget &target, const sky::Station &station, double minElevationDeg,
+                          const StationClock *clock, double fromJulian, double untilJulian)
+{
+    m_one = std::pair{fromJulian, untilJulian};
+    begin(target, station, minElevationDeg, clock);
+}
+
+void PassRunner::endOne(OneEnd end, const QString &why)
+{
+    m_running = false;
+    m_planning = false;
+    disconnect(m_clockChanged);
+    cancelPlanning();
+    ++m_generation;
+    m_retry.stop();
+    m_one.reset();
+    emit onePassEnded(end, why);
+}
+
+void PassRunner::begin(const TrackTarget &target, const sky::Station &station, double minElevationDeg,
+                       const StationClock *clock)
+{
     m_target = target;
     m_sky.emplace(target);
     m_station = station;
     m_minElevation = minElevationDeg;
     m_clock = clock;
     disconnect(m_clockChanged);
-    m_clockChanged = connect(clock, &StationClock::changed, this,
-                             [this] { startAfresh(tr("the station clock was changed")); });
+    m_clockChanged = connect(clock, &StationClock::changed, this, [this] {
+        if (m_one) {
+            // The schedule was made for the old time: it plans again.
+            m_tracker.stopTracking(tr("the station clock was changed"));
+            endOne(OneEnd::ClockChanged, tr("the station clock was changed"));
+            return;
+        }
+        startAfresh(tr("the station clock was changed"));
+    });
     m_running = true;
     m_planning = false;
     cancelPlanning();
     m_waitingFor.clear();
     ++m_generation;
-    emit logLine(tr("tracking %1 above %2°%3").arg(target.name()).arg(minElevationDeg)
-                     .arg(clock->isRehearsal() ? tr(", rehearsal clock from %1 at %2x").arg(isoTime(clock->nowJulian())).arg(clock->rate())
-                                               : QString()));
+    if (m_one)
+        emit logLine(tr("tracking %1 from %2 to %3").arg(target.name(), isoTime(m_one->first), isoTime(m_one->second)));
+    else
+        emit logLine(tr("tracking %1 above %2°%3").arg(target.name()).arg(minElevationDeg)
+                         .arg(clock->isRehearsal() ? tr(", rehearsal clock from %1 at %2x").arg(isoTime(clock->nowJulian())).arg(clock->rate())
+                                                   : QString()));
     if (m_session->isConnected())
         nextPass();
 }
@@ -83,6 +119,12 @@ void PassRunner::stop(const QString &why)
 {
     if (!m_running)
         return;
+    if (m_one) {
+        m_tracker.stopTracking(why);
+        if (m_running) // the tracker was not active: nothing said it yet
+            endOne(OneEnd::Stopped, why);
+        return;
+    }
     m_running = false;
     m_planning = false;
     disconnect(m_clockChanged);
@@ -124,7 +166,17 @@ void PassRunner::nextPass()
         emit logLine(tr("%1 has been quiet for %2 s: Slew takes the rotator").arg(m_waitingFor).arg(kOtherQuietSeconds));
     m_waitingFor.clear();
     const double now = m_clock->nowJulian();
+    if (m_one && now >= m_one->second) {
+        endOne(OneEnd::NotFound, tr("its time was over by %1").arg(isoTime(now)));
+        return;
+    }
     sky::PassWindow window{now, now + kLookAheadDays, m_minElevation};
+    // The schedule's pass: its AOS falls between the times given (a minute's
+    // margin for the pass predicted afresh), or it is under way then; never
+    // an earlier pass of the same target (one the schedule dropped).
+    if (m_one)
+        window = sky::PassWindow{m_one->first - 60.0 / sky::kSecondsPerDay, m_one->second, m_minElevation};
+    const std::optional<std::pair<double, double>> one = m_one;
     const RotatorReach reach = reachOf(*m_session);
     PlannerOptions options;
     if (m_session->hasPosition())
@@ -144,8 +196,10 @@ void PassRunner::nextPass()
     cancelPlanning();
     m_planStop = std::make_shared<std::atomic<bool>>(false);
     watcher->setFuture(QtConcurrent::run([sky = *m_sky, station = m_station, window, now, reach, options,
-                                          stop = m_planStop]() mutable {
+                                          stop = m_planStop, one]() mutable {
         window.stop = stop.get();
+        if (one)
+            return forecastPassBetween(sky, station, window, now, 5.0, one->first, one->second, reach, options);
         return forecastNextPass(sky, station, window, now, 5.0, reach, options);
     }));
 }
@@ -154,6 +208,13 @@ void PassRunner::onPlanned(const std::optional<PlannedPass> &next, const Rotator
 {
     if (!m_running || isActive() || !m_session->isConnected())
         return; // a lost link plans again when it is back
+    if (!next && m_one) {
+        endOne(OneEnd::NotFound, tr("no pass of %1 above %2° from %3 to %4")
+                                     .arg(m_target.name())
+                                     .arg(m_minElevation)
+                                     .arg(isoTime(m_one->first), isoTime(m_one->second)));
+        return;
+    }
     if (!next) {
         emit logLine(tr("no pass of %1 above %2° in the next %3 days; looking again in an hour")
                          .arg(m_target.name()).arg(m_minElevation).arg(kLookAheadDays));
@@ -178,6 +239,10 @@ void PassRunner::onPlanned(const std::optional<PlannedPass> &next, const Rotator
     settings.afterPass = m_target.isFixed() ? TrackerSettings::AfterPass::Stay : m_afterPass;
     m_tracker.setSettings(settings);
     if (!m_tracker.track(next->points, next->plan, next->fromJulian, reach, [clock] { return clock->nowJulian(); })) {
+        if (m_one) {
+            endOne(OneEnd::NotFound, tr("cannot track this pass: %1").arg(m_tracker.error()));
+            return;
+        }
         emit logLine(tr("cannot track this pass: %1; trying the next one after its LOS").arg(m_tracker.error()));
         const double wait = (pass.los.julian - plannedAtJulian) * sky::kSecondsPerDay / std::max(1.0, m_clock->rate());
         m_retry.start(int(std::min(wait * 1000.0 + 1000.0, double(kRetryMs))));
@@ -211,6 +276,10 @@ void PassRunner::onTrackerState(Tracker::State state, const QString &why)
                          .arg(f.commands)
                          .arg(f.commandsPerSecond(), 0, 'f', 2)
                          .arg(m_tracker.plan().predictedWorstDeg, 0, 'f', 2));
+        if (m_one) {
+            endOne(OneEnd::Tracked, QStringLiteral("LOS"));
+            break;
+        }
         QMetaObject::invokeMethod(this, &PassRunner::nextPass, Qt::QueuedConnection);
         break;
     }
@@ -222,6 +291,8 @@ void PassRunner::onTrackerState(Tracker::State state, const QString &why)
             m_running = false;
             m_retry.stop();
             emit logLine(tr("tracking ended: %1").arg(why));
+            if (m_one)
+                endOne(OneEnd::Stopped, why);
         } else {
             emit logLine(tr("tracking paused: %1; the next pass is planned when the link is back").arg(why));
         }

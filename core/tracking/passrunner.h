@@ -48,6 +48,13 @@ public:
     // target: the pass it was on was planned for another time.
     void start(const TrackTarget &target, const sky::Station &station, double minElevationDeg,
                const StationClock *clock);
+    // One pass only, the schedule's (schedule/schedule.h): the pass of
+    // `target` between `fromJulian` and `untilJulian`, or the stretch of a
+    // long target (the sun, a fixed direction) between them; then it stops
+    // and says onePassEnded(). A lost link pauses it as ever; a changed
+    // clock ends it (the schedule plans again).
+    void startOne(const TrackTarget &target, const sky::Station &station, double minElevationDeg,
+                  const StationClock *clock, double fromJulian, double untilJulian);
     void stop(const QString &why);
 
     bool isRunning() const { return m_running; }
@@ -62,12 +69,25 @@ public:
     const sky::Station &station() const { return m_station; }
     int passesDone() const { return m_passesDone; }
 
+    // How one pass of startOne() ended.
+    enum class OneEnd {
+        Tracked,      // to its LOS, or the end of its stretch
+        NotFound,     // no such pass (any more) between the times given
+        Stopped,      // a stop from anywhere, a refused point, stop()
+        ClockChanged, // the station clock was started again or changed rate
+    };
+    Q_ENUM(OneEnd)
+
 signals:
     void logLine(const QString &line);
+    void onePassEnded(slew::tracking::PassRunner::OneEnd end, const QString &why);
     // holdsRotator() changed.
     void activeChanged(bool holdsRotator);
 
 private:
+    void begin(const TrackTarget &target, const sky::Station &station, double minElevationDeg,
+               const StationClock *clock);
+    void endOne(OneEnd end, const QString &why);
     void nextPass();
     void startAfresh(const QString &why);
     void onPlanned(const std::optional<PlannedPass> &next, const RotatorReach &reach, double plannedAtJulian);
@@ -95,6 +115,8 @@ private:
     bool m_wasActive = false;
     int m_passesDone = 0;
     QTimer m_retry; // no pass found: look again later
+    // startOne()'s times; none for start()'s every pass.
+    std::optional<std::pair<double, double>> m_one;
 };
 
 } // namespace slew::tracking

@@ -1,0 +1,145 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The station's schedule at work: a Station with the built-in rotator
+// simulator, its clock rehearsing 2018-01-22 from 09:25:40 at 20 times, and
+// three satellites by priority: FLOCK 2P-1 (its pass until 09:27:10 under
+// way), PERSEUS-M1 (up at 09:29:11) and ENVISAT (up since 09:25:31, over
+// both). ENVISAT's pass is dropped for FLOCK's, and said at once (its time
+// has come); FLOCK's is followed to its LOS, then PERSEUS-M1's is waited
+// for; a change of the list plans again without taking the pass in
+// progress away; untrack ends it all.
+
+#include "linkschemes.h"
+#include "schedule/scheduletext.h"
+#include "session/rotatorsession.h"
+#include "sky/station.h"
+#include "sky/tle.h"
+#include "sky/utctime.h"
+#include "station/schedulerunner.h"
+#include "station/station.h"
+#include "tracking/passrunner.h"
+#include "tracking/stationclock.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+using slew::schedule::DropReason;
+using slew::schedule::ScheduledPass;
+using slew::station::ScheduleRunner;
+using slew::station::Station;
+using slew::tracking::TrackTarget;
+
+namespace {
+
+TrackTarget satellite(const char *name)
+{
+    static const slew::sky::TleFile sets =
+        slew::sky::readTleFile(QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"));
+    QString error;
+    TrackTarget t;
+    if (const slew::sky::Tle *found = slew::sky::findOneTle(sets.sets, QString::fromLatin1(name), &error))
+        t.elements = *found;
+    return t;
+}
+
+double at(const char *iso)
+{
+    return *slew::sky::julianFromIso(QString::fromLatin1(iso));
+}
+
+// The pass of `target` in the plan that covers `julian`.
+const ScheduledPass *passOf(const slew::schedule::Schedule &plan, const QString &target, double julian)
+{
+    for (const ScheduledPass &p : plan.passes)
+        if (p.target == target && p.startJulian <= julian + 1e-9 && p.endJulian >= julian)
+            return &p;
+    return nullptr;
+}
+
+} // namespace
+
+class ScheduleRunnerTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { slew::registerLinkSchemes(); }
+
+    void followsTheTakenPassesAndSaysTheDroppedOnes()
+    {
+        Station station;
+        slew::sky::Station place;
+        QString error;
+        QVERIFY(slew::sky::parseStation(QStringLiteral("JO65hq"), &place, &error));
+        station.setPlace(place);
+        station.clock()->rehearse(at("2018-01-22T09:25:40Z"), 20.0);
+        station.session()->connectTo(QStringLiteral("sim:"));
+        QTRY_VERIFY_WITH_TIMEOUT(station.session()->isConnected() && station.session()->hasPosition(), 10000);
+
+        const TrackTarget flock = satellite("FLOCK 2P-1"), perseus = satellite("PERSEUS-M1"),
+                          envisat = satellite("ENVISAT");
+        QVERIFY(flock.elements.catalogueNumber && perseus.elements.catalogueNumber
+                && envisat.elements.catalogueNumber);
+        ScheduleRunner *runner = station.scheduleRunner();
+        QSignalSpy lines(runner, &ScheduleRunner::logLine);
+        QSignalSpy dropped(runner, &ScheduleRunner::passDropped);
+        QCOMPARE(station.runSchedule({flock, perseus, envisat}, slew::station::ScheduleOptions{}), QString());
+        QVERIFY(runner->isRunning());
+        QTRY_VERIFY_WITH_TIMEOUT(!runner->schedule().passes.isEmpty(), 20000);
+        auto said = [&] {
+            QStringList all;
+            for (const QList<QVariant> &args : std::as_const(lines))
+                all << args.at(0).toString();
+            return all.join(QLatin1Char('\n'));
+        };
+
+        // The plan: FLOCK's pass taken from now, ENVISAT's dropped for it,
+        // PERSEUS-M1's taken after them.
+        const slew::schedule::Schedule &plan = runner->schedule();
+        const ScheduledPass *flockPass = passOf(plan, flock.name(), at("2018-01-22T09:26:00Z"));
+        const ScheduledPass *envisatPass = passOf(plan, envisat.name(), at("2018-01-22T09:30:00Z"));
+        const ScheduledPass *perseusPass = passOf(plan, perseus.name(), at("2018-01-22T09:30:00Z"));
+        QVERIFY2(flockPass && envisatPass && perseusPass, qPrintable(said()));
+        QVERIFY(flockPass->taken);
+        QVERIFY(perseusPass->taken);
+        QVERIFY(!envisatPass->taken);
+        QCOMPARE(envisatPass->reason, DropReason::Overlap);
+        QVERIFY2(envisatPass->why.startsWith(QStringLiteral("overlaps %1 (priority 1").arg(flock.name())),
+                 qPrintable(envisatPass->why));
+        QVERIFY2(said().contains(QStringLiteral("schedule: planned (started): ")), qPrintable(said()));
+        QVERIFY(said().contains(QStringLiteral("schedule: targets by priority: 1. FLOCK 2P-1, 2. PERSEUS-M1, 3. ENVISAT")));
+        // ENVISAT's pass began before the plan was made: said at once.
+        QTRY_VERIFY(!dropped.isEmpty());
+        QCOMPARE(dropped.first().at(0).value<ScheduledPass>().target, envisat.name());
+
+        // FLOCK's pass, followed to its LOS at 09:27:10; then PERSEUS-M1's
+        // is the one waited for.
+        QVERIFY(runner->current());
+        QCOMPARE(runner->current()->target, flock.name());
+        QTRY_COMPARE_WITH_TIMEOUT(station.passRunner()->tracker().state(), slew::tracking::Tracker::State::Tracking,
+                                  20000);
+        QCOMPARE(station.passRunner()->target().name(), flock.name());
+        QTRY_VERIFY_WITH_TIMEOUT(runner->current() && runner->current()->target == perseus.name(), 30000);
+        QTRY_COMPARE(station.passRunner()->target().name(), perseus.name());
+        QVERIFY(station.passRunner()->isRunning());
+        QVERIFY2(said().contains(QStringLiteral("schedule: next: ")), qPrintable(said()));
+
+        // The list changes while PERSEUS-M1's pass is waited for (the rotator
+        // not yet on it): planned again; untrack ends it all.
+        lines.clear();
+        runner->setTargets({perseus, flock});
+        QTRY_VERIFY_WITH_TIMEOUT(said().contains(QStringLiteral("schedule: planned (the targets changed): ")), 20000);
+        station.untrack(QStringLiteral("the test is over"));
+        QVERIFY(!runner->isRunning());
+        QVERIFY(!station.passRunner()->isRunning());
+        QVERIFY(said().contains(QStringLiteral("schedule: ended: the test is over")));
+    }
+
+    void refusedWithoutAPlace()
+    {
+        Station station;
+        QCOMPARE(station.runSchedule({satellite("FLOCK 2P-1")}, slew::station::ScheduleOptions{}),
+                 QStringLiteral("a schedule needs the station's place"));
+        QVERIFY(!station.scheduleRunner()->isRunning());
+    }
+};
+
+QTEST_GUILESS_MAIN(ScheduleRunnerTest)
+#include "tst_schedulerunner.moc"
