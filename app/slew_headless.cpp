@@ -6,6 +6,7 @@
 #include "slew_identity.h"
 #include "cli/configfile.h"
 #include "cli/sharedoptions.h"
+#include "cli/trackoptions.h"
 #include "cli/slewcommandline.h"
 #include "transport/hostport.h"
 #include "slew_headless.h"
@@ -44,53 +45,19 @@ QString shown(const QString &text)
     return slew::cli::shownValue(text);
 }
 
-// --track and what goes with it: the target (a satellite from --tle, the
-// sun, the moon, azel:AZ,EL or radec:RA,DEC), --min-el, --clock-start,
-// --clock-rate. Messages name each option as `label` gives it.
+// --track and what goes with it: the targets (cli/trackoptions.h), --min-el,
+// --guard, --clock-start, --clock-rate. Messages name each option as `label`
+// gives it.
 std::optional<slew::station::ServiceConfig::Track> readTrack(const QCommandLineParser &parser,
                                                               const OptionLabel &label, QString *error)
 {
-    using slew::tracking::TrackTarget;
     slew::station::ServiceConfig::Track track;
-    const QString trackOption = QStringLiteral("track"), tleOption = QStringLiteral("tle");
-    const QString what = parser.value(trackOption).trimmed();
-    QString badFixed;
-    if (const auto fixed = TrackTarget::parseFixedOrCelestial(what, &badFixed)) {
-        track.target = *fixed;
-    } else if (!badFixed.isEmpty()) {
-        *error = QStringLiteral("%1 %2").arg(label(trackOption), badFixed);
+    const auto targets = slew::cli::readTrackTargets(parser, label, error);
+    if (!targets)
         return std::nullopt;
-    } else if (what.compare(QLatin1String("sun"), Qt::CaseInsensitive) == 0) {
-        track.target.kind = TrackTarget::Kind::Sun;
-    } else if (what.compare(QLatin1String("moon"), Qt::CaseInsensitive) == 0) {
-        track.target.kind = TrackTarget::Kind::Moon;
-    } else {
-        if (!parser.isSet(tleOption)) {
-            *error = QStringLiteral("%1 %2 needs --tle FILE with its element set").arg(label(trackOption), shown(what));
-            return std::nullopt;
-        }
-        const QString path = parser.value(tleOption);
-        const slew::sky::TleFile file = slew::sky::readTleFile(path);
-        if (!file.error.isEmpty()) {
-            *error = QStringLiteral("%1: %2").arg(label(tleOption), file.error);
-            return std::nullopt;
-        }
-        QString why;
-        const slew::sky::Tle *tle = slew::sky::findOneTle(file.sets, what, &why);
-        if (!tle) {
-            // The sets that could not be read may be the one meant: say why
-            // they were skipped, as --passes does.
-            *error = QStringLiteral("%1: %2 in %3").arg(label(trackOption), why, path);
-            for (const slew::sky::TleRefusal &r : file.refusals.mid(0, 5))
-                *error += QStringLiteral("\n  %1:%2: skipped: %3").arg(path).arg(r.line).arg(r.reason);
-            if (file.refusals.size() > 5)
-                *error += QStringLiteral("\n  … and %1 more sets skipped").arg(file.refusals.size() - 5);
-            return std::nullopt;
-        }
-        track.target.elements = *tle;
-    }
-    const QString minEl = QStringLiteral("min-el");
+    track.targets = *targets;
     QString why;
+    const QString minEl = QStringLiteral("min-el");
     if (parser.isSet(minEl)) {
         const auto value = slew::input::numberIn(parser.value(minEl), {-5, 90, "°"}, &why);
         if (!value) {
@@ -98,6 +65,19 @@ std::optional<slew::station::ServiceConfig::Track> readTrack(const QCommandLineP
             return std::nullopt;
         }
         track.minElevationDeg = *value;
+    }
+    const QString guard = QStringLiteral("guard");
+    if (parser.isSet(guard)) {
+        if (track.targets.size() < 2) {
+            *error = QStringLiteral("%1 goes with a schedule: --track given more than once").arg(label(guard));
+            return std::nullopt;
+        }
+        const auto value = slew::input::numberIn(parser.value(guard), {0, 3600, " s"}, &why);
+        if (!value) {
+            *error = QStringLiteral("%1: %2 (seconds between two passes, 0 to 3600)").arg(label(guard), why);
+            return std::nullopt;
+        }
+        track.guardSeconds = *value;
     }
     const auto clock = slew::cli::readStationClockOptions(parser, label, error);
     if (!clock)
@@ -264,7 +244,11 @@ int runHeadless(int argc, char *argv[])
         slew::sky::Station where;
         if (!slew::sky::parseStation(parser.value(QStringLiteral("qth")), &where, &error))
             return fail(QStringLiteral("%1: %2").arg(label(QStringLiteral("qth")), error));
+        if (!slew::cli::readHorizonOption(parser, label, &where.horizon, &error))
+            return fail(error);
         config.station = where;
+    } else if (parser.isSet(QStringLiteral("horizon"))) {
+        return fail(QStringLiteral("%1 goes with --qth: the horizon is the station's").arg(label(QStringLiteral("horizon"))));
     }
 
     if (parser.isSet(QStringLiteral("track"))) {
@@ -275,15 +259,19 @@ int runHeadless(int argc, char *argv[])
             return fail(QStringLiteral("--track needs --qth: where the antenna stands"));
         config.track = *track;
     } else {
-        for (const char *option : {"tle", "min-el", "clock-start", "clock-rate"}) {
+        for (const char *option : {"tle", "min-el", "guard", "clock-start", "clock-rate"}) {
             if (parser.isSet(QString::fromLatin1(option)))
                 return fail(QStringLiteral("%1 goes with --track").arg(label(QString::fromLatin1(option))));
         }
     }
 
     if (parser.isSet(QStringLiteral("radio"))) {
-        if (!config.track || config.track->target.kind != slew::tracking::TrackTarget::Kind::Satellite)
+        if (!config.track || config.track->target().kind != slew::tracking::TrackTarget::Kind::Satellite)
             return fail(QStringLiteral("%1 goes with --track of a satellite: Doppler is a satellite's")
+                            .arg(label(QStringLiteral("radio"))));
+        if (config.track->targets.size() > 1)
+            return fail(QStringLiteral("%1 goes with one --track: the radio's frequencies are one satellite's (a "
+                                       "schedule of several tunes no radio yet)")
                             .arg(label(QStringLiteral("radio"))));
         auto radio = readRadio(parser, label, &error);
         if (!radio)

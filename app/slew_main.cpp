@@ -9,6 +9,7 @@
 #include "operatortheme.h"
 #include "slew_elements.h"
 #include "slew_headless.h"
+#include "slew_schedule.h"
 #include "slew_sky.h"
 #include "slew_tune.h"
 #include "rotctldpanel.h"
@@ -134,6 +135,9 @@ int main(int argc, char *argv[])
     // And the sky questions: passes, and where things are.
     if (wantsSky(argc, argv))
         return runSky(argc, argv);
+    // And the schedule of several targets.
+    if (wantsSchedule(argc, argv))
+        return runSchedule(argc, argv);
     // And refreshing the element sets into the window's cache.
     if (wantsUpdateElements(argc, argv))
         return runUpdateElements(argc, argv);

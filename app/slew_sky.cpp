@@ -85,22 +85,53 @@ struct Common {
     QList<Tle> sets;
 };
 
-// The options both modes share: the station, a time, the element file.
-QString readCommon(const QCommandLineParser &parser, const QString &timeOption, bool needTle, Common *out)
+} // namespace
+
+QString readSkyStation(const QCommandLineParser &parser, bool withHorizon, Station *out)
 {
     // The station from --qth, else the one the window saved (Sky → Station…).
     QString error;
+    bool saved = false;
     if (parser.isSet(QStringLiteral("qth"))) {
-        if (!parseStation(parser.value(QStringLiteral("qth")), &out->station, &error))
+        if (!parseStation(parser.value(QStringLiteral("qth")), out, &error))
             return QStringLiteral("--qth: %1").arg(error);
     } else {
-        const QString saved = QSettings().value(QLatin1String(kStationSettingsKey)).toString();
-        if (saved.isEmpty())
+        const QString text = QSettings().value(QLatin1String(kStationSettingsKey)).toString();
+        if (text.isEmpty())
             return QStringLiteral("--qth is needed: LAT,LON[,HEIGHT_M] or a Maidenhead locator "
                                   "(or set the station in the window: Sky → Station…)");
-        if (!parseStation(saved, &out->station, &error))
-            return QStringLiteral("the saved station \"%1\": %2 (give --qth)").arg(saved, error);
+        if (!parseStation(text, out, &error))
+            return QStringLiteral("the saved station \"%1\": %2 (give --qth)").arg(text, error);
+        saved = true;
     }
+    if (!withHorizon)
+        return {};
+    // Its horizon: --horizon, else the one the window keeps with the saved
+    // station (not with another named by --qth).
+    QString path = parser.value(QStringLiteral("horizon"));
+    QString from = QStringLiteral("--horizon");
+    if (!parser.isSet(QStringLiteral("horizon")) && saved) {
+        path = QSettings().value(QLatin1String(kHorizonSettingsKey)).toString();
+        from = QStringLiteral("the saved station's horizon mask");
+    }
+    if (path.isEmpty())
+        return {};
+    const HorizonFile read = readHorizonFile(path);
+    if (!read.mask)
+        return QStringLiteral("%1: %2").arg(from, read.error);
+    out->horizon = read.mask;
+    return {};
+}
+
+namespace {
+
+// The options both modes share: the station, a time, the element file.
+QString readCommon(const QCommandLineParser &parser, const QString &timeOption, bool needTle, Common *out,
+                   bool withHorizon)
+{
+    if (const QString problem = readSkyStation(parser, withHorizon, &out->station); !problem.isEmpty())
+        return problem;
+    QString error;
     out->julian = nowJulian();
     if (parser.isSet(timeOption)) {
         const auto t = parseTime(parser.value(timeOption));
@@ -235,7 +266,7 @@ int runPasses(QCoreApplication &app)
     const std::optional<SkyBody> body = bodyNamed(target);
 
     Common common;
-    const QString error = readCommon(parser, QStringLiteral("start"), !body, &common);
+    const QString error = readCommon(parser, QStringLiteral("start"), !body, &common, true);
     if (!error.isEmpty())
         return fail(error);
     QString why;
@@ -305,7 +336,7 @@ int runWhere(QCoreApplication &app)
         return fail(QStringLiteral("--where needs a satellite, \"sun\" or \"moon\""));
     const std::optional<SkyBody> body = bodyNamed(target);
     Common common;
-    const QString error = readCommon(parser, QStringLiteral("time"), !body, &common);
+    const QString error = readCommon(parser, QStringLiteral("time"), !body, &common, false);
     if (!error.isEmpty())
         return fail(error);
     const bool refraction = parser.isSet(QStringLiteral("refraction"));

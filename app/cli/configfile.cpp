@@ -72,13 +72,14 @@ std::optional<ConfiguredArguments> parseConfigText(const QString &text, const QS
         }
         // A name given twice is a mistake either way round: which one the
         // user meant cannot be told, so neither is taken silently.
-        if (const auto seen = firstLine.constFind(name); seen != firstLine.cend()) {
+        if (const auto seen = firstLine.constFind(name); seen != firstLine.cend() && !option->repeatable) {
             *error = QStringLiteral("%1: '%2' is set again; it was set on line %3 already: keep one")
                          .arg(where, name)
                          .arg(*seen + 1);
             return std::nullopt;
         }
-        firstLine.insert(name, i);
+        if (!firstLine.contains(name))
+            firstLine.insert(name, i);
         if (value.isEmpty())
             continue; // `profile =` in the example: not set
         if (option->valueName.isEmpty()) {
@@ -127,7 +128,17 @@ std::optional<ConfiguredArguments> withConfigFile(const QStringList &arguments, 
     if (!settings)
         return std::nullopt;
     ConfiguredArguments combined;
-    combined.arguments << arguments.first() << settings->arguments << arguments.mid(1);
+    combined.arguments << arguments.first();
+    for (const QString &setting : std::as_const(settings->arguments)) {
+        // A repeatable option given on the command line replaces the file's
+        // (a single one wins by coming last).
+        const QString name = setting.mid(2).section(u'=', 0, 0);
+        const ProgramOption *option = mode.find(name);
+        if (option && option->repeatable && givenOnCommandLine(arguments, name))
+            continue;
+        combined.arguments << setting;
+    }
+    combined.arguments << arguments.mid(1);
     for (auto it = settings->origins.cbegin(); it != settings->origins.cend(); ++it) {
         if (!givenOnCommandLine(arguments, it.key()))
             combined.origins.insert(it.key(), it.value());

@@ -18,6 +18,9 @@ struct ProgramOption {
     QString valueName;       // empty: a switch that takes no value
     QString description;     // one sentence or two; shown in --help and the manual
     bool inConfigFile = false; // may also be given as `name = value` in a --config file
+    // May be given more than once (`--track A --track B`; in a config file,
+    // a line each). Given on the command line, it replaces the file's.
+    bool repeatable = false;
 
     QCommandLineOption toQt() const;
     QString longName() const { return names.first(); }

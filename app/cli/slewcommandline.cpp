@@ -80,6 +80,16 @@ ProgramOption stationOption(const QString &description, bool inConfigFile = fals
     return {{QStringLiteral("qth")}, QStringLiteral("station"), description, inConfigFile};
 }
 
+ProgramOption horizonOption(bool inConfigFile = false)
+{
+    return {{QStringLiteral("horizon")},
+            QStringLiteral("file"),
+            QStringLiteral("The station's horizon mask: a line `azimuth elevation` (degrees) a point, # for comments; "
+                           "the mask is read straight between the points and round through north, and a wall is "
+                           "two points at one azimuth. AOS and LOS are where a target clears it."),
+            inConfigFile};
+}
+
 ProgramOption rotctldMaxClientsOption()
 {
     return {{QStringLiteral("rotctld-max-clients")},
@@ -138,7 +148,7 @@ ProgramMode makeHeadlessMode()
     mode.synopsis = QStringLiteral("slew --headless [--config FILE] [--connect URI] [--dialect NAME] "
                                    "[--profile FILE] [--limits AZMIN:AZMAX,ELMIN:ELMAX] [--rotctld-listen ADDRESS:PORT] "
                                    "[--rotctld-allow ADDRESSES] [--rotors LIST] [--qth STATION --tle FILE "
-                                   "--track CATNR|NAME|sun|moon|azel:AZ,EL|radec:RA,DEC [--min-el DEG] [--clock-start ISO8601] [--clock-rate N] "
+                                   "--track CATNR|NAME|sun|moon|azel:AZ,EL|radec:RA,DEC [--track ...] [--horizon FILE] [--min-el DEG] [--guard S] [--clock-start ISO8601] [--clock-rate N] "
                                    "[--radio URI (--downlink FREQ [--uplink FREQ] | --transponders FILE [--transponder NAME])]]");
     mode.description = QStringLiteral(
         "Runs Slew with no window and no display, as a station service: it keeps the link to the rotator open "
@@ -150,7 +160,7 @@ ProgramMode makeHeadlessMode()
         {{QStringLiteral("config")},
          QStringLiteral("file"),
          QStringLiteral("Read settings from FILE, one `name = value` a line, where name is one of connect, dialect, "
-                        "profile, limits, rotctld-listen, rotctld-allow, rotctld-max-clients, rotors, qth, tle, track, min-el, and the radio's "
+                        "profile, limits, rotctld-listen, rotctld-allow, rotctld-max-clients, rotors, qth, horizon, tle, track (a line a target), min-el, guard, and the radio's "
                         "radio, downlink, uplink, downlink-mode, uplink-mode, doppler, uplink-follows, downlink-offset, "
                         "uplink-offset, transponders, transponder, transponder-invert, radio-restore, radio-vfos. Options on the "
                         "command line win over the file.")},
@@ -172,7 +182,17 @@ ProgramMode makeHeadlessMode()
                         "LOS the pointing error (RMS and worst). Also azel:AZ,EL (hold a fixed direction) and "
                         "radec:RA,DEC (a radio source: RA in hours, or degrees with a d; Dec in degrees; J2000; "
                         "23:23:24 style accepted). Needs --qth. Remote trackers on the rotctld port are "
-                        "held off while a pass is tracked."),
+                        "held off while a pass is tracked. Given more than once (in a config file, a line each), "
+                        "the targets are scheduled by priority, the first highest: where passes overlap the higher "
+                        "priority keeps its pass, a pass the rotator cannot reach in time from the one before is "
+                        "dropped, and every decision is logged (slew --schedule prints the same plan)."),
+         true,
+         true},
+        horizonOption(true),
+        {{QStringLiteral("guard")},
+         QStringLiteral("seconds"),
+         QStringLiteral("With --track given more than once: the least time between two passes of the schedule, "
+                        "besides the rotator's move, 0 to 3600 (default 30)."),
          true},
         {{QStringLiteral("tle")},
          QStringLiteral("file"),
@@ -330,6 +350,49 @@ ProgramMode makePassesMode()
          QStringLiteral("time"),
          QStringLiteral("Start of the search, ISO 8601 in UTC (default now); --time is the same.")},
         {{QStringLiteral("json")}, {}, QStringLiteral("Print JSON instead of a table.")},
+        horizonOption(),
+    };
+    return mode;
+}
+
+ProgramMode makeScheduleMode()
+{
+    ProgramMode mode;
+    mode.title = QStringLiteral("A schedule of several targets");
+    mode.synopsis = QStringLiteral("slew --schedule --track TARGET [--track TARGET ...] --qth STATION [--tle FILE] "
+                                   "[--horizon FILE] [--start ISO8601] [--hours 24] [--min-el DEG] [--guard S] "
+                                   "[--profile FILE | --limits AZMIN:AZMAX,ELMIN:ELMAX] [--json]");
+    mode.description = QStringLiteral(
+        "Prints the plan the station service follows for these targets, the first the highest priority: every "
+        "pass in the window, taken or dropped, and why it was dropped (an overlap with a higher priority, the "
+        "rotator unable to get there in time from the pass before, below the horizon mask, elements too old, no "
+        "path the rotator can drive). The rotator is the profile's (its travel, speeds and accelerations), or the "
+        "default G-5500 class one; --limits sets its travel. The station and its horizon fall back to what the "
+        "window keeps (Sky, Station), as --passes does.");
+    mode.options = {
+        {{QStringLiteral("schedule")}, {}, QStringLiteral("Print a schedule.")},
+        {{QStringLiteral("track")},
+         QStringLiteral("target"),
+         QStringLiteral("A target: a satellite of --tle (a catalogue number or the start of a name), sun, moon, "
+                        "azel:AZ,EL or radec:RA,DEC. Once for each target, the first the highest priority."),
+         false,
+         true},
+        qthOption(),
+        tleOption(QStringLiteral("Two- or three-line element sets for the satellites among the targets.")),
+        horizonOption(),
+        {{QStringLiteral("start"), QStringLiteral("time")},
+         QStringLiteral("time"),
+         QStringLiteral("Start of the plan, ISO 8601 in UTC (default now).")},
+        {{QStringLiteral("hours")}, QStringLiteral("hours"), QStringLiteral("How far ahead to plan, 0.1 to 168 (default 24).")},
+        {{QStringLiteral("min-el")},
+         QStringLiteral("degrees"),
+         QStringLiteral("Passes must climb above this elevation, -5 to 90 (default 0).")},
+        {{QStringLiteral("guard")},
+         QStringLiteral("seconds"),
+         QStringLiteral("The least time between two passes, besides the rotator's move, 0 to 3600 (default 30).")},
+        profileOption(),
+        limitsOption(),
+        {{QStringLiteral("json")}, {}, QStringLiteral("Print JSON instead of a line a pass.")},
     };
     return mode;
 }
@@ -473,7 +536,7 @@ const ProgramDescription &slewProgram()
             "rotator is attached. Every move, from the operator, a tracker, a preset or a raw command, is checked "
             "against the rotator's limits before a byte is sent.");
         p.modes = {makeWindowMode(), makeHeadlessMode(), makeTuneMode(), makePassesMode(), makeWhereMode(),
-                   makeUpdateElementsMode(), makeUpdateTranspondersMode()};
+                   makeUpdateElementsMode(), makeUpdateTranspondersMode(), makeScheduleMode()};
         p.sections = {
             {QStringLiteral("Links"),
              QStringLiteral("A link is named by a URI, the same on the command line, in the window and in profiles:\n"
@@ -568,6 +631,11 @@ const ProgramMode &slewUpdateElementsMode()
 const ProgramMode &slewUpdateTranspondersMode()
 {
     return slewProgram().modes.at(6);
+}
+
+const ProgramMode &slewScheduleMode()
+{
+    return slewProgram().modes.at(7);
 }
 
 const ProgramDescription &slewSimProgram()

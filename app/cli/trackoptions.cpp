@@ -1,0 +1,97 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "trackoptions.h"
+
+#include "sky/tle.h"
+
+#include <QCommandLineParser>
+
+namespace slew::cli {
+
+using tracking::TrackTarget;
+
+namespace {
+
+// A satellite by its catalogue number, anything else by its name.
+QString identity(const TrackTarget &t)
+{
+    return t.kind == TrackTarget::Kind::Satellite ? QString::number(t.elements.catalogueNumber) : t.name();
+}
+
+} // namespace
+
+std::optional<QList<TrackTarget>> readTrackTargets(const QCommandLineParser &parser, const OptionLabel &label,
+                                                   QString *error)
+{
+    const QString trackOption = QStringLiteral("track"), tleOption = QStringLiteral("tle");
+    std::optional<sky::TleFile> file; // read at the first satellite, once
+    QList<TrackTarget> targets;
+    for (const QString &given : parser.values(trackOption)) {
+        const QString what = given.trimmed();
+        TrackTarget target;
+        QString badFixed;
+        if (const auto fixed = TrackTarget::parseFixedOrCelestial(what, &badFixed)) {
+            target = *fixed;
+        } else if (!badFixed.isEmpty()) {
+            *error = QStringLiteral("%1 %2").arg(label(trackOption), badFixed);
+            return std::nullopt;
+        } else if (what.compare(QLatin1String("sun"), Qt::CaseInsensitive) == 0) {
+            target.kind = TrackTarget::Kind::Sun;
+        } else if (what.compare(QLatin1String("moon"), Qt::CaseInsensitive) == 0) {
+            target.kind = TrackTarget::Kind::Moon;
+        } else {
+            if (!parser.isSet(tleOption)) {
+                *error = QStringLiteral("%1 %2 needs --tle FILE with its element set")
+                             .arg(label(trackOption), shownValue(what));
+                return std::nullopt;
+            }
+            const QString path = parser.value(tleOption);
+            if (!file) {
+                file = sky::readTleFile(path);
+                if (!file->error.isEmpty()) {
+                    *error = QStringLiteral("%1: %2").arg(label(tleOption), file->error);
+                    return std::nullopt;
+                }
+            }
+            QString why;
+            const sky::Tle *tle = sky::findOneTle(file->sets, what, &why);
+            if (!tle) {
+                // The sets that could not be read may be the one meant: say
+                // why they were skipped, as --passes does.
+                *error = QStringLiteral("%1: %2 in %3").arg(label(trackOption), why, path);
+                for (const sky::TleRefusal &r : file->refusals.mid(0, 5))
+                    *error += QStringLiteral("\n  %1:%2: skipped: %3").arg(path).arg(r.line).arg(r.reason);
+                if (file->refusals.size() > 5)
+                    *error += QStringLiteral("\n  … and %1 more sets skipped").arg(file->refusals.size() - 5);
+                return std::nullopt;
+            }
+            target.elements = *tle;
+        }
+        for (const TrackTarget &earlier : std::as_const(targets)) {
+            if (earlier.kind == target.kind && identity(earlier) == identity(target)) {
+                *error = QStringLiteral("%1 %2: %3 is given twice; a schedule takes each target once")
+                             .arg(label(trackOption), shownValue(what), target.name());
+                return std::nullopt;
+            }
+        }
+        targets.append(target);
+    }
+    return targets;
+}
+
+bool readHorizonOption(const QCommandLineParser &parser, const OptionLabel &label,
+                       std::shared_ptr<const sky::HorizonMask> *mask, QString *error)
+{
+    const QString horizonOption = QStringLiteral("horizon");
+    mask->reset();
+    if (!parser.isSet(horizonOption))
+        return true;
+    const sky::HorizonFile read = sky::readHorizonFile(parser.value(horizonOption));
+    if (!read.mask) {
+        *error = QStringLiteral("%1: %2").arg(label(horizonOption), read.error);
+        return false;
+    }
+    *mask = read.mask;
+    return true;
+}
+
+} // namespace slew::cli

@@ -1,0 +1,130 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// `slew --schedule`: argument parsing and printing; the planning is in
+// core/schedule. The options are described in cli/.
+
+#include "slew_schedule.h"
+
+#include "cli/sharedoptions.h"
+#include "cli/slewcommandline.h"
+#include "cli/trackoptions.h"
+#include "slew_identity.h"
+#include "slew_sky.h"
+
+#include "input/finitenumber.h"
+#include "model/rotatorprofile.h"
+#include "schedule/schedule.h"
+#include "schedule/scheduletext.h"
+#include "sky/station.h"
+#include "sky/utctime.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QJsonDocument>
+
+#include <cstdio>
+#include <cstring>
+
+namespace {
+
+int fail(const QString &message)
+{
+    std::fprintf(stderr, "slew: %s\n", qPrintable(message));
+    return 2;
+}
+
+// The rotator a plan is made for: the profile's travel, speeds and
+// accelerations, as the session's gate and the tracker take them.
+slew::tracking::RotatorReach reachOfProfile(const slew::model::RotatorProfile &profile)
+{
+    slew::tracking::RotatorReach r;
+    r.limits = profile.limits;
+    r.azimuthRateDegS = profile.motion.azSpeedDegS;
+    r.elevationRateDegS = profile.motion.elSpeedDegS;
+    r.azimuthAccelDegS2 = profile.motion.azAccelDegS2;
+    r.elevationAccelDegS2 = profile.motion.elAccelDegS2;
+    return r;
+}
+
+} // namespace
+
+bool wantsSchedule(int argc, char **argv)
+{
+    for (int i = 1; i < argc; ++i)
+        if (std::strcmp(argv[i], "--schedule") == 0)
+            return true;
+    return false;
+}
+
+int runSchedule(int argc, char **argv)
+{
+    QCoreApplication app(argc, argv);
+    setUpSlewApplication();
+    checkSettingsFile(); // the saved station is read from them
+    QCommandLineParser parser;
+    slew::cli::describeTo(parser, slew::cli::slewScheduleMode());
+    parser.process(app.arguments());
+    const slew::cli::OptionLabel label = slew::cli::commandLineLabel;
+    QString error;
+
+    if (!parser.isSet(QStringLiteral("track")))
+        return fail(QStringLiteral("--schedule needs --track, once for each target, the first the highest priority"));
+    const auto targets = slew::cli::readTrackTargets(parser, label, &error);
+    if (!targets)
+        return fail(error);
+    slew::sky::Station station;
+    if (const QString problem = readSkyStation(parser, true, &station); !problem.isEmpty())
+        return fail(problem);
+
+    slew::model::RotatorProfile profile;
+    if (!slew::cli::readProfileOptions(parser, label, &profile, &error))
+        return fail(error);
+
+    slew::schedule::ScheduleSettings settings;
+    settings.startJulian = slew::sky::julianNow();
+    if (parser.isSet(QStringLiteral("start"))) {
+        const auto start = slew::sky::julianFromIso(parser.value(QStringLiteral("start")));
+        if (!start)
+            return fail(QStringLiteral("--start wants an ISO 8601 time such as 2024-06-20T12:00:00Z, not '%1'")
+                            .arg(slew::cli::shownValue(parser.value(QStringLiteral("start")))));
+        settings.startJulian = *start;
+    }
+    auto number = [&](const char *name, slew::input::NumberRange range, double *out) {
+        const QString option = QString::fromLatin1(name);
+        if (!parser.isSet(option))
+            return true;
+        QString why;
+        const auto value = slew::input::numberIn(parser.value(option), range, &why);
+        if (!value) {
+            error = QStringLiteral("%1: %2").arg(label(option), why);
+            return false;
+        }
+        *out = *value;
+        return true;
+    };
+    if (!number("hours", {0.1, 168, " hours"}, &settings.hours)
+        || !number("min-el", {-5, 90, "°"}, &settings.minElevationDeg)
+        || !number("guard", {0, 3600, " s"}, &settings.guardSeconds))
+        return fail(error);
+
+    const slew::schedule::Schedule plan =
+        slew::schedule::planSchedule(*targets, station, reachOfProfile(profile), settings);
+    if (parser.isSet(QStringLiteral("json"))) {
+        QJsonObject json = slew::schedule::scheduleToJson(plan);
+        json.insert(QStringLiteral("station"), slew::sky::describeStation(station));
+        if (station.horizon)
+            json.insert(QStringLiteral("horizon"), station.horizon->describe());
+        std::fputs(QJsonDocument(json).toJson(QJsonDocument::Indented).constData(), stdout);
+        return 0;
+    }
+    std::printf("%s\n", qPrintable(slew::sky::describeStation(station)));
+    if (station.horizon)
+        std::printf("horizon mask: %s\n", qPrintable(station.horizon->describe()));
+    for (int i = 0; i < plan.targets.size(); ++i)
+        std::printf("priority %d: %s\n", i + 1, qPrintable(plan.targets[i]));
+    for (const slew::schedule::ScheduledPass &p : plan.passes)
+        std::printf("%s\n", qPrintable(slew::schedule::describeScheduledPass(p)));
+    for (const QString &note : plan.notes)
+        std::printf("%s\n", qPrintable(note));
+    std::printf("%s\n", qPrintable(slew::schedule::describeScheduleSummary(plan)));
+    return 0;
+}
