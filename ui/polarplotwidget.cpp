@@ -1,5 +1,9 @@
 #include "polarplotwidget.h"
 
+#include "horizonpainter.h"
+
+#include "sky/horizonmask.h"
+
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPainterPath>
@@ -143,6 +147,12 @@ QPointF PolarPlotWidget::pointFor(double az, double el) const
     return centre() + QPointF(r * std::sin(a), -r * std::cos(a));
 }
 
+void PolarPlotWidget::setHorizonMask(std::shared_ptr<const sky::HorizonMask> mask)
+{
+    m_horizon = std::move(mask);
+    update();
+}
+
 std::optional<QPointF> PolarPlotWidget::azElAt(const QPointF &pos) const
 {
     const QPointF d = pos - centre();
@@ -162,6 +172,8 @@ void PolarPlotWidget::paintEvent(QPaintEvent *)
     p.setRenderHint(QPainter::Antialiasing);
     p.fillRect(rect(), kBackground);
     paintGrid(p);
+    if (m_horizon)
+        paintHorizonMask(p, *m_horizon, [this](double az, double el) { return pointFor(az, el); }, centre(), radius());
     paintTravel(p);
     if (m_pass)
         paintPassOverlay(p, *m_pass, [this](double az, double el) { return pointFor(az, el); });

@@ -1,8 +1,8 @@
 #pragma once
 // The sky as the antenna sees it: north up, azimuth clockwise, elevation 90°
 // at the centre and 0° at the rim. Shows the actual, commanded and target
-// positions, a fading trail, the azimuth end stops and overlap, and the park
-// position. A click or drag picks a target; the widget only reports it
+// positions, a fading trail, the azimuth end stops and overlap, the park
+// position, and the station's horizon mask as ground. A click or drag picks a target; the widget only reports it
 // (targetPicked) and never moves anything itself.
 
 #include "model/rotatorlimits.h"
@@ -13,9 +13,14 @@
 #include <QWidget>
 
 #include <deque>
+#include <memory>
 #include <optional>
 
 class QPainter;
+
+namespace slew::sky {
+class HorizonMask;
+}
 
 namespace slew::ui {
 
@@ -40,6 +45,9 @@ public:
     void setPassOverlay(std::optional<PassOverlay> overlay);
     void setPassTarget(std::optional<QPointF> azEl);
     const std::optional<PassOverlay> &passOverlay() const { return m_pass; }
+    // What hides the sky at the station (the place's horizon mask); none: flat.
+    void setHorizonMask(std::shared_ptr<const sky::HorizonMask> mask);
+    const std::shared_ptr<const sky::HorizonMask> &horizonMask() const { return m_horizon; }
 
     bool isStale() const { return m_stale; }
     std::optional<QPointF> actual() const { return m_actual; }
@@ -77,6 +85,7 @@ private:
     bool m_stale = true;
     std::deque<QPointF> m_trail; // az, el; oldest first
     std::optional<PassOverlay> m_pass;
+    std::shared_ptr<const sky::HorizonMask> m_horizon;
 };
 
 } // namespace slew::ui

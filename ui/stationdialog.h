@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Sky → Station…: where the antenna stands, as LAT,LON[,HEIGHT_M] or a
-// Maidenhead locator. The text is checked as it is typed (core/sky's
-// parseStation), OK stays disabled while it is wrong, and the station is
-// kept in the settings for pass prediction and tracking.
+// Maidenhead locator, and its horizon mask file (core/sky/horizonmask.h).
+// Both are checked as they are typed (the mask file read), OK stays disabled
+// while either is wrong, and both are kept in the settings for pass
+// prediction, the schedule and tracking.
 
 #include "sky/station.h"
 
@@ -23,6 +24,7 @@ public:
     // The station the settings hold; false when none has been set.
     static bool savedStation(sky::Station *out, QString *text = nullptr);
 
+    // The station typed, with the horizon mask named (if any).
     sky::Station station() const { return m_station; }
 
     void accept() override;
@@ -32,6 +34,9 @@ private:
 
     QLineEdit *m_edit = nullptr;
     QLabel *m_feedback = nullptr;
+    QLineEdit *m_horizon = nullptr;
+    QLabel *m_horizonFeedback = nullptr;
+    std::shared_ptr<const sky::HorizonMask> m_mask; // the file's, as last read
     QDialogButtonBox *m_buttons = nullptr;
     sky::Station m_station;
 };

@@ -131,6 +131,8 @@ void TrackingPanel::showStation()
 {
     const std::optional<sky::Station> place = m_station->place();
     m_stationLine->setText(place ? sky::describeStation(*place) : tr("not set: Sky → Station…"));
+    m_stationLine->setToolTip(place && place->horizon ? tr("Horizon mask: %1").arg(place->horizon->describe())
+                                                      : QString());
     showPasses();
 }
 
