@@ -14,6 +14,7 @@
 #include "positionreadout.h"
 #include "presetpanel.h"
 #include "radiopanel.h"
+#include "schedulepanel.h"
 #include "rotatormotion.h"
 #include "rotctldpanel.h"
 #include "rotorspanel.h"
@@ -135,12 +136,21 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     });
     m_tracking = new TrackingPanel(station);
     m_alignment = new AlignmentPanel(session);
-    // The Tracking tab: passes and tracking, and below them the calibration
-    // that tracking depends on.
-    auto *trackingTab = new QWidget;
-    auto *trackingLayout = new QVBoxLayout(trackingTab);
+    // The Tracking tab: one target's passes and tracking, with below them
+    // the calibration that tracking depends on; and the schedule of several
+    // targets by priority. Each a page of its own: the window's tabs already
+    // fill a 1280-pixel screen.
+    auto *oneTarget = new QWidget;
+    oneTarget->setObjectName(QStringLiteral("oneTargetPage"));
+    auto *trackingLayout = new QVBoxLayout(oneTarget);
     trackingLayout->addWidget(m_tracking, 1);
     trackingLayout->addWidget(m_alignment);
+    m_schedule = new SchedulePanel(station);
+    m_trackingTabs = new QTabWidget;
+    m_trackingTabs->setObjectName(QStringLiteral("trackingTabs"));
+    m_trackingTabs->setDocumentMode(true);
+    m_trackingTabs->addTab(oneTarget, tr("One target"));
+    m_trackingTabs->addTab(m_schedule, tr("Schedule"));
     // The radio has a tab of its own: its link, its frequencies and its
     // live lines do not fit beside the passes on a 720-pixel screen.
     m_radio = new RadioPanel(station);
@@ -148,7 +158,7 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     m_tabs = new QTabWidget;
     m_tabs->setObjectName(QStringLiteral("mainTabs"));
     m_tabs->addTab(m_charts, tr("Telemetry"));
-    m_tabs->addTab(trackingTab, tr("Tracking"));
+    m_tabs->addTab(m_trackingTabs, tr("Tracking"));
     m_tabs->addTab(m_radio, tr("Radio"));
     m_tabs->addTab(m_config, tr("Configuration"));
     m_tabs->addTab(m_traffic, tr("Traffic"));
@@ -206,6 +216,7 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     connect(m_trackers, &RotctldPanel::message, this, &MainWindow::logInfo);
     connect(m_tracking, &TrackingPanel::message, this, &MainWindow::logInfo);
     connect(m_radio, &RadioPanel::message, this, &MainWindow::logInfo);
+    connect(m_schedule, &SchedulePanel::message, this, &MainWindow::logInfo);
     connect(m_alignment, &AlignmentPanel::message, this, &MainWindow::logInfo);
     m_time = new TimeController(station, this);
     new RehearsalMarker(station->clock(), this);
@@ -218,7 +229,11 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     connect(station->radio(), &station::DopplerRadio::measured, m_recorder, &TelemetryRecorder::recordDopplerError);
     // The place the station keeps; the Tracking tab follows it by itself.
     connect(station, &station::Station::placeChanged, m_alignment, &AlignmentPanel::setStation);
-    station->restoreSavedPlace();
+    connect(station, &station::Station::placeChanged, m_plot, [this](const std::optional<sky::Station> &place) {
+        m_plot->setHorizonMask(place ? place->horizon : nullptr);
+    });
+    if (const QString problem = station->restoreSavedPlace(); !problem.isEmpty())
+        logInfo(problem);
     // Why the link failed stays at the foot of the window until the next
     // attempt, not only for the seconds a passing message lasts.
     auto *linkProblem = new QLabel;
@@ -284,6 +299,8 @@ void MainWindow::buildMenus()
             m_station->setPlace(dialog->station());
             logInfo(tr("station set to %1").arg(sky::stationLocator(dialog->station().latitudeDeg,
                                                                     dialog->station().longitudeDeg)));
+            if (dialog->station().horizon)
+                logInfo(tr("horizon mask: %1").arg(dialog->station().horizon->describe()));
         });
         dialog->open(); // window-modal, the event loop keeps running
     });
@@ -347,6 +364,17 @@ void MainWindow::openSetupWizard()
         showProfile();
     });
     wizard->open(); // window-modal, never from a timer: the event loop keeps running
+}
+
+void MainWindow::bringToFront(QWidget *page)
+{
+    // Every tab widget on the way up shows the page that holds it.
+    for (QWidget *child = page; child && child != this; child = child->parentWidget()) {
+        QWidget *stack = child->parentWidget();
+        auto *tabs = stack ? qobject_cast<QTabWidget *>(stack->parentWidget()) : nullptr;
+        if (tabs && tabs->indexOf(child) >= 0)
+            tabs->setCurrentWidget(child);
+    }
 }
 
 void MainWindow::logInfo(const QString &text)

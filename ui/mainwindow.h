@@ -36,6 +36,7 @@ class PolarPlotWidget;
 class PositionReadout;
 class PresetPanel;
 class RadioPanel;
+class SchedulePanel;
 class RotctldPanel;
 class RotorsPanel;
 class StopButton;
@@ -81,6 +82,8 @@ public:
     station::AlarmMonitor *alarmMonitor() const { return m_alarms; }
     EventLog *eventLog() const { return m_log; }
     QTabWidget *tabs() const { return m_tabs; }
+    // Shows the tab (or the page within a tab) that holds `page`.
+    void bringToFront(QWidget *page);
     bridge::RotctldServer *rotctldServer() const { return m_rotctld; }
     RotctldPanel *rotctldPanel() const { return m_trackers; }
     // The other rotors of a multi-rotor controller, and their tiles.
@@ -89,6 +92,7 @@ public:
     TrackingPanel *trackingPanel() const { return m_tracking; }
     // The station's radio: its link, the frequencies to tune, the pass's Doppler.
     RadioPanel *radioPanel() const { return m_radio; }
+    SchedulePanel *schedulePanel() const { return m_schedule; }
     AlignmentPanel *alignmentPanel() const { return m_alignment; }
     // Sky → Time controller…: the station clock, and rehearsals.
     TimeController *timeController() const { return m_time; }
@@ -147,6 +151,8 @@ private:
     RotorsPanel *m_rotorsPanel;
     TrackingPanel *m_tracking;
     RadioPanel *m_radio;
+    SchedulePanel *m_schedule;
+    QTabWidget *m_trackingTabs; // the Tracking tab: one target, the schedule
     AlignmentPanel *m_alignment;
     TimeController *m_time;
     sky::TleSources *m_elementSets;

@@ -156,7 +156,7 @@ private slots:
         // A picture of the tab, for the eye, with the target a favourite.
         QTest::mouseClick(panel->targetPicker()->favouriteButton(), Qt::LeftButton);
         QCOMPARE(panel->targetPicker()->list()->currentItem()->text(), QStringLiteral("★ FLOCK 2P-1"));
-        f.window->tabs()->setCurrentWidget(panel->parentWidget()); // the tab: tracking and calibration
+        f.window->bringToFront(panel); // the tab: tracking and calibration
         f.window->resize(1440, 900);
         f.window->show();
         QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
@@ -185,7 +185,7 @@ private slots:
         QVERIFY(overlay.has_value());
         QVERIFY(overlay->overTheTop);
 
-        f.window->tabs()->setCurrentWidget(panel->parentWidget());
+        f.window->bringToFront(panel);
         f.window->resize(1440, 900);
         f.window->show();
         QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
@@ -234,7 +234,7 @@ private slots:
         }
         QVERIFY2(widest > 20.0, qPrintable(QString::number(widest)));
 
-        f.window->tabs()->setCurrentWidget(panel->parentWidget());
+        f.window->bringToFront(panel);
         f.window->resize(1440, 900);
         f.window->show();
         QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));

@@ -49,6 +49,16 @@ QString faultsOnEveryTab(MainWindow &window)
         settle();
         for (const QString &fault : layoutFaults(&window))
             all << QStringLiteral("[%1] %2").arg(tabs->tabText(i), fault);
+        // And every page of a tab that has pages of its own (Tracking).
+        for (QTabWidget *inner : tabs->widget(i)->findChildren<QTabWidget *>()) {
+            for (int j = 0; j < inner->count(); ++j) {
+                inner->setCurrentIndex(j);
+                settle();
+                for (const QString &fault : layoutFaults(&window))
+                    all << QStringLiteral("[%1 / %2] %3").arg(tabs->tabText(i), inner->tabText(j), fault);
+            }
+            inner->setCurrentIndex(0);
+        }
     }
     all.removeDuplicates();
     return all.join(QLatin1Char('\n'));
