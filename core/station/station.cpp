@@ -3,9 +3,11 @@
 
 #include "alarmmonitor.h"
 #include "dopplerradio.h"
+#include "passrecorder.h"
 
 #include "bridge/rotctldserver.h"
 #include "radio/transpondersources.h"
+#include "records/passrecordstore.h"
 #include "session/controllerrotors.h"
 #include "session/movewatch.h"
 #include "session/rotatorsession.h"
@@ -57,6 +59,7 @@ Station::Station(const StationOptions &options, QObject *parent) : QObject(paren
     m_elementSets = std::make_unique<sky::TleSources>(sky::elementSetCacheDirectory());
     m_transponders = std::make_unique<radio::TransponderSources>(radio::transponderCacheDirectory());
     m_clock = std::make_unique<tracking::StationClock>();
+    m_records = std::make_unique<records::PassRecordStore>();
     if (m_rotors.empty())
         return;
     RotatorSession *first = session();
@@ -68,6 +71,8 @@ Station::Station(const StationOptions &options, QObject *parent) : QObject(paren
     m_pace = std::make_unique<tracking::SimulatorPace>(first, m_clock.get());
     m_runner = std::make_unique<tracking::PassRunner>(first);
     m_radio = std::make_unique<DopplerRadio>(first, m_runner.get(), m_clock.get());
+    m_recorder = std::make_unique<PassRecorder>(first, m_runner.get(), m_radio.get(), m_clock.get());
+    m_recorder->setStore(m_records.get());
     wireTracking();
 }
 
@@ -75,6 +80,7 @@ Station::~Station()
 {
     if (m_runner && m_runner->isRunning())
         m_runner->stop(tr("the station is closing"));
+    m_recorder.reset(); // it follows the radio and the runner
     m_radio.reset(); // it follows the runner, which goes next
 }
 
@@ -220,6 +226,20 @@ void Station::untrack(const QString &why)
 {
     if (m_runner)
         m_runner->stop(why);
+}
+
+QString Station::openPassRecords(const QString &path, int keepDays, bool readWhenTaken)
+{
+    const QString file = path.isEmpty() ? records::PassRecordStore::defaultPath() : path;
+    m_records->setKeepDays(keepDays);
+    QString error;
+    if (m_records->open(file, records::PassRecordStore::Access::Record, &error))
+        return {};
+    QString ignored;
+    if (readWhenTaken && m_records->takenByAnother()
+        && m_records->open(file, records::PassRecordStore::Access::Read, &ignored))
+        return tr("%1; this one shows its passes and records none").arg(error);
+    return error;
 }
 
 void Station::setPlace(const std::optional<sky::Station> &place)
