@@ -3,10 +3,12 @@
 
 #include "alarmmonitor.h"
 #include "dopplerradio.h"
+#include "passrecorder.h"
 #include "station.h"
 
 #include "bridge/rotctldserver.h"
 #include "input/logtext.h"
+#include "records/passrecordstore.h"
 #include "session/rotatorsession.h"
 #include "tracking/passrunner.h"
 
@@ -25,6 +27,10 @@ StationLog::StationLog(Station *station, std::FILE *file, QObject *parent)
         connect(runner, &tracking::PassRunner::logLine, this, [this](const QString &line) { write(tr("track: %1").arg(line)); });
     if (DopplerRadio *radio = station->radio())
         connect(radio, &DopplerRadio::logLine, this, &StationLog::write);
+    if (PassRecorder *recorder = station->passRecorder())
+        connect(recorder, &PassRecorder::logLine, this, &StationLog::write);
+    connect(station->passRecords(), &records::PassRecordStore::writeFailed, this,
+            [this](const QString &error) { write(tr("records: %1").arg(error)); });
     connect(station, &Station::exitStopSent, this, [this](int number) {
         write((number > 0 ? tr("rotor %1: ").arg(number) : QString()) + tr("rotator stopped"));
     });
