@@ -7,6 +7,7 @@
 #include "connectionbar.h"
 #include "eventlog.h"
 #include "gotopanel.h"
+#include "historypanel.h"
 #include "jogpad.h"
 #include "keyboardcontrol.h"
 #include "parkhomepanel.h"
@@ -35,6 +36,8 @@
 #include "bridge/rotctldserver.h"
 #include "station/alarmmonitor.h"
 #include "station/dopplerradio.h"
+#include "station/passrecorder.h"
+#include "records/passrecordstore.h"
 #include "station/station.h"
 #include "session/controllerrotors.h"
 #include "sky/tlesources.h"
@@ -144,6 +147,7 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     // The radio has a tab of its own: its link, its frequencies and its
     // live lines do not fit beside the passes on a 720-pixel screen.
     m_radio = new RadioPanel(station);
+    m_history = new HistoryPanel(station);
 
     m_tabs = new QTabWidget;
     m_tabs->setObjectName(QStringLiteral("mainTabs"));
@@ -154,6 +158,7 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     m_tabs->addTab(m_traffic, tr("Traffic"));
     m_tabs->addTab(m_trackers, tr("Trackers"));
     m_tabs->addTab(m_log, tr("Events"));
+    m_tabs->addTab(m_history, tr("History"));
 
     auto *plotColumn = new QWidget;
     auto *plotLayout = new QVBoxLayout(plotColumn);
@@ -207,6 +212,12 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     connect(m_tracking, &TrackingPanel::message, this, &MainWindow::logInfo);
     connect(m_radio, &RadioPanel::message, this, &MainWindow::logInfo);
     connect(m_alignment, &AlignmentPanel::message, this, &MainWindow::logInfo);
+    connect(m_history, &HistoryPanel::message, this, &MainWindow::logInfo);
+    // Each pass's record, begun and finished, in the event log.
+    if (station::PassRecorder *recorder = station->passRecorder())
+        connect(recorder, &station::PassRecorder::logLine, this, &MainWindow::logInfo);
+    connect(station->passRecords(), &records::PassRecordStore::writeFailed, this,
+            [this](const QString &error) { reportProblem(tr("pass records: %1").arg(error)); });
     m_time = new TimeController(station, this);
     new RehearsalMarker(station->clock(), this);
     connect(m_tracking, &TrackingPanel::passOverlayChanged, m_plot, &PolarPlotWidget::setPassOverlay);

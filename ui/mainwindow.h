@@ -28,6 +28,7 @@ class ConfigEditor;
 class ConnectionBar;
 class EventLog;
 class GotoPanel;
+class HistoryPanel;
 class JogPad;
 class KeyboardControl;
 class OperatorActions;
@@ -90,6 +91,8 @@ public:
     // The station's radio: its link, the frequencies to tune, the pass's Doppler.
     RadioPanel *radioPanel() const { return m_radio; }
     AlignmentPanel *alignmentPanel() const { return m_alignment; }
+    // The passes the station recorded.
+    HistoryPanel *historyPanel() const { return m_history; }
     // Sky → Time controller…: the station clock, and rehearsals.
     TimeController *timeController() const { return m_time; }
     // The element sets Slew knows, loaded from the cache at start.
@@ -148,6 +151,7 @@ private:
     TrackingPanel *m_tracking;
     RadioPanel *m_radio;
     AlignmentPanel *m_alignment;
+    HistoryPanel *m_history;
     TimeController *m_time;
     sky::TleSources *m_elementSets;
 };

@@ -46,7 +46,8 @@ void paintGrid(QPainter &p, const Sky &sky)
     for (int az = 0; az < 360; az += 30)
         p.drawLine(sky.centre, sky.at(az, 0));
     p.setPen(kLabel);
-    for (int el : {0, 30, 60})
+    // The rim is the horizon; a "0°" there sat under many a pass's AOS.
+    for (int el : {30, 60})
         p.drawText(sky.at(15, el) + QPointF(2, 14), QStringLiteral("%1°").arg(el));
     const char *cardinal[] = {"N", "E", "S", "W"};
     for (int az = 0; az < 360; az += 30) {
