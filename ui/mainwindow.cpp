@@ -157,8 +157,8 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     m_tabs->addTab(m_config, tr("Configuration"));
     m_tabs->addTab(m_traffic, tr("Traffic"));
     m_tabs->addTab(m_trackers, tr("Trackers"));
-    m_tabs->addTab(m_log, tr("Events"));
     m_tabs->addTab(m_history, tr("History"));
+    m_tabs->addTab(m_log, tr("Events"));
 
     auto *plotColumn = new QWidget;
     auto *plotLayout = new QVBoxLayout(plotColumn);
