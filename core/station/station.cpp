@@ -230,6 +230,9 @@ void Station::untrack(const QString &why)
 
 QString Station::openPassRecords(const QString &path, int keepDays, bool readWhenTaken)
 {
+    // A record under way would be finished in a file it was not begun in.
+    if (m_recorder && m_recorder->currentRecord())
+        return tr("a pass is being recorded now: open the pass records between passes");
     const QString file = path.isEmpty() ? records::PassRecordStore::defaultPath() : path;
     m_records->setKeepDays(keepDays);
     QString error;
