@@ -12,6 +12,7 @@
 
 #include <QCryptographicHash>
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QSqlDatabase>
 #include <QSqlError>
@@ -190,6 +191,34 @@ private slots:
         QVERIFY(!store.beginPass(nameless, &error));
         // A reader cannot write.
         QVERIFY(!reader.beginPass(flock()));
+    }
+
+    // What a commit costs the event loop it runs on: two seconds of a pass
+    // (four samples and the figures), in one transaction.
+    void aCommitIsQuick()
+    {
+        QTemporaryDir dir;
+        PassRecordStore store;
+        QString error;
+        QVERIFY(store.open(dir.filePath(QStringLiteral("passes.sqlite")), PassRecordStore::Access::Record, &error));
+        const qint64 id = *store.beginPass(flock());
+        PassFigures figures;
+        figures.rmsDeg = 0.1;
+        figures.worstDeg = 0.3;
+        QElapsedTimer timer;
+        timer.start();
+        constexpr int kCommits = 300; // ten minutes of a pass
+        for (int c = 0; c < kCommits; ++c) {
+            for (int s = 0; s < 4; ++s)
+                store.addSample(id, sampleAt(c * 4 + s));
+            figures.commands = c;
+            store.setFigures(id, figures);
+            QVERIFY(store.commit(&error));
+        }
+        const double ms = double(timer.nsecsElapsed()) / 1e6 / kCommits;
+        qInfo("a commit of 4 samples and the figures: %.3f ms on average over %d", ms, kCommits);
+        QVERIFY2(ms < 100, qPrintable(QString::number(ms)));
+        QCOMPARE(store.samples(id).size(), kCommits * 4);
     }
 
     void migratesAVersion1FileAndKeepsItsRows()
