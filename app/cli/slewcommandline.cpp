@@ -120,8 +120,9 @@ ProgramMode makeWindowMode()
         "configuration, live telemetry charts, the traffic log, the rotctld server and the setup and tuning "
         "wizard. Without --connect it opens the last connection, or the built-in simulator the first time. "
         "The same program runs as a station service (slew --headless --help), tunes a rotator without a "
-        "window (slew --tune URI --help), predicts passes (slew --passes SAT --help, slew --where SAT --help) and "
-        "refreshes the element sets the window uses (slew --update-elements [URL...], slew --update-elements --help).");
+        "window (slew --tune URI --help), predicts passes (slew --passes SAT --help, slew --where SAT --help), "
+        "refreshes the element sets the window uses (slew --update-elements [URL...], slew --update-elements --help), "
+        "and draws a recorded pass (slew --pass-report ID --help).");
     mode.options = {
         connectOption(QStringLiteral("Connect to URI at start: serial:/dev/ttyUSB0?baud=19200, tcp://HOST:PORT, "
                                      "rotctld://HOST:PORT or sim:?az_max=450.")),
