@@ -35,6 +35,12 @@ bool plausibleSample(const PassSample &s)
            && azimuth.contains(s.targetAzDeg) && elevation.contains(s.targetElDeg) && error.contains(s.errorDeg);
 }
 
+QString boundedText(const QString &text, int chars)
+{
+    const QString t = text.trimmed();
+    return t.size() > chars ? t.left(chars - 1) + QChar(0x2026) : t;
+}
+
 QString storedTime(const QDateTime &utc)
 {
     if (!utc.isValid())

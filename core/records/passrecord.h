@@ -72,6 +72,10 @@ struct PassSample {
 // file edited by hand, or damaged): anything else is taken as not there.
 bool plausibleSample(const PassSample &sample);
 
+// Text as it is stored and read back: trimmed, and cut to `chars` with an
+// ellipsis.
+QString boundedText(const QString &text, int chars);
+
 // "2018-01-22T09:17:51.250Z": how times are stored (sorts as text, reads
 // in any sqlite3 shell); nothing for an invalid time.
 QString storedTime(const QDateTime &utc);
