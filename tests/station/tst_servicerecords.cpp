@@ -139,8 +139,12 @@ private slots:
         Slew again({"--headless", "--connect", "sim:", "--pass-db", db()});
         QVERIFY2(again.logged(QStringLiteral("records: 1 pass left in progress by a Slew that stopped, marked interrupted")),
                  again.said());
+        // The controller's answer comes from the event loop, after the
+        // service has taken SIGTERM into its own hands.
+        QVERIFY2(again.logged(QStringLiteral("controller: ")), again.said());
         ::kill(pid_t(again.process.processId()), SIGTERM);
         QVERIFY(again.finish());
+        QCOMPARE(again.process.exitStatus(), QProcess::NormalExit);
         QCOMPARE(again.process.exitCode(), 0);
         PassRecordStore after;
         QVERIFY2(after.open(db(), PassRecordStore::Access::Read, &error), qPrintable(error));
