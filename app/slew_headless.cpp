@@ -284,6 +284,12 @@ int runHeadless(int argc, char *argv[])
         }
     }
 
+    const auto records = slew::cli::readPassRecordOptions(parser, label, &error);
+    if (!records)
+        return fail(error);
+    config.passRecords = records->path;
+    config.passKeepDays = records->keepDays;
+
     slew::station::StationService station;
     if (!station.start(config, &error))
         return fail(error);

@@ -10,6 +10,7 @@
 #include "slew_elements.h"
 #include "slew_headless.h"
 #include "slew_schedule.h"
+#include "slew_passreport.h"
 #include "slew_sky.h"
 #include "slew_tune.h"
 #include "rotctldpanel.h"
@@ -49,6 +50,7 @@ struct Arguments {
     std::optional<slew::model::RotatorProfile> profile;
     bool profileFile = false; // --profile: its link and dialect too, unless named
     slew::cli::StationClockOptions clock; // --clock-start, --clock-rate: a rehearsal
+    slew::cli::PassRecordOptions passRecords; // --pass-db, --pass-keep-days
 };
 
 // Returns an error message, or empty when the arguments are usable.
@@ -111,6 +113,10 @@ QString parse(QCommandLineParser &parser, const QStringList &argv, Arguments &ou
     if (!clock)
         return error;
     out.clock = *clock;
+    const auto records = slew::cli::readPassRecordOptions(parser, slew::cli::commandLineLabel, &error);
+    if (!records)
+        return error;
+    out.passRecords = *records;
     out.screenshot = parser.value(screenshot);
     if (parser.isSet(settle)) {
         bool ok = false;
@@ -138,6 +144,9 @@ int main(int argc, char *argv[])
     // And the schedule of several targets.
     if (wantsSchedule(argc, argv))
         return runSchedule(argc, argv);
+    // And the picture of a recorded pass.
+    if (wantsPassReport(argc, argv))
+        return runPassReport(argc, argv);
     // And refreshing the element sets into the window's cache.
     if (wantsUpdateElements(argc, argv))
         return runUpdateElements(argc, argv);
@@ -176,12 +185,18 @@ int main(int argc, char *argv[])
     // The station first: the window is a view of it, and goes first.
     slew::station::Station station;
     slew::session::RotatorSession &session = *station.session();
+    // Before the window, whose History tab shows them. A file the station
+    // service records into is shown, and this window records nothing.
+    const QString recordsProblem =
+        station.openPassRecords(args.passRecords.path, args.passRecords.keepDays, /*readWhenTaken=*/true);
     slew::ui::MainWindow window(&station);
     if (args.clock.startJulian)
         window.timeController()->rehearse(*args.clock.startJulian, args.clock.rate);
     window.show();
     if (!settingsProblem.isEmpty())
         window.reportProblem(settingsProblem);
+    if (!recordsProblem.isEmpty())
+        window.reportProblem(QStringLiteral("pass records: %1").arg(recordsProblem));
 
     QString uri = args.connectUri;
     auto dialect = args.dialect;

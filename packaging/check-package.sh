@@ -47,6 +47,7 @@ grep -qE '^Depends:.*libqt6widgets6' "$fields" || fail "Depends lacks the Qt wid
 grep -qE '^Depends:.*libqt6charts6' "$fields" || fail "Depends lacks Qt Charts"
 grep -qE '^Depends:.*libqt6serialport6' "$fields" || fail "Depends lacks Qt SerialPort"
 grep -qE '^Depends:.*libhamlib4' "$fields" || fail "Depends lacks libhamlib, which the in-process radio link uses"
+grep -qE '^Depends:.*libqt6sql6-sqlite' "$fields" || fail "Depends lacks Qt's SQLite driver, which the pass records use"
 grep -q 'License: GPL-3.0-or-later' "$fields" || fail "the description does not state the licence"
 grep -q '^License: GPL-3.0+' "$root/usr/share/doc/slew/copyright" || fail "no copyright file with the licence"
 

@@ -7,6 +7,7 @@
 #include "connectionbar.h"
 #include "eventlog.h"
 #include "gotopanel.h"
+#include "historypanel.h"
 #include "jogpad.h"
 #include "keyboardcontrol.h"
 #include "parkhomepanel.h"
@@ -36,6 +37,8 @@
 #include "bridge/rotctldserver.h"
 #include "station/alarmmonitor.h"
 #include "station/dopplerradio.h"
+#include "station/passrecorder.h"
+#include "records/passrecordstore.h"
 #include "station/station.h"
 #include "session/controllerrotors.h"
 #include "sky/tlesources.h"
@@ -137,9 +140,9 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     m_tracking = new TrackingPanel(station);
     m_alignment = new AlignmentPanel(session);
     // The Tracking tab: one target's passes and tracking, with below them
-    // the calibration that tracking depends on; and the schedule of several
-    // targets by priority. Each a page of its own: the window's tabs already
-    // fill a 1280-pixel screen.
+    // the calibration that tracking depends on; the schedule of several
+    // targets by priority; and the record of the passes followed. Each a
+    // page of its own: the window's tabs already fill a 1280-pixel screen.
     auto *oneTarget = new QWidget;
     oneTarget->setObjectName(QStringLiteral("oneTargetPage"));
     auto *trackingLayout = new QVBoxLayout(oneTarget);
@@ -151,6 +154,8 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     m_trackingTabs->setDocumentMode(true);
     m_trackingTabs->addTab(oneTarget, tr("One target"));
     m_trackingTabs->addTab(m_schedule, tr("Schedule"));
+    m_history = new HistoryPanel(station);
+    m_trackingTabs->addTab(m_history, tr("History"));
     // The radio has a tab of its own: its link, its frequencies and its
     // live lines do not fit beside the passes on a 720-pixel screen.
     m_radio = new RadioPanel(station);
@@ -218,6 +223,12 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     connect(m_radio, &RadioPanel::message, this, &MainWindow::logInfo);
     connect(m_schedule, &SchedulePanel::message, this, &MainWindow::logInfo);
     connect(m_alignment, &AlignmentPanel::message, this, &MainWindow::logInfo);
+    connect(m_history, &HistoryPanel::message, this, &MainWindow::logInfo);
+    // Each pass's record, begun and finished, in the event log.
+    if (station::PassRecorder *recorder = station->passRecorder())
+        connect(recorder, &station::PassRecorder::logLine, this, &MainWindow::logInfo);
+    connect(station->passRecords(), &records::PassRecordStore::writeFailed, this,
+            [this](const QString &error) { reportProblem(tr("pass records: %1").arg(error)); });
     m_time = new TimeController(station, this);
     new RehearsalMarker(station->clock(), this);
     connect(m_tracking, &TrackingPanel::passOverlayChanged, m_plot, &PolarPlotWidget::setPassOverlay);

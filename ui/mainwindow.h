@@ -28,6 +28,7 @@ class ConfigEditor;
 class ConnectionBar;
 class EventLog;
 class GotoPanel;
+class HistoryPanel;
 class JogPad;
 class KeyboardControl;
 class OperatorActions;
@@ -94,6 +95,8 @@ public:
     RadioPanel *radioPanel() const { return m_radio; }
     SchedulePanel *schedulePanel() const { return m_schedule; }
     AlignmentPanel *alignmentPanel() const { return m_alignment; }
+    // The passes the station recorded.
+    HistoryPanel *historyPanel() const { return m_history; }
     // Sky → Time controller…: the station clock, and rehearsals.
     TimeController *timeController() const { return m_time; }
     // The element sets Slew knows, loaded from the cache at start.
@@ -154,6 +157,7 @@ private:
     SchedulePanel *m_schedule;
     QTabWidget *m_trackingTabs; // the Tracking tab: one target, the schedule
     AlignmentPanel *m_alignment;
+    HistoryPanel *m_history;
     TimeController *m_time;
     sky::TleSources *m_elementSets;
 };

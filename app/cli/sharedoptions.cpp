@@ -4,6 +4,7 @@
 #include "station/serviceconfig.h"
 #include "input/finitenumber.h"
 #include "input/logtext.h"
+#include "records/passrecordstore.h"
 #include "sky/utctime.h"
 #include "tracking/stationclock.h"
 
@@ -71,6 +72,31 @@ std::optional<StationClockOptions> readStationClockOptions(const QCommandLinePar
         clock.rate = *value;
     }
     return clock;
+}
+
+std::optional<PassRecordOptions> readPassRecordOptions(const QCommandLineParser &parser, const OptionLabel &label,
+                                                       QString *error)
+{
+    const QString db = QStringLiteral("pass-db"), keep = QStringLiteral("pass-keep-days");
+    PassRecordOptions options;
+    options.keepDays = records::PassRecordStore::kDefaultKeepDays;
+    if (parser.isSet(db)) {
+        options.path = parser.value(db).trimmed();
+        if (options.path.isEmpty()) {
+            *error = QStringLiteral("%1: name a file").arg(label(db));
+            return std::nullopt;
+        }
+    }
+    if (parser.isSet(keep)) {
+        QString why;
+        const auto days = input::wholeNumberIn(parser.value(keep), 1, records::PassRecordStore::kMaxKeepDays, &why);
+        if (!days) {
+            *error = QStringLiteral("%1: %2 (days, 1 to %3)").arg(label(keep), why).arg(records::PassRecordStore::kMaxKeepDays);
+            return std::nullopt;
+        }
+        options.keepDays = *days;
+    }
+    return options;
 }
 
 } // namespace slew::cli

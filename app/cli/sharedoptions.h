@@ -43,4 +43,15 @@ struct StationClockOptions {
 std::optional<StationClockOptions> readStationClockOptions(const QCommandLineParser &parser,
                                                            const OptionLabel &label, QString *error);
 
+// Where passes are recorded (--pass-db FILE; empty: the default file) and
+// how long their samples are kept (--pass-keep-days N).
+struct PassRecordOptions {
+    QString path;
+    int keepDays = 90; // records::PassRecordStore::kDefaultKeepDays
+};
+
+// --pass-db and --pass-keep-days, each only when given.
+std::optional<PassRecordOptions> readPassRecordOptions(const QCommandLineParser &parser, const OptionLabel &label,
+                                                       QString *error);
+
 } // namespace slew::cli

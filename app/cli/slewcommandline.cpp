@@ -12,6 +12,7 @@
 #include "sky/tlesources.h"
 #include "radio/transponderimport.h"
 #include "radio/transpondersources.h"
+#include "records/passrecordstore.h"
 #include "tracking/stationclock.h"
 
 #include <QCommandLineParser>
@@ -100,6 +101,23 @@ ProgramOption rotctldMaxClientsOption()
             true};
 }
 
+// Where passes are recorded, for the window, the service and the report.
+ProgramOption passDbOption(const QString &description, bool inConfigFile = false)
+{
+    return {{QStringLiteral("pass-db")}, QStringLiteral("file"), description, inConfigFile};
+}
+
+ProgramOption passKeepDaysOption(bool inConfigFile = false)
+{
+    return {{QStringLiteral("pass-keep-days")},
+            QStringLiteral("days"),
+            QStringLiteral("How long the recorded passes' samples (the antenna's path, for the picture) are kept, 1 "
+                           "to %1 days (default %2); the passes' figures stay.")
+                .arg(records::PassRecordStore::kMaxKeepDays)
+                .arg(records::PassRecordStore::kDefaultKeepDays),
+            inConfigFile};
+}
+
 ProgramMode makeWindowMode()
 {
     ProgramMode mode;
@@ -112,8 +130,9 @@ ProgramMode makeWindowMode()
         "configuration, live telemetry charts, the traffic log, the rotctld server and the setup and tuning "
         "wizard. Without --connect it opens the last connection, or the built-in simulator the first time. "
         "The same program runs as a station service (slew --headless --help), tunes a rotator without a "
-        "window (slew --tune URI --help), predicts passes (slew --passes SAT --help, slew --where SAT --help) and "
-        "refreshes the element sets the window uses (slew --update-elements [URL...], slew --update-elements --help).");
+        "window (slew --tune URI --help), predicts passes (slew --passes SAT --help, slew --where SAT --help), "
+        "refreshes the element sets the window uses (slew --update-elements [URL...], slew --update-elements --help), "
+        "and draws a recorded pass (slew --pass-report ID --help).");
     mode.options = {
         connectOption(QStringLiteral("Connect to URI at start: serial:/dev/ttyUSB0?baud=19200, tcp://HOST:PORT, "
                                      "rotctld://HOST:PORT or sim:?az_max=450.")),
@@ -131,6 +150,11 @@ ProgramMode makeWindowMode()
                                        "so the antenna keeps up with the plan.")),
         stationOption(QStringLiteral("Set the station (as Sky, Station does, and kept): LAT,LON or LAT,LON,HEIGHT_M, "
                                      "or a Maidenhead locator of 4, 6 or 8 characters (JO65hq).")),
+        passDbOption(QStringLiteral("Record every tracked pass in this SQLite file, and show it in the History tab "
+                                    "(default: passes.sqlite in the data directory, ~/.local/share/Slew/slew/). "
+                                    "When the station service records into it, the window shows it and records "
+                                    "nothing.")),
+        passKeepDaysOption(),
         {{QStringLiteral("screenshot")},
          QStringLiteral("FILE.png"),
          QStringLiteral("Render the window to a PNG after the settle time, then exit. Needs no display.")},
@@ -162,7 +186,8 @@ ProgramMode makeHeadlessMode()
          QStringLiteral("Read settings from FILE, one `name = value` a line, where name is one of connect, dialect, "
                         "profile, limits, rotctld-listen, rotctld-allow, rotctld-max-clients, rotors, qth, horizon, tle, track (a line a target), min-el, guard, and the radio's "
                         "radio, downlink, uplink, downlink-mode, uplink-mode, doppler, uplink-follows, downlink-offset, "
-                        "uplink-offset, transponders, transponder, transponder-invert, radio-restore, radio-vfos. Options on the "
+                        "uplink-offset, transponders, transponder, transponder-invert, radio-restore, radio-vfos, and pass-db, "
+                        "pass-keep-days. Options on the "
                         "command line win over the file.")},
         connectOption(QStringLiteral("The rotator's link URI (default sim:, the built-in simulator).")),
         dialectOption(),
@@ -283,6 +308,33 @@ ProgramMode makeHeadlessMode()
                                      "metres above the WGS-84 ellipsoid), or a Maidenhead locator of 4, 6 or 8 "
                                      "characters (JO65hq). Checked at start and logged."),
                       true),
+        passDbOption(QStringLiteral("Record every tracked pass in this SQLite file: its times, the pointing and "
+                                    "Doppler figures, how it ended, and the antenna's path, committed every 2 s "
+                                    "(default: passes.sqlite in the service user's data directory, "
+                                    "~/.local/share/Slew/slew/). A file named here that cannot be used stops the "
+                                    "service at start; the default one is skipped with a log line."),
+                     true),
+        passKeepDaysOption(true),
+    };
+    return mode;
+}
+
+ProgramMode makePassReportMode()
+{
+    ProgramMode mode;
+    mode.title = QStringLiteral("The picture of a recorded pass");
+    mode.synopsis = QStringLiteral("slew --pass-report ID --out FILE.png [--pass-db FILE]");
+    mode.description = QStringLiteral(
+        "Draws a pass that the station recorded: the target's track across the sky and the antenna's path on a "
+        "polar plot (north up, azimuth clockwise, the horizon at the rim), the pointing error against minutes "
+        "from AOS with AOS, TCA and LOS marked, and the pass's figures. Needs no display. ID is the pass's "
+        "number, as the window's History tab lists it. Nothing is written for a pass that is not recorded or "
+        "whose samples are gone.");
+    mode.options = {
+        {{QStringLiteral("pass-report")}, QStringLiteral("id"), QStringLiteral("The recorded pass to draw.")},
+        {{QStringLiteral("out")}, QStringLiteral("file"), QStringLiteral("The PNG to write.")},
+        passDbOption(QStringLiteral("The pass records to read (default: passes.sqlite in the data directory). "
+                                    "Read only: a file the station service records into can be read meanwhile.")),
     };
     return mode;
 }
@@ -536,7 +588,8 @@ const ProgramDescription &slewProgram()
             "rotator is attached. Every move, from the operator, a tracker, a preset or a raw command, is checked "
             "against the rotator's limits before a byte is sent.");
         p.modes = {makeWindowMode(), makeHeadlessMode(), makeTuneMode(), makePassesMode(), makeWhereMode(),
-                   makeUpdateElementsMode(), makeUpdateTranspondersMode(), makeScheduleMode()};
+                   makeUpdateElementsMode(), makeUpdateTranspondersMode(), makeScheduleMode(),
+                   makePassReportMode()};
         p.sections = {
             {QStringLiteral("Links"),
              QStringLiteral("A link is named by a URI, the same on the command line, in the window and in profiles:\n"
@@ -573,15 +626,21 @@ const ProgramDescription &slewProgram()
                             "The last good copy of each element-set source, shared by the window and "
                             "slew --update-elements.\n"
                             "\n"
+                            "  ~/.local/share/Slew/slew/passes.sqlite\n"
+                            "\n"
+                            "The record of every tracked pass (SQLite), unless --pass-db names another; the station "
+                            "service's is under its state directory, /var/lib/slew-station/NAME/.\n"
+                            "\n"
                             "  rotator.json\n"
                             "\n"
                             "A rotator profile, wherever the window's Configuration tab exports it (Export profile) "
                             "and --profile reads it from: the link, dialect, limits, overlap and park.")},
             {QStringLiteral("Exit status"),
              QStringLiteral("0 when Slew ends normally, 1 when a tuning run fails or is cancelled, --passes or "
-                            "--where finds no satellite to answer for, or --update-elements could not refresh a "
-                            "source (each is named), 2 for a bad option, a bad config file, a server that cannot "
-                            "listen or --update-elements with no sources.")},
+                            "--where finds no satellite to answer for, --update-elements could not refresh a "
+                            "source (each is named), or --pass-report finds no such pass or no samples of it, 2 for "
+                            "a bad option, a bad config file, a server that cannot listen, --update-elements with no "
+                            "sources, or pass records that cannot be read.")},
             {QStringLiteral("Examples"),
              QStringLiteral("  slew --connect serial:/dev/ttyUSB0?baud=9600 --dialect easycomm2\n"
                             "  slew --headless --connect tcp://192.0.2.10:4533 --rotctld-listen 127.0.0.1:4533\n"
@@ -590,7 +649,8 @@ const ProgramDescription &slewProgram()
                             "  slew --passes \"ISS (ZARYA)\" --qth JO65hq --tle amateur.txt --hours 48\n"
                             "  slew --where moon --qth 55.69,12.63,20\n"
                             "  slew --connect sim: --qth JO65hq --clock-start 2026-11-25T12:00:00Z --clock-rate 5\n"
-                            "  slew --update-elements 'https://celestrak.org/NORAD/elements/gp.php?GROUP=amateur&FORMAT=tle'")},
+                            "  slew --update-elements 'https://celestrak.org/NORAD/elements/gp.php?GROUP=amateur&FORMAT=tle'\n"
+                            "  slew --pass-report 12 --out pass-12.png")},
             {QStringLiteral("See also"), QStringLiteral("slew-sim(1), ") + seeAlso()},
         };
         return p;
@@ -636,6 +696,11 @@ const ProgramMode &slewUpdateTranspondersMode()
 const ProgramMode &slewScheduleMode()
 {
     return slewProgram().modes.at(7);
+}
+
+const ProgramMode &slewPassReportMode()
+{
+    return slewProgram().modes.at(8);
 }
 
 const ProgramDescription &slewSimProgram()

@@ -19,6 +19,7 @@ const ProgramMode &slewWhereMode();
 const ProgramMode &slewUpdateElementsMode();
 const ProgramMode &slewUpdateTranspondersMode();
 const ProgramMode &slewScheduleMode();
+const ProgramMode &slewPassReportMode();
 
 // slew-sim: the simulated rotator as a server.
 const ProgramDescription &slewSimProgram();

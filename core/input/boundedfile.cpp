@@ -53,34 +53,44 @@ QString byteSizeText(qint64 bytes)
     return QStringLiteral("%1 bytes").arg(bytes);
 }
 
-BoundedRead readBoundedFile(const QString &path, qint64 maxBytes)
+// Opens `path` for reading without blocking on a FIFO, and checks that what
+// was opened (not the name, which could be swapped meanwhile) is a regular
+// file. On failure, result->error says why and the descriptor is closed.
+static bool openRegularFile(const QString &path, Descriptor &file, struct stat &info, BoundedRead *result)
 {
-    BoundedRead result;
     if (path.isEmpty()) {
-        result.error = QStringLiteral("no file named");
-        return result;
+        result->error = QStringLiteral("no file named");
+        return false;
     }
     // O_NONBLOCK: opening a FIFO with no writer returns at once instead of
     // waiting for one. O_NOCTTY: a terminal named by mistake does not become
     // the controlling one.
-    Descriptor file;
     const QByteArray name = QFile::encodeName(path);
     do {
         file.fd = ::open(name.constData(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
     } while (file.fd < 0 && errno == EINTR);
     if (file.fd < 0) {
-        result.error = QStringLiteral("%1: %2").arg(path, systemError(errno));
-        return result;
+        result->error = QStringLiteral("%1: %2").arg(path, systemError(errno));
+        return false;
     }
-    struct stat info {};
     if (::fstat(file.fd, &info) != 0) {
-        result.error = QStringLiteral("%1: %2").arg(path, systemError(errno));
-        return result;
+        result->error = QStringLiteral("%1: %2").arg(path, systemError(errno));
+        return false;
     }
     if (!S_ISREG(info.st_mode)) {
-        result.error = QStringLiteral("%1 is %2, not a file; name a regular file").arg(path, kindOf(info.st_mode));
-        return result;
+        result->error = QStringLiteral("%1 is %2, not a file; name a regular file").arg(path, kindOf(info.st_mode));
+        return false;
     }
+    return true;
+}
+
+BoundedRead readBoundedFile(const QString &path, qint64 maxBytes)
+{
+    BoundedRead result;
+    Descriptor file;
+    struct stat info {};
+    if (!openRegularFile(path, file, info, &result))
+        return result;
     const auto tooBig = [&] {
         return QStringLiteral("%1 is over the %2 limit for this file").arg(path, byteSizeText(maxBytes));
     };
@@ -111,6 +121,32 @@ BoundedRead readBoundedFile(const QString &path, qint64 maxBytes)
         }
     }
     result.bytes = bytes;
+    return result;
+}
+
+BoundedRead readFileHead(const QString &path, qint64 bytes)
+{
+    BoundedRead result;
+    Descriptor file;
+    struct stat info {};
+    if (!openRegularFile(path, file, info, &result))
+        return result;
+    QByteArray head(qsizetype(std::max<qint64>(bytes, 0)), '\0');
+    qsizetype got = 0;
+    while (got < head.size()) {
+        const ssize_t n = ::read(file.fd, head.data() + got, size_t(head.size() - got));
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n < 0) {
+            result.error = QStringLiteral("%1: %2").arg(path, systemError(errno));
+            return result;
+        }
+        if (n == 0)
+            break;
+        got += qsizetype(n);
+    }
+    head.truncate(got);
+    result.bytes = head;
     return result;
 }
 

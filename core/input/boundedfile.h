@@ -27,6 +27,11 @@ struct BoundedRead {
 // character device, not a file", "is over the 1 MiB limit ...").
 BoundedRead readBoundedFile(const QString &path, qint64 maxBytes);
 
+// The first `bytes` bytes of the regular file at `path` (fewer when the
+// file is shorter), opened the same careful way: for a file too large to
+// read whole whose kind is told by its first bytes (an SQLite database).
+BoundedRead readFileHead(const QString &path, qint64 bytes);
+
 // "64 KiB", "16 MiB": a cap as README and the messages state it.
 QString byteSizeText(qint64 bytes);
 

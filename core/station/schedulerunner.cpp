@@ -131,6 +131,14 @@ void ScheduleRunner::setTargets(const QList<tracking::TrackTarget> &targets)
     plan(tr("the targets changed"));
 }
 
+std::optional<tracking::TrackTarget> ScheduleRunner::targetNamed(const QString &name) const
+{
+    for (const tracking::TrackTarget &t : m_targets)
+        if (t.name() == name)
+            return t;
+    return std::nullopt;
+}
+
 void ScheduleRunner::updateElements(const QList<sky::Tle> &sets)
 {
     bool changed = false;

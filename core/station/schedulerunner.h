@@ -67,6 +67,8 @@ public:
     // A new list (an added target, a new order): planned again at once.
     void setTargets(const QList<tracking::TrackTarget> &targets);
     const QList<tracking::TrackTarget> &targets() const { return m_targets; }
+    // The target of that name in the list, if it is still there.
+    std::optional<tracking::TrackTarget> targetNamed(const QString &name) const;
     // Refreshed element sets: each satellite target takes its newest set
     // (by catalogue number), and the schedule is planned again.
     void updateElements(const QList<sky::Tle> &sets);

@@ -47,6 +47,11 @@ struct ServiceConfig {
     // --radio and what goes with it: the radio tuned for Doppler while the
     // tracked satellite is up. Needs a satellite's --track.
     std::optional<RadioOptions> radio;
+    // --pass-db: where every tracked pass is recorded. Empty: the default
+    // file (records/passrecordstore.h), skipped with a log line when it
+    // cannot be used; a file named here that cannot be used stops the start.
+    QString passRecords;
+    int passKeepDays = 90; // --pass-keep-days
 };
 
 // "AZMIN:AZMAX,ELMIN:ELMAX" (`--limits 0:450,0:180`) as limits, checked;

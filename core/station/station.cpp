@@ -4,9 +4,11 @@
 #include "alarmmonitor.h"
 #include "dopplerradio.h"
 #include "schedulerunner.h"
+#include "passrecorder.h"
 
 #include "bridge/rotctldserver.h"
 #include "radio/transpondersources.h"
+#include "records/passrecordstore.h"
 #include "session/controllerrotors.h"
 #include "session/movewatch.h"
 #include "session/rotatorsession.h"
@@ -58,6 +60,7 @@ Station::Station(const StationOptions &options, QObject *parent) : QObject(paren
     m_elementSets = std::make_unique<sky::TleSources>(sky::elementSetCacheDirectory());
     m_transponders = std::make_unique<radio::TransponderSources>(radio::transponderCacheDirectory());
     m_clock = std::make_unique<tracking::StationClock>();
+    m_records = std::make_unique<records::PassRecordStore>();
     if (m_rotors.empty())
         return;
     RotatorSession *first = session();
@@ -73,6 +76,13 @@ Station::Station(const StationOptions &options, QObject *parent) : QObject(paren
     // New elements make a new plan (the schedule takes each target's newest).
     connect(m_elementSets.get(), &sky::TleSources::setsChanged, m_schedule.get(),
             [this] { m_schedule->updateElements(m_elementSets->sets()); });
+    m_recorder = std::make_unique<PassRecorder>(first, m_runner.get(), m_radio.get(), m_clock.get());
+    m_recorder->setStore(m_records.get());
+    // A pass the schedule left out is in the record too, with why.
+    connect(m_schedule.get(), &ScheduleRunner::passDropped, m_recorder.get(), [this](const schedule::ScheduledPass &p) {
+        if (const std::optional<tracking::TrackTarget> target = m_schedule->targetNamed(p.target))
+            m_recorder->recordDropped(*target, p.pass, p.why);
+    });
     wireTracking();
 }
 
@@ -82,6 +92,7 @@ Station::~Station()
         m_schedule->stop(tr("the station is closing"));
     if (m_runner && m_runner->isRunning())
         m_runner->stop(tr("the station is closing"));
+    m_recorder.reset(); // it follows the radio and the runner
     m_radio.reset(); // it follows the runner, which goes next
 }
 
@@ -250,6 +261,23 @@ void Station::untrack(const QString &why)
         m_schedule->stop(why);
     if (m_runner)
         m_runner->stop(why);
+}
+
+QString Station::openPassRecords(const QString &path, int keepDays, bool readWhenTaken)
+{
+    // A record under way would be finished in a file it was not begun in.
+    if (m_recorder && m_recorder->currentRecord())
+        return tr("a pass is being recorded now: open the pass records between passes");
+    const QString file = path.isEmpty() ? records::PassRecordStore::defaultPath() : path;
+    m_records->setKeepDays(keepDays);
+    QString error;
+    if (m_records->open(file, records::PassRecordStore::Access::Record, &error))
+        return {};
+    QString ignored;
+    if (readWhenTaken && m_records->takenByAnother()
+        && m_records->open(file, records::PassRecordStore::Access::Read, &ignored))
+        return tr("%1; this one shows its passes and records none").arg(error);
+    return error;
 }
 
 void Station::setPlace(const std::optional<sky::Station> &place)

@@ -20,6 +20,8 @@
 //     frequencies during a pass (dopplerradio.h);
 //   - the schedule of several targets by priority (schedulerunner.h), on
 //     the same pass runner, planned again when the element sets change;
+//   - the record of every pass it tracks (passrecorder.h), in the pass
+//     records a face opens (openPassRecords);
 //   - stopping every rotor, and letting the stops leave the link, before exit.
 //
 // Its intent (connect, go to, stop, park, home, track, hand control back,
@@ -56,6 +58,9 @@ class TleSources;
 namespace slew::radio {
 class TransponderSources;
 }
+namespace slew::records {
+class PassRecordStore;
+}
 namespace slew::tracking {
 class PassRunner;
 class SimulatorPace;
@@ -69,6 +74,7 @@ class AlarmMonitor;
 class DopplerRadio;
 class ScheduleRunner;
 struct ScheduleOptions;
+class PassRecorder;
 
 struct StationOptions {
     // The rotors of a multi-rotor controller to serve, each with a session,
@@ -125,6 +131,11 @@ public:
     // Several targets by priority, pass after pass (schedulerunner.h); null
     // for a station with no rotor.
     ScheduleRunner *scheduleRunner() const { return m_schedule.get(); }
+    // The pass records: always there, open once a face has opened them
+    // (openPassRecords), and the recorder that writes every tracked pass
+    // into them (null for a station with no rotor).
+    records::PassRecordStore *passRecords() const { return m_records.get(); }
+    PassRecorder *passRecorder() const { return m_recorder.get(); }
 
     // --- Intent -------------------------------------------------------------
     // Opens every rotor's link (rotorUri()).
@@ -151,6 +162,13 @@ public:
     // Who steers the first rotor from outside now ("remote tracker
     // 127.0.0.1:5533"), or empty.
     QString otherSteering() const;
+
+    // Opens the pass records at `path` to record every pass tracked from
+    // now on, keeping samples `keepDays` days. Empty when it records, else
+    // why not, naming the file (nothing is recorded then). With
+    // `readWhenTaken`, a file another Slew records into is opened to read
+    // only (the window's History shows it), and the message says so.
+    QString openPassRecords(const QString &path, int keepDays, bool readWhenTaken = false);
 
     // Where the antenna stands; nothing until set.
     std::optional<sky::Station> place() const { return m_place; }
@@ -199,6 +217,8 @@ private:
     std::unique_ptr<tracking::PassRunner> m_runner;
     std::unique_ptr<DopplerRadio> m_radio; // after the runner and clock it follows
     std::unique_ptr<ScheduleRunner> m_schedule; // after the runner it drives
+    std::unique_ptr<records::PassRecordStore> m_records;
+    std::unique_ptr<PassRecorder> m_recorder; // after the store it writes to and the parts it follows
     std::optional<sky::Station> m_place;
     bool m_shuttingDown = false;
     int m_stillStopping = 0;

@@ -4,10 +4,12 @@
 #include "alarmmonitor.h"
 #include "dopplerradio.h"
 #include "schedulerunner.h"
+#include "passrecorder.h"
 #include "station.h"
 
 #include "bridge/rotctldserver.h"
 #include "input/logtext.h"
+#include "records/passrecordstore.h"
 #include "session/rotatorsession.h"
 #include "tracking/passrunner.h"
 
@@ -29,6 +31,10 @@ StationLog::StationLog(Station *station, std::FILE *file, QObject *parent)
     if (ScheduleRunner *schedule = station->scheduleRunner())
         connect(schedule, &ScheduleRunner::logLine, this, &StationLog::write); // its lines say "schedule:"
 
+    if (PassRecorder *recorder = station->passRecorder())
+        connect(recorder, &PassRecorder::logLine, this, &StationLog::write);
+    connect(station->passRecords(), &records::PassRecordStore::writeFailed, this,
+            [this](const QString &error) { write(tr("records: %1").arg(error)); });
     connect(station, &Station::exitStopSent, this, [this](int number) {
         write((number > 0 ? tr("rotor %1: ").arg(number) : QString()) + tr("rotator stopped"));
     });

@@ -9,6 +9,8 @@
 #include "bridge/rotctldserver.h"
 #include "radio/transpondersources.h"
 #include "protocol/dialect.h"
+#include "records/passrecordschema.h"
+#include "records/passrecordstore.h"
 #include "session/rotatorsession.h"
 #include "tracking/passrunner.h"
 #include "tracking/stationclock.h"
@@ -84,6 +86,8 @@ bool StationService::start(const ServiceConfig &config, QString *error)
     }
     m_log = std::make_unique<StationLog>(m_station.get(), m_logFile);
     connect(m_station.get(), &Station::shutDown, this, &StationService::finished);
+    if (!openPassRecords(config, error))
+        return false;
     if (config.station) {
         m_log->write(tr("station: %1").arg(sky::describeStation(*config.station)));
         if (config.station->horizon)
@@ -169,6 +173,40 @@ bool StationService::startRadio(const ServiceConfig &config, QString *error)
     radio->setPlan(plan);
     m_log->write(tr("radio: connecting to %1").arg(radio->linkUri()));
     radio->connectRadio();
+    return true;
+}
+
+bool StationService::openPassRecords(const ServiceConfig &config, QString *error)
+{
+    if (const QString problem = m_station->openPassRecords(config.passRecords, config.passKeepDays);
+        !problem.isEmpty()) {
+        // A file the operator named is a setting; the default one is not
+        // worth a station that does not track.
+        if (!config.passRecords.isEmpty()) {
+            *error = tr("pass records: %1").arg(problem);
+            return false;
+        }
+        m_log->write(tr("records: %1; passes are not recorded").arg(problem));
+        return true;
+    }
+    const records::PassRecordStore *store = m_station->passRecords();
+    const records::PassRecordStore::OpenNotes &notes = store->openNotes();
+    m_log->write(tr("records: passes recorded in %1%2 (samples kept %3 days)")
+                     .arg(store->path(), notes.created ? tr(", a new file") : QString())
+                     .arg(store->keepDays()));
+    if (notes.migratedFrom > 0)
+        m_log->write(tr("records: %1 brought from schema version %2 to %3")
+                         .arg(store->path())
+                         .arg(notes.migratedFrom)
+                         .arg(records::schema::kCurrentVersion));
+    auto passes = [](int n) { return n == 1 ? tr("1 pass") : tr("%1 passes").arg(n); };
+    if (notes.interrupted > 0)
+        m_log->write(tr("records: %1 left in progress by a Slew that stopped, marked interrupted")
+                         .arg(passes(notes.interrupted)));
+    if (notes.prunedPasses > 0)
+        m_log->write(tr("records: the samples of %1 recorded over %2 days ago removed")
+                         .arg(passes(notes.prunedPasses))
+                         .arg(store->keepDays()));
     return true;
 }
 

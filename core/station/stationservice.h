@@ -59,6 +59,7 @@ signals:
 private:
     bool listen(int index, const ServiceConfig &config, quint16 port, QString *error);
     bool startRadio(const ServiceConfig &config, QString *error);
+    bool openPassRecords(const ServiceConfig &config, QString *error);
 
     std::FILE *m_logFile;
     std::unique_ptr<Station> m_station;

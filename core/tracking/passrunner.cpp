@@ -238,6 +238,7 @@ void PassRunner::onPlanned(const std::optional<PlannedPass> &next, const Rotator
     // A fixed target's next stretch follows at once: nothing to park between.
     settings.afterPass = m_target.isFixed() ? TrackerSettings::AfterPass::Stay : m_afterPass;
     m_tracker.setSettings(settings);
+    m_pass = pass;
     if (!m_tracker.track(next->points, next->plan, next->fromJulian, reach, [clock] { return clock->nowJulian(); })) {
         if (m_one) {
             endOne(OneEnd::NotFound, tr("cannot track this pass: %1").arg(m_tracker.error()));

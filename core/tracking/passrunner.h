@@ -68,6 +68,9 @@ public:
     const TrackTarget &target() const { return m_target; }
     const sky::Station &station() const { return m_station; }
     int passesDone() const { return m_passesDone; }
+    // The pass handed to the tracker last (its AOS, TCA and LOS as
+    // predicted), so what is recorded of it has its times; none before.
+    const std::optional<sky::Pass> &pass() const { return m_pass; }
 
     // How one pass of startOne() ended.
     enum class OneEnd {
@@ -98,6 +101,7 @@ private:
     Tracker m_tracker;
     TrackTarget m_target;
     std::optional<TargetSky> m_sky;
+    std::optional<sky::Pass> m_pass;
     sky::Station m_station;
     double m_minElevation = 0;
     TrackerSettings::AfterPass m_afterPass = TrackerSettings::AfterPass::Park;

@@ -7,7 +7,7 @@
 # `make_shared<T>`, or a variable `T name;` / `T name(...)` / `T name{...}`,
 # or that calls a factory of one (a radio link from its URI).
 # slewctl is one conversation with one controller, or one radio, and keeps
-# its bare session or radio link.
+# its bare session or radio link; slew --pass-report reads a records file.
 #
 #   cmake -DROOT=path/to/source -P check-construction.cmake
 
@@ -15,11 +15,15 @@ cmake_minimum_required(VERSION 3.25)
 
 set(parts RotatorSession RotctldServer PassRunner Tracker AlarmMonitor TleSources ControllerRotors
           SharedLine StationClock SimulatorPace MoveWatch ConsoleRunner TransponderSources
-          DopplerRadio DopplerSteering RadioLink RigctldRadioLink HamlibRadioLink ControllerRadioLink)
+          DopplerRadio DopplerSteering RadioLink RigctldRadioLink HamlibRadioLink ControllerRadioLink
+          PassRecordStore PassRecorder)
 # Functions that make a part; the part each makes.
 set(factories "makeRadioLink=RadioLink")
 # file (relative to ROOT) = the parts it may make
 set(allowed_app/slewctl_main.cpp "RotatorSession;ConsoleRunner;RadioLink")
+# slew --pass-report reads the pass records, as slewctl reads a controller:
+# no station, only the file, opened to read.
+set(allowed_app/slew_passreport.cpp "PassRecordStore")
 
 file(GLOB_RECURSE files RELATIVE ${ROOT} ${ROOT}/ui/*.h ${ROOT}/ui/*.cpp ${ROOT}/app/*.h ${ROOT}/app/*.cpp)
 set(faults "")

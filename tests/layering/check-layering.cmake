@@ -24,10 +24,12 @@ set(allowed_console "radio;session;tuning;model;protocol;transport;input")
 set(allowed_tracking "session;model;protocol;transport;sky;input")
 # radio: links to the radio and the Doppler steering, beside the tracker.
 set(allowed_radio "tracking;session;sky;model;protocol;transport;input")
+# records: the pass records' database; made of values the station hands it.
+set(allowed_records "input")
 # station: one ground station's parts and their rules; the faces (ui, app) sit on it.
 set(allowed_schedule "tracking;sky;model;input")
-set(allowed_station "schedule;radio;bridge;tracking;session;sky;model;protocol;transport;input")
-set(areas input protocol transport sky model session sim tuning bridge console tracking radio schedule station)
+set(allowed_station "schedule;records;radio;bridge;tracking;session;sky;model;protocol;transport;input")
+set(areas input protocol transport sky model session sim tuning bridge console tracking radio records schedule station)
 
 file(GLOB_RECURSE files RELATIVE ${CORE} ${CORE}/*.h ${CORE}/*.cpp)
 set(faults "")

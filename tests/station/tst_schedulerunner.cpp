@@ -14,12 +14,14 @@
 #include "sky/station.h"
 #include "sky/tle.h"
 #include "sky/utctime.h"
+#include "records/passrecordstore.h"
 #include "station/schedulerunner.h"
 #include "station/station.h"
 #include "tracking/passrunner.h"
 #include "tracking/stationclock.h"
 
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QTest>
 
 using slew::schedule::DropReason;
@@ -77,6 +79,9 @@ private slots:
                           envisat = satellite("ENVISAT");
         QVERIFY(flock.elements.catalogueNumber && perseus.elements.catalogueNumber
                 && envisat.elements.catalogueNumber);
+        // The station's record of its passes, in a file of the test's.
+        QTemporaryDir dir;
+        QCOMPARE(station.openPassRecords(dir.filePath(QStringLiteral("passes.sqlite")), 90), QString());
         ScheduleRunner *runner = station.scheduleRunner();
         QSignalSpy lines(runner, &ScheduleRunner::logLine);
         QSignalSpy dropped(runner, &ScheduleRunner::passDropped);
@@ -108,6 +113,13 @@ private slots:
         // ENVISAT's pass began before the plan was made: said at once.
         QTRY_VERIFY(!dropped.isEmpty());
         QCOMPARE(dropped.first().at(0).value<ScheduledPass>().target, envisat.name());
+        // ...and recorded as dropped, with why.
+        const QList<slew::records::PassRecord> recorded = station.passRecords()->passes(envisat.name());
+        QCOMPARE(recorded.size(), 1);
+        QCOMPARE(recorded.first().outcome, slew::records::Outcome::Dropped);
+        QVERIFY2(recorded.first().reason.startsWith(QStringLiteral("overlaps FLOCK 2P-1")),
+                 qPrintable(recorded.first().reason));
+        QCOMPARE(recorded.first().planned.norad, std::optional<int>(envisat.elements.catalogueNumber));
 
         // FLOCK's pass, followed to its LOS at 09:27:10; then PERSEUS-M1's
         // is the one waited for.
