@@ -142,7 +142,11 @@ private slots:
         QVERIFY2(sent < 145.95e6 - 300 && sent > 145.95e6 - 4000, QByteArray::number(sent, 'f', 0).constData());
 
         // The operator turns the dial 2 kHz up, in five clicks: Slew sends
-        // nothing over it, and once it rests takes it as the new point.
+        // nothing over it, and once it rests takes it as the new point. The
+        // clicks start from what the radio holds now, not from the reading
+        // above: on a loaded machine Slew's Doppler (fast, at 20 times) may
+        // have moved on by hundreds of hertz between the two.
+        heard = number(askRigctld(port, "f", 1).value(0));
         for (int click = 1; click <= 5; ++click)
             QVERIFY(askRigctld(port, QByteArray("F ") + QByteArray::number(heard + 400 * click, 'f', 0), 1)
                     == QList<QByteArray>{"RPRT 0"});
@@ -150,8 +154,8 @@ private slots:
         const QRegularExpressionMatch moved =
             QRegularExpression("dial moved the downlink by (-?\\d+) Hz").match(QString::fromUtf8(out));
         QVERIFY(moved.hasMatch());
-        // What Slew had sent after the reading above may have moved on by
-        // a step or two of the Doppler (fast, at 20 times).
+        // What Slew had sent after that reading may have moved on by a
+        // step or two of the Doppler.
         QVERIFY2(std::abs(moved.captured(1).toDouble() - 2000) < 800, qPrintable(moved.captured(0)));
 
         // LOS: the figures, and the radio put back as it was found.
