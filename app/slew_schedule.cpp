@@ -16,6 +16,7 @@
 #include "schedule/scheduletext.h"
 #include "sky/station.h"
 #include "sky/utctime.h"
+#include "tracking/rotatorreach.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -30,19 +31,6 @@ int fail(const QString &message)
 {
     std::fprintf(stderr, "slew: %s\n", qPrintable(message));
     return 2;
-}
-
-// The rotator a plan is made for: the profile's travel, speeds and
-// accelerations, as the session's gate and the tracker take them.
-slew::tracking::RotatorReach reachOfProfile(const slew::model::RotatorProfile &profile)
-{
-    slew::tracking::RotatorReach r;
-    r.limits = profile.limits;
-    r.azimuthRateDegS = profile.motion.azSpeedDegS;
-    r.elevationRateDegS = profile.motion.elSpeedDegS;
-    r.azimuthAccelDegS2 = profile.motion.azAccelDegS2;
-    r.elevationAccelDegS2 = profile.motion.elAccelDegS2;
-    return r;
 }
 
 } // namespace
@@ -107,7 +95,7 @@ int runSchedule(int argc, char **argv)
         return fail(error);
 
     const slew::schedule::Schedule plan =
-        slew::schedule::planSchedule(*targets, station, reachOfProfile(profile), settings);
+        slew::schedule::planSchedule(*targets, station, slew::tracking::reachOf(profile.limits, profile.motion), settings);
     if (parser.isSet(QStringLiteral("json"))) {
         QJsonObject json = slew::schedule::scheduleToJson(plan);
         json.insert(QStringLiteral("station"), slew::sky::describeStation(station));

@@ -9,9 +9,13 @@ namespace slew::tracking {
 
 RotatorReach reachOf(const session::RotatorSession &session)
 {
-    const model::RotatorMotion &m = session.profile().motion;
+    return reachOf(session.moveGate().limits(), session.profile().motion);
+}
+
+RotatorReach reachOf(const model::RotatorLimits &limits, const model::RotatorMotion &m)
+{
     RotatorReach r;
-    r.limits = session.moveGate().limits();
+    r.limits = limits;
     r.azimuthRateDegS = m.azSpeedDegS;
     r.elevationRateDegS = m.elSpeedDegS;
     r.azimuthAccelDegS2 = m.azAccelDegS2;

@@ -18,6 +18,9 @@ class RotatorSession;
 namespace slew::tracking {
 
 RotatorReach reachOf(const session::RotatorSession &session);
+// The same from a travel and a motion, as a profile gives them (a rotator
+// not connected: `slew --schedule`, the benchmarks).
+RotatorReach reachOf(const model::RotatorLimits &limits, const model::RotatorMotion &motion);
 
 // The lead and the minimum step for this motion; the rest as `base` has it.
 // The lead is the response delay and the time one minimum step takes.

@@ -60,24 +60,6 @@ const QString kAllSets = QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites
 constexpr int kFlock = 41617;
 constexpr int kJpss = 43013;
 
-bool loadSets(slew::sky::TleSources *sets)
-{
-    sets->setUrls({QUrl::fromLocalFile(kAllSets)});
-    QSignalSpy loaded(sets, &slew::sky::TleSources::finished);
-    sets->refresh();
-    return loaded.count() > 0 || loaded.wait(5000);
-}
-
-// The station at JO65hq on a clock started at `iso`, `rate` times real time.
-void rehearse(WindowFixture &f, const QString &iso, double rate)
-{
-    slew::sky::Station place;
-    QString error;
-    QVERIFY2(slew::sky::parseStation(QStringLiteral("JO65hq"), &place, &error), qPrintable(error));
-    f.station.clock()->rehearse(*slew::sky::julianFromIso(iso), rate);
-    f.station.setPlace(place);
-}
-
 // Tracks `name` from the Tracking tab, as the operator does.
 bool track(WindowFixture &f, const QString &name)
 {
@@ -368,8 +350,8 @@ private slots:
         {
             WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
             QVERIFY(f.connectAndWait());
-            QVERIFY(loadSets(f.window->elementSets()));
-            rehearse(f, QStringLiteral("2018-01-22T09:00:00Z"), 1.0);
+            QVERIFY(f.loadElementSets(kAllSets));
+            QVERIFY(f.rehearseAt(QStringLiteral("2018-01-22T09:00:00Z"), 1.0));
             RadioPanel *panel = radioTab(f);
             DopplerRadio *radio = f.station.radio();
             auto *planBox = in<QGroupBox>(panel, "radioPlanBox");
@@ -441,8 +423,8 @@ private slots:
         trsp.close();
         WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
-        QVERIFY(loadSets(f.window->elementSets()));
-        rehearse(f, QStringLiteral("2018-01-22T09:00:00Z"), 1.0);
+        QVERIFY(f.loadElementSets(kAllSets));
+        QVERIFY(f.rehearseAt(QStringLiteral("2018-01-22T09:00:00Z"), 1.0));
         slew::radio::TransponderSources *sources = f.station.transponders();
         sources->setUrls({QUrl::fromLocalFile(trsp.fileName())});
         QSignalSpy refreshed(sources, &slew::radio::TransponderSources::finished);
@@ -540,7 +522,7 @@ private slots:
         f.window->resize(1280, 720);
         QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
         QVERIFY(f.connectAndWait());
-        QVERIFY(loadSets(f.window->elementSets()));
+        QVERIFY(f.loadElementSets(kAllSets));
         RadioPanel *panel = radioTab(f);
         DopplerRadio *radio = f.station.radio();
         connectRadio(panel, QStringLiteral("rigctld://127.0.0.1:%1").arg(port));
@@ -554,7 +536,7 @@ private slots:
         QCOMPARE(textOf(panel, "radioSent"), QStringLiteral("nothing yet"));
 
         // Ten seconds (of the station's clock) before AOS, at 20 times.
-        rehearse(f, QStringLiteral("2018-01-22T09:15:35Z"), 20.0);
+        QVERIFY(f.rehearseAt(QStringLiteral("2018-01-22T09:15:35Z"), 20.0));
         QVERIFY(track(f, QStringLiteral("FLOCK 2P-1")));
         f.window->tabs()->setCurrentWidget(panel);
         QSignalSpy steering(radio, &DopplerRadio::steeringChanged);

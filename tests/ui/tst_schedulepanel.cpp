@@ -42,24 +42,6 @@ namespace {
 
 const QString kAllSets = QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle");
 
-bool loadSets(slew::sky::TleSources *sets)
-{
-    sets->setUrls({QUrl::fromLocalFile(kAllSets)});
-    QSignalSpy loaded(sets, &slew::sky::TleSources::finished);
-    sets->refresh();
-    return loaded.count() > 0 || loaded.wait(5000);
-}
-
-// The station at JO65hq on a clock started at `iso`, `rate` times real time.
-void rehearse(WindowFixture &f, const QString &iso, double rate)
-{
-    slew::sky::Station place;
-    QString error;
-    QVERIFY2(slew::sky::parseStation(QStringLiteral("JO65hq"), &place, &error), qPrintable(error));
-    f.station.clock()->rehearse(*slew::sky::julianFromIso(iso), rate);
-    f.station.setPlace(place);
-}
-
 SchedulePanel *scheduleTab(WindowFixture &f)
 {
     SchedulePanel *panel = f.window->schedulePanel();
@@ -107,8 +89,8 @@ private slots:
             WindowFixture f;
             f.window->resize(1280, 720);
             QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
-            QVERIFY(loadSets(f.window->elementSets()));
-            rehearse(f, QStringLiteral("2018-01-22T09:00:00Z"), 1.0);
+            QVERIFY(f.loadElementSets(kAllSets));
+            QVERIFY(f.rehearseAt(QStringLiteral("2018-01-22T09:00:00Z"), 1.0));
             SchedulePanel *panel = scheduleTab(f);
             // A page of the Tracking tab, beside One target.
             QCOMPARE(f.window->tabs()->tabText(f.window->tabs()->currentIndex()), QStringLiteral("Tracking"));
@@ -161,7 +143,7 @@ private slots:
         }
         // The list, in its order, at the next start.
         WindowFixture f;
-        QVERIFY(loadSets(f.window->elementSets()));
+        QVERIFY(f.loadElementSets(kAllSets));
         QCOMPARE(scheduleTab(f)->targetSpecs(), (QStringList{"norad:27386", "norad:41617", "norad:40039"}));
     }
 
@@ -171,8 +153,8 @@ private slots:
         f.window->resize(1280, 720);
         QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
         QVERIFY(f.connectAndWait());
-        QVERIFY(loadSets(f.window->elementSets()));
-        rehearse(f, QStringLiteral("2018-01-22T09:25:40Z"), 20.0);
+        QVERIFY(f.loadElementSets(kAllSets));
+        QVERIFY(f.rehearseAt(QStringLiteral("2018-01-22T09:25:40Z"), 20.0));
         SchedulePanel *panel = scheduleTab(f);
         QVERIFY(panel->addTarget(QStringLiteral("FLOCK 2P-1")));
         QVERIFY(panel->addTarget(QStringLiteral("PERSEUS-M1")));

@@ -36,14 +36,6 @@ namespace {
 
 const QString kAllSets = QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle");
 
-bool loadSets(slew::sky::TleSources *sets, const QString &file)
-{
-    sets->setUrls({QUrl::fromLocalFile(file)});
-    QSignalSpy loaded(sets, &slew::sky::TleSources::finished);
-    sets->refresh();
-    return loaded.count() > 0 || loaded.wait(5000);
-}
-
 void atJo65hq(TrackingPanel *panel)
 {
     slew::sky::Station station;
@@ -129,7 +121,7 @@ private slots:
     void aRehearsalPlansThePassesAfterTheChosenTime()
     {
         WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
-        QVERIFY(loadSets(f.window->elementSets(), kAllSets));
+        QVERIFY(f.loadElementSets(kAllSets));
         TrackingPanel *panel = f.window->trackingPanel();
         atJo65hq(panel);
         QVERIFY(panel->selectTarget(QStringLiteral("FLOCK 2P-1")));

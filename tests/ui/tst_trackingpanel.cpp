@@ -45,14 +45,6 @@ namespace {
 
 const QString kAllSets = QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle");
 
-bool loadSets(slew::sky::TleSources *sets, const QString &file)
-{
-    sets->setUrls({QUrl::fromLocalFile(file)});
-    QSignalSpy loaded(sets, &slew::sky::TleSources::finished);
-    sets->refresh();
-    return loaded.count() > 0 || loaded.wait(5000);
-}
-
 // The rehearsal station, JO65hq, on a clock that starts at `iso`.
 void rehearse(TrackingPanel *panel, const slew::tracking::StationClock &clock)
 {
@@ -104,7 +96,7 @@ private slots:
         WindowFixture f(kOverlapAndFlip);
         QVERIFY(connectWithOverlapAndFlip(f));
         // The element sets, from a local file as an operator may list one.
-        QVERIFY(loadSets(f.window->elementSets(), kAllSets));
+        QVERIFY(f.loadElementSets(kAllSets));
         TrackingPanel *panel = f.window->trackingPanel();
         const slew::tracking::StationClock clock(slew::sky::julianFromIso(QStringLiteral("2018-01-22T07:42:45Z")), 1.0);
         rehearse(panel, clock);
@@ -171,7 +163,7 @@ private slots:
     {
         WindowFixture f(kOverlapAndFlip);
         QVERIFY(connectWithOverlapAndFlip(f));
-        QVERIFY(loadSets(f.window->elementSets(), kAllSets));
+        QVERIFY(f.loadElementSets(kAllSets));
         TrackingPanel *panel = f.window->trackingPanel();
         const slew::tracking::StationClock clock(slew::sky::julianFromIso(QStringLiteral("2018-01-22T12:10:00Z")), 1.0);
         rehearse(panel, clock);
@@ -202,7 +194,7 @@ private slots:
         WindowFixture f(QStringLiteral("sim:?clock=manual"));
         QVERIFY(f.connectAndWait());
         QCOMPARE(f.session.profile().limits.elMax, 90.0);
-        QVERIFY(loadSets(f.window->elementSets(), kAllSets));
+        QVERIFY(f.loadElementSets(kAllSets));
         TrackingPanel *panel = f.window->trackingPanel();
         const slew::tracking::StationClock clock(slew::sky::julianFromIso(QStringLiteral("2018-01-22T12:10:00Z")), 1.0);
         rehearse(panel, clock);
@@ -249,7 +241,7 @@ private slots:
     {
         WindowFixture f(kOverlapAndFlip);
         QVERIFY(connectWithOverlapAndFlip(f));
-        QVERIFY(loadSets(f.window->elementSets(), kAllSets));
+        QVERIFY(f.loadElementSets(kAllSets));
         TrackingPanel *panel = f.window->trackingPanel();
         const slew::tracking::StationClock clock(slew::sky::julianFromIso(QStringLiteral("2018-01-22T07:42:45Z")), 1.0);
         rehearse(panel, clock);
@@ -289,7 +281,7 @@ private slots:
         {
             WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
             TrackingPanel *panel = f.window->trackingPanel();
-            QVERIFY(loadSets(f.window->elementSets(), kAllSets));
+            QVERIFY(f.loadElementSets(kAllSets));
             QVERIFY(panel->selectTarget(QStringLiteral("FLOCK 2P-1")));
             QCOMPARE(panel->targetPicker()->favouriteButton()->text(), QStringLiteral("☆"));
             QTest::mouseClick(panel->targetPicker()->favouriteButton(), Qt::LeftButton);
@@ -317,7 +309,7 @@ private slots:
             QVERIFY(panel->passTable()->rowCount() > 0);
 
             // A reload without it: still listed, as missing, and nothing to plan.
-            QVERIFY(loadSets(f.window->elementSets(), others));
+            QVERIFY(f.loadElementSets(others));
             listed = rows(panel->targetPicker()->list());
             QCOMPARE(listed.size(), 2);
             QCOMPARE(listed[0], QStringLiteral("★ FLOCK 2P-1 (41617): not in the loaded element sets"));
@@ -333,7 +325,7 @@ private slots:
         TrackingPanel *panel = g.window->trackingPanel();
         QCOMPARE(rows(panel->targetPicker()->list()).mid(0, 2),
                  (QStringList{QStringLiteral("★ FLOCK 2P-1 (41617): not in the loaded element sets"), QStringLiteral("★ Moon")}));
-        QVERIFY(loadSets(g.window->elementSets(), kAllSets));
+        QVERIFY(g.loadElementSets(kAllSets));
         QCOMPARE(panel->targetPicker()->list()->item(0)->text(), QStringLiteral("★ FLOCK 2P-1"));
 
         // Unmarked with the star: gone from the favourites and the settings.
@@ -353,7 +345,7 @@ private slots:
         QCOMPARE(ages->lines().size(), 1);
         QVERIFY2(ages->lines()[0]->text().startsWith(QStringLiteral("none loaded")), qPrintable(ages->lines()[0]->text()));
 
-        QVERIFY(loadSets(f.window->elementSets(), kAllSets));
+        QVERIFY(f.loadElementSets(kAllSets));
         // The newest set is from 2018-01-22 01:04:49 UTC: fresh on the morning of the pass.
         const slew::tracking::StationClock morning(slew::sky::julianFromIso(QStringLiteral("2018-01-22T07:42:45Z")), 1.0);
         rehearse(panel, morning);
@@ -375,7 +367,7 @@ private slots:
     {
         WindowFixture f(kOverlapAndFlip);
         QVERIFY(connectWithOverlapAndFlip(f));
-        QVERIFY(loadSets(f.window->elementSets(), kAllSets));
+        QVERIFY(f.loadElementSets(kAllSets));
         TrackingPanel *panel = f.window->trackingPanel();
         // A minute into the pass: tracking starts at once.
         const slew::tracking::StationClock clock(slew::sky::julianFromIso(QStringLiteral("2018-01-22T07:44:00Z")), 1.0);

@@ -4,10 +4,15 @@
 #include <QLineEdit>
 
 #include "sim/simulatorscheme.h"
+#include "sky/station.h"
+#include "sky/tlesources.h"
+#include "sky/utctime.h"
+#include "tracking/stationclock.h"
 #include "transport/link.h"
 
 #include <QCoreApplication>
 #include <QSettings>
+#include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QStandardPaths>
 #include <QTest>
@@ -81,6 +86,27 @@ bool WindowFixture::connectAndWait(int timeoutMs)
     window->connectTo(uri);
     return waitFor([this] { return session.isConnected() && session.capabilities().probed && recent.size() >= 2; },
                            timeoutMs);
+}
+
+bool WindowFixture::loadElementSets(const QString &file)
+{
+    slew::sky::TleSources *sets = window->elementSets();
+    sets->setUrls({QUrl::fromLocalFile(file)});
+    QSignalSpy loaded(sets, &slew::sky::TleSources::finished);
+    sets->refresh();
+    return loaded.count() > 0 || loaded.wait(5000);
+}
+
+bool WindowFixture::rehearseAt(const QString &iso, double rate, const QString &locator)
+{
+    slew::sky::Station place;
+    QString error;
+    const std::optional<double> start = slew::sky::julianFromIso(iso);
+    if (!start || !slew::sky::parseStation(locator, &place, &error))
+        return false;
+    station.clock()->rehearse(*start, rate);
+    station.setPlace(place);
+    return true;
 }
 
 int WindowFixture::sentCount(const QRegularExpression &line) const

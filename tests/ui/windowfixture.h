@@ -40,6 +40,10 @@ public:
 
     // Connects through the connection bar and waits for the probe and a position.
     bool connectAndWait(int timeoutMs = 10000);
+    // The station's element sets from a file of the test's, loaded.
+    bool loadElementSets(const QString &file);
+    // The station at `locator` on a clock started at `iso`, `rate` times real time.
+    bool rehearseAt(const QString &iso, double rate, const QString &locator = QStringLiteral("JO65hq"));
 
     template <typename T>
     T *find(const QString &name) const

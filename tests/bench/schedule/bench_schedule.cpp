@@ -206,14 +206,7 @@ schedule::Schedule compare(const QList<tracking::TrackTarget> &list, const sched
 
 tracking::RotatorReach g5500(double azMax, double elMax)
 {
-    tracking::RotatorReach reach;
-    model::RotatorProfile profile;
-    reach.limits = model::RotatorLimits{0, azMax, 0, elMax};
-    reach.azimuthRateDegS = profile.motion.azSpeedDegS;
-    reach.elevationRateDegS = profile.motion.elSpeedDegS;
-    reach.azimuthAccelDegS2 = profile.motion.azAccelDegS2;
-    reach.elevationAccelDegS2 = profile.motion.elAccelDegS2;
-    return reach;
+    return tracking::reachOf(model::RotatorLimits{0, azMax, 0, elMax}, model::RotatorProfile{}.motion);
 }
 
 } // namespace
