@@ -24,9 +24,13 @@ set(allowed_console "radio;session;tuning;model;protocol;transport;input")
 set(allowed_tracking "session;model;protocol;transport;sky;input")
 # radio: links to the radio and the Doppler steering, beside the tracker.
 set(allowed_radio "tracking;session;sky;model;protocol;transport;input")
+# remote: MQTT (the broker, the client, the messages) and the remote station a
+# window shows; it knows values (positions, limits), never the Station, which
+# sits above it and publishes itself through it (station/remoteoperation.h).
+set(allowed_remote "session;model;protocol;transport;sky;input")
 # station: one ground station's parts and their rules; the faces (ui, app) sit on it.
-set(allowed_station "radio;bridge;tracking;session;sky;model;protocol;transport;input")
-set(areas input protocol transport sky model session sim tuning bridge console tracking radio station)
+set(allowed_station "remote;radio;bridge;tracking;session;sky;model;protocol;transport;input")
+set(areas input protocol transport sky model session sim tuning bridge console tracking radio remote station)
 
 file(GLOB_RECURSE files RELATIVE ${CORE} ${CORE}/*.h ${CORE}/*.cpp)
 set(faults "")
