@@ -3,6 +3,7 @@
 
 #include "alarmmonitor.h"
 #include "dopplerradio.h"
+#include "remoteoperation.h"
 
 #include "bridge/rotctldserver.h"
 #include "radio/transpondersources.h"
@@ -73,6 +74,7 @@ Station::Station(const StationOptions &options, QObject *parent) : QObject(paren
 
 Station::~Station()
 {
+    m_remote.reset(); // it follows every other part
     if (m_runner && m_runner->isRunning())
         m_runner->stop(tr("the station is closing"));
     m_radio.reset(); // it follows the runner, which goes next
@@ -183,6 +185,10 @@ session::CommandResult Station::stop()
         if (rotor.server->isListening())
             rotor.server->holdRemote();
     }
+    if (!m_operatorHolds) {
+        m_operatorHolds = true;
+        emit operatorHoldChanged(true);
+    }
     return result;
 }
 
@@ -190,6 +196,25 @@ void Station::handControlBack()
 {
     for (Rotor &rotor : m_rotors)
         rotor.server->releaseRemote();
+    if (m_operatorHolds) {
+        m_operatorHolds = false;
+        emit operatorHoldChanged(false);
+    }
+}
+
+bool Station::startRemote(const RemoteOptions &options, QString *error)
+{
+    if (m_remote)
+        return true;
+    if (m_rotors.empty()) {
+        *error = m_error;
+        return false;
+    }
+    auto remote = std::make_unique<RemoteOperation>(this, options);
+    if (!remote->start(error))
+        return false;
+    m_remote = std::move(remote);
+    return true;
 }
 
 QString Station::otherSteering() const
@@ -248,22 +273,29 @@ void Station::shutdown(const QString &why)
     for (Rotor &rotor : m_rotors)
         rotor.server->close();
     const QList<RotatorSession *> sessions = everySession();
-    m_stillStopping = int(sessions.size());
-    if (m_stillStopping == 0) {
-        emit shutDown();
-        return;
+    // Every rotor's stop, and the remote's goodbye (its last state and
+    // online = false), one more so none can end it before all have begun.
+    m_stillStopping = int(sessions.size()) + 1;
+    if (m_remote) {
+        ++m_stillStopping;
+        connect(m_remote.get(), &RemoteOperation::closed, this, &Station::stoppedOne, Qt::SingleShotConnection);
+        m_remote->close(why);
     }
     for (RotatorSession *s : sessions) {
         s->reportHeldBack(); // the journal gets the count of what it was spared
-        const bool sent = session::stopThenCall(*s, this, [this] {
-            if (--m_stillStopping == 0)
-                emit shutDown();
-        });
+        const bool sent = session::stopThenCall(*s, this, [this] { stoppedOne(); });
         for (const Rotor &rotor : m_rotors) {
             if (sent && rotor.session.get() == s)
                 emit exitStopSent(rotor.number);
         }
     }
+    stoppedOne();
+}
+
+void Station::stoppedOne()
+{
+    if (--m_stillStopping == 0)
+        emit shutDown();
 }
 
 } // namespace slew::station

@@ -65,6 +65,8 @@ namespace slew::station {
 
 class AlarmMonitor;
 class DopplerRadio;
+class RemoteOperation;
+struct RemoteOptions;
 
 struct StationOptions {
     // The rotors of a multi-rotor controller to serve, each with a session,
@@ -118,6 +120,9 @@ public:
     // The radio, tuned for Doppler while the pass runner tracks a satellite
     // (dopplerradio.h); null for a station with no rotor.
     DopplerRadio *radio() const { return m_radio.get(); }
+    // The station published and commanded over MQTT, once startRemote()
+    // has made it (remoteoperation.h); null before.
+    RemoteOperation *remote() const { return m_remote.get(); }
 
     // --- Intent -------------------------------------------------------------
     // Opens every rotor's link (rotorUri()).
@@ -131,6 +136,13 @@ public:
     session::CommandResult stop();
     // Trackers on the rotctld port may steer again after the operator's Stop.
     void handControlBack();
+    // Between the operator's Stop and handControlBack(): remote control
+    // (trackers, commands over MQTT) is held off.
+    bool operatorHolds() const { return m_operatorHolds; }
+    // Publishes the station under its name and obeys commands from the
+    // broker, under the same rules as every other face (remoteoperation.h).
+    // False, with *error, when it cannot start; said again, it does nothing.
+    bool startRemote(const RemoteOptions &options, QString *error);
     // Follows every pass of `target` above `minElevationDeg` with the first
     // rotor, by the station's clock. Empty when started, else why not: the
     // place is not set, or a remote tracker steers the rotator.
@@ -154,6 +166,7 @@ public:
 
 signals:
     void placeChanged(const std::optional<slew::sky::Station> &place);
+    void operatorHoldChanged(bool holds);
     // Slew's own tracking holds the first rotor, or no longer does.
     void trackingChanged(bool holdsRotator);
     // shutdown() sent rotor `number`'s stop (0: the one rotor); not said
@@ -184,9 +197,12 @@ private:
     std::unique_ptr<tracking::SimulatorPace> m_pace;
     std::unique_ptr<tracking::PassRunner> m_runner;
     std::unique_ptr<DopplerRadio> m_radio; // after the runner and clock it follows
+    std::unique_ptr<RemoteOperation> m_remote; // after every part it publishes
     std::optional<sky::Station> m_place;
     bool m_shuttingDown = false;
+    bool m_operatorHolds = false;
     int m_stillStopping = 0;
+    void stoppedOne(); // a rotor's stop (or the remote's goodbye) has left
 };
 
 } // namespace slew::station

@@ -89,6 +89,7 @@ void PassRunner::stop(const QString &why)
     cancelPlanning();
     ++m_generation;
     m_retry.stop();
+    m_pass.reset();
     m_tracker.stopTracking(why);
 }
 
@@ -161,6 +162,7 @@ void PassRunner::onPlanned(const std::optional<PlannedPass> &next, const Rotator
         return;
     }
     const sky::Pass &pass = next->pass;
+    m_pass = pass;
     if (m_target.isFixed())
         emit logLine(tr("holding %1 until %2").arg(m_target.name(), isoTime(pass.los.julian)));
     else

@@ -61,6 +61,9 @@ public:
     const TrackTarget &target() const { return m_target; }
     const sky::Station &station() const { return m_station; }
     int passesDone() const { return m_passesDone; }
+    // The pass planned last (the one waited for or tracked), until stop();
+    // what a station publishes about its tracking.
+    const std::optional<sky::Pass> &currentPass() const { return m_pass; }
 
 signals:
     void logLine(const QString &line);
@@ -94,6 +97,7 @@ private:
     void cancelPlanning();
     bool m_wasActive = false;
     int m_passesDone = 0;
+    std::optional<sky::Pass> m_pass;
     QTimer m_retry; // no pass found: look again later
 };
 
