@@ -139,7 +139,8 @@ ProgramMode makeHeadlessMode()
                                    "[--profile FILE] [--limits AZMIN:AZMAX,ELMIN:ELMAX] [--rotctld-listen ADDRESS:PORT] "
                                    "[--rotctld-allow ADDRESSES] [--rotors LIST] [--qth STATION --tle FILE "
                                    "--track CATNR|NAME|sun|moon|azel:AZ,EL|radec:RA,DEC [--min-el DEG] [--clock-start ISO8601] [--clock-rate N] "
-                                   "[--radio URI (--downlink FREQ [--uplink FREQ] | --transponders FILE [--transponder NAME])]]");
+                                   "[--radio URI (--downlink FREQ [--uplink FREQ] | --transponders FILE [--transponder NAME])]] "
+                                   "[--mqtt mqtts://USER@HOST:8883 --station-name NAME [--mqtt-password-file FILE]]");
     mode.description = QStringLiteral(
         "Runs Slew with no window and no display, as a station service: it keeps the link to the rotator open "
         "and reconnects after a loss, serves the rotctld protocol to trackers, and logs one line per event on "
@@ -152,8 +153,8 @@ ProgramMode makeHeadlessMode()
          QStringLiteral("Read settings from FILE, one `name = value` a line, where name is one of connect, dialect, "
                         "profile, limits, rotctld-listen, rotctld-allow, rotctld-max-clients, rotors, qth, tle, track, min-el, and the radio's "
                         "radio, downlink, uplink, downlink-mode, uplink-mode, doppler, uplink-follows, downlink-offset, "
-                        "uplink-offset, transponders, transponder, transponder-invert, radio-restore, radio-vfos. Options on the "
-                        "command line win over the file.")},
+                        "uplink-offset, transponders, transponder, transponder-invert, radio-restore, radio-vfos, and the broker's "
+                        "mqtt, station-name, mqtt-password-file. Options on the command line win over the file.")},
         connectOption(QStringLiteral("The rotator's link URI (default sim:, the built-in simulator).")),
         dialectOption(),
         profileOption(),
@@ -263,6 +264,23 @@ ProgramMode makeHeadlessMode()
                                      "metres above the WGS-84 ellipsoid), or a Maidenhead locator of 4, 6 or 8 "
                                      "characters (JO65hq). Checked at start and logged."),
                       true),
+        {{QStringLiteral("mqtt")},
+         QStringLiteral("url"),
+         QStringLiteral("Publish the station on an MQTT broker and obey commands from it (docs/remote.md): "
+                        "mqtts://USER@HOST:8883?cafile=CA.pem, TLS checked against the CA file (or the system's "
+                        "authorities). Plain mqtt:// only to a broker on this machine. Under slew/NAME/: state "
+                        "and online (retained), telemetry, command and reply. The broker's access list decides who "
+                        "may watch and who may command. Needs --station-name."),
+         true},
+        {{QStringLiteral("station-name")},
+         QStringLiteral("name"),
+         QStringLiteral("With --mqtt: the station's name on the broker, its topic level (letters, digits, -, _ and .)."),
+         true},
+        {{QStringLiteral("mqtt-password-file")},
+         QStringLiteral("file"),
+         QStringLiteral("With --mqtt: the broker password is the first line of FILE, which other users may not "
+                        "read. Without it, the environment variable SLEW_MQTT_PASSWORD; never on the command line."),
+         true},
     };
     return mode;
 }

@@ -5,6 +5,7 @@
 // for the options whose syntax is the station's own.
 
 #include "radiooptions.h"
+#include "remoteoperation.h"
 
 #include "model/rotatorlimits.h"
 #include "model/rotatorprofile.h"
@@ -43,6 +44,9 @@ struct ServiceConfig {
     // --radio and what goes with it: the radio tuned for Doppler while the
     // tracked satellite is up. Needs a satellite's --track.
     std::optional<RadioOptions> radio;
+    // --mqtt and what goes with it: the station published and commanded
+    // over an MQTT broker (remoteoperation.h).
+    std::optional<RemoteOptions> remote;
 };
 
 // "AZMIN:AZMAX,ELMIN:ELMAX" (`--limits 0:450,0:180`) as limits, checked;
