@@ -40,6 +40,8 @@ public:
     void setPassOverlay(std::optional<PassOverlay> overlay);
     void setPassTarget(std::optional<QPointF> azEl);
     const std::optional<PassOverlay> &passOverlay() const { return m_pass; }
+    // A small plot among many (the station network) leaves the key out.
+    void setLegendShown(bool shown) { m_legendShown = shown; update(); }
 
     bool isStale() const { return m_stale; }
     std::optional<QPointF> actual() const { return m_actual; }
@@ -75,6 +77,7 @@ private:
     model::RotatorLimits m_limits;
     std::optional<QPointF> m_park, m_actual, m_commanded, m_target, m_pending, m_drag, m_hover;
     bool m_stale = true;
+    bool m_legendShown = true;
     std::deque<QPointF> m_trail; // az, el; oldest first
     std::optional<PassOverlay> m_pass;
 };
