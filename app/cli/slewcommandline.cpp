@@ -425,6 +425,38 @@ ProgramMode makeUpdateTranspondersMode()
     return mode;
 }
 
+ProgramMode makeRemoteMode()
+{
+    ProgramMode mode;
+    mode.title = QStringLiteral("A station on a broker");
+    mode.synopsis = QStringLiteral("slew --remote mqtts://USER@HOST:8883[/NAME][?cafile=CA.pem] [--mqtt-password-file FILE] "
+                                   "[--screenshot FILE.png [--settle-ms MS]]");
+    mode.description = QStringLiteral(
+        "Opens a station that a station service publishes on an MQTT broker (slew --headless --mqtt): with /NAME, "
+        "that station's window (its plot, position, alarms and telemetry, go-to, jog, Stop, Park, Home and "
+        "tracking), which says plainly that it is remote and how old the last state is; without a name, the "
+        "station network: every station the broker knows, each on a small plot. The broker's access list decides "
+        "whether this account may command or only watch. The password comes from --mqtt-password-file or "
+        "SLEW_MQTT_PASSWORD, never the command line. See docs/remote.md.");
+    mode.options = {
+        {{QStringLiteral("remote")},
+         QStringLiteral("url"),
+         QStringLiteral("The broker and, after a slash, the station: mqtts://USER@HOST:8883/NAME?cafile=CA.pem. Plain "
+                        "mqtt:// only to a broker on this machine.")},
+        {{QStringLiteral("mqtt-password-file")},
+         QStringLiteral("file"),
+         QStringLiteral("The broker password is the first line of FILE, which other users may not read; without "
+                        "it, SLEW_MQTT_PASSWORD.")},
+        {{QStringLiteral("screenshot")},
+         QStringLiteral("FILE.png"),
+         QStringLiteral("Render the window to a PNG after the settle time, then exit. Needs no display.")},
+        {{QStringLiteral("settle-ms")},
+         QStringLiteral("ms"),
+         QStringLiteral("How long to run before the screenshot (default 3000).")},
+    };
+    return mode;
+}
+
 ProgramMode makeSimMode()
 {
     ProgramMode mode;
@@ -491,7 +523,7 @@ const ProgramDescription &slewProgram()
             "rotator is attached. Every move, from the operator, a tracker, a preset or a raw command, is checked "
             "against the rotator's limits before a byte is sent.");
         p.modes = {makeWindowMode(), makeHeadlessMode(), makeTuneMode(), makePassesMode(), makeWhereMode(),
-                   makeUpdateElementsMode(), makeUpdateTranspondersMode()};
+                   makeUpdateElementsMode(), makeUpdateTranspondersMode(), makeRemoteMode()};
         p.sections = {
             {QStringLiteral("Links"),
              QStringLiteral("A link is named by a URI, the same on the command line, in the window and in profiles:\n"
@@ -545,7 +577,8 @@ const ProgramDescription &slewProgram()
                             "  slew --passes \"ISS (ZARYA)\" --qth JO65hq --tle amateur.txt --hours 48\n"
                             "  slew --where moon --qth 55.69,12.63,20\n"
                             "  slew --connect sim: --qth JO65hq --clock-start 2026-11-25T12:00:00Z --clock-rate 5\n"
-                            "  slew --update-elements 'https://celestrak.org/NORAD/elements/gp.php?GROUP=amateur&FORMAT=tle'")},
+                            "  slew --update-elements 'https://celestrak.org/NORAD/elements/gp.php?GROUP=amateur&FORMAT=tle'\n"
+                            "  slew --remote 'mqtts://alice@broker.example:8883/mast?cafile=/etc/slew/broker-ca.pem'")},
             {QStringLiteral("See also"), QStringLiteral("slew-sim(1), ") + seeAlso()},
         };
         return p;
@@ -586,6 +619,11 @@ const ProgramMode &slewUpdateElementsMode()
 const ProgramMode &slewUpdateTranspondersMode()
 {
     return slewProgram().modes.at(6);
+}
+
+const ProgramMode &slewRemoteMode()
+{
+    return slewProgram().modes.at(7);
 }
 
 const ProgramDescription &slewSimProgram()

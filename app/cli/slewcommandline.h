@@ -18,6 +18,7 @@ const ProgramMode &slewPassesMode();
 const ProgramMode &slewWhereMode();
 const ProgramMode &slewUpdateElementsMode();
 const ProgramMode &slewUpdateTranspondersMode();
+const ProgramMode &slewRemoteMode();
 
 // slew-sim: the simulated rotator as a server.
 const ProgramDescription &slewSimProgram();
