@@ -11,6 +11,7 @@
 // says online = false.
 
 #include "../common/mosquittobroker.h"
+#include "../common/stationprocess.h"
 
 #include "model/movegate.h"
 #include "remote/stationstate.h"
@@ -27,56 +28,7 @@
 
 namespace {
 
-// `slew --headless ARGS` as a service runs, and its log as it comes.
-struct Service {
-    QProcess process;
-    QByteArray out;
-
-    explicit Service(const QStringList &arguments, const QString &password = {})
-    {
-        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-        env.remove(QStringLiteral("DISPLAY"));
-        env.remove(QStringLiteral("QT_QPA_PLATFORM"));
-        if (!password.isEmpty())
-            env.insert(QStringLiteral("SLEW_MQTT_PASSWORD"), password);
-        process.setProcessEnvironment(env);
-        process.start(qEnvironmentVariable("SLEW_BIN"), QStringList{QStringLiteral("--headless")} + arguments);
-    }
-    ~Service()
-    {
-        if (process.state() != QProcess::NotRunning) {
-            QSignalSpy finished(&process, &QProcess::finished);
-            process.kill();
-            finished.wait(5000);
-        }
-    }
-    bool logged(const QByteArray &text, int ms = 20000)
-    {
-        return QTest::qWaitFor(
-                   [&] {
-                       out += process.readAllStandardOutput();
-                       return out.contains(text) || process.state() == QProcess::NotRunning;
-                   },
-                   ms)
-               && out.contains(text);
-    }
-    // Everything so far, errors too; what it reads stays in `out`.
-    QByteArray said()
-    {
-        out += process.readAllStandardOutput();
-        err += process.readAllStandardError();
-        return out + err;
-    }
-    QByteArray err;
-    int stop(int signal)
-    {
-        QSignalSpy finished(&process, &QProcess::finished);
-        ::kill(pid_t(process.processId()), signal);
-        if (!finished.wait(15000))
-            return -1;
-        return process.exitStatus() == QProcess::NormalExit ? process.exitCode() : 128 + signal;
-    }
-};
+using Service = StationProcess;
 
 QJsonObject json(const QByteArray &payload)
 {
