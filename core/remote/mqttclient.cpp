@@ -100,14 +100,9 @@ void MqttClient::onMessage(const QString &topic, const QByteArray &payload, bool
     emit messageReceived(topic, payload, retained);
 }
 
-void MqttClient::onPublished(int mid, int reason)
+void MqttClient::onRefused(int mid, int reason)
 {
-    // MQTT 5: a PUBACK's reason of 0x80 or more is a refusal (0x87: not
-    // authorised, the access list's answer).
-    if (reason >= 0x80)
-        emit publishRefused(mid, QString::fromUtf8(mosquitto_reason_string(reason)));
-    else
-        emit published(mid);
+    emit publishRefused(mid, QString::fromUtf8(mosquitto_reason_string(reason)));
 }
 
 void MqttClient::onSubscribed(int mid, const QList<int> &granted)

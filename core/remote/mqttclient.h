@@ -46,8 +46,8 @@ public:
     // Starts connecting. False, with *error, if the settings cannot be used.
     bool open(QString *error);
     // Sent only while connected (a station republishes its state on each
-    // connection); false otherwise. `mid` is what published() and
-    // publishRefused() will name.
+    // connection); false otherwise. `mid` is what publishRefused() will
+    // name if the broker refuses it.
     bool publish(const MqttMessage &message, int *mid = nullptr);
     // Kept, and made again after each reconnection.
     void subscribe(const QString &filter, int qos = 1);
@@ -65,7 +65,8 @@ signals:
     // Lost or failed; the next attempt is in `retryInSeconds`.
     void connectionLost(const QString &why, int retryInSeconds);
     void messageReceived(const QString &topic, const QByteArray &payload, bool retained);
-    void published(int mid);
+    // The broker refused a message (MQTT 5's PUBACK, for QoS 1): its
+    // access list does not let this account publish there.
     void publishRefused(int mid, const QString &reason);
     void subscriptionRefused(const QString &filter, const QString &reason);
     // Messages were dropped unread (a flood, or too large): said once per
@@ -79,7 +80,7 @@ private:
     void onConnected();
     void onLost(const QString &why, int retryInSeconds);
     void onMessage(const QString &topic, const QByteArray &payload, bool retained);
-    void onPublished(int mid, int reason);
+    void onRefused(int mid, int reason);
     void onSubscribed(int mid, const QList<int> &granted);
     void onDropped(int count, const QString &why);
     void onFinished();

@@ -26,7 +26,6 @@ RemoteStation::RemoteStation(const MqttSettings &settings, const QString &statio
         emit commandFailed(pending.command.isEmpty() ? tr("a command") : pending.command,
                            tr("the broker refused it (%1): this account may only watch").arg(reason));
     });
-    connect(m_client.get(), &MqttClient::published, this, [this](int mid) { m_publishes.remove(mid); });
     connect(m_client.get(), &MqttClient::subscriptionRefused, this, [this](const QString &filter, const QString &why) {
         refuse(tr("the broker refused to let this account read %1 (%2)").arg(filter, why));
     });
@@ -258,7 +257,8 @@ void RemoteStation::expireReplies()
             ++it;
         }
     }
-    // The broker's ids of what it took long ago are of no more use.
+    // The broker's ids of what it took long ago are of no more use (only a
+    // refusal names one, within a round trip).
     if (m_publishes.size() > 1000)
         m_publishes.clear();
 }
