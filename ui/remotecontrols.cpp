@@ -114,7 +114,7 @@ RemoteControls::RemoteControls(RemoteStation *station, QWidget *parent) : QWidge
     connect(station, &RemoteStation::replied, this, [this](const QString &, const QString &command, bool ok, const QString &error) {
         if (command == u"jog" && ok)
             return;
-        showMessage(ok ? tr("%1: done").arg(command) : tr("%1 refused: %2").arg(command, error), !ok);
+        showMessage(ok ? tr("%1: accepted by the station").arg(command) : tr("%1 refused: %2").arg(command, error), !ok);
     });
     connect(station, &RemoteStation::commandFailed, this,
             [this](const QString &command, const QString &why) { showMessage(tr("%1: %2").arg(command, why), true); });

@@ -62,11 +62,17 @@ QString RemoteReadout::trackingText(const remote::StationState &s)
     return text;
 }
 
+void RemoteReadout::showPosition(double az, double el)
+{
+    m_az->setText(tr("Az %1°").arg(az, 0, 'f', 1));
+    m_el->setText(m_azimuthOnly ? QString() : tr("El %1°").arg(el, 0, 'f', 1));
+}
+
 void RemoteReadout::showState(const remote::StationState &s)
 {
+    m_azimuthOnly = s.azimuthOnly;
     if (s.position) {
-        m_az->setText(tr("Az %1°").arg(s.position->x(), 0, 'f', 1));
-        m_el->setText(s.azimuthOnly ? QString() : tr("El %1°").arg(s.position->y(), 0, 'f', 1));
+        showPosition(s.position->x(), s.position->y());
     } else {
         m_az->setText(tr("Az —"));
         m_el->setText(tr("El —"));

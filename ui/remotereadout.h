@@ -24,6 +24,8 @@ public:
 
 public slots:
     void showState(const slew::remote::StationState &state);
+    // Where the antenna points now, from the telemetry (between states).
+    void showPosition(double az, double el);
     void setLive(bool live);
 
 private:
@@ -32,6 +34,7 @@ private:
     QLabel *m_target;
     QLabel *m_link;
     QLabel *m_tracking;
+    bool m_azimuthOnly = false;
 };
 
 } // namespace slew::ui

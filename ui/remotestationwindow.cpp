@@ -94,16 +94,23 @@ RemoteStationWindow::RemoteStationWindow(RemoteStation *station, QWidget *parent
     connect(station, &RemoteStation::stateChanged, this, &RemoteStationWindow::showState);
     connect(station, &RemoteStation::liveChanged, this, &RemoteStationWindow::showLive);
     connect(station, &RemoteStation::telemetryReceived, m_recorder, &TelemetryRecorder::recordRemote);
+    // The telemetry carries the position at the poll rate; the state, while
+    // the antenna only moves, once a second.
     connect(station, &RemoteStation::telemetryReceived, m_plot, [this](const remote::TelemetrySample &s) {
         if (s.commandedAz && s.commandedEl)
             m_plot->setCommanded(*s.commandedAz, *s.commandedEl);
+        if (s.az && s.el) {
+            const bool stale = !m_station->isLive() || (m_station->state() && m_station->state()->stale);
+            m_plot->setActual(*s.az, *s.el, stale);
+            m_readout->showPosition(*s.az, *s.el);
+        }
     });
     connect(m_plot, &PolarPlotWidget::targetPicked, m_controls, &RemoteControls::setFields);
     connect(m_stop, &StopButton::stopped, station, &RemoteStation::endJog);
     connect(m_stop, &StopButton::stopped, this, [this] { log(false, tr("Stop sent")); });
     connect(station, &RemoteStation::replied, this, [this](const QString &, const QString &command, bool ok, const QString &error) {
         if (command != u"jog" || !ok)
-            log(!ok, ok ? tr("%1: done").arg(command) : tr("%1 refused: %2").arg(command, error));
+            log(!ok, ok ? tr("%1: accepted by the station").arg(command) : tr("%1 refused: %2").arg(command, error));
     });
     connect(station, &RemoteStation::commandFailed, this,
             [this](const QString &command, const QString &why) { log(true, tr("%1: %2").arg(command, why)); });

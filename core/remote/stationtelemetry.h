@@ -13,6 +13,7 @@
 // hertz; GS and GE as the controller's raw registers. Pure code.
 
 #include <QByteArray>
+#include <QMetaType>
 
 #include <optional>
 
@@ -32,3 +33,5 @@ QByteArray encodeTelemetry(const TelemetrySample &sample);
 std::optional<TelemetrySample> parseTelemetry(const QByteArray &payload, QString *error);
 
 } // namespace slew::remote
+
+Q_DECLARE_METATYPE(slew::remote::TelemetrySample)

@@ -45,13 +45,15 @@ std::optional<double> known(double value)
     return std::isfinite(value) ? std::optional<double>(value) : std::nullopt;
 }
 
-// A timer that publishes no sooner than `minMs` after the last time.
+// A timer that publishes no sooner than `minMs` after the last time; one
+// already due sooner is left as it is.
 void schedule(QTimer &due, const QElapsedTimer &since, int minMs)
 {
-    if (due.isActive())
-        return;
     const qint64 elapsed = since.isValid() ? since.elapsed() : minMs;
-    due.start(int(std::max<qint64>(0, minMs - elapsed)));
+    const int wait = int(std::max<qint64>(0, minMs - elapsed));
+    if (due.isActive() && due.remainingTime() <= wait)
+        return;
+    due.start(wait);
 }
 
 } // namespace
@@ -89,16 +91,24 @@ void StatePublisher::follow()
             m_target.reset();
         m_linkDetail = st == RotatorSession::State::Connected ? QString() : detail;
     });
-    connect(s, &RotatorSession::positionChanged, this, [this](double az, double el, bool) {
+    connect(s, &RotatorSession::positionChanged, this, [this](double az, double el, bool stale) {
         m_sample.az = known(az);
         m_sample.el = known(el);
-        stateChanged();
+        // Each poll says where the antenna is, moved or not: at rest the
+        // heartbeat is enough for the state.
+        if (!m_published || std::abs(az - m_published->position.value_or(QPointF()).x()) >= 0.005
+            || std::abs(el - m_published->position.value_or(QPointF()).y()) >= 0.005 || stale != m_published->stale
+            || !m_published->position)
+            stateChanged(true);
         telemetryChanged();
     });
     connect(s, &RotatorSession::statusChanged, this, [this](session::StatusWord w) {
         if (w.valid)
             m_sample.gs = w.raw;
-        stateChanged(); // moving or not
+        if (w.anyMoving() != m_moving) {
+            m_moving = w.anyMoving();
+            stateChanged();
+        }
         telemetryChanged();
     });
     connect(s, &RotatorSession::errorFlagsChanged, this, [this](int flags) {
@@ -149,10 +159,10 @@ void StatePublisher::setEnabled(bool on)
     }
 }
 
-void StatePublisher::stateChanged()
+void StatePublisher::stateChanged(bool positionOnly)
 {
     if (m_enabled)
-        schedule(m_stateDue, m_sinceState, kMinStateIntervalMs);
+        schedule(m_stateDue, m_sinceState, positionOnly ? kPositionStateIntervalMs : kMinStateIntervalMs);
 }
 
 void StatePublisher::telemetryChanged()
@@ -215,7 +225,8 @@ void StatePublisher::publishState()
     m_sinceState.start();
     m_heartbeat.start(); // the next beat counts from this message
     ++m_states;
-    m_publish({remote::stationTopic(m_name, remote::StationTopic::State), remote::encodeStationState(state()), 1, true});
+    m_published = state();
+    m_publish({remote::stationTopic(m_name, remote::StationTopic::State), remote::encodeStationState(*m_published), 1, true});
 }
 
 void StatePublisher::publishTelemetry()
