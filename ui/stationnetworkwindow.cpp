@@ -32,7 +32,7 @@ StationNetworkWindow::StationNetworkWindow(StationDirectory *directory, const re
     m_header->setStyleSheet(QStringLiteral("#networkBanner{background:#1e4b7a;color:white;font-weight:bold;}"));
     auto *tiles = new QWidget;
     m_grid = new QGridLayout(tiles);
-    m_grid->setSpacing(8);
+    m_grid->setSpacing(6);
     // Tiles keep their size and gather top left, however few there are.
     m_grid->setAlignment(Qt::AlignTop | Qt::AlignLeft);
     auto *scroll = new QScrollArea;
@@ -82,7 +82,7 @@ void StationNetworkWindow::resizeEvent(QResizeEvent *event)
 
 void StationNetworkWindow::layOut()
 {
-    const int columns = std::max(1, (width() - 40) / (StationTile::kWidth + m_grid->spacing()));
+    const int columns = std::max(1, (width() - 36) / (StationTile::kWidth + m_grid->spacing()));
     if (columns == m_columns)
         return;
     m_columns = columns;

@@ -18,10 +18,10 @@ StationTile::StationTile(const QString &name, QWidget *parent) : QFrame(parent),
     m_title->setTextFormat(Qt::PlainText);
     QFont f = m_title->font();
     f.setBold(true);
-    f.setPointSizeF(f.pointSizeF() * 1.2);
+    f.setPointSizeF(f.pointSizeF() * 1.1);
     m_title->setFont(f);
     m_plot = new PolarPlotWidget;
-    m_plot->setMinimumSize(200, 200);
+    m_plot->setMinimumSize(150, 150);
     m_plot->setLegendShown(false);
     setFixedSize(kWidth, kHeight);
     m_plot->setAttribute(Qt::WA_TransparentForMouseEvents); // a view; the station's own window takes targets
@@ -37,7 +37,8 @@ StationTile::StationTile(const QString &name, QWidget *parent) : QFrame(parent),
     m_open->setObjectName(QStringLiteral("openStation_%1").arg(name));
     connect(m_open, &QPushButton::clicked, this, [this] { emit openRequested(m_name); });
     auto *layout = new QVBoxLayout(this);
-    layout->setContentsMargins(6, 6, 6, 6);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->setSpacing(2);
     layout->addWidget(m_title);
     layout->addWidget(m_plot, 1);
     layout->addWidget(m_status);
@@ -53,15 +54,22 @@ QString StationTile::statusText() const
 void StationTile::show(bool live, bool online, const std::optional<remote::StationState> &state, qint64 ageMs)
 {
     QString status;
-    if (state) {
+    // The plot is drawn again only when what it shows has changed: the
+    // network window asks every tile every second, for the ages.
+    const bool stale = !state || state->stale || !live;
+    if (state && (state->unixMs != m_shownMs || stale != m_shownStale)) {
+        m_shownMs = state->unixMs;
+        m_shownStale = stale;
         m_plot->setLimits(state->limits);
         m_plot->setPark(state->park);
         if (state->position)
-            m_plot->setActual(state->position->x(), state->position->y(), state->stale || !live);
+            m_plot->setActual(state->position->x(), state->position->y(), stale);
         if (state->target)
             m_plot->setTarget(state->target->x(), state->target->y());
         else
             m_plot->clearTarget();
+    }
+    if (state) {
         if (state->position)
             status = tr("az %1° el %2°").arg(state->position->x(), 0, 'f', 1).arg(state->position->y(), 0, 'f', 1);
         status += state->moving ? tr(", moving") : tr(", at rest");

@@ -19,9 +19,10 @@ class PolarPlotWidget;
 class StationTile : public QFrame {
     Q_OBJECT
 public:
-    // Every tile the same size, so a network of twenty fits a screen.
-    static constexpr int kWidth = 230;
-    static constexpr int kHeight = 320;
+    // Every tile the same size, so a network of twenty fits a 1440×900
+    // window: seven a row, three rows.
+    static constexpr int kWidth = 188;
+    static constexpr int kHeight = 262;
 
     explicit StationTile(const QString &name, QWidget *parent = nullptr);
 
@@ -43,6 +44,8 @@ private:
     QLabel *m_status;
     QLabel *m_alarms;
     QPushButton *m_open;
+    qint64 m_shownMs = -1; // the state on the plot
+    bool m_shownStale = true;
 };
 
 } // namespace slew::ui
