@@ -163,6 +163,8 @@ std::optional<RemoteReply> parseRemoteReply(const QByteArray &payload, QString *
     r.id = f.text(QStringLiteral("id"), kLongestCommandId, true).value_or(QString());
     r.ok = f.flag(QStringLiteral("ok"), true).value_or(false);
     r.error = f.text(QStringLiteral("error"), kLongestReplyError, !r.ok && f.ok()).value_or(QString());
+    if (f.ok() && !r.ok && r.error.trimmed().isEmpty())
+        f.fail(QStringLiteral("a refusal without its reason ('error' is empty)"));
     if (!f.noOthers()) {
         *error = f.error();
         return std::nullopt;

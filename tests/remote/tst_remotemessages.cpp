@@ -167,6 +167,9 @@ private slots:
         QVERIFY(no && !no->ok);
         QCOMPARE(no->error, QStringLiteral("azimuth 999.0° is outside 0..360°"));
         QVERIFY(!parseRemoteReply(R"j({"id":"7","ok":false})j", &error));
+        // Found by fuzz_remotemessages: a refusal must say why.
+        QVERIFY(!parseRemoteReply(R"j({"id":"7","ok":false,"error":""})j", &error));
+        QVERIFY2(error.contains(QStringLiteral("without its reason")), qPrintable(error));
         QVERIFY(!parseRemoteReply(R"j({"id":"7","ok":"yes"})j", &error));
     }
 
