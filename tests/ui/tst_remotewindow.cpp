@@ -18,6 +18,7 @@
 #include "operatortheme.h"
 #include "polarplotwidget.h"
 #include "remotebanner.h"
+#include "remoteconnectdialog.h"
 #include "remotecontrols.h"
 #include "remoteopener.h"
 #include "remotereadout.h"
@@ -34,8 +35,12 @@
 #include <QGuiApplication>
 #include <QLabel>
 #include <QPointer>
+#include <QLineEdit>
 #include <QPushButton>
+#include <QSettings>
 #include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTemporaryDir>
 #include <QTest>
 
 #include <cmath>
@@ -58,6 +63,11 @@ class RemoteWindowTest : public QObject {
 private slots:
     void initTestCase()
     {
+        // File → Open remote station… keeps the address: in a scratch place.
+        QStandardPaths::setTestModeEnabled(true);
+        QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, m_settings.path());
+        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settings.path());
+        QCoreApplication::setOrganizationName(QStringLiteral("SlewTests"));
         slew::ui::applyOperatorTheme(*static_cast<QApplication *>(QCoreApplication::instance())); // as slew --remote draws it
         QString error;
         QVERIFY2(m_broker.start(&error), qPrintable(error));
@@ -193,6 +203,35 @@ private slots:
         delete network;
     }
 
+    void theOpenDialogChecksTheAddress()
+    {
+        // File → Open remote station…: a bad address is said and opens nothing.
+        slew::ui::RemoteConnectDialog dialog;
+        dialog.addressField()->setText(QStringLiteral("mqtt://operator@192.0.2.1:1883/mast"));
+        QVERIFY(!dialog.openRemote());
+        QVERIFY2(dialog.problem().contains(QStringLiteral("in the clear")), qPrintable(dialog.problem()));
+        dialog.addressField()->setText(QStringLiteral("mqtts://operator:secret@localhost/mast"));
+        QVERIFY(!dialog.openRemote());
+        QVERIFY2(dialog.problem().contains(QStringLiteral("no password in the address")), qPrintable(dialog.problem()));
+        // A good one opens the station's window, and is kept; the password is not.
+        dialog.addressField()->setText(m_broker.url(QStringLiteral("operator"), QStringLiteral("mast")));
+        dialog.passwordField()->setText(MosquittoBroker::password(QStringLiteral("operator")));
+        QVERIFY2(dialog.openRemote(), qPrintable(dialog.problem()));
+        RemoteStationWindow *opened = nullptr;
+        for (QWidget *w : QApplication::topLevelWidgets()) {
+            if (auto *r = qobject_cast<RemoteStationWindow *>(w))
+                opened = r;
+        }
+        QVERIFY(opened);
+        QTRY_VERIFY_WITH_TIMEOUT(opened->station()->isLive(), 20000);
+        QCOMPARE(QSettings().value(QLatin1String(slew::ui::RemoteConnectDialog::kAddressKey)).toString(),
+                 m_broker.url(QStringLiteral("operator"), QStringLiteral("mast")));
+        for (const QString &key : QSettings().allKeys())
+            QVERIFY2(!QSettings().value(key).toString().contains(MosquittoBroker::password(QStringLiteral("operator"))),
+                     qPrintable(key));
+        delete opened;
+    }
+
     void cleanupTestCase()
     {
         QCOMPARE(m_mast->stop(SIGTERM), 0);
@@ -230,6 +269,7 @@ private:
         QVERIFY(window->grab().save(QStringLiteral("screenshots/") + file));
     }
 
+    QTemporaryDir m_settings;
     MosquittoBroker m_broker{{QStringLiteral("mast"), QStringLiteral("dish2")}};
     std::unique_ptr<StationProcess> m_mast, m_dish;
 };
