@@ -12,6 +12,9 @@
 #include "slew_headless.h"
 
 #include "station/radiooptions.h"
+#include "station/remoteoperation.h"
+#include "remote/brokeraddress.h"
+#include "remote/brokerpassword.h"
 #include "station/stationservice.h"
 #include "bridge/rotctldserver.h"
 #include "protocol/dialect.h"
@@ -29,6 +32,7 @@
 #include <cstdio>
 #include <cstring>
 #include <functional>
+#include <string_view>
 
 namespace {
 
@@ -146,6 +150,53 @@ std::optional<slew::station::RadioOptions> readRadio(const QCommandLineParser &p
     return radio;
 }
 
+// --mqtt and what goes with it: the broker, the station's name on it, the
+// password (from a file or the environment, never the command line), and
+// the satellites a remote `track` may name (--tle).
+std::optional<slew::station::RemoteOptions> readRemote(const QCommandLineParser &parser, const OptionLabel &label,
+                                                       QString *error)
+{
+    const QString mqtt = QStringLiteral("mqtt"), name = QStringLiteral("station-name"),
+                  passwordFile = QStringLiteral("mqtt-password-file"), tle = QStringLiteral("tle");
+    slew::station::RemoteOptions remote;
+    QString why;
+    const auto broker = slew::remote::parseBrokerAddress(parser.value(mqtt), &why);
+    if (!broker) {
+        *error = QStringLiteral("%1: %2").arg(label(mqtt), why);
+        return std::nullopt;
+    }
+    if (!broker->stationName.isEmpty()) {
+        *error = QStringLiteral("%1: the station's name goes in --station-name, not in the broker's address")
+                     .arg(label(mqtt));
+        return std::nullopt;
+    }
+    remote.broker = *broker;
+    if (!parser.isSet(name)) {
+        *error = QStringLiteral("%1 needs --station-name NAME: the station's topic level on the broker").arg(label(mqtt));
+        return std::nullopt;
+    }
+    remote.stationName = parser.value(name).trimmed();
+    if (const QString bad = slew::remote::checkStationName(remote.stationName); !bad.isEmpty()) {
+        *error = QStringLiteral("%1: %2").arg(label(name), bad);
+        return std::nullopt;
+    }
+    const auto password = slew::remote::brokerPassword(parser.value(passwordFile), &why);
+    if (!password) {
+        *error = QStringLiteral("%1: %2").arg(label(passwordFile), why);
+        return std::nullopt;
+    }
+    remote.password = *password;
+    if (parser.isSet(tle)) {
+        const slew::sky::TleFile file = slew::sky::readTleFile(parser.value(tle));
+        if (!file.error.isEmpty()) {
+            *error = QStringLiteral("%1: %2").arg(label(tle), file.error);
+            return std::nullopt;
+        }
+        remote.elementSets = file.sets;
+    }
+    return remote;
+}
+
 // The radio's options, each of which goes with --radio.
 const char *const kRadioOptions[] = {"downlink",        "uplink",         "downlink-mode", "uplink-mode",
                                      "doppler",         "uplink-follows", "downlink-offset", "uplink-offset",
@@ -260,8 +311,11 @@ int runHeadless(int argc, char *argv[])
         config.track = *track;
     } else {
         for (const char *option : {"tle", "min-el", "guard", "clock-start", "clock-rate"}) {
-            if (parser.isSet(QString::fromLatin1(option)))
-                return fail(QStringLiteral("%1 goes with --track").arg(label(QString::fromLatin1(option))));
+            // With --mqtt, --tle names the satellites a remote `track` may ask for.
+            if (parser.isSet(QString::fromLatin1(option)) && !(option == std::string_view("tle") && parser.isSet(QStringLiteral("mqtt"))))
+                return fail(QStringLiteral("%1 goes with --track%2")
+                                .arg(label(QString::fromLatin1(option)),
+                                     option == std::string_view("tle") ? QStringLiteral(" or --mqtt") : QString()));
         }
     }
 
@@ -289,6 +343,17 @@ int runHeadless(int argc, char *argv[])
         return fail(error);
     config.passRecords = records->path;
     config.passKeepDays = records->keepDays;
+    if (parser.isSet(QStringLiteral("mqtt"))) {
+        auto remote = readRemote(parser, label, &error);
+        if (!remote)
+            return fail(error);
+        config.remote = *remote;
+    } else {
+        for (const char *option : {"station-name", "mqtt-password-file"}) {
+            if (parser.isSet(QString::fromLatin1(option)))
+                return fail(QStringLiteral("%1 goes with --mqtt").arg(label(QString::fromLatin1(option))));
+        }
+    }
 
     slew::station::StationService station;
     if (!station.start(config, &error))

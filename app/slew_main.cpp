@@ -11,6 +11,7 @@
 #include "slew_headless.h"
 #include "slew_schedule.h"
 #include "slew_passreport.h"
+#include "slew_remote.h"
 #include "slew_sky.h"
 #include "slew_tune.h"
 #include "rotctldpanel.h"
@@ -152,6 +153,9 @@ int main(int argc, char *argv[])
         return runUpdateElements(argc, argv);
     if (wantsUpdateTransponders(argc, argv))
         return runUpdateTransponders(argc, argv);
+    // And a station that lives on a broker: no local Station at all.
+    if (wantsRemote(argc, argv))
+        return runRemote(argc, argv);
     // A screenshot, --help and --version need no display: choose the
     // offscreen platform before the application object picks one.
     for (int i = 1; i < argc; ++i) {

@@ -48,6 +48,7 @@ grep -qE '^Depends:.*libqt6charts6' "$fields" || fail "Depends lacks Qt Charts"
 grep -qE '^Depends:.*libqt6serialport6' "$fields" || fail "Depends lacks Qt SerialPort"
 grep -qE '^Depends:.*libhamlib4' "$fields" || fail "Depends lacks libhamlib, which the in-process radio link uses"
 grep -qE '^Depends:.*libqt6sql6-sqlite' "$fields" || fail "Depends lacks Qt's SQLite driver, which the pass records use"
+grep -qE '^Depends:.*libmosquitto1' "$fields" || fail "Depends lacks libmosquitto, which remote operation uses"
 grep -q 'License: GPL-3.0-or-later' "$fields" || fail "the description does not state the licence"
 grep -q '^License: GPL-3.0+' "$root/usr/share/doc/slew/copyright" || fail "no copyright file with the licence"
 
@@ -57,6 +58,11 @@ unit=$root/lib/systemd/system/slew-station@.service
 grep -qx 'ExecStart=/usr/bin/slew --headless --config /etc/slew/%i.conf' "$unit" || fail "unexpected ExecStart"
 [ -f "$root/etc/slew/example.conf" ] || fail "no /etc/slew/example.conf"
 grep -qx '/etc/slew/example.conf' "$work/control/conffiles" || fail "example.conf is not a conffile"
+# The broker example ships as an example: nothing in /etc/mosquitto.
+for example in slew.conf slew.acl; do
+    [ -f "$root/usr/share/doc/slew/examples/mosquitto/$example" ] || fail "no broker example $example"
+done
+[ ! -e "$root/etc/mosquitto" ] || fail "the package enables a broker configuration"
 for script in postinst prerm postrm; do
     [ -x "$work/control/$script" ] || fail "no $script"
 done

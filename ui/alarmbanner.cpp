@@ -12,6 +12,9 @@ AlarmBanner::AlarmBanner(QWidget *parent) : QWidget(parent)
     m_text = new QLabel;
     m_text->setObjectName(QStringLiteral("alarmText"));
     m_text->setWordWrap(true);
+    // Alarm text comes from controllers and, in a remote window, from the
+    // broker: shown as it is, never read as rich text.
+    m_text->setTextFormat(Qt::PlainText);
     auto *icon = new QLabel(QStringLiteral("⚠"));
     QFont f = icon->font();
     f.setPointSizeF(f.pointSizeF() * 1.5);

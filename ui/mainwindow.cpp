@@ -33,6 +33,7 @@
 #include "alignmentpanel.h"
 #include "operatoractions.h"
 #include "windowstate.h"
+#include "remoteconnectdialog.h"
 
 #include "bridge/rotctldserver.h"
 #include "station/alarmmonitor.h"
@@ -284,6 +285,15 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
 
 void MainWindow::buildMenus()
 {
+    // A station that lives on a broker opens in a window of its own.
+    QMenu *file = menuBar()->addMenu(tr("&File"));
+    QAction *openRemote = file->addAction(tr("Open &remote station…"));
+    openRemote->setObjectName(QStringLiteral("actionOpenRemote"));
+    connect(openRemote, &QAction::triggered, this, [this] {
+        auto *dialog = new RemoteConnectDialog(this);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        dialog->open(); // window-modal, the event loop keeps running
+    });
     QMenu *rotator = menuBar()->addMenu(tr("&Rotator"));
     QAction *wizard = rotator->addAction(tr("Setup and tuning &wizard…"));
     wizard->setObjectName(QStringLiteral("actionSetupWizard"));

@@ -179,7 +179,8 @@ void PolarPlotWidget::paintEvent(QPaintEvent *)
         paintPassOverlay(p, *m_pass, [this](double az, double el) { return pointFor(az, el); });
     paintTrail(p);
     paintMarkers(p);
-    paintLegend(p);
+    if (m_legendShown)
+        paintLegend(p);
 }
 
 void PolarPlotWidget::paintGrid(QPainter &p) const

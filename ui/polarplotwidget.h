@@ -48,6 +48,8 @@ public:
     // What hides the sky at the station (the place's horizon mask); none: flat.
     void setHorizonMask(std::shared_ptr<const sky::HorizonMask> mask);
     const std::shared_ptr<const sky::HorizonMask> &horizonMask() const { return m_horizon; }
+    // A small plot among many (the station network) leaves the key out.
+    void setLegendShown(bool shown) { m_legendShown = shown; update(); }
 
     bool isStale() const { return m_stale; }
     std::optional<QPointF> actual() const { return m_actual; }
@@ -83,6 +85,7 @@ private:
     model::RotatorLimits m_limits;
     std::optional<QPointF> m_park, m_actual, m_commanded, m_target, m_pending, m_drag, m_hover;
     bool m_stale = true;
+    bool m_legendShown = true;
     std::deque<QPointF> m_trail; // az, el; oldest first
     std::optional<PassOverlay> m_pass;
     std::shared_ptr<const sky::HorizonMask> m_horizon;

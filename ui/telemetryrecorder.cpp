@@ -13,6 +13,8 @@ TelemetryRecorder::TelemetryRecorder(RotatorSession *session, QObject *parent) :
     for (int s = 0; s < SeriesCount; ++s)
         m_history.addSeries(seriesLabel(Series(s)));
     m_lastValue.fill(session::kUnknown);
+    if (!session)
+        return;
 
     connect(session, &RotatorSession::positionChanged, this, [this](double az, double el, bool stale) {
         if (stale)
@@ -103,6 +105,38 @@ void TelemetryRecorder::onTelemetry(const session::Telemetry &t)
     record(AzLoad, now, t.azLoad, false);
     record(ElLoad, now, t.elLoad, false);
     record(Temperature, now, t.temperature, false);
+    emit recorded();
+}
+
+} // namespace slew::ui
+
+namespace slew::ui {
+
+void TelemetryRecorder::recordRemote(const remote::TelemetrySample &s)
+{
+    const qint64 now = QDateTime::currentMSecsSinceEpoch();
+    const auto put = [&](Series series, const std::optional<double> &value, bool onlyOnChange = false) {
+        if (value)
+            record(series, now, *value, onlyOnChange);
+    };
+    put(AzActual, s.az);
+    put(ElActual, s.el);
+    put(AzCommanded, s.commandedAz);
+    put(ElCommanded, s.commandedEl);
+    put(AzVelocity, s.azSpeed);
+    put(ElVelocity, s.elSpeed);
+    put(AzLoad, s.azLoad);
+    put(ElLoad, s.elLoad);
+    put(Temperature, s.temperature);
+    if (s.gs) {
+        const session::StatusWord word{quint16(*s.gs), true};
+        record(AzStatus, now, word.azimuth(), true);
+        record(ElStatus, now, word.elevation(), true);
+    }
+    put(ErrorFlags, s.ge ? std::optional<double>(*s.ge) : std::nullopt, true);
+    put(PointingError, s.pointingError);
+    put(ReceiveDopplerError, s.dopplerRxError);
+    put(TransmitDopplerError, s.dopplerTxError);
     emit recorded();
 }
 

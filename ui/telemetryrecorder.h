@@ -6,6 +6,7 @@
 // Recording goes on while the charts are paused.
 
 #include "model/telemetryhistory.h"
+#include "remote/stationtelemetry.h"
 #include "session/rotatorsession.h"
 
 #include <QObject>
@@ -28,6 +29,8 @@ public:
     // so a flat line reaches the present.
     static constexpr qint64 kRepeatMs = 1000;
 
+    // With no session, it records only what it is handed: a remote
+    // station's telemetry (recordRemote).
     explicit TelemetryRecorder(session::RotatorSession *session, QObject *parent = nullptr);
 
     const model::TelemetryHistory &history() const { return m_history; }
@@ -46,6 +49,9 @@ public slots:
     // receive and the transmit path, in hertz (station/dopplerradio.h's
     // measured(): at most five a second); NaN for a path not tuned.
     void recordDopplerError(double receiveHz, double transmitHz);
+    // One sample a station published on the broker, at the time it arrived
+    // (the charts' clock is this machine's).
+    void recordRemote(const slew::remote::TelemetrySample &sample);
 
 signals:
     void recorded(); // something was added

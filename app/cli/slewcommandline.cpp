@@ -173,7 +173,8 @@ ProgramMode makeHeadlessMode()
                                    "[--profile FILE] [--limits AZMIN:AZMAX,ELMIN:ELMAX] [--rotctld-listen ADDRESS:PORT] "
                                    "[--rotctld-allow ADDRESSES] [--rotors LIST] [--qth STATION --tle FILE "
                                    "--track CATNR|NAME|sun|moon|azel:AZ,EL|radec:RA,DEC [--track ...] [--horizon FILE] [--min-el DEG] [--guard S] [--clock-start ISO8601] [--clock-rate N] "
-                                   "[--radio URI (--downlink FREQ [--uplink FREQ] | --transponders FILE [--transponder NAME])]]");
+                                   "[--radio URI (--downlink FREQ [--uplink FREQ] | --transponders FILE [--transponder NAME])]] "
+                                   "[--mqtt mqtts://USER@HOST:8883 --station-name NAME [--mqtt-password-file FILE]]");
     mode.description = QStringLiteral(
         "Runs Slew with no window and no display, as a station service: it keeps the link to the rotator open "
         "and reconnects after a loss, serves the rotctld protocol to trackers, and logs one line per event on "
@@ -186,9 +187,9 @@ ProgramMode makeHeadlessMode()
          QStringLiteral("Read settings from FILE, one `name = value` a line, where name is one of connect, dialect, "
                         "profile, limits, rotctld-listen, rotctld-allow, rotctld-max-clients, rotors, qth, horizon, tle, track (a line a target), min-el, guard, and the radio's "
                         "radio, downlink, uplink, downlink-mode, uplink-mode, doppler, uplink-follows, downlink-offset, "
-                        "uplink-offset, transponders, transponder, transponder-invert, radio-restore, radio-vfos, and pass-db, "
-                        "pass-keep-days. Options on the "
-                        "command line win over the file.")},
+                        "uplink-offset, transponders, transponder, transponder-invert, radio-restore, radio-vfos, "
+                        "pass-db, pass-keep-days, and the broker's mqtt, station-name, mqtt-password-file. Options on "
+                        "the command line win over the file.")},
         connectOption(QStringLiteral("The rotator's link URI (default sim:, the built-in simulator).")),
         dialectOption(),
         profileOption(),
@@ -315,6 +316,23 @@ ProgramMode makeHeadlessMode()
                                     "service at start; the default one is skipped with a log line."),
                      true),
         passKeepDaysOption(true),
+        {{QStringLiteral("mqtt")},
+         QStringLiteral("url"),
+         QStringLiteral("Publish the station on an MQTT broker and obey commands from it (docs/remote.md): "
+                        "mqtts://USER@HOST:8883?cafile=CA.pem, TLS checked against the CA file (or the system's "
+                        "authorities). Plain mqtt:// only to a broker on this machine. Under slew/NAME/: state "
+                        "and online (retained), telemetry, command and reply. The broker's access list decides who "
+                        "may watch and who may command. Needs --station-name."),
+         true},
+        {{QStringLiteral("station-name")},
+         QStringLiteral("name"),
+         QStringLiteral("With --mqtt: the station's name on the broker, its topic level (letters, digits, -, _ and .)."),
+         true},
+        {{QStringLiteral("mqtt-password-file")},
+         QStringLiteral("file"),
+         QStringLiteral("With --mqtt: the broker password is the first line of FILE, which other users may not "
+                        "read. Without it, the environment variable SLEW_MQTT_PASSWORD; never on the command line."),
+         true},
     };
     return mode;
 }
@@ -522,6 +540,38 @@ ProgramMode makeUpdateTranspondersMode()
     return mode;
 }
 
+ProgramMode makeRemoteMode()
+{
+    ProgramMode mode;
+    mode.title = QStringLiteral("A station on a broker");
+    mode.synopsis = QStringLiteral("slew --remote mqtts://USER@HOST:8883[/NAME][?cafile=CA.pem] [--mqtt-password-file FILE] "
+                                   "[--screenshot FILE.png [--settle-ms MS]]");
+    mode.description = QStringLiteral(
+        "Opens a station that a station service publishes on an MQTT broker (slew --headless --mqtt): with /NAME, "
+        "that station's window (its plot, position, alarms and telemetry, go-to, jog, Stop, Park, Home and "
+        "tracking), which says plainly that it is remote and how old the last state is; without a name, the "
+        "station network: every station the broker knows, each on a small plot. The broker's access list decides "
+        "whether this account may command or only watch. The password comes from --mqtt-password-file or "
+        "SLEW_MQTT_PASSWORD, never the command line. See docs/remote.md.");
+    mode.options = {
+        {{QStringLiteral("remote")},
+         QStringLiteral("url"),
+         QStringLiteral("The broker and, after a slash, the station: mqtts://USER@HOST:8883/NAME?cafile=CA.pem. Plain "
+                        "mqtt:// only to a broker on this machine.")},
+        {{QStringLiteral("mqtt-password-file")},
+         QStringLiteral("file"),
+         QStringLiteral("The broker password is the first line of FILE, which other users may not read; without "
+                        "it, SLEW_MQTT_PASSWORD.")},
+        {{QStringLiteral("screenshot")},
+         QStringLiteral("FILE.png"),
+         QStringLiteral("Render the window to a PNG after the settle time, then exit. Needs no display.")},
+        {{QStringLiteral("settle-ms")},
+         QStringLiteral("ms"),
+         QStringLiteral("How long to run before the screenshot (default 3000).")},
+    };
+    return mode;
+}
+
 ProgramMode makeSimMode()
 {
     ProgramMode mode;
@@ -589,7 +639,7 @@ const ProgramDescription &slewProgram()
             "against the rotator's limits before a byte is sent.");
         p.modes = {makeWindowMode(), makeHeadlessMode(), makeTuneMode(), makePassesMode(), makeWhereMode(),
                    makeUpdateElementsMode(), makeUpdateTranspondersMode(), makeScheduleMode(),
-                   makePassReportMode()};
+                   makePassReportMode(), makeRemoteMode()};
         p.sections = {
             {QStringLiteral("Links"),
              QStringLiteral("A link is named by a URI, the same on the command line, in the window and in profiles:\n"
@@ -650,7 +700,8 @@ const ProgramDescription &slewProgram()
                             "  slew --where moon --qth 55.69,12.63,20\n"
                             "  slew --connect sim: --qth JO65hq --clock-start 2026-11-25T12:00:00Z --clock-rate 5\n"
                             "  slew --update-elements 'https://celestrak.org/NORAD/elements/gp.php?GROUP=amateur&FORMAT=tle'\n"
-                            "  slew --pass-report 12 --out pass-12.png")},
+                            "  slew --pass-report 12 --out pass-12.png\n"
+                            "  slew --remote 'mqtts://alice@broker.example:8883/mast?cafile=/etc/slew/broker-ca.pem'")},
             {QStringLiteral("See also"), QStringLiteral("slew-sim(1), ") + seeAlso()},
         };
         return p;
@@ -701,6 +752,11 @@ const ProgramMode &slewScheduleMode()
 const ProgramMode &slewPassReportMode()
 {
     return slewProgram().modes.at(8);
+}
+
+const ProgramMode &slewRemoteMode()
+{
+    return slewProgram().modes.at(9);
 }
 
 const ProgramDescription &slewSimProgram()

@@ -20,6 +20,7 @@ const ProgramMode &slewUpdateElementsMode();
 const ProgramMode &slewUpdateTranspondersMode();
 const ProgramMode &slewScheduleMode();
 const ProgramMode &slewPassReportMode();
+const ProgramMode &slewRemoteMode();
 
 // slew-sim: the simulated rotator as a server.
 const ProgramDescription &slewSimProgram();

@@ -5,6 +5,7 @@
 // for the options whose syntax is the station's own.
 
 #include "radiooptions.h"
+#include "remoteoperation.h"
 
 #include "model/rotatorlimits.h"
 #include "model/rotatorprofile.h"
@@ -52,6 +53,9 @@ struct ServiceConfig {
     // cannot be used; a file named here that cannot be used stops the start.
     QString passRecords;
     int passKeepDays = 90; // --pass-keep-days
+    // --mqtt and what goes with it: the station published and commanded
+    // over an MQTT broker (remoteoperation.h).
+    std::optional<RemoteOptions> remote;
 };
 
 // "AZMIN:AZMAX,ELMIN:ELMAX" (`--limits 0:450,0:180`) as limits, checked;

@@ -5,6 +5,7 @@
 #include "dopplerradio.h"
 #include "schedulerunner.h"
 #include "passrecorder.h"
+#include "remoteoperation.h"
 
 #include "bridge/rotctldserver.h"
 #include "radio/transpondersources.h"
@@ -90,6 +91,7 @@ Station::~Station()
 {
     if (m_schedule)
         m_schedule->stop(tr("the station is closing"));
+    m_remote.reset(); // it follows every other part
     if (m_runner && m_runner->isRunning())
         m_runner->stop(tr("the station is closing"));
     m_recorder.reset(); // it follows the radio and the runner
@@ -201,6 +203,10 @@ session::CommandResult Station::stop()
         if (rotor.server->isListening())
             rotor.server->holdRemote();
     }
+    if (!m_operatorHolds) {
+        m_operatorHolds = true;
+        emit operatorHoldChanged(true);
+    }
     return result;
 }
 
@@ -208,6 +214,25 @@ void Station::handControlBack()
 {
     for (Rotor &rotor : m_rotors)
         rotor.server->releaseRemote();
+    if (m_operatorHolds) {
+        m_operatorHolds = false;
+        emit operatorHoldChanged(false);
+    }
+}
+
+bool Station::startRemote(const RemoteOptions &options, QString *error)
+{
+    if (m_remote)
+        return true;
+    if (m_rotors.empty()) {
+        *error = m_error;
+        return false;
+    }
+    auto remote = std::make_unique<RemoteOperation>(this, options);
+    if (!remote->start(error))
+        return false;
+    m_remote = std::move(remote);
+    return true;
 }
 
 QString Station::otherSteering() const
@@ -320,22 +345,29 @@ void Station::shutdown(const QString &why)
     for (Rotor &rotor : m_rotors)
         rotor.server->close();
     const QList<RotatorSession *> sessions = everySession();
-    m_stillStopping = int(sessions.size());
-    if (m_stillStopping == 0) {
-        emit shutDown();
-        return;
+    // Every rotor's stop, and the remote's goodbye (its last state and
+    // online = false), one more so none can end it before all have begun.
+    m_stillStopping = int(sessions.size()) + 1;
+    if (m_remote) {
+        ++m_stillStopping;
+        connect(m_remote.get(), &RemoteOperation::closed, this, &Station::stoppedOne, Qt::SingleShotConnection);
+        m_remote->close(why);
     }
     for (RotatorSession *s : sessions) {
         s->reportHeldBack(); // the journal gets the count of what it was spared
-        const bool sent = session::stopThenCall(*s, this, [this] {
-            if (--m_stillStopping == 0)
-                emit shutDown();
-        });
+        const bool sent = session::stopThenCall(*s, this, [this] { stoppedOne(); });
         for (const Rotor &rotor : m_rotors) {
             if (sent && rotor.session.get() == s)
                 emit exitStopSent(rotor.number);
         }
     }
+    stoppedOne();
+}
+
+void Station::stoppedOne()
+{
+    if (--m_stillStopping == 0)
+        emit shutDown();
 }
 
 } // namespace slew::station

@@ -75,6 +75,8 @@ class DopplerRadio;
 class ScheduleRunner;
 struct ScheduleOptions;
 class PassRecorder;
+class RemoteOperation;
+struct RemoteOptions;
 
 struct StationOptions {
     // The rotors of a multi-rotor controller to serve, each with a session,
@@ -136,6 +138,9 @@ public:
     // into them (null for a station with no rotor).
     records::PassRecordStore *passRecords() const { return m_records.get(); }
     PassRecorder *passRecorder() const { return m_recorder.get(); }
+    // The station published and commanded over MQTT, once startRemote()
+    // has made it (remoteoperation.h); null before.
+    RemoteOperation *remote() const { return m_remote.get(); }
 
     // --- Intent -------------------------------------------------------------
     // Opens every rotor's link (rotorUri()).
@@ -149,6 +154,13 @@ public:
     session::CommandResult stop();
     // Trackers on the rotctld port may steer again after the operator's Stop.
     void handControlBack();
+    // Between the operator's Stop and handControlBack(): remote control
+    // (trackers, commands over MQTT) is held off.
+    bool operatorHolds() const { return m_operatorHolds; }
+    // Publishes the station under its name and obeys commands from the
+    // broker, under the same rules as every other face (remoteoperation.h).
+    // False, with *error, when it cannot start; said again, it does nothing.
+    bool startRemote(const RemoteOptions &options, QString *error);
     // Follows every pass of `target` above `minElevationDeg` with the first
     // rotor, by the station's clock. Empty when started, else why not: the
     // place is not set, or a remote tracker steers the rotator.
@@ -186,6 +198,7 @@ public:
 
 signals:
     void placeChanged(const std::optional<slew::sky::Station> &place);
+    void operatorHoldChanged(bool holds);
     // Slew's own tracking holds the first rotor, or no longer does.
     void trackingChanged(bool holdsRotator);
     // shutdown() sent rotor `number`'s stop (0: the one rotor); not said
@@ -219,9 +232,12 @@ private:
     std::unique_ptr<ScheduleRunner> m_schedule; // after the runner it drives
     std::unique_ptr<records::PassRecordStore> m_records;
     std::unique_ptr<PassRecorder> m_recorder; // after the store it writes to and the parts it follows
+    std::unique_ptr<RemoteOperation> m_remote; // after every part it publishes
     std::optional<sky::Station> m_place;
     bool m_shuttingDown = false;
+    bool m_operatorHolds = false;
     int m_stillStopping = 0;
+    void stoppedOne(); // a rotor's stop (or the remote's goodbye) has left
 };
 
 } // namespace slew::station

@@ -3,6 +3,7 @@
 
 #include "dopplerradio.h"
 #include "schedulerunner.h"
+#include "remoteoperation.h"
 #include "station.h"
 #include "stationlog.h"
 
@@ -132,6 +133,15 @@ bool StationService::start(const ServiceConfig &config, QString *error)
                      + tr("connecting to %1").arg(m_station->rotorUri(i)));
     }
     m_station->connectRotators();
+    if (config.remote) {
+        if (!m_station->startRemote(*config.remote, error)) {
+            *error = tr("--mqtt: %1").arg(*error);
+            return false;
+        }
+        connect(m_station->remote(), &RemoteOperation::logLine, m_log.get(), [this](const QString &line) { m_log->write(line); });
+        m_log->write(tr("remote: connecting to %1 as station %2")
+                         .arg(config.remote->broker.display(), config.remote->stationName));
+    }
     return true;
 }
 

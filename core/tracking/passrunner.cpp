@@ -131,7 +131,8 @@ void PassRunner::stop(const QString &why)
     cancelPlanning();
     ++m_generation;
     m_retry.stop();
-    m_tracker.stopTracking(why);
+    m_tracker.stopTracking(why); // what follows the end (the pass's record) still sees the pass
+    m_pass.reset();
 }
 
 void PassRunner::startAfresh(const QString &why)
@@ -222,6 +223,7 @@ void PassRunner::onPlanned(const std::optional<PlannedPass> &next, const Rotator
         return;
     }
     const sky::Pass &pass = next->pass;
+    m_pass = pass;
     if (m_target.isFixed())
         emit logLine(tr("holding %1 until %2").arg(m_target.name(), isoTime(pass.los.julian)));
     else

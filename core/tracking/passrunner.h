@@ -69,7 +69,8 @@ public:
     const sky::Station &station() const { return m_station; }
     int passesDone() const { return m_passesDone; }
     // The pass handed to the tracker last (its AOS, TCA and LOS as
-    // predicted), so what is recorded of it has its times; none before.
+    // predicted), so what is recorded of it has its times and a station can
+    // publish it; none before, and none after stop().
     const std::optional<sky::Pass> &pass() const { return m_pass; }
 
     // How one pass of startOne() ended.

@@ -107,6 +107,7 @@ void StationConfigTest::manualPagesMatchHelp_data()
     QTest::newRow("window") << slew << QStringList{"--help"} << "slew.1";
     QTest::newRow("headless") << slew << QStringList{"--headless", "--help"} << "slew.1";
     QTest::newRow("tune") << slew << QStringList{"--tune", "sim:", "--help"} << "slew.1";
+    QTest::newRow("remote") << slew << QStringList{"--remote", "mqtt://localhost", "--help"} << "slew.1";
     QTest::newRow("slew-sim") << sim << QStringList{"--help"} << "slew-sim.1";
     QTest::newRow("slewctl") << qEnvironmentVariable("SLEWCTL_BIN") << QStringList{"--help"} << "slewctl.1";
 }

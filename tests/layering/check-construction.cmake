@@ -16,7 +16,8 @@ cmake_minimum_required(VERSION 3.25)
 set(parts RotatorSession RotctldServer PassRunner Tracker AlarmMonitor TleSources ControllerRotors
           SharedLine StationClock SimulatorPace MoveWatch ConsoleRunner TransponderSources
           DopplerRadio DopplerSteering RadioLink RigctldRadioLink HamlibRadioLink ControllerRadioLink
-          PassRecordStore PassRecorder)
+          PassRecordStore PassRecorder
+          RemoteOperation StatePublisher RemoteCommands RemoteJog MqttClient)
 # Functions that make a part; the part each makes.
 set(factories "makeRadioLink=RadioLink")
 # file (relative to ROOT) = the parts it may make

@@ -26,10 +26,14 @@ set(allowed_tracking "session;model;protocol;transport;sky;input")
 set(allowed_radio "tracking;session;sky;model;protocol;transport;input")
 # records: the pass records' database; made of values the station hands it.
 set(allowed_records "input")
-# station: one ground station's parts and their rules; the faces (ui, app) sit on it.
+# remote: MQTT (the broker, the client, the messages) and the remote station a
+# window shows; it knows values (positions, limits), never the Station, which
+# sits above it and publishes itself through it (station/remoteoperation.h).
+set(allowed_remote "session;model;protocol;transport;sky;input")
 set(allowed_schedule "tracking;sky;model;input")
-set(allowed_station "schedule;records;radio;bridge;tracking;session;sky;model;protocol;transport;input")
-set(areas input protocol transport sky model session sim tuning bridge console tracking radio records schedule station)
+# station: one ground station's parts and their rules; the faces (ui, app) sit on it.
+set(allowed_station "schedule;records;remote;radio;bridge;tracking;session;sky;model;protocol;transport;input")
+set(areas input protocol transport sky model session sim tuning bridge console tracking radio records schedule remote station)
 
 file(GLOB_RECURSE files RELATIVE ${CORE} ${CORE}/*.h ${CORE}/*.cpp)
 set(faults "")

@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Reading a JSON message from the broker under the input rules: one object
+// of bounded size; every field of the right type, numbers finite and in
+// range, text bounded and free of control characters; a field nobody
+// asked for is an error too. The first fault is kept, naming its field;
+// the caller drops the whole message when there is one. Pure code.
+
+#include "input/finitenumber.h"
+
+#include <QJsonObject>
+#include <QSet>
+#include <QString>
+
+#include <optional>
+
+namespace slew::remote {
+
+class JsonFields {
+public:
+    // The object `payload` holds, or nothing with *error (not JSON, not an
+    // object, larger than maxBytes).
+    static std::optional<JsonFields> parse(const QByteArray &payload, qsizetype maxBytes, QString *error);
+    explicit JsonFields(QJsonObject object) : m_object(std::move(object)) {}
+
+    bool has(const QString &key) const { return m_object.contains(key); }
+    // A missing field gives nothing, an error only when `required`.
+    std::optional<double> number(const QString &key, const input::NumberRange &range, bool required = false);
+    std::optional<qint64> whole(const QString &key, qint64 min, qint64 max, bool required = false);
+    std::optional<QString> text(const QString &key, int maxChars, bool required = false);
+    std::optional<bool> flag(const QString &key, bool required = false);
+    // An array of texts, at most maxItems of at most maxChars each.
+    std::optional<QStringList> texts(const QString &key, int maxItems, int maxChars, bool required = false);
+    // Fails on any field no call above has named.
+    bool noOthers();
+
+    bool ok() const { return m_error.isEmpty(); }
+    QString error() const { return m_error; }
+    void fail(const QString &error);
+
+    // Text safe to show: no control characters, at most maxChars.
+    static bool isShowable(const QString &text, int maxChars);
+
+private:
+    QJsonValue take(const QString &key, bool required);
+
+    QJsonObject m_object;
+    QSet<QString> m_named;
+    QString m_error;
+};
+
+} // namespace slew::remote

@@ -1,0 +1,321 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "mosquittothread.h"
+
+#include "mqttclient.h"
+
+#include <QMetaObject>
+
+#include <mosquitto.h>
+#include <mqtt_protocol.h>
+
+#include <chrono>
+#include <cstring>
+
+namespace slew::remote {
+namespace {
+
+void initialiseLibraryOnce()
+{
+    // Never cleaned up: a thread stuck in a name lookup may still use it as
+    // the process ends.
+    static std::once_flag once;
+    std::call_once(once, [] { mosquitto_lib_init(); });
+}
+
+QString errorText(int rc)
+{
+    if (rc == MOSQ_ERR_ERRNO)
+        return QString::fromLocal8Bit(std::strerror(errno));
+    if (rc == MOSQ_ERR_TLS)
+        return QStringLiteral("the TLS handshake failed (is the broker's certificate signed by the cafile's "
+                              "authority, and issued for this host name?)");
+    return QString::fromUtf8(mosquitto_strerror(rc));
+}
+
+} // namespace
+
+int reconnectDelaySeconds(int attempt)
+{
+    static constexpr int kDelays[] = {1, 2, 5, 10, 30};
+    constexpr int count = int(std::size(kDelays));
+    return kDelays[attempt < 0 ? 0 : (attempt < count ? attempt : count - 1)];
+}
+
+MosquittoThread::MosquittoThread(const MqttSettings &settings) : m_settings(settings) {}
+
+MosquittoThread::~MosquittoThread()
+{
+    if (m_thread.joinable()) {
+        if (m_thread.get_id() == std::this_thread::get_id())
+            m_thread.detach(); // the thread's own last reference, as it ends
+        else
+            m_thread.join();
+    }
+    if (m_mosq)
+        mosquitto_destroy(m_mosq);
+}
+
+std::shared_ptr<MosquittoThread> MosquittoThread::start(const MqttSettings &settings, MqttClient *receiver,
+                                                        QString *error)
+{
+    initialiseLibraryOnce();
+    std::shared_ptr<MosquittoThread> self(new MosquittoThread(settings));
+    if (!self->configure(error))
+        return nullptr;
+    self->m_receiver = receiver;
+    // The thread holds the object until it ends, however long the owner lives.
+    self->m_thread = std::thread([keep = self] { keep->run(); });
+    return self;
+}
+
+bool MosquittoThread::configure(QString *error)
+{
+    const QByteArray id = m_settings.clientId.toUtf8();
+    m_mosq = mosquitto_new(id.isEmpty() ? nullptr : id.constData(), true, this);
+    if (!m_mosq) {
+        *error = QStringLiteral("libmosquitto could not make a client: %1").arg(errorText(MOSQ_ERR_ERRNO));
+        return false;
+    }
+    mosquitto_threaded_set(m_mosq, true);
+    mosquitto_int_option(m_mosq, MOSQ_OPT_PROTOCOL_VERSION, MQTT_PROTOCOL_V5);
+    const BrokerAddress &b = m_settings.broker;
+    int rc = MOSQ_ERR_SUCCESS;
+    if (!b.user.isEmpty() || !m_settings.password.isEmpty()) {
+        const QByteArray user = b.user.toUtf8(), password = m_settings.password.toUtf8();
+        rc = mosquitto_username_pw_set(m_mosq, user.isEmpty() ? nullptr : user.constData(),
+                                       password.isEmpty() ? nullptr : password.constData());
+        if (rc != MOSQ_ERR_SUCCESS) {
+            *error = QStringLiteral("the user name or password cannot be used: %1").arg(errorText(rc));
+            return false;
+        }
+    }
+    if (b.tls) {
+        const QByteArray caFile = b.caFile.toLocal8Bit();
+        // No cafile: the system's authorities, as a web browser trusts.
+        rc = caFile.isEmpty() ? mosquitto_tls_set(m_mosq, nullptr, "/etc/ssl/certs", nullptr, nullptr, nullptr)
+                              : mosquitto_tls_set(m_mosq, caFile.constData(), nullptr, nullptr, nullptr, nullptr);
+        if (rc != MOSQ_ERR_SUCCESS) {
+            *error = b.caFile.isEmpty()
+                         ? QStringLiteral("the system's certificate authorities cannot be used: %1").arg(errorText(rc))
+                         : QStringLiteral("cafile %1 cannot be used: %2").arg(b.caFile, errorText(rc));
+            return false;
+        }
+        // The certificate must be signed by the authority and name the host.
+        mosquitto_tls_opts_set(m_mosq, 1, nullptr, nullptr);
+        mosquitto_tls_insecure_set(m_mosq, false);
+    }
+    if (m_settings.will) {
+        const MqttMessage &w = *m_settings.will;
+        const QByteArray topic = w.topic.toUtf8();
+        rc = mosquitto_will_set(m_mosq, topic.constData(), int(w.payload.size()), w.payload.constData(), w.qos, w.retain);
+        if (rc != MOSQ_ERR_SUCCESS) {
+            *error = QStringLiteral("the last will on %1 cannot be set: %2").arg(w.topic, errorText(rc));
+            return false;
+        }
+    }
+    mosquitto_connect_v5_callback_set(m_mosq, &MosquittoThread::onConnect);
+    mosquitto_disconnect_v5_callback_set(m_mosq, &MosquittoThread::onDisconnect);
+    mosquitto_publish_v5_callback_set(m_mosq, &MosquittoThread::onPublish);
+    mosquitto_subscribe_v5_callback_set(m_mosq, &MosquittoThread::onSubscribe);
+    mosquitto_message_v5_callback_set(m_mosq, &MosquittoThread::onMessage);
+    return true;
+}
+
+template <typename Call>
+void MosquittoThread::post(Call call)
+{
+    std::lock_guard lock(m_mutex);
+    if (m_receiver)
+        QMetaObject::invokeMethod(m_receiver, [r = m_receiver, call = std::move(call)] { call(r); },
+                                  Qt::QueuedConnection);
+}
+
+bool MosquittoThread::stopping()
+{
+    std::lock_guard lock(m_mutex);
+    return m_stopping;
+}
+
+bool MosquittoThread::waitBeforeRetry(int seconds)
+{
+    std::unique_lock lock(m_mutex);
+    return !m_wake.wait_for(lock, std::chrono::seconds(seconds), [this] { return m_stopping; });
+}
+
+void MosquittoThread::run()
+{
+    const BrokerAddress &b = m_settings.broker;
+    const QByteArray host = b.host.toUtf8();
+    int attempt = 0;
+    bool first = true;
+    while (!stopping()) {
+        m_connected = false;
+        m_refusal.clear();
+        // Asynchronous: the TCP connect and the TLS handshake go on in the
+        // loop below, which can give up on them; only a name lookup waits here.
+        int rc = first ? mosquitto_connect_bind_async(m_mosq, host.constData(), b.port, m_settings.keepAliveSeconds,
+                                                      nullptr)
+                       : mosquitto_reconnect_async(m_mosq);
+        first = false;
+        QString why;
+        if (rc == MOSQ_ERR_SUCCESS) {
+            const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(m_settings.connectTimeoutMs);
+            while (!stopping()) {
+                rc = mosquitto_loop(m_mosq, 1000, 1);
+                if (rc != MOSQ_ERR_SUCCESS)
+                    break;
+                if (m_connected) {
+                    attempt = 0;
+                } else if (std::chrono::steady_clock::now() > deadline) {
+                    rc = MOSQ_ERR_TIMEOUT;
+                    break;
+                }
+            }
+            if (stopping())
+                break;
+            why = !m_refusal.isEmpty()       ? m_refusal
+                  : rc == MOSQ_ERR_TIMEOUT   ? QStringLiteral("no answer within %1 s").arg(m_settings.connectTimeoutMs / 1000)
+                  : rc == MOSQ_ERR_CONN_LOST ? QStringLiteral("the connection was lost")
+                                             : errorText(rc);
+        } else {
+            why = errorText(rc);
+        }
+        const int delay = reconnectDelaySeconds(attempt++);
+        post([why, delay](MqttClient *c) { c->onLost(why, delay); });
+        if (!waitBeforeRetry(delay))
+            break;
+    }
+    post([](MqttClient *c) { c->onFinished(); });
+    std::lock_guard lock(m_mutex);
+    m_finished = true;
+    m_wake.notify_all();
+}
+
+int MosquittoThread::publish(const MqttMessage &message, int *mid)
+{
+    const QByteArray topic = message.topic.toUtf8();
+    return mosquitto_publish(m_mosq, mid, topic.constData(), int(message.payload.size()), message.payload.constData(),
+                             message.qos, message.retain);
+}
+
+int MosquittoThread::subscribe(const QString &filter, int qos, int *mid)
+{
+    return mosquitto_subscribe(m_mosq, mid, filter.toUtf8().constData(), qos);
+}
+
+void MosquittoThread::close(const std::optional<MqttMessage> &last)
+{
+    const bool connected = m_connected;
+    {
+        std::lock_guard lock(m_mutex);
+        m_closing = true;
+        // Not connected (still connecting, or waiting to try again): there
+        // is nobody to say goodbye to, and the thread ends at once.
+        if (!connected) {
+            m_stopping = true;
+            m_wake.notify_all();
+        }
+    }
+    if (connected && last)
+        publish(*last, nullptr);
+    // Queued behind the last message; once written, the library closes the
+    // socket and onDisconnect ends the thread. It also wakes the loop.
+    if (mosquitto_disconnect(m_mosq) == MOSQ_ERR_NO_CONN) {
+        std::lock_guard lock(m_mutex);
+        m_stopping = true;
+        m_wake.notify_all();
+    }
+}
+
+void MosquittoThread::abandon(int waitMs)
+{
+    {
+        std::lock_guard lock(m_mutex);
+        m_receiver = nullptr;
+        m_stopping = true;
+        m_wake.notify_all();
+    }
+    mosquitto_disconnect(m_mosq); // wakes the loop's select()
+    if (!m_thread.joinable())
+        return;
+    // The thread ends within a turn of its loop, unless a name lookup holds
+    // it; then it is left to end by itself, holding its own reference.
+    std::unique_lock lock(m_mutex);
+    const bool ended = m_wake.wait_for(lock, std::chrono::milliseconds(waitMs), [this] { return m_finished; });
+    lock.unlock();
+    if (ended)
+        m_thread.join();
+    else
+        m_thread.detach();
+}
+
+void MosquittoThread::onConnect(mosquitto *, void *self, int reason, int, const mosquitto_property *)
+{
+    auto *t = static_cast<MosquittoThread *>(self);
+    if (reason == 0) {
+        t->m_connected = true;
+        t->post([](MqttClient *c) { c->onConnected(); });
+        return;
+    }
+    t->m_refusal = QStringLiteral("the broker refused the connection: %1").arg(QString::fromUtf8(mosquitto_reason_string(reason)));
+}
+
+void MosquittoThread::onDisconnect(mosquitto *, void *self, int, const mosquitto_property *)
+{
+    auto *t = static_cast<MosquittoThread *>(self);
+    t->m_connected = false;
+    std::lock_guard lock(t->m_mutex);
+    if (t->m_closing) {
+        t->m_stopping = true;
+        t->m_wake.notify_all();
+    }
+}
+
+void MosquittoThread::onPublish(mosquitto *, void *self, int mid, int reason, const mosquitto_property *)
+{
+    // Only a refusal is news (MQTT 5: a PUBACK reason of 0x80 or more, the
+    // access list's "not authorised"). Every message taken would otherwise
+    // wake the event loop once more for nothing: a station publishes ten a
+    // second while it slews.
+    if (reason >= 0x80)
+        static_cast<MosquittoThread *>(self)->post([mid, reason](MqttClient *c) { c->onRefused(mid, reason); });
+}
+
+void MosquittoThread::onSubscribe(mosquitto *, void *self, int mid, int count, const int *granted,
+                                  const mosquitto_property *)
+{
+    QList<int> codes;
+    for (int i = 0; i < count; ++i)
+        codes.append(granted[i]);
+    static_cast<MosquittoThread *>(self)->post([mid, codes](MqttClient *c) { c->onSubscribed(mid, codes); });
+}
+
+void MosquittoThread::onMessage(mosquitto *, void *self, const mosquitto_message *message, const mosquitto_property *)
+{
+    auto *t = static_cast<MosquittoThread *>(self);
+    if (message->payloadlen > t->m_settings.largestMessage) {
+        if (t->m_oversized++ == 0)
+            t->post([t](MqttClient *c) {
+                c->onDropped(t->m_oversized.exchange(0),
+                             QStringLiteral("larger than %1 bytes").arg(t->m_settings.largestMessage));
+            });
+        return;
+    }
+    if (t->m_waiting.load() >= t->m_settings.mostWaiting) {
+        if (t->m_dropped++ == 0)
+            t->post([t](MqttClient *c) {
+                c->onDropped(t->m_dropped.exchange(0), QStringLiteral("arriving faster than they can be read"));
+            });
+        return;
+    }
+    ++t->m_waiting;
+    const QString topic = QString::fromUtf8(message->topic);
+    const QByteArray payload(static_cast<const char *>(message->payload), message->payloadlen);
+    const bool retained = message->retain;
+    t->post([t, topic, payload, retained](MqttClient *c) {
+        t->messageTaken();
+        c->onMessage(topic, payload, retained);
+    });
+}
+
+} // namespace slew::remote

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// A command to a station over MQTT, and the station's reply, as JSON:
+//
+//   {"id":"7","cmd":"goto","az":120,"el":30}
+//   {"id":"8","cmd":"stop"}          park, home, untrack likewise
+//   {"id":"9","cmd":"track","target":"ISS (ZARYA)","min_el":5}
+//   {"id":"10","cmd":"jog","az_speed":-5.0,"el_speed":0,"lease_ms":1000}
+//
+//   {"id":"7","ok":true}
+//   {"id":"7","ok":false,"error":"azimuth 999.0° is outside …"}
+//
+// A jog is a lease: speeds in degrees a second (signed: + is clockwise and
+// up), held for lease_ms (at most a second) and stopped by the station
+// unless renewed. Every field is checked (jsonfields.h); a command with a
+// fault is refused whole and does nothing. Pure code.
+
+#include <QByteArray>
+#include <QString>
+
+#include <optional>
+
+namespace slew::remote {
+
+inline constexpr int kLargestCommand = 1024;     // bytes
+inline constexpr int kLongestCommandId = 64;     // characters
+inline constexpr int kLongestTrackTarget = 100;  // characters
+inline constexpr int kLongestJogLeaseMs = 1000;  // a lost network stops a jog within a second
+inline constexpr int kShortestJogLeaseMs = 100;
+inline constexpr double kFastestJog = 90.0;      // degrees a second, either sign
+
+struct RemoteCommand {
+    enum class Kind { Goto, Stop, Park, Home, Track, Untrack, Jog };
+    QString id; // empty: no reply wanted
+    Kind kind = Kind::Stop;
+    double azimuth = 0, elevation = 0;           // Goto
+    double azSpeed = 0, elSpeed = 0;             // Jog
+    int leaseMs = kLongestJogLeaseMs;            // Jog
+    QString target;                              // Track
+    std::optional<double> minElevation;          // Track
+};
+
+// "goto", "stop", ...
+QString commandName(RemoteCommand::Kind kind);
+
+struct ParsedCommand {
+    std::optional<RemoteCommand> command;
+    QString id;    // the id, when one could be read, even from a refused command
+    QString error; // why it was refused
+};
+ParsedCommand parseRemoteCommand(const QByteArray &payload);
+QByteArray encodeRemoteCommand(const RemoteCommand &command);
+
+struct RemoteReply {
+    QString id;
+    bool ok = false;
+    QString error;
+};
+inline constexpr int kLongestReplyError = 400;
+QByteArray encodeRemoteReply(const RemoteReply &reply);
+std::optional<RemoteReply> parseRemoteReply(const QByteArray &payload, QString *error);
+
+} // namespace slew::remote

@@ -1,0 +1,133 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "stationstate.h"
+
+#include "jsonfields.h"
+
+#include <QDateTime>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+namespace slew::remote {
+namespace {
+
+// Any rotator's travel fits these: 450° overlaps, south stops, 180° flips.
+constexpr input::NumberRange kAzimuth{-360, 720, "°"};
+constexpr input::NumberRange kElevation{-90, 190, "°"};
+constexpr qint64 kLatestMs = 32503680000000LL; // the year 3000
+
+void putPoint(QJsonObject &o, const char *az, const char *el, const std::optional<QPointF> &p)
+{
+    if (!p)
+        return;
+    o.insert(QLatin1String(az), p->x());
+    o.insert(QLatin1String(el), p->y());
+}
+
+std::optional<QPointF> takePoint(JsonFields &f, const char *az, const char *el)
+{
+    const auto a = f.number(QLatin1String(az), kAzimuth);
+    const auto e = f.number(QLatin1String(el), kElevation);
+    if (a.has_value() != e.has_value()) {
+        f.fail(QStringLiteral("'%1' and '%2' come together").arg(QLatin1String(az), QLatin1String(el)));
+        return std::nullopt;
+    }
+    return a ? std::optional<QPointF>(QPointF(*a, *e)) : std::nullopt;
+}
+
+} // namespace
+
+bool isLinkStateName(const QString &name)
+{
+    return name == u"disconnected" || name == u"connecting" || name == u"connected" || name == u"reconnecting";
+}
+
+bool isTrackingStateName(const QString &name)
+{
+    return name == u"off" || name == u"planning" || name == u"waiting" || name == u"tracking" || name == u"done";
+}
+
+QByteArray encodeStationState(const StationState &s)
+{
+    QJsonObject o;
+    o.insert(QStringLiteral("unix_ms"), double(s.unixMs));
+    o.insert(QStringLiteral("time"),
+             QDateTime::fromMSecsSinceEpoch(s.unixMs, Qt::UTC).toString(Qt::ISODateWithMs));
+    o.insert(QStringLiteral("link"), s.link);
+    if (!s.linkDetail.isEmpty())
+        o.insert(QStringLiteral("link_detail"), s.linkDetail);
+    putPoint(o, "az", "el", s.position);
+    o.insert(QStringLiteral("stale"), s.stale);
+    putPoint(o, "target_az", "target_el", s.target);
+    o.insert(QStringLiteral("moving"), s.moving);
+    o.insert(QStringLiteral("az_min"), s.limits.azMin);
+    o.insert(QStringLiteral("az_max"), s.limits.azMax);
+    o.insert(QStringLiteral("el_min"), s.limits.elMin);
+    o.insert(QStringLiteral("el_max"), s.limits.elMax);
+    putPoint(o, "park_az", "park_el", s.park);
+    o.insert(QStringLiteral("azimuth_only"), s.azimuthOnly);
+    o.insert(QStringLiteral("tracking"), s.tracking);
+    if (!s.trackingTarget.isEmpty())
+        o.insert(QStringLiteral("tracking_target"), s.trackingTarget);
+    if (s.passAosMs)
+        o.insert(QStringLiteral("pass_aos_ms"), double(*s.passAosMs));
+    if (s.passLosMs)
+        o.insert(QStringLiteral("pass_los_ms"), double(*s.passLosMs));
+    if (s.passMaxElevation)
+        o.insert(QStringLiteral("pass_max_el"), *s.passMaxElevation);
+    o.insert(QStringLiteral("alarms"), QJsonArray::fromStringList(s.alarms.mid(0, kMostAlarms)));
+    o.insert(QStringLiteral("severe"), s.severe);
+    o.insert(QStringLiteral("operator_hold"), s.operatorHold);
+    if (!s.controllerVersion.isEmpty())
+        o.insert(QStringLiteral("controller"), s.controllerVersion);
+    o.insert(QStringLiteral("slew"), s.slewVersion);
+    return QJsonDocument(o).toJson(QJsonDocument::Compact);
+}
+
+std::optional<StationState> parseStationState(const QByteArray &payload, QString *error)
+{
+    auto parsed = JsonFields::parse(payload, kLargestStateMessage, error);
+    if (!parsed)
+        return std::nullopt;
+    JsonFields &f = *parsed;
+    StationState s;
+    s.unixMs = f.whole(QStringLiteral("unix_ms"), 0, kLatestMs, true).value_or(0);
+    f.text(QStringLiteral("time"), 40); // for people; unix_ms is the one read
+    s.link = f.text(QStringLiteral("link"), 20, true).value_or(QString());
+    if (f.ok() && !isLinkStateName(s.link))
+        f.fail(QStringLiteral("'link' is not disconnected, connecting, connected or reconnecting"));
+    s.linkDetail = f.text(QStringLiteral("link_detail"), 400).value_or(QString());
+    s.position = takePoint(f, "az", "el");
+    s.stale = f.flag(QStringLiteral("stale")).value_or(true);
+    s.target = takePoint(f, "target_az", "target_el");
+    s.moving = f.flag(QStringLiteral("moving")).value_or(false);
+    s.limits.azMin = f.number(QStringLiteral("az_min"), kAzimuth, true).value_or(0);
+    s.limits.azMax = f.number(QStringLiteral("az_max"), kAzimuth, true).value_or(360);
+    s.limits.elMin = f.number(QStringLiteral("el_min"), kElevation, true).value_or(0);
+    s.limits.elMax = f.number(QStringLiteral("el_max"), kElevation, true).value_or(90);
+    if (f.ok()) {
+        if (const QString why = s.limits.validate(); !why.isEmpty())
+            f.fail(QStringLiteral("the travel: %1").arg(why));
+    }
+    s.park = takePoint(f, "park_az", "park_el");
+    s.azimuthOnly = f.flag(QStringLiteral("azimuth_only")).value_or(false);
+    s.tracking = f.text(QStringLiteral("tracking"), 20).value_or(QStringLiteral("off"));
+    if (f.ok() && !isTrackingStateName(s.tracking))
+        f.fail(QStringLiteral("'tracking' is not off, planning, waiting, tracking or done"));
+    s.trackingTarget = f.text(QStringLiteral("tracking_target"), 100).value_or(QString());
+    s.passAosMs = f.whole(QStringLiteral("pass_aos_ms"), 0, kLatestMs);
+    s.passLosMs = f.whole(QStringLiteral("pass_los_ms"), 0, kLatestMs);
+    s.passMaxElevation = f.number(QStringLiteral("pass_max_el"), {-90, 90, "°"});
+    s.alarms = f.texts(QStringLiteral("alarms"), kMostAlarms, 400).value_or(QStringList());
+    s.severe = f.flag(QStringLiteral("severe")).value_or(false);
+    s.operatorHold = f.flag(QStringLiteral("operator_hold")).value_or(false);
+    s.controllerVersion = f.text(QStringLiteral("controller"), 100).value_or(QString());
+    s.slewVersion = f.text(QStringLiteral("slew"), 40).value_or(QString());
+    if (!f.noOthers()) {
+        *error = f.error();
+        return std::nullopt;
+    }
+    return s;
+}
+
+} // namespace slew::remote

@@ -1,0 +1,196 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "remotecommands.h"
+
+#include "remotejog.h"
+#include "station.h"
+
+#include "session/rotatorsession.h"
+#include "sky/tlesources.h"
+#include "tracking/passrunner.h"
+#include "tracking/tracktarget.h"
+
+#include <QDateTime>
+
+namespace slew::station {
+
+using remote::RemoteCommand;
+using session::CommandResult;
+
+namespace {
+
+qint64 nowMs()
+{
+    return QDateTime::currentMSecsSinceEpoch();
+}
+
+} // namespace
+
+RemoteCommands::RemoteCommands(Station *station, const QList<sky::Tle> &elementSets, QObject *parent)
+    : QObject(parent), m_station(station), m_elementSets(elementSets), m_jog(new RemoteJog(station->session(), this))
+{
+    m_floodEnd.setSingleShot(true);
+    m_floodEnd.setInterval(1000);
+    connect(&m_floodEnd, &QTimer::timeout, this, &RemoteCommands::endFlood);
+    connect(m_jog, &RemoteJog::expired, this, [this](int leaseMs, double az, double el) {
+        emit logLine(tr("remote jog (az %1°/s, el %2°/s) not renewed within its lease of %3 ms: stopped")
+                         .arg(az, 0, 'f', 1)
+                         .arg(el, 0, 'f', 1)
+                         .arg(leaseMs));
+    });
+}
+
+RemoteCommands::~RemoteCommands() = default;
+
+std::optional<remote::RemoteReply> RemoteCommands::handle(const QByteArray &payload)
+{
+    const qint64 now = nowMs();
+    const remote::ParsedCommand parsed = remote::parseRemoteCommand(payload);
+    const bool isStop = parsed.command && parsed.command->kind == RemoteCommand::Kind::Stop;
+    if (!m_allowance.take(now)) {
+        if (m_dropped++ == 0)
+            emit logLine(tr("remote: commands are arriving faster than %1 a second: the rest are dropped "
+                            "unanswered (a stop still goes out) until they slow down")
+                             .arg(kPerSecond));
+        ++m_droppedTotal;
+        m_floodEnd.start();
+        if (isStop)
+            stopEveryRotor();
+        return std::nullopt;
+    }
+    if (!parsed.command) {
+        if (m_logAllowance.take(now))
+            emit logLine(tr("remote: command refused: %1").arg(input::loggableText(parsed.error)));
+        if (parsed.id.isEmpty())
+            return std::nullopt;
+        return remote::RemoteReply{parsed.id, false, parsed.error};
+    }
+    const RemoteCommand &command = *parsed.command;
+    const CommandResult result = obey(command);
+    if (m_logAllowance.take(now)) {
+        const QString id = command.id.isEmpty() ? QString() : tr(" (id %1)").arg(command.id);
+        // Jog renewals are many and alike: only a refusal is worth a line.
+        if (!result)
+            emit logLine(tr("remote: %1%2 refused: %3").arg(describe(command), id, result.refusal));
+        else if (command.kind != RemoteCommand::Kind::Jog)
+            emit logLine(tr("remote: %1%2").arg(describe(command), id));
+    }
+    if (command.id.isEmpty())
+        return std::nullopt;
+    return remote::RemoteReply{command.id, bool(result), result.refusal};
+}
+
+void RemoteCommands::endFlood()
+{
+    emit logLine(tr("remote: the flood of commands has ended: %1 dropped").arg(m_dropped));
+    m_dropped = 0;
+}
+
+QString RemoteCommands::describe(const RemoteCommand &c) const
+{
+    switch (c.kind) {
+    case RemoteCommand::Kind::Goto:
+        return tr("go to az %1°, el %2°").arg(c.azimuth, 0, 'f', 1).arg(c.elevation, 0, 'f', 1);
+    case RemoteCommand::Kind::Jog:
+        return tr("jog az %1°/s, el %2°/s for %3 ms").arg(c.azSpeed, 0, 'f', 1).arg(c.elSpeed, 0, 'f', 1).arg(c.leaseMs);
+    case RemoteCommand::Kind::Track:
+        return tr("track %1").arg(c.target);
+    default:
+        return remote::commandName(c.kind);
+    }
+}
+
+QString RemoteCommands::holdOnMoves() const
+{
+    if (!m_refusing.isEmpty())
+        return m_refusing;
+    if (m_station->operatorHolds())
+        return tr("the operator at the station pressed Stop and holds remote control: remote moves are refused "
+                  "until control is handed back");
+    const tracking::PassRunner *runner = m_station->passRunner();
+    if (runner && runner->holdsRotator())
+        return tr("Slew's own tracking of %1 has the rotator: untrack (or Stop) first")
+            .arg(runner->target().name());
+    return {};
+}
+
+CommandResult RemoteCommands::stopEveryRotor()
+{
+    m_jog->release();
+    session::RotatorSession *first = m_station->session();
+    const CommandResult result = first->stop(session::Axes::Both);
+    for (int i = 1; i < m_station->rotorCount(); ++i) {
+        if (m_station->session(i)->isConnected())
+            m_station->session(i)->stop(session::Axes::Both);
+    }
+    return result;
+}
+
+CommandResult RemoteCommands::obey(const RemoteCommand &c)
+{
+    if (c.kind == RemoteCommand::Kind::Stop)
+        return stopEveryRotor(); // always
+    if (c.kind == RemoteCommand::Kind::Untrack) {
+        if (!m_refusing.isEmpty())
+            return CommandResult{m_refusing};
+        if (!m_station->passRunner()->isRunning())
+            return CommandResult{tr("Slew is not tracking")};
+        m_station->untrack(tr("untracked from the broker"));
+        return {};
+    }
+    if (const QString hold = holdOnMoves(); !hold.isEmpty()) {
+        if (c.kind == RemoteCommand::Kind::Jog)
+            m_jog->release();
+        return CommandResult{hold};
+    }
+    session::RotatorSession *s = m_station->session();
+    if (c.kind != RemoteCommand::Kind::Jog)
+        m_jog->release(); // whatever comes next takes over from the jog
+    switch (c.kind) {
+    case RemoteCommand::Kind::Goto:
+        return s->gotoPosition(c.azimuth, c.elevation);
+    case RemoteCommand::Kind::Park:
+        return s->park();
+    case RemoteCommand::Kind::Home:
+        return s->home();
+    case RemoteCommand::Kind::Jog:
+        return m_jog->jog(c.azSpeed, c.elSpeed, c.leaseMs);
+    case RemoteCommand::Kind::Track:
+        return track(c);
+    default:
+        return CommandResult{tr("not a command")};
+    }
+}
+
+CommandResult RemoteCommands::track(const RemoteCommand &c)
+{
+    tracking::TrackTarget target;
+    QString bad;
+    if (const auto fixed = tracking::TrackTarget::parseFixedOrCelestial(c.target, &bad)) {
+        target = *fixed;
+    } else if (!bad.isEmpty()) {
+        return CommandResult{bad};
+    } else if (c.target.compare(QLatin1String("sun"), Qt::CaseInsensitive) == 0) {
+        target.kind = tracking::TrackTarget::Kind::Sun;
+    } else if (c.target.compare(QLatin1String("moon"), Qt::CaseInsensitive) == 0) {
+        target.kind = tracking::TrackTarget::Kind::Moon;
+    } else {
+        // The sets the service was given first, then the cache's.
+        QList<sky::Tle> sets = m_elementSets;
+        for (const sky::Tle &tle : m_station->elementSets()->sets()) {
+            bool known = false;
+            for (const sky::Tle &given : std::as_const(m_elementSets))
+                known = known || given.catalogueNumber == tle.catalogueNumber;
+            if (!known)
+                sets.append(tle);
+        }
+        QString why;
+        const sky::Tle *tle = sky::findOneTle(sets, c.target, &why);
+        if (!tle)
+            return CommandResult{tr("%1 among the station's element sets").arg(why)};
+        target.elements = *tle;
+    }
+    const QString refused = m_station->track(target, c.minElevation.value_or(0.0));
+    return CommandResult{refused};
+}
+
+} // namespace slew::station

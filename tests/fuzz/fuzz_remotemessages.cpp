@@ -1,0 +1,169 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Fuzz target: what arrives from an MQTT broker (core/remote): commands to a
+// station, a station's state and telemetry, replies, and a broker's address
+// as an operator types it.
+//
+// Input: the first byte picks the reader, the rest is the message. Checked
+// besides crashes and sanitizer reports: every message accepted has every
+// number finite and in its range, every text free of control characters
+// and within its length, a jog's lease within a second, travel that makes
+// sense; what is accepted reads back the same after it is written out (a
+// window's command is what the station obeys); a refusal says why in text
+// with no control character (it reaches the journal and the window); a
+// broker address accepted never carries a password and is plain mqtt://
+// only to this machine.
+//
+// Built with libFuzzer when SLEW_FUZZ is on (packaging/dev.sh fuzz); the
+// normal build replays the seed corpus through it (corpusreplay.cpp).
+
+#include "remote/brokeraddress.h"
+#include "remote/jsonfields.h"
+#include "remote/remotecommand.h"
+#include "remote/stationstate.h"
+#include "remote/stationtelemetry.h"
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+
+using namespace slew::remote;
+
+namespace {
+
+[[noreturn]] void fail(const char *what)
+{
+    std::fprintf(stderr, "fuzz_remotemessages: %s\n", what);
+    std::abort();
+}
+
+void check(bool ok, const char *what)
+{
+    if (!ok)
+        fail(what);
+}
+
+void checkRefusal(const QString &why)
+{
+    check(!why.isEmpty(), "a refusal without a reason");
+    check(JsonFields::isShowable(why, 100000), "a refusal with a control character in it");
+}
+
+bool finiteIn(double v, double lo, double hi)
+{
+    return std::isfinite(v) && v >= lo && v <= hi;
+}
+
+void commands(const QByteArray &bytes)
+{
+    const ParsedCommand parsed = parseRemoteCommand(bytes);
+    check(JsonFields::isShowable(parsed.id, kLongestCommandId), "an id too long or with control characters");
+    if (!parsed.command) {
+        checkRefusal(parsed.error);
+        return;
+    }
+    const RemoteCommand &c = *parsed.command;
+    check(finiteIn(c.azimuth, -10000, 10000) && finiteIn(c.elevation, -10000, 10000), "a go-to out of range");
+    check(finiteIn(c.azSpeed, -kFastestJog, kFastestJog) && finiteIn(c.elSpeed, -kFastestJog, kFastestJog),
+          "a jog too fast");
+    check(c.leaseMs >= kShortestJogLeaseMs && c.leaseMs <= kLongestJogLeaseMs, "a lease out of bounds");
+    check(JsonFields::isShowable(c.target, kLongestTrackTarget), "a track target too long or with control characters");
+    check(!c.minElevation || finiteIn(*c.minElevation, -5, 90), "a minimum elevation out of range");
+    const ParsedCommand again = parseRemoteCommand(encodeRemoteCommand(c));
+    check(again.command.has_value(), "a command written out does not read back");
+    const RemoteCommand &b = *again.command;
+    check(b.kind == c.kind && b.id == c.id && b.azimuth == c.azimuth && b.elevation == c.elevation
+              && b.azSpeed == c.azSpeed && b.elSpeed == c.elSpeed && b.leaseMs == c.leaseMs && b.target == c.target
+              && b.minElevation == c.minElevation,
+          "a command reads back different");
+}
+
+void states(const QByteArray &bytes)
+{
+    QString why;
+    const auto s = parseStationState(bytes, &why);
+    if (!s) {
+        checkRefusal(why);
+        return;
+    }
+    check(s->limits.validate().isEmpty(), "a state with travel that makes no sense");
+    for (const auto &p : {s->position, s->target, s->park})
+        check(!p || (finiteIn(p->x(), -360, 720) && finiteIn(p->y(), -90, 190)), "a state's position out of range");
+    check(isLinkStateName(s->link) && isTrackingStateName(s->tracking), "a state with an unknown link or tracking state");
+    check(s->alarms.size() <= kMostAlarms, "a state with too many alarms");
+    for (const QString &text : s->alarms + QStringList{s->linkDetail, s->trackingTarget, s->controllerVersion})
+        check(JsonFields::isShowable(text, 400), "a state with text that cannot be shown");
+    QString again;
+    const auto back = parseStationState(encodeStationState(*s), &again);
+    check(back.has_value(), "a state written out does not read back");
+    check(encodeStationState(*back) == encodeStationState(*s), "a state reads back different");
+}
+
+void telemetry(const QByteArray &bytes)
+{
+    QString why;
+    const auto t = parseTelemetry(bytes, &why);
+    if (!t) {
+        checkRefusal(why);
+        return;
+    }
+    for (const auto &v : {t->az, t->el, t->commandedAz, t->commandedEl, t->azSpeed, t->elSpeed, t->azLoad, t->elLoad,
+                          t->temperature, t->pointingError, t->dopplerRxError, t->dopplerTxError})
+        check(!v || std::isfinite(*v), "telemetry with a number that is not finite");
+    check((!t->gs || (*t->gs >= 0 && *t->gs <= 0xffff)) && (!t->ge || (*t->ge >= 0 && *t->ge <= 0xffff)),
+          "telemetry with a register out of range");
+    check(parseTelemetry(encodeTelemetry(*t), &why).has_value(), "telemetry written out does not read back");
+}
+
+void replies(const QByteArray &bytes)
+{
+    QString why;
+    const auto r = parseRemoteReply(bytes, &why);
+    if (!r) {
+        checkRefusal(why);
+        return;
+    }
+    check(JsonFields::isShowable(r->id, kLongestCommandId) && JsonFields::isShowable(r->error, kLongestReplyError),
+          "a reply with text that cannot be shown");
+    check(r->ok || !r->error.isEmpty(), "a refusal without its reason");
+}
+
+void addresses(const QByteArray &bytes)
+{
+    QString why;
+    const auto a = parseBrokerAddress(QString::fromUtf8(bytes), &why);
+    if (!a) {
+        check(!why.isEmpty(), "an address refused without a reason");
+        return;
+    }
+    check(!a->host.isEmpty() && a->port > 0, "an address without a host or a port");
+    check(a->tls || isLoopbackHost(a->host), "plain mqtt:// accepted to a host that is not this machine");
+    check(a->stationName.isEmpty() || checkStationName(a->stationName).isEmpty(), "a station name MQTT would misread");
+    check(a->caFile.isEmpty() || a->tls, "a CA file without TLS");
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
+{
+    if (size == 0)
+        return 0;
+    const QByteArray bytes(reinterpret_cast<const char *>(data) + 1, qsizetype(size - 1));
+    switch (data[0] % 5) {
+    case 0:
+        commands(bytes);
+        break;
+    case 1:
+        states(bytes);
+        break;
+    case 2:
+        telemetry(bytes);
+        break;
+    case 3:
+        replies(bytes);
+        break;
+    default:
+        addresses(bytes);
+    }
+    return 0;
+}

@@ -1,0 +1,250 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// What travels over the broker, read under the input rules: the broker's
+// address (TLS, no password in it, plain mqtt:// only to this machine), the
+// password file, station names and topics, commands and replies, a
+// station's state and telemetry. Tables of good and bad messages; a bad one
+// is refused whole, naming its field.
+
+#include "remote/brokeraddress.h"
+#include "remote/brokerpassword.h"
+#include "remote/remotecommand.h"
+#include "remote/stationstate.h"
+#include "remote/stationtelemetry.h"
+#include "remote/stationtopics.h"
+
+#include <QFile>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace slew::remote;
+
+class RemoteMessagesTest : public QObject {
+    Q_OBJECT
+private slots:
+    void brokerAddresses_data()
+    {
+        QTest::addColumn<QString>("url");
+        QTest::addColumn<bool>("ok");
+        QTest::addColumn<QString>("expected"); // display() when ok, else a piece of the refusal
+        QTest::newRow("tls") << "mqtts://ops@broker.example:8883" << true << "mqtts://ops@broker.example:8883";
+        QTest::newRow("tls default port") << "mqtts://ops@broker.example" << true << "mqtts://ops@broker.example:8883";
+        QTest::newRow("plain loopback") << "mqtt://ops@127.0.0.1" << true << "mqtt://ops@127.0.0.1:1883";
+        QTest::newRow("plain localhost") << "mqtt://localhost:1884" << true << "mqtt://localhost:1884";
+        QTest::newRow("plain ipv6 loopback") << "mqtt://[::1]:1883" << true << "mqtt://[::1]:1883";
+        QTest::newRow("plain remote") << "mqtt://ops@broker.example" << false << "in the clear";
+        QTest::newRow("plain lan") << "mqtt://192.168.1.10" << false << "in the clear";
+        QTest::newRow("password") << "mqtts://ops:hunter2@broker.example" << false << "no password in the address";
+        QTest::newRow("scheme") << "http://broker.example" << false << "not a broker's address";
+        QTest::newRow("no host") << "mqtts://" << false << "names no broker host";
+        QTest::newRow("unknown query") << "mqtts://h?insecure=1" << false << "unknown setting 'insecure'";
+        QTest::newRow("cafile plain") << "mqtt://localhost?cafile=/tmp/ca.pem" << false << "goes with mqtts://";
+        QTest::newRow("wildcard name") << "mqtts://h/+" << false << "wildcards";
+        QTest::newRow("deep name") << "mqtts://h/a/b" << false << "wildcards";
+    }
+    void brokerAddresses()
+    {
+        QFETCH(QString, url);
+        QFETCH(bool, ok);
+        QFETCH(QString, expected);
+        QString error;
+        const auto address = parseBrokerAddress(url, &error);
+        QCOMPARE(address.has_value(), ok);
+        if (ok)
+            QCOMPARE(address->display(), expected);
+        else
+            QVERIFY2(error.contains(expected), qPrintable(error));
+    }
+
+    void addressParts()
+    {
+        QString error;
+        const auto a = parseBrokerAddress(QStringLiteral("mqtts://ops@broker.example:8884/mast?cafile=/etc/slew/ca.pem"), &error);
+        QVERIFY2(a, qPrintable(error));
+        QVERIFY(a->tls);
+        QCOMPARE(a->user, QStringLiteral("ops"));
+        QCOMPARE(a->host, QStringLiteral("broker.example"));
+        QCOMPARE(a->port, quint16(8884));
+        QCOMPARE(a->stationName, QStringLiteral("mast"));
+        QCOMPARE(a->caFile, QStringLiteral("/etc/slew/ca.pem"));
+    }
+
+    void passwordFile()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("pw"));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("s3cret\r\nsecond line\n");
+        f.close();
+        QString error;
+        // Readable by everyone: refused, and says how to fix it.
+        f.setPermissions(QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ReadOther);
+        QVERIFY(!readPasswordFile(path, &error));
+        QVERIFY2(error.contains(QStringLiteral("chmod")), qPrintable(error));
+        f.setPermissions(QFileDevice::ReadOwner | QFileDevice::WriteOwner);
+        QCOMPARE(readPasswordFile(path, &error).value_or(QString()), QStringLiteral("s3cret"));
+        QVERIFY(!readPasswordFile(QStringLiteral("/dev/zero"), &error));
+        QVERIFY(!readPasswordFile(dir.filePath(QStringLiteral("missing")), &error));
+        qputenv(kPasswordVariable, "from-env");
+        QCOMPARE(brokerPassword({}, &error).value_or(QString()), QStringLiteral("from-env"));
+        qunsetenv(kPasswordVariable);
+    }
+
+    void topics()
+    {
+        QCOMPARE(stationTopic(QStringLiteral("mast"), StationTopic::State), QStringLiteral("slew/mast/state"));
+        QCOMPARE(stationFilter(QStringLiteral("mast")), QStringLiteral("slew/mast/#"));
+        QCOMPARE(everyStationFilter(StationTopic::Online), QStringLiteral("slew/+/online"));
+        const auto t = parseStationTopic(QStringLiteral("slew/dish-2/telemetry"));
+        QVERIFY(t);
+        QCOMPARE(t->stationName, QStringLiteral("dish-2"));
+        QCOMPARE(t->topic, StationTopic::Telemetry);
+        QVERIFY(!parseStationTopic(QStringLiteral("slew/dish-2/other")));
+        QVERIFY(!parseStationTopic(QStringLiteral("slew/a/b/state")));
+        QVERIFY(!parseStationTopic(QStringLiteral("other/dish/state")));
+        QVERIFY(!checkStationName(QStringLiteral("a#")).isEmpty());
+        QVERIFY(!checkStationName(QString(65, u'a')).isEmpty());
+        QVERIFY(checkStationName(QStringLiteral("JO65hq_dish-1.a")).isEmpty());
+    }
+
+    void commands_data()
+    {
+        QTest::addColumn<QByteArray>("json");
+        QTest::addColumn<QString>("error"); // empty: accepted
+        QTest::addColumn<QString>("id");
+        QTest::newRow("goto") << QByteArray(R"j({"id":"7","cmd":"goto","az":120,"el":30})j") << "" << "7";
+        QTest::newRow("numeric id") << QByteArray(R"j({"id":42,"cmd":"stop"})j") << "" << "42";
+        QTest::newRow("no id") << QByteArray(R"j({"cmd":"park"})j") << "" << "";
+        QTest::newRow("jog") << QByteArray(R"j({"id":"j","cmd":"jog","az_speed":-5.0,"el_speed":0,"lease_ms":1000})j") << "" << "j";
+        QTest::newRow("track") << QByteArray(R"j({"id":"t","cmd":"track","target":"ISS (ZARYA)","min_el":5})j") << "" << "t";
+        QTest::newRow("goto out of range reaches the gate") << QByteArray(R"j({"id":"g","cmd":"goto","az":999,"el":30})j") << "" << "g";
+        QTest::newRow("not json") << QByteArray("goto 1 2") << "not JSON" << "";
+        QTest::newRow("array") << QByteArray("[1]") << "not a JSON object" << "";
+        QTest::newRow("unknown cmd") << QByteArray(R"j({"id":"1","cmd":"fire"})j") << "unknown command 'fire'" << "1";
+        QTest::newRow("missing el") << QByteArray(R"j({"id":"1","cmd":"goto","az":1})j") << "'el' is missing" << "1";
+        QTest::newRow("text az") << QByteArray(R"j({"id":"1","cmd":"goto","az":"1","el":2})j") << "'az' is not a number" << "1";
+        // Qt's JSON reader refuses a number past a double's range outright.
+        QTest::newRow("huge az") << QByteArray(R"j({"id":"1","cmd":"goto","az":1e999,"el":2})j") << "not JSON" << "";
+        QTest::newRow("negative lease") << QByteArray(R"j({"id":"2","cmd":"jog","az_speed":1,"lease_ms":-1})j") << "'lease_ms'" << "2";
+        QTest::newRow("jog too fast") << QByteArray(R"j({"cmd":"jog","az_speed":500})j") << "'az_speed'" << "";
+        QTest::newRow("lease too long") << QByteArray(R"j({"cmd":"jog","az_speed":5,"lease_ms":60000})j") << "'lease_ms'" << "";
+        QTest::newRow("lease fraction") << QByteArray(R"j({"cmd":"jog","az_speed":5,"lease_ms":500.5})j") << "whole number" << "";
+        QTest::newRow("jog no speed") << QByteArray(R"j({"cmd":"jog"})j") << "names az_speed" << "";
+        QTest::newRow("extra field") << QByteArray(R"j({"id":"1","cmd":"stop","force":true})j") << "unknown field 'force'" << "1";
+        QTest::newRow("escape in target") << QByteArray("{\"cmd\":\"track\",\"target\":\"a\\u001b[2Jb\"}") << "control characters" << "";
+        QTest::newRow("long id") << (QByteArray("{\"id\":\"") + QByteArray(100, 'x') + "\",\"cmd\":\"stop\"}") << "'id'" << "";
+        QTest::newRow("too large") << (QByteArray("{\"cmd\":\"stop\",\"pad\":\"") + QByteArray(2000, ' ') + "\"}") << "over the" << "";
+    }
+    void commands()
+    {
+        QFETCH(QByteArray, json);
+        QFETCH(QString, error);
+        QFETCH(QString, id);
+        const ParsedCommand parsed = parseRemoteCommand(json);
+        QCOMPARE(parsed.id, id);
+        if (error.isEmpty()) {
+            QVERIFY2(parsed.command, qPrintable(parsed.error));
+            // What a window sends reads back the same.
+            const ParsedCommand again = parseRemoteCommand(encodeRemoteCommand(*parsed.command));
+            QVERIFY(again.command);
+            QCOMPARE(again.command->kind, parsed.command->kind);
+            QCOMPARE(again.command->azimuth, parsed.command->azimuth);
+            QCOMPARE(again.command->azSpeed, parsed.command->azSpeed);
+            QCOMPARE(again.command->leaseMs, parsed.command->leaseMs);
+            QCOMPARE(again.command->target, parsed.command->target);
+        } else {
+            QVERIFY(!parsed.command);
+            QVERIFY2(parsed.error.contains(error), qPrintable(parsed.error));
+        }
+    }
+
+    void replies()
+    {
+        QString error;
+        const auto ok = parseRemoteReply(encodeRemoteReply({QStringLiteral("7"), true, {}}), &error);
+        QVERIFY(ok && ok->ok && ok->id == QStringLiteral("7"));
+        const auto no = parseRemoteReply(R"j({"id":"7","ok":false,"error":"azimuth 999.0° is outside 0..360°"})j", &error);
+        QVERIFY(no && !no->ok);
+        QCOMPARE(no->error, QStringLiteral("azimuth 999.0° is outside 0..360°"));
+        QVERIFY(!parseRemoteReply(R"j({"id":"7","ok":false})j", &error));
+        // Found by fuzz_remotemessages: a refusal must say why.
+        QVERIFY(!parseRemoteReply(R"j({"id":"7","ok":false,"error":""})j", &error));
+        QVERIFY2(error.contains(QStringLiteral("without its reason")), qPrintable(error));
+        QVERIFY(!parseRemoteReply(R"j({"id":"7","ok":"yes"})j", &error));
+    }
+
+    void stateRoundTrip()
+    {
+        StationState s;
+        s.unixMs = 1790000000123;
+        s.link = QStringLiteral("connected");
+        s.position = QPointF(120.5, 30.25);
+        s.stale = false;
+        s.target = QPointF(200, 45);
+        s.moving = true;
+        s.limits = {0, 450, 0, 180};
+        s.park = QPointF(0, 90);
+        s.tracking = QStringLiteral("tracking");
+        s.trackingTarget = QStringLiteral("ISS (ZARYA)");
+        s.passAosMs = 1790000000000;
+        s.passLosMs = 1790000600000;
+        s.passMaxElevation = 56.1;
+        s.alarms = {QStringLiteral("GE: motor error")};
+        s.severe = true;
+        s.operatorHold = true;
+        s.controllerVersion = QStringLiteral("SatNOGS 1.2");
+        s.slewVersion = QStringLiteral("0.1.0");
+        QString error;
+        const auto back = parseStationState(encodeStationState(s), &error);
+        QVERIFY2(back, qPrintable(error));
+        QCOMPARE(encodeStationState(*back), encodeStationState(s));
+    }
+
+    void badStates_data()
+    {
+        QTest::addColumn<QByteArray>("json");
+        QTest::addColumn<QString>("error");
+        const QByteArray base = R"j("unix_ms":1,"link":"connected","az_min":0,"az_max":360,"el_min":0,"el_max":90)j";
+        QTest::newRow("good") << "{" + base + "}" << "";
+        QTest::newRow("az alone") << "{" + base + R"j(,"az":3})j" << "come together";
+        QTest::newRow("az out") << "{" + base + R"j(,"az":9999,"el":3})j" << "'az'";
+        QTest::newRow("bad link") << QByteArray(R"j({"unix_ms":1,"link":"up","az_min":0,"az_max":360,"el_min":0,"el_max":90})j") << "'link'";
+        QTest::newRow("travel backwards") << QByteArray(R"j({"unix_ms":1,"link":"connected","az_min":300,"az_max":10,"el_min":0,"el_max":90})j") << "travel";
+        QTest::newRow("alarm escape") << "{" + base + ",\"alarms\":[\"\\u001b[31m\"]}" << "'alarms'";
+        QTest::newRow("unknown") << "{" + base + R"j(,"x":1})j" << "unknown field";
+        QTest::newRow("negative time") << QByteArray(R"j({"unix_ms":-5,"link":"connected","az_min":0,"az_max":360,"el_min":0,"el_max":90})j") << "'unix_ms'";
+    }
+    void badStates()
+    {
+        QFETCH(QByteArray, json);
+        QFETCH(QString, error);
+        QString why;
+        const auto s = parseStationState(json, &why);
+        QCOMPARE(s.has_value(), error.isEmpty());
+        if (!error.isEmpty())
+            QVERIFY2(why.contains(error), qPrintable(why));
+    }
+
+    void telemetry()
+    {
+        TelemetrySample t;
+        t.unixMs = 5;
+        t.az = 1.5;
+        t.azSpeed = -3;
+        t.gs = 0x0402;
+        t.pointingError = 0.2;
+        QString error;
+        const auto back = parseTelemetry(encodeTelemetry(t), &error);
+        QVERIFY2(back, qPrintable(error));
+        QCOMPARE(back->az, t.az);
+        QCOMPARE(back->azSpeed, t.azSpeed);
+        QCOMPARE(back->gs, t.gs);
+        QVERIFY(!back->el);
+        QVERIFY(!parseTelemetry(R"j({"unix_ms":5,"temperature":1e400})j", &error));
+        QVERIFY(!parseTelemetry(R"j({"unix_ms":5,"gs":70000})j", &error));
+        QVERIFY2(error.contains(QStringLiteral("'gs'")), qPrintable(error));
+    }
+};
+
+QTEST_GUILESS_MAIN(RemoteMessagesTest)
+#include "tst_remotemessages.moc"

@@ -1,0 +1,278 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The remote window against a real broker and real station services: a
+// Mosquitto of the test's own (TLS, accounts, access list) and `slew
+// --headless --mqtt` processes on the built-in simulator. The window shows
+// the station and says it is remote and how old its state is; a go-to, a
+// jog and Stop move and stop the station's rotator; a move out of the
+// travel is refused in the gate's words; a watcher's window is refused by
+// the broker and nothing moves; a lost broker greys the window and it comes
+// back by itself; the station network shows every station and opens one.
+// Run offscreen and, as tst_remotewindow_x11, in a real X11 window, where
+// the layout is checked at 1280x720 and the README's pictures are taken.
+
+#include "../common/mosquittobroker.h"
+#include "../common/stationprocess.h"
+#include "layoutfaults.h"
+
+#include "alarmbanner.h"
+#include "operatortheme.h"
+#include "polarplotwidget.h"
+#include "remotebanner.h"
+#include "remoteconnectdialog.h"
+#include "remotecontrols.h"
+#include "remoteopener.h"
+#include "remotereadout.h"
+#include "remotestationwindow.h"
+#include "stationnetworkwindow.h"
+#include "stationtile.h"
+#include "stopbutton.h"
+
+#include "model/movegate.h"
+#include "remote/remotestation.h"
+
+#include <QApplication>
+#include <QDir>
+#include <QGuiApplication>
+#include <QLabel>
+#include <QPointer>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <cmath>
+#include <memory>
+
+using slew::remote::RemoteStation;
+using slew::ui::RemoteStationWindow;
+
+namespace {
+
+bool onX11()
+{
+    return QGuiApplication::platformName() == u"xcb";
+}
+
+} // namespace
+
+class RemoteWindowTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase()
+    {
+        // File → Open remote station… keeps the address: in a scratch place.
+        QStandardPaths::setTestModeEnabled(true);
+        QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, m_settings.path());
+        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settings.path());
+        QCoreApplication::setOrganizationName(QStringLiteral("SlewTests"));
+        slew::ui::applyOperatorTheme(*static_cast<QApplication *>(QCoreApplication::instance())); // as slew --remote draws it
+        QString error;
+        QVERIFY2(m_broker.start(&error), qPrintable(error));
+        m_mast = std::make_unique<StationProcess>(station(QStringLiteral("mast"), QStringLiteral("sim:?start_az=200&start_el=20")));
+        m_dish = std::make_unique<StationProcess>(station(QStringLiteral("dish2"), QStringLiteral("sim:?model=satnogs&start_az=90&start_el=60")));
+        QVERIFY2(m_mast->logged("remote: connected to"), m_mast->said().constData());
+        QVERIFY2(m_dish->logged("remote: connected to"), m_dish->said().constData());
+    }
+
+    void showsTheStationAndMovesIt()
+    {
+        RemoteStationWindow *window = open(QStringLiteral("operator"), QStringLiteral("mast"));
+        QVERIFY(window);
+        QPointer<RemoteStationWindow> guard(window);
+        RemoteStation *remote = window->station();
+        QTRY_VERIFY_WITH_TIMEOUT(remote->isLive(), 20000);
+        // It says plainly that it is remote, which station, and how old.
+        const QString banner = window->remoteBanner()->text();
+        QVERIFY2(banner.startsWith(QStringLiteral("REMOTE: station mast on mqtts://operator@localhost:")), qPrintable(banner));
+        QVERIFY2(banner.contains(QStringLiteral("s old")), qPrintable(banner));
+        QVERIFY(window->windowTitle().contains(QStringLiteral("REMOTE")));
+        QTRY_VERIFY(window->readout()->findChild<QLabel *>(QStringLiteral("remoteAzimuth"))->text() == QStringLiteral("Az 200.0°"));
+        QVERIFY(window->polarPlot()->actual());
+        QVERIFY(!window->polarPlot()->isStale());
+
+        // Out of the travel: refused here in the station's gate's words, and
+        // not sent.
+        window->controls()->setFields(999, 30);
+        QVERIFY(!window->controls()->findChild<QPushButton *>(QStringLiteral("remoteGo"))->isEnabled());
+        QVERIFY(!window->controls()->go());
+        const QString gate = slew::model::MoveGate(slew::model::RotatorLimits{0, 450, 0, 180}).pointing(999, 30, 200).refusal;
+        QCOMPARE(window->controls()->message(), QStringLiteral("go to: %1").arg(gate));
+
+        // A go-to moves the station's rotator; its reply comes back.
+        QSignalSpy replies(remote, &RemoteStation::replied);
+        window->controls()->setFields(215, 25);
+        QVERIFY(window->controls()->go());
+        QTRY_VERIFY_WITH_TIMEOUT(!replies.isEmpty(), 10000);
+        QCOMPARE(replies.first().at(2).toBool(), true);
+        QTRY_VERIFY_WITH_TIMEOUT(remote->state()->position && std::abs(remote->state()->position->x() - 215) < 1
+                                     && std::abs(remote->state()->position->y() - 25) < 1 && !remote->state()->moving,
+                                 30000);
+
+        // Stop, while it moves: it stops short.
+        window->controls()->setFields(300, 45);
+        QVERIFY(window->controls()->go());
+        QTRY_VERIFY_WITH_TIMEOUT(remote->state()->moving, 10000);
+        if (onX11()) // on its way, with the target shown: README's picture
+            checkLayoutAndPicture(window, QStringLiteral("remote-window.png"));
+        window->stopButton()->click();
+        QTRY_VERIFY_WITH_TIMEOUT(!remote->state()->moving, 10000);
+        QVERIFY2(remote->state()->position->x() < 290, qPrintable(QString::number(remote->state()->position->x())));
+
+        // A jog turns while the button is held, and stops on release.
+        auto *right = window->controls()->findChild<QPushButton *>(QStringLiteral("remoteJogRight"));
+        const double before = remote->state()->position->x();
+        QTest::mousePress(right, Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(remote->state()->moving && remote->state()->position->x() > before + 1, 10000);
+        QTest::mouseRelease(right, Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!remote->state()->moving, 10000);
+        delete window;
+    }
+
+    void aWatcherMayOnlyWatch()
+    {
+        RemoteStationWindow *window = open(QStringLiteral("watcher"), QStringLiteral("mast"));
+        QVERIFY(window);
+        RemoteStation *remote = window->station();
+        QTRY_VERIFY_WITH_TIMEOUT(remote->isLive(), 20000);
+        const double az = remote->state()->position->x();
+        window->controls()->setFields(az + 20, 30);
+        QVERIFY(window->controls()->go());
+        QTRY_VERIFY_WITH_TIMEOUT(window->controls()->message().contains(QStringLiteral("this account may only watch")), 10000);
+        QVERIFY2(window->controls()->message().contains(QStringLiteral("Not authorized")), qPrintable(window->controls()->message()));
+        // Nothing moved: the station never heard it. Three samples later it
+        // is where it was.
+        QSignalSpy samples(remote, &RemoteStation::telemetryReceived);
+        QTRY_VERIFY_WITH_TIMEOUT(samples.size() >= 3, 20000);
+        for (const QList<QVariant> &sample : std::as_const(samples))
+            QVERIFY(std::abs(*sample.at(0).value<slew::remote::TelemetrySample>().az - az) < 0.2);
+        QVERIFY(!remote->state()->moving);
+        delete window;
+    }
+
+    void aLostBrokerGreysTheWindowUntilItIsBack()
+    {
+        RemoteStationWindow *window = open(QStringLiteral("operator"), QStringLiteral("mast"));
+        QVERIFY(window);
+        RemoteStation *remote = window->station();
+        QTRY_VERIFY_WITH_TIMEOUT(remote->isLive(), 20000);
+        m_broker.stop();
+        QTRY_VERIFY_WITH_TIMEOUT(!remote->isLive(), 20000);
+        QVERIFY2(window->remoteBanner()->text().contains(QStringLiteral("NOT LIVE")), qPrintable(window->remoteBanner()->text()));
+        QVERIFY(!window->readout()->isEnabled());
+        QVERIFY(window->polarPlot()->isStale());
+        QVERIFY(window->alarmBanner()->isVisible() || !window->isVisible());
+        QVERIFY(window->alarmBanner()->text().startsWith(QStringLiteral("Not live:")));
+        QVERIFY(window->stopButton()->isEnabled()); // Stop is never greyed
+        QString error;
+        QVERIFY2(m_broker.start(&error, m_broker.port(), m_broker.plainPort()), qPrintable(error));
+        // The window, and the stations, find it again by themselves.
+        QTRY_VERIFY_WITH_TIMEOUT(remote->isLive(), 60000);
+        QVERIFY(window->readout()->isEnabled());
+        QVERIFY(!window->polarPlot()->isStale());
+        delete window;
+    }
+
+    void theNetworkShowsEveryStation()
+    {
+        QString error;
+        const auto address = slew::remote::parseBrokerAddress(m_broker.url(QStringLiteral("watcher")), &error);
+        QVERIFY2(address, qPrintable(error));
+        QMainWindow *opened = slew::ui::openRemoteWindow(*address, MosquittoBroker::password(QStringLiteral("watcher")), &error);
+        auto *network = qobject_cast<slew::ui::StationNetworkWindow *>(opened);
+        QVERIFY2(network, qPrintable(error));
+        QTRY_COMPARE_WITH_TIMEOUT(network->tileCount(), 2, 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(network->tile(QStringLiteral("dish2"))->statusText().startsWith(QStringLiteral("az 90.0° el 60.0°")), 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(network->tile(QStringLiteral("mast"))->plot()->actual().has_value(), 20000);
+        QVERIFY(!network->tile(QStringLiteral("mast"))->plot()->isStale());
+        if (onX11()) {
+            network->resize(1280, 720);
+            QDir().mkpath(QStringLiteral("screenshots"));
+            QTRY_VERIFY(network->isVisible());
+            QVERIFY(network->grab().save(QStringLiteral("screenshots/station-network.png")));
+        }
+        // Open: the station's own window, on a connection of its own.
+        QWidget *station = network->openStation(QStringLiteral("dish2"));
+        auto *window = qobject_cast<RemoteStationWindow *>(station);
+        QVERIFY(window);
+        QTRY_VERIFY_WITH_TIMEOUT(window->station()->isLive(), 20000);
+        QCOMPARE(window->station()->name(), QStringLiteral("dish2"));
+        delete window;
+        delete network;
+    }
+
+    void theOpenDialogChecksTheAddress()
+    {
+        // File → Open remote station…: a bad address is said and opens nothing.
+        slew::ui::RemoteConnectDialog dialog;
+        dialog.addressField()->setText(QStringLiteral("mqtt://operator@192.0.2.1:1883/mast"));
+        QVERIFY(!dialog.openRemote());
+        QVERIFY2(dialog.problem().contains(QStringLiteral("in the clear")), qPrintable(dialog.problem()));
+        dialog.addressField()->setText(QStringLiteral("mqtts://operator:secret@localhost/mast"));
+        QVERIFY(!dialog.openRemote());
+        QVERIFY2(dialog.problem().contains(QStringLiteral("no password in the address")), qPrintable(dialog.problem()));
+        // A good one opens the station's window, and is kept; the password is not.
+        dialog.addressField()->setText(m_broker.url(QStringLiteral("operator"), QStringLiteral("mast")));
+        dialog.passwordField()->setText(MosquittoBroker::password(QStringLiteral("operator")));
+        QVERIFY2(dialog.openRemote(), qPrintable(dialog.problem()));
+        RemoteStationWindow *opened = nullptr;
+        for (QWidget *w : QApplication::topLevelWidgets()) {
+            if (auto *r = qobject_cast<RemoteStationWindow *>(w))
+                opened = r;
+        }
+        QVERIFY(opened);
+        QTRY_VERIFY_WITH_TIMEOUT(opened->station()->isLive(), 20000);
+        QCOMPARE(QSettings().value(QLatin1String(slew::ui::RemoteConnectDialog::kAddressKey)).toString(),
+                 m_broker.url(QStringLiteral("operator"), QStringLiteral("mast")));
+        for (const QString &key : QSettings().allKeys())
+            QVERIFY2(!QSettings().value(key).toString().contains(MosquittoBroker::password(QStringLiteral("operator"))),
+                     qPrintable(key));
+        delete opened;
+    }
+
+    void cleanupTestCase()
+    {
+        QCOMPARE(m_mast->stop(SIGTERM), 0);
+        QCOMPARE(m_dish->stop(SIGTERM), 0);
+    }
+
+private:
+    QStringList station(const QString &name, const QString &uri) const
+    {
+        return {QStringLiteral("--connect"), uri, QStringLiteral("--limits"), QStringLiteral("0:450,0:180"),
+                QStringLiteral("--mqtt"), m_broker.url(QStringLiteral("station-") + name), QStringLiteral("--station-name"),
+                name, QStringLiteral("--mqtt-password-file"), m_broker.passwordFile(QStringLiteral("station-") + name)};
+    }
+
+    RemoteStationWindow *open(const QString &user, const QString &name)
+    {
+        QString error;
+        const auto address = slew::remote::parseBrokerAddress(m_broker.url(user, name), &error);
+        if (!address)
+            return nullptr;
+        QMainWindow *window = slew::ui::openRemoteWindow(*address, MosquittoBroker::password(user), &error);
+        if (!window)
+            qWarning("%s", qPrintable(error));
+        return qobject_cast<RemoteStationWindow *>(window);
+    }
+
+    void checkLayoutAndPicture(QWidget *window, const QString &file)
+    {
+        window->resize(1280, 720);
+        QTRY_COMPARE(window->size(), QSize(1280, 720));
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest); // the layout, settled
+        const QStringList faults = layoutFaults(window);
+        QVERIFY2(faults.isEmpty(), qPrintable(faults.join(u'\n')));
+        QDir().mkpath(QStringLiteral("screenshots"));
+        QVERIFY(window->grab().save(QStringLiteral("screenshots/") + file));
+    }
+
+    QTemporaryDir m_settings;
+    MosquittoBroker m_broker{{QStringLiteral("mast"), QStringLiteral("dish2")}};
+    std::unique_ptr<StationProcess> m_mast, m_dish;
+};
+
+QTEST_MAIN(RemoteWindowTest)
+#include "tst_remotewindow.moc"

@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The window for a station that lives on a broker (remote/remotestation.h):
+// the operator window's own widgets where they are values — the polar plot,
+// the alarm banner, the big Stop, the telemetry charts, the event log — and
+// small remote counterparts of the panels that are views of a local
+// session (the readout, go-to, jog, Park and Home, tracking). A banner
+// across the top says it is remote, which station on which broker, and how
+// old the last state is; a lost broker or a silent station greys it as a
+// lost link greys the local window. Stop (the button, Esc, Space) always
+// sends.
+
+#include <QMainWindow>
+
+class QTabWidget;
+
+namespace slew::remote {
+class RemoteStation;
+struct StationState;
+}
+
+namespace slew::ui {
+
+class AlarmBanner;
+class EventLog;
+class PolarPlotWidget;
+class RemoteBanner;
+class RemoteControls;
+class RemoteReadout;
+class StopButton;
+class TelemetryCharts;
+class TelemetryRecorder;
+
+class RemoteStationWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    // The station must outlive the window (parent it to the window).
+    explicit RemoteStationWindow(remote::RemoteStation *station, QWidget *parent = nullptr);
+
+    remote::RemoteStation *station() const { return m_station; }
+    RemoteBanner *remoteBanner() const { return m_remoteBanner; }
+    AlarmBanner *alarmBanner() const { return m_alarms; }
+    PolarPlotWidget *polarPlot() const { return m_plot; }
+    RemoteReadout *readout() const { return m_readout; }
+    RemoteControls *controls() const { return m_controls; }
+    StopButton *stopButton() const { return m_stop; }
+    TelemetryCharts *telemetryCharts() const { return m_charts; }
+    EventLog *eventLog() const { return m_log; }
+
+private:
+    void showState(const remote::StationState &state);
+    void showLive(bool live);
+    void log(bool problem, const QString &text);
+
+    remote::RemoteStation *m_station;
+    RemoteBanner *m_remoteBanner;
+    AlarmBanner *m_alarms;
+    PolarPlotWidget *m_plot;
+    RemoteReadout *m_readout;
+    RemoteControls *m_controls;
+    StopButton *m_stop;
+    TelemetryRecorder *m_recorder;
+    TelemetryCharts *m_charts;
+    EventLog *m_log;
+    QTabWidget *m_tabs;
+    QStringList m_lastAlarms;
+};
+
+} // namespace slew::ui
