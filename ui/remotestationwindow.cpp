@@ -6,7 +6,9 @@
 #include "polarplotwidget.h"
 #include "remotebanner.h"
 #include "remotecontrols.h"
+#include "passoverlay.h"
 #include "remotereadout.h"
+#include "remotescheduleview.h"
 #include "stopbutton.h"
 #include "telemetrycharts.h"
 #include "telemetryrecorder.h"
@@ -61,6 +63,8 @@ RemoteStationWindow::RemoteStationWindow(RemoteStation *station, QWidget *parent
     m_tabs->setObjectName(QStringLiteral("remoteTabs"));
     m_tabs->addTab(m_charts, tr("Telemetry"));
     m_tabs->addTab(m_log, tr("Events"));
+    m_schedule = new RemoteScheduleView;
+    m_tabs->addTab(m_schedule, tr("Schedule"));
 
     auto *column = new QWidget;
     column->setObjectName(QStringLiteral("remoteControlColumn"));
@@ -106,6 +110,14 @@ RemoteStationWindow::RemoteStationWindow(RemoteStation *station, QWidget *parent
         }
     });
     connect(m_plot, &PolarPlotWidget::targetPicked, m_controls, &RemoteControls::setFields);
+    connect(station, &RemoteStation::planChanged, this, &RemoteStationWindow::showPlan);
+    connect(station, &RemoteStation::scheduleChanged, this, [this](const remote::StationSchedule &s) {
+        m_schedule->showSchedule(s, QDateTime::currentMSecsSinceEpoch());
+    });
+    // The time line's now moves with every state (at least every 5 s): no
+    // timer of its own.
+    connect(station, &RemoteStation::stateChanged, this,
+            [this] { m_schedule->showTime(QDateTime::currentMSecsSinceEpoch()); });
     connect(m_stop, &StopButton::stopped, station, &RemoteStation::endJog);
     connect(m_stop, &StopButton::stopped, this, [this] { log(false, tr("Stop sent")); });
     connect(station, &RemoteStation::replied, this, [this](const QString &, const QString &command, bool ok, const QString &error) {
@@ -140,6 +152,24 @@ void RemoteStationWindow::log(bool problem, const QString &text)
     m_log->addEvent(QDateTime::currentDateTime(), problem ? AlarmMonitor::Severity::Warning : AlarmMonitor::Severity::Info,
                     text);
     statusBar()->showMessage(text, problem ? 30000 : 8000);
+}
+
+void RemoteStationWindow::showPlan(const remote::StationPlan &plan)
+{
+    // The pass ahead on the plot, as the local window's Tracking tab draws it.
+    if (plan.target.isEmpty() || plan.sky.isEmpty()) {
+        m_plot->setPassOverlay(std::nullopt);
+        return;
+    }
+    PassOverlay overlay;
+    overlay.sky = plan.sky;
+    overlay.planned = plan.path;
+    overlay.azimuthTurnStart = plan.azimuthTurnStart;
+    overlay.azimuthTurnEnd = plan.azimuthTurnEnd;
+    overlay.flipped = plan.flipped;
+    overlay.overTheTop = plan.overTheTop;
+    overlay.unwinds = plan.unwinds;
+    m_plot->setPassOverlay(overlay);
 }
 
 void RemoteStationWindow::showState(const remote::StationState &s)

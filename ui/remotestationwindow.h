@@ -16,6 +16,7 @@ class QTabWidget;
 
 namespace slew::remote {
 class RemoteStation;
+struct StationPlan;
 struct StationState;
 }
 
@@ -27,6 +28,7 @@ class PolarPlotWidget;
 class RemoteBanner;
 class RemoteControls;
 class RemoteReadout;
+class RemoteScheduleView;
 class StopButton;
 class TelemetryCharts;
 class TelemetryRecorder;
@@ -46,9 +48,11 @@ public:
     StopButton *stopButton() const { return m_stop; }
     TelemetryCharts *telemetryCharts() const { return m_charts; }
     EventLog *eventLog() const { return m_log; }
+    RemoteScheduleView *scheduleView() const { return m_schedule; }
 
 private:
     void showState(const remote::StationState &state);
+    void showPlan(const remote::StationPlan &plan);
     void showLive(bool live);
     void log(bool problem, const QString &text);
 
@@ -62,6 +66,7 @@ private:
     TelemetryRecorder *m_recorder;
     TelemetryCharts *m_charts;
     EventLog *m_log;
+    RemoteScheduleView *m_schedule;
     QTabWidget *m_tabs;
     QStringList m_lastAlarms;
 };

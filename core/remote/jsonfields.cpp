@@ -56,6 +56,22 @@ QJsonValue JsonFields::take(const QString &key, bool required)
     return value;
 }
 
+std::optional<QJsonArray> JsonFields::takeList(const QString &key, int maxItems, bool required)
+{
+    const QJsonValue v = take(key, required);
+    if (v.isUndefined())
+        return std::nullopt;
+    if (!v.isArray()) {
+        fail(QStringLiteral("'%1' is not a list").arg(key));
+        return std::nullopt;
+    }
+    if (v.toArray().size() > maxItems) {
+        fail(QStringLiteral("'%1' has %2 items, over the %3 it may have").arg(key).arg(v.toArray().size()).arg(maxItems));
+        return std::nullopt;
+    }
+    return v.toArray();
+}
+
 std::optional<double> JsonFields::number(const QString &key, const input::NumberRange &range, bool required)
 {
     const QJsonValue v = take(key, required);
@@ -124,18 +140,10 @@ std::optional<bool> JsonFields::flag(const QString &key, bool required)
 
 std::optional<QStringList> JsonFields::texts(const QString &key, int maxItems, int maxChars, bool required)
 {
-    const QJsonValue v = take(key, required);
-    if (v.isUndefined())
+    const std::optional<QJsonArray> list = takeList(key, maxItems, required);
+    if (!list)
         return std::nullopt;
-    if (!v.isArray()) {
-        fail(QStringLiteral("'%1' is not a list").arg(key));
-        return std::nullopt;
-    }
-    const QJsonArray array = v.toArray();
-    if (array.size() > maxItems) {
-        fail(QStringLiteral("'%1' has %2 items, over %3").arg(key).arg(array.size()).arg(maxItems));
-        return std::nullopt;
-    }
+    const QJsonArray &array = *list;
     QStringList out;
     for (const QJsonValue &item : array) {
         if (!item.isString() || !isShowable(item.toString(), maxChars)) {
@@ -159,6 +167,46 @@ bool JsonFields::noOthers()
         }
     }
     return ok();
+}
+
+std::optional<QList<QJsonObject>> JsonFields::objects(const QString &key, int maxItems, bool required)
+{
+    const std::optional<QJsonArray> list = takeList(key, maxItems, required);
+    if (!list)
+        return std::nullopt;
+    const QJsonArray &array = *list;
+    QList<QJsonObject> out;
+    out.reserve(array.size());
+    for (qsizetype i = 0; i < array.size(); ++i) {
+        if (!array.at(i).isObject()) {
+            fail(QStringLiteral("'%1' item %2 is not an object").arg(key).arg(i + 1));
+            return std::nullopt;
+        }
+        out.append(array.at(i).toObject());
+    }
+    return out;
+}
+
+std::optional<QList<QPointF>> JsonFields::points(const QString &key, int maxItems, bool required)
+{
+    const std::optional<QJsonArray> list = takeList(key, maxItems, required);
+    if (!list)
+        return std::nullopt;
+    const QJsonArray &array = *list;
+    QList<QPointF> out;
+    out.reserve(array.size());
+    for (qsizetype i = 0; i < array.size(); ++i) {
+        const QJsonArray pair = array.at(i).toArray();
+        const double az = pair.size() == 2 ? pair.at(0).toDouble(std::nan("")) : std::nan("");
+        const double el = pair.size() == 2 ? pair.at(1).toDouble(std::nan("")) : std::nan("");
+        if (!array.at(i).isArray() || !std::isfinite(az) || !std::isfinite(el) || az < -360 || az > 720 || el < -90
+            || el > 180) {
+            fail(QStringLiteral("'%1' point %2 is not [az, el] with az in -360..720 and el in -90..180").arg(key).arg(i + 1));
+            return std::nullopt;
+        }
+        out.append(QPointF(az, el));
+    }
+    return out;
 }
 
 } // namespace slew::remote

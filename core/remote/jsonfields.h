@@ -8,7 +8,10 @@
 
 #include "input/finitenumber.h"
 
+#include <QJsonArray>
 #include <QJsonObject>
+#include <QList>
+#include <QPointF>
 #include <QSet>
 #include <QString>
 
@@ -31,6 +34,12 @@ public:
     std::optional<bool> flag(const QString &key, bool required = false);
     // An array of texts, at most maxItems of at most maxChars each.
     std::optional<QStringList> texts(const QString &key, int maxItems, int maxChars, bool required = false);
+    // A list of at most maxItems objects, each to be read with JsonFields
+    // of its own (a schedule's passes).
+    std::optional<QList<QJsonObject>> objects(const QString &key, int maxItems, bool required = false);
+    // A list of at most maxItems points, each [az, el] with both in range
+    // (a plan's path): azimuth -360..720, elevation -90..180.
+    std::optional<QList<QPointF>> points(const QString &key, int maxItems, bool required = false);
     // Fails on any field no call above has named.
     bool noOthers();
 
@@ -43,6 +52,8 @@ public:
 
 private:
     QJsonValue take(const QString &key, bool required);
+    // A list of at most maxItems, or nothing (and the fault when it is not).
+    std::optional<QJsonArray> takeList(const QString &key, int maxItems, bool required);
 
     QJsonObject m_object;
     QSet<QString> m_named;

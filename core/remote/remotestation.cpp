@@ -144,8 +144,28 @@ void RemoteStation::onMessage(const QString &topic, const QByteArray &payload)
         emit replied(reply->id, pending.command, reply->ok, reply->error);
         return;
     }
+    case StationTopic::Plan: {
+        std::optional<StationPlan> plan = parseStationPlan(payload, &why);
+        if (!plan) {
+            refuse(tr("%1 dropped: %2").arg(topic, why));
+            return;
+        }
+        m_plan = std::move(plan);
+        emit planChanged(*m_plan);
+        return;
+    }
+    case StationTopic::Schedule: {
+        std::optional<StationSchedule> schedule = parseStationSchedule(payload, &why);
+        if (!schedule) {
+            refuse(tr("%1 dropped: %2").arg(topic, why));
+            return;
+        }
+        m_schedule = std::move(schedule);
+        emit scheduleChanged(*m_schedule);
+        return;
+    }
     default:
-        return; // commands (ours and others'), and what is reserved
+        return; // commands, ours and others'
     }
 }
 

@@ -18,6 +18,8 @@
 #include "model/movegate.h"
 #include "mqttclient.h"
 #include "remotecommand.h"
+#include "stationplan.h"
+#include "stationschedule.h"
 #include "stationstate.h"
 #include "stationtelemetry.h"
 
@@ -53,6 +55,10 @@ public:
     MqttClient *client() const { return m_client.get(); }
 
     const std::optional<StationState> &state() const { return m_state; }
+    // The plan of the pass ahead and the schedule, as the station last
+    // published them; none before the first.
+    const std::optional<StationPlan> &plan() const { return m_plan; }
+    const std::optional<StationSchedule> &schedule() const { return m_schedule; }
     bool isOnline() const { return m_online; }
     // Milliseconds since the last state arrived; -1 before the first.
     qint64 stateAgeMs() const { return m_stateAge.isValid() ? m_stateAge.elapsed() : -1; }
@@ -87,6 +93,8 @@ public:
 signals:
     void stateChanged(const slew::remote::StationState &state);
     void telemetryReceived(const slew::remote::TelemetrySample &sample);
+    void planChanged(const slew::remote::StationPlan &plan);
+    void scheduleChanged(const slew::remote::StationSchedule &schedule);
     void onlineChanged(bool online);
     void liveChanged(bool live);
     // The station's answer to a command this window sent.
@@ -108,6 +116,8 @@ private:
     QString m_name;
     std::unique_ptr<MqttClient> m_client;
     std::optional<StationState> m_state;
+    std::optional<StationPlan> m_plan;
+    std::optional<StationSchedule> m_schedule;
     bool m_online = false;
     bool m_live = false;
     QElapsedTimer m_stateAge;

@@ -8,8 +8,8 @@
 //                        GS/GE, pointing error, Doppler error
 //   command              JSON, to the station: goto, stop, park, home, track, untrack, jog
 //   reply                JSON, from the station: the answer to each command's id
-//   schedule   retained  (reserved: the station's schedule, once it has one)
-//   plan       retained  (reserved: the plan of the pass ahead)
+//   schedule   retained  JSON: the schedule it runs, every pass with its decision (stationschedule.h)
+//   plan       retained  JSON: the pass ahead, its sky and the antenna's planned path (stationplan.h)
 //
 // A broker's access list grants these per account (docs/remote.md):
 // watchers read `slew/+/#` and write nothing; operators also write

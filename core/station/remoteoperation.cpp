@@ -3,6 +3,7 @@
 
 #include "remotecommands.h"
 #include "station.h"
+#include "planpublisher.h"
 #include "statepublisher.h"
 
 #include "remote/mqttclient.h"
@@ -39,12 +40,15 @@ RemoteOperation::RemoteOperation(Station *station, const RemoteOptions &options,
     m_client = std::make_unique<MqttClient>(settings);
     m_publisher = std::make_unique<StatePublisher>(
         station, options.stationName, [this](const MqttMessage &m) { publish(m); });
+    m_plans = std::make_unique<PlanPublisher>(station, options.stationName,
+                                              [this](const MqttMessage &m) { publish(m); });
     m_commands = std::make_unique<RemoteCommands>(station, options.elementSets);
     m_commandTopic = remote::stationTopic(options.stationName, StationTopic::Command);
     connect(m_commands.get(), &RemoteCommands::logLine, this, &RemoteOperation::logLine);
     connect(m_client.get(), &MqttClient::connected, this, &RemoteOperation::onConnected);
     connect(m_client.get(), &MqttClient::connectionLost, this, [this](const QString &why, int retry) {
         m_publisher->setEnabled(false);
+        m_plans->setEnabled(false);
         emit logLine(tr("remote: %1: %2; trying again in %3 s").arg(m_client->settings().broker.display(), why).arg(retry));
     });
     connect(m_client.get(), &MqttClient::messageReceived, this,
@@ -88,6 +92,8 @@ void RemoteOperation::onConnected()
     publish(onlineMessage(m_options.stationName, true));
     m_publisher->setEnabled(true);
     m_publisher->publishState();
+    m_plans->setEnabled(true);
+    m_plans->publishNow();
 }
 
 void RemoteOperation::onMessage(const QString &topic, const QByteArray &payload)
@@ -109,6 +115,7 @@ void RemoteOperation::close(const QString &why)
     if (m_client->isConnected())
         m_publisher->publishState();
     m_publisher->setEnabled(false);
+    m_plans->setEnabled(false);
     m_client->close(onlineMessage(m_options.stationName, false));
 }
 

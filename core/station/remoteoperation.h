@@ -27,6 +27,7 @@ struct MqttMessage;
 namespace slew::station {
 
 class RemoteCommands;
+class PlanPublisher;
 class StatePublisher;
 class Station;
 
@@ -54,6 +55,7 @@ public:
     const RemoteOptions &options() const { return m_options; }
     remote::MqttClient *client() const { return m_client.get(); }
     StatePublisher *publisher() const { return m_publisher.get(); }
+    PlanPublisher *planPublisher() const { return m_plans.get(); }
     RemoteCommands *commands() const { return m_commands.get(); }
 
 signals:
@@ -69,6 +71,7 @@ private:
     RemoteOptions m_options;
     std::unique_ptr<remote::MqttClient> m_client;
     std::unique_ptr<StatePublisher> m_publisher;
+    std::unique_ptr<PlanPublisher> m_plans;
     std::unique_ptr<RemoteCommands> m_commands;
     QString m_commandTopic;
     bool m_closing = false;

@@ -94,6 +94,8 @@ public:
     bool hasRotator() const { return m_state == State::Tracking || (m_state == State::Waiting && m_prepositioned); }
     QString error() const { return m_error; }
     const PassPlan &plan() const { return m_plan; }
+    // The target's sky along the pass being waited for or followed.
+    const QList<SkyPoint> &skyPoints() const { return m_pass; }
     const TrackingFigures &figures() const { return m_figures; }
     // Seconds from AOS now (negative before it).
     double secondsFromAos() const;

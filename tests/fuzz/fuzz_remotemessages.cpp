@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzz target: what arrives from an MQTT broker (core/remote): commands to a
-// station, a station's state and telemetry, replies, and a broker's address
-// as an operator types it.
+// station, a station's state, telemetry, plan and schedule, replies, and a
+// broker's address as an operator types it.
 //
-// Input: the first byte picks the reader, the rest is the message. Checked
+// Input: the first byte picks the reader (0xfe a plan, 0xff a schedule, any
+// other by its remainder of 5), the rest is the message. Checked
 // besides crashes and sanitizer reports: every message accepted has every
 // number finite and in its range, every text free of control characters
 // and within its length, a jog's lease within a second, travel that makes
@@ -19,6 +20,8 @@
 #include "remote/brokeraddress.h"
 #include "remote/jsonfields.h"
 #include "remote/remotecommand.h"
+#include "remote/stationplan.h"
+#include "remote/stationschedule.h"
 #include "remote/stationstate.h"
 #include "remote/stationtelemetry.h"
 
@@ -142,6 +145,45 @@ void addresses(const QByteArray &bytes)
     check(a->caFile.isEmpty() || a->tls, "a CA file without TLS");
 }
 
+void plans(const QByteArray &bytes)
+{
+    QString why;
+    const auto p = parseStationPlan(bytes, &why);
+    if (!p) {
+        checkRefusal(why);
+        return;
+    }
+    check(JsonFields::isShowable(p->target, 100), "a plan's target that cannot be shown");
+    check(p->sky.size() <= kMostPlanPoints && p->path.size() <= kMostPlanPoints, "a plan with too many points");
+    for (const QList<QPointF> *points : {&p->sky, &p->path}) {
+        for (const QPointF &q : *points)
+            check(finiteIn(q.x(), -360, 720) && finiteIn(q.y(), -90, 180), "a plan's point out of range");
+    }
+    check(!p->target.isEmpty() || (p->sky.isEmpty() && p->path.isEmpty()), "a path without a target");
+    check(parseStationPlan(encodeStationPlan(*p), &why).has_value(), "a plan written out does not read back");
+}
+
+void schedules(const QByteArray &bytes)
+{
+    QString why;
+    const auto s = parseStationSchedule(bytes, &why);
+    if (!s) {
+        checkRefusal(why);
+        return;
+    }
+    check(s->schedule.passes.size() <= kMostScheduledPasses, "a schedule with too many passes");
+    for (const auto &p : s->schedule.passes) {
+        check(JsonFields::isShowable(p.target, 100) && JsonFields::isShowable(p.why, 400),
+              "a scheduled pass with text that cannot be shown");
+        check(p.pass.aos.julian <= p.pass.los.julian && p.startJulian <= p.endJulian, "a pass's times out of order");
+        check(p.priority >= 0 && p.priority < std::max<qsizetype>(1, s->schedule.targets.size()),
+              "a pass's priority outside the targets");
+    }
+    check(!s->current || (*s->current < s->schedule.passes.size() && s->schedule.passes.at(*s->current).taken),
+          "a current pass that is not a taken one");
+    check(std::isfinite(s->schedule.settings.hours) && s->schedule.settings.hours >= 0, "a schedule's hours not finite");
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
@@ -149,6 +191,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     if (size == 0)
         return 0;
     const QByteArray bytes(reinterpret_cast<const char *>(data) + 1, qsizetype(size - 1));
+    if (data[0] == 0xfe) {
+        plans(bytes);
+        return 0;
+    }
+    if (data[0] == 0xff) {
+        schedules(bytes);
+        return 0;
+    }
     switch (data[0] % 5) {
     case 0:
         commands(bytes);

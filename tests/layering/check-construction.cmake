@@ -17,7 +17,7 @@ set(parts RotatorSession RotctldServer PassRunner Tracker AlarmMonitor TleSource
           SharedLine StationClock SimulatorPace MoveWatch ConsoleRunner TransponderSources
           DopplerRadio DopplerSteering RadioLink RigctldRadioLink HamlibRadioLink ControllerRadioLink
           PassRecordStore PassRecorder
-          RemoteOperation StatePublisher RemoteCommands RemoteJog MqttClient)
+          RemoteOperation StatePublisher PlanPublisher RemoteCommands RemoteJog MqttClient)
 # Functions that make a part; the part each makes.
 set(factories "makeRadioLink=RadioLink")
 # file (relative to ROOT) = the parts it may make

@@ -29,7 +29,8 @@ set(allowed_records "input")
 # remote: MQTT (the broker, the client, the messages) and the remote station a
 # window shows; it knows values (positions, limits), never the Station, which
 # sits above it and publishes itself through it (station/remoteoperation.h).
-set(allowed_remote "session;model;protocol;transport;sky;input")
+# A schedule is a value too: the remote one is the local one's.
+set(allowed_remote "schedule;session;model;protocol;transport;sky;input")
 set(allowed_schedule "tracking;sky;model;input")
 # station: one ground station's parts and their rules; the faces (ui, app) sit on it.
 set(allowed_station "schedule;records;remote;radio;bridge;tracking;session;sky;model;protocol;transport;input")

@@ -2,12 +2,14 @@
 // What travels over the broker, read under the input rules: the broker's
 // address (TLS, no password in it, plain mqtt:// only to this machine), the
 // password file, station names and topics, commands and replies, a
-// station's state and telemetry. Tables of good and bad messages; a bad one
+// station's state, telemetry, plan and schedule. Tables of good and bad messages; a bad one
 // is refused whole, naming its field.
 
 #include "remote/brokeraddress.h"
 #include "remote/brokerpassword.h"
 #include "remote/remotecommand.h"
+#include "remote/stationplan.h"
+#include "remote/stationschedule.h"
 #include "remote/stationstate.h"
 #include "remote/stationtelemetry.h"
 #include "remote/stationtopics.h"
@@ -243,6 +245,151 @@ private slots:
         QVERIFY(!parseTelemetry(R"j({"unix_ms":5,"temperature":1e400})j", &error));
         QVERIFY(!parseTelemetry(R"j({"unix_ms":5,"gs":70000})j", &error));
         QVERIFY2(error.contains(QStringLiteral("'gs'")), qPrintable(error));
+    }
+    void planRoundTrip()
+    {
+        StationPlan p;
+        p.unixMs = 1516612671000;
+        p.target = QStringLiteral("FLOCK 2P-1");
+        p.norad = 43218;
+        p.aosMs = 1516612671000;
+        p.tcaMs = 1516612891000;
+        p.losMs = 1516613104000;
+        p.maxElevation = 56.2;
+        p.plannedWorstDeg = 0.21;
+        p.flipped = true;
+        p.azimuthTurnEnd = 360;
+        // A pass sampled each second: thinned to the most a message takes,
+        // its first and last points kept.
+        for (int i = 0; i < 1000; ++i) {
+            p.sky.append(QPointF(350 + i * 0.2, 10 + i * 0.04));
+            p.path.append(QPointF(350 + i * 0.2, 10 + i * 0.04));
+        }
+        QString error;
+        const auto back = parseStationPlan(encodeStationPlan(p), &error);
+        QVERIFY2(back, qPrintable(error));
+        QCOMPARE(back->target, p.target);
+        QCOMPARE(back->norad, p.norad);
+        QCOMPARE(back->losMs, p.losMs);
+        QVERIFY(back->flipped);
+        QVERIFY(back->sky.size() <= kMostPlanPoints && back->sky.size() > kMostPlanPoints / 2);
+        QCOMPARE(back->sky.first(), p.sky.first());
+        QVERIFY(std::abs(back->sky.last().x() - p.sky.last().x()) < 1e-6);
+        // No pass ahead: no target, no path.
+        const auto none = parseStationPlan(encodeStationPlan(StationPlan{}), &error);
+        QVERIFY2(none && none->target.isEmpty() && none->sky.isEmpty(), qPrintable(error));
+    }
+
+    void badPlans_data()
+    {
+        QTest::addColumn<QByteArray>("json");
+        QTest::addColumn<QString>("error");
+        QTest::newRow("good") << QByteArray(R"j({"unix_ms":1,"target":"X","sky":[[1,2]],"path":[[1,2]]})j") << "";
+        QTest::newRow("a path with no target") << QByteArray(R"j({"unix_ms":1,"sky":[[1,2]]})j") << "without a 'target'";
+        QTest::newRow("a point of three") << QByteArray(R"j({"unix_ms":1,"target":"X","sky":[[1,2,3]]})j") << "'sky' point 1";
+        QTest::newRow("a point as text") << QByteArray(R"j({"unix_ms":1,"target":"X","path":[["1",2]]})j") << "'path' point 1";
+        QTest::newRow("elevation out") << QByteArray(R"j({"unix_ms":1,"target":"X","sky":[[1,2],[3,400]]})j") << "'sky' point 2";
+        QTest::newRow("los before aos") << QByteArray(R"j({"unix_ms":1,"target":"X","aos_ms":5,"los_ms":4})j") << "before";
+        QTest::newRow("target with escape") << QByteArray("{\"unix_ms\":1,\"target\":\"\\u001b[2J\"}") << "'target'";
+        QTest::newRow("unknown") << QByteArray(R"j({"unix_ms":1,"x":1})j") << "unknown field";
+        QByteArray many = R"j({"unix_ms":1,"target":"X","sky":[)j";
+        for (int i = 0; i <= kMostPlanPoints; ++i)
+            many += (i ? ",[1,2]" : "[1,2]");
+        QTest::newRow("too many points") << many + "]}" << "over the";
+    }
+    void badPlans()
+    {
+        QFETCH(QByteArray, json);
+        QFETCH(QString, error);
+        QString why;
+        const auto p = parseStationPlan(json, &why);
+        QCOMPARE(p.has_value(), error.isEmpty());
+        if (!error.isEmpty())
+            QVERIFY2(why.contains(error), qPrintable(why));
+    }
+
+    void scheduleRoundTrip()
+    {
+        slew::schedule::Schedule s;
+        s.settings.startJulian = 2458140.5;
+        s.settings.hours = 24;
+        s.settings.guardSeconds = 30;
+        s.targets = {QStringLiteral("FLOCK 2P-1"), QStringLiteral("PERSEUS-M1")};
+        slew::schedule::ScheduledPass taken;
+        taken.target = s.targets[0];
+        taken.norad = 43218;
+        taken.pass.aos.julian = 2458140.8874;
+        taken.pass.tca.julian = 2458140.8900;
+        taken.pass.los.julian = 2458140.8924;
+        taken.pass.tca.elevationDeg = 56.2;
+        taken.pass.aos.azimuthDeg = 350.5;
+        taken.startJulian = taken.pass.aos.julian;
+        taken.endJulian = taken.pass.los.julian;
+        taken.taken = true;
+        slew::schedule::ScheduledPass dropped = taken;
+        dropped.target = s.targets[1];
+        dropped.priority = 1;
+        dropped.norad = 0;
+        dropped.taken = false;
+        dropped.reason = slew::schedule::DropReason::Overlap;
+        dropped.why = QStringLiteral("overlaps FLOCK 2P-1 (priority 1)");
+        s.passes = {taken, dropped};
+        QString error;
+        const auto back = parseStationSchedule(encodeStationSchedule(1516612671000, 1516612000000, 20, true, s, taken), &error);
+        QVERIFY2(back, qPrintable(error));
+        QVERIFY(back->running && back->planned);
+        QCOMPARE(back->clockRate, 20.0);
+        QCOMPARE(back->clockMs, 1516612000000);
+        QCOMPARE(back->schedule.targets, s.targets);
+        QCOMPARE(back->schedule.passes.size(), 2);
+        QCOMPARE(back->current, std::optional<int>(0));
+        QCOMPARE(back->schedule.passes[1].reason, slew::schedule::DropReason::Overlap);
+        QCOMPARE(back->schedule.passes[1].why, dropped.why);
+        QCOMPARE(back->schedule.passes[1].priority, 1);
+        QVERIFY(std::abs(back->schedule.passes[0].pass.los.julian - taken.pass.los.julian) * 86400 < 0.002);
+        QCOMPARE(back->schedule.passes[0].pass.maxElevationDeg(), 56.2);
+        // Running, its first plan not made yet: no window, no passes.
+        const auto planning = parseStationSchedule(encodeStationSchedule(1, 1, 1, true, slew::schedule::Schedule{}, std::nullopt), &error);
+        QVERIFY2(planning && planning->running && !planning->planned, qPrintable(error));
+        // Not running: nothing but that.
+        const auto idle = parseStationSchedule(encodeStationSchedule(1, 1, 1, false, s, std::nullopt), &error);
+        QVERIFY2(idle && !idle->running && idle->schedule.passes.isEmpty(), qPrintable(error));
+    }
+
+    void badSchedules_data()
+    {
+        QTest::addColumn<QByteArray>("json");
+        QTest::addColumn<QString>("error");
+        const QByteArray head = R"j({"unix_ms":1,"running":true,"start_ms":1000,"end_ms":86401000,"targets":["A"],)j";
+        const QByteArray pass = R"j("target":"A","priority":1,"aos_ms":2000,"tca_ms":3000,"los_ms":4000,"start_ms":2000,"end_ms":4000,"max_el":40)j";
+        QTest::newRow("good") << head + R"j("passes":[{)j" + pass + R"j(,"taken":true,"reason":"taken"}],"current":0})j" << "";
+        QTest::newRow("a priority past the list")
+            << head + R"j("passes":[{"target":"A","priority":2,"aos_ms":2000,"tca_ms":3000,"los_ms":4000,"start_ms":2000,"end_ms":4000,"max_el":40,"taken":true,"reason":"taken"}]})j"
+            << "'priority'";
+        QTest::newRow("reason against taken") << head + R"j("passes":[{)j" + pass + R"j(,"taken":true,"reason":"overlap"}]})j" << "disagree";
+        QTest::newRow("a reason unheard of") << head + R"j("passes":[{)j" + pass + R"j(,"taken":false,"reason":"bored"}]})j" << "'reason'";
+        QTest::newRow("times out of order")
+            << head + R"j("passes":[{"target":"A","priority":1,"aos_ms":5000,"tca_ms":3000,"los_ms":4000,"start_ms":2000,"end_ms":4000,"max_el":40,"taken":true,"reason":"taken"}]})j"
+            << "out of order";
+        QTest::newRow("current a dropped pass") << head + R"j("passes":[{)j" + pass + R"j(,"taken":false,"reason":"overlap"}],"current":0})j" << "'current'";
+        QTest::newRow("current past the list") << head + R"j("passes":[],"current":3})j" << "'current'";
+        QTest::newRow("a pass not an object") << head + R"j("passes":[7]})j" << "not an object";
+        QTest::newRow("a year long") << QByteArray(R"j({"unix_ms":1,"running":true,"start_ms":1000,"end_ms":31536001000})j") << "14 days";
+        QTest::newRow("being planned") << QByteArray(R"j({"unix_ms":1,"running":true,"targets":["A"]})j") << "";
+        QTest::newRow("a start with no end") << QByteArray(R"j({"unix_ms":1,"running":true,"start_ms":1000})j") << "come together";
+        QTest::newRow("passes with no window") << QByteArray(R"j({"unix_ms":1,"running":true,"targets":["A"],"passes":[]})j") << "'start_ms' is missing";
+        QTest::newRow("passes when not running") << QByteArray(R"j({"unix_ms":1,"running":false,"start_ms":1000,"end_ms":2000,"passes":[]})j") << "not running";
+        QTest::newRow("unknown in a pass") << head + R"j("passes":[{)j" + pass + R"j(,"taken":true,"reason":"taken","x":1}]})j" << "pass 1: unknown field";
+    }
+    void badSchedules()
+    {
+        QFETCH(QByteArray, json);
+        QFETCH(QString, error);
+        QString why;
+        const auto s = parseStationSchedule(json, &why);
+        QCOMPARE(s.has_value(), error.isEmpty());
+        if (!error.isEmpty())
+            QVERIFY2(why.contains(error), qPrintable(why));
     }
 };
 

@@ -14,6 +14,9 @@
 #include "../common/stationprocess.h"
 
 #include "model/movegate.h"
+#include "sky/utctime.h"
+#include "remote/stationplan.h"
+#include "remote/stationschedule.h"
 #include "remote/stationstate.h"
 
 #include <QJsonDocument>
@@ -246,6 +249,76 @@ private slots:
         sub << QStringLiteral("-t") << QStringLiteral("slew/#") << QStringLiteral("-C") << QStringLiteral("1")
             << QStringLiteral("-W") << QStringLiteral("5");
         QVERIFY(!MosquittoBroker::run(MosquittoBroker::program("mosquitto_sub"), sub, &error));
+    }
+
+    void publishesTheScheduleAndThePlan()
+    {
+        // Two targets by priority on a rehearsed clock at 20 times, from
+        // inside FLOCK 2P-1's pass over JO65hq (09:15:45 to 09:27:10 UTC).
+        MosquittoSubscriber watcher(m_broker, QStringLiteral("watcher"),
+                                    {QStringLiteral("slew/mast/schedule"), QStringLiteral("slew/mast/plan")});
+        Service slew(stationArguments()
+                     + QStringList{"--qth", "JO65hq", "--tle", QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"),
+                                   "--track", "FLOCK 2P-1", "--track", "PERSEUS-M1", "--clock-start",
+                                   "2018-01-22T09:16:00Z", "--clock-rate", "20"});
+        QVERIFY2(slew.logged("remote: connected to mqtts://station-mast@localhost:"), slew.said().constData());
+
+        // The schedule: both targets in their order, every pass with its
+        // decision, and FLOCK 2P-1's pass the one being followed.
+        std::optional<slew::remote::StationSchedule> schedule;
+        QVERIFY2(watcher.waitFor(QStringLiteral("slew/mast/schedule"),
+                                 [&](const QByteArray &p) {
+                                     QString e;
+                                     schedule = slew::remote::parseStationSchedule(p, &e);
+                                     return schedule && schedule->running && schedule->current;
+                                 },
+                                 60000),
+                 (watcher.errors() + slew.said()).constData());
+        QCOMPARE(schedule->schedule.targets, QStringList({"FLOCK 2P-1", "PERSEUS-M1"}));
+        const slew::schedule::ScheduledPass &current = schedule->schedule.passes.at(*schedule->current);
+        QCOMPARE(current.target, QStringLiteral("FLOCK 2P-1"));
+        QVERIFY(current.taken);
+        QVERIFY(schedule->clockRate == 20);
+        // Under way when the schedule started at 09:16:00 (AOS 09:15:45 on
+        // a flat horizon): highest, 56.4°, at 09:21:28.
+        QVERIFY2(std::abs(current.pass.tca.julian - *slew::sky::julianFromIso(QStringLiteral("2018-01-22T09:21:28Z")))
+                     * 86400 < 5,
+                 qPrintable(slew::sky::isoUtc(current.pass.tca.julian)));
+        QVERIFY2(std::abs(current.pass.maxElevationDeg() - 56.4) < 0.1, qPrintable(QString::number(current.pass.maxElevationDeg())));
+
+        // The plan of that pass: its sky and the antenna's path, at most
+        // kMostPlanPoints of each, the AOS point first.
+        std::optional<slew::remote::StationPlan> plan;
+        QVERIFY2(watcher.waitFor(QStringLiteral("slew/mast/plan"),
+                                 [&](const QByteArray &p) {
+                                     QString e;
+                                     plan = slew::remote::parseStationPlan(p, &e);
+                                     return plan && plan->target == u"FLOCK 2P-1";
+                                 },
+                                 30000),
+                 (watcher.errors() + slew.said()).constData());
+        QVERIFY(plan->sky.size() > 50 && plan->sky.size() <= slew::remote::kMostPlanPoints);
+        QVERIFY(plan->path.size() > 50 && plan->path.size() <= slew::remote::kMostPlanPoints);
+        QVERIFY(plan->aosMs && plan->losMs && *plan->losMs - *plan->aosMs > 400000);
+        QVERIFY(plan->maxElevation && *plan->maxElevation > 50);
+        QVERIFY(plan->plannedWorstDeg && *plan->plannedWorstDeg < 1.0);
+        // Retained: a window that comes later has both at once.
+        for (const char *topic : {"slew/mast/schedule", "slew/mast/plan"}) {
+            QString error;
+            QStringList once = m_broker.clientArguments(QStringLiteral("watcher"));
+            once << QStringLiteral("-t") << QLatin1String(topic) << QStringLiteral("-C") << QStringLiteral("1")
+                 << QStringLiteral("-W") << QStringLiteral("5");
+            const auto late = MosquittoBroker::run(MosquittoBroker::program("mosquitto_sub"), once, &error);
+            QVERIFY2(late && late->contains("\"target\":\"FLOCK 2P-1\""), qPrintable(topic + (": " + error)));
+        }
+        // At rest between changes it publishes nothing more here: a handful
+        // of schedules and plans over the pass, not one a state.
+        QVERIFY(slew.logged("LOS: pointing error RMS", 60000));
+        QTest::qWait(1000);
+        const int schedules = int(watcher.payloads(QStringLiteral("slew/mast/schedule")).size());
+        const int plans = int(watcher.payloads(QStringLiteral("slew/mast/plan")).size());
+        QVERIFY2(schedules < 10 && plans < 10, qPrintable(QStringLiteral("%1 schedules, %2 plans").arg(schedules).arg(plans)));
+        QCOMPARE(slew.stop(SIGTERM), 0);
     }
 
     void badSettingsStopItAtStart()

@@ -22,6 +22,8 @@
 #include "remotecontrols.h"
 #include "remoteopener.h"
 #include "remotereadout.h"
+#include "remotescheduleview.h"
+#include "scheduletimeline.h"
 #include "remotestationwindow.h"
 #include "stationnetworkwindow.h"
 #include "stationtile.h"
@@ -41,6 +43,7 @@
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
+#include <QTabWidget>
 #include <QTest>
 
 #include <cmath>
@@ -203,6 +206,51 @@ private slots:
         delete network;
     }
 
+    void showsTheScheduleAndThePlanOfAStation()
+    {
+        // A station that runs a schedule, FLOCK 2P-1 first and PERSEUS-M1
+        // second, its clock a rehearsal from inside FLOCK 2P-1's pass over
+        // JO65hq (AOS 09:17:51, LOS 09:25:04 UTC).
+        StationProcess roof(station(QStringLiteral("roof"), QStringLiteral("sim:?start_az=0&start_el=0"))
+                            + QStringList{"--qth", "JO65hq", "--tle",
+                                          QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"), "--track",
+                                          "FLOCK 2P-1", "--track", "PERSEUS-M1", "--clock-start", "2018-01-22T09:19:00Z"});
+        QVERIFY2(roof.logged("remote: connected to"), roof.said().constData());
+        RemoteStationWindow *window = open(QStringLiteral("watcher"), QStringLiteral("roof"));
+        QVERIFY(window);
+        RemoteStation *remote = window->station();
+        QTRY_VERIFY_WITH_TIMEOUT(remote->isLive(), 20000);
+
+        // The Schedule tab: the targets by priority, the time line, the pass
+        // being followed.
+        QTRY_VERIFY_WITH_TIMEOUT(remote->schedule() && remote->schedule()->current, 60000);
+        auto *view = window->scheduleView();
+        QVERIFY2(view->summary().contains(QStringLiteral("By priority: FLOCK 2P-1, PERSEUS-M1.")), qPrintable(view->summary()));
+        QVERIFY2(view->currentText().startsWith(QStringLiteral("Now: ")) && view->currentText().contains(QStringLiteral("FLOCK 2P-1")),
+                 qPrintable(view->currentText()));
+        const auto &shown = view->timeline()->schedule();
+        QCOMPARE(shown.passes.size(), remote->schedule()->schedule.passes.size());
+        QVERIFY(!view->timeline()->barFor(shown.passes.at(*remote->schedule()->current)).isEmpty());
+
+        // The plan of the pass on the plot, as the local window draws it.
+        QTRY_VERIFY_WITH_TIMEOUT(window->polarPlot()->passOverlay().has_value(), 30000);
+        QVERIFY(window->polarPlot()->passOverlay()->sky.size() > 50);
+        QVERIFY(window->polarPlot()->passOverlay()->planned.size() > 50);
+        if (onX11()) {
+            auto *tabs = window->findChild<QTabWidget *>(QStringLiteral("remoteTabs"));
+            tabs->setCurrentWidget(view);
+            // On the track, for the picture: the antenna where the target is.
+            QTRY_VERIFY_WITH_TIMEOUT(remote->state() && remote->state()->tracking == u"tracking" && remote->state()->position
+                                         && remote->state()->target
+                                         && std::abs(remote->state()->position->x() - remote->state()->target->x()) < 1
+                                         && std::abs(remote->state()->position->y() - remote->state()->target->y()) < 1,
+                                     60000);
+            checkLayoutAndPicture(window, QStringLiteral("remote-schedule.png"));
+        }
+        delete window;
+        QCOMPARE(roof.stop(SIGTERM), 0);
+    }
+
     void theOpenDialogChecksTheAddress()
     {
         // File → Open remote station…: a bad address is said and opens nothing.
@@ -270,7 +318,7 @@ private:
     }
 
     QTemporaryDir m_settings;
-    MosquittoBroker m_broker{{QStringLiteral("mast"), QStringLiteral("dish2")}};
+    MosquittoBroker m_broker{{QStringLiteral("mast"), QStringLiteral("dish2"), QStringLiteral("roof")}};
     std::unique_ptr<StationProcess> m_mast, m_dish;
 };
 

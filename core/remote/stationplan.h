@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The plan of the pass a station is waiting for or following, as it
+// publishes it on `slew/NAME/plan` (retained): the target's track across the
+// sky and the antenna's planned path, so a remote window draws the pass on
+// its plot as the local window does. One JSON object:
+//
+//   {"unix_ms":…, "target":"ISS (ZARYA)", "norad":25544,
+//    "aos_ms":…, "tca_ms":…, "los_ms":…, "max_el":56.1,
+//    "planned_worst_deg":0.12, "flipped":false, "over_the_top":false,
+//    "unwinds":0, "az_turn_start":0, "az_turn_end":360,
+//    "sky":[[az,el],…], "path":[[az,el],…]}
+//
+// No target: no pass ahead (tracking stopped). The reader checks every
+// field (jsonfields.h) and takes a message whole or not at all. Pure code.
+
+#include <QByteArray>
+#include <QList>
+#include <QPointF>
+#include <QString>
+
+#include <optional>
+
+namespace slew::remote {
+
+struct StationPlan {
+    qint64 unixMs = 0;
+    QString target; // empty: no pass ahead
+    int norad = 0;  // 0 for the sun, the moon, a fixed direction
+    std::optional<qint64> aosMs, tcaMs, losMs;
+    std::optional<double> maxElevation;
+    std::optional<double> plannedWorstDeg;
+    bool flipped = false;
+    bool overTheTop = false;
+    int unwinds = 0;
+    double azimuthTurnStart = 0;  // the rotator's azimuth stop
+    double azimuthTurnEnd = 360;  // past this, the overlap
+    QList<QPointF> sky;  // the target's az, el, AOS to LOS
+    QList<QPointF> path; // the plan's mechanical az, el (el past 90°: the flip)
+};
+
+// A pass sampled every second for a quarter of an hour is 900 points: the
+// encoder keeps every n-th (and the last) so each list has at most this.
+inline constexpr int kMostPlanPoints = 400;
+inline constexpr int kLargestPlanMessage = 64 * 1024;
+
+QByteArray encodeStationPlan(const StationPlan &plan);
+std::optional<StationPlan> parseStationPlan(const QByteArray &payload, QString *error);
+
+// Every n-th point of `points` and the last, at most `most` in all.
+QList<QPointF> thinPoints(const QList<QPointF> &points, int most);
+
+} // namespace slew::remote

@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// A station's schedule as it publishes it on `slew/NAME/schedule`
+// (retained): its window, the targets by priority, every pass taken or
+// dropped with the reason, and the one being followed, so a remote window
+// shows the time line the local window's Schedule page shows. One JSON
+// object, times in milliseconds since 1970 as the state's:
+//
+//   {"unix_ms":…, "clock_ms":…, "clock_rate":1, "running":true, "start_ms":…, "end_ms":…, "min_el":0,
+//    "guard_s":30, "targets":["FLOCK 2P-1","NOAA 18"], "notes":[…],
+//    "current":3,
+//    "passes":[{"target":"FLOCK 2P-1","priority":1,"norad":43218,
+//               "aos_ms":…,"tca_ms":…,"los_ms":…,"start_ms":…,"end_ms":…,
+//               "max_el":56.2,"aos_az":350.1,"los_az":170.3,"taken":true,
+//               "reason":"taken","why":"…","planned_worst_deg":0.2,
+//               "in_progress":false}, …]}
+//
+// clock_ms is the station clock's time as the message is made, which a
+// rehearsal (`--clock-start`, `--clock-rate`) sets apart from unix_ms.
+// Not running: no passes. Running but still making its first plan: no
+// window and no passes yet. The reader checks every field (jsonfields.h) and
+// takes a message whole or not at all. Pure code.
+
+#include "schedule/schedule.h"
+
+#include <QByteArray>
+
+#include <optional>
+
+namespace slew::remote {
+
+struct StationSchedule {
+    qint64 unixMs = 0;
+    qint64 clockMs = 0;     // the station clock then
+    double clockRate = 1;   // its seconds a real second
+    bool running = false;
+    bool planned = false;        // running, and its first plan made
+    schedule::Schedule schedule; // what a view draws: no sky points or plans
+    std::optional<int> current;  // the index in schedule.passes being followed
+};
+
+// A day of a dozen satellites is a few hundred passes.
+inline constexpr int kMostScheduledPasses = 500;
+inline constexpr int kMostScheduleTargets = 100;
+inline constexpr int kLargestScheduleMessage = 512 * 1024;
+
+// `current` is matched to a pass of `schedule` by target and start.
+QByteArray encodeStationSchedule(qint64 unixMs, qint64 clockMs, double clockRate, bool running, const schedule::Schedule &schedule,
+                                 const std::optional<schedule::ScheduledPass> &current);
+std::optional<StationSchedule> parseStationSchedule(const QByteArray &payload, QString *error);
+
+} // namespace slew::remote
