@@ -51,20 +51,37 @@ inline quint16 freeTcpPort()
 
 // Starts a Hamlib daemon (rigctld, rotctld) with the arguments on a free
 // loopback port; returns the port once it accepts a connection, 0 if it
-// never does.
+// never does. With tests side by side, another test's server may take the
+// port between freeTcpPort() and the daemon's bind: the daemon then exits
+// at once while the probe reaches the other server. So a port counts only
+// while the daemon is still running a moment after the probe, and a daemon
+// that died is started again on another port.
 inline quint16 startHamlibDaemon(QProcess &p, const char *name, const QStringList &arguments)
 {
-    const quint16 port = freeTcpPort();
-    p.setProgram(hamlibProgram(name));
-    p.setArguments(arguments + QStringList{"-T", "127.0.0.1", "-t", QString::number(port)});
-    p.start();
-    const bool up = QTest::qWaitFor(
-        [&] {
-            QTcpSocket probe;
-            QSignalSpy connected(&probe, &QTcpSocket::connected);
-            probe.connectToHost(QHostAddress::LocalHost, port);
-            return connected.wait(200);
-        },
-        10000);
-    return up ? port : 0;
+    for (int attempt = 0; attempt < 5; ++attempt) {
+        const quint16 port = freeTcpPort();
+        p.setProgram(hamlibProgram(name));
+        p.setArguments(arguments + QStringList{"-T", "127.0.0.1", "-t", QString::number(port)});
+        p.start();
+        const bool up = QTest::qWaitFor(
+            [&] {
+                if (p.state() == QProcess::NotRunning)
+                    return true;
+                QTcpSocket probe;
+                QSignalSpy connected(&probe, &QTcpSocket::connected);
+                probe.connectToHost(QHostAddress::LocalHost, port);
+                return connected.wait(200);
+            },
+            10000);
+        QTest::qWait(100);
+        if (up && p.state() == QProcess::Running)
+            return port;
+        if (p.state() != QProcess::NotRunning) {
+            p.kill();
+            QTest::qWaitFor([&] { return p.state() == QProcess::NotRunning; }, 5000);
+        }
+        qWarning("%s on port %u did not come up (%s); trying another port", name, port,
+                 p.readAllStandardError().left(300).constData());
+    }
+    return 0;
 }

@@ -632,10 +632,15 @@ void RigctldRadioTest::lostAndRefusedConnections()
 std::unique_ptr<RigctldRadioLink> RigctldRadioTest::openOn(quint16 port)
 {
     auto link = std::make_unique<RigctldRadioLink>(QStringLiteral("rigctld://127.0.0.1:%1").arg(port), "127.0.0.1", port);
+    QSignalSpy states(link.get(), &RadioLink::stateChanged);
     link->open();
     if (!QTest::qWaitFor([&] { return link->state() != RadioLink::State::Opening; }, 15000)
-        || link->state() != RadioLink::State::Open)
+        || link->state() != RadioLink::State::Open) {
+        // Say why, so a failure on a loaded machine can be told from a fault.
+        for (const QList<QVariant> &s : states)
+            qWarning("rigctld link: %s", qPrintable(s.at(1).toString()));
         return nullptr;
+    }
     return link;
 }
 
