@@ -146,10 +146,18 @@ private slots:
         // clicks start from what the radio holds now, not from the reading
         // above: on a loaded machine Slew's Doppler (fast, at 20 times) may
         // have moved on by hundreds of hertz between the two.
+        // A tenth of a second between clicks, as a hand turns a knob: a
+        // frequency of Slew's already on its way when a click lands can
+        // still overwrite that click (CAT has no lock; Slew reads every
+        // 40 ms and sends only after a reading), and on a loaded machine
+        // five clicks with no gap could all fall inside that window.
         heard = number(askRigctld(port, "f", 1).value(0));
-        for (int click = 1; click <= 5; ++click)
+        for (int click = 1; click <= 5; ++click) {
+            if (click > 1)
+                QTest::qWait(100);
             QVERIFY(askRigctld(port, QByteArray("F ") + QByteArray::number(heard + 400 * click, 'f', 0), 1)
                     == QList<QByteArray>{"RPRT 0"});
+        }
         QVERIFY2(logged("radio: the operator's dial moved the downlink by "), out.constData());
         const QRegularExpressionMatch moved =
             QRegularExpression("dial moved the downlink by (-?\\d+) Hz").match(QString::fromUtf8(out));
