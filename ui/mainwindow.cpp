@@ -5,6 +5,7 @@
 #include "configeditor.h"
 #include "elementsetsdialog.h"
 #include "connectionbar.h"
+#include "elidinglabel.h"
 #include "eventlog.h"
 #include "gotopanel.h"
 #include "historypanel.h"
@@ -201,10 +202,10 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     connect(m_alarms, &station::AlarmMonitor::alarmsChanged, m_banner, &AlarmBanner::showAlarms);
     // Resting on a limit switch is a state: a quiet line at the foot of the
     // window, not the banner.
-    auto *resting = new QLabel;
+    auto *resting = new ElidingLabel;
     resting->setObjectName(QStringLiteral("limitSwitchState"));
     statusBar()->addPermanentWidget(resting);
-    connect(m_alarms, &station::AlarmMonitor::restingChanged, resting, &QLabel::setText);
+    connect(m_alarms, &station::AlarmMonitor::restingChanged, resting, &ElidingLabel::setFullText);
     connect(m_connection, &ConnectionBar::disconnectRequested, m_alarms, &station::AlarmMonitor::expectDisconnect);
     connect(m_alarms, &station::AlarmMonitor::eventLogged, m_log, &EventLog::addEvent);
     connect(m_alarms, &station::AlarmMonitor::eventLogged, this,

@@ -8,6 +8,7 @@
 
 #include "alarmbanner.h"
 #include "connectionbar.h"
+#include "elidinglabel.h"
 #include "parkhomepanel.h"
 #include "polarplotwidget.h"
 #include "sim/simulator.h"
@@ -84,8 +85,8 @@ private slots:
         // a state for the status line, not an alarm.
         WindowFixture f(QStringLiteral("sim:?clock=manual"));
         QVERIFY(f.connectAndWait());
-        auto *resting = f.find<QLabel>(QStringLiteral("limitSwitchState"));
-        QVERIFY(f.waitFor([&] { return resting->text().contains(QStringLiteral("limit switch")); }, 5000));
+        auto *resting = f.find<slew::ui::ElidingLabel>(QStringLiteral("limitSwitchState"));
+        QVERIFY(f.waitFor([&] { return resting->fullText().contains(QStringLiteral("limit switch")); }, 5000));
         QVERIFY(f.window->alarmBanner()->isHidden());
         QVERIFY(f.window->alarmBanner()->text().isEmpty());
         // Said once, at the foot, not also as a passing message beside it.
@@ -94,7 +95,7 @@ private slots:
         // Moving off the switches ends the quiet state too.
         QVERIFY(f.session.gotoPosition(3, 2));
         QVERIFY(f.waitUntilAt(3, 2, 0.2));
-        QVERIFY(f.waitFor([&] { return resting->text().isEmpty(); }, 5000));
+        QVERIFY(f.waitFor([&] { return resting->fullText().isEmpty(); }, 5000));
         QVERIFY(f.window->alarmBanner()->isHidden());
     }
 
@@ -102,8 +103,8 @@ private slots:
     {
         WindowFixture f(QStringLiteral("sim:?clock=manual"));
         QVERIFY(f.connectAndWait());
-        auto *resting = f.find<QLabel>(QStringLiteral("limitSwitchState"));
-        QVERIFY(f.waitFor([&] { return resting->text().contains(QStringLiteral("limit switch")); }, 5000));
+        auto *resting = f.find<slew::ui::ElidingLabel>(QStringLiteral("limitSwitchState"));
+        QVERIFY(f.waitFor([&] { return resting->fullText().contains(QStringLiteral("limit switch")); }, 5000));
         QVERIFY(f.window->alarmBanner()->isHidden());
         // At rest on the counter-clockwise stop, the operator holds ◀.
         const QRegularExpression jogLeft(QStringLiteral("^VL"));
