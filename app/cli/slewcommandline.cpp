@@ -132,7 +132,8 @@ ProgramMode makeWindowMode()
         "The same program runs as a station service (slew --headless --help), tunes a rotator without a "
         "window (slew --tune URI --help), predicts passes (slew --passes SAT --help, slew --where SAT --help), "
         "refreshes the element sets the window uses (slew --update-elements [URL...], slew --update-elements --help), "
-        "and draws a recorded pass (slew --pass-report ID --help).");
+        "plans several targets by priority (slew --schedule --track A --track B --help), draws a recorded pass "
+        "(slew --pass-report ID --help), and opens a station on an MQTT broker (slew --remote URL --help).");
     mode.options = {
         connectOption(QStringLiteral("Connect to URI at start: serial:/dev/ttyUSB0?baud=19200, tcp://HOST:PORT, "
                                      "rotctld://HOST:PORT or sim:?az_max=450.")),
