@@ -24,6 +24,7 @@
 #include "stopbutton.h"
 #include "targetconfirmation.h"
 #include "telemetrycharts.h"
+#include "titledgroup.h"
 #include "telemetryrecorder.h"
 #include "textfieldfocus.h"
 #include "rehearsalmarker.h"
@@ -46,7 +47,6 @@
 #include "sky/tlesources.h"
 
 #include <QDateTime>
-#include <QGroupBox>
 #include <QGuiApplication>
 #include <QScreen>
 #include <QMenuBar>
@@ -62,20 +62,6 @@
 namespace slew::ui {
 
 using session::RotatorSession;
-
-namespace {
-
-QGroupBox *group(const QString &title, QWidget *content)
-{
-    auto *box = new QGroupBox(title);
-    auto *l = new QVBoxLayout(box);
-    // Tight margins: the control column must fit a 720-pixel screen.
-    l->setContentsMargins(6, 2, 6, 4);
-    l->addWidget(content);
-    return box;
-}
-
-} // namespace
 
 MainWindow::MainWindow(station::Station *station, QWidget *parent)
     : QMainWindow(parent), m_station(station), m_session(station->session())
@@ -420,12 +406,12 @@ QWidget *MainWindow::buildControlColumn()
     auto *l = new QVBoxLayout(column);
     l->setContentsMargins(4, 0, 4, 0);
     l->setSpacing(4);
-    l->addWidget(group(tr("Position"), m_readout));
-    l->addWidget(group(tr("Go to"), m_goto));
-    l->addWidget(group(tr("Jog: hold, or arrow keys"), m_jog));
+    l->addWidget(titledGroup(tr("Position"), m_readout));
+    l->addWidget(titledGroup(tr("Go to"), m_goto));
+    l->addWidget(titledGroup(tr("Jog: hold, or arrow keys"), m_jog));
     l->addWidget(m_stop);
     l->addWidget(m_parkHome);
-    l->addWidget(group(tr("Presets"), m_presets), 1);
+    l->addWidget(titledGroup(tr("Presets"), m_presets), 1);
     return column;
 }
 

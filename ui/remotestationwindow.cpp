@@ -11,12 +11,12 @@
 #include "remotescheduleview.h"
 #include "stopbutton.h"
 #include "telemetrycharts.h"
+#include "titledgroup.h"
 #include "telemetryrecorder.h"
 
 #include "remote/remotestation.h"
 
 #include <QDateTime>
-#include <QGroupBox>
 #include <QGuiApplication>
 #include <QScreen>
 #include <QShortcut>
@@ -29,19 +29,6 @@ namespace slew::ui {
 
 using remote::RemoteStation;
 using station::AlarmMonitor;
-
-namespace {
-
-QGroupBox *group(const QString &title, QWidget *content)
-{
-    auto *box = new QGroupBox(title);
-    auto *l = new QVBoxLayout(box);
-    l->setContentsMargins(6, 2, 6, 4);
-    l->addWidget(content);
-    return box;
-}
-
-} // namespace
 
 RemoteStationWindow::RemoteStationWindow(RemoteStation *station, QWidget *parent)
     : QMainWindow(parent), m_station(station)
@@ -72,8 +59,8 @@ RemoteStationWindow::RemoteStationWindow(RemoteStation *station, QWidget *parent
     column->setMaximumWidth(420);
     auto *columnLayout = new QVBoxLayout(column);
     columnLayout->setContentsMargins(4, 0, 4, 0);
-    columnLayout->addWidget(group(tr("Position"), m_readout));
-    columnLayout->addWidget(group(tr("Control"), m_controls));
+    columnLayout->addWidget(titledGroup(tr("Position"), m_readout));
+    columnLayout->addWidget(titledGroup(tr("Control"), m_controls));
     columnLayout->addWidget(m_stop);
     columnLayout->addStretch(1);
 
