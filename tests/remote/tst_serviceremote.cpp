@@ -313,8 +313,18 @@ private slots:
         }
         // At rest between changes it publishes nothing more here: a handful
         // of schedules and plans over the pass, not one a state.
+        // After LOS the schedule goes on to its next pass: the plan that
+        // says so is the last message of this pass.
         QVERIFY(slew.logged("LOS: pointing error RMS", 60000));
-        QTest::qWait(1000);
+        const qint64 followedAos = *plan->aosMs;
+        QVERIFY2(watcher.waitFor(QStringLiteral("slew/mast/plan"),
+                                 [&](const QByteArray &p) {
+                                     QString e;
+                                     const auto next = slew::remote::parseStationPlan(p, &e);
+                                     return next && next->aosMs.value_or(0) > followedAos; // a later pass
+                                 },
+                                 30000),
+                 (watcher.errors() + slew.said()).constData());
         const int schedules = int(watcher.payloads(QStringLiteral("slew/mast/schedule")).size());
         const int plans = int(watcher.payloads(QStringLiteral("slew/mast/plan")).size());
         QVERIFY2(schedules < 10 && plans < 10, qPrintable(QStringLiteral("%1 schedules, %2 plans").arg(schedules).arg(plans)));
