@@ -78,7 +78,8 @@ inline quint16 startHamlibDaemon(QProcess &p, const char *name, const QStringLis
             return port;
         if (p.state() != QProcess::NotRunning) {
             p.kill();
-            QTest::qWaitFor([&] { return p.state() == QProcess::NotRunning; }, 5000);
+            // Gone or not, the next try takes another port.
+            (void)QTest::qWaitFor([&] { return p.state() == QProcess::NotRunning; }, 5000);
         }
         qWarning("%s on port %u did not come up (%s); trying another port", name, port,
                  p.readAllStandardError().left(300).constData());
