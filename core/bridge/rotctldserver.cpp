@@ -2,8 +2,9 @@
 #include "rotctldserver.h"
 
 #include "session/rotatorsession.h"
-#include "transport/tcpconnection.h"
+#include "transport/bareconnection.h"
 
+#include <QMetaMethod>
 #include <QTimer>
 
 #include <algorithm>
@@ -18,12 +19,7 @@ using session::RotatorSession;
 
 namespace {
 
-constexpr qint64 kReadChunk = 16 * 1024; // per event, so a flood cannot starve the GUI
-// A client that is done (its end of input, or `q`) but does not read its
-// answers is cut off after this.
-constexpr int kCloseLingerMs = 5000;
-
-QString peerName(const transport::TcpConnection *c)
+QString peerName(const transport::BareConnection *c)
 {
     return QStringLiteral("%1:%2").arg(c->peerAddress().toString()).arg(c->peerPort());
 }
@@ -57,11 +53,6 @@ bool wakesPolling(RotctldRequest::Kind kind)
         return false;
     }
     return false;
-}
-
-bool isQuit(QByteArrayView line)
-{
-    return line == "q" || line == "Q" || line == "\\quit";
 }
 
 double bearingDifference(double a, double b)
@@ -103,6 +94,32 @@ RotctldServer::RotctldServer(session::RotatorSession *session, QObject *parent)
     connect(&m_server, &transport::BoundedTcpServer::connectionArrived, this, &RotctldServer::onClientArrived);
     connect(&m_server, &transport::BoundedTcpServer::notice, this,
             [this](const QString &text) { emit logMessage(tr("rotctld server: %1").arg(text)); });
+    // Every reading, and every change of link, reaches the clients' threads.
+    connect(m_session, &RotatorSession::positionChanged, this, &RotctldServer::sharePosition);
+    connect(m_session, &RotatorSession::stateChanged, this, &RotctldServer::sharePosition);
+    sharePosition();
+}
+
+void RotctldServer::sharePosition()
+{
+    SharedPosition::Reading reading;
+    reading.known = m_session->isConnected() && m_session->hasPosition();
+    if (reading.known) {
+        // Trackers speak 0..360: a position in the overlap is reported as its bearing.
+        reading.azimuth = std::fmod(m_session->azimuth(), 360.0);
+        if (reading.azimuth < 0)
+            reading.azimuth += 360.0;
+        reading.elevation = m_session->elevation();
+    }
+    m_shared.position.set(reading);
+}
+
+void RotctldServer::connectNotify(const QMetaMethod &signal)
+{
+    // Position reads are said only to someone who listens: a station
+    // service with nobody watching is not woken by them.
+    if (signal == QMetaMethod::fromSignal(&RotctldServer::commandReceived))
+        m_shared.activityWatched = true;
 }
 
 RotctldServer::~RotctldServer()
@@ -125,13 +142,14 @@ bool RotctldServer::listen(const QHostAddress &address, quint16 port, QString *e
 void RotctldServer::close()
 {
     m_server.close();
-    const auto connections = m_clients.keys();
-    for (transport::TcpConnection *c : connections) {
-        c->disconnect(this);
-        c->abort();
-        c->deleteLater();
+    const bool had = !m_clients.empty();
+    // Each thread is woken (its socket shut) before any is waited for.
+    for (auto &[id, c] : m_clients)
+        c.thread->stop();
+    for (auto &[id, c] : m_clients) {
+        c.thread->wait();
+        c.connection->deleteLater();
     }
-    const bool had = !m_clients.isEmpty();
     m_clients.clear();
     if (had)
         emit clientsChanged();
@@ -159,12 +177,12 @@ void RotctldServer::releaseRemote()
 QList<RotctldServer::ClientInfo> RotctldServer::clients() const
 {
     QList<ClientInfo> out;
-    for (const Client &c : m_clients)
-        out.append(c.info);
+    for (const auto &[id, c] : m_clients)
+        out.append(c.thread->info());
     return out;
 }
 
-void RotctldServer::onClientArrived(transport::TcpConnection *connection)
+void RotctldServer::onClientArrived(transport::BareConnection *connection)
 {
     if (!m_allowed.isEmpty() && !m_allowed.contains(connection->peerAddress())) {
         emit logMessage(tr("refused rotctld client %1: not in the allowed list").arg(peerName(connection)));
@@ -172,152 +190,63 @@ void RotctldServer::onClientArrived(transport::TcpConnection *connection)
         connection->deleteLater();
         return;
     }
-    if (!connection->isOpen()) { // could not be watched (out of memory for epoll)
-        emit logMessage(tr("rotctld client %1 could not be served; closed").arg(peerName(connection)));
-        connection->deleteLater();
-        return;
-    }
     connection->setNoDelay(true);
-    Client c;
+    const quint64 id = m_nextId++;
+    const QString peer = peerName(connection);
+    RotctldClient::Hooks hooks;
+    hooks.answer = [this](quint64 client, const RotctldRequest &request) { answerFor(client, request); };
+    hooks.log = [this](quint64 client, const QString &text) {
+        if (const auto it = m_clients.find(client); it != m_clients.end())
+            logClient(it->second, text);
+    };
+    hooks.activity = [this](quint64 client) {
+        if (const auto it = m_clients.find(client); it != m_clients.end())
+            emit commandReceived(it->second.peer, it->second.thread->info().lastCommand);
+    };
+    hooks.finished = [this](quint64 client) { drop(client); };
+    Client &c = m_clients[id];
+    c.peer = peer;
     c.connection = connection;
-    c.info.peer = peerName(connection);
-    c.info.lastSeen = QDateTime::currentDateTimeUtc();
-    m_clients.insert(connection, c);
-    // Said again while anything is left to read: one chunk a turn of the
-    // event loop, so a flood cannot starve the rest.
-    connect(connection, &transport::TcpConnection::readable, this, [this, connection] { onReadable(connection); });
-    connect(connection, &transport::TcpConnection::closed, this, [this, connection] { drop(connection); });
-    emit logMessage(tr("rotctld client %1 connected").arg(c.info.peer));
+    // The connection object stays here, without its descriptor, as the
+    // listening server's count of this client until it leaves.
+    c.thread = std::make_unique<RotctldClient>(id, connection->takeDescriptor(), peer, &m_shared, this, hooks);
+    if (!c.thread->start()) {
+        emit logMessage(tr("rotctld client %1 could not be served (no thread for it); closed").arg(peer));
+        connection->deleteLater();
+        m_clients.erase(id);
+        return;
+    }
+    emit logMessage(tr("rotctld client %1 connected").arg(peer));
     emit clientsChanged();
 }
 
-void RotctldServer::drop(transport::TcpConnection *connection)
+void RotctldServer::drop(quint64 id)
 {
-    const auto it = m_clients.find(connection);
+    const auto it = m_clients.find(id);
     if (it == m_clients.end())
         return;
-    connection->abort(); // if still open
-    reportSuppressed(*it);
-    emit logMessage(tr("rotctld client %1 left").arg(it->info.peer));
+    Client &c = it->second;
+    c.thread->stop();
+    c.thread->wait();
+    reportSuppressed(c);
+    emit logMessage(tr("rotctld client %1 left").arg(c.peer));
+    c.connection->deleteLater();
     m_clients.erase(it);
-    connection->deleteLater();
     emit clientsChanged();
 }
 
-QByteArray RotctldServer::consume(Client &c, QByteArrayView bytes, bool *quit)
+void RotctldServer::answerFor(quint64 id, const RotctldRequest &request)
 {
-    QByteArray out;
-    *quit = false;
-    while (!bytes.isEmpty()) {
-        // Up to the next line end, or all there is.
-        const qsizetype end = std::find_if(bytes.begin(), bytes.end(), [](char ch) { return ch == '\n' || ch == '\r'; })
-                              - bytes.begin();
-        const bool ended = end < bytes.size();
-        const QByteArrayView part = bytes.first(end);
-        bytes = bytes.sliced(ended ? end + 1 : end);
-        if (!c.discarding && c.buffer.size() + part.size() > kMaxLine) {
-            // Refused once, then everything up to the line end is dropped.
-            c.buffer.clear();
-            c.discarding = true;
-            out += "RPRT -1\n";
-            logClient(c, tr("rotctld client %1 sent a line over %2 bytes; refused").arg(c.info.peer).arg(kMaxLine));
-        }
-        if (c.discarding) {
-            c.discarding = !ended;
-            continue;
-        }
-        if (!ended) {
-            c.buffer += part;
-            continue;
-        }
-        if (c.buffer.isEmpty() && part.isEmpty())
-            continue; // the \n of \r\n, or an empty line
-        // A line read whole is answered from where it was read.
-        QByteArray joined;
-        QByteArrayView line = part;
-        if (!c.buffer.isEmpty()) {
-            joined = std::exchange(c.buffer, {}).append(part);
-            line = joined;
-        }
-        line = line.trimmed();
-        if (isQuit(line)) {
-            *quit = true;
-            return out;
-        }
-        out += answer(c, line);
-    }
-    return out;
-}
-
-QByteArray RotctldServer::answerLastLine(Client &c)
-{
-    const QByteArray last = std::exchange(c.buffer, {}).trimmed();
-    if (c.discarding || last.isEmpty() || isQuit(last))
-        return {};
-    return answer(c, last);
-}
-
-void RotctldServer::onReadable(transport::TcpConnection *connection)
-{
-    auto it = m_clients.find(connection);
+    const auto it = m_clients.find(id);
     if (it == m_clients.end())
-        return;
-    Client &c = *it;
-    // One chunk, read where it is answered from: no copy on the heap for
-    // every line.
-    char bytes[kReadChunk];
-    const qint64 n = connection->read(bytes, sizeof bytes);
-    if (!connection->isOpen()) { // reset: nobody to answer
-        drop(connection);
-        return;
-    }
-    if (n == 0) {
-        if (connection->atEnd())
-            finishInput(c);
-        return;
-    }
-    bool quit = false;
-    const QByteArray out = consume(c, QByteArrayView(bytes, n), &quit);
-    // Every answer of this read leaves in one write: Gpredict reads a `p`
-    // answer with a single recv.
-    connection->write(out);
-    if (quit)
-        connection->finish(kCloseLingerMs);
-    if (!connection->isOpen()) {
-        drop(connection);
-        return;
-    }
-    if (connection->bytesToWrite() > kMaxUnsentAnswers) {
-        emit logMessage(tr("rotctld client %1 is not reading its answers; disconnected").arg(c.info.peer));
-        drop(connection);
-    }
+        return; // gone meanwhile: its thread has stopped waiting
+    it->second.thread->deliver(answer(it->second, request));
 }
 
-void RotctldServer::finishInput(Client &c)
+QByteArray RotctldServer::answer(Client &c, const RotctldRequest &r)
 {
-    transport::TcpConnection *connection = c.connection;
-    connection->write(answerLastLine(c));
-    // Closes once the answers have left; a client that never reads them is
-    // cut off.
-    connection->finish(kCloseLingerMs);
-    if (!connection->isOpen())
-        drop(connection);
-}
-
-QByteArray RotctldServer::answer(Client &c, QByteArrayView line)
-{
-    // Trackers send the same line over and over (`p`): it is read once.
-    if (!c.lastRequest || line != QByteArrayView(c.lastLine)) {
-        c.lastLine = line.toByteArray();
-        c.lastRequest = parseRotctldLine(line);
-        c.info.lastCommand = QString::fromLatin1(line.first(std::min<qsizetype>(line.size(), 80))).trimmed();
-    }
-    const RotctldRequest r = *c.lastRequest; // shares its bytes; c may go while it is answered
-    // UTC: the local time would look up the time zone (a file) for every
-    // answer; the Trackers tab shows it in local time.
-    c.info.lastSeen = QDateTime::currentDateTimeUtc();
-    ++c.info.commands;
-    emit commandReceived(c.info.peer, c.info.lastCommand);
+    const QString command = c.thread->info().lastCommand;
+    emit commandReceived(c.peer, command);
 
     // A tracker that steers has the move watched at the full rate from its
     // start (session/pollpace.h), also when the deadband holds its P back
@@ -326,20 +255,17 @@ QByteArray RotctldServer::answer(Client &c, QByteArrayView line)
     if (wakesPolling(r.kind))
         m_session->wakePolling();
     if (m_logCommands && r.kind != Kind::GetPosition && r.kind != Kind::Unknown && r.kind != Kind::Malformed)
-        logClient(c, tr("rotctld %1: %2").arg(c.info.peer, c.info.lastCommand));
+        logClient(c, tr("rotctld %1: %2").arg(c.peer, command));
     const auto &profile = m_session->profile();
     switch (r.kind) {
-    case Kind::GetPosition: {
-        if (!m_session->isConnected() || !m_session->hasPosition())
+    case Kind::GetPosition: { // answered by the client's thread; this for completeness
+        const SharedPosition::Reading reading = m_shared.position.get();
+        if (!reading.known)
             return formatStatus(r, int(HamlibError::Io));
-        // Trackers speak 0..360: a position in the overlap is reported as its bearing.
-        double az = std::fmod(m_session->azimuth(), 360.0);
-        if (az < 0)
-            az += 360.0;
-        return m_positionAnswer.answer(r, az, m_session->elevation());
+        return formatPosition(r, reading.azimuth, reading.elevation);
     }
     case Kind::SetPosition:
-        if (const int refused = refuseElevation(c, r.el != 0.0); refused != 0)
+        if (const int refused = refuseElevation(c, command, r.el != 0.0); refused != 0)
             return formatStatus(r, refused);
         return formatStatus(r, steered(c, setPosition(r)));
     case Kind::Stop:
@@ -354,7 +280,7 @@ QByteArray RotctldServer::answer(Client &c, QByteArrayView line)
         // Hamlib's reset takes a type, and 1 ("reset all") is the only one.
         if (r.resetType != 1) {
             logClient(c, tr("rotctld client %1: reset type %2 means nothing; only 1 (reset all)")
-                             .arg(c.info.peer)
+                             .arg(c.peer)
                              .arg(r.resetType));
             return formatStatus(r, int(HamlibError::InvalidArgument));
         }
@@ -366,12 +292,12 @@ QByteArray RotctldServer::answer(Client &c, QByteArrayView line)
             // No homing command in this dialect (a SPID controller, GS-232):
             // Hamlib's "feature not available", not a bad argument.
             logClient(c, tr("rotctld client %1: reset refused: %2 has no homing command")
-                             .arg(c.info.peer, protocol::dialectName(m_session->profile().dialect)));
+                             .arg(c.peer, protocol::dialectName(m_session->profile().dialect)));
             return formatStatus(r, int(HamlibError::NotAvailable));
         }
         return formatStatus(r, m_session->home() ? 0 : int(HamlibError::InvalidArgument));
     case Kind::Move:
-        if (const int refused = refuseElevation(c, (r.direction & (2 | 4 | 32 | 64 | 128 | 256)) != 0); refused != 0)
+        if (const int refused = refuseElevation(c, command, (r.direction & (2 | 4 | 32 | 64 | 128 | 256)) != 0); refused != 0)
             return formatStatus(r, refused);
         return formatStatus(r, steered(c, move(r)));
     case Kind::GetInfo: {
@@ -391,7 +317,7 @@ QByteArray RotctldServer::answer(Client &c, QByteArrayView line)
     case Kind::Unknown:
     case Kind::Malformed:
         // Logged once, as the refusal; the line itself is in it.
-        logClient(c, tr("rotctld client %1: %2").arg(c.info.peer, r.error));
+        logClient(c, tr("rotctld client %1: %2").arg(c.peer, r.error));
         return formatStatus(r, int(HamlibError::InvalidArgument));
     }
     return formatStatus(r, int(HamlibError::InvalidArgument));
@@ -411,13 +337,13 @@ void RotctldServer::logClient(Client &c, const QString &text)
 void RotctldServer::reportSuppressed(Client &c)
 {
     if (const int n = c.logAllowance.takeSuppressed(); n > 0)
-        emit logMessage(tr("%1 more lines from %2 suppressed").arg(n).arg(c.info.peer));
+        emit logMessage(tr("%1 more lines from %2 suppressed").arg(n).arg(c.peer));
 }
 
 void RotctldServer::reportAllSuppressed()
 {
     bool any = false;
-    for (Client &c : m_clients) {
+    for (auto &[id, c] : m_clients) {
         reportSuppressed(c);
         any = any || c.logAllowance.suppressed() > 0;
     }
@@ -425,21 +351,21 @@ void RotctldServer::reportAllSuppressed()
         m_suppressedReport.stop();
 }
 
-int RotctldServer::refuseElevation(Client &c, bool wantsElevation)
+int RotctldServer::refuseElevation(Client &c, const QString &command, bool wantsElevation)
 {
     if (!wantsElevation || !m_session->isAzimuthOnly())
         return 0;
     // Hamlib's "feature not available" (RPRT -11): the rotator has no such
     // axis, which is not a position out of range (RPRT -1).
     logClient(c, tr("rotctld client %1: '%2' refused: this rotator turns azimuth only (send elevation 0)")
-                     .arg(c.info.peer, c.info.lastCommand));
+                     .arg(c.peer, command));
     return int(HamlibError::NotAvailable);
 }
 
 int RotctldServer::steered(const Client &c, int status)
 {
     if (status == 0) {
-        m_lastSteering = c.info.peer;
+        m_lastSteering = c.peer;
         m_lastSteeringAt.start();
     }
     return status;

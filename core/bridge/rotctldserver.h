@@ -6,25 +6,27 @@
 //
 // It sits on a RotatorSession: every move goes through the session's limit
 // checks (and its overlap choice), nothing here talks to the rotator. Each
-// client is answered on its own connection; a client that floods, sends an
-// overlong line or vanishes disturbs no one else.
+// client is served on a thread of its own (rotctldclient.h): position reads
+// are answered there, from the session's last reading, and everything else
+// comes here, to the session's thread, one line at a time. A client that
+// floods, sends an overlong line or vanishes disturbs no one else.
 
 #include "input/logtext.h"
-#include "positionanswer.h"
+#include "rotctldclient.h"
 #include "rotctldrequest.h"
 #include "transport/boundedtcpserver.h"
 
 #include <QDateTime>
-#include <QHash>
 #include <QHostAddress>
 #include <QElapsedTimer>
 #include <QObject>
 #include <QTimer>
 
-#include <optional>
+#include <map>
+#include <memory>
 
 namespace slew::transport {
-class TcpConnection;
+class BareConnection;
 }
 
 namespace slew::session {
@@ -36,15 +38,9 @@ namespace slew::bridge {
 class RotctldServer : public QObject {
     Q_OBJECT
 public:
-    struct ClientInfo {
-        QString peer;         // "127.0.0.1:53422"
-        QString lastCommand;  // the last line received
-        QDateTime lastSeen;   // UTC
-        int commands = 0;
-    };
+    using ClientInfo = RotctldClient::Info;
 
-    static constexpr int kMaxLine = 1024;               // longer lines are refused
-    static constexpr qint64 kMaxUnsentAnswers = 1 << 20; // a client that never reads is cut off
+    static constexpr int kMaxLine = RotctldClient::kMaxLine; // longer lines are refused
     static constexpr int kDefaultMaxClients = transport::BoundedTcpServer::kDefaultMaxClients;
 
     explicit RotctldServer(session::RotatorSession *session, QObject *parent = nullptr);
@@ -96,37 +92,34 @@ public:
 
 signals:
     void clientsChanged();
+    // A client asked something. Position reads are said at most every
+    // RotctldClient::kActivityIntervalMs, and only while this is connected.
     void commandReceived(const QString &peer, const QString &line);
     void remoteHeldChanged(bool held);
     void logMessage(const QString &message);
 
+protected:
+    void connectNotify(const QMetaMethod &signal) override;
+
 private:
     struct Client {
-        transport::TcpConnection *connection = nullptr;
-        QByteArray buffer;
-        bool discarding = false; // inside an overlong line
+        std::unique_ptr<RotctldClient> thread;
+        transport::BareConnection *connection = nullptr; // held for the server's count of clients
         input::LogAllowance logAllowance;
-        ClientInfo info;
-        // The last line and what it asks: trackers repeat theirs (`p`).
-        QByteArray lastLine;
-        std::optional<RotctldRequest> lastRequest;
+        QString peer;
     };
 
-    void onClientArrived(transport::TcpConnection *connection);
-    void onReadable(transport::TcpConnection *connection);
-    // Lines out of bytes, answers out of lines; true in *quit on `q`.
-    QByteArray consume(Client &client, QByteArrayView bytes, bool *quit);
-    // The answer to an unterminated last line, at the end of input.
-    QByteArray answerLastLine(Client &client);
-    // The client sent its last byte (a one-shot `printf 'p\n' | nc -N`):
-    // answer the unterminated last line too, then close once all has left.
-    void finishInput(Client &client);
-    // Forgets a client whose connection has closed, or closes it.
-    void drop(transport::TcpConnection *connection);
-    QByteArray answer(Client &client, QByteArrayView line);
+    void onClientArrived(transport::BareConnection *connection);
+    // Forgets a client whose thread has ended, or ends it.
+    void drop(quint64 id);
+    // The answer to what a client's thread handed over, delivered to it.
+    void answerFor(quint64 id, const RotctldRequest &request);
+    QByteArray answer(Client &client, const RotctldRequest &request);
+    // The session's reading, for the clients' threads.
+    void sharePosition();
     // Non-zero (RIG_ENAVAIL) when the request wants elevation from an
     // azimuth-only rotator, which is then logged as refused.
-    int refuseElevation(Client &c, bool wantsElevation);
+    int refuseElevation(Client &c, const QString &command, bool wantsElevation);
     int setPosition(const RotctldRequest &r);
     void logClient(Client &client, const QString &text);
     void reportSuppressed(Client &client);
@@ -137,7 +130,9 @@ private:
 
     session::RotatorSession *m_session;
     transport::BoundedTcpServer m_server;
-    QHash<transport::TcpConnection *, Client> m_clients;
+    RotctldClient::Shared m_shared;
+    std::map<quint64, Client> m_clients;
+    quint64 m_nextId = 1; // never reused: a late answer finds nobody
     QList<QHostAddress> m_allowed;
     double m_deadband = 0.5;
     bool m_remoteHeld = false;
@@ -147,7 +142,6 @@ private:
     bool m_logCommands = false;
     QElapsedTimer m_clock;
     QTimer m_suppressedReport; // runs while some client has lines held back
-    PositionAnswer m_positionAnswer;
 };
 
 } // namespace slew::bridge

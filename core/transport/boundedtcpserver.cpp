@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "boundedtcpserver.h"
 
-#include "descriptorset.h"
-#include "tcpconnection.h"
+#include "bareconnection.h"
 
 #include <QSocketNotifier>
 #include <QTcpSocket>
@@ -81,14 +80,6 @@ void BoundedTcpServer::setMaxClients(int count)
     m_maxClients = std::max(1, count);
 }
 
-void BoundedTcpServer::setBareConnections(bool on)
-{
-    m_bare = on;
-    // Kept once made: connections handed out go on being watched in it.
-    if (on && !m_bareWatcher)
-        m_bareWatcher = std::make_unique<DescriptorSet>();
-}
-
 void BoundedTcpServer::setReservedDescriptors(int count)
 {
     m_reserved = std::max(0, count);
@@ -133,7 +124,7 @@ void BoundedTcpServer::acceptPending()
             }
         }
         if (m_bare && m_clients < m_maxClients) {
-            auto *connection = new TcpConnection(fd, m_bareWatcher.get(), this);
+            auto *connection = new BareConnection(fd, this);
             count(connection);
             emit connectionArrived(connection);
         } else {

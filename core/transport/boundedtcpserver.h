@@ -31,8 +31,7 @@ class QTcpSocket;
 
 namespace slew::transport {
 
-class DescriptorSet;
-class TcpConnection;
+class BareConnection;
 
 class BoundedTcpServer : public QObject {
     Q_OBJECT
@@ -56,11 +55,10 @@ public:
     int maxClients() const { return m_maxClients; }
     // What a client over the limit reads before it is closed (may be empty).
     void setRefusal(const QByteArray &line) { m_refusal = line; }
-    // Clients handed out as bare connections (connectionArrived) rather
-    // than QTcpSockets (clientArrived): for a server whose clients ask a
-    // little, often (tcpconnection.h says what QTcpSocket costs them).
-    // They are watched together, behind one notifier (descriptorset.h).
-    void setBareConnections(bool on);
+    // Clients handed out as bare descriptors (connectionArrived) rather
+    // than QTcpSockets (clientArrived), for a server that serves them on
+    // threads of its own (bareconnection.h).
+    void setBareConnections(bool on) { m_bare = on; }
     bool bareConnections() const { return m_bare; }
 
     // Descriptors kept free for the rest of the process (at least 0).
@@ -79,7 +77,7 @@ signals:
     // it until the socket is destroyed.
     void clientArrived(QTcpSocket *socket);
     // The same with setBareConnections(true), counted until it is destroyed.
-    void connectionArrived(slew::transport::TcpConnection *connection);
+    void connectionArrived(slew::transport::BareConnection *connection);
     // Something the operator should know, ready for a log.
     void notice(const QString &text);
 
@@ -100,7 +98,6 @@ private:
     int m_reserved = kDefaultReservedDescriptors;
     int m_clients = 0;
     bool m_bare = false;
-    std::unique_ptr<DescriptorSet> m_bareWatcher; // from the first setBareConnections(true)
     bool m_waitingForDescriptors = false;
     qint64 m_refusedSinceNotice = 0;
     qint64 m_acceptRetries = 0;

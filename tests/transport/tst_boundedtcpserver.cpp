@@ -10,7 +10,7 @@
 //   pauses without spinning, and resumes once descriptors come free.
 
 #include "transport/boundedtcpserver.h"
-#include "transport/tcpconnection.h"
+#include "transport/bareconnection.h"
 
 #include <QElapsedTimer>
 #include <QSignalSpy>
@@ -215,9 +215,9 @@ void BoundedTcpServerTest::bareConnectionsAreCountedAndLimitedAlike()
     server.setMaxClients(2);
     server.setRefusal("busy\n");
     QSignalSpy sockets(&server, &BoundedTcpServer::clientArrived);
-    std::vector<slew::transport::TcpConnection *> arrived;
+    std::vector<slew::transport::BareConnection *> arrived;
     connect(&server, &BoundedTcpServer::connectionArrived, this,
-            [&](slew::transport::TcpConnection *c) { arrived.push_back(c); });
+            [&](slew::transport::BareConnection *c) { arrived.push_back(c); });
     QVERIFY(server.listen(QHostAddress::LocalHost, 0));
     std::vector<std::unique_ptr<QTcpSocket>> clients;
     for (int i = 0; i < 4; ++i) {
@@ -231,9 +231,9 @@ void BoundedTcpServerTest::bareConnectionsAreCountedAndLimitedAlike()
     QCOMPARE(clients[3]->readAll(), QByteArray("busy\n"));
     QCOMPARE(sockets.count(), 0);
     QCOMPARE(server.clientCount(), 2);
-    QVERIFY(arrived[0]->isOpen());
+    QVERIFY(arrived[0]->holdsDescriptor());
     QCOMPARE(arrived[0]->peerPort(), clients[0]->localPort());
-    for (slew::transport::TcpConnection *c : arrived)
+    for (slew::transport::BareConnection *c : arrived)
         delete c;
     QCOMPARE(server.clientCount(), 0);
     QTRY_COMPARE(clients[0]->state(), QAbstractSocket::UnconnectedState); // closed with it
