@@ -46,9 +46,10 @@ RotctldClient::RotctldClient(quint64 id, int descriptor, const QString &peer, Sh
     const int flags = ::fcntl(m_fd, F_GETFL);
     if (flags >= 0)
         ::fcntl(m_fd, F_SETFL, flags & ~O_NONBLOCK);
+    const int timeoutMs = std::max(1, m_shared->sendTimeoutMs.load());
     timeval timeout{};
-    timeout.tv_sec = kSendTimeoutMs / 1000;
-    timeout.tv_usec = (kSendTimeoutMs % 1000) * 1000;
+    timeout.tv_sec = timeoutMs / 1000;
+    timeout.tv_usec = (timeoutMs % 1000) * 1000;
     ::setsockopt(m_fd, SOL_SOCKET, SO_SNDTIMEO, &timeout, sizeof timeout);
 }
 

@@ -19,12 +19,16 @@
 // order of its questions and a move is never answered before the stop sent
 // ahead of it. The main thread never waits for a client.
 //
+// Memory stays bounded whatever a client does: it reads a chunk, answers
+// it, and reads no more until the answers have left.
+//
 // Lines are read as the main-thread server read them: at most kMaxLine
 // bytes (longer ones are refused once, RPRT -1, and skipped to their end),
 // \n or \r ends one, an unterminated last line is answered at the end of
 // input, `q` ends the session once the answers before it have left. A
-// client that stops reading its answers is cut off once the kernel has held
-// them for kSendTimeoutMs without taking more.
+// client that stops reading its answers is cut off once a send has waited
+// kSendTimeoutMs (Shared::sendTimeoutMs) with nothing taken; one that reads
+// slowly, a little at a time, is a slow reader and stays.
 //
 // A plain thread, not a QThread: a QThread brings an event dispatcher, and
 // with it a descriptor of its own (glib's wake-up eventfd), which would
@@ -84,6 +88,7 @@ public:
     struct Shared {
         SharedPosition position;
         std::atomic<bool> activityWatched{false};
+        std::atomic<int> sendTimeoutMs{kSendTimeoutMs}; // for clients that connect after a change
     };
 
     // Takes the descriptor (a connected TCP socket) and closes it when done.

@@ -51,6 +51,9 @@ public:
     bool listen(const QHostAddress &address, quint16 port, QString *error);
     void close();
     bool isListening() const { return m_server.isListening(); }
+    // How long a client's answers may wait for it to read before it is cut
+    // off (RotctldClient::kSendTimeoutMs); for clients that connect after.
+    void setSendTimeout(int ms) { m_shared.sendTimeoutMs = ms; }
     // Clients at once; one more reads `RPRT -9` (rejected) and is closed.
     void setMaxClients(int count) { m_server.setMaxClients(count); }
     int maxClients() const { return m_server.maxClients(); }

@@ -28,12 +28,16 @@ using namespace slew;
 
 namespace {
 
-// A connected blocking socket to 127.0.0.1:port, or -1.
-int connectTo(quint16 port)
+// A connected blocking socket to 127.0.0.1:port, or -1; with a receive
+// buffer of `receiveBuffer` bytes if not 0 (before connecting, so that the
+// window it offers stays that small).
+int connectTo(quint16 port, int receiveBuffer = 0)
 {
     const int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
     if (fd < 0)
         return -1;
+    if (receiveBuffer > 0)
+        ::setsockopt(fd, SOL_SOCKET, SO_RCVBUF, &receiveBuffer, sizeof receiveBuffer);
     sockaddr_in address{};
     address.sin_family = AF_INET;
     address.sin_port = htons(port);
@@ -91,6 +95,7 @@ private slots:
     void closingNeverWaitsForAnAnswer();
     void positionReadsAreSaidAtMostFourTimesASecond();
     void aClientCostsOneDescriptor();
+    void aClientThatDoesNotReadIsCutOff();
 
 private:
     QByteArray expectedPosition() const;
@@ -236,6 +241,56 @@ void RotctldClientTest::aClientCostsOneDescriptor()
         ::close(fd);
     QTRY_COMPARE(server->clients().size(), 1);
     QTRY_COMPARE(descriptors(), before);
+}
+
+void RotctldClientTest::aClientThatDoesNotReadIsCutOff()
+{
+    QSignalSpy logged(server, &bridge::RotctldServer::logMessage);
+    server->setSendTimeout(300); // 5 s in service
+    // It asks as fast as the kernel takes its questions and reads nothing:
+    // its answers fill the server's sending side, then its own receiving one.
+    const int flooder = connectTo(server->port(), 4096);
+    QVERIFY(flooder >= 0);
+    QTRY_COMPARE(server->clients().size(), 2);
+    QByteArray questions;
+    for (int i = 0; i < 4096; ++i)
+        questions += "p\n";
+    qint64 sent = 0;
+    bool othersAnswered = false;
+    QElapsedTimer clock;
+    clock.start();
+    // Until the server cuts it off: a send fails (reset, or broken pipe).
+    while (clock.elapsed() < 20000) {
+        const ssize_t n = ::send(flooder, questions.constData(), size_t(questions.size()), MSG_DONTWAIT | MSG_NOSIGNAL);
+        if (n > 0) {
+            sent += n;
+            continue;
+        }
+        if (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK)
+            break;
+        if (!othersAnswered) {
+            // The flooder's thread is stuck in a send: the other client is
+            // answered as ever.
+            QVERIFY(sendLine(client, "p\n"));
+            QCOMPARE(receiveLines(client, 2, 5000).count('\n'), 2);
+            othersAnswered = true;
+        }
+        QTest::qWait(20);
+    }
+    QVERIFY(othersAnswered);
+    QVERIFY2(sent > 100000, qPrintable(QString::number(sent)));
+    auto saidSo = [&] {
+        for (const auto &args : logged) {
+            if (args.at(0).toString().contains(QStringLiteral("is not reading its answers; disconnected")))
+                return true;
+        }
+        return false;
+    };
+    QTRY_VERIFY(saidSo());
+    QTRY_COMPARE(server->clients().size(), 1);
+    ::close(flooder);
+    QVERIFY(sendLine(client, "p\n"));
+    QCOMPARE(receiveLines(client, 2, 5000).count('\n'), 2);
 }
 
 QTEST_GUILESS_MAIN(RotctldClientTest)
