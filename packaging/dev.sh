@@ -140,7 +140,9 @@ sanitize)
     install_missing
     sanitize_configure_and_build
     cd "$sanitize_build"
-    ctest --output-on-failure --timeout 1800 "$@"
+    # Two at a time, as the normal suite: the tests hold up with the other
+    # core busy (README), and one at a time took 14 of CI's 90 minutes.
+    ctest --output-on-failure --timeout 1800 -j "$jobs" "$@"
     ;;
 fuzz)
     seconds=${1:-60}
