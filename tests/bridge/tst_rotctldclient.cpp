@@ -19,6 +19,7 @@
 #include <QTest>
 
 #include <cerrno>
+#include <thread>
 #include <netinet/in.h>
 #include <poll.h>
 #include <sys/socket.h>
@@ -189,7 +190,14 @@ void RotctldClientTest::closingNeverWaitsForAnAnswer()
     // The client's thread hands `S` over and waits; the main thread never
     // gets to it, because it closes the server first.
     QVERIFY(sendLine(client, "S\n"));
-    QTest::qSleep(100); // the thread has read the line and is waiting (a test may sleep)
+    // The thread counts the line before it hands it over; the count is read
+    // under the client's lock, without turning the event loop (which would
+    // answer it).
+    QElapsedTimer read;
+    read.start();
+    while (server->clients().value(0).commands < 1 && read.elapsed() < 5000)
+        std::this_thread::yield();
+    QCOMPARE(server->clients().value(0).commands, 1);
     QElapsedTimer clock;
     clock.start();
     delete server;
