@@ -9,7 +9,7 @@
 #include "slew_identity.h"
 
 #include "radio/transpondersources.h"
-#include "sky/tlesources.h"
+#include "sky/elementsetsources.h"
 #include "station/station.h"
 #include "input/logtext.h"
 
@@ -71,21 +71,33 @@ int runUpdateElements(int argc, char **argv)
     QString error;
     if (!readUrls(parser.positionalArguments(), &urls, &error))
         return refuse(error);
+    QList<QUrl> saved = savedElementSetUrls();
     if (urls.isEmpty())
-        urls = savedElementSetUrls();
+        urls = saved;
     if (urls.isEmpty())
         return refuse(QStringLiteral("no sources: name URLs (such as %1), or list them in the window "
                                      "(Sky → Element sets…)")
                           .arg(QLatin1String(kExampleElementSetUrl)));
+    // The URLs named join the window's sources, so the window, --where,
+    // --passes and --schedule read what was just fetched.
+    bool added = false;
+    for (const QUrl &url : std::as_const(urls)) {
+        if (!saved.contains(url)) {
+            saved.append(url);
+            added = true;
+        }
+    }
+    if (added)
+        saveElementSetUrls(saved);
 
     // The station's element sets: the same cache the window and the service read.
     slew::station::Station station;
-    TleSources &sources = *station.elementSets();
+    ElementSetSources &sources = *station.elementSets();
     sources.setUrls(urls);
     int status = 0;
-    QObject::connect(&sources, &TleSources::finished, &app, [&sources, &status] {
+    QObject::connect(&sources, &ElementSetSources::finished, &app, [&sources, &status] {
         QStringList failed;
-        for (const TleSourceStatus &s : sources.status()) {
+        for (const ElementSetSourceStatus &s : sources.status()) {
             std::fprintf(stdout, "%s\n", qPrintable(describeSource(s)));
             if (sourceFailed(s))
                 failed << s.url.toString();

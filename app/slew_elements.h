@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // `slew --update-elements [URL…]`: refresh element-set sources into the
-// window's cache with no window, so a station can refresh from a timer. The
-// work is in core/sky's TleSources, shared with the window.
+// window's cache with no window, so a station can refresh from a timer; the
+// URLs named join the window's sources. The work is in core/sky's
+// ElementSetSources, shared with the window.
 
 bool wantsUpdateElements(int argc, char **argv);
 

@@ -5,6 +5,7 @@
 
 #include "slew_identity.h"
 #include "cli/configfile.h"
+#include "cli/elementsetoption.h"
 #include "cli/sharedoptions.h"
 #include "cli/trackoptions.h"
 #include "cli/slewcommandline.h"
@@ -20,7 +21,7 @@
 #include "protocol/dialect.h"
 #include "transport/linkfactory.h"
 #include "cli/terminationsignalwatcher.h"
-#include "sky/tle.h"
+#include "sky/elementsetformat.h"
 #include "sky/utctime.h"
 
 #include "input/finitenumber.h"
@@ -186,13 +187,16 @@ std::optional<slew::station::RemoteOptions> readRemote(const QCommandLineParser 
         return std::nullopt;
     }
     remote.password = *password;
+    // The satellites a remote `track` may name: --tle's, else the cached
+    // copies of the window's sources (none is no error: a remote may still
+    // ask for the sun, the moon or a fixed point).
     if (parser.isSet(tle)) {
-        const slew::sky::TleFile file = slew::sky::readTleFile(parser.value(tle));
-        if (!file.error.isEmpty()) {
-            *error = QStringLiteral("%1: %2").arg(label(tle), file.error);
+        const auto sets = slew::cli::readElementSetOption(parser, label, error);
+        if (!sets)
             return std::nullopt;
-        }
-        remote.elementSets = file.sets;
+        remote.elementSets = sets->sets;
+    } else {
+        remote.elementSets = slew::cli::cachedElementSets().sets;
     }
     return remote;
 }

@@ -8,6 +8,7 @@
 #include "mainwindow.h"
 #include "operatortheme.h"
 #include "slew_elements.h"
+#include "slew_export.h"
 #include "slew_headless.h"
 #include "slew_schedule.h"
 #include "slew_passreport.h"
@@ -149,6 +150,8 @@ int main(int argc, char *argv[])
     if (wantsPassReport(argc, argv))
         return runPassReport(argc, argv);
     // And refreshing the element sets into the window's cache.
+    if (wantsExportElements(argc, argv))
+        return runExportElements(argc, argv);
     if (wantsUpdateElements(argc, argv))
         return runUpdateElements(argc, argv);
     if (wantsUpdateTransponders(argc, argv))

@@ -4,6 +4,7 @@
 
 #include "slew_sky.h"
 
+#include "cli/elementsetoption.h"
 #include "cli/slewcommandline.h"
 #include "slew_identity.h"
 
@@ -13,7 +14,7 @@
 #include "sky/sgp4.h"
 #include "sky/station.h"
 #include "sky/sunmoon.h"
-#include "sky/tle.h"
+#include "sky/elementsetformat.h"
 
 #include "input/finitenumber.h"
 
@@ -82,7 +83,8 @@ double nowJulian()
 struct Common {
     Station station;
     double julian = 0;
-    QList<Tle> sets;
+    QList<ElementSet> sets;
+    QString origin; // where the sets came from: --tle's file, or the cache
 };
 
 } // namespace
@@ -140,21 +142,17 @@ QString readCommon(const QCommandLineParser &parser, const QString &timeOption, 
                 .arg(timeOption, parser.value(timeOption));
         out->julian = *t;
     }
-    if (!parser.isSet(QStringLiteral("tle"))) {
-        if (needTle)
-            return QStringLiteral("--tle FILE is needed for a satellite");
+    // The sun and the moon need no element sets: the cache is not read for them.
+    if (!needTle && !parser.isSet(QStringLiteral("tle")))
         return {};
-    }
-    const QString path = parser.value(QStringLiteral("tle"));
-    const TleFile file = readTleFile(path);
-    if (!file.error.isEmpty())
-        return QStringLiteral("--tle %1").arg(file.error);
-    for (const TleRefusal &r : file.refusals)
-        std::fprintf(stderr, "slew: %s:%d: skipped: %s\n", qPrintable(path), r.line, qPrintable(r.reason));
-    if (file.duplicates > 0)
-        std::fprintf(stderr, "slew: %s: %d sets repeat a satellite listed before; the newest epoch of each is used\n",
-                     qPrintable(path), file.duplicates);
-    out->sets = file.sets;
+    const auto sets = slew::cli::readElementSetOption(parser, slew::cli::commandLineLabel, &error);
+    if (!sets)
+        return error;
+    for (const QString &skipped : sets->skipped)
+        std::fprintf(stderr, "slew: %s\n", qPrintable(skipped));
+    std::fprintf(stderr, "slew: element sets from %s\n", qPrintable(sets->origin));
+    out->sets = sets->sets;
+    out->origin = sets->origin;
     return {};
 }
 
@@ -168,11 +166,11 @@ std::optional<SkyBody> bodyNamed(const QString &name)
 }
 
 // One satellite by number or name; the message says why not.
-const Tle *pickSatellite(const QList<Tle> &sets, const QString &query, QString *error)
+const ElementSet *pickSatellite(const QList<ElementSet> &sets, const QString &query, QString *error)
 {
-    const Tle *tle = findOneTle(sets, query, error);
+    const ElementSet *tle = findOneSatellite(sets, query, error);
     if (!tle && error->startsWith(QStringLiteral("no satellite")))
-        *error += QStringLiteral(" in the element file");
+        *error += QStringLiteral(" in the element sets");
     return tle;
 }
 
@@ -293,11 +291,11 @@ int runPasses(QCoreApplication &app)
     }
     if (target.compare(QStringLiteral("all"), Qt::CaseInsensitive) == 0) {
         if (common.sets.isEmpty())
-            return fail(QStringLiteral("no element sets could be read from %1").arg(parser.value(QStringLiteral("tle"))));
+            return fail(QStringLiteral("no element sets could be read from %1").arg(common.origin));
         // A set that reads but cannot be propagated (decayed, absurd drag)
         // has no passes: say so, rather than let "(no passes)" stand for it.
-        QList<Tle> usable;
-        for (const Tle &t : common.sets) {
+        QList<ElementSet> usable;
+        for (const ElementSet &t : common.sets) {
             const Sgp4Error initial = Sgp4(t).initialError();
             if (initial == Sgp4Error::None)
                 usable.append(t);
@@ -306,12 +304,11 @@ int runPasses(QCoreApplication &app)
                              t.catalogueNumber, qPrintable(sgp4ErrorText(initial)));
         }
         if (usable.isEmpty())
-            return fail(QStringLiteral("none of the element sets in %1 can be propagated")
-                            .arg(parser.value(QStringLiteral("tle"))));
+            return fail(QStringLiteral("none of the element sets from %1 can be propagated").arg(common.origin));
         printPasses(predictPasses(usable, common.station, window), json, false);
         return 0;
     }
-    const Tle *tle = pickSatellite(common.sets, target, &why);
+    const ElementSet *tle = pickSatellite(common.sets, target, &why);
     if (!tle) {
         std::fprintf(stderr, "slew: %s\n", qPrintable(why));
         return 1;
@@ -364,7 +361,7 @@ int runWhere(QCoreApplication &app)
         out.insert(QStringLiteral("name"), *body == SkyBody::Sun ? QStringLiteral("Sun") : QStringLiteral("Moon"));
     } else {
         QString why;
-        const Tle *tle = pickSatellite(common.sets, target, &why);
+        const ElementSet *tle = pickSatellite(common.sets, target, &why);
         if (!tle) {
             std::fprintf(stderr, "slew: %s\n", qPrintable(why));
             return 1;

@@ -56,7 +56,7 @@ sanitize_configure_and_build() {
 # a build dependency, so they are installed here rather than listed in
 # debian-packages.txt.
 fuzz_build=${SLEW_FUZZ_BUILD_DIR:-$top/build-fuzz}
-fuzz_targets=(parser rotctldrequest tle configfile transponders remotemessages)
+fuzz_targets=(parser rotctldrequest tle gpcsv ommxml gpjson ommkvn configfile transponders remotemessages)
 install_fuzz_tools() {
     local missing=()
     for pkg in clang libclang-rt-14-dev; do

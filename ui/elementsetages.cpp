@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "elementsetages.h"
 
-#include "sky/tlesources.h"
+#include "sky/elementsetsources.h"
 
 #include <QLabel>
 #include <QUrlQuery>
@@ -41,7 +41,7 @@ QString describeAgeSince(const QDateTime &then)
     return describeAgeDays(then.secsTo(QDateTime::currentDateTimeUtc()) / 86400.0);
 }
 
-ElementSetAges::ElementSetAges(const sky::TleSources *sources, QWidget *parent)
+ElementSetAges::ElementSetAges(const sky::ElementSetSources *sources, QWidget *parent)
     : QWidget(parent), m_sources(sources), m_layout(new QVBoxLayout(this))
 {
     setObjectName(QStringLiteral("elementSetAges"));
@@ -56,7 +56,7 @@ bool ElementSetAges::isStale(const QLabel *line)
 
 void ElementSetAges::refresh(double julianNow, double limitDays)
 {
-    const QList<sky::TleSourceStatus> status = m_sources->status();
+    const QList<sky::ElementSetSourceStatus> status = m_sources->status();
     const qsizetype wanted = std::max<qsizetype>(1, status.size());
     while (m_lines.size() < wanted) {
         auto *line = new QLabel;
@@ -77,7 +77,7 @@ void ElementSetAges::refresh(double julianNow, double limitDays)
         return;
     }
     for (qsizetype i = 0; i < status.size(); ++i) {
-        const sky::TleSourceStatus &s = status[i];
+        const sky::ElementSetSourceStatus &s = status[i];
         const auto newest = sky::newestEpochJulian(m_sources->setsFrom(i));
         QString text = tr("%1: %n set(s)", nullptr, s.setCount).arg(sourceName(s.url));
         // Predicting before the epoch (rehearsing the past) drifts as well.

@@ -22,7 +22,7 @@ class QLabel;
 class QVBoxLayout;
 
 namespace slew::sky {
-class TleSources;
+class ElementSetSources;
 }
 
 namespace slew::ui {
@@ -36,7 +36,7 @@ QString describeAgeSince(const QDateTime &then);
 class ElementSetAges : public QWidget {
     Q_OBJECT
 public:
-    explicit ElementSetAges(const sky::TleSources *sources, QWidget *parent = nullptr);
+    explicit ElementSetAges(const sky::ElementSetSources *sources, QWidget *parent = nullptr);
 
     // Rewrites the lines for the station's time and the age limit in days.
     void refresh(double julianNow, double limitDays);
@@ -45,7 +45,7 @@ public:
     static bool isStale(const QLabel *line);
 
 private:
-    const sky::TleSources *m_sources;
+    const sky::ElementSetSources *m_sources;
     QVBoxLayout *m_layout;
     QList<QLabel *> m_lines;
 };

@@ -8,7 +8,7 @@
 #include "elementsetages.h"
 
 #include "sky/skyvector.h"
-#include "sky/tlesources.h"
+#include "sky/elementsetsources.h"
 
 #include <QDateTime>
 #include <QDialogButtonBox>
@@ -34,9 +34,9 @@ QString count(qsizetype n, const QString &one, const QString &many)
     return QStringLiteral("%1 %2").arg(n).arg(n == 1 ? one : many);
 }
 
-enum Column { SourceColumn, StateColumn, SetsColumn, AgeColumn, RefusedColumn };
+enum Column { SourceColumn, StateColumn, SetsColumn, AgeColumn, RefusedColumn, FormColumn };
 
-QString describeState(const sky::TleSourceStatus &s)
+QString describeState(const sky::ElementSetSourceStatus &s)
 {
     if (s.fetched)
         return s.error.isEmpty() ? QObject::tr("fetched") : QObject::tr("fetched, but %1").arg(s.error);
@@ -47,16 +47,21 @@ QString describeState(const sky::TleSourceStatus &s)
 
 } // namespace
 
-ElementSetsDialog::ElementSetsDialog(sky::TleSources *sources, QWidget *parent)
+ElementSetsDialog::ElementSetsDialog(sky::ElementSetSources *sources, QWidget *parent)
     : QDialog(parent), m_sources(sources)
 {
     setWindowTitle(tr("Element sets"));
     setObjectName(QStringLiteral("elementSetsDialog"));
     resize(820, 480);
     auto *layout = new QVBoxLayout(this);
-    layout->addWidget(new QLabel(tr("Sources, one per line: group files over HTTP(S), such as CelesTrak's, "
-                                    "or local files (file:///…). Slew keeps the last good copy of each and "
-                                    "works from it offline.")));
+    auto *about = new QLabel(tr("Sources, one per line: GP queries over HTTP(S), such as CelesTrak's "
+                                "(…/gp.php?GROUP=amateur&FORMAT=csv, or FORMAT=json; FORMAT=tle stops at "
+                                "catalogue number 99999), or local files (file:///…), in any of the forms: TLE, "
+                                "CSV, OMM XML, JSON, OMM KVN. Slew keeps the last good copy of each and works "
+                                "from it offline."));
+    about->setTextFormat(Qt::PlainText);
+    about->setWordWrap(true);
+    layout->addWidget(about);
     m_urls = new QPlainTextEdit;
     m_urls->setObjectName(QStringLiteral("elementSetUrls"));
     m_urls->setPlaceholderText(QLatin1String(sky::kExampleElementSetUrl));
@@ -96,7 +101,7 @@ ElementSetsDialog::ElementSetsDialog(sky::TleSources *sources, QWidget *parent)
     m_status = new QTreeWidget;
     m_status->setObjectName(QStringLiteral("elementSetStatus"));
     m_status->setHeaderLabels(
-        {tr("Source / satellite"), tr("State / epoch"), tr("Sets / number"), tr("Age"), tr("Refused")});
+        {tr("Source / satellite"), tr("State / epoch"), tr("Sets / number"), tr("Age"), tr("Refused"), tr("Form")});
     m_status->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_status->header()->setSectionResizeMode(SourceColumn, QHeaderView::Stretch);
     layout->addWidget(m_status, 1);
@@ -112,18 +117,18 @@ ElementSetsDialog::ElementSetsDialog(sky::TleSources *sources, QWidget *parent)
     connect(close, &QDialogButtonBox::rejected, this, &QDialog::reject);
     connect(m_refresh, &QPushButton::clicked, this, &ElementSetsDialog::refresh);
     connect(addFile, &QPushButton::clicked, this, [this] {
-        chooseFile(this, FileChoice::Open, tr("Element sets"), QString(), tr("Element sets (*.txt *.tle);;All files (*)"),
+        chooseFile(this, FileChoice::Open, tr("Element sets"), QString(), tr("Element sets (*.csv *.xml *.json *.kvn *.txt *.tle *.3le);;All files (*)"),
                    [this](const QString &path) { this->addFile(path); });
     });
     connect(m_ageLimit, &QDoubleSpinBox::valueChanged, this, [this](double days) {
         QSettings().setValue(QLatin1String(kAgeLimitKey), days);
         showStatus();
     });
-    connect(m_sources, &sky::TleSources::setsChanged, this, &ElementSetsDialog::showStatus);
-    connect(m_sources, &sky::TleSources::finished, this, [this] {
+    connect(m_sources, &sky::ElementSetSources::setsChanged, this, &ElementSetsDialog::showStatus);
+    connect(m_sources, &sky::ElementSetSources::finished, this, [this] {
         m_refresh->setEnabled(true);
         qsizetype failed = 0;
-        for (const sky::TleSourceStatus &s : m_sources->status())
+        for (const sky::ElementSetSourceStatus &s : m_sources->status())
             failed += sky::sourceFailed(s) ? 1 : 0;
         const QString total = count(m_sources->sets().size(), tr("element set"), tr("element sets"));
         m_message->setText(failed == 0 ? tr("Refreshed: %1 in all.").arg(total)
@@ -188,22 +193,26 @@ void ElementSetsDialog::addFile(const QString &path)
 void ElementSetsDialog::showStatus()
 {
     m_status->clear();
-    for (const sky::TleSourceStatus &s : m_sources->status()) {
+    for (const sky::ElementSetSourceStatus &s : m_sources->status()) {
         auto *item = new QTreeWidgetItem(m_status);
         item->setText(SourceColumn, s.url.toString());
         item->setText(StateColumn, describeState(s));
+        if (s.setCount > 0) {
+            item->setText(FormColumn, sky::formName(s.form));
+            item->setToolTip(FormColumn, tr("the form the copy held now is written in, told from its content"));
+        }
         item->setText(SetsColumn, QString::number(s.setCount));
         item->setText(AgeColumn, describeAgeSince(s.cachedAt));
         item->setText(RefusedColumn, QString::number(s.refusals.size()));
         QStringList refusals;
-        for (const sky::TleRefusal &r : s.refusals)
-            refusals << tr("line %1: %2").arg(r.line).arg(r.reason);
+        for (const sky::ElementSetRefusal &r : s.refusals)
+            refusals << tr("%1: %2").arg(r.where(), r.reason);
         item->setToolTip(RefusedColumn, refusals.join(u'\n'));
         item->setToolTip(StateColumn, describeState(s));
         item->setToolTip(AgeColumn, tr("how long ago this copy was downloaded"));
         // Each set under its source, with the age of its elements.
         const double now = sky::julianFromUnixSeconds(QDateTime::currentMSecsSinceEpoch() / 1000.0);
-        for (const sky::Tle &t : m_sources->setsFrom(m_status->topLevelItemCount() - 1)) {
+        for (const sky::ElementSet &t : m_sources->setsFrom(m_status->topLevelItemCount() - 1)) {
             auto *child = new QTreeWidgetItem(item);
             child->setText(SourceColumn, t.name.isEmpty() ? tr("(no name)") : t.name);
             const QDateTime epoch = QDateTime::fromMSecsSinceEpoch(
@@ -215,7 +224,7 @@ void ElementSetsDialog::showStatus()
         }
     }
     m_status->expandAll();
-    const QList<sky::Tle> sets = m_sources->sets();
+    const QList<sky::ElementSet> sets = m_sources->sets();
     const double now = sky::julianFromUnixSeconds(QDateTime::currentMSecsSinceEpoch() / 1000.0);
     const QList<sky::ElementAge> stale = sky::staleElements(sets, now, m_ageLimit->value());
     if (stale.isEmpty()) {
@@ -224,7 +233,7 @@ void ElementSetsDialog::showStatus()
     }
     QStringList named;
     for (qsizetype i = 0; i < stale.size() && i < 5; ++i) {
-        const sky::Tle &t = *stale[i].tle;
+        const sky::ElementSet &t = *stale[i].set;
         named << tr("%1 (%2 days)")
                      .arg(t.name.isEmpty() ? QString::number(t.catalogueNumber) : t.name)
                      .arg(stale[i].ageDays, 0, 'f', 0);

@@ -6,7 +6,7 @@
 // whether this refresh worked, how many sets it holds and how old the
 // cached copy is; sets older than the age limit are named in a warning.
 // Sources and limit are kept in the settings; the sets themselves live in
-// core/sky's TleSources, which the window owns and which works offline
+// core/sky's ElementSetSources, which the window owns and which works offline
 // from its cache.
 
 #include <QDialog>
@@ -20,7 +20,7 @@ class QPushButton;
 class QTreeWidget;
 
 namespace slew::sky {
-class TleSources;
+class ElementSetSources;
 }
 
 namespace slew::ui {
@@ -28,7 +28,7 @@ namespace slew::ui {
 class ElementSetsDialog : public QDialog {
     Q_OBJECT
 public:
-    ElementSetsDialog(sky::TleSources *sources, QWidget *parent = nullptr);
+    ElementSetsDialog(sky::ElementSetSources *sources, QWidget *parent = nullptr);
 
     // The age limit the settings hold (the sources are in core/sky:
     // savedElementSetUrls(), shared with slew --update-elements).
@@ -44,7 +44,7 @@ private:
     void showStatus();
     bool readUrls(QList<QUrl> *urls, QString *error) const;
 
-    sky::TleSources *m_sources;
+    sky::ElementSetSources *m_sources;
     QPlainTextEdit *m_urls = nullptr;
     QDoubleSpinBox *m_ageLimit = nullptr;
     QPushButton *m_refresh = nullptr;

@@ -44,7 +44,7 @@
 #include "records/passrecordstore.h"
 #include "station/station.h"
 #include "session/controllerrotors.h"
-#include "sky/tlesources.h"
+#include "sky/elementsetsources.h"
 
 #include <QDateTime>
 #include <QGuiApplication>
@@ -96,22 +96,22 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
 
     // Offline first: the last good copies, no network until asked.
     // The cache is read on worker threads: the window appears at once, and
-    // the sets follow (TleSources::loaded).
+    // the sets follow (ElementSetSources::loaded).
     m_elementSets = station->elementSets();
     m_elementSets->setUrls(sky::savedElementSetUrls());
     m_elementSets->loadFromCache();
     // A cached copy that cannot be used (over the cap, not a file) says so.
-    connect(m_elementSets, &sky::TleSources::loaded, this, [this] {
-        for (const sky::TleSourceStatus &s : m_elementSets->status())
+    connect(m_elementSets, &sky::ElementSetSources::loaded, this, [this] {
+        for (const sky::ElementSetSourceStatus &s : m_elementSets->status())
             if (!s.error.isEmpty())
                 m_log->addEvent(QDateTime::currentDateTime(), station::AlarmMonitor::Severity::Warning,
                                 tr("element sets: %1: %2").arg(s.url.toString(), s.error));
     });
     // Whenever a refresh ends, from the dialog or elsewhere: each source
     // whose new copy was not taken says why.
-    connect(m_elementSets, &sky::TleSources::finished, this, [this] {
+    connect(m_elementSets, &sky::ElementSetSources::finished, this, [this] {
         int failed = 0;
-        for (const sky::TleSourceStatus &s : m_elementSets->status()) {
+        for (const sky::ElementSetSourceStatus &s : m_elementSets->status()) {
             if (!sky::sourceFailed(s))
                 continue;
             ++failed;

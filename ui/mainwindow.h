@@ -51,7 +51,7 @@ class TrackingPanel;
 }
 
 namespace slew::sky {
-class TleSources;
+class ElementSetSources;
 }
 
 namespace slew::session {
@@ -100,7 +100,7 @@ public:
     // Sky → Time controller…: the station clock, and rehearsals.
     TimeController *timeController() const { return m_time; }
     // The element sets Slew knows, loaded from the cache at start.
-    sky::TleSources *elementSets() const { return m_elementSets; }
+    sky::ElementSetSources *elementSets() const { return m_elementSets; }
 
 public slots:
     // Fills the connection bar with this URI (and dialect) and connects.
@@ -159,7 +159,7 @@ private:
     AlignmentPanel *m_alignment;
     HistoryPanel *m_history;
     TimeController *m_time;
-    sky::TleSources *m_elementSets;
+    sky::ElementSetSources *m_elementSets;
 };
 
 } // namespace slew::ui

@@ -10,7 +10,7 @@
 
 #include "radio/transponderset.h"
 #include "radio/transpondersources.h"
-#include "sky/tlesources.h"
+#include "sky/elementsetsources.h"
 #include "station/dopplerradio.h"
 #include "station/station.h"
 #include "tracking/passrunner.h"
@@ -141,7 +141,7 @@ RadioPanel::RadioPanel(station::Station *station, QWidget *parent) : QWidget(par
     connect(&m_watch, &QTimer::timeout, this, &RadioPanel::onTracking);
     m_watch.start(1000);
     // Names for the NORAD numbers come with the element sets.
-    connect(m_station->elementSets(), &sky::TleSources::setsChanged, this, &RadioPanel::showPlanState);
+    connect(m_station->elementSets(), &sky::ElementSetSources::setsChanged, this, &RadioPanel::showPlanState);
 
     // What was applied last is the radio's again, for the satellite it was for.
     if (const std::optional<int> last = lastAppliedRadioPlan()) {
@@ -178,7 +178,7 @@ QString RadioPanel::describeSatellite(int noradId) const
 {
     if (noradId == 0)
         return tr("any satellite tracked");
-    for (const sky::Tle &set : m_station->elementSets()->sets())
+    for (const sky::ElementSet &set : m_station->elementSets()->sets())
         if (set.catalogueNumber == noradId)
             return tr("%1 (NORAD %2)").arg(set.displayName()).arg(noradId);
     return tr("NORAD %1").arg(noradId);

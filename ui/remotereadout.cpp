@@ -53,7 +53,9 @@ QString RemoteReadout::trackingText(const remote::StationState &s)
 {
     if (s.tracking == u"off")
         return tr("Not tracking");
-    QString text = tr("Tracking %1: %2").arg(s.trackingTarget, s.tracking);
+    const QString target = s.trackingNorad ? tr("%1 (NORAD %2)").arg(s.trackingTarget).arg(*s.trackingNorad)
+                                           : s.trackingTarget;
+    QString text = tr("Tracking %1: %2").arg(target, s.tracking);
     if (s.passAosMs && s.passLosMs) {
         text += tr(", pass %1–%2 UTC").arg(utcTime(*s.passAosMs), utcTime(*s.passLosMs));
         if (s.passMaxElevation)

@@ -5,8 +5,8 @@
 
 #include "schedule/scheduletext.h"
 #include "session/rotatorsession.h"
-#include "sky/tle.h"
-#include "sky/tlesources.h"
+#include "sky/elementsetformat.h"
+#include "sky/elementsetsources.h"
 #include "sky/utctime.h"
 #include "station/schedulerunner.h"
 #include "station/station.h"
@@ -129,7 +129,7 @@ SchedulePanel::SchedulePanel(station::Station *station, QWidget *parent) : QWidg
     connect(runner, &station::ScheduleRunner::logLine, this, &SchedulePanel::message);
     // What the preview depends on.
     connect(m_station, &station::Station::placeChanged, this, &SchedulePanel::preview);
-    connect(m_station->elementSets(), &sky::TleSources::setsChanged, this, &SchedulePanel::preview);
+    connect(m_station->elementSets(), &sky::ElementSetSources::setsChanged, this, &SchedulePanel::preview);
     connect(m_station->clock(), &tracking::StationClock::changed, this, &SchedulePanel::preview);
     connect(&m_now, &QTimer::timeout, this, [this] { m_timeline->setNow(m_station->clock()->nowJulian()); });
     m_now.start(5000);
@@ -143,7 +143,7 @@ QString SchedulePanel::describeSpec(const QString &spec) const
 {
     if (spec.startsWith(QLatin1String("norad:"))) {
         const int norad = spec.mid(6).toInt();
-        for (const sky::Tle &t : m_station->elementSets()->sets())
+        for (const sky::ElementSet &t : m_station->elementSets()->sets())
             if (t.catalogueNumber == norad)
                 return t.displayName();
         return tr("NORAD %1 (not in the loaded element sets)").arg(norad);
@@ -169,8 +169,8 @@ bool SchedulePanel::addTarget(const QString &text)
     } else if (const auto fixed = TrackTarget::parseFixedOrCelestial(what, &error)) {
         spec = what;
     } else if (error.isEmpty()) {
-        const QList<sky::Tle> sets = m_station->elementSets()->sets(); // the search's answer points into it
-        const sky::Tle *tle = sky::findOneTle(sets, what, &error);
+        const QList<sky::ElementSet> sets = m_station->elementSets()->sets(); // the search's answer points into it
+        const sky::ElementSet *tle = sky::findOneSatellite(sets, what, &error);
         if (tle)
             spec = QStringLiteral("norad:%1").arg(tle->catalogueNumber);
     }
@@ -210,7 +210,7 @@ QList<TrackTarget> SchedulePanel::targets(QStringList *missing) const
         } else if (spec.startsWith(QLatin1String("norad:"))) {
             const int norad = spec.mid(6).toInt();
             bool found = false;
-            for (const sky::Tle &tle : m_station->elementSets()->sets()) {
+            for (const sky::ElementSet &tle : m_station->elementSets()->sets()) {
                 if (tle.catalogueNumber == norad) {
                     t.elements = tle;
                     found = true;

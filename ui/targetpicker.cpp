@@ -3,7 +3,7 @@
 
 #include "tracking/tracktarget.h"
 
-#include "sky/tlesources.h"
+#include "sky/elementsetsources.h"
 
 #include <QAction>
 #include <QHBoxLayout>
@@ -53,7 +53,7 @@ bool matches(const FavouriteTarget &t, const QString &wanted)
 
 } // namespace
 
-TargetPicker::TargetPicker(const sky::TleSources *sets, QWidget *parent) : QWidget(parent), m_sets(sets)
+TargetPicker::TargetPicker(const sky::ElementSetSources *sets, QWidget *parent) : QWidget(parent), m_sets(sets)
 {
     setObjectName(QStringLiteral("targetPicker"));
     m_search = new QLineEdit;
@@ -97,7 +97,7 @@ TargetPicker::TargetPicker(const sky::TleSources *sets, QWidget *parent) : QWidg
             toggleFavourite(*target);
     });
     connect(m_list, &QListWidget::customContextMenuRequested, this, &TargetPicker::showMenu);
-    connect(m_sets, &sky::TleSources::setsChanged, this, &TargetPicker::fill);
+    connect(m_sets, &sky::ElementSetSources::setsChanged, this, &TargetPicker::fill);
     fill();
 }
 
@@ -125,7 +125,7 @@ bool TargetPicker::chosenIsMissing() const
 void TargetPicker::fill()
 {
     const QString wanted = m_search->text().trimmed();
-    const QList<sky::Tle> sets = m_sets->sets();
+    const QList<sky::ElementSet> sets = m_sets->sets();
     const std::optional<FavouriteTarget> current = chosen();
     if (m_favourites.renameFrom(sets)) {
         QSettings settings;
@@ -153,14 +153,14 @@ void TargetPicker::fill()
             if (!m_favourites.contains(body) && matches(body, wanted))
                 addItem(body, false, false);
         }
-        QList<const sky::Tle *> shown;
+        QList<const sky::ElementSet *> shown;
         if (wanted.isEmpty()) {
-            for (const sky::Tle &t : sets)
+            for (const sky::ElementSet &t : sets)
                 shown.append(&t);
         } else {
-            shown = sky::findTles(sets, wanted);
+            shown = sky::findSatellites(sets, wanted);
         }
-        for (const sky::Tle *t : shown.mid(0, kMostTargetsListed)) {
+        for (const sky::ElementSet *t : shown.mid(0, kMostTargetsListed)) {
             const FavouriteTarget target = FavouriteTarget::satellite(*t);
             if (!m_favourites.contains(target))
                 addItem(target, false, false);

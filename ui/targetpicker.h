@@ -19,7 +19,7 @@ class QListWidgetItem;
 class QToolButton;
 
 namespace slew::sky {
-class TleSources;
+class ElementSetSources;
 }
 
 namespace slew::ui {
@@ -27,7 +27,7 @@ namespace slew::ui {
 class TargetPicker : public QWidget {
     Q_OBJECT
 public:
-    explicit TargetPicker(const sky::TleSources *sets, QWidget *parent = nullptr);
+    explicit TargetPicker(const sky::ElementSetSources *sets, QWidget *parent = nullptr);
 
     // Searches for `name` and chooses the first target found.
     bool selectTarget(const QString &name);
@@ -51,7 +51,7 @@ private:
     void showFavouriteButton();
     void showMenu(const QPoint &at);
 
-    const sky::TleSources *m_sets;
+    const sky::ElementSetSources *m_sets;
     sky::FavouriteTargets m_favourites;
     QLineEdit *m_search;
     QToolButton *m_favourite;

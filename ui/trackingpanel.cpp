@@ -8,7 +8,7 @@
 #include "session/rotatorsession.h"
 #include "sky/observation.h"
 #include "sky/sunmoon.h"
-#include "sky/tlesources.h"
+#include "sky/elementsetsources.h"
 #include "sky/utctime.h"
 #include "station/station.h"
 #include "tracking/rotatorreach.h"
@@ -111,7 +111,7 @@ TrackingPanel::TrackingPanel(station::Station *station, QWidget *parent)
     connect(m_passes, &QTableWidget::itemSelectionChanged, this, &TrackingPanel::onPassChosen);
     connect(m_track, &QPushButton::clicked, this, &TrackingPanel::startTracking);
     connect(m_stopTracking, &QPushButton::clicked, this, [this] { m_station->untrack(tr("stopped from the Tracking tab")); });
-    connect(m_sets, &sky::TleSources::setsChanged, this, &TrackingPanel::showSetAges);
+    connect(m_sets, &sky::ElementSetSources::setsChanged, this, &TrackingPanel::showSetAges);
     connect(m_session, &session::RotatorSession::profileChanged, this, &TrackingPanel::showPasses);
     connect(m_runner, &tracking::PassRunner::logLine, this, &TrackingPanel::message);
     connect(&m_runner->tracker(), &tracking::Tracker::stateChanged, this, [this] {
@@ -158,7 +158,7 @@ std::optional<TrackTarget> TrackingPanel::chosenTarget() const
     case sky::FavouriteTarget::Kind::Direction: return TrackTarget::parseFixedOrCelestial(chosen->name, nullptr);
     case sky::FavouriteTarget::Kind::Satellite: break;
     }
-    for (const sky::Tle &t : m_sets->sets()) {
+    for (const sky::ElementSet &t : m_sets->sets()) {
         if (t.catalogueNumber == chosen->catalogueNumber) {
             target.elements = t;
             return target;

@@ -29,7 +29,7 @@ namespace slew::session {
 class RotatorSession;
 }
 namespace slew::sky {
-class TleSources;
+class ElementSetSources;
 }
 namespace slew::station {
 class Station;
@@ -86,7 +86,7 @@ private:
 
     station::Station *m_station;
     session::RotatorSession *m_session;
-    sky::TleSources *m_sets;
+    sky::ElementSetSources *m_sets;
     const tracking::StationClock *m_clock;
     tracking::PassRunner *m_runner;
     std::optional<tracking::TargetSky> m_sky; // the chosen target's, while there is a station

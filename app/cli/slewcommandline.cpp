@@ -9,7 +9,7 @@
 #include "sim/simulatortcpserver.h"
 #include "input/boundedfile.h"
 #include "sky/boundeddownload.h"
-#include "sky/tlesources.h"
+#include "sky/elementsetsources.h"
 #include "radio/transponderimport.h"
 #include "radio/transpondersources.h"
 #include "records/passrecordstore.h"
@@ -118,6 +118,17 @@ ProgramOption passKeepDaysOption(bool inConfigFile = false)
             inConfigFile};
 }
 
+ProgramOption tleOption(const QString &purpose)
+{
+    return {{QStringLiteral("tle")},
+            QStringLiteral("file"),
+            purpose + QStringLiteral(" Element sets in any form, told from the content: TLE or three-line sets "
+                                     "(Alpha-5 numbers too), or GP data as CSV, OMM XML, JSON or OMM KVN with "
+                                     "catalogue numbers of up to nine digits. Sets that cannot be read are reported "
+                                     "and skipped. Without it, the cached copies of the window's element-set sources "
+                                     "are used (Sky, Element sets; slew --update-elements).")};
+}
+
 ProgramMode makeWindowMode()
 {
     ProgramMode mode;
@@ -172,7 +183,7 @@ ProgramMode makeHeadlessMode()
     mode.title = QStringLiteral("Station service");
     mode.synopsis = QStringLiteral("slew --headless [--config FILE] [--connect URI] [--dialect NAME] "
                                    "[--profile FILE] [--limits AZMIN:AZMAX,ELMIN:ELMAX] [--rotctld-listen ADDRESS:PORT] "
-                                   "[--rotctld-allow ADDRESSES] [--rotors LIST] [--qth STATION --tle FILE "
+                                   "[--rotctld-allow ADDRESSES] [--rotors LIST] [--qth STATION [--tle FILE] "
                                    "--track CATNR|NAME|sun|moon|azel:AZ,EL|radec:RA,DEC [--track ...] [--horizon FILE] [--min-el DEG] [--guard S] [--clock-start ISO8601] [--clock-rate N] "
                                    "[--radio URI (--downlink FREQ [--uplink FREQ] | --transponders FILE [--transponder NAME])]] "
                                    "[--mqtt mqtts://USER@HOST:8883 --station-name NAME [--mqtt-password-file FILE]]");
@@ -203,7 +214,8 @@ ProgramMode makeHeadlessMode()
         limitsOption(),
         {{QStringLiteral("track")},
          QStringLiteral("target"),
-         QStringLiteral("Track every pass of a satellite (a catalogue number or the start of a name in --tle), the sun "
+         QStringLiteral("Track every pass of a satellite (a catalogue number or the start of a name, of --tle's sets or "
+                        "else the cached ones of the window's sources), the sun "
                         "or the moon until SIGTERM: plan each pass before AOS (never the long way round, the flip or "
                         "the overlap where the travel has them), pre-position, follow, and log the plan, AOS, and at "
                         "LOS the pointing error (RMS and worst). Also azel:AZ,EL (hold a fixed direction) and "
@@ -221,10 +233,12 @@ ProgramMode makeHeadlessMode()
          QStringLiteral("With --track given more than once: the least time between two passes of the schedule, "
                         "besides the rotator's move, 0 to 3600 (default 30)."),
          true},
-        {{QStringLiteral("tle")},
-         QStringLiteral("file"),
-         QStringLiteral("Two- or three-line element sets (CelesTrak's format) for --track."),
-         true},
+        [] {
+            ProgramOption tle = tleOption(QStringLiteral("The satellites of --track, and those a remote track (--mqtt) "
+                                                         "may name."));
+            tle.inConfigFile = true;
+            return tle;
+        }(),
         {{QStringLiteral("min-el")},
          QStringLiteral("degrees"),
          QStringLiteral("With --track: passes must climb above this, -5 to 90 (default 0)."),
@@ -389,27 +403,22 @@ ProgramOption qthOption()
                        "station set in the window (Sky, Station) is used."));
 }
 
-ProgramOption tleOption(const QString &description)
-{
-    return {{QStringLiteral("tle")}, QStringLiteral("file"), description};
-}
 
 ProgramMode makePassesMode()
 {
     ProgramMode mode;
     mode.title = QStringLiteral("Pass prediction");
-    mode.synopsis = QStringLiteral("slew --passes SAT|all|sun|moon --qth STATION --tle FILE [--hours 24] "
+    mode.synopsis = QStringLiteral("slew --passes SAT|all|sun|moon --qth STATION [--tle FILE] [--hours 24] "
                                    "[--min-el 10] [--start ISO8601] [--json]");
     mode.description = QStringLiteral(
         "Prints the passes of a satellite over the station: AOS, the highest point (TCA) and LOS with their "
         "times (UTC) and azimuths, the maximum elevation and whether the satellite is in sunlight. SAT is a "
-        "catalogue number or the start of a name, in any case; \"all\" predicts every satellite in the file, "
+        "catalogue number (Alpha-5 too) or the start of a name, in any case; \"all\" predicts every satellite, "
         "sorted by AOS. For the sun and the moon it prints rise, culmination and set, and needs no --tle.");
     mode.options = {
         {{QStringLiteral("passes")}, QStringLiteral("sat"), QStringLiteral("The satellite, \"all\", \"sun\" or \"moon\".")},
         qthOption(),
-        tleOption(QStringLiteral("Two- or three-line element sets (CelesTrak's format). Sets that cannot be "
-                                 "read are reported and skipped.")),
+        tleOption(QStringLiteral("The satellites.")),
         {{QStringLiteral("hours")}, QStringLiteral("hours"), QStringLiteral("How far ahead to look, 0.1 to 720 (default 24).")},
         {{QStringLiteral("min-el")},
          QStringLiteral("degrees"),
@@ -444,12 +453,12 @@ ProgramMode makeScheduleMode()
         {{QStringLiteral("schedule")}, {}, QStringLiteral("Print a schedule.")},
         {{QStringLiteral("track")},
          QStringLiteral("target"),
-         QStringLiteral("A target: a satellite of --tle (a catalogue number or the start of a name), sun, moon, "
+         QStringLiteral("A target: a satellite (a catalogue number or the start of a name), sun, moon, "
                         "azel:AZ,EL or radec:RA,DEC. Once for each target, the first the highest priority."),
          false,
          true},
         qthOption(),
-        tleOption(QStringLiteral("Two- or three-line element sets for the satellites among the targets.")),
+        tleOption(QStringLiteral("The satellites among the targets.")),
         horizonOption(),
         {{QStringLiteral("start"), QStringLiteral("time")},
          QStringLiteral("time"),
@@ -481,7 +490,7 @@ ProgramMode makeWhereMode()
     mode.options = {
         {{QStringLiteral("where")}, QStringLiteral("sat"), QStringLiteral("The satellite, \"sun\" or \"moon\".")},
         qthOption(),
-        tleOption(QStringLiteral("Two- or three-line element sets; needed for a satellite.")),
+        tleOption(QStringLiteral("The satellites; not read for the sun and the moon.")),
         {{QStringLiteral("time"), QStringLiteral("start")},
          QStringLiteral("time"),
          QStringLiteral("ISO 8601 in UTC (default now); --start is the same, as --passes takes it.")},
@@ -498,9 +507,13 @@ ProgramMode makeUpdateElementsMode()
     mode.synopsis = QStringLiteral("slew --update-elements [URL...]");
     mode.description =
         QStringLiteral(
-            "Refreshes element-set sources (http, https or file URLs) into the cache the window reads, with no "
-            "window, so a station can refresh from a timer. Without a URL it refreshes the sources listed in the "
-            "window (Sky, Element sets). It prints one line per source: the URL, how many sets it holds, and "
+            "Refreshes element-set sources (http, https or file URLs) into the cache the window, --passes, --where, "
+            "--schedule and --track read, with no window, so a station can refresh from a timer. A source may "
+            "answer in any of the five forms (TLE, CSV, OMM XML, JSON, OMM KVN), told from its content: CelesTrak's "
+            "GP queries (gp.php?GROUP=amateur&FORMAT=csv or FORMAT=json, gp.php?CATNR=25544&FORMAT=csv, and the "
+            "supplemental sup-gp.php?FILE=starlink&FORMAT=csv) carry catalogue numbers of up to nine digits, which "
+            "FORMAT=tle cannot. The URLs given are refreshed and join the sources listed in the window (Sky, Element "
+            "sets); without one, those are refreshed. It prints one line per source: the URL, how many sets it holds, and "
             "whether the new copy replaced the cached one or the cached copy was kept, and why. A download is "
             "given up when it is larger than %1, sends no data for %2 or takes longer than %3 in all. A new copy "
             "replaces the cached one only when it reads cleanly (at most one entry in ten refused, not an HTML "
@@ -511,6 +524,31 @@ ProgramMode makeUpdateElementsMode()
         {{QStringLiteral("update-elements")},
          {},
          QStringLiteral("Refresh the element sets from the URLs that follow, or from the window's sources.")},
+    };
+    return mode;
+}
+
+ProgramMode makeExportElementsMode()
+{
+    ProgramMode mode;
+    mode.title = QStringLiteral("Writing element sets for other programs");
+    mode.synopsis = QStringLiteral("slew --export-elements [--format tle|csv|json|xml|kvn] [--tle FILE] [--out FILE] "
+                                   "[SAT...]");
+    mode.description = QStringLiteral(
+        "Writes the element sets Slew holds (--tle's file, else the cached copies of the window's sources), or "
+        "the satellites named, in one form, so a program that reads only TLEs can still be fed from Slew. A TLE "
+        "carries catalogue numbers up to 99999 as digits and up to 339999 in Alpha-5 (A0000 is 100000); a set "
+        "above that, which no TLE can carry, is left out and named on the standard error. The other forms carry "
+        "every set whole: CSV and JSON as CelesTrak writes them, XML and KVN as CCSDS OMMs.");
+    mode.options = {
+        {{QStringLiteral("export-elements")}, {}, QStringLiteral("Write element sets.")},
+        {{QStringLiteral("format")},
+         QStringLiteral("form"),
+         QStringLiteral("tle (the default; three lines a set), csv, json, xml (OMM XML) or kvn (OMM KVN).")},
+        tleOption(QStringLiteral("The element sets to write from.")),
+        {{QStringLiteral("out")},
+         QStringLiteral("file"),
+         QStringLiteral("Write to this file (whole or not at all) rather than the standard output.")},
     };
     return mode;
 }
@@ -640,7 +678,7 @@ const ProgramDescription &slewProgram()
             "against the rotator's limits before a byte is sent.");
         p.modes = {makeWindowMode(), makeHeadlessMode(), makeTuneMode(), makePassesMode(), makeWhereMode(),
                    makeUpdateElementsMode(), makeUpdateTranspondersMode(), makeScheduleMode(),
-                   makePassReportMode(), makeRemoteMode()};
+                   makePassReportMode(), makeRemoteMode(), makeExportElementsMode()};
         p.sections = {
             {QStringLiteral("Links"),
              QStringLiteral("A link is named by a URI, the same on the command line, in the window and in profiles:\n"
@@ -700,7 +738,8 @@ const ProgramDescription &slewProgram()
                             "  slew --passes \"ISS (ZARYA)\" --qth JO65hq --tle amateur.txt --hours 48\n"
                             "  slew --where moon --qth 55.69,12.63,20\n"
                             "  slew --connect sim: --qth JO65hq --clock-start 2026-11-25T12:00:00Z --clock-rate 5\n"
-                            "  slew --update-elements 'https://celestrak.org/NORAD/elements/gp.php?GROUP=amateur&FORMAT=tle'\n"
+                            "  slew --update-elements 'https://celestrak.org/NORAD/elements/gp.php?GROUP=amateur&FORMAT=csv'\n"
+                            "  slew --export-elements --format tle --out ~/.config/Gpredict/amateur.tle\n"
                             "  slew --pass-report 12 --out pass-12.png\n"
                             "  slew --remote 'mqtts://alice@broker.example:8883/mast?cafile=/etc/slew/broker-ca.pem'")},
             {QStringLiteral("See also"), QStringLiteral("slew-sim(1), ") + seeAlso()},
@@ -758,6 +797,11 @@ const ProgramMode &slewPassReportMode()
 const ProgramMode &slewRemoteMode()
 {
     return slewProgram().modes.at(9);
+}
+
+const ProgramMode &slewExportElementsMode()
+{
+    return slewProgram().modes.at(10);
 }
 
 const ProgramDescription &slewSimProgram()

@@ -21,6 +21,7 @@ const ProgramMode &slewUpdateTranspondersMode();
 const ProgramMode &slewScheduleMode();
 const ProgramMode &slewPassReportMode();
 const ProgramMode &slewRemoteMode();
+const ProgramMode &slewExportElementsMode();
 
 // slew-sim: the simulated rotator as a server.
 const ProgramDescription &slewSimProgram();

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "trackoptions.h"
 
-#include "sky/tle.h"
+#include "elementsetoption.h"
+
+#include "sky/elementset.h"
 
 #include <QCommandLineParser>
 
@@ -22,8 +24,8 @@ QString identity(const TrackTarget &t)
 std::optional<QList<TrackTarget>> readTrackTargets(const QCommandLineParser &parser, const OptionLabel &label,
                                                    QString *error)
 {
-    const QString trackOption = QStringLiteral("track"), tleOption = QStringLiteral("tle");
-    std::optional<sky::TleFile> file; // read at the first satellite, once
+    const QString trackOption = QStringLiteral("track");
+    std::optional<ElementSetOption> sets; // read at the first satellite, once
     QList<TrackTarget> targets;
     for (const QString &given : parser.values(trackOption)) {
         const QString what = given.trimmed();
@@ -39,32 +41,27 @@ std::optional<QList<TrackTarget>> readTrackTargets(const QCommandLineParser &par
         } else if (what.compare(QLatin1String("moon"), Qt::CaseInsensitive) == 0) {
             target.kind = TrackTarget::Kind::Moon;
         } else {
-            if (!parser.isSet(tleOption)) {
-                *error = QStringLiteral("%1 %2 needs --tle FILE with its element set")
-                             .arg(label(trackOption), shownValue(what));
-                return std::nullopt;
-            }
-            const QString path = parser.value(tleOption);
-            if (!file) {
-                file = sky::readTleFile(path);
-                if (!file->error.isEmpty()) {
-                    *error = QStringLiteral("%1: %2").arg(label(tleOption), file->error);
+            if (!sets) {
+                QString why;
+                sets = readElementSetOption(parser, label, &why);
+                if (!sets) {
+                    *error = QStringLiteral("%1 %2: %3").arg(label(trackOption), shownValue(what), why);
                     return std::nullopt;
                 }
             }
             QString why;
-            const sky::Tle *tle = sky::findOneTle(file->sets, what, &why);
-            if (!tle) {
+            const sky::ElementSet *found = sky::findOneSatellite(sets->sets, what, &why);
+            if (!found) {
                 // The sets that could not be read may be the one meant: say
                 // why they were skipped, as --passes does.
-                *error = QStringLiteral("%1: %2 in %3").arg(label(trackOption), why, path);
-                for (const sky::TleRefusal &r : file->refusals.mid(0, 5))
-                    *error += QStringLiteral("\n  %1:%2: skipped: %3").arg(path).arg(r.line).arg(r.reason);
-                if (file->refusals.size() > 5)
-                    *error += QStringLiteral("\n  … and %1 more sets skipped").arg(file->refusals.size() - 5);
+                *error = QStringLiteral("%1: %2 in %3").arg(label(trackOption), why, sets->origin);
+                for (const QString &skipped : sets->skipped.mid(0, 5))
+                    *error += QStringLiteral("\n  ") + skipped;
+                if (sets->skipped.size() > 5)
+                    *error += QStringLiteral("\n  … and %1 more sets skipped").arg(sets->skipped.size() - 5);
                 return std::nullopt;
             }
-            target.elements = *tle;
+            target.elements = *found;
         }
         for (const TrackTarget &earlier : std::as_const(targets)) {
             if (earlier.kind == target.kind && identity(earlier) == identity(target)) {

@@ -3,10 +3,50 @@
 
 #include "logtext.h"
 
+#include <charconv>
 #include <cmath>
 
 namespace slew::input {
 namespace {
+
+enum class Parsed { Number, NotANumber, NotFinite };
+
+// A decimal number, as QString::toDouble() reads it in the C locale, but
+// without its conversion to a temporary byte string: element-set files
+// hold a couple of hundred thousand numbers, and that allocation was most
+// of their reading time. std::from_chars is exact (the nearest double), as
+// Qt's reader is. Text it cannot take whole (too long, or out of range)
+// goes to Qt's reader, so the two never disagree.
+Parsed parseDecimal(QStringView text, double *out)
+{
+    QStringView t = text.trimmed();
+    if (t.startsWith(u'+') && !t.startsWith(QLatin1StringView("+-")) && !t.startsWith(QLatin1StringView("++")))
+        t = t.mid(1);
+    char buffer[64];
+    const qsizetype size = t.size();
+    bool ascii = size > 0 && size < qsizetype(sizeof buffer);
+    for (qsizetype i = 0; ascii && i < size; ++i) {
+        const char16_t c = t[i].unicode();
+        ascii = c > 0x20 && c < 0x7f;
+        buffer[i] = char(c);
+    }
+    if (ascii) {
+        double value = 0;
+        const auto [end, error] = std::from_chars(buffer, buffer + size, value);
+        if (error == std::errc() && end == buffer + size) {
+            *out = value;
+            return std::isfinite(value) ? Parsed::Number : Parsed::NotFinite;
+        }
+        if (error != std::errc::result_out_of_range)
+            return Parsed::NotANumber;
+    }
+    bool ok = false;
+    const double value = text.trimmed().toDouble(&ok);
+    *out = value;
+    if (!ok)
+        return std::isinf(value) ? Parsed::NotFinite : Parsed::NotANumber;
+    return std::isfinite(value) ? Parsed::Number : Parsed::NotFinite;
+}
 
 // What a refusal quotes of the text: short, and safe for a terminal.
 QString quoted(QStringView text)
@@ -33,18 +73,31 @@ QString NumberRange::text() const
 
 std::optional<double> finiteNumber(QStringView text)
 {
-    bool ok = false;
-    const double value = text.trimmed().toDouble(&ok);
-    if (!ok || !std::isfinite(value))
+    double value = 0;
+    if (parseDecimal(text, &value) != Parsed::Number)
         return std::nullopt;
     return value;
 }
 
 std::optional<int> wholeNumber(QStringView text)
 {
-    bool ok = false;
-    const int value = text.trimmed().toInt(&ok);
-    if (!ok)
+    // Digits with an optional sign, as QString::toInt() takes them, read
+    // without a temporary string.
+    QStringView t = text.trimmed();
+    if (t.startsWith(u'+'))
+        t = t.mid(1);
+    char buffer[16];
+    if (t.isEmpty() || t.size() >= qsizetype(sizeof buffer))
+        return std::nullopt;
+    for (qsizetype i = 0; i < t.size(); ++i) {
+        const char16_t c = t[i].unicode();
+        if (!((c >= u'0' && c <= u'9') || (i == 0 && c == u'-')))
+            return std::nullopt;
+        buffer[i] = char(c);
+    }
+    int value = 0;
+    const auto [end, error] = std::from_chars(buffer, buffer + t.size(), value);
+    if (error != std::errc() || end != buffer + t.size())
         return std::nullopt;
     return value;
 }
@@ -66,14 +119,14 @@ bool checkNumber(double value, const NumberRange &range, QString *why)
 
 std::optional<double> numberIn(QStringView text, const NumberRange &range, QString *why)
 {
-    bool ok = false;
-    const double value = text.trimmed().toDouble(&ok);
-    if (!ok) {
+    double value = 0;
+    const Parsed parsed = parseDecimal(text, &value);
+    if (parsed == Parsed::NotANumber) {
         if (why)
             *why = QStringLiteral("%1 is not a number").arg(quoted(text.trimmed()));
         return std::nullopt;
     }
-    if (!std::isfinite(value)) {
+    if (parsed == Parsed::NotFinite) {
         if (why)
             *why = QStringLiteral("%1 is not a finite number").arg(quoted(text.trimmed()));
         return std::nullopt;

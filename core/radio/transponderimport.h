@@ -42,7 +42,7 @@
 namespace slew::radio {
 
 // The largest files read: SatNOGS DB's whole transmitter list is a few
-// MiB, so the element-set files' cap (16 MiB) leaves it room to grow; a
+// MiB, so a cap of 16 MiB leaves it room to grow; a
 // .trsp file holds a handful of groups (Gpredict's own are under 2 KiB).
 inline constexpr qint64 kLargestTransmitterList = 16 * 1024 * 1024;
 inline constexpr qint64 kLargestTrspFile = 1024 * 1024;

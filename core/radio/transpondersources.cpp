@@ -5,7 +5,7 @@
 
 #include "input/atomicfile.h"
 #include "input/boundedfile.h"
-#include "sky/tlesources.h"
+#include "sky/elementsetsources.h"
 
 #include <QCryptographicHash>
 #include <QDir>

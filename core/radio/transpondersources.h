@@ -5,7 +5,7 @@
 // (https://, or file:// for a local file) and kept in a disk cache beside
 // the element sets, so the radio works offline from the last good copy.
 //
-// The same rules as the element sets' sources (sky/tlesources.h), with the
+// The same rules as the element sets' sources (sky/elementsetsources.h), with the
 // same download code (sky/boundeddownload.h): a download is bounded in
 // size (the transmitter list's cap, transponderimport.h) and in time;
 // files are read with the bounded reader; reading, parsing and writing the

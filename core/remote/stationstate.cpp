@@ -69,6 +69,8 @@ QByteArray encodeStationState(const StationState &s)
     o.insert(QStringLiteral("tracking"), s.tracking);
     if (!s.trackingTarget.isEmpty())
         o.insert(QStringLiteral("tracking_target"), s.trackingTarget);
+    if (s.trackingNorad)
+        o.insert(QStringLiteral("tracking_norad"), *s.trackingNorad);
     if (s.passAosMs)
         o.insert(QStringLiteral("pass_aos_ms"), double(*s.passAosMs));
     if (s.passLosMs)
@@ -115,6 +117,8 @@ std::optional<StationState> parseStationState(const QByteArray &payload, QString
     if (f.ok() && !isTrackingStateName(s.tracking))
         f.fail(QStringLiteral("'tracking' is not off, planning, waiting, tracking or done"));
     s.trackingTarget = f.text(QStringLiteral("tracking_target"), 100).value_or(QString());
+    if (const auto norad = f.whole(QStringLiteral("tracking_norad"), 1, 999999999))
+        s.trackingNorad = int(*norad);
     s.passAosMs = f.whole(QStringLiteral("pass_aos_ms"), 0, kLatestMs);
     s.passLosMs = f.whole(QStringLiteral("pass_los_ms"), 0, kLatestMs);
     s.passMaxElevation = f.number(QStringLiteral("pass_max_el"), {-90, 90, "°"});

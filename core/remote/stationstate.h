@@ -8,7 +8,7 @@
 //    "az":120.0, "el":30.0, "stale":false, "target_az":…, "target_el":…,
 //    "moving":true, "az_min":0, "az_max":450, "el_min":0, "el_max":180,
 //    "park_az":…, "park_el":…, "azimuth_only":false,
-//    "tracking":"tracking", "tracking_target":"ISS (ZARYA)",
+//    "tracking":"tracking", "tracking_target":"ISS (ZARYA)", "tracking_norad":25544,
 //    "pass_aos_ms":…, "pass_los_ms":…, "pass_max_el":56.1,
 //    "alarms":["…"], "severe":false, "operator_hold":false,
 //    "controller":"…", "slew":"0.1.0"}
@@ -41,6 +41,7 @@ struct StationState {
     // off, planning, waiting, tracking, done.
     QString tracking = QStringLiteral("off");
     QString trackingTarget;
+    std::optional<int> trackingNorad; // a satellite's catalogue number, up to nine digits
     std::optional<qint64> passAosMs, passLosMs;
     std::optional<double> passMaxElevation;
     QStringList alarms;

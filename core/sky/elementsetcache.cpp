@@ -15,13 +15,25 @@ namespace {
 struct CachedCopy {
     bool present = false; // a file is there, readable or not
     QString error;        // why a file that is there cannot be used
-    TleReadResult read;
+    ElementSetRead read;
+    ElementSetForm form = ElementSetForm::Tle;
     QDateTime savedAt;
 };
 
-CachedCopy readCachedCopy(const QString &cacheFile)
+// Slew 0.1 named its cached copies .tle, when they could hold nothing else:
+// such a copy is still read until the next refresh writes the new name.
+QString existingCopy(const QString &cacheFile)
+{
+    if (QFileInfo::exists(cacheFile) || !cacheFile.endsWith(QLatin1String(".elements")))
+        return cacheFile;
+    const QString older = cacheFile.chopped(9) + QStringLiteral(".tle");
+    return QFileInfo::exists(older) ? older : cacheFile;
+}
+
+CachedCopy readCachedCopy(const QString &cacheFileName)
 {
     CachedCopy copy;
+    const QString cacheFile = existingCopy(cacheFileName);
     const QFileInfo info(cacheFile);
     if (!info.exists())
         return copy;
@@ -34,7 +46,9 @@ CachedCopy readCachedCopy(const QString &cacheFile)
         copy.error = QStringLiteral("the cached copy cannot be used: %1").arg(bytes.error);
         return copy;
     }
-    copy.read = readTleText(QString::fromUtf8(bytes.bytes));
+    const ElementSetText text = readElementSets(bytes.bytes);
+    copy.read = text.read;
+    copy.form = text.form;
     copy.savedAt = info.lastModified().toUTC();
     return copy;
 }
@@ -42,7 +56,7 @@ CachedCopy readCachedCopy(const QString &cacheFile)
 SourceUpdate fromCache(const QUrl &url, const CachedCopy &copy, const QString &why)
 {
     SourceUpdate update;
-    TleSourceStatus &s = update.status;
+    ElementSetSourceStatus &s = update.status;
     s.url = url;
     QStringList errors;
     if (!why.isEmpty())
@@ -56,6 +70,7 @@ SourceUpdate fromCache(const QUrl &url, const CachedCopy &copy, const QString &w
     s.fromCache = true;
     s.cachedAt = copy.savedAt;
     s.refusals = copy.read.refusals;
+    s.form = copy.form;
     s.setCount = int(copy.read.sets.size());
     return update;
 }
@@ -82,16 +97,18 @@ SourceUpdate keepCachedCopy(const QUrl &url, const QString &cacheFile, const QSt
 SourceUpdate takeNewCopy(const QUrl &url, const QString &cacheFile, const QByteArray &text)
 {
     const CachedCopy old = readCachedCopy(cacheFile);
-    const TleReadResult fresh = readTleText(QString::fromUtf8(text));
+    const ElementSetText freshText = readElementSets(text);
+    const ElementSetRead &fresh = freshText.read;
     const QString refused = whyNotReplace(text, fresh, old.read.sets);
     if (!refused.isEmpty())
         return fromCache(url, old, refused);
     SourceUpdate update;
-    TleSourceStatus &s = update.status;
+    ElementSetSourceStatus &s = update.status;
     s.url = url;
     s.fetched = true;
     s.cachedAt = QDateTime::currentDateTimeUtc();
     s.refusals = fresh.refusals;
+    s.form = freshText.form;
     s.setCount = int(fresh.sets.size());
     s.error = save(cacheFile, text);
     update.sets = fresh.sets;

@@ -1,18 +1,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The steps of loading and refreshing one element-set source that touch
-// files or parse text: each runs on a worker thread (TleSources hands them
+// files or parse text: each runs on a worker thread (ElementSetSources hands them
 // to QtConcurrent) and returns what the source holds afterwards. None of
 // them blocks on a path: files are read with readBoundedFile, which refuses
 // devices and FIFOs and stops at the cap.
 
-#include "tlesources.h"
+#include "elementsetsources.h"
 
 namespace slew::sky {
 
 struct SourceUpdate {
-    TleSourceStatus status;
-    QList<Tle> sets;
+    ElementSetSourceStatus status;
+    QList<ElementSet> sets;
 };
 
 // The cached copy alone, with no network: what Slew starts with.

@@ -6,7 +6,7 @@
 // taking it would throw away a good copy. So a new copy must read cleanly
 // and keep most of the satellites the old copy had.
 
-#include "tle.h"
+#include "elementset.h"
 
 #include <QByteArray>
 #include <QList>
@@ -22,6 +22,6 @@ inline constexpr double kMinShareOfOldSatellitesKept = 0.5;
 
 // Why `fresh` (read from `text`) must not replace `previous`, or empty when
 // it may. `previous` is empty when there is no old copy.
-QString whyNotReplace(const QByteArray &text, const TleReadResult &fresh, const QList<Tle> &previous);
+QString whyNotReplace(const QByteArray &text, const ElementSetRead &fresh, const QList<ElementSet> &previous);
 
 } // namespace slew::sky

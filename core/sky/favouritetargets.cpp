@@ -41,10 +41,10 @@ QString format(const FavouriteTarget &t)
     return QStringLiteral("%1 %2").arg(t.catalogueNumber).arg(t.name);
 }
 
-QHash<int, const Tle *> byNumber(const QList<Tle> &sets)
+QHash<int, const ElementSet *> byNumber(const QList<ElementSet> &sets)
 {
-    QHash<int, const Tle *> index;
-    for (const Tle &t : sets)
+    QHash<int, const ElementSet *> index;
+    for (const ElementSet &t : sets)
         index.insert(t.catalogueNumber, &t);
     return index;
 }
@@ -87,9 +87,9 @@ bool FavouriteTargets::toggle(const FavouriteTarget &target)
     return true;
 }
 
-QList<FavouriteTarget> FavouriteTargets::missingFrom(const QList<Tle> &sets) const
+QList<FavouriteTarget> FavouriteTargets::missingFrom(const QList<ElementSet> &sets) const
 {
-    const QHash<int, const Tle *> index = byNumber(sets);
+    const QHash<int, const ElementSet *> index = byNumber(sets);
     QList<FavouriteTarget> missing;
     for (const FavouriteTarget &t : m_targets) {
         if (t.kind == FavouriteTarget::Kind::Satellite && !index.contains(t.catalogueNumber))
@@ -98,12 +98,12 @@ QList<FavouriteTarget> FavouriteTargets::missingFrom(const QList<Tle> &sets) con
     return missing;
 }
 
-bool FavouriteTargets::renameFrom(const QList<Tle> &sets)
+bool FavouriteTargets::renameFrom(const QList<ElementSet> &sets)
 {
-    const QHash<int, const Tle *> index = byNumber(sets);
+    const QHash<int, const ElementSet *> index = byNumber(sets);
     bool changed = false;
     for (FavouriteTarget &t : m_targets) {
-        const Tle *found = t.kind == FavouriteTarget::Kind::Satellite ? index.value(t.catalogueNumber) : nullptr;
+        const ElementSet *found = t.kind == FavouriteTarget::Kind::Satellite ? index.value(t.catalogueNumber) : nullptr;
         if (found && found->displayName() != t.name) {
             t.name = found->displayName();
             changed = true;

@@ -9,7 +9,7 @@
 //
 // In the settings: one string a favourite, "sun", "moon" or "NUMBER NAME".
 
-#include "tle.h"
+#include "elementset.h"
 
 #include <QList>
 #include <QString>
@@ -28,7 +28,7 @@ struct FavouriteTarget {
 
     static FavouriteTarget sun() { return {Kind::Sun, 0, {}}; }
     static FavouriteTarget moon() { return {Kind::Moon, 0, {}}; }
-    static FavouriteTarget satellite(const Tle &elements)
+    static FavouriteTarget satellite(const ElementSet &elements)
     {
         return {Kind::Satellite, elements.catalogueNumber, elements.displayName()};
     }
@@ -53,10 +53,10 @@ public:
     // Marks or unmarks it; true when it is a favourite afterwards.
     bool toggle(const FavouriteTarget &target);
     // Satellites that no set in `sets` holds, in the order they were marked.
-    QList<FavouriteTarget> missingFrom(const QList<Tle> &sets) const;
+    QList<FavouriteTarget> missingFrom(const QList<ElementSet> &sets) const;
     // Takes the names the sets give now (a launch's "OBJECT A" gets its
     // real name later); true when one changed.
-    bool renameFrom(const QList<Tle> &sets);
+    bool renameFrom(const QList<ElementSet> &sets);
 
 private:
     QList<FavouriteTarget> m_targets;

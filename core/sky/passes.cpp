@@ -264,7 +264,7 @@ QList<Pass> predictPasses(const Sgp4 &satellite, const Station &station, const P
 {
     if (satellite.initialError() != Sgp4Error::None)
         return {};
-    const Tle &tle = satellite.elements();
+    const ElementSet &tle = satellite.elements();
 
     // Geometry that bounds how soon the satellite can rise or set. Seen
     // from the earth's centre, a satellite at radius r is above elevation E
@@ -337,10 +337,10 @@ QList<Pass> predictPasses(const Sgp4 &satellite, const Station &station, const P
     return passes;
 }
 
-QList<Pass> predictPasses(const QList<Tle> &satellites, const Station &station, const PassWindow &window)
+QList<Pass> predictPasses(const QList<ElementSet> &satellites, const Station &station, const PassWindow &window)
 {
     QList<Pass> all;
-    for (const Tle &tle : satellites)
+    for (const ElementSet &tle : satellites)
         all += predictPasses(Sgp4(tle), station, window);
     std::stable_sort(all.begin(), all.end(), [](const Pass &a, const Pass &b) { return a.aos.julian < b.aos.julian; });
     return all;

@@ -19,7 +19,7 @@
 #include "sgp4propagator.h"
 #include "station.h"
 #include "sunmoon.h"
-#include "tle.h"
+#include "elementset.h"
 
 #include <QList>
 #include <QString>
@@ -60,7 +60,7 @@ struct PassWindow {
 QList<Pass> predictPasses(const Sgp4 &satellite, const Station &station, const PassWindow &window);
 
 // Every satellite, all passes sorted by AOS.
-QList<Pass> predictPasses(const QList<Tle> &satellites, const Station &station, const PassWindow &window);
+QList<Pass> predictPasses(const QList<ElementSet> &satellites, const Station &station, const PassWindow &window);
 
 // Rise, culmination and set of the sun or the moon above the window's
 // minimum elevation. The almanac's sunrise and sunset put the centre at

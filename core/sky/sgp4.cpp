@@ -242,20 +242,20 @@ QString sgp4ErrorText(Sgp4Error error)
     return QStringLiteral("unknown error");
 }
 
-Sgp4::Sgp4(const Tle &tle)
-    : m_tle(tle)
+Sgp4::Sgp4(const ElementSet &elements)
+    : m_elements(elements)
 {
-    m_epochJd = tle.epochJulianDay();
-    m_epochFraction = tle.epochDayFraction();
-    m_bstar = tle.bstar;
+    m_epochJd = elements.epochJulianDay;
+    m_epochFraction = elements.epochDayFraction;
+    m_bstar = elements.bstar;
 
     const double revPerDayToRadPerMin = kTwoPi / kMinutesPerDay;
-    m_epoch.eccentricity = tle.eccentricity;
-    m_epoch.inclination = radians(tle.inclinationDeg);
-    m_epoch.node = radians(tle.raanDeg);
-    m_epoch.argPerigee = radians(tle.argPerigeeDeg);
-    m_epoch.meanAnomaly = radians(tle.meanAnomalyDeg);
-    const double kozaiMeanMotion = tle.meanMotionRevPerDay * revPerDayToRadPerMin;
+    m_epoch.eccentricity = elements.eccentricity;
+    m_epoch.inclination = radians(elements.inclinationDeg);
+    m_epoch.node = radians(elements.raanDeg);
+    m_epoch.argPerigee = radians(elements.argPerigeeDeg);
+    m_epoch.meanAnomaly = radians(elements.meanAnomalyDeg);
+    const double kozaiMeanMotion = elements.meanMotionRevPerDay * revPerDayToRadPerMin;
 
     // The element sets carry Kozai's mean motion; the theory needs Brouwer's.
     const double ecc = m_epoch.eccentricity;

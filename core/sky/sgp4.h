@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// SGP4/SDP4: NORAD's analytic propagator for two-line element sets, as
+// SGP4/SDP4: NORAD's analytic propagator for its general-perturbations element sets, as
 // published in Hoots & Roehrich, "Spacetrack Report #3" (1980), with the
 // corrections of Vallado, Crawford, Hujsak & Kelso, "Revisiting Spacetrack
 // Report #3" (AIAA 2006-6753): WGS-72 constants, the "improved" operation
@@ -18,7 +18,7 @@
 // resonance integration from one call to the next, with the same results.
 
 #include "skyvector.h"
-#include "tle.h"
+#include "elementset.h"
 
 namespace slew::sky {
 
@@ -50,7 +50,7 @@ struct Sgp4State {
 
 class Sgp4 {
 public:
-    explicit Sgp4(const Tle &elements);
+    explicit Sgp4(const ElementSet &elements);
 
     // State at a number of minutes after the element set's epoch (negative
     // is before it).
@@ -61,7 +61,7 @@ public:
     double epochJulian() const { return m_epochJd + m_epochFraction; }
     double minutesSinceEpoch(double julianDate) const;
     bool isDeepSpace() const { return m_deepSpace; }
-    const Tle &elements() const { return m_tle; }
+    const ElementSet &elements() const { return m_elements; }
     // Error already present at epoch (an impossible set): nothing to propagate.
     Sgp4Error initialError() const { return m_initialError; }
 
@@ -108,7 +108,7 @@ private:
     void integrateResonance(double t, ResonancePoint &carried, MeanElements &e, double &meanMotion) const;
     Sgp4State positionAndVelocity(const MeanElements &m, double semiMajorAxis, double meanMotion) const;
 
-    Tle m_tle;
+    ElementSet m_elements;
     double m_epochJd = 0;
     double m_epochFraction = 0;
     bool m_deepSpace = false;

@@ -5,7 +5,7 @@
 #include "station.h"
 
 #include "session/rotatorsession.h"
-#include "sky/tlesources.h"
+#include "sky/elementsetsources.h"
 #include "tracking/passrunner.h"
 #include "tracking/tracktarget.h"
 
@@ -25,7 +25,7 @@ qint64 nowMs()
 
 } // namespace
 
-RemoteCommands::RemoteCommands(Station *station, const QList<sky::Tle> &elementSets, QObject *parent)
+RemoteCommands::RemoteCommands(Station *station, const QList<sky::ElementSet> &elementSets, QObject *parent)
     : QObject(parent), m_station(station), m_elementSets(elementSets), m_jog(new RemoteJog(station->session(), this))
 {
     m_floodEnd.setSingleShot(true);
@@ -175,16 +175,16 @@ CommandResult RemoteCommands::track(const RemoteCommand &c)
         target.kind = tracking::TrackTarget::Kind::Moon;
     } else {
         // The sets the service was given first, then the cache's.
-        QList<sky::Tle> sets = m_elementSets;
-        for (const sky::Tle &tle : m_station->elementSets()->sets()) {
+        QList<sky::ElementSet> sets = m_elementSets;
+        for (const sky::ElementSet &tle : m_station->elementSets()->sets()) {
             bool known = false;
-            for (const sky::Tle &given : std::as_const(m_elementSets))
+            for (const sky::ElementSet &given : std::as_const(m_elementSets))
                 known = known || given.catalogueNumber == tle.catalogueNumber;
             if (!known)
                 sets.append(tle);
         }
         QString why;
-        const sky::Tle *tle = sky::findOneTle(sets, c.target, &why);
+        const sky::ElementSet *tle = sky::findOneSatellite(sets, c.target, &why);
         if (!tle)
             return CommandResult{tr("%1 among the station's element sets").arg(why)};
         target.elements = *tle;

@@ -18,7 +18,7 @@
 
 #include "remote/remotecommand.h"
 #include "session/sessiontypes.h"
-#include "sky/tle.h"
+#include "sky/elementsetformat.h"
 #include "input/logtext.h"
 
 #include <QObject>
@@ -39,7 +39,7 @@ public:
 
     // `elementSets`: the satellites a `track` may name besides those in the
     // station's element-set cache (the service's --tle).
-    RemoteCommands(Station *station, const QList<sky::Tle> &elementSets, QObject *parent = nullptr);
+    RemoteCommands(Station *station, const QList<sky::ElementSet> &elementSets, QObject *parent = nullptr);
     ~RemoteCommands() override;
 
     // Obeys one message from the command topic; the reply to publish when
@@ -64,7 +64,7 @@ private:
     void endFlood();
 
     Station *m_station;
-    QList<sky::Tle> m_elementSets;
+    QList<sky::ElementSet> m_elementSets;
     RemoteJog *m_jog;
     input::LogAllowance m_allowance{kBurst, kPerSecond}; // commands, not lines
     input::LogAllowance m_logAllowance;                  // what is logged of them

@@ -8,7 +8,7 @@
 
 #include "remote/mqttclient.h"
 #include "remote/stationtopics.h"
-#include "sky/tlesources.h"
+#include "sky/elementsetsources.h"
 
 #include <QUuid>
 
@@ -71,7 +71,7 @@ RemoteOperation::~RemoteOperation() = default;
 bool RemoteOperation::start(QString *error)
 {
     // A remote `track` may name any satellite the station has cached.
-    sky::TleSources *sets = m_station->elementSets();
+    sky::ElementSetSources *sets = m_station->elementSets();
     if (sets->sets().isEmpty()) {
         sets->setUrls(sky::savedElementSetUrls());
         sets->loadFromCache();

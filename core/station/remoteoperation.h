@@ -13,7 +13,7 @@
 // waited on it.
 
 #include "remote/brokeraddress.h"
-#include "sky/tle.h"
+#include "sky/elementsetformat.h"
 
 #include <QObject>
 
@@ -37,7 +37,7 @@ struct RemoteOptions {
     QString stationName;
     // Satellites a remote `track` may name besides the element-set cache's
     // (the service's --tle).
-    QList<sky::Tle> elementSets;
+    QList<sky::ElementSet> elementSets;
 };
 
 class RemoteOperation : public QObject {

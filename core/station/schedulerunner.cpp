@@ -139,13 +139,13 @@ std::optional<tracking::TrackTarget> ScheduleRunner::targetNamed(const QString &
     return std::nullopt;
 }
 
-void ScheduleRunner::updateElements(const QList<sky::Tle> &sets)
+void ScheduleRunner::updateElements(const QList<sky::ElementSet> &sets)
 {
     bool changed = false;
     for (tracking::TrackTarget &t : m_targets) {
         if (t.kind != tracking::TrackTarget::Kind::Satellite)
             continue;
-        for (const sky::Tle &set : sets) {
+        for (const sky::ElementSet &set : sets) {
             if (set.catalogueNumber == t.elements.catalogueNumber && set.epochJulian() > t.elements.epochJulian()) {
                 t.elements = set;
                 changed = true;

@@ -25,7 +25,7 @@
 #include "tracking/tracktarget.h"
 
 #include "sky/station.h"
-#include "sky/tle.h"
+#include "sky/elementsetformat.h"
 
 #include <QObject>
 #include <QSet>
@@ -71,7 +71,7 @@ public:
     std::optional<tracking::TrackTarget> targetNamed(const QString &name) const;
     // Refreshed element sets: each satellite target takes its newest set
     // (by catalogue number), and the schedule is planned again.
-    void updateElements(const QList<sky::Tle> &sets);
+    void updateElements(const QList<sky::ElementSet> &sets);
 
     const schedule::Schedule &schedule() const { return m_schedule; }
     bool isPlanning() const { return m_planning; }

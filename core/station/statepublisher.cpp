@@ -202,6 +202,8 @@ remote::StationState StatePublisher::state() const
             out.tracking = QStringLiteral("planning");
         }
         out.trackingTarget = runner->target().name().left(100);
+        if (runner->target().kind == tracking::TrackTarget::Kind::Satellite && runner->target().elements.catalogueNumber > 0)
+            out.trackingNorad = runner->target().elements.catalogueNumber;
         if (const auto &pass = runner->pass()) {
             out.passAosMs = julianToUnixMs(pass->aos.julian);
             out.passLosMs = julianToUnixMs(pass->los.julian);

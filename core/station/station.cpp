@@ -14,7 +14,7 @@
 #include "session/movewatch.h"
 #include "session/rotatorsession.h"
 #include "session/stopbeforeexit.h"
-#include "sky/tlesources.h"
+#include "sky/elementsetsources.h"
 #include "tracking/passrunner.h"
 #include "tracking/simulatorpace.h"
 #include "tracking/stationclock.h"
@@ -58,7 +58,7 @@ Station::Station(const StationOptions &options, QObject *parent) : QObject(paren
             addRotor(n, options);
     }
     // Offline first: nothing is read or fetched until a face asks.
-    m_elementSets = std::make_unique<sky::TleSources>(sky::elementSetCacheDirectory());
+    m_elementSets = std::make_unique<sky::ElementSetSources>(sky::elementSetCacheDirectory());
     m_transponders = std::make_unique<radio::TransponderSources>(radio::transponderCacheDirectory());
     m_clock = std::make_unique<tracking::StationClock>();
     m_records = std::make_unique<records::PassRecordStore>();
@@ -75,7 +75,7 @@ Station::Station(const StationOptions &options, QObject *parent) : QObject(paren
     m_radio = std::make_unique<DopplerRadio>(first, m_runner.get(), m_clock.get());
     m_schedule = std::make_unique<ScheduleRunner>(first, m_runner.get(), m_clock.get());
     // New elements make a new plan (the schedule takes each target's newest).
-    connect(m_elementSets.get(), &sky::TleSources::setsChanged, m_schedule.get(),
+    connect(m_elementSets.get(), &sky::ElementSetSources::setsChanged, m_schedule.get(),
             [this] { m_schedule->updateElements(m_elementSets->sets()); });
     m_recorder = std::make_unique<PassRecorder>(first, m_runner.get(), m_radio.get(), m_clock.get());
     m_recorder->setStore(m_records.get());

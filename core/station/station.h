@@ -53,7 +53,7 @@ namespace slew::bridge {
 class RotctldServer;
 }
 namespace slew::sky {
-class TleSources;
+class ElementSetSources;
 }
 namespace slew::radio {
 class TransponderSources;
@@ -120,7 +120,7 @@ public:
     session::ControllerRotors *controllerRotors() const { return m_controllerRotors.get(); }
     // Where the first rotor's moves went: arrived, stopped short, replaced.
     session::MoveWatch *moveWatch() const { return m_moveWatch.get(); }
-    sky::TleSources *elementSets() const { return m_elementSets.get(); }
+    sky::ElementSetSources *elementSets() const { return m_elementSets.get(); }
     // The satellites' transponders, cached beside the element sets; like
     // them, nothing is read or fetched until a face asks.
     radio::TransponderSources *transponders() const { return m_transponders.get(); }
@@ -223,7 +223,7 @@ private:
     std::vector<Rotor> m_rotors;
     std::unique_ptr<session::ControllerRotors> m_controllerRotors;
     std::unique_ptr<session::MoveWatch> m_moveWatch;
-    std::unique_ptr<sky::TleSources> m_elementSets;
+    std::unique_ptr<sky::ElementSetSources> m_elementSets;
     std::unique_ptr<radio::TransponderSources> m_transponders;
     std::unique_ptr<tracking::StationClock> m_clock;
     std::unique_ptr<tracking::SimulatorPace> m_pace;

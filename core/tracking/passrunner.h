@@ -16,7 +16,7 @@
 #include "sky/sgp4.h"
 #include "sky/station.h"
 #include "sky/sunmoon.h"
-#include "sky/tle.h"
+#include "sky/elementsetformat.h"
 
 #include <QObject>
 #include <QTimer>

@@ -15,7 +15,7 @@
 #include "sky/passes.h"
 #include "sky/sgp4.h"
 #include "sky/station.h"
-#include "sky/tle.h"
+#include "sky/elementsetformat.h"
 
 #include <QList>
 #include <QString>
@@ -28,7 +28,7 @@ namespace slew::tracking {
 struct TrackTarget {
     enum class Kind { Satellite, Sun, Moon, Fixed, Celestial };
     Kind kind = Kind::Satellite;
-    sky::Tle elements;                 // Satellite
+    sky::ElementSet elements;                 // Satellite
     double azimuthDeg = 0;             // Fixed
     double elevationDeg = 0;
     double rightAscensionDeg = 0;      // Celestial, J2000

@@ -119,7 +119,7 @@ void CommandLineTest::configFileRefusesWhatItCannotMean()
 void CommandLineTest::configFileTextIsEscapedInMessages()
 {
     // ESC and BEL from a file must not reach a terminal or the journal raw.
-    for (const char *text : {"\x1b[2J\x07bad = 1", "connect sim:\x1b]0;owned\x07"}) {
+    for (const char *text : {"\x1b[2J\x07" "bad = 1", "connect sim:\x1b]0;owned\x07"}) {
         QString error;
         QVERIFY(!parseConfigText(QString::fromLatin1(text), QStringLiteral("t.conf"), slewHeadlessMode(), &error));
         QVERIFY2(!error.contains(QChar(0x1b)) && !error.contains(QChar(0x07)), qPrintable(error));

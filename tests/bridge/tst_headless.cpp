@@ -556,7 +556,7 @@ void HeadlessTest::refusesABadTrack()
     const QString tle = QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle");
     const QList<QPair<QStringList, QByteArray>> cases{
         {{"--track", "FLOCK 2P-1", "--tle", tle}, "--track needs --qth"},
-        {{"--track", "FLOCK 2P-1", "--qth", "JO65hq"}, "needs --tle"},
+        {{"--track", "FLOCK 2P-1", "--qth", "JO65hq"}, "no element sets: give --tle FILE"},
         {{"--track", "NO SUCH BIRD", "--qth", "JO65hq", "--tle", tle}, "no satellite 'NO SUCH BIRD' in"},
         {{"--track", "sun", "--qth", "JO65hq", "--clock-rate", "5"}, "--clock-rate"},
         {{"--track", "sun", "--qth", "JO65hq", "--clock-start", "yesterday"}, "--clock-start"},

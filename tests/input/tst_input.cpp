@@ -41,6 +41,18 @@ private slots:
         QTest::newRow("empty") << "" << false << 0.0;
         QTest::newRow("trailing letters") << "12abc" << false << 0.0;
         QTest::newRow("two numbers") << "1 2" << false << 0.0;
+        // As element sets write them: no leading zero, a capital E, a plus.
+        QTest::newRow("no leading zero") << ".0004569" << true << 0.0004569;
+        QTest::newRow("negative, no leading zero") << "-.11606E-4" << true << -0.11606e-4;
+        QTest::newRow("plus") << "+1.5" << true << 1.5;
+        QTest::newRow("two signs") << "+-1.5" << false << 0.0;
+        QTest::newRow("point last") << "5." << true << 5.0;
+        QTest::newRow("point alone") << "." << false << 0.0;
+        QTest::newRow("underflow, refused as Qt refuses it") << "1e-400" << false << 0.0;
+        QTest::newRow("hex") << "0x10" << false << 0.0;
+        QTest::newRow("longer than the fast path") << QString(100, u'0') + QStringLiteral("1.5") << true << 1.5;
+        QTest::newRow("not ASCII digits") << QString::fromUtf8("\u0661") << false << 0.0;
+        QTest::newRow("nearest double") << "0.1" << true << 0.1;
     }
     void finiteNumbersAreRead()
     {

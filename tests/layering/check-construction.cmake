@@ -13,7 +13,7 @@
 
 cmake_minimum_required(VERSION 3.25)
 
-set(parts RotatorSession RotctldServer PassRunner Tracker AlarmMonitor TleSources ControllerRotors
+set(parts RotatorSession RotctldServer PassRunner Tracker AlarmMonitor ElementSetSources ControllerRotors
           SharedLine StationClock SimulatorPace MoveWatch ConsoleRunner TransponderSources
           DopplerRadio DopplerSteering RadioLink RigctldRadioLink HamlibRadioLink ControllerRadioLink
           PassRecordStore PassRecorder

@@ -431,7 +431,7 @@ void RigctldRadioTest::badValuesChangeNothing_data()
     QTest::addColumn<QString>("reason");
     QTest::newRow("nan") << QByteArray("nan") << "unusable answer: 'nan' is not a finite number";
     QTest::newRow("inf") << QByteArray("inf") << "unusable answer: 'inf' is not a finite number";
-    QTest::newRow("overflow") << QByteArray("1e999") << "unusable answer: '1e999' is not a number";
+    QTest::newRow("overflow") << QByteArray("1e999") << "unusable answer: '1e999' is not a finite number";
     QTest::newRow("huge") << QByteArray("1e300") << "unusable answer: 1e+300 Hz is outside 1..1e+12 Hz";
     // What rigctld 4.5.4 reads after being told `F nan`.
     QTest::newRow("int64 min") << QByteArray("-9223372036854775808")

@@ -187,7 +187,8 @@ private slots:
         s.limits = {0, 450, 0, 180};
         s.park = QPointF(0, 90);
         s.tracking = QStringLiteral("tracking");
-        s.trackingTarget = QStringLiteral("ISS (ZARYA)");
+        s.trackingTarget = QStringLiteral("GP TEST LEO-9");
+        s.trackingNorad = 270033591; // nine digits
         s.passAosMs = 1790000000000;
         s.passLosMs = 1790000600000;
         s.passMaxElevation = 56.1;
@@ -214,6 +215,7 @@ private slots:
         QTest::newRow("travel backwards") << QByteArray(R"j({"unix_ms":1,"link":"connected","az_min":300,"az_max":10,"el_min":0,"el_max":90})j") << "travel";
         QTest::newRow("alarm escape") << "{" + base + ",\"alarms\":[\"\\u001b[31m\"]}" << "'alarms'";
         QTest::newRow("unknown") << "{" + base + R"j(,"x":1})j" << "unknown field";
+        QTest::newRow("ten-digit norad") << "{" + base + R"j(,"tracking_norad":1000000000})j" << "'tracking_norad'";
         QTest::newRow("negative time") << QByteArray(R"j({"unix_ms":-5,"link":"connected","az_min":0,"az_max":360,"el_min":0,"el_max":90})j") << "'unix_ms'";
     }
     void badStates()

@@ -14,16 +14,19 @@
 #include "../common/stationprocess.h"
 
 #include "model/movegate.h"
+#include "sky/elementsetformat.h"
 #include "sky/utctime.h"
 #include "remote/stationplan.h"
 #include "remote/stationschedule.h"
 #include "remote/stationstate.h"
 
+#include <QFile>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
 #include <QRegularExpression>
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QTest>
 
 #include <cmath>
@@ -255,12 +258,26 @@ private slots:
     {
         // Two targets by priority on a rehearsed clock at 20 times, from
         // inside FLOCK 2P-1's pass over JO65hq (09:15:45 to 09:27:10 UTC).
+        // FLOCK 2P-1 carries a six-digit number, as every satellite
+        // catalogued since July 2026 does, so the sets are GP CSV.
+        QTemporaryDir dir;
+        const QString gp = dir.filePath(QStringLiteral("gp.csv"));
+        {
+            QList<slew::sky::ElementSet> sets =
+                slew::sky::readElementSetFile(QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle")).sets;
+            for (slew::sky::ElementSet &s : sets)
+                if (s.name == u"FLOCK 2P-1")
+                    s.catalogueNumber = 241617;
+            QFile file(gp);
+            QVERIFY(file.open(QIODevice::WriteOnly));
+            file.write(slew::sky::writeElementSets(sets, slew::sky::ElementSetForm::Csv).bytes);
+        }
         MosquittoSubscriber watcher(m_broker, QStringLiteral("watcher"),
-                                    {QStringLiteral("slew/mast/schedule"), QStringLiteral("slew/mast/plan")});
+                                    {QStringLiteral("slew/mast/schedule"), QStringLiteral("slew/mast/plan"),
+                                     QStringLiteral("slew/mast/state")});
         Service slew(stationArguments()
-                     + QStringList{"--qth", "JO65hq", "--tle", QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"),
-                                   "--track", "FLOCK 2P-1", "--track", "PERSEUS-M1", "--clock-start",
-                                   "2018-01-22T09:16:00Z", "--clock-rate", "20"});
+                     + QStringList{"--qth", "JO65hq", "--tle", gp, "--track", "241617", "--track", "PERSEUS-M1",
+                                   "--clock-start", "2018-01-22T09:16:00Z", "--clock-rate", "20"});
         QVERIFY2(slew.logged("remote: connected to mqtts://station-mast@localhost:"), slew.said().constData());
 
         // The schedule: both targets in their order, every pass with its
@@ -302,6 +319,17 @@ private slots:
         QVERIFY(plan->aosMs && plan->losMs && *plan->losMs - *plan->aosMs > 400000);
         QVERIFY(plan->maxElevation && *plan->maxElevation > 50);
         QVERIFY(plan->plannedWorstDeg && *plan->plannedWorstDeg < 1.0);
+        QCOMPARE(plan->norad, 241617);
+        // The state names the satellite by its number too.
+        QVERIFY2(watcher.waitFor(QStringLiteral("slew/mast/state"),
+                                 [&](const QByteArray &p) {
+                                     QString e;
+                                     const auto state = slew::remote::parseStationState(p, &e);
+                                     return state && state->trackingNorad == 241617
+                                            && state->trackingTarget == u"FLOCK 2P-1";
+                                 },
+                                 30000),
+                 (watcher.errors() + slew.said()).constData());
         // Retained: a window that comes later has both at once.
         for (const char *topic : {"slew/mast/schedule", "slew/mast/plan"}) {
             QString error;

@@ -10,7 +10,8 @@
 #include "schedule/schedule.h"
 #include "schedule/scheduletext.h"
 
-#include "sky/tle.h"
+#include "sky/tleformat.h"
+#include "sky/elementsetformat.h"
 #include "sky/utctime.h"
 
 #include <QFile>
@@ -85,7 +86,7 @@ const ScheduledPass *find(const Schedule &s, const QString &target)
     return nullptr;
 }
 
-QList<slew::sky::Tle> snapshot()
+QList<slew::sky::ElementSet> snapshot()
 {
     QFile file(QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"));
     if (!file.open(QIODevice::ReadOnly))
@@ -95,9 +96,9 @@ QList<slew::sky::Tle> snapshot()
 
 slew::tracking::TrackTarget satellite(const QString &name)
 {
-    static const QList<slew::sky::Tle> sets = snapshot();
+    static const QList<slew::sky::ElementSet> sets = snapshot();
     slew::tracking::TrackTarget t;
-    const QList<const slew::sky::Tle *> found = slew::sky::findTles(sets, name);
+    const QList<const slew::sky::ElementSet *> found = slew::sky::findSatellites(sets, name);
     if (!found.isEmpty())
         t.elements = *found.first();
     return t;

@@ -13,9 +13,9 @@ using namespace slew::sky;
 
 namespace {
 
-Tle satellite(int number, const QString &name)
+ElementSet satellite(int number, const QString &name)
 {
-    Tle t;
+    ElementSet t;
     t.catalogueNumber = number;
     t.name = name;
     return t;
@@ -75,13 +75,13 @@ private slots:
         favourites.toggle(FavouriteTarget::satellite(satellite(25544, QStringLiteral("ISS (ZARYA)"))));
         favourites.toggle(FavouriteTarget::satellite(satellite(99999, QStringLiteral("OBJECT A"))));
 
-        const QList<Tle> without{satellite(99999, QStringLiteral("OBJECT A"))};
+        const QList<ElementSet> without{satellite(99999, QStringLiteral("OBJECT A"))};
         const QList<FavouriteTarget> missing = favourites.missingFrom(without);
         QCOMPARE(missing.size(), 1);
         QCOMPARE(missing[0].name, QStringLiteral("ISS (ZARYA)"));
         QCOMPARE(favourites.list().size(), 3);
 
-        const QList<Tle> reloaded{satellite(25544, QStringLiteral("ISS (ZARYA)")),
+        const QList<ElementSet> reloaded{satellite(25544, QStringLiteral("ISS (ZARYA)")),
                                   satellite(99999, QStringLiteral("TINYSAT"))};
         QVERIFY(favourites.missingFrom(reloaded).isEmpty());
         QVERIFY(favourites.renameFrom(reloaded));

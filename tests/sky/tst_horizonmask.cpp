@@ -6,6 +6,7 @@
 // at the satellite's own elevation there, and a pass that never clears it
 // gone.
 
+#include "sky/tleformat.h"
 #include "sky/horizonmask.h"
 #include "sky/passes.h"
 
@@ -19,7 +20,7 @@ using namespace slew::sky;
 
 namespace {
 
-QList<Tle> snapshot()
+QList<ElementSet> snapshot()
 {
     QFile file(QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"));
     if (!file.open(QIODevice::ReadOnly))
@@ -91,7 +92,7 @@ private slots:
         QTest::newRow("three numbers") << "0 5 7\n" << "test.horizon:1: expected `azimuth elevation`";
         QTest::newRow("nan") << "0 5\n90 nan\n" << "test.horizon:2: elevation 'nan' is not a finite number";
         QTest::newRow("inf azimuth") << "inf 5\n" << "test.horizon:1: azimuth 'inf' is not a finite number";
-        QTest::newRow("huge") << "0 1e999\n" << "test.horizon:1: elevation '1e999' is not a number";
+        QTest::newRow("huge") << "0 1e999\n" << "test.horizon:1: elevation '1e999' is not a finite number";
         QTest::newRow("azimuth past a turn") << "361 5\n" << "test.horizon:1: azimuth 361° is outside 0..360°";
         QTest::newRow("elevation past the zenith") << "10 91\n" << "test.horizon:1: elevation 91° is outside -5..90°";
         QTest::newRow("below the ground") << "10 -6\n" << "test.horizon:1: elevation -6° is outside -5..90°";
@@ -139,8 +140,8 @@ private slots:
 
     void passesRiseAndSetOnTheMask()
     {
-        const QList<Tle> sets = snapshot();
-        const QList<const Tle *> found = findTles(sets, QStringLiteral("NOAA 18"));
+        const QList<ElementSet> sets = snapshot();
+        const QList<const ElementSet *> found = findSatellites(sets, QStringLiteral("NOAA 18"));
         QVERIFY(!found.isEmpty());
         const Sgp4 noaa(*found.first());
         const double start = std::floor(noaa.epochJulian()) + 0.5;

@@ -4,6 +4,7 @@
 // AOS, the engine on made-up elevation curves, and the sun's and moon's
 // rise, culmination and set against PyEphem.
 
+#include "sky/tleformat.h"
 #include "sky/passes.h"
 
 #include <QFile>
@@ -23,7 +24,7 @@ namespace {
 
 const QString kPython = QStringLiteral("/usr/bin/python3");
 
-QList<Tle> snapshot()
+QList<ElementSet> snapshot()
 {
     QFile file(QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"));
     if (!file.open(QIODevice::ReadOnly))
@@ -31,9 +32,9 @@ QList<Tle> snapshot()
     return readTleText(QString::fromLatin1(file.readAll())).sets;
 }
 
-const Tle *named(const QList<Tle> &sets, const QString &name)
+const ElementSet *named(const QList<ElementSet> &sets, const QString &name)
 {
-    const QList<const Tle *> found = findTles(sets, name);
+    const QList<const ElementSet *> found = findSatellites(sets, name);
     return found.isEmpty() ? nullptr : found.first();
 }
 
@@ -134,8 +135,8 @@ void TestPasses::matchesBruteForce()
     QFETCH(QString, satellite);
     QFETCH(double, minElevation);
     QFETCH(Station, station);
-    const QList<Tle> sets = snapshot();
-    const Tle *tle = named(sets, satellite);
+    const QList<ElementSet> sets = snapshot();
+    const ElementSet *tle = named(sets, satellite);
     QVERIFY2(tle, qPrintable(satellite));
     const Sgp4 sat(*tle);
     // Twelve hours from the set's epoch, rounded to a minute.
@@ -171,8 +172,8 @@ void TestPasses::matchesBruteForce()
 
 void TestPasses::allSatellitesSortedByAos()
 {
-    const QList<Tle> sets = snapshot();
-    QList<Tle> some;
+    const QList<ElementSet> sets = snapshot();
+    QList<ElementSet> some;
     for (const QString &name : {QStringLiteral("ISS (ZARYA)"), QStringLiteral("NOAA 18"), QStringLiteral("FOX-1B")})
         some.append(*named(sets, name));
     const Station station{55.6875, 12.625, 20, {}, {}};
@@ -180,7 +181,7 @@ void TestPasses::allSatellitesSortedByAos()
     const PassWindow window{start, start + 1.0, 0.0};
     const QList<Pass> all = predictPasses(some, station, window);
     int total = 0;
-    for (const Tle &t : some)
+    for (const ElementSet &t : some)
         total += predictPasses(Sgp4(t), station, window).size();
     QCOMPARE(all.size(), total);
     QSet<int> numbers;
@@ -250,8 +251,8 @@ void TestPasses::searchEndsOnAnyInput()
 void TestPasses::decayedSatelliteHasNoPasses()
 {
     // The verification set's sub-orbital case (decayed 2005-11-29).
-    Tle tle;
-    TleRefusal r;
+    ElementSet tle;
+    ElementSetRefusal r;
     QVERIFY(parseTle(QStringLiteral("1 28872U 05037B   05333.02012661  .25992681  00000-0  24476-3 0  1534"),
                      QStringLiteral("2 28872  96.4736 157.9986 0303955 244.0492 110.6523 16.46015938 10708"), &tle,
                      &r, false));

@@ -5,9 +5,10 @@
 // are taken from the published verification set (SGP4-VER.TLE, shipped by
 // Debian's python3-sgp4 and read from there, as tst_sgp4verification does).
 
+#include "sky/tleformat.h"
 #include "sky/sgp4.h"
 #include "sky/sgp4propagator.h"
-#include "sky/tle.h"
+#include "sky/elementsetformat.h"
 
 #include <QFile>
 #include <QRandomGenerator>
@@ -31,18 +32,18 @@ const QList<int> kResonantSets = {8195, 21897, 14128, 9998};
 // The integrator's half-day step, in minutes.
 constexpr double kStep = 720.0;
 
-QList<Tle> resonantSets()
+QList<ElementSet> resonantSets()
 {
     QFile f(kVerificationSet);
     if (!f.open(QIODevice::ReadOnly))
         return {};
-    QList<Tle> found;
+    QList<ElementSet> found;
     const QStringList lines = QString::fromLatin1(f.readAll()).split(u'\n');
     for (int i = 0; i + 1 < lines.size(); ++i) {
         if (!lines[i].startsWith(u'1') || !lines[i + 1].startsWith(u'2'))
             continue;
-        Tle tle;
-        TleRefusal refusal;
+        ElementSet tle;
+        ElementSetRefusal refusal;
         // The file's lines carry start, stop and step after column 69.
         if (parseTle(lines[i].left(69), lines[i + 1].left(69), &tle, &refusal, false)
             && kResonantSets.contains(tle.catalogueNumber))
@@ -93,7 +94,7 @@ void TestSgp4Propagator::aTimeThatIsNoTimeIsRefusedAtOnce()
 {
     // The resonance integration steps half a day at a time: an infinite or
     // absurd time once looped for ever. Now each is refused, carried or not.
-    const QList<Tle> sets = resonantSets();
+    const QList<ElementSet> sets = resonantSets();
     QVERIFY(!sets.isEmpty());
     const Sgp4 sgp4(sets.first());
     Sgp4Propagator carried(sgp4);
@@ -109,14 +110,14 @@ void TestSgp4Propagator::aTimeThatIsNoTimeIsRefusedAtOnce()
 
 void TestSgp4Propagator::carriedIntegrationMatchesFromEpoch()
 {
-    const QList<Tle> sets = resonantSets();
+    const QList<ElementSet> sets = resonantSets();
     if (sets.isEmpty())
         QFAIL(qPrintable(kVerificationSet + QStringLiteral(" is missing: install the Debian package python3-sgp4")));
     QCOMPARE(sets.size(), kResonantSets.size());
 
     const QList<double> times = askedTimes();
     double worst = 0;
-    for (const Tle &tle : sets) {
+    for (const ElementSet &tle : sets) {
         const Sgp4 sgp4(tle);
         QVERIFY(sgp4.isDeepSpace());
         Sgp4Propagator carried(sgp4);
@@ -143,7 +144,7 @@ void TestSgp4Propagator::propagatorsOfOneSetAreIndependent()
     // Two callers on one Sgp4 (the planner's worker and the window's tick),
     // one going forward, one back: neither disturbs the other, as the
     // state is theirs, not the Sgp4's.
-    const QList<Tle> sets = resonantSets();
+    const QList<ElementSet> sets = resonantSets();
     QVERIFY(!sets.isEmpty());
     const Sgp4 sgp4(sets.first());
     Sgp4Propagator forward(sgp4), backward(sgp4);

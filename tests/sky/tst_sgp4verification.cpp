@@ -5,8 +5,9 @@
 // C++ code gives). Debian's python3-sgp4 ships both; they are read from
 // there, never copied into this tree.
 
+#include "sky/tleformat.h"
 #include "sky/sgp4.h"
-#include "sky/tle.h"
+#include "sky/elementsetformat.h"
 
 #include <QFile>
 #include <QHash>
@@ -97,8 +98,8 @@ void TestSgp4Verification::everyStateAgrees()
         const QString line1 = lines[i].left(69);
         const QString line2 = lines[i + 1];
         ++i;
-        Tle tle;
-        TleRefusal refusal;
+        ElementSet tle;
+        ElementSetRefusal refusal;
         // The set carries deliberately wrong checksums in its error cases.
         QVERIFY2(parseTle(line1, line2.left(69), &tle, &refusal, false), qPrintable(refusal.reason));
         const QStringList span = line2.mid(69).simplified().split(u' ');

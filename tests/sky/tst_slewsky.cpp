@@ -4,6 +4,7 @@
 // refused with a message and exit status 2 (1 when there is nothing to
 // answer with).
 
+#include "sky/tleformat.h"
 #include "sky/observation.h"
 #include "sky/passes.h"
 #include "sky/sgp4.h"
@@ -97,13 +98,13 @@ void TestSlewSky::passesAsJson()
     QVERIFY(passes.size() >= 2);
 
     // The same passes as the library gives.
-    QList<Tle> sets = readTleText([] {
+    QList<ElementSet> sets = readTleText([] {
                           QFile f(kTle);
                           f.open(QIODevice::ReadOnly);
                           return QString::fromLatin1(f.readAll());
                       }())
                           .sets;
-    const Tle *iss = findTles(sets, QStringLiteral("ISS")).first();
+    const ElementSet *iss = findSatellites(sets, QStringLiteral("ISS")).first();
     const double start = julianOf(kStart);
     const QList<Pass> expected = predictPasses(Sgp4(*iss), Station{55.6875, 12.625, 0, {}, {}}, {start, start + 1.0, 10.0});
     QCOMPARE(passes.size(), expected.size());
@@ -184,8 +185,8 @@ void TestSlewSky::whereMatchesTheLibrary()
 
     QFile f(kTle);
     QVERIFY(f.open(QIODevice::ReadOnly));
-    const QList<Tle> sets = readTleText(QString::fromLatin1(f.readAll())).sets;
-    const Sgp4 iss(*findTles(sets, QStringLiteral("25544")).first());
+    const QList<ElementSet> sets = readTleText(QString::fromLatin1(f.readAll())).sets;
+    const Sgp4 iss(*findSatellites(sets, QStringLiteral("25544")).first());
     const double jd = julianOf(when);
     const Sgp4State s = iss.propagateToJulian(jd);
     const LookAngles look = lookAngles(Station{55.6875, 12.625, 0, {}, {}}, s.positionKm, s.velocityKmS, jd);
@@ -243,7 +244,7 @@ void TestSlewSky::refusals_data()
                                 << QStringLiteral("--qth is needed");
     QTest::newRow("satellite without elements")
         << (QStringList{QStringLiteral("--passes"), QStringLiteral("ISS"), QStringLiteral("--qth"), QStringLiteral("JO65")})
-        << 2 << QStringLiteral("--tle FILE is needed");
+        << 2 << QStringLiteral("no element sets: give --tle FILE, or refresh the window's sources");
     QTest::newRow("bad time") << (QStringList{QStringLiteral("--where"), QStringLiteral("moon"), QStringLiteral("--qth"),
                                               QStringLiteral("JO65"), QStringLiteral("--time"), QStringLiteral("noon")})
                               << 2 << QStringLiteral("ISO 8601");
@@ -486,6 +487,22 @@ void TestSlewSky::setsThatAreNotNumbersAreSkippedSayingWhy()
     QCOMPARE(track.exitCode, 2);
     QVERIFY2(track.err.contains("no satellite '25544'") && track.err.contains(":3: skipped: mean motion"),
              track.err.constData());
+
+    // The same in a GP file: the row's line, the keyword, the value.
+    QFile csv(dir.filePath(QStringLiteral("gp.csv")));
+    QVERIFY(csv.open(QIODevice::WriteOnly));
+    csv.write("OBJECT_NAME,NORAD_CAT_ID,EPOCH,MEAN_MOTION,ECCENTRICITY,INCLINATION,RA_OF_ASC_NODE,ARG_OF_PERICENTER,"
+              "MEAN_ANOMALY,BSTAR\n"
+              "NOAA 19,33591,2018-01-20T22:04:12.213120,14.12247534,.0014450,99.1238,356.1693,24.0615,336.1228,.83477E-4\n"
+              "BROKEN,125544,2018-01-20T21:33:14.841216,nan,.0003646,51.6424,32.9776,28.7227,39.5332,.38550E-4\n");
+    csv.close();
+    const Run gp = runSlew({QStringLiteral("--passes"), QStringLiteral("all"), QStringLiteral("--qth"),
+                            QStringLiteral("JO65hq"), QStringLiteral("--tle"), csv.fileName(), QStringLiteral("--start"),
+                            kStart});
+    QVERIFY2(gp.exitCode == 0, gp.err.constData());
+    QVERIFY2(gp.err.contains("gp.csv:3: skipped: MEAN_MOTION 'nan' is not a finite number\n"), gp.err.constData());
+    QVERIFY2(gp.err.contains("gp.csv: 1 set (CSV)"), gp.err.constData());
+    QVERIFY(gp.out.contains("NOAA 19"));
 }
 
 void TestSlewSky::timeAndStartAreOneOption()

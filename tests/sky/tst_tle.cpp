@@ -3,7 +3,8 @@
 // refusals that name the line and the reason while the rest still loads,
 // and finding a set by number or name.
 
-#include "sky/tle.h"
+#include "sky/tleformat.h"
+#include "sky/elementsetformat.h"
 
 #include <QTest>
 
@@ -62,7 +63,7 @@ void TestTle::fileCutAfterALine1NamesALineOfIt()
 {
     // Found by fuzz_tle: a download cut after a line 1 was refused at a
     // line past the end of the file.
-    const TleReadResult read = readTleText(kIssName + u'\n' + kIss1);
+    const ElementSetRead read = readTleText(kIssName + u'\n' + kIss1);
     QCOMPARE(read.refusals.size(), 1);
     QCOMPARE(read.refusals[0].line, 2);
 }
@@ -83,7 +84,7 @@ void TestTle::notANumberIsRefusedInEveryField_data()
         QTest::newRow(tag + " mean motion dot") << withField(kIss1, 34, 43, bad) << kIss2 << "first derivative";
     }
     QTest::newRow("overflow to infinity") << kIss1 << withField(kIss2, 53, 63, QStringLiteral("1e999")) << "mean motion";
-    QTest::newRow("no orbit that fast") << kIss1 << withField(kIss2, 53, 63, QStringLiteral("99.0")) << "at most 20";
+    QTest::newRow("no orbit that fast") << kIss1 << withField(kIss2, 53, 63, QStringLiteral("99.0")) << "0..20 rev/day";
 }
 
 void TestTle::notANumberIsRefusedInEveryField()
@@ -93,8 +94,8 @@ void TestTle::notANumberIsRefusedInEveryField()
     QFETCH(QString, line1);
     QFETCH(QString, line2);
     QFETCH(QString, reasonContains);
-    Tle t;
-    TleRefusal r;
+    ElementSet t;
+    ElementSetRefusal r;
     QVERIFY2(!parseTle(line1, line2, &t, &r), "a set with a field that is not a finite number must be refused");
     QVERIFY2(r.reason.contains(reasonContains), qPrintable(r.reason));
 }
@@ -105,19 +106,20 @@ void TestTle::duplicatesKeepTheNewestEpoch()
     const QString newer1 = withField(kIss1, 21, 32, QStringLiteral("265.51782528"));
     const QString text = QStringList{kIssName, kIss1, kIss2, kNoaa1, kNoaa2, QStringLiteral("ISS (NEWER)"), newer1, kIss2}
                              .join(u'\n');
-    const QList<Tle> merged = mergeByCatalogueNumber(readTleText(text).sets);
+    const QList<ElementSet> merged = mergeByCatalogueNumber(readTleText(text).sets);
     QCOMPARE(merged.size(), 2);
     QCOMPARE(merged[0].catalogueNumber, 25544);
-    QCOMPARE(merged[0].epochDayOfYear, 265.51782528);
+    QCOMPARE(merged[0].epochJulianDay, 2454730.5);
+    QCOMPARE(merged[0].epochDayFraction, 0.51782528);
     QCOMPARE(merged[0].name, QStringLiteral("ISS (NEWER)"));
     QCOMPARE(merged[1].catalogueNumber, 33591);
     QString error;
-    QVERIFY2(findOneTle(merged, QStringLiteral("25544"), &error), qPrintable(error));
+    QVERIFY2(findOneSatellite(merged, QStringLiteral("25544"), &error), qPrintable(error));
 }
 
 void TestTle::ambiguousNamesAreRefusedNamingTheMatches()
 {
-    QList<Tle> sets(3);
+    QList<ElementSet> sets(3);
     sets[0].name = QStringLiteral("NOAA 15");
     sets[0].catalogueNumber = 25338;
     sets[1].name = QStringLiteral("NOAA 16 [-]");
@@ -125,37 +127,39 @@ void TestTle::ambiguousNamesAreRefusedNamingTheMatches()
     sets[2].name = QStringLiteral("NOAA 19");
     sets[2].catalogueNumber = 33591;
     QString error;
-    QVERIFY(!findOneTle(sets, QStringLiteral("NOAA"), &error));
+    QVERIFY(!findOneSatellite(sets, QStringLiteral("NOAA"), &error));
     QVERIFY2(error.startsWith(QStringLiteral("'NOAA' matches 3 satellites: NOAA 15 (25338), NOAA 16 [-] (26536), NOAA 19 (33591)")),
              qPrintable(error));
-    QVERIFY(!findOneTle(sets, QStringLiteral("GOES"), &error));
+    QVERIFY(!findOneSatellite(sets, QStringLiteral("GOES"), &error));
     QCOMPARE(error, QStringLiteral("no satellite 'GOES'"));
-    QVERIFY(!findOneTle(sets, QString::fromLatin1("\x1b[2J"), &error));
+    QVERIFY(!findOneSatellite(sets, QString::fromLatin1("\x1b[2J"), &error));
     QVERIFY2(!error.contains(QChar(0x1b)), qPrintable(error));
-    const Tle *one = findOneTle(sets, QStringLiteral("noaa 19"), &error);
+    const ElementSet *one = findOneSatellite(sets, QStringLiteral("noaa 19"), &error);
     QVERIFY(one);
     QCOMPARE(one->catalogueNumber, 33591);
 }
 
 void TestTle::filesThatAreNotFilesAreRefused()
 {
-    const TleFile zero = readTleFile(QStringLiteral("/dev/zero"));
+    const ElementSetFile zero = readElementSetFile(QStringLiteral("/dev/zero"));
     QVERIFY(zero.sets.isEmpty());
     QVERIFY2(zero.error.contains(QStringLiteral("character device")), qPrintable(zero.error));
 }
 
 void TestTle::readsTheFields()
 {
-    Tle t;
-    TleRefusal r;
+    ElementSet t;
+    ElementSetRefusal r;
     QVERIFY2(parseTle(kIss1, kIss2, &t, &r), qPrintable(r.reason));
     QCOMPARE(t.catalogueNumber, 25544);
-    QCOMPARE(t.designator, QStringLiteral("98067A"));
-    QCOMPARE(t.epochYear, 2008);
-    QCOMPARE(t.epochDayOfYear, 264.51782528);
+    QCOMPARE(t.designator, QStringLiteral("1998-067A")); // as OMM writes it
+    QCOMPARE(t.classification, 'U');
+    QCOMPARE(t.elementSetNumber, 292);
+    // The day's fraction is the double nearest to the eight decimals printed.
+    QCOMPARE(t.epochDayFraction, 0.51782528);
     QCOMPARE(t.meanMotionDot, -0.00002182);
     QCOMPARE(t.meanMotionDdot, 0.0);
-    QVERIFY(qFuzzyCompare(t.bstar, -0.11606e-4));
+    QCOMPARE(t.bstar, -1.1606e-5); // the double nearest, as an OMM's "-1.1606E-5" reads
     QCOMPARE(t.inclinationDeg, 51.6416);
     QCOMPARE(t.raanDeg, 247.4627);
     QCOMPARE(t.eccentricity, 0.0006703);
@@ -164,7 +168,7 @@ void TestTle::readsTheFields()
     QCOMPARE(t.meanMotionRevPerDay, 15.72125391);
     QCOMPARE(t.revolutionNumber, 56353);
     // 2008 day 264.5178 is 20 September 12:25:40 UTC: JD 2454730.0178.
-    QCOMPARE(t.epochJulianDay(), 2454729.5);
+    QCOMPARE(t.epochJulianDay, 2454729.5);
     QVERIFY(std::fabs(t.epochJulian() - 2454730.01782528) < 1e-9);
 }
 
@@ -214,8 +218,8 @@ void TestTle::refusals()
     QFETCH(QString, line2);
     QFETCH(int, line);
     QFETCH(QString, reasonContains);
-    Tle t;
-    TleRefusal r;
+    ElementSet t;
+    ElementSetRefusal r;
     QVERIFY(!parseTle(line1, line2, &t, &r));
     QCOMPARE(r.line, line);
     QVERIFY2(r.reason.contains(reasonContains), qPrintable(r.reason));
@@ -234,7 +238,7 @@ void TestTle::fileKeepsLoadingPastBadSets()
         QStringLiteral("0 NOAA 19"), kNoaa1, kNoaa2, // 12-14: CelesTrak's "0 " name prefix
         QStringLiteral("LONELY NAME"),            // 15
     }.join(u'\n');
-    const TleReadResult result = readTleText(text);
+    const ElementSetRead result = readTleText(text);
     QCOMPARE(result.sets.size(), 3);
     QCOMPARE(result.sets[0].name, kIssName);
     QCOMPARE(result.sets[1].name, QString());
@@ -262,7 +266,7 @@ void TestTle::findsByNumberAndName()
 {
     QFETCH(QString, query);
     QFETCH(QList<int>, numbers);
-    QList<Tle> sets(3);
+    QList<ElementSet> sets(3);
     sets[0].name = kIssName;
     sets[0].catalogueNumber = 25544;
     sets[1].name = QStringLiteral("NOAA 19");
@@ -270,7 +274,7 @@ void TestTle::findsByNumberAndName()
     sets[2].name = QStringLiteral("NOAA 18");
     sets[2].catalogueNumber = 28654;
     QList<int> found;
-    for (const Tle *t : findTles(sets, query))
+    for (const ElementSet *t : findSatellites(sets, query))
         found.append(t->catalogueNumber);
     QCOMPARE(found, numbers);
 }

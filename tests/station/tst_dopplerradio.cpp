@@ -10,7 +10,7 @@
 #include "radio/radiolink.h"
 #include "session/rotatorsession.h"
 #include "sky/station.h"
-#include "sky/tle.h"
+#include "sky/elementsetformat.h"
 #include "sky/utctime.h"
 #include "radio/doppler.h"
 #include "radio/dopplersteering.h"
@@ -31,13 +31,13 @@ using slew::station::Station;
 namespace {
 
 // FLOCK 2P-1 from the test element sets.
-slew::sky::Tle flock()
+slew::sky::ElementSet flock()
 {
     QString error;
-    static const slew::sky::TleFile sets =
-        slew::sky::readTleFile(QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"));
-    const slew::sky::Tle *found = slew::sky::findOneTle(sets.sets, QStringLiteral("FLOCK 2P-1"), &error);
-    return found ? *found : slew::sky::Tle{};
+    static const slew::sky::ElementSetFile sets =
+        slew::sky::readElementSetFile(QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"));
+    const slew::sky::ElementSet *found = slew::sky::findOneSatellite(sets.sets, QStringLiteral("FLOCK 2P-1"), &error);
+    return found ? *found : slew::sky::ElementSet{};
 }
 
 // The station at JO65hq on the built-in rotator simulator, its clock from

@@ -18,7 +18,7 @@
 #include "records/passrecordstore.h"
 #include "session/rotatorsession.h"
 #include "sky/station.h"
-#include "sky/tle.h"
+#include "sky/elementsetformat.h"
 #include "sky/utctime.h"
 #include "station/dopplerradio.h"
 #include "station/passrecorder.h"
@@ -40,20 +40,21 @@ using slew::tracking::Tracker;
 
 namespace {
 
-slew::sky::Tle satellite(const QString &name)
+slew::sky::ElementSet satellite(const QString &name)
 {
     QString error;
-    static const slew::sky::TleFile sets =
-        slew::sky::readTleFile(QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"));
-    const slew::sky::Tle *found = slew::sky::findOneTle(sets.sets, name, &error);
-    return found ? *found : slew::sky::Tle{};
+    static const slew::sky::ElementSetFile sets =
+        slew::sky::readElementSetFile(QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"));
+    const slew::sky::ElementSet *found = slew::sky::findOneSatellite(sets.sets, name, &error);
+    return found ? *found : slew::sky::ElementSet{};
 }
 
 // The station at JO65hq on the built-in rotator simulator (450°/180°), its
 // clock from `iso` at 20 times, tracking a satellite until the tracker
 // tracks: FLOCK 2P-1 (AOS 09:15:45, TCA 09:21:28 at 56.4°, LOS 09:27:10), or
 // SJ-6D, low and short (AOS 09:03:54, 1.3° at 09:05:57, LOS 09:07:59).
-bool track(Station &station, const QString &iso, const QString &name = QStringLiteral("FLOCK 2P-1"))
+bool track(Station &station, const QString &iso, const QString &name = QStringLiteral("FLOCK 2P-1"),
+           int renumberTo = 0)
 {
     slew::sky::Station place;
     QString error;
@@ -69,6 +70,8 @@ bool track(Station &station, const QString &iso, const QString &name = QStringLi
         return false;
     slew::tracking::TrackTarget target;
     target.elements = satellite(name);
+    if (renumberTo > 0 && target.elements.catalogueNumber > 0)
+        target.elements.catalogueNumber = renumberTo;
     if (target.elements.catalogueNumber == 0 || !station.track(target, 0.0).isEmpty())
         return false;
     return QTest::qWaitFor([&] { return station.passRunner()->tracker().state() == Tracker::State::Tracking; }, 20000);
@@ -99,7 +102,8 @@ private slots:
 
         // A whole pass, short, with time to be at the AOS point first: 17 s
         // of the test's time.
-        QVERIFY(track(station, QStringLiteral("2018-01-22T09:02:30Z"), QStringLiteral("SJ-6D")));
+        // SJ-6D with a nine-digit number, as the catalogue is moving to.
+        QVERIFY(track(station, QStringLiteral("2018-01-22T09:02:30Z"), QStringLiteral("SJ-6D"), 270033591));
         QVERIFY(station.passRecorder()->currentRecord());
         const qint64 id = *station.passRecorder()->currentRecord();
         QCOMPARE(recording.count(), 1);
@@ -116,7 +120,7 @@ private slots:
         QCOMPARE(r.outcome, Outcome::Tracked);
         QVERIFY(r.reason.isEmpty());
         QCOMPARE(r.planned.target, QStringLiteral("SJ-6D"));
-        QCOMPARE(r.planned.norad, satellite(QStringLiteral("SJ-6D")).catalogueNumber);
+        QCOMPARE(r.planned.norad, 270033591);
         QVERIFY(r.planned.rehearsal);
         // The pass's own times, as predicted.
         const slew::sky::Pass &pass = *station.passRunner()->pass();

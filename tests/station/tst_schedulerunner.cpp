@@ -12,7 +12,7 @@
 #include "schedule/scheduletext.h"
 #include "session/rotatorsession.h"
 #include "sky/station.h"
-#include "sky/tle.h"
+#include "sky/elementsetformat.h"
 #include "sky/utctime.h"
 #include "records/passrecordstore.h"
 #include "station/schedulerunner.h"
@@ -34,11 +34,11 @@ namespace {
 
 TrackTarget satellite(const char *name)
 {
-    static const slew::sky::TleFile sets =
-        slew::sky::readTleFile(QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"));
+    static const slew::sky::ElementSetFile sets =
+        slew::sky::readElementSetFile(QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"));
     QString error;
     TrackTarget t;
-    if (const slew::sky::Tle *found = slew::sky::findOneTle(sets.sets, QString::fromLatin1(name), &error))
+    if (const slew::sky::ElementSet *found = slew::sky::findOneSatellite(sets.sets, QString::fromLatin1(name), &error))
         t.elements = *found;
     return t;
 }

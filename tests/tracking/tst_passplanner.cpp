@@ -4,8 +4,9 @@
 // installation, random passes that must never leave the travel, and three
 // real passes (low, 60°, within 3° of the zenith) from an element set.
 
+#include "sky/tleformat.h"
 #include "sky/passes.h"
-#include "sky/tle.h"
+#include "sky/elementsetformat.h"
 #include "tracking/leastworstswing.h"
 #include "tracking/passplanner.h"
 #include "tracking/skytrack.h"
@@ -369,7 +370,7 @@ private slots:
 
 private:
     struct Found {
-        slew::sky::Tle tle;
+        slew::sky::ElementSet tle;
         slew::sky::Pass pass;
     };
 
@@ -397,14 +398,14 @@ private:
         QFile file(QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"));
         if (!file.open(QIODevice::ReadOnly))
             return std::nullopt;
-        const QList<slew::sky::Tle> sets = slew::sky::readTleText(QString::fromLatin1(file.readAll())).sets;
+        const QList<slew::sky::ElementSet> sets = slew::sky::readTleText(QString::fromLatin1(file.readAll())).sets;
         if (sets.isEmpty())
             return std::nullopt;
         double epoch = 0;
-        for (const slew::sky::Tle &t : sets)
+        for (const slew::sky::ElementSet &t : sets)
             epoch = std::max(epoch, t.epochJulian());
         const slew::sky::PassWindow window{epoch, epoch + 2.0, 0.0};
-        for (const slew::sky::Tle &t : sets) {
+        for (const slew::sky::ElementSet &t : sets) {
             const slew::sky::Sgp4 sat(t);
             for (const slew::sky::Pass &p : slew::sky::predictPasses(sat, station(), window)) {
                 if (p.aosClipped || p.losClipped)

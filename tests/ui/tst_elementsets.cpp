@@ -9,7 +9,7 @@
 #include "windowfixture.h"
 
 #include "elementsetsdialog.h"
-#include "sky/tlesources.h"
+#include "sky/elementsetsources.h"
 
 #include <QAction>
 #include <QDateTime>
@@ -75,7 +75,7 @@ private slots:
         QVERIFY(dialog);
         auto *urls = dialog->findChild<QPlainTextEdit *>(QStringLiteral("elementSetUrls"));
         urls->setPlainText(server.url("/stations.txt").toString() + u'\n' + server.url("/weather.txt").toString());
-        QSignalSpy done(f.window->elementSets(), &slew::sky::TleSources::finished);
+        QSignalSpy done(f.window->elementSets(), &slew::sky::ElementSetSources::finished);
         QTest::mouseClick(dialog->findChild<QPushButton *>(QStringLiteral("elementSetRefresh")), Qt::LeftButton);
         QVERIFY(done.count() > 0 || done.wait(20000));
         QCOMPARE(server.requests, 2);
@@ -129,7 +129,7 @@ private slots:
         WindowFixture f;
         auto *dialog = openDialog(f);
         dialog->findChild<QPlainTextEdit *>(QStringLiteral("elementSetUrls"))->setPlainText(server.url("/amateur.txt").toString());
-        QSignalSpy done(f.window->elementSets(), &slew::sky::TleSources::finished);
+        QSignalSpy done(f.window->elementSets(), &slew::sky::ElementSetSources::finished);
         QVERIFY(dialog->refresh());
         QVERIFY(done.wait(20000));
         auto *status = dialog->findChild<QTreeWidget *>(QStringLiteral("elementSetStatus"));
@@ -173,7 +173,7 @@ private slots:
         auto *dialog = openDialog(f);
         dialog->findChild<QPlainTextEdit *>(QStringLiteral("elementSetUrls"))->clear();
         dialog->addFile(path);
-        QSignalSpy done(f.window->elementSets(), &slew::sky::TleSources::finished);
+        QSignalSpy done(f.window->elementSets(), &slew::sky::ElementSetSources::finished);
         QVERIFY(dialog->refresh());
         QVERIFY(done.count() > 0 || done.wait(20000));
         auto *source = dialog->findChild<QTreeWidget *>(QStringLiteral("elementSetStatus"))->topLevelItem(0);

@@ -22,7 +22,7 @@
 #include "radiopanel.h"
 #include "radioplanform.h"
 #include "radio/transpondersources.h"
-#include "sky/tlesources.h"
+#include "sky/elementsetsources.h"
 #include "sky/utctime.h"
 #include "station/dopplerradio.h"
 #include "telemetrycharts.h"

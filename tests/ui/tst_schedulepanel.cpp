@@ -15,7 +15,7 @@
 #include "schedulepanel.h"
 #include "scheduletimeline.h"
 #include "sky/horizonmask.h"
-#include "sky/tlesources.h"
+#include "sky/elementsetsources.h"
 #include "sky/utctime.h"
 #include "station/schedulerunner.h"
 #include "stationdialog.h"

@@ -14,7 +14,7 @@
 #include "sim/simulator.h"
 #include "sim/simulatorscheme.h"
 #include "sky/skyvector.h"
-#include "sky/tlesources.h"
+#include "sky/elementsetsources.h"
 #include "sky/utctime.h"
 #include "timecontroller.h"
 #include "trackingpanel.h"

@@ -16,7 +16,7 @@
 #include "bridge/rotctldserver.h"
 #include "elementsetages.h"
 #include "polarplotwidget.h"
-#include "sky/tlesources.h"
+#include "sky/elementsetsources.h"
 #include "sky/utctime.h"
 #include "stopbutton.h"
 #include "targetpicker.h"

@@ -5,7 +5,7 @@
 
 #include "sim/simulatorscheme.h"
 #include "sky/station.h"
-#include "sky/tlesources.h"
+#include "sky/elementsetsources.h"
 #include "sky/utctime.h"
 #include "tracking/stationclock.h"
 #include "transport/link.h"
@@ -90,9 +90,9 @@ bool WindowFixture::connectAndWait(int timeoutMs)
 
 bool WindowFixture::loadElementSets(const QString &file)
 {
-    slew::sky::TleSources *sets = window->elementSets();
+    slew::sky::ElementSetSources *sets = window->elementSets();
     sets->setUrls({QUrl::fromLocalFile(file)});
-    QSignalSpy loaded(sets, &slew::sky::TleSources::finished);
+    QSignalSpy loaded(sets, &slew::sky::ElementSetSources::finished);
     sets->refresh();
     return loaded.count() > 0 || loaded.wait(5000);
 }

@@ -21,10 +21,11 @@
 #include "radio/doppler.h"
 #include "radio/dopplersteering.h"
 #include "radio/fakeradiolink.h"
+#include "sky/tleformat.h"
 #include "sky/observation.h"
 #include "sky/passes.h"
 #include "sky/sgp4.h"
-#include "sky/tle.h"
+#include "sky/elementsetformat.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -51,7 +52,7 @@ sky::Station station()
 }
 
 struct ZenithPass {
-    sky::Tle tle;
+    sky::ElementSet tle;
     sky::Pass pass;
 };
 
@@ -60,11 +61,11 @@ std::optional<ZenithPass> findZenithPass()
     QFile file(QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"));
     if (!file.open(QIODevice::ReadOnly))
         return std::nullopt;
-    const QList<sky::Tle> sets = sky::readTleText(QString::fromLatin1(file.readAll())).sets;
+    const QList<sky::ElementSet> sets = sky::readTleText(QString::fromLatin1(file.readAll())).sets;
     double epoch = 0;
-    for (const sky::Tle &t : sets)
+    for (const sky::ElementSet &t : sets)
         epoch = std::max(epoch, t.epochJulian());
-    for (const sky::Tle &t : sets) {
+    for (const sky::ElementSet &t : sets) {
         if (t.meanMotionRevPerDay < 11.0)
             continue; // LEO only
         const sky::Sgp4 sat(t);

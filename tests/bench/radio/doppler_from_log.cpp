@@ -31,11 +31,12 @@
 // positive is late, negative is a lead).
 
 #include "radio/doppler.h"
+#include "sky/tleformat.h"
 #include "sky/observation.h"
 #include "sky/passes.h"
 #include "sky/sgp4.h"
 #include "sky/station.h"
-#include "sky/tle.h"
+#include "sky/elementsetformat.h"
 #include "sky/utctime.h"
 
 #include <QCommandLineParser>
@@ -264,8 +265,8 @@ int main(int argc, char **argv)
                      qPrintable(tleFile.errorString()));
         return 2;
     }
-    std::optional<sky::Tle> tle;
-    for (const sky::Tle &t : sky::readTleText(QString::fromLatin1(tleFile.readAll())).sets) {
+    std::optional<sky::ElementSet> tle;
+    for (const sky::ElementSet &t : sky::readTleText(QString::fromLatin1(tleFile.readAll())).sets) {
         if (t.name.trimmed().compare(parser.value(QStringLiteral("sat")), Qt::CaseInsensitive) == 0)
             tle = t;
     }

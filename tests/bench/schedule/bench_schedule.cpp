@@ -25,7 +25,8 @@
 #include "schedule/scheduletext.h"
 #include "session/rotatorsession.h"
 #include "sim/simulator.h"
-#include "sky/tle.h"
+#include "sky/tleformat.h"
+#include "sky/elementsetformat.h"
 #include "sky/utctime.h"
 #include "tracking/rotatorreach.h"
 #include "tracking/tracker.h"
@@ -63,11 +64,11 @@ QList<tracking::TrackTarget> targets()
     QFile file(QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"));
     if (!file.open(QIODevice::ReadOnly))
         return {};
-    const QList<sky::Tle> sets = sky::readTleText(QString::fromLatin1(file.readAll())).sets;
+    const QList<sky::ElementSet> sets = sky::readTleText(QString::fromLatin1(file.readAll())).sets;
     QList<tracking::TrackTarget> out;
     for (const char *name : kTargets) {
         QString error;
-        const sky::Tle *tle = sky::findOneTle(sets, QString::fromLatin1(name), &error);
+        const sky::ElementSet *tle = sky::findOneSatellite(sets, QString::fromLatin1(name), &error);
         if (!tle) {
             std::printf("%s: %s\n", name, qPrintable(error));
             return {};

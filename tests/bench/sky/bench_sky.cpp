@@ -5,10 +5,11 @@
 // beside them Vallado's C++ SGP4 timed the same way (vallado_reference.py,
 // through python3-sgp4 when it has its C++ extension).
 
+#include "sky/tleformat.h"
 #include "sky/passes.h"
 #include "sky/sgp4.h"
 #include "sky/sgp4propagator.h"
-#include "sky/tle.h"
+#include "sky/elementsetformat.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -120,9 +121,9 @@ int main(int argc, char **argv)
         std::fprintf(stderr, "bench_sky: cannot read %s\n", qPrintable(file.fileName()));
         return 1;
     }
-    const QList<Tle> sets = readTleText(QString::fromLatin1(file.readAll())).sets;
+    const QList<ElementSet> sets = readTleText(QString::fromLatin1(file.readAll())).sets;
     QList<Sgp4> nearEarth, deepSpace;
-    for (const Tle &t : sets) {
+    for (const ElementSet &t : sets) {
         Sgp4 s(t);
         if (s.initialError() != Sgp4Error::None)
             continue;
@@ -143,9 +144,9 @@ int main(int argc, char **argv)
 
     // 200 satellites as they come in the file (a mix of LEO, MEO, GEO and
     // Molniya orbits), over a week from the snapshot's newest epoch.
-    const QList<Tle> two_hundred = sets.mid(0, 200);
+    const QList<ElementSet> two_hundred = sets.mid(0, 200);
     double start = 0;
-    for (const Tle &t : sets)
+    for (const ElementSet &t : sets)
         start = std::max(start, t.epochJulian());
     const Station station{55.6875, 12.625, 20, {}, {}};
     QElapsedTimer timer;

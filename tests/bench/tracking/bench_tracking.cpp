@@ -32,8 +32,9 @@
 #include "linkschemes.h"
 #include "session/rotatorsession.h"
 #include "sim/simulator.h"
+#include "sky/tleformat.h"
 #include "sky/passes.h"
-#include "sky/tle.h"
+#include "sky/elementsetformat.h"
 #include "tracking/leastworstswing.h"
 #include "tracking/skytrack.h"
 #include "tracking/rotatorreach.h"
@@ -73,7 +74,7 @@ struct Figures {
 
 struct PassCase {
     const char *name;
-    sky::Tle tle;
+    sky::ElementSet tle;
     sky::Pass pass;
     QList<SkyPoint> points;
 };
@@ -102,9 +103,9 @@ QList<PassCase> findPasses()
     QFile file(QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"));
     if (!file.open(QIODevice::ReadOnly))
         return {};
-    const QList<sky::Tle> sets = sky::readTleText(QString::fromLatin1(file.readAll())).sets;
+    const QList<sky::ElementSet> sets = sky::readTleText(QString::fromLatin1(file.readAll())).sets;
     double epoch = 0;
-    for (const sky::Tle &t : sets)
+    for (const sky::ElementSet &t : sets)
         epoch = std::max(epoch, t.epochJulian());
     struct Want {
         const char *name;
@@ -125,7 +126,7 @@ QList<PassCase> findPasses()
         // A pass that stays clear of north first; one over it only if there is none.
         std::optional<PassCase> overNorth;
         std::optional<PassCase> chosen;
-        for (const sky::Tle &t : sets) {
+        for (const sky::ElementSet &t : sets) {
             const sky::Sgp4 sat(t);
             for (const sky::Pass &p : sky::predictPasses(sat, station(), sky::PassWindow{epoch, epoch + 2.0, 0.0})) {
                 if (p.aosClipped || p.losClipped || p.maxElevationDeg() < w.low || p.maxElevationDeg() > w.high)

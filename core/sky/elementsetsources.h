@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Where element sets come from: a list of URLs (CelesTrak-style group
-// files over HTTP(S), or local files as file:// URLs), each kept in a disk
-// cache so Slew works offline from the last good copy.
+// Where element sets come from: a list of URLs (CelesTrak's GP queries and
+// group files over HTTP(S), in any of the five forms, or local files as
+// file:// URLs), each kept in a disk cache, as it was downloaded, so Slew
+// works offline from the last good copy.
 //
 // Nothing here blocks the event loop: downloads are bounded in size and
 // time (BoundedDownload), and reading files, parsing and writing the cache
@@ -12,7 +13,7 @@
 // class, its cache directory and the saved list of sources.
 
 #include "boundeddownload.h"
-#include "tle.h"
+#include "elementsetformat.h"
 
 #include <QDateTime>
 #include <QList>
@@ -31,7 +32,7 @@ struct SourceUpdate;
 
 // The limits of one refresh of one source, stated in README and in the
 // messages that report them.
-inline constexpr qint64 kMaxElementSetBytes = kLargestElementFile; // tle.h: one cap for files and downloads
+inline constexpr qint64 kMaxElementSetBytes = kLargestElementFile; // elementset.h: one cap for files and downloads
 inline constexpr int kElementSetSilenceMs = 30000;
 inline constexpr int kElementSetTransferMs = 120000;
 
@@ -39,7 +40,9 @@ inline constexpr int kElementSetTransferMs = 120000;
 // `slew --update-elements` refreshes when it is given no URL.
 inline constexpr char kElementSetUrlsSettingsKey[] = "sky/elementSetUrls";
 // A source to suggest where none is kept yet.
-inline constexpr char kExampleElementSetUrl[] = "https://celestrak.org/NORAD/elements/gp.php?GROUP=amateur&FORMAT=tle";
+// CSV, CelesTrak's GP form with room for nine-digit catalogue numbers: a
+// FORMAT=tle query stops at the last five-digit object.
+inline constexpr char kExampleElementSetUrl[] = "https://celestrak.org/NORAD/elements/gp.php?GROUP=amateur&FORMAT=csv";
 
 QList<QUrl> savedElementSetUrls();
 // A source as a user types it: an http or https URL with a host, or a file
@@ -51,27 +54,28 @@ QString elementSetCacheDirectory();
 // The cached copy of one source in `directory`.
 QString elementSetCacheFile(const QString &directory, const QUrl &url);
 
-struct TleSourceStatus {
+struct ElementSetSourceStatus {
     QUrl url;
     bool fetched = false;      // this run's refresh brought a new copy, and it was taken
     bool fromCache = false;    // the sets come from the cached copy
     QDateTime cachedAt;        // when the copy held now was downloaded (UTC)
+    ElementSetForm form = ElementSetForm::Tle; // what the copy held now is written in
     QString error;             // why a refresh or the cache failed, or the new copy was not taken
     int setCount = 0;
-    QList<TleRefusal> refusals;
+    QList<ElementSetRefusal> refusals;
 };
 
 // One line about a source after a refresh, for the log and the terminal:
 // "URL: replaced, 979 sets", "URL: kept the cached copy (979 sets): why".
-QString describeSource(const TleSourceStatus &status);
+QString describeSource(const ElementSetSourceStatus &status);
 // True when the refresh of this source did not end in a new copy, cached.
-bool sourceFailed(const TleSourceStatus &status);
+bool sourceFailed(const ElementSetSourceStatus &status);
 
-class TleSources : public QObject {
+class ElementSetSources : public QObject {
     Q_OBJECT
 public:
-    explicit TleSources(const QString &cacheDirectory, QObject *parent = nullptr);
-    ~TleSources() override;
+    explicit ElementSetSources(const QString &cacheDirectory, QObject *parent = nullptr);
+    ~ElementSetSources() override;
 
     // A new list drops a load or a refresh under way (its signal does not
     // come) and empties the sets until loadFromCache() or refresh().
@@ -92,10 +96,10 @@ public:
     void refresh();
     bool isRefreshing() const { return m_pending > 0; }
 
-    QList<Tle> sets() const;
+    QList<ElementSet> sets() const;
     // The sets the index-th source holds now, as it gave them.
-    QList<Tle> setsFrom(qsizetype index) const { return m_sets.value(index); }
-    QList<TleSourceStatus> status() const { return m_status; }
+    QList<ElementSet> setsFrom(qsizetype index) const { return m_sets.value(index); }
+    QList<ElementSetSourceStatus> status() const { return m_status; }
     QString cacheFile(const QUrl &url) const { return elementSetCacheFile(m_cacheDirectory, url); }
 
 signals:
@@ -113,8 +117,8 @@ private:
 
     QString m_cacheDirectory;
     QList<QUrl> m_urls;
-    QList<TleSourceStatus> m_status;
-    QList<QList<Tle>> m_sets;
+    QList<ElementSetSourceStatus> m_status;
+    QList<QList<ElementSet>> m_sets;
     QList<quint64> m_appliedSequence; // the newest job each source shows
     QList<BoundedDownload *> m_downloads;
     QNetworkAccessManager *m_network = nullptr;
@@ -128,13 +132,13 @@ private:
 // Element sets older than a limit at a time: they predict worse every day
 // (a LEO set a week old can be minutes off).
 struct ElementAge {
-    const Tle *tle = nullptr;
+    const ElementSet *set = nullptr;
     double ageDays = 0;
 };
-QList<ElementAge> staleElements(const QList<Tle> &sets, double julianNow, double limitDays);
+QList<ElementAge> staleElements(const QList<ElementSet> &sets, double julianNow, double limitDays);
 
 // The epoch of the newest set (a Julian date), none for no sets: how current
 // a source is, as a group file holds sets of many ages.
-std::optional<double> newestEpochJulian(const QList<Tle> &sets);
+std::optional<double> newestEpochJulian(const QList<ElementSet> &sets);
 
 } // namespace slew::sky

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "tlesources.h"
+#include "elementsetsources.h"
 
 #include "elementsetcache.h"
 
@@ -49,9 +49,10 @@ QString elementSetCacheDirectory()
 
 QString elementSetCacheFile(const QString &directory, const QUrl &url)
 {
-    // One file a URL, named by its hash: URLs make poor file names.
+    // One file a URL, named by its hash: URLs make poor file names. It holds
+    // the source's answer as it came, in whichever form.
     const QByteArray hash = QCryptographicHash::hash(url.toEncoded(), QCryptographicHash::Sha1).toHex();
-    return QDir(directory).filePath(QString::fromLatin1(hash.left(16)) + QStringLiteral(".tle"));
+    return QDir(directory).filePath(QString::fromLatin1(hash.left(16)) + QStringLiteral(".elements"));
 }
 
 namespace {
@@ -61,14 +62,14 @@ QString setsText(int n)
     return n == 1 ? QStringLiteral("1 set") : QStringLiteral("%1 sets").arg(n);
 }
 
-QString refusedText(const TleSourceStatus &s)
+QString refusedText(const ElementSetSourceStatus &s)
 {
     return s.refusals.isEmpty() ? QString() : QStringLiteral(" (%1 refused)").arg(s.refusals.size());
 }
 
 } // namespace
 
-QString describeSource(const TleSourceStatus &s)
+QString describeSource(const ElementSetSourceStatus &s)
 {
     const QString url = s.url.toString();
     if (s.fetched && s.error.isEmpty())
@@ -83,12 +84,12 @@ QString describeSource(const TleSourceStatus &s)
         .arg(url, s.error.isEmpty() ? QStringLiteral("not refreshed") : s.error);
 }
 
-bool sourceFailed(const TleSourceStatus &s)
+bool sourceFailed(const ElementSetSourceStatus &s)
 {
     return !s.fetched || !s.error.isEmpty();
 }
 
-TleSources::TleSources(const QString &cacheDirectory, QObject *parent)
+ElementSetSources::ElementSetSources(const QString &cacheDirectory, QObject *parent)
     : QObject(parent)
     , m_cacheDirectory(cacheDirectory)
     , m_network(new QNetworkAccessManager(this))
@@ -97,15 +98,15 @@ TleSources::TleSources(const QString &cacheDirectory, QObject *parent)
 
 // Jobs still running on a worker finish there and are dropped: they hold
 // copies of what they need, never this object.
-TleSources::~TleSources() = default;
+ElementSetSources::~ElementSetSources() = default;
 
-void TleSources::setUrls(const QList<QUrl> &urls)
+void ElementSetSources::setUrls(const QList<QUrl> &urls)
 {
     ++m_generation;
     qDeleteAll(m_downloads);
     m_urls = urls;
-    m_status = QList<TleSourceStatus>(urls.size());
-    m_sets = QList<QList<Tle>>(urls.size());
+    m_status = QList<ElementSetSourceStatus>(urls.size());
+    m_sets = QList<QList<ElementSet>>(urls.size());
     m_appliedSequence = QList<quint64>(urls.size(), 0);
     m_downloads = QList<BoundedDownload *>(urls.size(), nullptr);
     m_pending = 0;
@@ -114,7 +115,7 @@ void TleSources::setUrls(const QList<QUrl> &urls)
         m_status[i].url = urls[i];
 }
 
-void TleSources::loadFromCache()
+void ElementSetSources::loadFromCache()
 {
     if (m_urls.isEmpty()) {
         // Still from the event loop, as when there is something to read.
@@ -131,7 +132,7 @@ void TleSources::loadFromCache()
     }
 }
 
-void TleSources::refresh()
+void ElementSetSources::refresh()
 {
     if (m_pending > 0)
         return;
@@ -159,7 +160,7 @@ void TleSources::refresh()
     }
 }
 
-void TleSources::startDownload(int index)
+void ElementSetSources::startDownload(int index)
 {
     auto *download = new BoundedDownload(m_network, m_urls[index], m_limits, this);
     m_downloads[index] = download;
@@ -176,7 +177,7 @@ void TleSources::startDownload(int index)
             });
 }
 
-void TleSources::startJob(int index, Step step, std::function<SourceUpdate()> job)
+void ElementSetSources::startJob(int index, Step step, std::function<SourceUpdate()> job)
 {
     const quint64 generation = m_generation;
     const quint64 sequence = ++m_sequence;
@@ -191,7 +192,7 @@ void TleSources::startJob(int index, Step step, std::function<SourceUpdate()> jo
     watcher->setFuture(QtConcurrent::run(std::move(job)));
 }
 
-void TleSources::apply(int index, quint64 sequence, const SourceUpdate &update)
+void ElementSetSources::apply(int index, quint64 sequence, const SourceUpdate &update)
 {
     // A cache load that ends after a refresh of the same source must not
     // bring back the copy the refresh replaced.
@@ -202,7 +203,7 @@ void TleSources::apply(int index, quint64 sequence, const SourceUpdate &update)
     m_sets[index] = update.sets;
 }
 
-void TleSources::stepDone(Step step)
+void ElementSetSources::stepDone(Step step)
 {
     int &left = step == Step::Load ? m_loading : m_pending;
     if (left == 0 || --left > 0)
@@ -214,28 +215,28 @@ void TleSources::stepDone(Step step)
         emit finished();
 }
 
-QList<Tle> TleSources::sets() const
+QList<ElementSet> ElementSetSources::sets() const
 {
     // A satellite listed by several sources is kept once, with its newest set.
-    QList<Tle> all;
-    for (const QList<Tle> &sets : m_sets)
+    QList<ElementSet> all;
+    for (const QList<ElementSet> &sets : m_sets)
         all += sets;
     return mergeByCatalogueNumber(all);
 }
 
-QList<ElementAge> staleElements(const QList<Tle> &sets, double julianNow, double limitDays)
+QList<ElementAge> staleElements(const QList<ElementSet> &sets, double julianNow, double limitDays)
 {
     QList<ElementAge> stale;
-    for (const Tle &t : sets)
+    for (const ElementSet &t : sets)
         if (julianNow - t.epochJulian() > limitDays)
             stale.append({&t, julianNow - t.epochJulian()});
     return stale;
 }
 
-std::optional<double> newestEpochJulian(const QList<Tle> &sets)
+std::optional<double> newestEpochJulian(const QList<ElementSet> &sets)
 {
     std::optional<double> newest;
-    for (const Tle &t : sets)
+    for (const ElementSet &t : sets)
         newest = std::max(newest.value_or(t.epochJulian()), t.epochJulian());
     return newest;
 }
