@@ -131,12 +131,9 @@ ElementSetRead readOmmXml(const QByteArray &bytes)
             break;
         }
         case XmlScanner::Token::Text: {
-            const bool read = xml.appendText(field >= 0 ? &omm.texts : nullptr);
-            if (!read) {
-                result.sets.clear();
-                result.refusals = {{xml.line(), 0, xml.error()}};
-                return result;
-            }
+            // A reference or a character it refuses: the scanner is at Error
+            // now, and the next token says so.
+            xml.appendText(field >= 0 ? &omm.texts : nullptr);
             break;
         }
         case XmlScanner::Token::EndElement:
@@ -155,7 +152,7 @@ ElementSetRead readOmmXml(const QByteArray &bytes)
                 result.refusals.append({1, 0, QStringLiteral("the XML holds no <omm> element: not an OMM file")});
             return result;
         case XmlScanner::Token::Error:
-            if (xml.error().contains(QLatin1String("document type declaration"))) {
+            if (xml.refusedEntities()) {
                 // Refused before anything it declares could be used.
                 result.sets.clear();
                 result.refusals = {{xml.line(), 0, xml.error()}};

@@ -60,6 +60,12 @@ XmlScanner::Token XmlScanner::fail(const QString &why)
     return m_state;
 }
 
+XmlScanner::Token XmlScanner::refuseEntities(const QString &why)
+{
+    m_refusedEntities = true;
+    return fail(why);
+}
+
 void XmlScanner::countLines(qsizetype from, qsizetype to)
 {
     m_line += int(std::count(m_bytes.data() + from, m_bytes.data() + to, '\n'));
@@ -163,7 +169,7 @@ std::optional<XmlScanner::Token> XmlScanner::markup()
         return m_state = Token::Text;
     }
     if (rest.startsWith("<!DOCTYPE"))
-        return fail(QStringLiteral("the XML has a document type declaration (<!DOCTYPE>), which an OMM never needs: "
+        return refuseEntities(QStringLiteral("the XML has a document type declaration (<!DOCTYPE>), which an OMM never needs: "
                                    "refused, nothing read"));
     if (rest.startsWith("<?")) {
         const qsizetype start = m_at + 2;
@@ -261,6 +267,15 @@ bool XmlScanner::appendText(QString *out)
     if (m_state != Token::Text)
         return true;
     const QByteArrayView text = m_text;
+    // XML 1.0 allows no control character but tab and the line ends, raw
+    // or as a reference.
+    for (const char c : text) {
+        if ((unsigned char)c < 0x20 && c != '\t' && c != '\n' && c != '\r') {
+            m_error = QStringLiteral("a control character (0x%1) in the text").arg(int(c), 2, 16, QLatin1Char('0'));
+            m_state = Token::Error;
+            return false;
+        }
+    }
     if (m_textIsCdata || !text.contains('&')) {
         if (out)
             *out += QString::fromUtf8(text);
@@ -306,8 +321,7 @@ bool XmlScanner::appendText(QString *out)
                 return false;
             }
         } else {
-            m_error = QStringLiteral("the XML refers to an entity '%1': refused, nothing read").arg(shown(reference));
-            m_state = Token::Error;
+            refuseEntities(QStringLiteral("the XML refers to an entity '%1': refused, nothing read").arg(shown(reference)));
             return false;
         }
         *out += QString::fromUcs4(&c, 1);

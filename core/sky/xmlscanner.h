@@ -44,9 +44,14 @@ public:
     int line() const { return m_tokenLine; }
     // Why it stopped at Error.
     QString error() const { return m_error; }
+    // Whether that was a declaration or a reference to an entity: the XML
+    // tried to define or use what a hostile file uses, so nothing read from
+    // it before should be trusted either.
+    bool refusedEntities() const { return m_refusedEntities; }
 
 private:
     Token fail(const QString &why);
+    Token refuseEntities(const QString &why);
     Token startTag();
     Token endTag();
     std::optional<Token> markup(); // <! … and <? …: nothing for a comment or an instruction
@@ -68,6 +73,7 @@ private:
     QByteArrayView m_name;
     QByteArrayView m_text;
     QString m_error;
+    bool m_refusedEntities = false;
     Token m_state = Token::Text;
 };
 

@@ -34,6 +34,8 @@ private slots:
         QVERIFY(favourites.toggle(FavouriteTarget::satellite(satellite(25544, QStringLiteral("ISS (ZARYA)")))));
         QVERIFY(favourites.toggle(FavouriteTarget::moon()));
         QVERIFY(favourites.toggle(FavouriteTarget::satellite(satellite(33591, QStringLiteral("NOAA 19")))));
+        // Nine digits, as the catalogue numbers objects since July 2026.
+        QVERIFY(favourites.toggle(FavouriteTarget::satellite(satellite(270033591, QStringLiteral("NEW SAT")))));
         QVERIFY(!favourites.toggle(FavouriteTarget::moon())); // unmarked again
         QVERIFY(favourites.toggle(FavouriteTarget::sun()));
         {
@@ -45,11 +47,12 @@ private slots:
         const QSettings settings(file, QSettings::IniFormat);
         again.load(settings);
         const QList<FavouriteTarget> list = again.list();
-        QCOMPARE(list.size(), 3);
+        QCOMPARE(list.size(), 4);
         QCOMPARE(list[0].catalogueNumber, 25544);
         QCOMPARE(list[0].name, QStringLiteral("ISS (ZARYA)"));
         QCOMPARE(list[1].name, QStringLiteral("NOAA 19"));
-        QCOMPARE(list[2].kind, FavouriteTarget::Kind::Sun);
+        QCOMPARE(list[2].catalogueNumber, 270033591);
+        QCOMPARE(list[3].kind, FavouriteTarget::Kind::Sun);
         QVERIFY(!again.contains(FavouriteTarget::moon()));
         // The name is not part of who a satellite is.
         QVERIFY(again.contains(FavouriteTarget::satellite(satellite(25544, QStringLiteral("ISS")))));

@@ -14,6 +14,7 @@
 #include "sky/ommxml.h"
 #include "sky/sgp4.h"
 #include "sky/tleformat.h"
+#include "sky/utctime.h"
 
 #include <QFile>
 #include <QTemporaryDir>
@@ -186,7 +187,7 @@ void TestGpForms::everyFormWritesWhatItReads()
     // An epoch with nanoseconds, and a name that needs quoting or escaping.
     sets[0].name = QStringLiteral("A, \"QUOTED\" <NAME> & [-]");
     sets[0].epochDayFraction = double(12345678901234LL) / 86400e9;
-    const WrittenElementSets written = writeElementSets(sets, form, QDateTime(QDate(2026, 12, 5), QTime(12, 0), Qt::UTC));
+    const WrittenElementSets written = writeElementSets(sets, form, utcFromJulian(*julianFromIso(QStringLiteral("2026-12-05T12:00:00Z"))));
     QVERIFY(written.left.isEmpty());
     const ElementSetText read = readElementSets(written.bytes);
     QCOMPARE(read.form, form);
@@ -372,10 +373,17 @@ void TestGpForms::xmlWithADoctypeOrEntitiesIsRefusedAtOnce()
     read = readOmmXml("<?xml version=\"1.0\"?><!DOCTYPE ndm SYSTEM \"file:///etc/passwd\"><ndm/>");
     QVERIFY(read.sets.isEmpty());
     QVERIFY(read.refusals.value(0).reason.contains(QStringLiteral("document type declaration")));
-    // An entity never declared is refused too, and nothing is read.
-    read = readOmmXml(QByteArray(good).replace("<OBJECT_NAME>FO-29 (JAS-2)", "<OBJECT_NAME>&x;"));
-    QVERIFY(read.sets.isEmpty() || read.sets.size() < 5);
-    QVERIFY(!read.refusals.isEmpty());
+    // An entity never declared is refused too, and nothing is read, not
+    // even the sets before it.
+    read = readOmmXml(QByteArray(good).replace("<OBJECT_NAME>GP TEST GEO-6", "<OBJECT_NAME>&x;"));
+    QVERIFY(read.sets.isEmpty());
+    QCOMPARE(read.refusals.size(), 1);
+    QVERIFY2(read.refusals[0].reason.contains(QStringLiteral("refers to an entity 'x'")), qPrintable(read.refusals[0].reason));
+    // A control character is only a broken file: the sets before it stay.
+    read = readOmmXml(QByteArray(good).replace("<OBJECT_NAME>GP TEST GEO-6", "<OBJECT_NAME>GP\x01TEST"));
+    QCOMPARE(read.sets.size(), 4);
+    QCOMPARE(read.refusals.size(), 1);
+    QVERIFY2(read.refusals[0].reason.contains(QStringLiteral("a control character (0x01)")), qPrintable(read.refusals[0].reason));
     // The five predefined ones are text, not entities to refuse.
     read = readOmmXml(QByteArray(good).replace("<OBJECT_NAME>FO-29 (JAS-2)", "<OBJECT_NAME>FO-29 &amp; &lt;JAS-2&gt;"));
     QVERIFY(read.refusals.isEmpty());
