@@ -1,22 +1,28 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
-# A fresh Debian 12 in a directory (debootstrap --variant=minbase, the
+# A fresh Debian in a directory (debootstrap --variant=minbase, the
 # smallest system apt works on), for the two claims a new user relies on:
 #
-#   fresh-machine.sh test          the committed source, copied in, passes
-#                                  `packaging/dev.sh test` with nothing but
-#                                  what dev.sh installs from the list
-#   fresh-machine.sh install DEB   the package installs with apt-get on a
-#                                  system without the build dependencies,
-#                                  and both programs run
+#   fresh-machine.sh [RELEASE] test          the committed source, copied in,
+#                                            passes `packaging/dev.sh test` with
+#                                            nothing but what dev.sh installs
+#                                            from the list
+#   fresh-machine.sh [RELEASE] install DEB   the package installs with apt-get
+#                                            on a system without the build
+#                                            dependencies, and both programs run
 #
-# Needs root and Debian's package archive. The base system is made once in
-# $SLEW_FRESH_DIR (default /var/tmp/slew-fresh) and copied for each run, so
-# every run starts from the same fresh system.
+# RELEASE is bookworm (Debian 12, the default) or trixie (Debian 13).
+# Needs root and Debian's package archive. Each release's base system is made
+# once in $SLEW_FRESH_DIR/RELEASE (default /var/tmp/slew-fresh) and copied for
+# each run, so every run starts from the same fresh system.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 top=$(cd "$here/.." && pwd)
-dir=${SLEW_FRESH_DIR:-/var/tmp/slew-fresh}
+release=bookworm
+case ${1:-} in
+bookworm|trixie) release=$1; shift ;;
+esac
+dir=${SLEW_FRESH_DIR:-/var/tmp/slew-fresh}/$release
 [ "$(id -u)" -eq 0 ] || { echo "fresh-machine.sh needs root (debootstrap, chroot)"; exit 2; }
 
 base=$dir/base
@@ -28,7 +34,14 @@ if [ ! -x "$base/usr/bin/apt-get" ]; then
     [ -n "$mirror" ] || mirror=$(awk '$1 == "deb" {print $2; exit}' /etc/apt/sources.list)
     rm -rf "$base"
     mkdir -p "$dir"
-    debootstrap --variant=minbase bookworm "$base" "$mirror"
+    debootstrap --variant=minbase "$release" "$base" "$mirror"
+    # debootstrap writes only the release itself; the security archive and
+    # the point updates are what an installed system has too.
+    cat > "$base/etc/apt/sources.list" <<SOURCES
+deb $mirror $release main
+deb $mirror $release-updates main
+deb ${mirror%/debian}/debian-security $release-security main
+SOURCES
 fi
 
 run=$dir/run
@@ -66,7 +79,7 @@ install)
     echo "installed size: $(in_root dpkg-query -W -f='${Installed-Size}' slew) KiB"
     ;;
 *)
-    echo "usage: $0 test | install DEB" >&2
+    echo "usage: $0 [bookworm|trixie] test | install DEB" >&2
     exit 2
     ;;
 esac

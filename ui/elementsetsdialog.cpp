@@ -9,6 +9,7 @@
 
 #include "sky/skyvector.h"
 #include "sky/elementsetsources.h"
+#include "sky/utctime.h"
 
 #include <QDateTime>
 #include <QDialogButtonBox>
@@ -215,8 +216,7 @@ void ElementSetsDialog::showStatus()
         for (const sky::ElementSet &t : m_sources->setsFrom(m_status->topLevelItemCount() - 1)) {
             auto *child = new QTreeWidgetItem(item);
             child->setText(SourceColumn, t.name.isEmpty() ? tr("(no name)") : t.name);
-            const QDateTime epoch = QDateTime::fromMSecsSinceEpoch(
-                qint64((t.epochJulian() - sky::kUnixEpochJulian) * sky::kSecondsPerDay * 1000.0), Qt::UTC);
+            const QDateTime epoch = sky::utcFromJulian(t.epochJulian());
             child->setText(StateColumn, epoch.toString(QStringLiteral("yyyy-MM-dd hh:mm 'UTC'")));
             child->setText(SetsColumn, QString::number(t.catalogueNumber));
             child->setText(AgeColumn, tr("%1 days").arg(now - t.epochJulian(), 0, 'f', 1));

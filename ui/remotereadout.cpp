@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "remotereadout.h"
 
+#include "sky/utctime.h"
+
 #include <QDateTime>
 #include <QGridLayout>
 #include <QLabel>
@@ -19,7 +21,7 @@ QLabel *plainLabel(const QString &name)
 
 QString utcTime(qint64 ms)
 {
-    return QDateTime::fromMSecsSinceEpoch(ms, Qt::UTC).toString(QStringLiteral("HH:mm:ss"));
+    return sky::utcFromUnixMs(ms).toString(QStringLiteral("HH:mm:ss"));
 }
 
 } // namespace

@@ -4,6 +4,8 @@
 #include "statuslanes.h"
 #include "telemetryrecorder.h"
 
+#include "sky/utctime.h"
+
 #include <QDateTime>
 #include <QIODevice>
 
@@ -131,7 +133,7 @@ bool writeTelemetryCsv(QIODevice &out, const model::TelemetryHistory &history,
     }
     bool ok = out.write(header + '\n') >= 0;
     history.forEachRow(ids, fromMs, toMs, [&](qint64 t, const std::vector<double> &values) {
-        QByteArray row = QDateTime::fromMSecsSinceEpoch(t, Qt::UTC).toString(Qt::ISODateWithMs).toLatin1() + ','
+        QByteArray row = sky::utcFromUnixMs(t).toString(Qt::ISODateWithMs).toLatin1() + ','
             + QByteArray::number(t);
         for (std::size_t i = 0; i < columns.size(); ++i)
             row += ',' + field(telemetryCsvValue(columns[i], values[i]));

@@ -15,6 +15,7 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QSpinBox>
+#include <QTimeZone>
 #include <QVBoxLayout>
 
 #include <cmath>
@@ -38,7 +39,13 @@ TimeController::TimeController(station::Station *station, QWidget *parent)
 
     m_start = new QDateTimeEdit;
     m_start->setObjectName(QStringLiteral("timeStart"));
+    // UTC as each Qt says it: setTimeZone came with 6.7, and 6.8 deprecates
+    // setTimeSpec.
+#if QT_VERSION >= QT_VERSION_CHECK(6, 7, 0)
+    m_start->setTimeZone(QTimeZone::UTC);
+#else
     m_start->setTimeSpec(Qt::UTC);
+#endif
     m_start->setDisplayFormat(QStringLiteral("yyyy-MM-dd HH:mm:ss"));
     m_start->setCalendarPopup(true);
     // The next whole minute: a time an operator would type.

@@ -3,6 +3,8 @@
 
 #include "jsonfields.h"
 
+#include "sky/utctime.h"
+
 #include <QDateTime>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -52,7 +54,7 @@ QByteArray encodeStationState(const StationState &s)
     QJsonObject o;
     o.insert(QStringLiteral("unix_ms"), double(s.unixMs));
     o.insert(QStringLiteral("time"),
-             QDateTime::fromMSecsSinceEpoch(s.unixMs, Qt::UTC).toString(Qt::ISODateWithMs));
+             sky::utcFromUnixMs(s.unixMs).toString(Qt::ISODateWithMs));
     o.insert(QStringLiteral("link"), s.link);
     if (!s.linkDetail.isEmpty())
         o.insert(QStringLiteral("link_detail"), s.linkDetail);

@@ -11,7 +11,16 @@ namespace slew::sky {
 
 QDateTime utcFromJulian(double julian)
 {
-    return QDateTime::fromMSecsSinceEpoch(qint64(std::llround(unixSecondsFromJulian(julian) * 1000.0)), Qt::UTC);
+    return utcFromUnixMs(qint64(std::llround(unixSecondsFromJulian(julian) * 1000.0)));
+}
+
+QDateTime utcFromUnixMs(qint64 ms)
+{
+#if QT_VERSION >= QT_VERSION_CHECK(6, 5, 0)
+    return QDateTime::fromMSecsSinceEpoch(ms, QTimeZone::UTC);
+#else
+    return QDateTime::fromMSecsSinceEpoch(ms, Qt::UTC);
+#endif
 }
 
 QString isoUtc(double julian)

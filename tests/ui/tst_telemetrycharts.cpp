@@ -11,6 +11,8 @@
 #include "telemetryrecorder.h"
 #include "windowfixture.h"
 
+#include "sky/utctime.h"
+
 #include <QCategoryAxis>
 #include <QChart>
 #include <QChartView>
@@ -374,7 +376,7 @@ private slots:
 
         auto row = [&](qint64 t, std::initializer_list<std::pair<QString, QString>> cells) {
             QStringList expected(header.size());
-            expected[0] = QDateTime::fromMSecsSinceEpoch(t, Qt::UTC).toString(Qt::ISODateWithMs);
+            expected[0] = slew::sky::utcFromUnixMs(t).toString(Qt::ISODateWithMs);
             expected[1] = QString::number(t);
             for (const auto &[name, value] : cells)
                 expected[header.indexOf(name)] = value;
