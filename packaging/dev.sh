@@ -3,9 +3,11 @@
 # One entry point for developers and CI.
 #
 #   packaging/dev.sh run [slew arguments]   install what is missing, build, start Slew
+#   packaging/dev.sh build                  install what is missing, build (build/)
 #   packaging/dev.sh test                   install what is missing, build, run every test
 #   packaging/dev.sh bench                  build and run the benchmarks (tests/bench)
 #   packaging/dev.sh package                build a Debian package (build/slew_*.deb), stripped
+#   packaging/dev.sh sanitize-build         build with ASan+UBSan (build-sanitize)
 #   packaging/dev.sh sanitize [ctest args]  build with ASan+UBSan (build-sanitize) and run the tests
 #   packaging/dev.sh fuzz [SECONDS]         build the libFuzzer targets (build-fuzz), run each SECONDS
 #
@@ -103,6 +105,14 @@ fuzz_run() {
 cmd=${1:-}
 [ $# -gt 0 ] && shift
 case "$cmd" in
+build)
+    install_missing
+    configure_and_build
+    ;;
+sanitize-build)
+    install_missing
+    sanitize_configure_and_build
+    ;;
 run)
     install_missing
     configure_and_build
@@ -155,7 +165,7 @@ fuzz)
     exit $failed
     ;;
 *)
-    echo "usage: $0 run [slew arguments] | test [ctest arguments] | bench | package | sanitize [ctest arguments] | fuzz [seconds]" >&2
+    echo "usage: $0 run [slew arguments] | build | test [ctest arguments] | bench | package | sanitize-build | sanitize [ctest arguments] | fuzz [seconds]" >&2
     exit 2
     ;;
 esac
