@@ -75,6 +75,9 @@ sed -nE 's/^([A-Za-z0-9_]+):FILEPATH=(\/(usr|bin|lib)\/.*)$/\1 \2/p' "$build/CMa
   | while read -r key path; do
         case $key in
         SLEW_TEST_PEER_*|CMAKE_MAKE_PROGRAM) echo "$path" ;;
+        # A compiler cache is used when present and never needed (the
+        # build without it is the same build), so the list need not bring it.
+        SLEW_CCACHE_PROGRAM) ;;
         *) grep -qF "$path" "$work/commands" && echo "$path" ;;
         esac
     done >> "$work/files"
