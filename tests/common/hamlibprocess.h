@@ -8,6 +8,7 @@
 #include <QTcpServer>
 #include <QTcpSocket>
 #include <QTest>
+#include <QVersionNumber>
 
 inline QString hamlibProgram(const char *name)
 {
@@ -39,6 +40,15 @@ inline RotctlResult runRotctl(const QStringList &arguments, int timeoutMs = 2000
     r.out = p.readAllStandardOutput();
     r.err = p.readAllStandardError();
     return r;
+}
+
+// The version of Hamlib installed (Debian 12 has 4.5.4, Debian 13 4.6.2),
+// from `rotctl --version`: a peer's bytes on the wire differ between them.
+inline QVersionNumber hamlibVersion()
+{
+    const RotctlResult r = runRotctl({QStringLiteral("--version")}, 10000);
+    const qsizetype at = r.out.indexOf("Hamlib ");
+    return at < 0 ? QVersionNumber() : QVersionNumber::fromString(QString::fromLatin1(r.out.mid(at + 7, 16)));
 }
 
 // A free local TCP port (bound, then released for the child to take).
