@@ -8,8 +8,13 @@
 #include <mosquitto.h>
 #include <mqtt_protocol.h>
 
+#include <netdb.h>
+#include <sys/socket.h>
+
+#include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <vector>
 
 namespace slew::remote {
 namespace {
@@ -20,6 +25,35 @@ void initialiseLibraryOnce()
     // the process ends.
     static std::once_flag once;
     std::call_once(once, [] { mosquitto_lib_init(); });
+}
+
+// The wildcard address of each family `host` resolves to, in the
+// resolver's order ("::" for IPv6, "0.0.0.0" for IPv4), or one null (no
+// binding) when it resolves to one family or not at all. Why: an
+// asynchronous connect in libmosquitto takes the first address whose
+// connect() is under way and never tries the next, so where "localhost" is
+// ::1 first (Debian's /etc/hosts) and the broker listens on 127.0.0.1
+// alone, the connection was refused and reported as "Protocol error" (the
+// TLS handshake on a dead socket). Bound to a family's wildcard address,
+// libmosquitto skips the addresses of the other family.
+std::vector<const char *> wildcardAddressesFor(const QByteArray &host)
+{
+    addrinfo hints{};
+    hints.ai_family = AF_UNSPEC;
+    hints.ai_socktype = SOCK_STREAM;
+    addrinfo *found = nullptr;
+    std::vector<const char *> binds;
+    if (getaddrinfo(host.constData(), nullptr, &hints, &found) == 0) {
+        for (const addrinfo *a = found; a; a = a->ai_next) {
+            const char *wildcard = a->ai_family == AF_INET6 ? "::" : a->ai_family == AF_INET ? "0.0.0.0" : nullptr;
+            if (wildcard && std::find(binds.begin(), binds.end(), wildcard) == binds.end())
+                binds.push_back(wildcard);
+        }
+        freeaddrinfo(found);
+    }
+    if (binds.size() < 2)
+        return {nullptr};
+    return binds;
 }
 
 QString errorText(int rc)
@@ -144,42 +178,38 @@ bool MosquittoThread::waitBeforeRetry(int seconds)
 
 void MosquittoThread::run()
 {
-    const BrokerAddress &b = m_settings.broker;
-    const QByteArray host = b.host.toUtf8();
+    const QByteArray host = m_settings.broker.host.toUtf8();
     int attempt = 0;
-    bool first = true;
+    std::size_t familyThatWorked = 0;
     while (!stopping()) {
-        m_connected = false;
-        m_refusal.clear();
-        // Asynchronous: the TCP connect and the TLS handshake go on in the
-        // loop below, which can give up on them; only a name lookup waits here.
-        int rc = first ? mosquitto_connect_bind_async(m_mosq, host.constData(), b.port, m_settings.keepAliveSeconds,
-                                                      nullptr)
-                       : mosquitto_reconnect_async(m_mosq);
-        first = false;
+        // One try for each address family the name resolves to, starting
+        // with the one that worked last time; see wildcardAddressesFor.
+        const std::vector<const char *> binds = wildcardAddressesFor(host);
         QString why;
-        if (rc == MOSQ_ERR_SUCCESS) {
-            const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(m_settings.connectTimeoutMs);
-            while (!stopping()) {
-                rc = mosquitto_loop(m_mosq, 1000, 1);
-                if (rc != MOSQ_ERR_SUCCESS)
-                    break;
-                if (m_connected) {
-                    attempt = 0;
-                } else if (std::chrono::steady_clock::now() > deadline) {
-                    rc = MOSQ_ERR_TIMEOUT;
-                    break;
-                }
-            }
+        bool wasUp = false;
+        for (std::size_t tried = 0; tried < binds.size() && !stopping(); ++tried) {
+            const std::size_t family = (familyThatWorked + tried) % binds.size();
+            const int rc = connectOnce(host, binds[family], &wasUp);
             if (stopping())
                 break;
-            why = !m_refusal.isEmpty()       ? m_refusal
-                  : rc == MOSQ_ERR_TIMEOUT   ? QStringLiteral("no answer within %1 s").arg(m_settings.connectTimeoutMs / 1000)
-                  : rc == MOSQ_ERR_CONN_LOST ? QStringLiteral("the connection was lost")
-                                             : errorText(rc);
-        } else {
-            why = errorText(rc);
+            const QString reason = !m_refusal.isEmpty()     ? m_refusal
+                                   : rc == MOSQ_ERR_TIMEOUT ? QStringLiteral("no answer within %1 s").arg(m_settings.connectTimeoutMs / 1000)
+                                   : rc == MOSQ_ERR_CONN_LOST ? QStringLiteral("the connection was lost")
+                                                              : errorText(rc);
+            // The reason from the family that got furthest: a socket error
+            // (nobody listening there) says less than a broker's answer.
+            if (why.isEmpty() || rc != MOSQ_ERR_ERRNO)
+                why = reason;
+            if (wasUp || !m_refusal.isEmpty()) {
+                if (wasUp) {
+                    familyThatWorked = family;
+                    attempt = 0;
+                }
+                break;
+            }
         }
+        if (stopping())
+            break;
         const int delay = reconnectDelaySeconds(attempt++);
         post([why, delay](MqttClient *c) { c->onLost(why, delay); });
         if (!waitBeforeRetry(delay))
@@ -189,6 +219,29 @@ void MosquittoThread::run()
     std::lock_guard lock(m_mutex);
     m_finished = true;
     m_wake.notify_all();
+}
+
+int MosquittoThread::connectOnce(const QByteArray &host, const char *bindAddress, bool *wasUp)
+{
+    m_connected = false;
+    m_refusal.clear();
+    // Asynchronous: the TCP connect and the TLS handshake go on in the
+    // loop below, which can give up on them; only a name lookup waits here.
+    int rc = mosquitto_connect_bind_async(m_mosq, host.constData(), m_settings.broker.port,
+                                          m_settings.keepAliveSeconds, bindAddress);
+    if (rc != MOSQ_ERR_SUCCESS)
+        return rc;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(m_settings.connectTimeoutMs);
+    while (!stopping()) {
+        rc = mosquitto_loop(m_mosq, 1000, 1);
+        if (rc != MOSQ_ERR_SUCCESS)
+            return rc;
+        if (m_connected)
+            *wasUp = true;
+        else if (!*wasUp && std::chrono::steady_clock::now() > deadline)
+            return MOSQ_ERR_TIMEOUT;
+    }
+    return MOSQ_ERR_SUCCESS;
 }
 
 int MosquittoThread::publish(const MqttMessage &message, int *mid)

@@ -59,6 +59,10 @@ private:
     explicit MosquittoThread(const MqttSettings &settings);
     bool configure(QString *error);
     void run();
+    // One connection: made, then served until it ends or fails (the
+    // MOSQ_ERR_* code; *wasUp once the broker accepted it). `bindAddress`
+    // picks the address family (run()).
+    int connectOnce(const QByteArray &host, const char *bindAddress, bool *wasUp);
     bool waitBeforeRetry(int seconds);
     bool stopping();
     // Runs `call` on the receiver's thread, unless it has gone.
