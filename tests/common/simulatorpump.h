@@ -25,9 +25,15 @@
 
 class SimulatorPump : public QObject {
 public:
+    // Its object name, to find one among a parent's children: the class has
+    // no Q_OBJECT (a header-only helper moc never sees), so findChild by its
+    // type would take any QObject (and Qt 6.8 refuses to compile it).
+    static constexpr char kObjectName[] = "simulatorPump";
+
     explicit SimulatorPump(double sliceSeconds = 0.005, QObject *parent = nullptr)
         : QObject(parent), m_slice(sliceSeconds)
     {
+        setObjectName(QLatin1String(kObjectName));
         m_timer.setInterval(0);
         QObject::connect(&m_timer, &QTimer::timeout, this, [this] {
             slew::sim::Simulator *sim = m_sim;

@@ -104,7 +104,7 @@ private:
     {
         // The session keeps the simulator's clock, which this pump moves on
         // from the event loop, through reconnects.
-        if (!s.findChild<SimulatorPump *>())
+        if (!s.findChild<QObject *>(QLatin1String(SimulatorPump::kObjectName), Qt::FindDirectChildrenOnly))
             (new SimulatorPump(0.005, &s))->follow(&s);
         s.connectTo(QString::fromLatin1(uri));
         runEventLoopUntil([&] { return s.capabilities().probed; }, 10000);
