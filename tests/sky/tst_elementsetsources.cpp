@@ -99,12 +99,14 @@ qint64 peakMemoryKiB()
 
 // Reading up to the cap takes 32 MiB and a copy: 66 MB measured. The whole
 // answer would take several hundred. The address sanitizer keeps freed
-// memory in quarantine, so its bound is looser.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr qint64 kPeakGrowthLimitKiB = 400 * 1024;
-#else
-constexpr qint64 kPeakGrowthLimitKiB = 120 * 1024;
-#endif
+// memory in quarantine, so its bound is looser. (The test's own code is
+// not instrumented in the sanitizer build, so the runtime is asked for:
+// its entry point is there only when it is linked in.)
+extern "C" void __asan_init() __attribute__((weak));
+qint64 peakGrowthLimitKiB()
+{
+    return &__asan_init != nullptr ? 400 * 1024 : 120 * 1024;
+}
 
 bool resetPeakMemory()
 {
@@ -308,7 +310,7 @@ void TestElementSetSources::answerLargerThanTheCapIsGivenUp()
     // stays near it: far from the 100 MB the server offered.
     QVERIFY2(server.bytesSent < 50 * 1000 * 1000, qPrintable(QString::number(server.bytesSent)));
     if (peakKnown)
-        QVERIFY2(grewKiB < kPeakGrowthLimitKiB, qPrintable(QStringLiteral("peak grew by %1 KiB").arg(grewKiB)));
+        QVERIFY2(grewKiB < peakGrowthLimitKiB(), qPrintable(QStringLiteral("peak grew by %1 KiB").arg(grewKiB)));
 }
 
 void TestElementSetSources::slowDripIsGivenUpAtTheTransferLimit()
