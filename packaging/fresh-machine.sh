@@ -6,7 +6,10 @@
 #   fresh-machine.sh [RELEASE] test          the committed source, copied in,
 #                                            passes `packaging/dev.sh test` with
 #                                            nothing but what dev.sh installs
-#                                            from the list
+#                                            from the list; the Debian package
+#                                            of that build is then left in
+#                                            $SLEW_FRESH_DIR/RELEASE/, for
+#                                            `install` on the same release
 #   fresh-machine.sh [RELEASE] install DEB   the package installs with apt-get
 #                                            on a system without the build
 #                                            dependencies, and both programs run
@@ -68,6 +71,11 @@ test)
     mkdir -p "$run/src"
     git -C "$top" archive HEAD | tar -x -C "$run/src"
     in_root bash -c 'cd /src && packaging/dev.sh test'
+    # The package of the same build, as this release builds it.
+    in_root bash -c 'cd /src && packaging/dev.sh package' | tail -n 1
+    rm -f "$dir"/slew_*.deb
+    cp "$run"/src/build/slew_*.deb "$dir/"
+    echo "package: $(ls "$dir"/slew_*.deb)"
     ;;
 install)
     deb=${2:?usage: fresh-machine.sh install DEB}
