@@ -85,7 +85,8 @@ Parser::Classified Parser::classifyGs232(QByteArrayView t) const
     const char first = upper(t[0]);
     const QByteArrayView rest = t.sliced(1);
 
-    // Reports: `+0aaa`, `+0aaa+0eee` (GS-232A), `AZ=aaa`, `EL=eee` (GS-232B).
+    // Reports: `+0aaa`, `+0aaa+0eee` (GS-232A), `AZ=aaa`, `EL=eee` (GS-232B),
+    // `AZ=aaaEL=eee` (K3NG's GS-232B).
     if (first == '+') {
         const qsizetype second = t.indexOf('+', 1);
         if (second < 0 && degrees(rest, &a))
@@ -93,6 +94,18 @@ Parser::Classified Parser::classifyGs232(QByteArrayView t) const
         if (second > 0 && degrees(t.sliced(1, second - 1), &a) && degrees(t.sliced(second + 1), &b))
             return two(Message::number(Op::Azimuth, a), Message::number(Op::Elevation, b));
         return one(Message::invalid(t, "malformed GS-232 position report"));
+    }
+    // K3NG's GS-232B firmware answers C2 with the two joined, `AZ=059EL=025`
+    // (Hamlib's 603 reads it too); the elevation's part starts at `EL=`.
+    if (t.size() > 3 && startsWithMnemonic(t, "AZ=")) {
+        qsizetype el = 3;
+        while (el < t.size() && !startsWithMnemonic(t.sliced(el), "EL="))
+            ++el;
+        if (el < t.size()) {
+            if (!degrees(t.sliced(3, el - 3), &a) || !degrees(t.sliced(el + 3), &b))
+                return one(Message::invalid(t, "malformed GS-232 position report"));
+            return two(Message::number(Op::Azimuth, a), Message::number(Op::Elevation, b));
+        }
     }
     if (t.size() > 3 && (startsWithMnemonic(t, "AZ=") || startsWithMnemonic(t, "EL="))) {
         if (!degrees(t.sliced(3), &a))

@@ -214,6 +214,11 @@ void ParserTest::vectors_data()
     row("gs232a C report", "gs232a", "+0359\r\n", {"azimuth=359|"});
     row("gs232b C2 report", "gs232b", "AZ=010  EL=020\r", {"azimuth=10", "elevation=20|"});
     row("gs232b single", "gs232b", "AZ=350\rEL=005\r", {"azimuth=350|", "elevation=5|"});
+    // K3NG's firmware in its GS-232B mode, its bytes on the wire for C2.
+    row("gs232b C2 report joined (K3NG)", "gs232b", "AZ=059EL=025\r\n", {"azimuth=59", "elevation=25|"});
+    row("gs232b C2 report joined, lower case", "gs232b", "az=359el=000\r", {"azimuth=359", "elevation=0|"});
+    row("gs232b C2 report joined, broken", "gs232b", "AZ=EL=025\rAZ=059EL=\rAZ=059EL=-5\r",
+        {"unreadable input 'AZ=EL=025'|", "unreadable input 'AZ=059EL='|", "unreadable input 'AZ=059EL=-5'|"});
     row("gs232 prompt", "gs232b", "?>\r", {"unreadable input '?>'|"});
     row("gs232 garbage", "gs232a", "+0x12\rQ\r", {"unreadable input '+0x12'|", "unreadable input 'Q'|"});
 
