@@ -9,6 +9,8 @@
 #include <mqtt_protocol.h>
 
 #include <netdb.h>
+#include <pthread.h>
+#include <signal.h>
 #include <sys/socket.h>
 
 #include <algorithm>
@@ -178,6 +180,18 @@ bool MosquittoThread::waitBeforeRetry(int seconds)
 
 void MosquittoThread::run()
 {
+    // A broker that goes away under TLS: OpenSSL writes with write(), not
+    // send() with MSG_NOSIGNAL as libmosquitto does on plain TCP, and the
+    // kernel answers a write to a closed connection with SIGPIPE, whose
+    // default action ends the whole program (seen on Debian 13 when the
+    // broker was stopped). Blocked in this thread, where libmosquitto does
+    // all its writing (threaded mode), the write fails with EPIPE instead
+    // and the loop reports a lost connection. Other threads are untouched.
+    sigset_t brokenPipe;
+    sigemptyset(&brokenPipe);
+    sigaddset(&brokenPipe, SIGPIPE);
+    pthread_sigmask(SIG_BLOCK, &brokenPipe, nullptr);
+
     const QByteArray host = m_settings.broker.host.toUtf8();
     int attempt = 0;
     std::size_t familyThatWorked = 0;

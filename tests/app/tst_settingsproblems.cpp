@@ -35,8 +35,12 @@ Run run(const QString &program, const QStringList &arguments, const QString &con
         p.setProcessEnvironment(env);
     }
     QSignalSpy finished(&p, &QProcess::finished);
+    // A program that cannot start (chattr is not in a minimal Debian 13)
+    // never finishes: its failure ends the wait too.
+    QSignalSpy failedToStart(&p, &QProcess::errorOccurred);
     p.start(program, arguments);
-    if (!finished.wait(120000) || p.exitStatus() != QProcess::NormalExit)
+    const bool ended = QTest::qWaitFor([&] { return finished.count() > 0 || failedToStart.count() > 0; }, 120000);
+    if (!ended || finished.isEmpty() || p.exitStatus() != QProcess::NormalExit)
         return r;
     r.exitCode = p.exitCode();
     r.out = p.readAllStandardOutput();

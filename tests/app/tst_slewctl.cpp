@@ -305,8 +305,7 @@ void SlewctlTest::tunesARadioThroughRigctld()
     QVERIFY2(r.err.contains("unknown radio link kind 'nosuch'"), qPrintable(r.err));
     r = slewctl({"--radio", QStringLiteral("rigctld://127.0.0.1:%1").arg(freeTcpPort())});
     QCOMPARE(r.exitCode, 3); // no link
-    rigctld.terminate();
-    QTRY_COMPARE(rigctld.state(), QProcess::NotRunning);
+    QVERIFY(endHamlibDaemon(rigctld));
 }
 
 QTEST_GUILESS_MAIN(SlewctlTest)

@@ -96,3 +96,15 @@ inline quint16 startHamlibDaemon(QProcess &p, const char *name, const QStringLis
     }
     return 0;
 }
+
+// Ends a daemon a test started, whoever is still connected to it: on
+// SIGTERM, rigctld 4.5 exits at once, but 4.6 stops listening and then
+// waits for its connected clients to leave (a command on its way gets the
+// first line of its answer only). The tests end it with SIGKILL, which
+// both obey at once and which closes every connection, as a daemon that
+// dies or is killed does. Returns whether it is gone.
+inline bool endHamlibDaemon(QProcess &p)
+{
+    p.kill();
+    return QTest::qWaitFor([&] { return p.state() == QProcess::NotRunning; }, 5000);
+}

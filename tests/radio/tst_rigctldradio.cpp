@@ -694,8 +694,7 @@ void RigctldRadioTest::realRigctldSplitReachesTheRadio()
     QCOMPARE(askRigctld(port, "m", 2), (QList<QByteArray>{"USB", "2400"}));
     QCOMPARE(failed.count(), 0);
     link.close();
-    rigctld.terminate();
-    QTRY_COMPARE(rigctld.state(), QProcess::NotRunning);
+    QVERIFY(endHamlibDaemon(rigctld));
 }
 
 void RigctldRadioTest::realRigctldHundredSetsNewestWins()
@@ -739,8 +738,7 @@ void RigctldRadioTest::realRigctldHundredSetsNewestWins()
     qInfo("ten bursts of ten: %lld of 100 reached rigctld", qlonglong(sent.count()));
     QCOMPARE(failed.count(), 0);
     link->close();
-    rigctld.terminate();
-    QTRY_COMPARE(rigctld.state(), QProcess::NotRunning);
+    QVERIFY(endHamlibDaemon(rigctld));
 }
 
 void RigctldRadioTest::realRigctldGoingAwayCloses()
@@ -751,8 +749,7 @@ void RigctldRadioTest::realRigctldGoingAwayCloses()
     const auto link = openOn(port);
     QVERIFY(link);
     QSignalSpy states(link.get(), &RadioLink::stateChanged);
-    rigctld.terminate();
-    QTRY_COMPARE(rigctld.state(), QProcess::NotRunning);
+    QVERIFY(endHamlibDaemon(rigctld));
     QTRY_COMPARE_WITH_TIMEOUT(link->state(), RadioLink::State::Closed, 10000);
     QCOMPARE(states.last().at(1).toString(), link->uri() + ": rigctld closed the connection");
 }
@@ -830,10 +827,8 @@ void RigctldRadioTest::realRigctldInVfoModeMainAndSub()
     second.open();
     QTRY_COMPARE_WITH_TIMEOUT(second.state(), RadioLink::State::Closed, 15000);
     QVERIFY2(states.last().at(1).toString().contains("start it with -o"), qPrintable(states.last().at(1).toString()));
-    rigctld.terminate();
-    plain.terminate();
-    QTRY_COMPARE(rigctld.state(), QProcess::NotRunning);
-    QTRY_COMPARE(plain.state(), QProcess::NotRunning);
+    QVERIFY(endHamlibDaemon(rigctld));
+    QVERIFY(endHamlibDaemon(plain));
 }
 
 QTEST_GUILESS_MAIN(RigctldRadioTest)

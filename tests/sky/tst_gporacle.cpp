@@ -44,11 +44,14 @@ from sgp4.propagation import gstime
 csv_path, xml_path, lat, lon, h, start, hours = sys.argv[1:8]
 lat, lon, h, start, hours = math.radians(float(lat)), math.radians(float(lon)), float(h) / 1000, float(start), float(hours)
 
+# The catalogue number plays no part in SGP4. python-sgp4's own Python
+# propagator (2.22, Debian 13) refuses one past Alpha-5's Z9999 (339999),
+# so the oracle is handed 0 for it and keys its answers by the real one.
 def read(fields_list):
     sats = {}
     for fields in fields_list:
         s = Satrec()
-        omm.initialize(s, fields)
+        omm.initialize(s, dict(fields, NORAD_CAT_ID='0'))
         sats[int(fields['NORAD_CAT_ID'])] = s
     return sats
 with open(csv_path) as f:

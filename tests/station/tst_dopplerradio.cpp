@@ -105,8 +105,7 @@ private slots:
         // The opening's read and the one of where the radio was found.
         QVERIFY2(before.count(QStringLiteral("+f")) == 2, qPrintable(before.join(", ")));
         QVERIFY(!radio->isSteering());
-        rigctld.terminate();
-        QTRY_COMPARE(rigctld.state(), QProcess::NotRunning);
+        QVERIFY(endHamlibDaemon(rigctld));
     }
 
     void aSecondClientReadsTheDopplerOfTheMoment()
@@ -184,8 +183,7 @@ private slots:
         QVERIFY2(worstDown < kMomentHz && worstUp < kMomentHz,
                  qPrintable(QStringLiteral("%1 %2").arg(worstDown).arg(worstUp)));
         QVERIFY2(radio->figures().worstHz < kMomentHz, qPrintable(QString::number(radio->figures().worstHz)));
-        rigctld.terminate();
-        QTRY_COMPARE(rigctld.state(), QProcess::NotRunning);
+        QVERIFY(endHamlibDaemon(rigctld));
     }
 
     void tunesAPassAlreadyUpWithoutTakingItsOwnFrequenciesForTheDial()

@@ -187,8 +187,7 @@ private slots:
         ::kill(pid_t(slew.process.processId()), SIGTERM);
         QVERIFY(finished.wait(10000));
         QCOMPARE(slew.process.exitCode(), 0);
-        rigctld.terminate();
-        QTRY_COMPARE(rigctld.state(), QProcess::NotRunning);
+        QVERIFY(endHamlibDaemon(rigctld));
     }
 
     void tunesTheBuiltInRadioThroughAPass()

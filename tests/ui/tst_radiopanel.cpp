@@ -498,8 +498,7 @@ private slots:
             QCOMPARE(in<QComboBox>(panel, "radioUri")->currentText(), uri);
 
             // rigctld goes away: the panel says so, and each try again.
-            rigctld.terminate();
-            QTRY_COMPARE(rigctld.state(), QProcess::NotRunning);
+            QVERIFY(endHamlibDaemon(rigctld));
             QTRY_VERIFY2_WITH_TIMEOUT(textOf(panel, "radioLinkState").contains(QStringLiteral("(attempt 2)")),
                                       qPrintable(textOf(panel, "radioLinkState")), 15000);
             QVERIFY(textOf(panel, "radioLinkState").contains(QStringLiteral("trying again in")));
@@ -633,8 +632,7 @@ private slots:
 
         untrack(f);
         f.station.radio()->disconnectRadio();
-        rigctld.terminate();
-        QTRY_COMPARE(rigctld.state(), QProcess::NotRunning);
+        QVERIFY(endHamlibDaemon(rigctld));
     }
 };
 
