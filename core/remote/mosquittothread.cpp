@@ -14,6 +14,7 @@
 #include <sys/socket.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cstring>
 #include <vector>
@@ -58,14 +59,31 @@ std::vector<const char *> wildcardAddressesFor(const QByteArray &host)
     return binds;
 }
 
-QString errorText(int rc)
+const QString kTlsHandshakeFailed = QStringLiteral(
+    "the TLS handshake failed (is the broker's certificate signed by the cafile's authority, and issued for this "
+    "host name?)");
+
+// What went wrong, for a person. `savedErrno` is errno as it was when the
+// call failed (by now other calls may have changed it).
+QString errorText(int rc, int savedErrno = errno)
 {
     if (rc == MOSQ_ERR_ERRNO)
-        return QString::fromLocal8Bit(std::strerror(errno));
+        return QString::fromLocal8Bit(std::strerror(savedErrno));
     if (rc == MOSQ_ERR_TLS)
-        return QStringLiteral("the TLS handshake failed (is the broker's certificate signed by the cafile's "
-                              "authority, and issued for this host name?)");
+        return kTlsHandshakeFailed;
     return QString::fromUtf8(mosquitto_strerror(rc));
+}
+
+// Why a connection that never came up failed. libmosquitto reports an
+// OpenSSL error met while reading or writing as a system error with errno
+// EPROTO ("Protocol error"): on a TLS connection that is the handshake
+// failing, the same as MOSQ_ERR_TLS, which it reports when the failure
+// comes a moment earlier (Debian 13's libmosquitto was seen to give either).
+QString connectFailureText(int rc, int savedErrno, bool tls)
+{
+    if (tls && rc == MOSQ_ERR_ERRNO && savedErrno == EPROTO)
+        return kTlsHandshakeFailed;
+    return errorText(rc, savedErrno);
 }
 
 } // namespace
@@ -209,10 +227,12 @@ void MosquittoThread::run()
             const QString reason = !m_refusal.isEmpty()     ? m_refusal
                                    : rc == MOSQ_ERR_TIMEOUT ? QStringLiteral("no answer within %1 s").arg(m_settings.connectTimeoutMs / 1000)
                                    : rc == MOSQ_ERR_CONN_LOST ? QStringLiteral("the connection was lost")
-                                                              : errorText(rc);
+                                   : wasUp ? errorText(rc, m_failureErrno)
+                                           : connectFailureText(rc, m_failureErrno, m_settings.broker.tls);
             // The reason from the family that got furthest: a socket error
             // (nobody listening there) says less than a broker's answer.
-            if (why.isEmpty() || rc != MOSQ_ERR_ERRNO)
+            const bool socketError = rc == MOSQ_ERR_ERRNO && !(m_settings.broker.tls && m_failureErrno == EPROTO);
+            if (why.isEmpty() || !socketError)
                 why = reason;
             if (wasUp || !m_refusal.isEmpty()) {
                 if (wasUp) {
@@ -241,15 +261,20 @@ int MosquittoThread::connectOnce(const QByteArray &host, const char *bindAddress
     m_refusal.clear();
     // Asynchronous: the TCP connect and the TLS handshake go on in the
     // loop below, which can give up on them; only a name lookup waits here.
+    m_failureErrno = 0;
     int rc = mosquitto_connect_bind_async(m_mosq, host.constData(), m_settings.broker.port,
                                           m_settings.keepAliveSeconds, bindAddress);
-    if (rc != MOSQ_ERR_SUCCESS)
+    if (rc != MOSQ_ERR_SUCCESS) {
+        m_failureErrno = errno;
         return rc;
+    }
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(m_settings.connectTimeoutMs);
     while (!stopping()) {
         rc = mosquitto_loop(m_mosq, 1000, 1);
-        if (rc != MOSQ_ERR_SUCCESS)
+        if (rc != MOSQ_ERR_SUCCESS) {
+            m_failureErrno = errno;
             return rc;
+        }
         if (m_connected)
             *wasUp = true;
         else if (!*wasUp && std::chrono::steady_clock::now() > deadline)

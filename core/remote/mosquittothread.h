@@ -87,6 +87,7 @@ private:
     // Set by the callbacks, which run on the thread itself.
     std::atomic<bool> m_connected{false};
     QString m_refusal; // the broker's answer to a refused connection
+    int m_failureErrno = 0; // errno when connectOnce's last call failed
     std::atomic<int> m_waiting{0};
     std::atomic<int> m_dropped{0};
     std::atomic<int> m_oversized{0};
