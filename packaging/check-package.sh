@@ -36,7 +36,10 @@ for program in slew slew-sim slewctl; do
         fail "/usr/bin/$program is not stripped"
     fi
     # Everything it links is a system library, found by the system's paths.
-    if readelf -d "$binary" | grep -qE 'RPATH|RUNPATH'; then
+    # grep reads to the end (no -q): under pipefail, a grep that quits at
+    # the first match can leave the writer dead of SIGPIPE, and the pipe
+    # then counts as failed.
+    if readelf -d "$binary" | grep -E 'RPATH|RUNPATH' > /dev/null; then
         fail "/usr/bin/$program carries a library search path: $(readelf -d "$binary" | grep -E 'RPATH|RUNPATH')"
     fi
 done
@@ -69,7 +72,7 @@ done
 for page in slew slew-sim slewctl; do
     man=$root/usr/share/man/man1/$page.1.gz
     [ -f "$man" ] || fail "no manual page $page(1)"
-    zcat "$man" | grep -q '^\.TH' || fail "$page(1) is not a manual page"
+    zcat "$man" | grep '^\.TH' > /dev/null || fail "$page(1) is not a manual page"
 done
 
 # Both programs run from the scratch root on the system's libraries alone.
