@@ -56,6 +56,8 @@ int main(int argc, char *argv[])
         if (const QString error = applySimulatorOption(options, name, value); !error.isEmpty())
             fail(error);
     }
+    if (const QString error = checkSimulatorOptions(options); !error.isEmpty())
+        fail(error);
 
     ReceivedLog log;
     if (parser.isSet(logReceived) && !log.open(parser.value(logReceived)))

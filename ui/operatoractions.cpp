@@ -53,6 +53,9 @@ void OperatorActions::onEnded(Outcome result, QPointF at, double offDeg)
     case Outcome::Replaced:
         outcome(tr("%1: not finished, another target was sent").arg(m_what), false);
         break;
+    case Outcome::Refused:
+        outcome(tr("%1: not done, %2").arg(m_what, m_watch->refusal()), true);
+        break;
     case Outcome::LinkLost:
         outcome(tr("%1: not finished, the link went down").arg(m_what), true);
         break;

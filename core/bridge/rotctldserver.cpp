@@ -103,7 +103,9 @@ RotctldServer::RotctldServer(session::RotatorSession *session, QObject *parent)
 void RotctldServer::sharePosition()
 {
     SharedPosition::Reading reading;
-    reading.known = m_session->isConnected() && m_session->hasPosition();
+    // Only what this link has read: the last link's position, shown stale
+    // in the window, would have a tracker steer from where the antenna was.
+    reading.known = m_session->isConnected() && m_session->positionReadOnThisLink();
     if (reading.known) {
         // Trackers speak 0..360: a position in the overlap is reported as its bearing.
         reading.azimuth = std::fmod(m_session->azimuth(), 360.0);

@@ -177,6 +177,9 @@ void ConsoleRunner::moveEnded(session::MoveWatch::Outcome outcome, QPointF, doub
         printPosition("stopped");
         finish(ExitCode::Failed, tr("another target was sent before this one was reached"));
         return;
+    case Outcome::Refused:
+        finish(ExitCode::Refused, m_move.refusal());
+        return;
     case Outcome::LinkLost:
         return;
     }

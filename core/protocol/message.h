@@ -70,6 +70,9 @@ enum class Op : std::uint8_t {
     // rotctld only (docs/protocol.md): its other answers map onto Azimuth,
     // Elevation, Version and Alarm.
     Report,        // RPRT 0: a command done; value holds the code
+    // A controller's "no" to the command before it: `?` (K3NG's Easycom),
+    // `?>` (a Yaesu GS-232 prompt, K3NG's GS-232). text holds the answer.
+    Refused,
 };
 
 // Why a token was refused, for code that counts or answers by kind; the

@@ -71,8 +71,9 @@ constexpr OperationInfo kOperations[] = {
     // rotctld's answer to a command: `RPRT 0` when done (an error code
     // arrives as an alarm, see parser_rotctld.cpp).
     {Op::Report,            "RPRT",   "rotctld report",         R::None,                 false, false,  false,   A::NeverSent,     false},
+    {Op::Refused,           "",       "refusal",                R::None,                 false, false,  false,   A::NeverSent,     false},
 };
-static_assert(std::size(kOperations) == size_t(Op::Report) + 1, "kOperations must list every Op");
+static_assert(std::size(kOperations) == size_t(Op::Refused) + 1, "kOperations must list every Op");
 
 constexpr bool inOrder()
 {

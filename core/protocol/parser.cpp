@@ -70,6 +70,7 @@ void Parser::reset()
     m_hasPending = false;
     m_previousOnLine = Op::Invalid;
     m_previousHadValue = false;
+    m_previousBareAzimuth = false;
     m_holdingAzimuth = false;
     m_spid.reset();
     m_readyCount = 0;
@@ -90,6 +91,7 @@ int Parser::push(char c)
             emitPending(true);
         m_previousOnLine = Op::Invalid;
         m_previousHadValue = false;
+        m_previousBareAzimuth = false;
         return m_readyCount;
     }
     if (isSpace(c)) {
@@ -167,6 +169,8 @@ void Parser::finishToken(bool lineEnd)
     const Message &m = nextSlot();
     m_previousOnLine = m.op;
     m_previousHadValue = m.hasValue;
+    m_previousBareAzimuth = !isGs232(m_dialect) && m.op == Op::Azimuth && m.hasValue && count == 1
+                            && token.size() > 0 && (token[0] == '+' || token[0] == '-');
     m_pendingWantsElevation = isGs232(m_dialect) && m.op == Op::Azimuth && m.hasValue && token.size() > 0
                               && upper(token[0]) == 'W' && count == 1;
     m_hasPending = true;

@@ -202,6 +202,9 @@ private:
     // Line context: the mode word after UPnnn / DNnnn (Easycomm I).
     Op m_previousOnLine = Op::Invalid;
     bool m_previousHadValue = false;
+    // Line context: the token before was a bare signed azimuth (K3NG's
+    // Easycom `+59.1 +24.8`), so a second one is the elevation.
+    bool m_previousBareAzimuth = false;
     // rotctld: the first line of a `p` answer, waiting for its second.
     bool m_holdingAzimuth = false;
     bool m_azimuthBroken = false; // that first line was not a number (already reported)

@@ -67,6 +67,23 @@ Message Parser::classifyEasycomm(QByteArrayView t) const
     if (t.size() == 4 && startsWithMnemonic(t, "PARK"))
         return Message::query(Op::Park);
 
+    // A controller's "no": K3NG's Easycom answers `?` to a command it does
+    // not know (PARK, GS, CR1), and `?>` is the Yaesu prompt some Easycomm
+    // boards copied.
+    if (t == "?" || t == "?>")
+        return Message::word(Op::Refused, t);
+    // K3NG's Easycom answers `AZ EL` with the bare numbers, `+59.1 +24.8`
+    // (each query's answer ended by the byte that ended the query): the
+    // first signed number on a line is the azimuth, the one after it the
+    // elevation, which is signed only when negative (`-0.5`) in the
+    // firmware's AZ-less `EL` answer but always in its pair.
+    if (t[0] == '+' || t[0] == '-') {
+        double v = 0;
+        if (t.size() < 2 || !isDigit(t[1]) || !parseDecimal(t, &v))
+            return Message::invalid(t, "malformed bare position (+aaa.a)");
+        return Message::number(m_previousBareAzimuth ? Op::Elevation : Op::Azimuth, v);
+    }
+
     // SatNOGS' answer to `CR n` has no prefix: `1,0.80`.
     if (isDigit(t[0])) {
         int index = -1;

@@ -112,8 +112,9 @@ Parser::Classified Parser::classifyGs232(QByteArrayView t) const
             return one(Message::invalid(t, "malformed GS-232 position report"));
         return one(Message::number(first == 'A' ? Op::Azimuth : Op::Elevation, a));
     }
+    // The Yaesu prompt after a command it did not take (K3NG's too).
     if (t == "?>")
-        return one(Message::invalid(t, "the controller did not understand the command (?>)", Refusal::Unknown));
+        return one(Message::word(Op::Refused, t));
     if (t.size() == 2 && upper(t[0]) == 'G' && upper(t[1]) == 'S')
         return one(Message::query(Op::Status));
     // The answer to GS: `ST=6` (Slew's choice); `ST6`, `ST=006`, `ST=0x06`

@@ -37,6 +37,12 @@ MoveWatch::MoveWatch(RotatorSession *session, QObject *parent) : QObject(parent)
                            || std::abs(el - m_target->y()) > kSameTargetDegrees))
             finish(Outcome::Replaced);
     });
+    connect(session, &RotatorSession::controllerRefusedMove, this, [this](const QString &why) {
+        if (!m_watching)
+            return;
+        m_refusal = why;
+        finish(Outcome::Refused);
+    });
     connect(session, &RotatorSession::stateChanged, this, [this](RotatorSession::State state) {
         if (m_watching && state != RotatorSession::State::Connected)
             finish(Outcome::LinkLost);
@@ -50,6 +56,7 @@ void MoveWatch::watch(std::optional<QPointF> target)
     m_last.reset();
     m_steadyPolls = 0;
     m_sawMotion = false;
+    m_refusal.clear();
     // A move to where the rotator already rests ends at the next fresh position.
 }
 

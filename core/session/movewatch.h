@@ -4,11 +4,13 @@
 // rest within kArrivedDegrees of the target), stopped short (came to rest
 // elsewhere after moving: a limit, an obstacle, a stop from another client),
 // stopped (a stop went out through this session), replaced (another target
-// was sent) or the link went down. slewctl's --wait and the window's status
+// was sent), refused (the controller answered the move with its "no") or
+// the link went down. slewctl's --wait and the window's status
 // lines and event log judge arrival the same way through it.
 
 #include <QObject>
 #include <QPointF>
+#include <QString>
 
 #include <optional>
 
@@ -19,7 +21,7 @@ class RotatorSession;
 class MoveWatch : public QObject {
     Q_OBJECT
 public:
-    enum class Outcome { Arrived, StoppedShort, Stopped, Replaced, LinkLost };
+    enum class Outcome { Arrived, StoppedShort, Stopped, Replaced, Refused, LinkLost };
     Q_ENUM(Outcome)
 
     // Both axes this close to the target, at rest, is arrival. Passing
@@ -36,6 +38,8 @@ public:
     void cancel(); // forget it, report nothing
     bool isWatching() const { return m_watching; }
     std::optional<QPointF> target() const { return m_target; }
+    // Why the controller refused the move, after Outcome::Refused.
+    QString refusal() const { return m_refusal; }
 
 signals:
     // Once per watch. `at` is the position when it ended; `offDeg` the larger
@@ -53,6 +57,7 @@ private:
     std::optional<QPointF> m_last;
     int m_steadyPolls = 0;
     bool m_sawMotion = false;
+    QString m_refusal;
 };
 
 } // namespace slew::session

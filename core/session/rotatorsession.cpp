@@ -97,6 +97,7 @@ void RotatorSession::updatePollPace()
         pollMs = std::max(pollMs, 2 * exchangeMs);
         m_replyTimeoutMs = std::max(m_replyTimeoutMs, exchangeMs + 300);
     }
+    m_refusals.setWindowMs(m_replyTimeoutMs);
     m_pace.setIntervals(pollMs, int(std::lround(1000.0 / std::max(0.1, m_profile.restPollHz))));
     retimePolling();
 }
@@ -227,6 +228,9 @@ void RotatorSession::onLinkOpened()
     m_rotor = m_link->hints().rotor.value_or(0);
     m_activeTarget.reset();
     m_echoes.reset();
+    m_refusals.reset();
+    m_positionRetry = {};
+    m_positionReadOnLink = false; // the last link's position is shown, stale, but vouches for nothing
     m_reconnectAttempt = 0;
     m_failedPolls = 0;
     m_pollCount = 0;
@@ -463,6 +467,9 @@ void RotatorSession::apply(const Message &m)
             finishFront(false, tr("the controller answered with alarm %1").arg(text));
         return;
     }
+    case Op::Refused:
+        applyRefusal(m);
+        return;
     case Op::Invalid: {
         // Nothing in it is used; a poll it stood in for times out and is
         // retried. Readable replies around it are used as ever.
@@ -490,12 +497,48 @@ void RotatorSession::apply(const Message &m)
     }
 }
 
+void RotatorSession::applyRefusal(const Message &m)
+{
+    const QString answer = quoted(m.text.view());
+    const RefusalOwner::Answer owner = m_refusals.take(m_onWire, nowMs());
+    switch (owner.owner) {
+    case RefusalOwner::Owner::Command: {
+        const QString why = tr("the controller refused '%1' (it answered '%2')")
+                                .arg(quoted(owner.line.trimmed()), answer);
+        m_activeTarget.reset();
+        emit targetCleared();
+        emit controllerRefusedMove(why);
+        emit moveRefused(why);
+        emit errorOccurred(why);
+        return;
+    }
+    case RefusalOwner::Owner::Request:
+        finishFront(false, tr("the controller refused it (it answered '%1')").arg(answer));
+        return;
+    case RefusalOwner::Owner::Nobody: {
+        // Nothing of ours to refuse: as good as an unreadable reply.
+        const QString reason = tr("a refusal with no command waiting for it");
+        reportFromController(ControllerLogAllowance::Kind::Unreadable,
+                             tr("unreadable reply '%1': %2").arg(answer, reason));
+        noteUnreadable(reason);
+        return;
+    }
+    }
+}
+
 void RotatorSession::applyPosition()
 {
     if (!hasPosition())
         return;
     m_azFresh = m_elFresh = false;
     m_failedPolls = 0;
+    m_positionReadOnLink = true;
+    if (m_caps.probed && !m_caps.positionFeedback) {
+        // Read at last (a controller that was still booting, a cable put back).
+        m_caps.positionFeedback = true;
+        m_positionRetry = {};
+        emit capabilitiesChanged(m_caps);
+    }
     m_stale = false;
     m_pace.notePosition(m_az, m_el, nowMs()); // motion wakes the pace
     retimePolling();

@@ -14,6 +14,7 @@
 #include "model/movegate.h"
 #include "model/rotatorprofile.h"
 #include "pollpace.h"
+#include "refusalowner.h"
 #include "protocol/checksum.h"
 #include "protocol/parser.h"
 #include "requestqueue.h"
@@ -119,6 +120,12 @@ public:
     double parkElevation() const { return controllerParkElevation() + elevationOffset(); }
 
     bool hasPosition() const { return !std::isnan(m_az) && !std::isnan(m_el); }
+    // A position has come on the link open now. Until then the last link's
+    // (hasPosition) is shown, stale, and no move is sent (requirePositionRead).
+    bool positionReadOnThisLink() const { return m_positionReadOnLink; }
+    // Moves wait for that first position: true while the controller could
+    // report one and has not yet on this link (never for Easycomm I).
+    bool awaitingPosition() const;
     double azimuth() const { return m_az; }
     double elevation() const { return m_el; }
     bool positionStale() const { return m_stale; }
@@ -264,6 +271,10 @@ signals:
     void moveRefused(const QString &reason);
     // A move, stop hold aside, went to the wire.
     void moveSent();
+    // The controller answered a command that went out with its "no" (`?`,
+    // `?>`): nothing of it happens, and whoever waits for the move stops
+    // waiting. Also reported by moveRefused() for the operator.
+    void controllerRefusedMove(const QString &reason);
     void requestFailed(const QString &request, const QString &reason);
     // kBadFramesAlarm received lines in a row failed their checksum (on),
     // or a good one has arrived since (off). Nothing from a refused line is
@@ -291,6 +302,11 @@ private:
     enum class SameLine { Queued, Shared };
     CommandResult queueRequest(Request request, SameLine same);
     CommandResult requireLink();
+    // Refuses a move (refuseMove, unless Quietly) while the controller's
+    // position, which it could report, has not been read on this link.
+    enum class Report { Refusing, Quietly };
+    CommandResult requirePositionRead(Report report = Report::Refusing);
+    static bool isRawMove(const protocol::Message &m);
     // Reads the listing lines (Op::Calibration, Op::AdcReadings) that arrive:
     // says whether a line was one; one that is not (an echoed command)
     // completes no request.
@@ -377,6 +393,13 @@ private:
     bool m_pollingEnabled = true;
     int m_pollCount = 0;
     int m_failedPolls = 0;
+    // Asking again for a position the probe could not read.
+    struct PositionRetry {
+        static constexpr int kFirstMs = 2000;
+        static constexpr int kLongestMs = 64000;
+        qint64 dueMs = 0;
+        int delayMs = kFirstMs;
+    } m_positionRetry;
     LinkTimer m_staleTimer;
     LinkTimer m_keepAliveTimer;
 
@@ -390,6 +413,7 @@ private:
     double m_az = kUnknown, m_el = kUnknown;
     bool m_azFresh = false, m_elFresh = false;
     bool m_stale = true;
+    bool m_positionReadOnLink = false; // a position has come on the link open now
     double m_targetAz = kUnknown, m_targetEl = kUnknown;
     std::optional<PointingTarget> m_activeTarget;
     double m_commandedAz = kUnknown, m_commandedEl = kUnknown;
@@ -402,6 +426,8 @@ private:
     QString m_version;
 
     EchoFilter m_echoes; // recently sent set-commands, to recognise a controller that echoes them
+    RefusalOwner m_refusals; // which line a controller's `?` answers
+    void applyRefusal(const protocol::Message &m);
     QElapsedTimer m_clock; // the wall clock, for links that keep no stepped clock
     // Writes a set-position the gate has already passed, and makes it the
     // active target; go-to and relative moves share it. Pointing frame in,

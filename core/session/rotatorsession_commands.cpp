@@ -99,6 +99,8 @@ CommandResult RotatorSession::gotoPosition(double az, double el)
 {
     if (auto linked = requireLink(); !linked)
         return linked;
+    if (auto seen = requirePositionRead(); !seen)
+        return seen;
     el = withinOffsetReach(el);
     const model::MoveCheck check = m_gate.pointing(az, el, knownAzimuth());
     if (!check.allowed())
@@ -110,6 +112,8 @@ CommandResult RotatorSession::gotoAxis(Axis axis, double degrees, AzimuthIs mean
 {
     if (auto linked = requireLink(); !linked)
         return linked;
+    if (auto seen = requirePositionRead(); !seen)
+        return seen;
     const bool az = axis == Axis::Azimuth;
     const Op op = az ? Op::Azimuth : Op::Elevation;
     const Dialect d = m_profile.dialect;
@@ -177,6 +181,8 @@ CommandResult RotatorSession::gotoUnwrapped(double azimuth, double elevation)
 {
     if (auto linked = requireLink(); !linked)
         return linked;
+    if (auto seen = requirePositionRead(); !seen)
+        return seen;
     if (!std::isfinite(azimuth) || !std::isfinite(elevation))
         return refuse(tr("a position is not a number"));
     elevation = withinOffsetReach(elevation);
@@ -242,6 +248,8 @@ CommandResult RotatorSession::moveAxis(Axis axis, double degreesPerSecond)
 {
     if (auto linked = requireLink(); !linked)
         return linked;
+    if (auto seen = requirePositionRead(); !seen)
+        return seen;
     if (!std::isfinite(degreesPerSecond))
         return refuse(tr("speed is not a number"));
     if (degreesPerSecond == 0.0)
@@ -363,6 +371,7 @@ CommandResult RotatorSession::stop(Axes axes)
         return refuse(tr("%1 has no stop command").arg(protocol::dialectName(m_profile.dialect)));
     m_activeTarget.reset();
     write(line);
+    m_refusals.noteCommand(line, nowMs());
     wakePolling(); // to see it come to rest
     emit stopSent();
     emit targetCleared();
@@ -398,6 +407,7 @@ void RotatorSession::writeMove(const QByteArray &line)
     m_stopHoldTimer.stop();
     m_holdAzimuth = m_holdElevation = false;
     write(line);
+    m_refusals.noteCommand(line, nowMs());
     wakePolling(); // the move is watched at the full rate from its start
     emit moveSent();
 }
@@ -406,6 +416,8 @@ CommandResult RotatorSession::park()
 {
     if (auto linked = requireLink(); !linked)
         return linked;
+    if (auto seen = requirePositionRead(); !seen)
+        return seen;
     if (!protocol::dialectSupports(m_profile.dialect, Op::Park)) {
         const CommandResult sent = gotoPosition(parkAzimuth(), parkElevation());
         m_activeTarget.reset(); // parking is the operator's move, not a tracker target
@@ -435,6 +447,8 @@ CommandResult RotatorSession::park()
 
 CommandResult RotatorSession::home()
 {
+    // Homing goes ahead with no position read: it is how a controller that
+    // counts steps (SatNOGS) learns where it is, and it ends on its switches.
     if (auto linked = requireLink(); !linked)
         return linked;
     if (!protocol::dialectSupports(m_profile.dialect, Op::Reset))
@@ -504,6 +518,51 @@ CommandResult RotatorSession::writeConfig(int reg, const QString &value)
     write(protocol::encodeLine({Message::word(Op::ConfigWrite, text, reg)}, m_profile.dialect));
     wakePolling();
     return {};
+}
+
+bool RotatorSession::isRawMove(const Message &m)
+{
+    switch (m.op) {
+    case Op::Azimuth:
+    case Op::Elevation:
+        return m.hasValue;
+    case Op::VelocityLeft:
+    case Op::VelocityRight:
+    case Op::VelocityUp:
+    case Op::VelocityDown:
+        return m.hasValue && m.value != 0.0;
+    case Op::Offset:
+    case Op::MoveLeft:
+    case Op::MoveRight:
+    case Op::MoveUp:
+    case Op::MoveDown:
+    case Op::Park:
+    case Op::Preset:
+        return true;
+    default:
+        return false;
+    }
+}
+
+bool RotatorSession::awaitingPosition() const
+{
+    // A controller that can report its position and has not: its replies
+    // are unreadable (often the wrong dialect), so nothing confirms where
+    // a move would start, whether it runs, or when it ends. Easycomm I
+    // cannot be asked at all, and is driven as it always was.
+    return !m_positionReadOnLink && !protocol::encodeQueryPosition(m_profile.dialect, m_rotor).isEmpty();
+}
+
+CommandResult RotatorSession::requirePositionRead(Report report)
+{
+    if (!awaitingPosition())
+        return {};
+    const QString why = m_caps.probed && !m_caps.positionFeedback
+        ? tr("no position read from the controller: check the dialect (%1)").arg(protocol::dialectName(m_profile.dialect))
+        : tr("no position read from the controller yet");
+    if (report == Report::Quietly)
+        return CommandResult{why};
+    return refuseMove(why);
 }
 
 QString RotatorSession::rawMoveRefusal(const Message &m) const
@@ -612,10 +671,14 @@ CommandResult RotatorSession::sendRaw(const QString &line)
         if (c < ' ' || c > '~')
             return refuse(tr("a raw line may hold printable ASCII only"));
     }
-    // Raw lines pass the same gate as every other move.
+    // Raw lines pass the same gate as every other move, and a query goes
+    // out even when no position has been read: it is how to find out why.
     QString error;
     protocol::Parser check(m_profile.dialect);
+    const QString blind = requirePositionRead(Report::Quietly).refusal;
     check.feed(bytes + '\n', [&](const Message &m) {
+        if (error.isEmpty() && !blind.isEmpty() && isRawMove(m))
+            error = blind;
         if (error.isEmpty())
             error = rawMoveRefusal(m);
     });

@@ -89,6 +89,7 @@ void RotatorSession::sendNext()
     m_onWire = true;
     m_link->setAwaitingReply(true); // a shared line holds the wire for the answer
     write(front->line);
+    m_refusals.noteRequestWritten();
     m_replyTimer.start(m_replyTimeoutMs);
 }
 
@@ -114,6 +115,8 @@ void RotatorSession::finishFront(bool ok, const QString &reason)
     if (m_queue.isEmpty())
         return;
     Request r = m_queue.takeFront();
+    if (ok)
+        m_refusals.noteRequestAnswered();
     if (!ok && (r.purpose == RequestPurpose::Position || r.purpose == RequestPurpose::KeepAlive))
         ++m_failedPolls;
     if (r.done)
@@ -195,17 +198,32 @@ void RotatorSession::poll()
         m_pace.wake(nowMs());
     retimePolling();
     const Dialect d = m_profile.dialect;
-    if (m_caps.positionFeedback) {
-        const QByteArray line = protocol::encodeQueryPosition(d, m_rotor);
-        if (!m_queue.contains(line)) {
-            Request r;
-            r.line = line;
-            r.expects = {Expectation{Op::Azimuth, -1}, Expectation{Op::Elevation, -1}};
-            r.expectCount = 2;
-            r.attemptsLeft = m_options.retries + 1;
-            r.purpose = RequestPurpose::Position;
-            enqueue(std::move(r));
+    // A controller whose position did not read at connect is asked again,
+    // less and less often, and each failure is said: a wrong dialect, a
+    // controller still booting, a cable that comes loose all show there.
+    const QByteArray positionLine = protocol::encodeQueryPosition(d, m_rotor);
+    const bool askPosition = !positionLine.isEmpty()
+        && (m_caps.positionFeedback || nowMs() >= m_positionRetry.dueMs);
+    if (askPosition && !m_queue.contains(positionLine)) {
+        Request r;
+        r.line = positionLine;
+        r.expects = {Expectation{Op::Azimuth, -1}, Expectation{Op::Elevation, -1}};
+        r.expectCount = 2;
+        r.attemptsLeft = m_options.retries + 1;
+        r.purpose = RequestPurpose::Position;
+        if (!m_caps.positionFeedback) {
+            r.done = [this](bool ok, const QString &reason) {
+                if (ok || m_caps.positionFeedback)
+                    return;
+                const int delayMs = m_positionRetry.delayMs;
+                m_positionRetry.dueMs = nowMs() + delayMs;
+                m_positionRetry.delayMs = std::min(2 * delayMs, PositionRetry::kLongestMs);
+                emit errorOccurred(tr("still no position read from the controller (%1); asking again in %2 s")
+                                       .arg(reason)
+                                       .arg(delayMs / 1000));
+            };
         }
+        enqueue(std::move(r));
     }
     if (m_pollCount++ % std::max(1, m_options.telemetryEvery) != 0)
         return;

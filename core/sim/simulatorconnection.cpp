@@ -36,6 +36,7 @@ SimulatorConnection::SimulatorConnection(Simulator &simulator, QIODevice *device
       m_rng(simulator.options().rotator.seed + 7u)
 {
     m_openedAt = m_simulator.clock().now();
+    m_firmware.setFirmware(simulator.options().firmware);
     if (protocol::isSpid(settings.dialect)) {
         m_firmware.configureSpid({simulator.options().spidPulses, simulator.options().md01Log});
         m_log.endLinesAfter(protocol::spid::kEnd);

@@ -150,14 +150,14 @@ void SimulatorFirmware::answer(const QByteArray &token)
     if (!answersAtAll() || token.isEmpty())
         return;
     if (!m_lineAnswers.isEmpty())
-        m_lineAnswers += protocol::reportSeparator(m_dialect);
+        m_lineAnswers += reportSeparator();
     m_lineAnswers += token;
 }
 
 void SimulatorFirmware::alarm(const char *kind, QByteArrayView what, QByteArray &out)
 {
     if (protocol::isGs232(m_dialect)) {
-        // A Yaesu controller's whole vocabulary for "no": its prompt.
+        // A Yaesu controller's whole vocabulary for "no": its prompt (K3NG's too).
         if (++m_alarmsThisChunk <= kMaxAlarmsPerChunk)
             out += "?>\r\n";
         return;
@@ -230,6 +230,8 @@ QByteArray SimulatorFirmware::velocityReply(Op op) const
 
 void SimulatorFirmware::handle(const Message &m, QByteArray &out)
 {
+    if (speaksK3ngEasycom())
+        return handleK3ngEasycom(m, out);
     if (!m.isValid()) {
         if (m.refusal == protocol::Refusal::Overlong) {
             ++m_counters.overlong;
@@ -393,6 +395,7 @@ void SimulatorFirmware::handle(const Message &m, QByteArray &out)
     case Op::Alarm:
     case Op::ConfigValue:
     case Op::Report: // rotctld's answer; no controller is sent one
+    case Op::Refused: // a controller's answer, not a command
     case Op::SelectRotor: // the Micro-2g's own commands: served by its controller program
     case Op::Preset:
     case Op::StorePreset:

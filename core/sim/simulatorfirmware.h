@@ -14,6 +14,7 @@
 
 #include "firmwarecounters.h"
 #include "simulatedrotator.h"
+#include "simulatoroptions.h"
 #include "spidfirmware.h"
 
 #include "protocol/dialect.h"
@@ -46,6 +47,8 @@ public:
     // reports) stays idle. Made by the constructor for a SPID dialect; this
     // replaces its settings.
     void configureSpid(const SpidSettings &settings);
+    // Answer as this firmware does (simulatoroptions.h); Slew's own by default.
+    void setFirmware(Firmware firmware) { m_firmware = firmware; }
 
     // Feeds bytes from the host; returns what the device answers to them
     // (possibly nothing, possibly several lines). At most a few alarms per
@@ -79,6 +82,10 @@ private:
     void alarm(const char *kind, QByteArrayView what, QByteArray &out);
     void refuse(const protocol::Message &m, QByteArray &out);
     void finishLine(QByteArray &out);
+    // K3NG's (simulatorfirmware_k3ng.cpp).
+    bool speaksK3ngEasycom() const;
+    void handleK3ngEasycom(const protocol::Message &m, QByteArray &out);
+    QByteArray reportSeparator() const; // between two answers on one line
     bool answersAtAll() const { return m_dialect != protocol::Dialect::Easycomm1; }
     bool sendsAlarms() const;
 
@@ -90,6 +97,7 @@ private:
     SimulatedRotator &m_rotator;
     FirmwareCounters &m_counters;
     protocol::Dialect m_dialect;
+    Firmware m_firmware = Firmware::Slew;
     protocol::Parser m_parser;
     QByteArray m_lineAnswers;
     bool m_awaitingLineEnd = false;

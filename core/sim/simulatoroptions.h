@@ -17,6 +17,12 @@
 
 namespace slew::sim {
 
+// Whose firmware answers: Slew's own reading of the protocol documents, or
+// the way one that stations run answers (docs/protocol.md, "Controllers in
+// the field"). K3NG's Arduino firmware in its Easycom (easycomm2) or Yaesu
+// (gs232a, gs232b) emulation.
+enum class Firmware { Slew, K3ng };
+
 struct SimulatorOptions {
     RotatorConfig rotator;
     AxisFaults azimuthFaults;
@@ -32,6 +38,7 @@ struct SimulatorOptions {
     QString stateFile;        // micro2g: where calibration, presets and tolerances are kept; empty: lost at exit
     int spidPulses = 2;       // rot2prog, md01: pulses per degree reported in PH/PV (1, 2, 4, 10)
     bool md01Log = false;     // md01: a text log line before every reply, as some MD-01 firmware writes
+    Firmware firmware = Firmware::Slew;
 };
 
 struct SimulatorOptionInfo {
@@ -46,5 +53,9 @@ const std::vector<SimulatorOptionInfo> &simulatorOptionList();
 // Applies one option. Accepts '-' or '_' in the name. Returns an empty
 // string on success, else a message naming the option and what is wrong.
 QString applySimulatorOption(SimulatorOptions &options, QStringView name, QStringView value);
+
+// What no single option can say: options that do not go together (a
+// firmware with a dialect it has no emulation of). Empty when they do.
+QString checkSimulatorOptions(const SimulatorOptions &options);
 
 } // namespace slew::sim

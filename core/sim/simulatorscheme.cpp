@@ -42,6 +42,10 @@ std::optional<SimulatorOptions> optionsOf(const QUrl &url, const QString &uri, Q
             return std::nullopt;
         }
     }
+    if (const QString e = checkSimulatorOptions(options); !e.isEmpty()) {
+        *error = QStringLiteral("%1: %2").arg(uri, e);
+        return std::nullopt;
+    }
     return options;
 }
 

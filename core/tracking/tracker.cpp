@@ -165,6 +165,10 @@ double Tracker::commandFor(double azimuth) const
 
 bool Tracker::send(double az, double el, bool duringPass)
 {
+    // No position read on this link yet (just connected, or back after a
+    // blip): nothing is sent blind, and the next tick tries again.
+    if (m_session->awaitingPosition())
+        return false;
     const double command = commandFor(az);
     // The same waypoint already on its way: nothing new to say.
     if (command != az && m_lastCommand && m_lastCommand->first == command && m_lastCommand->second == el)

@@ -113,6 +113,8 @@ private:
     // Path positions at a time (linear between points, the ends held).
     PathPoint pathAt(double seconds) const;
     SkyPoint skyAt(double seconds) const;
+    // False when nothing went: refused (tracking stops with the reason), or
+    // no position read on this link yet (the next tick tries again).
     bool send(double az, double el, bool duringPass);
     // The azimuth to command for the plan's (mechanical) `azimuth`: itself,
     // or, where the antenna is nearer the same bearing's other angle on an

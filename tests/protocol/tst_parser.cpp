@@ -176,6 +176,21 @@ void ParserTest::vectors_data()
     row("time second 60", "easycomm2", "ST26:11:21:23:59:60\n", {"unreadable input 'ST26:11:21:23:59:60'|"});
     row("output not boolean", "easycomm2", "OP1,7\n", {"unreadable input 'OP1,7'|"});
     row("bare number", "easycomm2", "42\n", {"unreadable input '42'|"});
+
+    // --- K3NG's Easycom firmware (its own source, built and run): each
+    // query's answer is ended by the byte that ended the query, so `AZ EL\n`
+    // is answered `+59.1 +24.8\n`, a set `AZ94.0 EL25.0\n` with just its
+    // separators, and a command it lacks (PARK, GS, CR1) with `?`.
+    row("bare pair (K3NG Easycom)", "easycomm2", "+59.1 +24.8\n", {"azimuth=59.1", "elevation=24.8|"});
+    row("bare pair, elevation below the horizon", "easycomm2", "+0.0 -0.5\n", {"azimuth=0", "elevation=-0.5|"});
+    row("bare pair, one per line", "easycomm2", "+359.9 +90.0\n+1.0 +2.0\n",
+        {"azimuth=359.9", "elevation=90|", "azimuth=1", "elevation=2|"});
+    row("bare pair in pieces of a line", "easycomm2", "+59.1 \n+24.8\n", {"azimuth=59.1|", "azimuth=24.8|"});
+    row("separators only (K3NG's answer to a set)", "easycomm2", " \n", {});
+    row("bare numbers broken", "easycomm2", "+ -x +5.5.5 +1e3\n",
+        {"unreadable input '+'", "unreadable input '-x'", "unreadable input '+5.5.5'", "unreadable input '+1e3'|"});
+    row("refusal (K3NG Easycom)", "easycomm2", "?\n", {"refusal '?'|"});
+    row("refusal, Yaesu prompt on Easycomm", "satnogs", "?>\r\n", {"refusal '?>'|"});
     row("encoders short", "easycomm3", "\\?ENC1,2\n", {"unreadable input '\\?ENC1,2'|"});
 
     // --- GS-232A/B (Hamlib models 601, 603; the easycom library), commands.
@@ -219,7 +234,9 @@ void ParserTest::vectors_data()
     row("gs232b C2 report joined, lower case", "gs232b", "az=359el=000\r", {"azimuth=359", "elevation=0|"});
     row("gs232b C2 report joined, broken", "gs232b", "AZ=EL=025\rAZ=059EL=\rAZ=059EL=-5\r",
         {"unreadable input 'AZ=EL=025'|", "unreadable input 'AZ=059EL='|", "unreadable input 'AZ=059EL=-5'|"});
-    row("gs232 prompt", "gs232b", "?>\r", {"unreadable input '?>'|"});
+    // The Yaesu prompt after a command it did not take: a refusal, which
+    // ends the wait for that command.
+    row("gs232 prompt", "gs232b", "?>\r\n", {"refusal '?>'|"});
     row("gs232 garbage", "gs232a", "+0x12\rQ\r", {"unreadable input '+0x12'|", "unreadable input 'Q'|"});
 
     // --- rotctld's answers, as Hamlib 4.5's rotctld writes them (its rotctld(1) manual page).

@@ -41,20 +41,22 @@ private slots:
         QSignalSpy sent(&s, &RotatorSession::bytesSent);
         QSignalSpy targets(&s, &RotatorSession::targetChanged);
         bool knownWhenConnected = true;
-        bool parkSent = false;
+        QString refusedWhenConnected;
         connect(&s, &RotatorSession::stateChanged, this, [&](RotatorSession::State state) {
             if (state != RotatorSession::State::Connected)
                 return;
             knownWhenConnected = s.parkKnown();
-            // PARK still goes: the controller knows its registers. But the
-            // profile's guess is no target to show.
-            parkSent = bool(s.park());
+            // Nothing read back yet, neither the registers nor where the
+            // antenna stands: PARK does not go blind, and the profile's
+            // guess is no target to show.
+            refusedWhenConnected = s.park().refusal;
         });
         connectPumped(s, "sim:?clock=manual&dialect=satnogs"); // the simulator holds 0/0
         QVERIFY(s.hasParkRegisters());
         QVERIFY(!knownWhenConnected);
-        QVERIFY(parkSent);
+        QCOMPARE(refusedWhenConnected, QStringLiteral("no position read from the controller yet"));
         QCOMPARE(targets.count(), 0);
+        QCOMPARE(linesLike(sent, "PARK"), 0);
         TRY_VERIFY(s.parkKnown());
         QCOMPARE(s.controllerParkAzimuth(), 0.0);
         QCOMPARE(s.controllerParkElevation(), 0.0);

@@ -7,6 +7,7 @@
 
 #include "../common/simulatorpump.h"
 #include "fakedevice.h"
+#include "session/movewatch.h"
 #include "session/rotatorsession.h"
 
 #include <QSignalSpy>
@@ -48,6 +49,8 @@ private slots:
     void velocityJogAndSoftLimitStop();
     void singleAxisGoto();
     void reportEqualToTargetIsNotAnEchoFromANonEchoingDevice();
+    void k3ngEasycomIsReadAndItsRefusalEndsTheMove();
+    void noMoveGoesOutWhileNoPositionIsRead();
 
 private:
     bool connectSession(RotatorSession &s, FakeDevice &d, protocol::Dialect dialect = protocol::Dialect::SatNogs);
@@ -541,6 +544,121 @@ void RotatorSessionTest::reportEqualToTargetIsNotAnEchoFromANonEchoingDevice()
     // The very next replies carry exactly the target; they count as positions.
     TRY_VERIFY_WITH_TIMEOUT(positions.count() >= 3, 900);
     QCOMPARE(session->echoesIgnored(), 0);
+}
+
+// K3NG's Easycom firmware, as its own source answers (docs/protocol.md,
+// "Controllers in the field"): bare numbers for `AZ EL`, the separators
+// alone for a set, `?` for a command it lacks.
+static QByteArray k3ngEasycom(FakeDevice &d, const QByteArray &line)
+{
+    if (line == "AZ EL")
+        return "+" + QByteArray::number(d.az, 'f', 1) + " +" + QByteArray::number(d.el, 'f', 1) + "\n";
+    if (line == "VE")
+        return "VE002\n";
+    if (line.startsWith("AZ") && line.contains(" EL")) {
+        const QList<QByteArray> parts = line.split(' ');
+        d.az = parts[0].mid(2).toDouble();
+        d.el = parts[1].mid(2).toDouble();
+        return " \n";
+    }
+    if (line == "SA SE" || line == "ML" || line == "MR" || line == "MU" || line == "MD")
+        return " \n";
+    return "?\n"; // PARK, GS, GE, IP0, CR 1, VL...
+}
+
+void RotatorSessionTest::k3ngEasycomIsReadAndItsRefusalEndsTheMove()
+{
+    device->az = 59.1;
+    device->el = 24.8;
+    device->script = [this](const QByteArray &line) { return k3ngEasycom(*device, line); };
+    QSignalSpy logged(session, &RotatorSession::errorOccurred);
+    QVERIFY(connectSession(*session, *device, protocol::Dialect::Easycomm2));
+    TRY_VERIFY(session->hasPosition());
+    QCOMPARE(session->azimuth(), 59.1);
+    QCOMPARE(session->elevation(), 24.8);
+    // What it lacks answered `?` at once: known absent, and not polled.
+    const auto caps = session->capabilities();
+    QVERIFY(caps.positionFeedback && caps.version);
+    QVERIFY(!caps.inputs);
+    QCOMPARE(device->count("IP0"), 1);
+    // Its refusal of PARK ends the wait for the park at once, with the reason.
+    session::MoveWatch watch(session);
+    QSignalSpy ended(&watch, &session::MoveWatch::ended);
+    QSignalSpy refused(session, &RotatorSession::controllerRefusedMove);
+    QVERIFY(session->park());
+    watch.watch(std::nullopt);
+    TRY_COMPARE(ended.count(), 1);
+    QCOMPARE(ended.first().at(0).value<session::MoveWatch::Outcome>(), session::MoveWatch::Outcome::Refused);
+    QCOMPARE(refused.count(), 1);
+    QVERIFY2(watch.refusal().contains("refused 'PARK'") && watch.refusal().contains("'?'"), qPrintable(watch.refusal()));
+    // A go-to it takes is answered by its separators only: no refusal, no
+    // unreadable reply, and polls after it read the new position.
+    logged.clear();
+    QVERIFY(session->gotoPosition(94.0, 25.0));
+    TRY_COMPARE(session->azimuth(), 94.0);
+    QCOMPARE(session->elevation(), 25.0);
+    QCOMPARE(refused.count(), 1);
+    for (const auto &args : logged)
+        QVERIFY2(!args.at(0).toString().contains("unreadable"), qPrintable(args.at(0).toString()));
+    QCOMPARE(session->unreadableReplies(), qint64(0));
+}
+
+void RotatorSessionTest::noMoveGoesOutWhileNoPositionIsRead()
+{
+    // The wrong dialect: a GS-232B answer on an Easycomm link reads as nothing.
+    bool wrongDialect = true;
+    device->script = [&](const QByteArray &line) -> QByteArray {
+        if (line == "AZ EL" && wrongDialect)
+            return "AZ=059EL=025\n";
+        return {};
+    };
+    QSignalSpy logged(session, &RotatorSession::errorOccurred);
+    QSignalSpy movesRefused(session, &RotatorSession::moveRefused);
+    QVERIFY(connectSession(*session, *device, protocol::Dialect::Easycomm2));
+    QVERIFY(!session->hasPosition());
+    QVERIFY(!session->capabilities().positionFeedback);
+    const int heard = int(device->received.size());
+    // Every kind of move is refused with the reason; nothing goes out.
+    const QString why = QStringLiteral("no position read from the controller: check the dialect (easycomm2)");
+    for (const session::CommandResult &r :
+         {session->gotoPosition(90, 30), session->gotoAxis(session::Axis::Azimuth, 90),
+          session->gotoUnwrapped(90, 30), session->moveAxis(session::Axis::Elevation, 2.0), session->park(),
+          session->moveBy(5, 0), session->sendRaw("AZ90.0 EL30.0"), session->sendRaw("MR"),
+          session->sendRaw("VL500")}) {
+        QVERIFY(!r);
+        QVERIFY2(r.refusal == why || r.refusal.contains("present position"), qPrintable(r.refusal));
+    }
+    QVERIFY(movesRefused.count() >= 8);
+    // A query and a stop still go: they are how to find out, and Stop always works.
+    QVERIFY(session->sendRaw("VE"));
+    QVERIFY(session->stop(session::Axes::Both));
+    TRY_VERIFY(device->received.contains("SA SE"));
+    for (const QByteArray &line : device->received.mid(heard))
+        QVERIFY2(line == "AZ EL" || line == "VE" || line == "SA SE" || line.startsWith("CR") || line.startsWith("IP")
+                     || line == "GS" || line == "GE" || line.isEmpty(),
+                 line.constData());
+    // It is asked again, less often each time, and each failure is said;
+    // in between it is not asked at all (three tries a time: the probe's,
+    // the first poll's, then one a retry).
+    const auto retries = [&] {
+        QStringList said;
+        for (const auto &args : logged) {
+            if (args.at(0).toString().startsWith("still no position read"))
+                said << args.at(0).toString();
+        }
+        return said;
+    };
+    TRY_VERIFY_WITH_TIMEOUT(retries().size() >= 2, 20000);
+    QVERIFY2(retries().at(0).endsWith("asking again in 2 s") && retries().at(1).endsWith("asking again in 4 s"),
+             qPrintable(retries().join('\n')));
+    QVERIFY2(retries().at(0).contains("no answer within"), qPrintable(retries().at(0)));
+    QCOMPARE(device->count("AZ EL"), 3 * 3);
+    // The controller answers at last: the position is read, and moves go.
+    wrongDialect = false;
+    TRY_VERIFY_WITH_TIMEOUT(session->hasPosition(), 30000);
+    QVERIFY(session->capabilities().positionFeedback);
+    QVERIFY(session->gotoPosition(90, 30));
+    TRY_VERIFY(device->received.contains("AZ90.0 EL30.0"));
 }
 
 QTEST_GUILESS_MAIN(RotatorSessionTest)

@@ -45,7 +45,8 @@ private slots:
         });
         QVERIFY(f.connectAndWait());
         QVERIFY2(!markerBefore, "a park marker before the controller's park was read");
-        QVERIFY2(saidBefore.contains(QStringLiteral("park not read yet")), qPrintable(saidBefore));
+        // Nothing read back: Park says so rather than send PARK blind.
+        QVERIFY2(saidBefore.contains(QStringLiteral("no position read from the controller yet")), qPrintable(saidBefore));
         QVERIFY2(!plot->park() || plot->park()->y() < 89.0, "the park marker at the zenith");
 
         // Read on connect: the plot's P and Park's text are the registers'.
