@@ -70,6 +70,7 @@ private slots:
     void interruptEndsAWatch();
     void interruptStopsAWaitingMove();
     void waitSaysWhereAMoveStoppedShort();
+    void k3ngFirmwareIsReadAndItsRefusalIsSaidAtOnce();
     void tunesARadioThroughRigctld();
 
 private:
@@ -142,6 +143,31 @@ void SlewctlTest::refusedMoveSendsNothing()
     QCOMPARE(reg.out, QString("CR1 0.900\n"));
     QVERIFY(!received().contains("AZ500"));
     QVERIFY(received().contains("CW1,0.9") || received().contains("CW1 0.9") || received().contains("CW1"));
+}
+
+void SlewctlTest::k3ngFirmwareIsReadAndItsRefusalIsSaidAtOnce()
+{
+    // slew-sim answering as K3NG's firmware does (docs/protocol.md,
+    // "Controllers in the field"), at ten times the wall clock.
+    const QString easycom = QStringLiteral("sim:?firmware=k3ng&dialect=easycomm2&time_scale=10&start_az=59.1&start_el=24.8");
+    const Run got = slewctl({"--dialect", "easycomm2", easycom, "get"});
+    QCOMPARE(got.exitCode, 0);
+    QCOMPARE(got.out, QStringLiteral("az 59.10 el 24.80\n"));
+    const Run went = slewctl({"--dialect", "easycomm2", easycom, "goto", "94", "25", "--wait"});
+    QVERIFY2(went.exitCode == 0, qPrintable(went.err));
+    QVERIFY2(went.out.endsWith(QStringLiteral("az 94.00 el 25.00\n")), qPrintable(went.out));
+    // It has no PARK: its `?` ends the wait at once, with the reason, and
+    // not after --timeout (600 s by default) as a move that never starts.
+    QElapsedTimer clock;
+    clock.start();
+    const Run parked = slewctl({"--dialect", "easycomm2", easycom, "park", "--wait"});
+    QCOMPARE(parked.exitCode, 4);
+    QVERIFY2(parked.err.contains(QStringLiteral("the controller refused 'PARK' (it answered '?')")), qPrintable(parked.err));
+    QVERIFY2(clock.elapsed() < 10000, qPrintable(QString::number(clock.elapsed())));
+    // Its GS-232B runs the two reports together: read.
+    const Run yaesu = slewctl({"--dialect", "gs232b", "sim:?firmware=k3ng&dialect=gs232b&start_az=59&start_el=25", "get"});
+    QCOMPARE(yaesu.exitCode, 0);
+    QCOMPARE(yaesu.out, QStringLiteral("az 59.00 el 25.00\n"));
 }
 
 void SlewctlTest::exitCodesTellFailuresApart()

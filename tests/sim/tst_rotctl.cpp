@@ -123,17 +123,21 @@ private slots:
     {
         QTest::addColumn<int>("model");
         QTest::addColumn<QString>("dialect");
-        QTest::newRow("601 GS-232A") << 601 << "gs232a";
-        QTest::newRow("603 GS-232B") << 603 << "gs232b";
+        QTest::addColumn<QString>("firmware");
+        QTest::newRow("601 GS-232A") << 601 << "gs232a" << "slew";
+        QTest::newRow("603 GS-232B") << 603 << "gs232b" << "slew";
+        // K3NG's firmware joins its report, `AZ=040EL=025`: Hamlib reads it too.
+        QTest::newRow("603 GS-232B, K3NG's") << 603 << "gs232b" << "k3ng";
     }
 
     void gs232Models()
     {
         QFETCH(int, model);
         QFETCH(QString, dialect);
+        QFETCH(QString, firmware);
         SlewSimProcess sim;
         QVERIFY2(sim.start({"--model", "satnogs", "--time-scale", "10", "--pty", ptyPath(model), "--dialect", dialect, "--baud", "9600", "--log-received",
-                            logPath(model)}),
+                            logPath(model), "--firmware", firmware}),
                  qPrintable(sim.error()));
         QCOMPARE(rotctl(model, ptyPath(model), {"P", "40", "25"}).exitCode, 0);
         QVERIFY(getPosUntil(model, ptyPath(model), 40.0, 25.0));
@@ -145,6 +149,26 @@ private slots:
         for (const char *line : {"W040 025\n", "C2\n", "R\n", "S\n"})
             QVERIFY2(log.contains(line), qPrintable(QString("missing %1 in:\n%2").arg(line, log)));
         QVERIFY2(sim.standardError().contains(" 0 rejected"), sim.standardError().constData());
+    }
+
+    void model202AndK3ngsEasycom()
+    {
+        // K3NG's firmware answers Easycom's `AZ EL` with bare numbers; Hamlib's
+        // 202 does not read them ("unknown response", as with the firmware
+        // itself: its "Hamlib" build option exists for that). Slew does
+        // (tst_slewctl). Moves still reach it.
+        SlewSimProcess sim;
+        QVERIFY2(sim.start({"--model", "satnogs", "--time-scale", "10", "--pty", ptyPath(2020), "--dialect", "easycomm2",
+                            "--firmware", "k3ng", "--start-az", "59.1", "--start-el", "24.8", "--log-received", logPath(2020)}),
+                 qPrintable(sim.error()));
+        const RotctlResult read = rotctl(202, ptyPath(2020), {"p"});
+        // rotctl writes its error and the backend's trace to stdout; 4.5
+        // says "unknown response (+59.1 +24.8", 4.6 asks AZ and EL apart.
+        const QByteArray said = read.out + read.err;
+        QVERIFY2(read.exitCode != 0 && said.contains("+59.1"), said.constData());
+        QCOMPARE(rotctl(202, ptyPath(2020), {"P", "94", "25"}).exitCode, 0);
+        QCOMPARE(sim.stop(), 0);
+        QVERIFY2(readAll(logPath(2020)).contains("AZ94.0 EL25.0"), readAll(logPath(2020)).constData());
     }
 
     void model201Easycomm1OnlySendsPositions()
