@@ -228,6 +228,23 @@ QByteArray SimulatorFirmware::velocityReply(Op op) const
     return protocol::encodeToken(Message::number(op, std::max(0.0, v)), m_dialect);
 }
 
+void SimulatorFirmware::manualMove(Op op)
+{
+    // At the share of the manual speed GS-232's X1..X4 chose: all of it
+    // unless told otherwise, as on every Easycomm board.
+    const double az = 1000.0 * m_manualSpeedShare * m_rotator.axis(Axis::Azimuth).plant().manualSpeed;
+    const double el = 1000.0 * m_manualSpeedShare * m_rotator.axis(Axis::Elevation).plant().manualSpeed;
+    switch (op) {
+    case Op::MoveLeft: m_rotator.driveAzimuth(-az); break;
+    case Op::MoveRight: m_rotator.driveAzimuth(az); break;
+    case Op::MoveUp: m_rotator.driveElevation(el); break;
+    case Op::MoveDown: m_rotator.driveElevation(-el); break;
+    case Op::StopAzimuth: m_rotator.stopAzimuth(); break;
+    case Op::StopElevation: m_rotator.stopElevation(); break;
+    default: break;
+    }
+}
+
 void SimulatorFirmware::handle(const Message &m, QByteArray &out)
 {
     if (speaksK3ngEasycom())
@@ -259,8 +276,6 @@ void SimulatorFirmware::handle(const Message &m, QByteArray &out)
     };
     const double az = m_rotator.axis(Axis::Azimuth).position();
     const double el = m_rotator.axis(Axis::Elevation).position();
-    const double manual = 1000.0 * m_manualSpeedShare * m_rotator.axis(Axis::Azimuth).plant().manualSpeed;
-    const double manualEl = 1000.0 * m_manualSpeedShare * m_rotator.axis(Axis::Elevation).plant().manualSpeed;
 
     switch (m.op) {
     case Op::Azimuth:
@@ -287,12 +302,12 @@ void SimulatorFirmware::handle(const Message &m, QByteArray &out)
             m_rotator.driveElevation(m.op == Op::VelocityDown ? -m.value : m.value);
         }
         break;
-    case Op::MoveLeft: m_rotator.driveAzimuth(-manual); break;
-    case Op::MoveRight: m_rotator.driveAzimuth(manual); break;
-    case Op::MoveUp: m_rotator.driveElevation(manualEl); break;
-    case Op::MoveDown: m_rotator.driveElevation(-manualEl); break;
-    case Op::StopAzimuth: m_rotator.stopAzimuth(); break;
-    case Op::StopElevation: m_rotator.stopElevation(); break;
+    case Op::MoveLeft:
+    case Op::MoveRight:
+    case Op::MoveUp:
+    case Op::MoveDown:
+    case Op::StopAzimuth:
+    case Op::StopElevation: manualMove(m.op); break;
     case Op::Reset: m_rotator.reset(); break;
     case Op::Park: m_rotator.park(); break;
     case Op::Aos:

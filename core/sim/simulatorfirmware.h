@@ -78,6 +78,7 @@ public:
 private:
     QByteArray receiveMicro2g(QByteArrayView bytes);
     void handle(const protocol::Message &m, QByteArray &out);
+    void manualMove(protocol::Op op); // ML MR MU MD at the manual speed, SA SE
     void answer(const QByteArray &token);
     void alarm(const char *kind, QByteArrayView what, QByteArray &out);
     void refuse(const protocol::Message &m, QByteArray &out);

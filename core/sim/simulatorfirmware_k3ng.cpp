@@ -47,8 +47,6 @@ void SimulatorFirmware::handleK3ngEasycom(const Message &m, QByteArray &out)
     QByteArray reply;
     const double az = m_rotator.axis(Axis::Azimuth).position();
     const double el = m_rotator.axis(Axis::Elevation).position();
-    const double manual = 1000.0 * m_rotator.axis(Axis::Azimuth).plant().manualSpeed;
-    const double manualEl = 1000.0 * m_rotator.axis(Axis::Elevation).plant().manualSpeed;
     bool taken = true;
     switch (m.op) {
     case Op::Azimuth:
@@ -63,12 +61,12 @@ void SimulatorFirmware::handleK3ngEasycom(const Message &m, QByteArray &out)
         else
             taken = m_rotator.pointElevation(m.value);
         break;
-    case Op::MoveLeft: m_rotator.driveAzimuth(-manual); break;
-    case Op::MoveRight: m_rotator.driveAzimuth(manual); break;
-    case Op::MoveUp: m_rotator.driveElevation(manualEl); break;
-    case Op::MoveDown: m_rotator.driveElevation(-manualEl); break;
-    case Op::StopAzimuth: m_rotator.stopAzimuth(); break;
-    case Op::StopElevation: m_rotator.stopElevation(); break;
+    case Op::MoveLeft:
+    case Op::MoveRight:
+    case Op::MoveUp:
+    case Op::MoveDown:
+    case Op::StopAzimuth:
+    case Op::StopElevation: manualMove(m.op); break;
     case Op::Version:
         if (m.text.isEmpty())
             reply = "VE002"; // "sending 002 because this is easycom version 2?", says its source
