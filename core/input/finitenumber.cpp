@@ -5,11 +5,43 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 
 namespace slew::input {
 namespace {
 
 enum class Parsed { Number, NotANumber, NotFinite };
+
+// Plain decimals ("-0.0001234", "15.72125391") of at most 15 digits, the
+// common case in element sets: the digits as one whole number divided by a
+// power of ten. Both are exact in a double, so the one division is correctly
+// rounded, the same double std::from_chars gives, at a fraction of its cost
+// (libstdc++ 12's from_chars for double goes through strtod). Anything else
+// (an exponent, more digits) returns false and takes the general path.
+bool readPlainDecimal(const char *s, qsizetype size, double *out)
+{
+    qsizetype i = 0;
+    const bool negative = size > 0 && s[0] == '-';
+    if (negative)
+        ++i;
+    std::uint64_t mantissa = 0;
+    int digits = 0;
+    int fraction = 0;
+    for (; i < size && s[i] >= '0' && s[i] <= '9'; ++i, ++digits)
+        mantissa = mantissa * 10 + std::uint64_t(s[i] - '0');
+    if (i < size && s[i] == '.') {
+        for (++i; i < size && s[i] >= '0' && s[i] <= '9'; ++i, ++fraction)
+            mantissa = mantissa * 10 + std::uint64_t(s[i] - '0');
+    }
+    constexpr int kExactDigits = 15; // any whole number of 15 digits is exact in a double
+    if (i != size || digits + fraction == 0 || digits + fraction > kExactDigits)
+        return false;
+    static constexpr double kPowersOfTen[] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                              1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+    const double value = double(mantissa) / kPowersOfTen[fraction];
+    *out = negative ? -value : value;
+    return true;
+}
 
 // A decimal number, as QString::toDouble() reads it in the C locale, but
 // without its conversion to a temporary byte string: element-set files
@@ -32,6 +64,10 @@ Parsed parseDecimal(QStringView text, double *out)
     }
     if (ascii) {
         double value = 0;
+        if (readPlainDecimal(buffer, size, &value)) {
+            *out = value;
+            return Parsed::Number;
+        }
         const auto [end, error] = std::from_chars(buffer, buffer + size, value);
         if (error == std::errc() && end == buffer + size) {
             *out = value;

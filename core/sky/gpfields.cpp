@@ -394,7 +394,7 @@ bool elementSetFromGp(const GpEntry &entry, ElementSet *out, ElementSetRefusal *
     const QStringView letter = classification.text.trimmed().left(1);
     if (classification.kind == GpValue::Kind::Text && !letter.isEmpty() && letter[0].unicode() < 0x80 && letter[0].isLetter())
         set.classification = char(letter[0].toUpper().unicode());
-    *out = set;
+    *out = std::move(set);
     return true;
 }
 
@@ -403,7 +403,7 @@ void readGpEntry(const GpEntry &entry, ElementSetRead *read)
     ElementSet set;
     ElementSetRefusal refusal;
     if (elementSetFromGp(entry, &set, &refusal))
-        read->sets.append(set);
+        read->sets.append(std::move(set));
     else
         read->refusals.append(refusal);
 }

@@ -12,7 +12,10 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <charconv>
 #include <cmath>
+#include <cstdint>
+#include <string>
 #include <limits>
 #include <sys/stat.h>
 #include <sys/types.h>
@@ -63,6 +66,35 @@ private slots:
         QCOMPARE(read.has_value(), accepted);
         if (accepted)
             QCOMPARE(*read, value);
+    }
+
+    // Plain decimals of up to 15 digits are read by a division of their own:
+    // it must give the very double std::from_chars gives, bit for bit, for
+    // every length and place of the point, and leave longer texts alone.
+    void plainDecimalsAreTheNearestDouble()
+    {
+        std::uint64_t state = 0x2545f4914f6cdd1dULL;
+        const auto next = [&state] {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            return state;
+        };
+        for (int i = 0; i < 200000; ++i) {
+            const int digits = 1 + int(next() % 17);
+            std::string text = (next() & 1) ? "-" : "";
+            const int point = int(next() % (digits + 1));
+            for (int d = 0; d < digits; ++d) {
+                if (d == point)
+                    text += '.';
+                text += char('0' + next() % 10);
+            }
+            double expected = 0;
+            std::from_chars(text.c_str(), text.c_str() + text.size(), expected);
+            const std::optional<double> read = finiteNumber(QString::fromStdString(text));
+            QVERIFY2(read.has_value(), text.c_str());
+            QVERIFY2(std::signbit(*read) == std::signbit(expected) && *read == expected, text.c_str());
+        }
     }
 
     void rangesRefuseNanAndSayWhy()
