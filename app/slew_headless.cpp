@@ -13,6 +13,7 @@
 #include "slew_headless.h"
 
 #include "station/radiooptions.h"
+#include "session/profilehints.h"
 #include "station/remoteoperation.h"
 #include "remote/brokeraddress.h"
 #include "remote/brokerpassword.h"
@@ -258,12 +259,10 @@ int runHeadless(int argc, char *argv[])
         if (!d)
             return fail(QStringLiteral("%1: unknown dialect '%2'").arg(label(dialect), shown(parser.value(dialect))));
         config.profile.dialect = *d;
-    } else if (!parser.isSet(profile)) {
-        // Neither names one: the link may (a simulator's `dialect=`), as the
-        // window's connection bar takes it.
-        if (const auto d = slew::protocol::dialectFromName(slew::transport::linkHintsFor(config.profile.uri).dialect))
-            config.profile.dialect = *d;
     }
+    // Where neither names one, the link may (`dialect=`, a simulator's own),
+    // as the window's connection bar takes it; and its `firmware=`.
+    config.profile = slew::session::profileNamedByUri(config.profile, parser.isSet(dialect) || parser.isSet(profile));
     if (parser.isSet(listen)) {
         if (!slew::transport::parseHostPort(parser.value(listen), &config.rotctldAddress, &config.rotctldPort))
             return fail(QStringLiteral("%1 %2: expected ADDRESS:PORT, with a port from 0 to 65535")

@@ -127,10 +127,11 @@ int main(int argc, char *argv[])
     const FirmwareCounters &c = simulator.counters();
     std::fprintf(stderr,
                  "slew-sim: %llu lines, %llu commands, %llu rejected (%llu unknown, %llu malformed, %llu out of "
-                 "limits, %llu overlong, %llu bad checksum)\n",
+                 "limits, %llu overlong, %llu bad checksum), %llu bytes lost in the line's turn-around\n",
                  (unsigned long long)c.lines, (unsigned long long)c.commands, (unsigned long long)c.rejected(),
                  (unsigned long long)c.unknown, (unsigned long long)c.malformed, (unsigned long long)c.outOfLimits,
-                 (unsigned long long)c.overlong, (unsigned long long)c.badChecksum);
+                 (unsigned long long)c.overlong, (unsigned long long)c.badChecksum,
+                 (unsigned long long)c.lostInTurnaround);
     terminal.reset(); // removes the symlink
     return status;
 }

@@ -12,6 +12,7 @@
 #include "linkschemes.h"
 #include "model/rotatorprofile.h"
 #include "protocol/dialect.h"
+#include "session/profilehints.h"
 #include "session/rotatorsession.h"
 #include "transport/linkfactory.h"
 #include "cli/terminationsignalwatcher.h"
@@ -171,9 +172,10 @@ int main(int argc, char *argv[])
         profile.dialect = *dialect;
     }
     profile.uri = positional.first();
-    // A rotctld:// peer speaks one dialect whatever --dialect or the profile say.
-    if (slew::transport::linkHintsFor(profile.uri).dialect == slew::protocol::dialectName(slew::protocol::Dialect::Rotctld))
-        profile.dialect = slew::protocol::Dialect::Rotctld;
+    // What the URI names (`dialect=`, `firmware=`, a simulator's own, a
+    // rotctld:// peer) where --dialect and --profile do not say otherwise.
+    profile = slew::session::profileNamedByUri(
+        profile, parser.isSet(QStringLiteral("dialect")) || parser.isSet(QStringLiteral("profile")));
     int timeoutSeconds = 600;
     if (parser.isSet(QStringLiteral("timeout"))) {
         bool ok = false;

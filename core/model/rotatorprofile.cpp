@@ -57,6 +57,8 @@ QString RotatorProfile::validate() const
 {
     if (QString e = limits.validate(); !e.isEmpty())
         return e;
+    if (QString e = protocol::firmwareDialectConflict(firmware, dialect); !e.isEmpty())
+        return e;
     if (!MoveGate(limits).pointing(parkAz, parkEl, std::nullopt).allowed())
         return QObject::tr("park position %1°, %2° is outside the limits").arg(parkAz).arg(parkEl);
     if (!(deadbandDeg >= 0.0 && deadbandDeg <= 10.0))
@@ -102,6 +104,8 @@ QJsonObject RotatorProfile::toJson() const
                                {"drive", motion.drive == RotatorMotion::Drive::Relay ? "relay" : "servo"},
                                {"trackStepDeg", motion.trackStepDeg}}},
     };
+    if (firmware != protocol::Firmware::Generic)
+        o.insert("firmware", protocol::firmwareName(firmware));
     if (azGains)
         o.insert("azGains", gainsToJson(*azGains));
     if (elGains)
@@ -125,6 +129,15 @@ std::optional<RotatorProfile> RotatorProfile::fromJson(const QJsonObject &o, QSt
             return std::nullopt;
         }
         p.dialect = *d;
+    }
+    if (o.contains("firmware")) {
+        const auto f = protocol::firmwareFromName(o.value("firmware").toString());
+        if (!f) {
+            err = QObject::tr("unknown firmware '%1' (known: %2)")
+                      .arg(o.value("firmware").toString(), protocol::firmwareNameList());
+            return std::nullopt;
+        }
+        p.firmware = *f;
     }
     const QJsonObject lim = o.value("limits").toObject();
     const QJsonObject park = o.value("park").toObject();

@@ -5,6 +5,7 @@
 
 #include "rotatorlimits.h"
 #include "protocol/dialect.h"
+#include "protocol/firmware.h"
 
 #include <QJsonObject>
 #include <QString>
@@ -41,6 +42,9 @@ struct RotatorProfile {
     QString name = QStringLiteral("Simulator");
     QString uri = QStringLiteral("sim:");
     protocol::Dialect dialect = protocol::Dialect::Easycomm3;
+    // The controller's firmware, where its quirks matter (protocol/firmware.h):
+    // how close it stops, whether its status shows motion, what it lacks.
+    protocol::Firmware firmware = protocol::Firmware::Generic;
     RotatorLimits limits;
     double parkAz = 0.0;
     double parkEl = 90.0;

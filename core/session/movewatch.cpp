@@ -54,6 +54,11 @@ void MoveWatch::watch(std::optional<QPointF> target)
     m_watching = true;
     m_target = target;
     m_last.reset();
+    // Where it stood when the move went out: a move that happens wholly
+    // between two polls (a fast controller, a slow poll) is still motion.
+    m_start.reset();
+    if (m_session->hasPosition())
+        m_start = QPointF(m_session->azimuth(), m_session->elevation());
     m_steadyPolls = 0;
     m_sawMotion = false;
     m_refusal.clear();
@@ -80,15 +85,33 @@ void MoveWatch::onPosition(double az, double el, bool stale)
                         && std::abs(el - m_last->y()) <= kRestDegrees;
     m_steadyPolls = steady ? m_steadyPolls + 1 : 0;
     const StatusWord status = m_session->status();
-    m_sawMotion = m_sawMotion || (m_last && !steady) || status.anyMoving();
+    const protocol::FirmwareTraits &firmware = m_session->firmwareTraits();
+    const bool movedFromStart = m_start && (bearingDifference(az, m_start->x()) > kRestDegrees
+                                            || std::abs(el - m_start->y()) > kRestDegrees);
+    m_sawMotion = m_sawMotion || (m_last && !steady) || movedFromStart || status.anyMoving();
     m_last = QPointF(az, el);
-    const bool atRest = m_steadyPolls >= kRestPolls || (status.valid && status.idle() && m_steadyPolls >= 1);
+    // Rest is judged from motion: the position has stopped changing. A
+    // status word saying idle shortens that to one steady pair, only where
+    // the firmware sets its moving bit while it moves (not SatNOGS's, which
+    // answers GS4 for a whole move; its steppers pause while it answers, so
+    // two equal readings happen mid-move).
+    const bool statusSaysIdle = firmware.statusShowsMotion && status.valid && status.idle();
+    const bool atRest = m_steadyPolls >= kRestPolls || (statusSaysIdle && m_steadyPolls >= 1);
     if (!atRest)
         return;
-    if (m_target ? offTarget(*m_last) <= kArrivedDegrees : m_sawMotion)
+    if (m_target ? arrived(*m_last) : m_sawMotion)
         finish(Outcome::Arrived);
     else if (m_sawMotion)
         finish(Outcome::StoppedShort);
+}
+
+bool MoveWatch::arrived(QPointF at) const
+{
+    // Within the controller's own tolerance is where it stops by design
+    // (K3NG's 3° in azimuth): arrived, not short.
+    const protocol::FirmwareTraits &firmware = m_session->firmwareTraits();
+    return bearingDifference(at.x(), m_target->x()) <= std::max(kArrivedDegrees, firmware.azToleranceDeg)
+           && std::abs(at.y() - m_target->y()) <= std::max(kArrivedDegrees, firmware.elToleranceDeg);
 }
 
 void MoveWatch::finish(Outcome outcome)

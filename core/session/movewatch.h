@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Follows one move to its end and says once how it ended: arrived (come to
-// rest within kArrivedDegrees of the target), stopped short (came to rest
+// rest within kArrivedDegrees of the target, or within the controller's own
+// tolerance where it is wider: protocol/firmware.h), stopped short (came to rest
 // elsewhere after moving: a limit, an obstacle, a stop from another client),
 // stopped (a stop went out through this session), replaced (another target
 // was sent), refused (the controller answered the move with its "no") or
@@ -50,10 +51,12 @@ private:
     void onPosition(double az, double el, bool stale);
     void finish(Outcome outcome);
     double offTarget(QPointF at) const;
+    bool arrived(QPointF at) const; // at rest here, a move to m_target has arrived
 
     RotatorSession *m_session;
     bool m_watching = false;
     std::optional<QPointF> m_target;
+    std::optional<QPointF> m_start; // where the rotator stood when the move went out
     std::optional<QPointF> m_last;
     int m_steadyPolls = 0;
     bool m_sawMotion = false;

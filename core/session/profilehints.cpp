@@ -2,6 +2,10 @@
 #include "profilehints.h"
 
 #include "protocol/dialect.h"
+#include "protocol/firmware.h"
+#include "transport/linkfactory.h"
+
+#include <QObject>
 
 namespace slew::session {
 
@@ -10,6 +14,11 @@ model::RotatorProfile profileWithHints(model::RotatorProfile profile, const tran
     model::RotatorProfile hinted = profile;
     if (const auto dialect = protocol::dialectFromName(hints.dialect))
         hinted.dialect = *dialect;
+    if (const auto firmware = protocol::firmwareFromName(hints.firmware))
+        hinted.firmware = *firmware;
+    // A firmware named for another dialect says nothing of this one.
+    if (!protocol::firmwareDialectConflict(hinted.firmware, hinted.dialect).isEmpty())
+        hinted.firmware = protocol::Firmware::Generic;
     if (hints.azMax)
         hinted.limits.azMax = *hints.azMax;
     if (hints.elMax)
@@ -22,9 +31,37 @@ model::RotatorProfile profileWithHints(model::RotatorProfile profile, const tran
     // than the operator's own profile.
     if (!hinted.validate().isEmpty()) {
         profile.dialect = hinted.dialect;
+        profile.firmware = hinted.firmware;
         return profile;
     }
     return hinted;
+}
+
+QString hintNamesProblem(const transport::LinkHints &hints)
+{
+    if (!hints.dialect.isEmpty() && !protocol::dialectFromName(hints.dialect))
+        return QObject::tr("unknown dialect '%1' (known: %2)").arg(hints.dialect, protocol::dialectNameList());
+    const auto firmware = protocol::firmwareFromName(hints.firmware);
+    if (!hints.firmware.isEmpty() && !firmware)
+        return QObject::tr("unknown firmware '%1' (known: %2)").arg(hints.firmware, protocol::firmwareNameList());
+    // Both named, and they do not go together: a slip the operator should
+    // hear of, not a firmware quietly dropped.
+    if (const auto dialect = protocol::dialectFromName(hints.dialect); dialect && firmware)
+        return protocol::firmwareDialectConflict(*firmware, *dialect);
+    return {};
+}
+
+model::RotatorProfile profileNamedByUri(model::RotatorProfile profile, bool operatorNamedDialect)
+{
+    const transport::LinkHints hints = transport::linkHintsFor(profile.uri);
+    const auto dialect = protocol::dialectFromName(hints.dialect);
+    if (dialect && (*dialect == protocol::Dialect::Rotctld || !operatorNamedDialect))
+        profile.dialect = *dialect;
+    if (const auto firmware = protocol::firmwareFromName(hints.firmware))
+        profile.firmware = *firmware;
+    if (!protocol::firmwareDialectConflict(profile.firmware, profile.dialect).isEmpty())
+        profile.firmware = protocol::Firmware::Generic;
+    return profile;
 }
 
 } // namespace slew::session

@@ -6,6 +6,7 @@
 #include "rotatorsession.h"
 
 #include "micro2gcalibration.h"
+#include "profilehints.h"
 #include "stationradio.h"
 
 #include "input/logtext.h"
@@ -49,6 +50,7 @@ RotatorSession::RotatorSession(QObject *parent) : QObject(parent), m_queue(m_opt
 
     m_replyTimer.setSingleShot(true);
     connect(&m_replyTimer, &LinkTimer::timeout, this, &RotatorSession::onReplyTimeout);
+    connect(&m_turnaround, &LineTurnaround::released, this, &RotatorSession::writeNow);
     m_reconnectTimer.setSingleShot(true);
     connect(&m_reconnectTimer, &QTimer::timeout, this, &RotatorSession::openLink);
     m_staleTimer.setSingleShot(true);
@@ -97,6 +99,10 @@ void RotatorSession::updatePollPace()
         pollMs = std::max(pollMs, 2 * exchangeMs);
         m_replyTimeoutMs = std::max(m_replyTimeoutMs, exchangeMs + 300);
     }
+    // A firmware that polling starves (its replies hold its loop) is
+    // polled no faster than it keeps up with.
+    pollMs = std::max(pollMs, firmwareTraits().shortestPollMs);
+    m_turnaround.setTurnaroundMs(firmwareTraits().turnaroundMs);
     m_refusals.setWindowMs(m_replyTimeoutMs);
     m_pace.setIntervals(pollMs, int(std::lround(1000.0 / std::max(0.1, m_profile.restPollHz))));
     retimePolling();
@@ -197,6 +203,12 @@ void RotatorSession::disconnectFromRotator()
 void RotatorSession::openLink()
 {
     transport::LinkResult made = m_linkMaker ? m_linkMaker(m_uri) : transport::createLink(m_uri);
+    if (made.link) {
+        if (const QString problem = hintNamesProblem(made.link->hints()); !problem.isEmpty()) {
+            made.error = tr("%1: %2").arg(m_uri, problem);
+            made.link.reset();
+        }
+    }
     if (!made.link) {
         m_wantConnected = false;
         setState(State::Disconnected, made.error);
@@ -206,6 +218,7 @@ void RotatorSession::openLink()
     m_link = std::move(made.link);
     for (LinkTimer *t : {&m_replyTimer, &m_pollTimer, &m_staleTimer, &m_stopHoldTimer, &m_keepAliveTimer, &m_heldBackReport})
         t->followClockOf(m_link.get());
+    m_turnaround.followClockOf(m_link.get());
     connect(m_link.get(), &transport::Link::opened, this, &RotatorSession::onLinkOpened);
     connect(m_link.get(), &transport::Link::failed, this, &RotatorSession::onLinkDown);
     connect(m_link.get(), &transport::Link::lost, this, &RotatorSession::onLinkDown);
@@ -277,6 +290,7 @@ void RotatorSession::dropLink(const QString &reason)
     m_replyTimer.stop();
     m_staleTimer.stop();
     m_stopHoldTimer.stop();
+    m_turnaround.clear();
     m_onWire = false;
     m_jogSpeed = {0.0, 0.0};
     // Whatever the rotator was doing, the session no longer knows: the next
@@ -319,6 +333,7 @@ void RotatorSession::onReadyRead()
     if (bytes.isEmpty())
         return;
     emit bytesReceived(bytes);
+    m_turnaround.noteReceived(nowMs());
     if (m_checksum)
         m_frames.feed(bytes, [this](protocol::FrameCheck check, QByteArrayView line) { onFrame(check, line); });
     else
@@ -503,8 +518,13 @@ void RotatorSession::applyRefusal(const Message &m)
     const RefusalOwner::Answer owner = m_refusals.take(m_onWire, nowMs());
     switch (owner.owner) {
     case RefusalOwner::Owner::Command: {
-        const QString why = tr("the controller refused '%1' (it answered '%2')")
-                                .arg(quoted(owner.line.trimmed()), answer);
+        QString why = tr("the controller refused '%1' (it answered '%2')").arg(quoted(owner.line.trimmed()), answer);
+        // A controller without PARK (K3NG's Easycom) still reaches the
+        // park position by a go-to: say which, so the operator can.
+        if (owner.line == protocol::encodeLine({Message::query(Op::Park)}, m_profile.dialect))
+            why += tr("; a go-to to the profile's park position, az %1 el %2, goes there instead")
+                       .arg(m_profile.parkAz + azimuthOffset(), 0, 'f', 1)
+                       .arg(m_profile.parkEl + elevationOffset(), 0, 'f', 1);
         m_activeTarget.reset();
         emit targetCleared();
         emit controllerRefusedMove(why);

@@ -10,12 +10,14 @@
 
 #include "controllerlogallowance.h"
 #include "echofilter.h"
+#include "lineturnaround.h"
 #include "linktimer.h"
 #include "model/movegate.h"
 #include "model/rotatorprofile.h"
 #include "pollpace.h"
 #include "refusalowner.h"
 #include "protocol/checksum.h"
+#include "protocol/firmware.h"
 #include "protocol/parser.h"
 #include "requestqueue.h"
 #include "transport/linkfactory.h"
@@ -65,6 +67,10 @@ public:
 
     void setProfile(const model::RotatorProfile &profile);
     const model::RotatorProfile &profile() const { return m_profile; }
+    // The controller's firmware (the profile's, or the SatNOGS dialect's
+    // own) and what it does that its dialect does not say.
+    protocol::Firmware firmware() const { return protocol::firmwareOf(m_profile.dialect, m_profile.firmware); }
+    const protocol::FirmwareTraits &firmwareTraits() const { return protocol::firmwareTraits(firmware()); }
     void setOptions(const Options &options);
     const Options &options() const { return m_options; }
 
@@ -106,7 +112,9 @@ public:
     // Where PARK takes the antenna. A controller with park registers (CW7/CW8,
     // hasParkRegisters()) parks where they say, whatever the profile thinks:
     // they are read on every connect, after the probe, and until both are in
-    // parkKnown() is false and these fall back to the profile's guess. A
+    // parkKnown() is false and these fall back to the profile's guess. The
+    // probe reads them, so that no client that waits for it (slewctl's
+    // park) sends PARK before they are in. A
     // controller without them parks at the profile's position (by a go-to, or
     // its own command), which is then as known as it gets.
     // (rotatorsession_park.cpp)
@@ -344,7 +352,9 @@ private:
     // of reach (90° with a -1° offset on a 0..90° rotator) is taken to the
     // nearest reachable one; any other is left for the gate to judge.
     double withinOffsetReach(double elevation) const;
-    void write(const QByteArray &line);
+    enum class LineKind { Command, Request }; // a request waits for its answer
+    void write(const QByteArray &line, LineKind kind = LineKind::Command);
+    void writeNow(const QByteArray &bytes); // framed, past the line's turn-around
     void writeMove(const QByteArray &line); // a new move: the pending stop hold is void
     void sendStopHold();
     void rememberSent(const protocol::Message &m) { m_echoes.noteSent(m, nowMs()); }
@@ -354,10 +364,12 @@ private:
     void finishFront(bool ok, const QString &reason);
 
     void startProbe();
-    void readParkRegisters();
+    void probeAnswered(); // one probe request has ended; the last ends the probe
+    void readParkRegistersInProbe();
     void forgetParkRegisters();
     void noteParkRegister(int reg, double value); // a CR7/CR8 reply, whoever asked
     void poll();
+    int telemetryEveryPolls() const; // one poll in this many also asks for telemetry
     // The poll timer (and the stale timer that follows it) at the interval
     // the pace says now; a change starts the period afresh.
     void retimePolling();
@@ -386,6 +398,7 @@ private:
     RequestQueue m_queue;
     bool m_onWire = false;
     LinkTimer m_replyTimer;
+    LineTurnaround m_turnaround; // the pause a half-duplex line needs after each reply
 
     LinkTimer m_pollTimer;
     PollPace m_pace;

@@ -2,9 +2,9 @@
 // RotatorSession, part five: where PARK goes. An Easycomm III or SatNOGS
 // controller parks at its own registers CW7/CW8, which need not be what the
 // profile says (a fresh profile says 0/90, a fresh controller may hold 0/0).
-// So the session reads them once on every connect, after the probe, and
-// until they are in it says the park is not known rather than show the
-// profile's guess as if it were the controller's.
+// So the session reads them once on every connect, as the last part of the
+// probe, and until they are in it says the park is not known rather than
+// show the profile's guess as if it were the controller's.
 
 #include "rotatorsession.h"
 
@@ -41,7 +41,7 @@ double RotatorSession::controllerParkElevation() const
     return hasParkRegisters() ? m_parkRegister[1].value_or(m_profile.parkEl) : m_profile.parkEl;
 }
 
-void RotatorSession::readParkRegisters()
+void RotatorSession::readParkRegistersInProbe()
 {
     for (int reg : {7, 8}) {
         Request r;
@@ -58,7 +58,9 @@ void RotatorSession::readParkRegisters()
                 emit errorOccurred(tr("could not read park register %1: %2; the park position is not known")
                                        .arg(reg)
                                        .arg(reason));
+            probeAnswered();
         };
+        ++m_probesOutstanding; // before: a full queue answers at once
         enqueue(std::move(r));
     }
 }

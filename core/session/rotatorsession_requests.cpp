@@ -54,15 +54,23 @@ CommandResult RotatorSession::requireLink()
     return refuse(tr("not connected to a rotator"));
 }
 
-void RotatorSession::write(const QByteArray &line)
+void RotatorSession::write(const QByteArray &line, LineKind kind)
 {
     if (!m_link || line.isEmpty())
         return;
     // Requests keep their plain line (the queue compares them); the frame
     // is added on the way out.
     const QByteArray framed = m_checksum ? protocol::withChecksums(line) : line;
-    m_link->device()->write(framed);
-    emit bytesSent(framed);
+    if (!m_turnaround.hold(framed, kind == LineKind::Request, nowMs()))
+        writeNow(framed);
+}
+
+void RotatorSession::writeNow(const QByteArray &bytes)
+{
+    if (!m_link || !m_link->isOpen())
+        return;
+    m_link->device()->write(bytes);
+    emit bytesSent(bytes);
 }
 
 bool RotatorSession::enqueue(Request r)
@@ -88,7 +96,7 @@ void RotatorSession::sendNext()
     front->satisfied = 0;
     m_onWire = true;
     m_link->setAwaitingReply(true); // a shared line holds the wire for the answer
-    write(front->line);
+    write(front->line, LineKind::Request);
     m_refusals.noteRequestWritten();
     m_replyTimer.start(m_replyTimeoutMs);
 }
@@ -98,6 +106,7 @@ void RotatorSession::onReplyTimeout()
     Request *front = m_queue.front();
     if (!front || !m_onWire)
         return;
+    m_turnaround.replyEnded(nowMs()); // none came
     if (--front->attemptsLeft > 0) {
         m_onWire = false;
         sendNext();
@@ -110,6 +119,7 @@ void RotatorSession::finishFront(bool ok, const QString &reason)
 {
     m_replyTimer.stop();
     m_onWire = false;
+    m_turnaround.replyEnded(nowMs());
     if (m_link)
         m_link->setAwaitingReply(false);
     if (m_queue.isEmpty())
@@ -168,13 +178,11 @@ void RotatorSession::startProbe()
         }
         r.done = [this, flag = p.flag](bool ok, const QString &) {
             m_caps.*flag = ok;
-            if (--m_probesOutstanding == 0) {
-                m_caps.probed = true;
-                emit capabilitiesChanged(m_caps);
-                poll();
-                if (m_caps.config)
-                    readParkRegisters();
-            }
+            // The park registers are part of the probe: a client that waits
+            // for it to end (slewctl park) then parks where they say.
+            if (flag == &Capabilities::config && ok)
+                readParkRegistersInProbe();
+            probeAnswered();
         };
         requests.append(std::move(r));
     }
@@ -186,6 +194,15 @@ void RotatorSession::startProbe()
     }
     for (Request &r : requests)
         enqueue(std::move(r));
+}
+
+void RotatorSession::probeAnswered()
+{
+    if (--m_probesOutstanding > 0)
+        return;
+    m_caps.probed = true;
+    emit capabilitiesChanged(m_caps);
+    poll();
 }
 
 void RotatorSession::poll()
@@ -225,7 +242,7 @@ void RotatorSession::poll()
         }
         enqueue(std::move(r));
     }
-    if (m_pollCount++ % std::max(1, m_options.telemetryEvery) != 0)
+    if (m_pollCount++ % telemetryEveryPolls() != 0)
         return;
 
     auto ask = [&](Op op, int index) {
@@ -254,10 +271,19 @@ void RotatorSession::poll()
         for (int input : {0, 1, 2, 5, 6, 7, 8})
             ask(Op::ReadInput, input);
     }
-    if (m_caps.config) {
+    if (m_caps.config && firmwareTraits().commandedRegisters) {
         ask(Op::ConfigRead, 10);
         ask(Op::ConfigRead, 11);
     }
+}
+
+int RotatorSession::telemetryEveryPolls() const
+{
+    // A firmware that a busy line starves asks for its telemetry (status,
+    // errors, inputs: nine lines) less often than the options say.
+    const int intervalMs = std::max(1, m_pace.intervalMs(nowMs()));
+    const int firmwareEvery = (firmwareTraits().telemetryEveryMs + intervalMs - 1) / intervalMs;
+    return std::max({1, m_options.telemetryEvery, firmwareEvery});
 }
 
 void RotatorSession::keepAlive()

@@ -14,6 +14,10 @@ struct FirmwareCounters {
     std::uint64_t outOfLimits = 0; // an angle or register value the rotator refused
     std::uint64_t overlong = 0;    // tokens dropped for length
     std::uint64_t badChecksum = 0; // lines refused unread: wrong or missing `*HH` (checksum=1)
+    // Bytes sent while a half-duplex line still carried the controller's
+    // reply (firmware=satnogs: within 9 ms of it): never heard. Not counted
+    // as rejected: the firmware did not see them to reject them.
+    std::uint64_t lostInTurnaround = 0;
 
     std::uint64_t rejected() const { return unknown + malformed + outOfLimits + overlong + badChecksum; }
 };

@@ -119,6 +119,12 @@ void SimulatorConnection::receive(QByteArrayView bytes)
 
 void SimulatorConnection::process(QByteArrayView bytes, double arrivedAt)
 {
+    // A half-duplex line still driven by the controller's reply: the host's
+    // bytes collide with it and are never heard (RS485, the SatNOGS board).
+    if (arrivedAt < m_deafUntil) {
+        m_simulator.counters().lostInTurnaround += quint64(bytes.size());
+        return;
+    }
     m_log.add(bytes);
     m_simulator.syncToNow();
     // An echoing adapter hands the host its own bytes back as they pass,
@@ -148,6 +154,10 @@ void SimulatorConnection::process(QByteArrayView bytes, double arrivedAt)
 void SimulatorConnection::answer(QByteArray bytes, double at)
 {
     send(m_settings.checksum ? protocol::withChecksums(bytes) : std::move(bytes), at);
+    // The SatNOGS board lets go of its RS485 pair about 9 ms after the last
+    // byte of its reply (docs/protocol.md, "Controllers in the field").
+    if (m_firmware.firmware() == Firmware::SatNogs)
+        m_deafUntil = std::max(at + m_simulator.linkFaults().latency, m_outboundFreeAt) + kSatnogsTurnaroundS;
 }
 
 void SimulatorConnection::corrupt(QByteArray &bytes)

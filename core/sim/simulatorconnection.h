@@ -98,6 +98,8 @@ private:
     double m_inboundFreeAt = 0.0;  // the paced line is busy until then
     double m_outboundFreeAt = 0.0;
     double m_idleFlushAt = -1.0;
+    double m_deafUntil = -1.0; // a half-duplex line hears nothing before then
+    static constexpr double kSatnogsTurnaroundS = 0.009;
     double m_openedAt = 0.0;
     bool m_dropped = false;
     QByteArray *m_finalOutput = nullptr; // set while takeFinalOutput() collects

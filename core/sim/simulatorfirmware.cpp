@@ -281,7 +281,7 @@ void SimulatorFirmware::handle(const Message &m, QByteArray &out)
     case Op::Azimuth:
         if (!m.hasValue)
             answer(angle(m.op, az));
-        else if (!m_rotator.pointAzimuth(m.value))
+        else if (!pointAzimuth(m.value))
             return refuse(m, out);
         break;
     case Op::Elevation:
@@ -345,8 +345,8 @@ void SimulatorFirmware::handle(const Message &m, QByteArray &out)
     case Op::ConfigRead:
         if (m.hasValue || !m.text.isEmpty())
             return readOnly();
-        if (const auto v = m_rotator.readRegister(m.index))
-            answer(registerReply(m.index, *v));
+        if (const auto v = m_rotator.readRegister(registerRead(m.index)))
+            answer(registerReply(registerRead(m.index), *v));
         else
             return refuse(m, out);
         break;
@@ -365,8 +365,7 @@ void SimulatorFirmware::handle(const Message &m, QByteArray &out)
         if (protocol::isGs232(m_dialect)) // `ST=n`, one status for both axes (docs/protocol.md)
             answer(protocol::encodeReport(Message::number(Op::Status, m_rotator.combinedStatus()), m_dialect));
         else
-            answer("GS" + QByteArray::number(m_dialect == Dialect::Easycomm3 ? m_rotator.status()
-                                                                               : m_rotator.combinedStatus()));
+            answer("GS" + QByteArray::number(m_dialect == Dialect::Easycomm3 ? m_rotator.status() : combinedStatus()));
         break;
     case Op::ErrorFlags:
         if (m.hasValue)

@@ -49,6 +49,7 @@ public:
     void configureSpid(const SpidSettings &settings);
     // Answer as this firmware does (simulatoroptions.h); Slew's own by default.
     void setFirmware(Firmware firmware) { m_firmware = firmware; }
+    Firmware firmware() const { return m_firmware; }
 
     // Feeds bytes from the host; returns what the device answers to them
     // (possibly nothing, possibly several lines). At most a few alarms per
@@ -84,9 +85,13 @@ private:
     void refuse(const protocol::Message &m, QByteArray &out);
     void finishLine(QByteArray &out);
     // K3NG's (simulatorfirmware_k3ng.cpp).
+    bool pointAzimuth(double degrees); // within K3NG's tolerance, short of the target
     bool speaksK3ngEasycom() const;
     void handleK3ngEasycom(const protocol::Message &m, QByteArray &out);
     QByteArray reportSeparator() const; // between two answers on one line
+    // The SatNOGS firmware's (simulatorfirmware_satnogs.cpp).
+    int registerRead(int asked) const; // which register a CR n reads
+    int combinedStatus() const;        // GS for the whole rotator
     bool answersAtAll() const { return m_dialect != protocol::Dialect::Easycomm1; }
     bool sendsAlarms() const;
 
@@ -98,7 +103,7 @@ private:
     SimulatedRotator &m_rotator;
     FirmwareCounters &m_counters;
     protocol::Dialect m_dialect;
-    Firmware m_firmware = Firmware::Slew;
+    Firmware m_firmware = Firmware::Generic;
     protocol::Parser m_parser;
     QByteArray m_lineAnswers;
     bool m_awaitingLineEnd = false;

@@ -12,6 +12,8 @@
 
 #include "protocol/encoder.h"
 
+#include <cmath>
+
 namespace slew::sim {
 
 using protocol::Dialect;
@@ -27,7 +29,28 @@ QByteArray k3ngAngle(double degrees)
     return (degrees >= 0 ? "+" : "") + protocol::formatNumber(degrees, 1);
 }
 
+// Where K3NG's relay lets go inside its 3° tolerance, short of the target.
+constexpr double kK3ngStopsShortDegrees = 2.3;
+
 } // namespace
+
+bool SimulatorFirmware::pointAzimuth(double degrees)
+{
+    if (m_firmware != Firmware::K3ng)
+        return m_rotator.pointAzimuth(degrees);
+    // K3NG drives until the azimuth is within its AZIMUTH_TOLERANCE, then
+    // lets go of the relay: a target already that close does not move it,
+    // and a move ends short of the target, inside the tolerance (2.3° short,
+    // as seen on its relays and potentiometer).
+    const double tolerance = protocol::firmwareTraits(Firmware::K3ng).azToleranceDeg;
+    const double az = m_rotator.axis(Axis::Azimuth).position();
+    const AxisPlant &plant = m_rotator.axis(Axis::Azimuth).plant();
+    if (!std::isfinite(degrees) || degrees < plant.minDegrees || degrees > plant.maxDegrees)
+        return m_rotator.pointAzimuth(degrees); // refused there, as for any firmware
+    if (std::abs(degrees - az) <= tolerance)
+        return true;
+    return m_rotator.pointAzimuth(degrees - std::copysign(kK3ngStopsShortDegrees, degrees - az));
+}
 
 bool SimulatorFirmware::speaksK3ngEasycom() const
 {
@@ -53,7 +76,7 @@ void SimulatorFirmware::handleK3ngEasycom(const Message &m, QByteArray &out)
         if (!m.hasValue)
             reply = k3ngAngle(az);
         else
-            taken = m_rotator.pointAzimuth(m.value);
+            taken = pointAzimuth(m.value);
         break;
     case Op::Elevation:
         if (!m.hasValue)

@@ -43,9 +43,11 @@ const std::vector<SimulatorOptionInfo> kOptions = {
      "easycomm1, easycomm2, easycomm3, satnogs, gs232a, gs232b, micro2g (the four-rotor Micro-2g controller), "
      "or the binary SPID rot2prog, rot1prog (azimuth only) and md01 (MD-01/02 in ROT2 mode)"},
     {"firmware", "name",
-     "slew (default) or k3ng: answer as K3NG's Arduino firmware does, in its Easycom emulation (dialect easycomm2: "
-     "`+aaa.a +eee.e`, each answer ended by the byte that ended its query, `?` for what it lacks) or its Yaesu one "
-     "(gs232a, gs232b: `AZ=aaaEL=eee`, `?>` for what it lacks)"},
+     "generic (default: as the documents say), k3ng or satnogs. k3ng answers as K3NG's Arduino firmware does, in its "
+     "Easycom emulation (dialect easycomm2: `+aaa.a +eee.e`, each answer ended by the byte that ended its query, `?` "
+     "for what it lacks) or its Yaesu one (gs232a, gs232b: `AZ=aaaEL=eee`, `?>` for what it lacks), and stops within "
+     "3 degrees of an azimuth target. satnogs (dialect satnogs) answers as the SatNOGS firmware v2.2 does: GS4 for a "
+     "whole move, CR10 and CR11 read as register 1, a line heard only 9 ms after its last reply"},
     {"spid_pulses", "n", "rot2prog, md01: the resolution the controller reports in PH/PV, pulses per degree: 1, 2 (default), 4 or 10"},
     {"md01_log", "", "md01: write a text log line before every reply, as some MD-01 firmware does"},
     {"state_file", "path", "micro2g: keep the controller's calibration, presets and tolerances in this file across restarts"},
@@ -256,12 +258,10 @@ QString applySimulatorOption(SimulatorOptions &o, QStringView rawName, QStringVi
         return {};
     }
     if (name == u"firmware") {
-        if (value.compare(u"slew", Qt::CaseInsensitive) == 0)
-            o.firmware = Firmware::Slew;
-        else if (value.compare(u"k3ng", Qt::CaseInsensitive) == 0)
-            o.firmware = Firmware::K3ng;
-        else
-            return bad(name, value, QStringLiteral("expected slew or k3ng"));
+        const auto firmware = protocol::firmwareFromName(value);
+        if (!firmware)
+            return bad(name, value, QStringLiteral("expected one of: %1").arg(protocol::firmwareNameList()));
+        o.firmware = *firmware;
         return {};
     }
     if (name == u"spid_pulses") {
@@ -362,10 +362,8 @@ QString applySimulatorOption(SimulatorOptions &o, QStringView rawName, QStringVi
 
 QString checkSimulatorOptions(const SimulatorOptions &o)
 {
-    using protocol::Dialect;
-    if (o.firmware == Firmware::K3ng && o.dialect != Dialect::Easycomm2 && !protocol::isGs232(o.dialect))
-        return QStringLiteral("firmware=k3ng emulates easycomm2, gs232a or gs232b, not %1")
-            .arg(protocol::dialectName(o.dialect));
+    if (const QString conflict = protocol::firmwareDialectConflict(o.firmware, o.dialect); !conflict.isEmpty())
+        return QStringLiteral("firmware: %1").arg(conflict);
     return {};
 }
 

@@ -9,6 +9,7 @@
 #include "simulatedrotator.h"
 
 #include "protocol/dialect.h"
+#include "protocol/firmware.h"
 
 #include <QString>
 #include <QStringView>
@@ -17,11 +18,11 @@
 
 namespace slew::sim {
 
-// Whose firmware answers: Slew's own reading of the protocol documents, or
-// the way one that stations run answers (docs/protocol.md, "Controllers in
-// the field"). K3NG's Arduino firmware in its Easycom (easycomm2) or Yaesu
-// (gs232a, gs232b) emulation.
-enum class Firmware { Slew, K3ng };
+// Whose firmware answers: Slew's own reading of the protocol documents
+// (Generic), or the way one that stations run answers (docs/protocol.md,
+// "Controllers in the field"): K3NG's Arduino firmware in its Easycom
+// (easycomm2) or Yaesu (gs232a, gs232b) emulation, the SatNOGS firmware.
+using protocol::Firmware;
 
 struct SimulatorOptions {
     RotatorConfig rotator;
@@ -38,7 +39,7 @@ struct SimulatorOptions {
     QString stateFile;        // micro2g: where calibration, presets and tolerances are kept; empty: lost at exit
     int spidPulses = 2;       // rot2prog, md01: pulses per degree reported in PH/PV (1, 2, 4, 10)
     bool md01Log = false;     // md01: a text log line before every reply, as some MD-01 firmware writes
-    Firmware firmware = Firmware::Slew;
+    Firmware firmware = Firmware::Generic;
 };
 
 struct SimulatorOptionInfo {

@@ -58,6 +58,8 @@ transport::LinkHints hintsOf(const QUrl &url, const SimulatorOptions &options)
     const RotatorConfig &r = options.rotator;
     transport::LinkHints h;
     h.dialect = protocol::dialectName(options.dialect);
+    if (options.firmware != protocol::Firmware::Generic)
+        h.firmware = protocol::firmwareName(options.firmware);
     h.checksum = options.checksum; // the session frames its side as the simulator does
     if (options.baud > 0)
         h.baud = options.baud; // paced as a serial line of that rate

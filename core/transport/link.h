@@ -22,6 +22,9 @@ namespace slew::transport {
 // Only what is known is set.
 struct LinkHints {
     QString dialect; // as named in profiles and --dialect; empty: not known
+    // The controller's firmware where its dialect does not say all
+    // (protocol/firmware.h): "k3ng", "satnogs"; empty: not known.
+    QString firmware;
     std::optional<double> azMax;
     std::optional<double> elMax;
     std::optional<double> parkAz;

@@ -57,6 +57,18 @@ QString readBaud(QStringView value, LinkHints *hints)
     return {};
 }
 
+// `dialect=gs232b` and `firmware=k3ng`: what the controller at the far end
+// speaks and runs, so a URI alone says it (the names of --dialect and the
+// profile). Kept as written, lower-cased: the names are the protocol's,
+// which the session checks before it opens the link (session/profilehints.h).
+QString readName(const char *what, QStringView value, QString *into)
+{
+    if (value.trimmed().isEmpty())
+        return QObject::tr("%1 names nothing").arg(QLatin1String(what));
+    *into = value.trimmed().toString().toLower();
+    return {};
+}
+
 LinkResult withHints(std::unique_ptr<Link> link, const LinkHints &hints)
 {
     link->setHints(hints);
@@ -114,8 +126,16 @@ LinkResult makeSerial(const QUrl &url, const QString &uri)
         } else if (key == QLatin1String("rotor")) {
             if (const QString e = readRotor(value, &hints); !e.isEmpty())
                 return fail(uri, e);
+        } else if (key == QLatin1String("dialect")) {
+            if (const QString e = readName("dialect", value, &hints.dialect); !e.isEmpty())
+                return fail(uri, e);
+        } else if (key == QLatin1String("firmware")) {
+            if (const QString e = readName("firmware", value, &hints.firmware); !e.isEmpty())
+                return fail(uri, e);
         } else {
-            return fail(uri, QObject::tr("unknown serial option '%1'").arg(key));
+            return fail(uri, QObject::tr("unknown serial option '%1' (known: baud, data, parity, stop, flow, checksum, "
+                                         "rotor, dialect, firmware)")
+                                 .arg(key));
         }
     }
     hints.baud = s.baud;
@@ -137,8 +157,13 @@ LinkResult makeTcp(const QUrl &url, const QString &uri)
             e = readRotor(value, &hints);
         else if (key == QLatin1String("baud")) // the serial line behind a network adapter, for pacing
             e = readBaud(value, &hints);
+        else if (key == QLatin1String("dialect"))
+            e = readName("dialect", value, &hints.dialect);
+        else if (key == QLatin1String("firmware"))
+            e = readName("firmware", value, &hints.firmware);
         else
-            return fail(uri, QObject::tr("unknown tcp option '%1' (known: checksum, rotor, baud)").arg(key));
+            return fail(uri, QObject::tr("unknown tcp option '%1' (known: checksum, rotor, baud, dialect, firmware)")
+                                 .arg(key));
         if (!e.isEmpty())
             return fail(uri, e);
     }

@@ -71,6 +71,7 @@ private slots:
     void interruptStopsAWaitingMove();
     void waitSaysWhereAMoveStoppedShort();
     void k3ngFirmwareIsReadAndItsRefusalIsSaidAtOnce();
+    void satnogsFirmwareArrivesWhereItStops();
     void tunesARadioThroughRigctld();
 
 private:
@@ -153,9 +154,11 @@ void SlewctlTest::k3ngFirmwareIsReadAndItsRefusalIsSaidAtOnce()
     const Run got = slewctl({"--dialect", "easycomm2", easycom, "get"});
     QCOMPARE(got.exitCode, 0);
     QCOMPARE(got.out, QStringLiteral("az 59.10 el 24.80\n"));
+    // It stops within its own 3° tolerance (2.3° short here): arrived, as
+    // the URI names the firmware, not "stopped 2.30° from the target".
     const Run went = slewctl({"--dialect", "easycomm2", easycom, "goto", "94", "25", "--wait"});
     QVERIFY2(went.exitCode == 0, qPrintable(went.err));
-    QVERIFY2(went.out.endsWith(QStringLiteral("az 94.00 el 25.00\n")), qPrintable(went.out));
+    QVERIFY2(went.out.endsWith(QStringLiteral("az 91.70 el 25.00\n")), qPrintable(went.out));
     // It has no PARK: its `?` ends the wait at once, with the reason, and
     // not after --timeout (600 s by default) as a move that never starts.
     QElapsedTimer clock;
@@ -168,6 +171,32 @@ void SlewctlTest::k3ngFirmwareIsReadAndItsRefusalIsSaidAtOnce()
     const Run yaesu = slewctl({"--dialect", "gs232b", "sim:?firmware=k3ng&dialect=gs232b&start_az=59&start_el=25", "get"});
     QCOMPARE(yaesu.exitCode, 0);
     QCOMPARE(yaesu.out, QStringLiteral("az 59.00 el 25.00\n"));
+}
+
+void SlewctlTest::satnogsFirmwareArrivesWhereItStops()
+{
+    // slew-sim answering as the SatNOGS firmware v2.2 does, on a pty, with
+    // the dialect named in the serial URI: GS4 for a whole move, no CR10 or
+    // CR11, and a line sent within 9 ms of its reply lost (RS485).
+    SlewSimProcess sim;
+    QVERIFY2(sim.start({"--pty", m_dir.filePath("satnogs"), "--dialect", "satnogs", "--firmware", "satnogs",
+                        "--time-scale", "4", "--start-az", "0", "--start-el", "0"}),
+             qPrintable(sim.error()));
+    const QString link = "serial:" + m_dir.filePath("satnogs") + "?dialect=satnogs";
+    const Run got = slewctl({link, "get"});
+    QVERIFY2(got.exitCode == 0, qPrintable(got.err));
+    QCOMPARE(got.out, QStringLiteral("az 0.00 el 0.00\n"));
+    // Arrival is where it stopped, not where its status first lacked a moving bit.
+    const Run went = slewctl({link, "goto", "49", "14", "--wait"});
+    QVERIFY2(went.exitCode == 0, qPrintable(went.err + went.out));
+    QVERIFY2(went.out.endsWith(QStringLiteral("az 49.00 el 14.00\n")), qPrintable(went.out));
+    // Its park registers (CW7/CW8, 0/0) are read before PARK goes: the wait
+    // ends at the park, not on the way.
+    const Run parked = slewctl({link, "park", "--wait"});
+    QVERIFY2(parked.exitCode == 0, qPrintable(parked.err + parked.out));
+    QVERIFY2(parked.out.endsWith(QStringLiteral("az 0.00 el 0.00\n")), qPrintable(parked.out));
+    const Run stopped = slewctl({link, "stop"});
+    QVERIFY2(stopped.exitCode == 0, qPrintable(stopped.err));
 }
 
 void SlewctlTest::exitCodesTellFailuresApart()

@@ -139,6 +139,11 @@ void ModelTest::profileRoundTrip()
     QCOMPARE(back->azOffsetDeg, -2.5);
     QCOMPARE(back->elOffsetDeg, 0.75);
     QVERIFY(back->motion == p.motion);
+    QCOMPARE(back->firmware, slew::protocol::Firmware::Generic); // SatNOGS's dialect says its firmware
+    p.dialect = slew::protocol::Dialect::Gs232B;
+    p.firmware = slew::protocol::Firmware::K3ng;
+    QCOMPARE(p.toJson().value("firmware").toString(), QStringLiteral("k3ng"));
+    QCOMPARE(RotatorProfile::fromJson(p.toJson(), &error)->firmware, slew::protocol::Firmware::K3ng);
     // A profile written before offsets and motion existed reads with none
     // and a G-5500's figures.
     const auto old = RotatorProfile::fromJson(QJsonDocument::fromJson(R"({"name":"old"})").object(), &error);
@@ -153,6 +158,9 @@ void ModelTest::profileRefusesBadValues_data()
     QTest::addColumn<QByteArray>("json");
     QTest::addColumn<QString>("message");
     QTest::newRow("dialect") << QByteArray(R"({"dialect":"gs232"})") << "unknown dialect";
+    QTest::newRow("firmware") << QByteArray(R"({"firmware":"grbl"})") << "unknown firmware 'grbl'";
+    QTest::newRow("firmware for another dialect") << QByteArray(R"({"dialect":"easycomm3","firmware":"k3ng"})")
+                                                  << "k3ng speaks easycomm2, gs232a or gs232b, not easycomm3";
     QTest::newRow("az max") << QByteArray(R"({"limits":{"azMax":720}})") << "more than 450";
     QTest::newRow("string number") << QByteArray(R"({"limits":{"azMax":"360"}})") << "must be a number";
     QTest::newRow("park outside") << QByteArray(R"({"park":{"az":10,"el":120}})") << "park position";

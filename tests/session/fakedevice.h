@@ -21,6 +21,7 @@
 #include <QPointer>
 #include <QTimer>
 
+#include <cmath>
 #include <functional>
 #include <memory>
 
@@ -244,4 +245,27 @@ inline void FakeLink::open()
 inline std::optional<double> FakeLink::clockSeconds() const
 {
     return m_device ? std::optional<double>(m_device->now()) : std::nullopt;
+}
+
+// K3NG's Easycom firmware, as its own source answers (docs/protocol.md,
+// "Controllers in the field"): bare numbers for `AZ EL`, the separators
+// alone for a set, `?` for a command it lacks. It lets go of the azimuth
+// `stopsShortDeg` before the target, inside its tolerance (2.3° of its 3°
+// is what its relays leave; 0: on the target).
+inline QByteArray k3ngEasycom(FakeDevice &d, const QByteArray &line, double stopsShortDeg = 0.0)
+{
+    if (line == "AZ EL")
+        return "+" + QByteArray::number(d.az, 'f', 1) + " +" + QByteArray::number(d.el, 'f', 1) + "\n";
+    if (line == "VE")
+        return "VE002\n";
+    if (line.startsWith("AZ") && line.contains(" EL")) {
+        const QList<QByteArray> parts = line.split(' ');
+        const double az = parts[0].mid(2).toDouble();
+        d.az = az - std::copysign(stopsShortDeg, az - d.az);
+        d.el = parts[1].mid(2).toDouble();
+        return " \n";
+    }
+    if (line == "SA SE" || line == "ML" || line == "MR" || line == "MU" || line == "MD")
+        return " \n";
+    return "?\n"; // PARK, GS, GE, IP0, CR 1, VL...
 }

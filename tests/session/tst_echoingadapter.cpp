@@ -91,7 +91,13 @@ private:
             if (reg == 1 || reg == 7)
                 values << QStringLiteral("CR%1 = %2").arg(reg).arg(value);
         });
+        // 50 ms of simulated time each time the event loop comes round, and
+        // runEventLoopUntil keeps it coming round: the go-to's few simulated
+        // seconds pass in a blink. From the start: a half-duplex line's
+        // turn-around (satnogs) is simulated time too.
+        SimulatorPump pump(0.05);
         session.connectTo(uri);
+        pump.drive(slew::sim::simulatorBehind(session.link()));
         if (!runEventLoopUntil([&] { return session.capabilities().probed && session.hasPosition(); }, 10000)) {
             QTest::qFail(qPrintable(QStringLiteral("%1: no probe or position").arg(uri)), __FILE__, __LINE__);
             return out;
@@ -99,11 +105,6 @@ private:
         out.facts << describe(session.capabilities()) << QStringLiteral("version %1").arg(session.version());
         out.facts << QStringLiteral("at %1 %2").arg(session.azimuth(), 0, 'f', 1).arg(session.elevation(), 0, 'f', 1);
 
-        // 50 ms of simulated time each time the event loop comes round, and
-        // runEventLoopUntil keeps it coming round: the go-to's few simulated
-        // seconds pass in a blink.
-        SimulatorPump pump(0.05);
-        pump.drive(slew::sim::simulatorBehind(session.link()));
         const bool registers = session.capabilities().config;
         if (registers) {
             session.readConfig(1);

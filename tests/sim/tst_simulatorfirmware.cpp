@@ -8,6 +8,8 @@
 #include <QRandomGenerator>
 #include <QTest>
 
+#include <cmath>
+
 using namespace slew::sim;
 using slew::protocol::Dialect;
 
@@ -73,6 +75,50 @@ private slots:
         QCOMPARE(b.send("CW1,35\n;"), QByteArray());
         QCOMPARE(b.send("CR 1\n"), QByteArray("1,35.000\n"));
         QCOMPARE(b.counters.rejected(), 0u);
+    }
+
+    void satnogsFirmwareSaysPointingAndReadsOneDigit()
+    {
+        // As the SatNOGS firmware v2.2 answers (docs/protocol.md,
+        // "Controllers in the field"): GS4 for the whole of a move, never
+        // the moving bit; CR10 read as register 1.
+        Bench b(Dialect::SatNogs);
+        b.firmware.setFirmware(Firmware::SatNogs);
+        QCOMPARE(b.send("GS\n"), QByteArray("GS1\n"));
+        QCOMPARE(b.send("AZ90.0 EL30.0\n"), QByteArray());
+        b.rotator.advanceBy(0.5);
+        QCOMPARE(b.send("GS\n"), QByteArray("GS4\n"));
+        QCOMPARE(b.send("CR 10\n"), QByteArray("1,40.000\n"));
+        QCOMPARE(b.send("CR 11\n"), QByteArray("1,40.000\n"));
+        QCOMPARE(b.send("CR 7\n"), QByteArray("7,0.00\n"));
+        b.rotator.advanceBy(60.0);
+        QCOMPARE(b.send("AZ EL\n"), QByteArray("AZ90.0 EL30.0\n"));
+        QCOMPARE(b.send("GS\n"), QByteArray("GS4\n")); // holding the position it reached: the same word
+        // Slew's own reading of the dialect has the moving bit and CR10.
+        Bench own(Dialect::SatNogs);
+        QCOMPARE(own.send("AZ90.0 EL30.0\n"), QByteArray());
+        own.rotator.advanceBy(0.5);
+        QCOMPARE(own.send("GS\n"), QByteArray("GS2\n"));
+        QCOMPARE(own.send("CR 10\n"), QByteArray("10,90.00\n"));
+    }
+
+    void k3ngStopsWithinItsAzimuthTolerance()
+    {
+        Bench b(Dialect::Gs232B);
+        b.firmware.setFirmware(Firmware::K3ng);
+        b.rotator.pointAzimuth(59.0);
+        b.rotator.pointElevation(25.0);
+        b.rotator.advanceBy(30.0);
+        QCOMPARE(b.send("C2\r"), QByteArray("AZ=059EL=025\r\n"));
+        // Within its 3°: the relay is not even closed.
+        QCOMPARE(b.send("W061 025\r"), QByteArray());
+        b.rotator.advanceBy(10.0);
+        QCOMPARE(b.send("C2\r"), QByteArray("AZ=059EL=025\r\n"));
+        // Farther: it lets go 2.3° short, inside its tolerance.
+        QCOMPARE(b.send("W094 025\r"), QByteArray());
+        b.rotator.advanceBy(30.0);
+        const double az = b.rotator.axis(Axis::Azimuth).position();
+        QVERIFY2(std::abs(az - 91.7) < 0.2, qPrintable(QString::number(az)));
     }
 
     void easycomm3AnswersWithTwoDecimalsAndPrefixes()

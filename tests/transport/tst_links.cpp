@@ -45,6 +45,8 @@ void LinksTest::badUris_data()
     QTest::newRow("serial bad stop") << "serial:/dev/ttyUSB0?stop=3" << "stop bits must be";
     QTest::newRow("serial bad flow") << "serial:/dev/ttyUSB0?flow=pigeon" << "flow must be";
     QTest::newRow("serial unknown item") << "serial:/dev/ttyUSB0?speed=9600" << "unknown serial option 'speed'";
+    QTest::newRow("serial empty dialect") << "serial:/dev/ttyUSB0?dialect=" << "dialect names nothing";
+    QTest::newRow("tcp empty firmware") << "tcp://localhost:4533?firmware=" << "firmware names nothing";
     QTest::newRow("tcp no host") << "tcp://:4533" << "no host";
     QTest::newRow("tcp no port") << "tcp://localhost" << "no port";
 }
@@ -72,6 +74,15 @@ void LinksTest::serialOptionsAreRead()
     QCOMPARE(serial->settings().parity, QSerialPort::EvenParity);
     QCOMPARE(serial->settings().stopBits, QSerialPort::TwoStop);
     QCOMPARE(serial->settings().flow, QSerialPort::HardwareControl);
+    // What the controller speaks and runs, named in the URI itself.
+    r = createLink("serial:/dev/ttyUSB7?baud=9600&dialect=GS232B&firmware=k3ng");
+    QVERIFY2(r.link, qPrintable(r.error));
+    QCOMPARE(r.link->hints().dialect, QStringLiteral("gs232b"));
+    QCOMPARE(r.link->hints().firmware, QStringLiteral("k3ng"));
+    r = createLink("tcp://127.0.0.1:4533?dialect=satnogs");
+    QVERIFY2(r.link, qPrintable(r.error));
+    QCOMPARE(r.link->hints().dialect, QStringLiteral("satnogs"));
+    QVERIFY(r.link->hints().firmware.isEmpty());
     // Defaults: 19200 8N1, as Hamlib's Easycomm backends.
     r = createLink("serial:/dev/ttyUSB0");
     serial = qobject_cast<SerialLink *>(r.link.get());

@@ -6,6 +6,7 @@
 
 #include "alarmbanner.h"
 #include "configeditor.h"
+#include "eventlog.h"
 #include "gotopanel.h"
 #include "polarplotwidget.h"
 #include "presetpanel.h"
@@ -123,6 +124,37 @@ private slots:
         QCOMPARE(f.sentCount(kPositionCommand), 1);
         QVERIFY(f.waitUntilAt(40.0, 20.5));
         QCOMPARE(f.window->polarPlot()->actual()->x(), f.session.azimuth());
+    }
+
+    // The controllers stations run, as slew-sim answers for them
+    // (docs/protocol.md, "Controllers in the field"): a go-to from the
+    // window is shown where the controller stopped, and the event log says
+    // it arrived, K3NG's 2.3° short inside its tolerance, the SatNOGS
+    // firmware's under its GS4 status.
+    void gotoOnTheFirmwareStationsRun_data()
+    {
+        QTest::addColumn<QString>("uri");
+        QTest::addColumn<double>("stopsAtAz");
+        QTest::newRow("K3NG Easycom") << "sim:?model=satnogs&clock=manual&dialect=easycomm2&firmware=k3ng" << 37.7;
+        QTest::newRow("K3NG GS-232B") << "sim:?model=satnogs&clock=manual&dialect=gs232b&firmware=k3ng" << 38.0;
+        QTest::newRow("SatNOGS") << "sim:?model=satnogs&clock=manual&dialect=satnogs&firmware=satnogs" << 40.0;
+    }
+
+    void gotoOnTheFirmwareStationsRun()
+    {
+        QFETCH(QString, uri);
+        QFETCH(double, stopsAtAz);
+        WindowFixture f(uri);
+        QVERIFY(f.connectAndWait());
+        WindowFixture::typeInto(f.find<QLineEdit>(QStringLiteral("gotoAzimuth")), QStringLiteral("40"));
+        WindowFixture::typeInto(f.find<QLineEdit>(QStringLiteral("gotoElevation")), QStringLiteral("20"));
+        QTest::mouseClick(f.find<QPushButton>(QStringLiteral("gotoButton")), Qt::LeftButton);
+        QVERIFY(f.waitUntilAt(stopsAtAz, 20.0, 0.2));
+        QVERIFY(f.waitUntilStill());
+        QCOMPARE(f.window->polarPlot()->actual()->x(), f.session.azimuth());
+        auto log = [&] { return f.window->eventLog()->toPlainText(); };
+        QVERIFY2(f.waitFor([&] { return log().contains(QStringLiteral(": arrived, at az")); }, 10000), qPrintable(log()));
+        QVERIFY2(!log().contains(QStringLiteral("came to rest")), qPrintable(log()));
     }
 
     void outOfRangeGotoSendsNothing_data()
