@@ -249,6 +249,7 @@ void RotatorSession::onLinkOpened()
     m_pollCount = 0;
     m_textLinesSkipped = 0;
     m_unreadableReplies = 0;
+    m_refusedRequests = 0;
     m_pace.restart(nowMs()); // a new link: full rate until the rotator is seen at rest
     updatePollPace(); // at the rate of this link's line
     forgetParkRegisters();
@@ -533,6 +534,7 @@ void RotatorSession::applyRefusal(const Message &m)
         return;
     }
     case RefusalOwner::Owner::Request:
+        ++m_refusedRequests;
         finishFront(false, tr("the controller refused it (it answered '%1')").arg(answer));
         return;
     case RefusalOwner::Owner::Nobody: {

@@ -195,6 +195,10 @@ public:
     // logged through a small allowance (controllerlogallowance.h), and a
     // stream of them is a condition: unreadableRepliesAlarm().
     qint64 unreadableReplies() const { return m_unreadableReplies; }
+    // Requests the controller refused with its "no" (`?`, `?>`) on this
+    // link: a controller that says so aloud (K3NG's) rather than stay
+    // silent, which the dialect identifier tells apart by.
+    int refusedRequests() const { return m_refusedRequests; }
     bool unreadableRepliesAlarmed() const { return m_unreadable.raised(); }
     void setPolling(bool enabled);
 
@@ -472,6 +476,7 @@ private:
     std::unique_ptr<Micro2gCalibration> m_micro2g;
     std::unique_ptr<StationRadio> m_stationRadio;
     qint64 m_unreadableReplies = 0;
+    int m_refusedRequests = 0;
 };
 
 } // namespace slew::session

@@ -39,6 +39,11 @@ QString DialectResult::describe() const
     // and neither is a question to put to a rotator unasked.
     if (dialect == protocol::Dialect::Rot2Prog && c.positionFeedback)
         text += QObject::tr(" (SPID frames; an MD-01/02 answers the same: choose md01 for its move command)");
+    if (firmware != protocol::Firmware::Generic)
+        text += QObject::tr(" (%1)").arg(protocol::firmwareTitle(firmware));
+    // A Yaesu controller and K3NG's emulation of it answer alike.
+    else if (dialect == protocol::Dialect::Gs232B && c.positionFeedback)
+        text += QObject::tr(" (a K3NG controller answers the same: choose firmware k3ng for its 3° tolerance)");
     return text;
 }
 
@@ -59,7 +64,7 @@ bool DialectIdentifier::start(const QString &uri)
     cancel();
     m_uri = uri.trimmed();
     m_results.clear();
-    m_pending = {Dialect::Easycomm3, Dialect::SatNogs, Dialect::Easycomm2, Dialect::Micro2g};
+    m_pending = {Dialect::Easycomm3, Dialect::SatNogs, Dialect::Easycomm2, Dialect::Gs232B, Dialect::Micro2g};
     // SPID's binary status frame last: it is only worth its wait once no
     // line protocol got a position. First, on a line at a SPID
     // controller's own rate (Rot2Prog 600 baud, Rot1Prog 1200).
@@ -95,11 +100,11 @@ void DialectIdentifier::next()
         return;
     }
     const Dialect d = m_pending.takeFirst();
-    // A controller that answered an Easycomm position is no Micro-2g and no
+    // A controller that answered an Easycomm position is no GS-232, no Micro-2g and no
     // SPID controller (nor one that answered SPID frames anything else):
     // asking would only wait out its silence. The Easycomm flavours are all
     // asked, since they differ in how much they answer.
-    if (best() && (d == Dialect::Micro2g || protocol::isSpid(d) || protocol::isSpid(best()->dialect))) {
+    if (best() && (d == Dialect::Gs232B || d == Dialect::Micro2g || protocol::isSpid(d) || protocol::isSpid(best()->dialect))) {
         next();
         return;
     }
@@ -158,6 +163,11 @@ void DialectIdentifier::conclude(const Capabilities &caps)
     // So does the Micro-2g program, in its `?` line (docs/protocol.md).
     if (r.dialect == Dialect::Micro2g && r.version.startsWith(QLatin1String("Micro-2g"), Qt::CaseInsensitive))
         r.score += 1;
+    // K3NG's Easycom says `?` to every query it lacks; a plain Easycomm II
+    // controller leaves them unanswered.
+    r.firmware = protocol::firmwareOf(r.dialect, protocol::Firmware::Generic);
+    if (r.dialect == Dialect::Easycomm2 && caps.positionFeedback && m_attempt.session()->refusedRequests() > 0)
+        r.firmware = protocol::Firmware::K3ng;
     m_attempt.end();
     QMetaObject::invokeMethod(this, &DialectIdentifier::next, Qt::QueuedConnection);
 }

@@ -3,8 +3,9 @@
 // Micro-2g, by talking to it in each one and counting what it answers
 // (position, VE, GS, GE, IP, CR, \?ENC; the Micro-2g's heading and `?`)
 // against what it leaves unanswered. The dialect that explains the most
-// wins; on a tie the one listed first (easycomm3, satnogs, easycomm2, micro2g).
-// The Micro-2g is asked only when no Easycomm flavour got a position, and
+// wins; on a tie the one listed first (easycomm3, satnogs, easycomm2, gs232b,
+// micro2g). GS-232B (K3NG's controllers by default) and the Micro-2g are
+// asked only when no Easycomm flavour got a position, and
 // SPID's binary status frame (Rot2Prog, then Rot1Prog) only when nothing
 // did, unless the link runs at a SPID rate (600 or 1200 baud), where SPID
 // is asked first. An MD-01/02 answers as a Rot2Prog. Easycomm I answers
@@ -12,6 +13,7 @@
 
 #include "probeattempt.h"
 #include "protocol/dialect.h"
+#include "protocol/firmware.h"
 #include "session/sessiontypes.h"
 
 #include <QList>
@@ -29,6 +31,9 @@ namespace slew::tuning {
 
 struct DialectResult {
     protocol::Dialect dialect = protocol::Dialect::Easycomm3;
+    // The firmware, where its answers tell: the SatNOGS dialect's own, or
+    // K3NG's, whose Easycom says `?` to what it lacks where others are silent.
+    protocol::Firmware firmware = protocol::Firmware::Generic;
     session::Capabilities capabilities;
     QString version;
     int score = 0; // queries answered minus queries left unanswered

@@ -74,15 +74,22 @@ private slots:
     {
         QTest::addColumn<QString>("uri");
         QTest::addColumn<QString>("dialect");
-        QTest::newRow("easycomm3") << "sim:" << "easycomm3";
-        QTest::newRow("satnogs") << "sim:?dialect=satnogs" << "satnogs";
-        QTest::newRow("easycomm2") << "sim:?dialect=easycomm2" << "easycomm2";
+        QTest::addColumn<QString>("firmware");
+        QTest::newRow("easycomm3") << "sim:" << "easycomm3" << "generic";
+        QTest::newRow("satnogs") << "sim:?dialect=satnogs" << "satnogs" << "satnogs";
+        QTest::newRow("SatNOGS firmware") << "sim:?dialect=satnogs&firmware=satnogs" << "satnogs" << "satnogs";
+        QTest::newRow("easycomm2") << "sim:?dialect=easycomm2" << "easycomm2" << "generic";
+        // K3NG's controllers: Easycom says `?` to what it lacks; its Yaesu
+        // emulation (the default) is asked once no Easycomm got a position.
+        QTest::newRow("K3NG Easycom") << "sim:?dialect=easycomm2&firmware=k3ng" << "easycomm2" << "k3ng";
+        QTest::newRow("K3NG GS-232B") << "sim:?dialect=gs232b&firmware=k3ng" << "gs232b" << "generic";
+        QTest::newRow("gs232b") << "sim:?dialect=gs232b" << "gs232b" << "generic";
         // SPID by its binary answers: after every line protocol failed, or
         // first on a line at a SPID rate. An MD-01/02 answers as a Rot2Prog.
-        QTest::newRow("rot2prog") << "sim:?dialect=rot2prog" << "rot2prog";
-        QTest::newRow("rot2prog at 600 baud") << "sim:?dialect=rot2prog&baud=600&time_scale=20" << "rot2prog";
-        QTest::newRow("rot1prog at 1200 baud") << "sim:?dialect=rot1prog&baud=1200&time_scale=20" << "rot1prog";
-        QTest::newRow("md01") << "sim:?dialect=md01" << "rot2prog";
+        QTest::newRow("rot2prog") << "sim:?dialect=rot2prog" << "rot2prog" << "generic";
+        QTest::newRow("rot2prog at 600 baud") << "sim:?dialect=rot2prog&baud=600&time_scale=20" << "rot2prog" << "generic";
+        QTest::newRow("rot1prog at 1200 baud") << "sim:?dialect=rot1prog&baud=1200&time_scale=20" << "rot1prog" << "generic";
+        QTest::newRow("md01") << "sim:?dialect=md01" << "rot2prog" << "generic";
     }
     void identifiesTheDialect()
     {
@@ -96,6 +103,10 @@ private slots:
         for (const auto &r : id.results())
             qInfo().noquote() << r.describe() << r.score;
         QCOMPARE(protocol::dialectName(id.best()->dialect), dialect);
+        QFETCH(QString, firmware);
+        QCOMPARE(protocol::firmwareName(id.best()->firmware), firmware);
+        if (dialect == QLatin1String("gs232b"))
+            QVERIFY(id.best()->describe().contains(QStringLiteral("choose firmware k3ng")));
         if (dialect == QLatin1String("rot2prog"))
             QVERIFY(id.best()->describe().contains(QStringLiteral("choose md01")));
     }

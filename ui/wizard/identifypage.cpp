@@ -94,9 +94,13 @@ void IdentifyPage::onIdentified(bool identified)
     }
     const auto best = *m_identifier.best();
     m_wizard->profile().dialect = best.dialect;
-    m_result->setText(tr("The controller speaks %1%2. Connecting…%3")
+    m_wizard->profile().firmware = best.firmware;
+    const QString firmware = best.firmware == protocol::Firmware::Generic
+                                 ? QString()
+                                 : tr(", and runs the %1 firmware").arg(protocol::firmwareTitle(best.firmware));
+    m_result->setText(tr("The controller speaks %1%2%3. Connecting…%4")
                           .arg(protocol::dialectName(best.dialect),
-                               best.version.isEmpty() ? QString() : tr(" (version %1)").arg(best.version),
+                               best.version.isEmpty() ? QString() : tr(" (version %1)").arg(best.version), firmware,
                                best.dialect == protocol::Dialect::Rot2Prog
                                    ? tr(" An MD-01/02 answers as a Rot2Prog does: if this is one, choose md01 "
                                         "afterwards for its move command.")
