@@ -95,6 +95,7 @@ RotctldServer::RotctldServer(session::RotatorSession *session, QObject *parent)
     connect(&m_server, &transport::BoundedTcpServer::notice, this,
             [this](const QString &text) { emit logMessage(tr("rotctld server: %1").arg(text)); });
     // Every reading, and every change of link, reaches the clients' threads.
+    connect(m_session, &RotatorSession::commandRefused, this, [this](const QString &why) { m_lastRefusal = why; });
     connect(m_session, &RotatorSession::positionChanged, this, &RotctldServer::sharePosition);
     connect(m_session, &RotatorSession::stateChanged, this, &RotctldServer::sharePosition);
     sharePosition();
@@ -249,7 +250,17 @@ QByteArray RotctldServer::answer(Client &c, const RotctldRequest &r)
 {
     const QString command = c.thread->info().lastCommand;
     emit commandReceived(c.peer, command);
+    // The client hears Hamlib's code; the log hears why the session said no
+    // ("no position read from the controller: check the dialect", a limit).
+    m_lastRefusal.clear();
+    const QByteArray reply = answerRequest(c, r, command);
+    if (!m_lastRefusal.isEmpty())
+        logClient(c, tr("rotctld client %1: '%2' refused: %3").arg(c.peer, command, std::exchange(m_lastRefusal, {})));
+    return reply;
+}
 
+QByteArray RotctldServer::answerRequest(Client &c, const RotctldRequest &r, const QString &command)
+{
     // A tracker that steers has the move watched at the full rate from its
     // start (session/pollpace.h), also when the deadband holds its P back
     // (the rotator may still be on its way there) or the move is refused.

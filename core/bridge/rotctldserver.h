@@ -118,6 +118,7 @@ private:
     // The answer to what a client's thread handed over, delivered to it.
     void answerFor(quint64 id, const RotctldRequest &request);
     QByteArray answer(Client &client, const RotctldRequest &request);
+    QByteArray answerRequest(Client &client, const RotctldRequest &request, const QString &command);
     // The session's reading, for the clients' threads.
     void sharePosition();
     // Non-zero (RIG_ENAVAIL) when the request wants elevation from an
@@ -141,6 +142,7 @@ private:
     bool m_remoteHeld = false;
     int m_suppressed = 0;
     QString m_lastSteering;         // the peer that last steered
+    QString m_lastRefusal;          // why the session refused the request being answered
     QElapsedTimer m_lastSteeringAt; // when (invalid: never)
     bool m_logCommands = false;
     QElapsedTimer m_clock;

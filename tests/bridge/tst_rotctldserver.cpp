@@ -48,6 +48,7 @@ private slots:
     void overlapPicksTheShortestLegalPath();
     void operatorHoldRefusesRemoteMovesButNotStop();
     void azimuthOnlyRotatorRefusesElevation();
+    void noMoveWhileNoPositionIsRead();
     void badClientsDoNotDisturbOthers();
     void allowedClientList();
     void halfClosedClientsAreAnswered();
@@ -519,6 +520,45 @@ void RotctldServerTest::overlapPicksTheShortestLegalPath()
     QTRY_VERIFY_WITH_TIMEOUT(std::abs(session->azimuth() - 370) < 0.5, 30000);
     const QList<QByteArray> lines = ask(s, "p").trimmed().split('\n');
     QVERIFY(std::abs(lines[0].toDouble() - 10) < 0.6);
+}
+
+void RotctldServerTest::noMoveWhileNoPositionIsRead()
+{
+    // The wrong dialect: K3NG's GS-232B emulation answers Easycomm's
+    // `AZ EL` with its prompt, so no position is ever read. A tracker on
+    // the server then moves nothing, and hears why; Stop still goes.
+    model::RotatorProfile p;
+    p.uri = "sim:?dialect=gs232b&firmware=k3ng&time_scale=10";
+    p.dialect = protocol::Dialect::Easycomm2;
+    session->setProfile(p);
+    session->connectTo(p.uri);
+    // (init() connected to another simulator: its last position is still
+    // shown, stale, and vouches for nothing on this link.)
+    QVERIFY(QTest::qWaitFor([&] { return session->uri() == p.uri && session->isConnected() && session->capabilities().probed; },
+                            10000));
+    QVERIFY(!session->capabilities().positionFeedback);
+    QTcpSocket s;
+    s.connectToHost(QHostAddress::LocalHost, server->port());
+    QTRY_COMPARE(s.state(), QAbstractSocket::ConnectedState);
+    QSignalSpy sent(session, &session::RotatorSession::bytesSent);
+    QSignalSpy logged(server, &bridge::RotctldServer::logMessage);
+    for (const QByteArray &move : {QByteArray("P 120 30"), QByteArray("K"), QByteArray("M 2 50")}) {
+        const QByteArray answer = ask(s, move);
+        QVERIFY2(answer.startsWith("RPRT -"), (move + " -> " + answer).constData());
+    }
+    QVERIFY2(ask(s, "p").startsWith("RPRT -"), "a position nobody read");
+    QCOMPARE(ask(s, "S"), QByteArray("RPRT 0\n"));
+    QTRY_VERIFY(std::any_of(sent.cbegin(), sent.cend(),
+                            [](const QList<QVariant> &a) { return a.at(0).toByteArray() == "SA SE\n"; }));
+    // On the wire: the session's own questions and the stop, no move.
+    for (const auto &args : sent) {
+        const QByteArray bytes = args.at(0).toByteArray().trimmed();
+        QVERIFY2(bytes == "AZ EL" || bytes == "SA SE" || bytes == "VE" || bytes.startsWith("IP") || bytes.isEmpty(),
+                 bytes.constData());
+    }
+    QVERIFY(std::any_of(logged.cbegin(), logged.cend(), [](const QList<QVariant> &a) {
+        return a.at(0).toString().contains(QStringLiteral("no position read from the controller"));
+    }));
 }
 
 void RotctldServerTest::azimuthOnlyRotatorRefusesElevation()
