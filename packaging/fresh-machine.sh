@@ -58,6 +58,10 @@ trap cleanup EXIT
 cleanup
 cp -a "$base" "$run"
 cp /etc/resolv.conf "$run/etc/resolv.conf" 2>/dev/null || true
+# What the Debian installer writes on every installed system and
+# debootstrap does not: without it "localhost" does not resolve, and the
+# MQTT tests, whose broker's certificate names localhost, cannot connect.
+[ -e "$run/etc/hosts" ] || printf '127.0.0.1\tlocalhost\n::1\t\tlocalhost ip6-localhost ip6-loopback\n' > "$run/etc/hosts"
 # The host's /dev (with /dev/pts for the pseudo-terminal tests), as a
 # slave so that nothing mounted or unmounted here reaches the host.
 mount -t proc proc "$run/proc"
