@@ -118,6 +118,7 @@ private slots:
     void parkRegistersAreReadBeforeAnyPark();
     void k3ngStopWithinItsToleranceIsArrival();
     void refusedParkSaysWhereAGotoGoes();
+    void k3ngHamlibOptionEndsItsReplyWithASpace();
 
 private:
     bool connectAs(protocol::Dialect dialect, protocol::Firmware firmware = protocol::Firmware::Generic);
@@ -313,6 +314,28 @@ void ControllerFirmwareTest::refusedParkSaysWhereAGotoGoes()
     QVERIFY2(watch.refusal().contains("refused 'PARK'")
                  && watch.refusal().contains("a go-to to the profile's park position, az 0.0 el 90.0"),
              qPrintable(watch.refusal()));
+}
+
+void ControllerFirmwareTest::k3ngHamlibOptionEndsItsReplyWithASpace()
+{
+    // K3NG's OPTION_HAMLIB_EASYCOM_AZ_EL_COMMAND_HACK: `AZ EL` answered
+    // `AZ59.5 EL25.0 `, ended by a space and nothing after it. Each token
+    // ends at its space, so the position is read without a line end, poll
+    // after poll.
+    device->az = 59.5;
+    device->el = 25.0;
+    device->script = [this](const QByteArray &line) -> QByteArray {
+        if (line == "AZ EL")
+            return "AZ" + QByteArray::number(device->az, 'f', 1) + " EL" + QByteArray::number(device->el, 'f', 1) + ' ';
+        return k3ngEasycom(*device, line);
+    };
+    QVERIFY(connectAs(protocol::Dialect::Easycomm2, protocol::Firmware::K3ng));
+    QCOMPARE(session->azimuth(), 59.5);
+    QCOMPARE(session->elevation(), 25.0);
+    device->az = 61.0;
+    TRY_COMPARE(session->azimuth(), 61.0);
+    QCOMPARE(session->unreadableReplies(), qint64(0));
+    QCOMPARE(session->capabilities().positionFeedback, true);
 }
 
 QTEST_GUILESS_MAIN(ControllerFirmwareTest)
