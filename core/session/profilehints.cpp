@@ -9,16 +9,26 @@
 
 namespace slew::session {
 
+namespace {
+
+// The firmware a link names, where it can speak the profile's dialect; a
+// firmware named for another dialect says nothing of this one.
+void takeFirmware(model::RotatorProfile &profile, const transport::LinkHints &hints)
+{
+    if (const auto firmware = protocol::firmwareFromName(hints.firmware))
+        profile.firmware = *firmware;
+    if (!protocol::firmwareDialectConflict(profile.firmware, profile.dialect).isEmpty())
+        profile.firmware = protocol::Firmware::Generic;
+}
+
+} // namespace
+
 model::RotatorProfile profileWithHints(model::RotatorProfile profile, const transport::LinkHints &hints)
 {
     model::RotatorProfile hinted = profile;
     if (const auto dialect = protocol::dialectFromName(hints.dialect))
         hinted.dialect = *dialect;
-    if (const auto firmware = protocol::firmwareFromName(hints.firmware))
-        hinted.firmware = *firmware;
-    // A firmware named for another dialect says nothing of this one.
-    if (!protocol::firmwareDialectConflict(hinted.firmware, hinted.dialect).isEmpty())
-        hinted.firmware = protocol::Firmware::Generic;
+    takeFirmware(hinted, hints);
     if (hints.azMax)
         hinted.limits.azMax = *hints.azMax;
     if (hints.elMax)
@@ -57,10 +67,7 @@ model::RotatorProfile profileNamedByUri(model::RotatorProfile profile, bool oper
     const auto dialect = protocol::dialectFromName(hints.dialect);
     if (dialect && (*dialect == protocol::Dialect::Rotctld || !operatorNamedDialect))
         profile.dialect = *dialect;
-    if (const auto firmware = protocol::firmwareFromName(hints.firmware))
-        profile.firmware = *firmware;
-    if (!protocol::firmwareDialectConflict(profile.firmware, profile.dialect).isEmpty())
-        profile.firmware = protocol::Firmware::Generic;
+    takeFirmware(profile, hints);
     return profile;
 }
 

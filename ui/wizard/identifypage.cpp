@@ -18,8 +18,8 @@ using session::RotatorSession;
 IdentifyPage::IdentifyPage(SetupWizard *wizard) : QWizardPage(wizard), m_wizard(wizard)
 {
     setTitle(tr("Identify"));
-    setSubTitle(tr("Slew asks the controller in each Easycomm flavour, as a Micro-2g and in SPID's binary "
-                   "frames, and keeps the one that explains what it answers."));
+    setSubTitle(tr("Slew asks the controller in each Easycomm flavour, in GS-232B, as a Micro-2g and in SPID's "
+                   "binary frames, and keeps the one that explains what it answers."));
     m_progress = new QProgressBar(this);
     m_answers = new QListWidget(this);
     m_result = new QLabel(this);
