@@ -871,8 +871,8 @@ const ProgramDescription &slewctlProgram()
             {QStringLiteral("Radio commands"), radioCommands},
             {QStringLiteral("Exit status"),
              QStringLiteral("0 done; 1 the controller did not answer, a read-back differed or --wait timed out; 2 a "
-                            "bad argument; 3 no link to the rotator, or it was lost; 4 the move or line was refused "
-                            "and nothing was sent.")},
+                            "bad argument; 3 no link to the rotator, or it was lost; 4 the move or line was refused, "
+                            "by Slew (nothing was sent) or by the controller (it answered ?).")},
             {QStringLiteral("Examples"),
              QStringLiteral("  slewctl sim: goto 180 30 --wait\n"
                             "  slewctl serial:/dev/ttyUSB0?baud=9600 --dialect easycomm2 get\n"

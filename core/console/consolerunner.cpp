@@ -202,7 +202,10 @@ void ConsoleRunner::startHome()
         finish(ExitCode::Ok);
     });
     connect(m_homing.get(), &tuning::HomingRun::failed, this,
-            [this](const QString &reason) { finish(ExitCode::Failed, tr("homing failed: %1").arg(reason)); });
+            [this](const QString &reason) {
+                finish(m_homing->refusedByController() ? ExitCode::Refused : ExitCode::Failed,
+                       tr("homing failed: %1").arg(reason));
+            });
     connect(m_homing.get(), &tuning::HomingRun::cancelled, this,
             [this] { finish(ExitCode::Failed, tr("homing cancelled; the rotator was stopped")); });
     if (!m_homing->start(m_arrivalTimeoutMs / 1000.0))

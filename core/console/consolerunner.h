@@ -29,7 +29,7 @@ enum class ExitCode {
     Failed = 1,      // the controller did not answer, a read-back differed, --wait timed out
     BadArgument = 2, // the words made no command
     LinkFailure = 3, // no link to the rotator, or it was lost
-    Refused = 4,     // the move or line was refused (limits, no such command) and nothing was sent
+    Refused = 4,     // refused: by Slew (limits, no such command; nothing sent) or by the controller (`?`)
 };
 
 class ConsoleRunner : public QObject {

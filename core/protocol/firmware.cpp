@@ -23,8 +23,8 @@ struct FirmwareEntry {
 // steppers by a seventh (docs/protocol.md says what was measured).
 const std::array<FirmwareEntry, 3> kFirmware{{
     {Firmware::Generic, "generic", "as documented", {}},
-    {Firmware::K3ng, "k3ng", "K3NG rotator controller", {3.0, 0.1, true, true, 0, 0, 0}},
-    {Firmware::SatNogs, "satnogs", "SatNOGS rotator firmware", {0.0, 0.0, false, false, 10, 200, 3000}},
+    {Firmware::K3ng, "k3ng", "K3NG rotator controller", {3.0, 0.1, true, true, false, 0, 0, 0}},
+    {Firmware::SatNogs, "satnogs", "SatNOGS rotator firmware", {0.0, 0.0, false, false, true, 10, 200, 3000}},
 }};
 
 const FirmwareEntry &entry(Firmware firmware)

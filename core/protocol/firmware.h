@@ -36,6 +36,10 @@ struct FirmwareTraits {
     // reads only the first digit of a register number: asked CR10 it answers
     // register 1 (`1,8.00`).
     bool commandedRegisters = true;
+    // Whether the controller obeys its dialect's PARK. K3NG's Easycom
+    // emulation answers `?`: Slew parks it with a go-to to the profile's
+    // park position, as on GS-232, which has no PARK.
+    bool parkCommand = true;
     // How long the controller needs after its reply before it can hear the
     // next line: the half-duplex RS485 turn-around. A line sent sooner is lost.
     int turnaroundMs = 0;

@@ -58,14 +58,19 @@ void LineTurnaround::releaseDue()
         m_timer.start(kLongestHoldMs);
     if (!bytes.isEmpty())
         emit released(bytes);
+    if (m_held.empty())
+        emit drained();
 }
 
 void LineTurnaround::clear()
 {
     m_timer.stop();
+    const bool held = !m_held.empty();
     m_held.clear();
     m_awaitingReply = false;
     m_lastReceivedMs = -1'000'000;
+    if (held)
+        emit drained();
 }
 
 } // namespace slew::session

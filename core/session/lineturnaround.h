@@ -43,9 +43,13 @@ public:
     void replyEnded(qint64 nowMs);
     // A link that closed: what was held is not for the next one.
     void clear();
+    // Lines wait to be written.
+    bool holding() const { return !m_held.empty(); }
 
 signals:
     void released(const QByteArray &bytes);
+    // The last line held has been released (or dropped with the link).
+    void drained();
 
 private:
     struct Held {

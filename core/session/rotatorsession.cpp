@@ -51,6 +51,7 @@ RotatorSession::RotatorSession(QObject *parent) : QObject(parent), m_queue(m_opt
     m_replyTimer.setSingleShot(true);
     connect(&m_replyTimer, &LinkTimer::timeout, this, &RotatorSession::onReplyTimeout);
     connect(&m_turnaround, &LineTurnaround::released, this, &RotatorSession::writeNow);
+    connect(&m_turnaround, &LineTurnaround::drained, this, &RotatorSession::heldLinesWritten);
     m_reconnectTimer.setSingleShot(true);
     connect(&m_reconnectTimer, &QTimer::timeout, this, &RotatorSession::openLink);
     m_staleTimer.setSingleShot(true);

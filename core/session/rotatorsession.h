@@ -134,6 +134,11 @@ public:
     // Moves wait for that first position: true while the controller could
     // report one and has not yet on this link (never for Easycomm I).
     bool awaitingPosition() const;
+    // Why moves wait, in the words a refusal uses; empty when they do not.
+    QString positionNotRead() const;
+    // Lines written but held for the line's turn-around (a half-duplex
+    // RS485 controller), not yet on the link: heldLinesWritten() when gone.
+    bool linesHeld() const { return m_turnaround.holding(); }
     double azimuth() const { return m_az; }
     double elevation() const { return m_el; }
     bool positionStale() const { return m_stale; }
@@ -271,6 +276,7 @@ signals:
     void versionChanged(const QString &version);
     void capabilitiesChanged(const slew::session::Capabilities &capabilities);
     void stopHoldSent();
+    void heldLinesWritten();
     // A stop went to the wire, whoever asked (the window, a rotctld client,
     // shutdown): whatever was driving the rotator ends here.
     void stopSent();

@@ -418,7 +418,7 @@ CommandResult RotatorSession::park()
         return linked;
     if (auto seen = requirePositionRead(); !seen)
         return seen;
-    if (!protocol::dialectSupports(m_profile.dialect, Op::Park)) {
+    if (!protocol::dialectSupports(m_profile.dialect, Op::Park) || !firmwareTraits().parkCommand) {
         const CommandResult sent = gotoPosition(parkAzimuth(), parkElevation());
         m_activeTarget.reset(); // parking is the operator's move, not a tracker target
         return sent;
@@ -553,13 +553,20 @@ bool RotatorSession::awaitingPosition() const
     return !m_positionReadOnLink && !protocol::encodeQueryPosition(m_profile.dialect, m_rotor).isEmpty();
 }
 
+QString RotatorSession::positionNotRead() const
+{
+    if (!awaitingPosition())
+        return {};
+    return m_caps.probed && !m_caps.positionFeedback
+        ? tr("no position read from the controller: check the dialect (%1)").arg(protocol::dialectName(m_profile.dialect))
+        : tr("no position read from the controller yet");
+}
+
 CommandResult RotatorSession::requirePositionRead(Report report)
 {
     if (!awaitingPosition())
         return {};
-    const QString why = m_caps.probed && !m_caps.positionFeedback
-        ? tr("no position read from the controller: check the dialect (%1)").arg(protocol::dialectName(m_profile.dialect))
-        : tr("no position read from the controller yet");
+    const QString why = positionNotRead();
     if (report == Report::Quietly)
         return CommandResult{why};
     return refuseMove(why);

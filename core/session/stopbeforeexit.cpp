@@ -33,6 +33,17 @@ std::function<void()> once(std::function<void()> done)
 
 void callWhenSent(RotatorSession &session, QObject *context, std::function<void()> done)
 {
+    // Lines held for a half-duplex line's turn-around are not on the link
+    // yet: leaving now would lose them (a stop among them). Wait for them,
+    // with the same limit.
+    if (session.linesHeld()) {
+        const auto finish = once(std::move(done));
+        QObject::connect(
+            &session, &RotatorSession::heldLinesWritten, context,
+            [&session, context, finish] { callWhenSent(session, context, finish); }, Qt::SingleShotConnection);
+        QTimer::singleShot(kFlushGiveUpMs, context, finish);
+        return;
+    }
     transport::Link *link = session.link();
     QIODevice *device = link ? link->device() : nullptr;
     if (!device || device->bytesToWrite() == 0) {

@@ -28,6 +28,14 @@ HomingRun::HomingRun(RotatorSession *session, QObject *parent) : QObject(parent)
     });
     connect(m_session, &RotatorSession::positionChanged, this, &HomingRun::evaluate);
     connect(m_session, &RotatorSession::statusChanged, this, &HomingRun::evaluate);
+    // A controller without RESET (K3NG's Easycom answers `?`) never starts:
+    // said at once, not after the whole time limit.
+    connect(m_session, &RotatorSession::controllerRefusedMove, this, [this](const QString &why) {
+        if (!m_running)
+            return;
+        m_refusedByController = true;
+        end(false, why);
+    });
 }
 
 double HomingRun::distanceLeft() const
@@ -54,6 +62,7 @@ bool HomingRun::start(double timeoutSeconds)
         return false;
     }
     m_running = true;
+    m_refusedByController = false;
     m_freshErrors = false;
     m_timeout = timeoutSeconds;
     m_started = m_clock.now();

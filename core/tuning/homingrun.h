@@ -26,6 +26,8 @@ public:
     void cancel();
     bool isRunning() const { return m_running; }
     QString error() const { return m_error; }
+    // The last run failed because the controller refused RESET.
+    bool refusedByController() const { return m_refusedByController; }
 
 signals:
     void progress(int percent, const QString &what);
@@ -43,6 +45,7 @@ private:
     QTimer m_tick;
     QElapsedTimer m_wall;
     bool m_running = false;
+    bool m_refusedByController = false;
     bool m_freshErrors = false;  // GE changed since RESET went out
     double m_timeout = 120.0;
     double m_started = 0.0;

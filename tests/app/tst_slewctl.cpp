@@ -159,13 +159,18 @@ void SlewctlTest::k3ngFirmwareIsReadAndItsRefusalIsSaidAtOnce()
     const Run went = slewctl({"--dialect", "easycomm2", easycom, "goto", "94", "25", "--wait"});
     QVERIFY2(went.exitCode == 0, qPrintable(went.err));
     QVERIFY2(went.out.endsWith(QStringLiteral("az 91.70 el 25.00\n")), qPrintable(went.out));
-    // It has no PARK: its `?` ends the wait at once, with the reason, and
-    // not after --timeout (600 s by default) as a move that never starts.
+    // Its Easycom has no PARK: with the firmware named, park is a go-to to
+    // the profile's park position (0/90), and ends within its tolerance.
+    const Run parked = slewctl({"--dialect", "easycomm2", easycom, "park", "--wait"});
+    QVERIFY2(parked.exitCode == 0, qPrintable(parked.err));
+    QVERIFY2(parked.out.endsWith(QStringLiteral("az 2.30 el 90.00\n")), qPrintable(parked.out));
+    // Nor homing (RESET): its `?` ends the wait at once, with the reason,
+    // and not after --timeout (600 s by default) as a move that never starts.
     QElapsedTimer clock;
     clock.start();
-    const Run parked = slewctl({"--dialect", "easycomm2", easycom, "park", "--wait"});
-    QCOMPARE(parked.exitCode, 4);
-    QVERIFY2(parked.err.contains(QStringLiteral("the controller refused 'PARK' (it answered '?')")), qPrintable(parked.err));
+    const Run homed = slewctl({"--dialect", "easycomm2", easycom, "home", "--wait"});
+    QCOMPARE(homed.exitCode, 4);
+    QVERIFY2(homed.err.contains(QStringLiteral("the controller refused 'RESET' (it answered '?')")), qPrintable(homed.err));
     QVERIFY2(clock.elapsed() < 10000, qPrintable(QString::number(clock.elapsed())));
     // Its GS-232B runs the two reports together: read.
     const Run yaesu = slewctl({"--dialect", "gs232b", "sim:?firmware=k3ng&dialect=gs232b&start_az=59&start_el=25", "get"});
@@ -180,7 +185,8 @@ void SlewctlTest::satnogsFirmwareArrivesWhereItStops()
     // CR11, and a line sent within 9 ms of its reply lost (RS485).
     SlewSimProcess sim;
     QVERIFY2(sim.start({"--pty", m_dir.filePath("satnogs"), "--dialect", "satnogs", "--firmware", "satnogs",
-                        "--time-scale", "4", "--start-az", "0", "--start-el", "0"}),
+                        "--time-scale", "4", "--start-az", "0", "--start-el", "0", "--log-received",
+                        m_dir.filePath("satnogs.log")}),
              qPrintable(sim.error()));
     const QString link = "serial:" + m_dir.filePath("satnogs") + "?dialect=satnogs";
     const Run got = slewctl({link, "get"});
@@ -195,8 +201,20 @@ void SlewctlTest::satnogsFirmwareArrivesWhereItStops()
     const Run parked = slewctl({link, "park", "--wait"});
     QVERIFY2(parked.exitCode == 0, qPrintable(parked.err + parked.out));
     QVERIFY2(parked.out.endsWith(QStringLiteral("az 0.00 el 0.00\n")), qPrintable(parked.out));
+    // A command without --wait reaches the controller before slewctl goes,
+    // though the line's turn-around holds it behind a poll's reply.
+    auto received = [&] {
+        QFile log(m_dir.filePath("satnogs.log"));
+        return log.open(QIODevice::ReadOnly) ? log.readAll() : QByteArray();
+    };
+    const Run sent = slewctl({link, "goto", "120", "30"});
+    QVERIFY2(sent.exitCode == 0, qPrintable(sent.err));
+    QVERIFY2(received().contains("AZ120.0 EL30.0\n"), received().constData());
     const Run stopped = slewctl({link, "stop"});
     QVERIFY2(stopped.exitCode == 0, qPrintable(stopped.err));
+    QVERIFY2(received().contains("SA SE\n"), received().constData());
+    QCOMPARE(sim.stop(), 0);
+    QVERIFY2(sim.standardError().contains(" 0 bytes lost"), sim.standardError().constData());
 }
 
 void SlewctlTest::exitCodesTellFailuresApart()

@@ -117,6 +117,7 @@ private slots:
     void satnogsIsPolledNoFasterThanItKeepsUp();
     void parkRegistersAreReadBeforeAnyPark();
     void k3ngStopWithinItsToleranceIsArrival();
+    void k3ngsEasycomParksWithAGoto();
     void refusedParkSaysWhereAGotoGoes();
     void k3ngHamlibOptionEndsItsReplyWithASpace();
 
@@ -302,9 +303,29 @@ void ControllerFirmwareTest::k3ngStopWithinItsToleranceIsArrival()
     QCOMPARE(ended.first().at(0).value<MoveWatch::Outcome>(), MoveWatch::Outcome::StoppedShort);
 }
 
+void ControllerFirmwareTest::k3ngsEasycomParksWithAGoto()
+{
+    // K3NG's Easycom has no PARK: named, it is parked as a GS-232 controller
+    // is, with a go-to to the profile's park position, and PARK never goes.
+    QVERIFY(connectToK3ngEasycom());
+    MoveWatch watch(session);
+    QSignalSpy ended(&watch, &MoveWatch::ended);
+    QVERIFY(session->park());
+    watch.watch(QPointF(0.0, 90.0));
+    TRY_COMPARE(ended.count(), 1);
+    QCOMPARE(ended.first().at(0).value<MoveWatch::Outcome>(), MoveWatch::Outcome::Arrived);
+    QVERIFY(device->received.contains("AZ0.0 EL90.0"));
+    QVERIFY(!device->received.contains("PARK"));
+}
+
 void ControllerFirmwareTest::refusedParkSaysWhereAGotoGoes()
 {
+    // The same controller not known to be K3NG's: PARK goes, its `?` ends
+    // the wait at once, and says what would park it.
     QVERIFY(connectToK3ngEasycom());
+    model::RotatorProfile generic = session->profile();
+    generic.firmware = protocol::Firmware::Generic;
+    session->setProfile(generic);
     MoveWatch watch(session);
     QSignalSpy ended(&watch, &MoveWatch::ended);
     QVERIFY(session->park());
