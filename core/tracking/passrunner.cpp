@@ -27,6 +27,8 @@ PassRunner::PassRunner(RotatorSession *session, QObject *parent) : QObject(paren
     m_retry.setSingleShot(true);
     connect(&m_retry, &QTimer::timeout, this, &PassRunner::nextPass);
     connect(&m_tracker, &Tracker::stateChanged, this, &PassRunner::onTrackerState);
+    connect(&m_tracker, &Tracker::heldForPosition, this,
+            [this](const QString &why) { emit logLine(tr("the antenna waits: %1").arg(why)); });
     connect(session, &RotatorSession::stateChanged, this, [this](RotatorSession::State s) {
         // The link is back: the next pass (or the rest of this one).
         if (s == RotatorSession::State::Connected && m_running && !isActive())

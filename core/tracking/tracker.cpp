@@ -7,6 +7,7 @@
 #include "sky/skyvector.h"
 
 #include <algorithm>
+#include <utility>
 #include <cmath>
 
 namespace slew::tracking {
@@ -59,6 +60,7 @@ bool Tracker::track(const QList<SkyPoint> &pass, const PassPlan &plan, double ao
     m_aosJulian = aosJulian;
     m_now = std::move(now);
     m_prepositioned = false;
+    m_heldForPosition = false;
     m_lastSent.reset();
     m_lastCommand.reset();
     m_figures = TrackingFigures{};
@@ -167,8 +169,12 @@ bool Tracker::send(double az, double el, bool duringPass)
 {
     // No position read on this link yet (just connected, or back after a
     // blip): nothing is sent blind, and the next tick tries again.
-    if (m_session->awaitingPosition())
+    if (m_session->awaitingPosition()) {
+        if (!std::exchange(m_heldForPosition, true))
+            emit heldForPosition(m_session->positionNotRead());
         return false;
+    }
+    m_heldForPosition = false;
     const double command = commandFor(az);
     // The same waypoint already on its way: nothing new to say.
     if (command != az && m_lastCommand && m_lastCommand->first == command && m_lastCommand->second == el)

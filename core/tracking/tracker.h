@@ -105,6 +105,9 @@ public:
 signals:
     void stateChanged(slew::tracking::Tracker::State state, const QString &why);
     void pointingError(double degrees, double secondsFromAos);
+    // A point is due and not sent: no position has been read on this link
+    // (`why`, the session's words). Once until a point goes again.
+    void heldForPosition(const QString &why);
 
 private:
     void tick();
@@ -138,6 +141,7 @@ private:
     QString m_error;
     bool m_prepositioned = false;
     bool m_sending = false; // our own commands are not someone else's stop
+    bool m_heldForPosition = false; // heldForPosition said, no point sent since
     std::optional<std::pair<double, double>> m_lastSent;    // the plan's position last asked for
     std::optional<std::pair<double, double>> m_lastCommand; // what went on the wire for it
     TrackingFigures m_figures;

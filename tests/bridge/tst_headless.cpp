@@ -44,6 +44,9 @@ private slots:
     void runningOutOfDescriptorsDoesNotSpin();
     void hostileClientCannotFloodTheLog();
     void servesASpidRotatorOnASerialLine();
+    void servesTheFirmwareInTheField_data();
+    void servesTheFirmwareInTheField();
+    void movesNothingItCannotRead();
 
 private:
     // Starts `slew --headless ARGS` and reads its log up to the rotctld
@@ -683,3 +686,119 @@ void HeadlessTest::hostileClientCannotFloodTheLog()
 
 QTEST_GUILESS_MAIN(HeadlessTest)
 #include "tst_headless.moc"
+
+void HeadlessTest::servesTheFirmwareInTheField_data()
+{
+    // slew-sim's K3NG and SatNOGS personalities on a pty, the station
+    // service on it as a serial port named by its URI, and Hamlib's own
+    // `rotctl -m 2` as the tracker. `arrivesAt`: the azimuth after P 40 25
+    // from 100 (K3NG lets go inside its 3° tolerance, 2.3° short; its
+    // GS-232B reports whole degrees). `parks`: where park ends (K3NG's
+    // Easycom has no PARK, and is parked with a go-to to 0/90 short of 0).
+    QTest::addColumn<QString>("dialect");
+    QTest::addColumn<QString>("firmware");
+    QTest::addColumn<int>("baud");
+    QTest::addColumn<double>("arrivesAt");
+    QTest::addColumn<QPointF>("parks");
+    QTest::newRow("K3NG GS-232B") << "gs232b" << "k3ng" << 9600 << 42.0 << QPointF(2, 90);
+    QTest::newRow("K3NG Easycom") << "easycomm2" << "k3ng" << 9600 << 42.3 << QPointF(2.3, 90);
+    QTest::newRow("SatNOGS") << "satnogs" << "satnogs" << 19200 << 40.0 << QPointF(0, 0);
+}
+
+void HeadlessTest::servesTheFirmwareInTheField()
+{
+    QFETCH(QString, dialect);
+    QFETCH(QString, firmware);
+    QFETCH(int, baud);
+    QFETCH(double, arrivesAt);
+    QFETCH(QPointF, parks);
+    QTemporaryDir dir;
+    const QString pty = dir.filePath("controller"), received = dir.filePath("received.log");
+    SlewSimProcess sim;
+    QVERIFY2(sim.start({"--pty", pty, "--dialect", dialect, "--firmware", firmware, "--baud", QString::number(baud),
+                        "--time-scale", "10", "--model", "satnogs", "--start-az", "100", "--start-el", "10",
+                        "--log-received", received}),
+             qPrintable(sim.error()));
+    QProcess slew;
+    quint16 port = 0;
+    QVERIFY2(startSlew(slew, {"--connect", QStringLiteral("serial:%1?baud=%2&dialect=%3&firmware=%4").arg(pty).arg(baud).arg(dialect, firmware),
+                               "--rotctld-listen", "127.0.0.1:0"},
+                       &port),
+             slew.readAllStandardError().constData());
+    const QString where = QStringLiteral("127.0.0.1:%1").arg(port);
+    auto positionIs = [&](double az, double el) {
+        QPointF at(qQNaN(), qQNaN());
+        const bool there = QTest::qWaitFor([&] {
+            const RotctlResult r = runRotctl({"-m", "2", "-r", where, "p"});
+            const QList<QByteArray> lines = r.out.trimmed().split('\n');
+            if (r.exitCode == 0 && lines.size() == 2)
+                at = QPointF(lines[0].toDouble(), lines[1].toDouble());
+            return std::abs(at.x() - az) < 0.15 && std::abs(at.y() - el) < 0.15;
+        }, 30000);
+        if (!there)
+            qWarning("at %.2f, %.2f, not %.2f, %.2f", at.x(), at.y(), az, el);
+        return there;
+    };
+    QVERIFY(positionIs(100, 10));
+    QCOMPARE(runRotctl({"-m", "2", "-r", where, "P", "40", "25"}).exitCode, 0);
+    QVERIFY(positionIs(arrivesAt, 25));
+    QCOMPARE(runRotctl({"-m", "2", "-r", where, "S"}).exitCode, 0);
+    QCOMPARE(runRotctl({"-m", "2", "-r", where, "K"}).exitCode, 0);
+    QVERIFY(positionIs(parks.x(), parks.y()));
+    // SIGTERM: the stop reaches the controller before the service goes,
+    // though the SatNOGS firmware's turn-around may hold it a moment.
+    auto stops = [&] {
+        QFile f(received);
+        return f.open(QIODevice::ReadOnly) ? f.readAll().count(dialect.startsWith("gs232") ? "\nS\n" : "SA SE\n") : -1;
+    };
+    const qsizetype before = stops();
+    QSignalSpy finished(&slew, &QProcess::finished);
+    ::kill(pid_t(slew.processId()), SIGTERM);
+    QVERIFY(finished.wait(10000));
+    QCOMPARE(slew.exitCode(), 0);
+    QTRY_VERIFY_WITH_TIMEOUT(stops() > before, 5000);
+    QCOMPARE(sim.stop(), 0);
+    // The SatNOGS firmware loses what arrives in its turn-around: nothing did.
+    QVERIFY2(sim.standardError().contains(" 0 bytes lost"), sim.standardError().constData());
+}
+
+void HeadlessTest::movesNothingItCannotRead()
+{
+    // K3NG's GS-232B emulation, and the service told Easycomm: no reply it
+    // reads. Hamlib's rotctl gets an error for p and for P, the service's
+    // log says why, and no move reaches the controller.
+    QTemporaryDir dir;
+    const QString pty = dir.filePath("controller"), received = dir.filePath("received.log");
+    SlewSimProcess sim;
+    QVERIFY2(sim.start({"--pty", pty, "--dialect", "gs232b", "--firmware", "k3ng", "--model", "satnogs", "--log-received",
+                        received}),
+             qPrintable(sim.error()));
+    QProcess slew;
+    quint16 port = 0;
+    QVERIFY2(startSlew(slew, {"--connect", QStringLiteral("serial:%1?dialect=easycomm2").arg(pty), "--rotctld-listen",
+                               "127.0.0.1:0"},
+                       &port),
+             slew.readAllStandardError().constData());
+    const QString where = QStringLiteral("127.0.0.1:%1").arg(port);
+    QByteArray said = m_startupLog;
+    const QByteArray why = "no position read from the controller: check the dialect (easycomm2)";
+    // The probe has given up on a position: from then on, the dialect is named.
+    QVERIFY2(QTest::qWaitFor([&] {
+        said += slew.readAllStandardOutput();
+        return said.contains("still no position read");
+    }, 30000), said.constData());
+    QVERIFY(runRotctl({"-m", "2", "-r", where, "p"}).exitCode != 0);
+    QVERIFY(runRotctl({"-m", "2", "-r", where, "P", "40", "25"}).exitCode != 0);
+    QVERIFY2(QTest::qWaitFor([&] {
+        said += slew.readAllStandardOutput();
+        return said.contains(why);
+    }, 10000), said.constData());
+    QSignalSpy finished(&slew, &QProcess::finished);
+    ::kill(pid_t(slew.processId()), SIGTERM);
+    QVERIFY(finished.wait(10000));
+    QCOMPARE(sim.stop(), 0);
+    QFile log(received);
+    QVERIFY(log.open(QIODevice::ReadOnly));
+    const QByteArray heard = log.readAll();
+    QVERIFY2(!heard.isEmpty() && !heard.contains("AZ40") && !heard.contains("W040"), heard.constData());
+}

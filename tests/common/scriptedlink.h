@@ -33,6 +33,9 @@ public:
     // What the session speaks to it: Easycomm (any flavour reads alike
     // here) or rotctld.
     slew::protocol::Dialect dialect = slew::protocol::Dialect::Easycomm3;
+    // Position queries answered as K3NG's GS-232B emulation reports,
+    // `AZ=059EL=025`, which no Easycomm reader reads: a wrong dialect.
+    bool positionUnreadable = false;
 
     // Moves in what was written since `from`: set positions, speeds, bare
     // moves, park, home and register writes. Queries are not moves, and
@@ -74,6 +77,10 @@ private:
     {
         if (dialect == slew::protocol::Dialect::Rotctld) {
             answerAsRotctld(line.trimmed());
+            return;
+        }
+        if (positionUnreadable && line.simplified() == "AZ EL") {
+            deliver("AZ=059EL=025\r\n");
             return;
         }
         QByteArrayList out;

@@ -12,6 +12,11 @@
 // slewctl's runner; and the session's commands again in the rotctld dialect,
 // which a rotctld:// link's session speaks. A legal go-to at the end shows
 // that the link's record does see moves, so the test can fail.
+//
+// Then a controller whose position cannot be read (K3NG's GS-232B report on
+// an Easycomm link: the wrong dialect): no face sends a move, neither the
+// window, nor rotctld, nor slewctl, nor a command from the broker, nor
+// tracking or the schedule, which say why the antenna waits.
 
 #include "../common/scriptedlink.h"
 
@@ -26,7 +31,12 @@
 #include "parkhomepanel.h"
 #include "polarplotwidget.h"
 #include "presetpanel.h"
+#include "remote/remotecommand.h"
 #include "session/rotatorsession.h"
+#include "station/remotecommands.h"
+#include "station/schedulerunner.h"
+#include "tracking/passrunner.h"
+#include "tracking/tracktarget.h"
 #include "targetconfirmation.h"
 #include "trafficconsole.h"
 #include "tuning/stepexperiment.h"
@@ -78,6 +88,7 @@ private slots:
 
     void cleanup()
     {
+        scriptedLinkReports() = slew::model::RotatorLimits{10.0, 350.0, 0.0, 80.0};
         m_window.reset();
         m_session = nullptr;
         m_station.reset();
@@ -237,6 +248,117 @@ private slots:
         QVERIFY(m_session->gotoAxis(Axis::Elevation, 30));
         QCOMPARE(m_device->movesSince(mark), (QStringList{QStringLiteral("AZ350"), QStringLiteral("EL30")}));
         QVERIFY2(m_device->written.sliced(mark).contains("P 350.00 30.00\n"), m_device->written.sliced(mark).constData());
+    }
+
+    void noPositionNoMoveFromAnyFace()
+    {
+        // The whole travel this time, so that tracking has a plan to hold.
+        scriptedLinkReports() = slew::model::RotatorLimits{0.0, 360.0, 0.0, 90.0};
+        m_session->disconnectFromRotator();
+        m_session->connectTo(QStringLiteral("scripted:"));
+        QVERIFY(lastScriptedLink());
+        m_device = lastScriptedLink()->scripted();
+        m_device->positionUnreadable = true; // before the probe's first query
+        QTRY_VERIFY_WITH_TIMEOUT(m_session->isConnected() && m_session->capabilities().probed, 30000);
+        QVERIFY(!m_session->capabilities().positionFeedback);
+        const QString why = QStringLiteral("no position read from the controller: check the dialect (easycomm3)");
+        QCOMPARE(m_session->positionNotRead(), why);
+
+        // The window: its go-to says the session's reason where it was typed.
+        auto *go = m_window->gotoPanel();
+        expectNothingSent("go-to panel, no position", [&] {
+            go->findChild<QLineEdit *>(QStringLiteral("gotoAzimuth"))->setText(QStringLiteral("120"));
+            go->findChild<QLineEdit *>(QStringLiteral("gotoElevation"))->setText(QStringLiteral("30"));
+            QVERIFY(!go->go());
+            const QString said = go->findChild<QLabel *>(QStringLiteral("gotoMessage"))->text();
+            QVERIFY2(said.contains(why), qPrintable(said));
+        });
+        expectNothingSent("a confirmed plot target, no position",
+                          [&] { emit m_window->targetConfirmation()->accepted(120, 30); });
+        expectNothingSent("jog pad, no position", [&] {
+            auto *right = m_window->jogPad()->findChild<QPushButton *>(QStringLiteral("jogRight"));
+            QTest::mousePress(right, Qt::LeftButton);
+            QTest::mouseRelease(right, Qt::LeftButton);
+        });
+        expectNothingSent("park button, no position", [&] {
+            QTest::mouseClick(m_window->findChild<QPushButton *>(QStringLiteral("parkButton")), Qt::LeftButton);
+        });
+        expectNothingSent("traffic console, no position", [&] {
+            auto *console = m_window->trafficConsole();
+            console->findChild<QLineEdit *>(QStringLiteral("rawCommand"))->setText(QStringLiteral("AZ120.0 EL30.0"));
+            QTest::mouseClick(console->findChild<QPushButton *>(QStringLiteral("rawSend")), Qt::LeftButton);
+        });
+
+        // rotctld (Gpredict, the SatNOGS client): an error, not RPRT 0.
+        slew::bridge::RotctldServer server(m_session);
+        QString error;
+        QVERIFY2(server.listen(QHostAddress::LocalHost, 0, &error), qPrintable(error));
+        QTcpSocket tracker;
+        tracker.connectToHost(QHostAddress::LocalHost, server.port());
+        QTRY_COMPARE(tracker.state(), QAbstractSocket::ConnectedState);
+        expectNothingSent("rotctld P, no position", [&] {
+            tracker.write("P 120 30\n");
+            QTRY_VERIFY(tracker.canReadLine());
+            const QByteArray answer = tracker.readLine();
+            QVERIFY2(answer.startsWith("RPRT -"), answer.constData());
+        });
+
+        // slewctl.
+        slew::console::ConsoleRunner runner(m_session, false);
+        QSignalSpy finished(&runner, &slew::console::ConsoleRunner::finished);
+        expectNothingSent("slewctl goto, no position", [&] {
+            const auto command = slew::console::parseConsoleCommand(
+                {QStringLiteral("goto"), QStringLiteral("120"), QStringLiteral("30")}, &error);
+            QVERIFY2(command, qPrintable(error));
+            runner.run(*command);
+            QTRY_COMPARE(finished.count(), 1);
+            QCOMPARE(finished.at(0).at(0).value<slew::console::ExitCode>(), slew::console::ExitCode::Refused);
+        }, false);
+
+        // Commands from the broker (MQTT): refused in the session's words.
+        slew::station::RemoteCommands commands(m_station.get(), {});
+        for (const char *json : {R"j({"id":"g","cmd":"goto","az":120,"el":30})j", R"j({"id":"j","cmd":"jog","az_speed":5})j",
+                                 R"j({"id":"p","cmd":"park"})j"}) {
+            expectNothingSent(QByteArray("broker ") + json, [&] {
+                const std::optional<slew::remote::RemoteReply> reply = commands.handle(json);
+                QVERIFY(reply);
+                QVERIFY2(!reply->ok && reply->error.contains(why), qPrintable(reply->error));
+            });
+        }
+
+        // Tracking, from the broker and from the schedule: the pass runner
+        // takes the target and waits, saying why; no point goes out.
+        slew::tracking::PassRunner *passes = m_station->passRunner();
+        QSignalSpy passLog(passes, &slew::tracking::PassRunner::logLine);
+        const QString waits = QStringLiteral("the antenna waits: ") + why;
+        auto said = [&] {
+            QStringList lines;
+            for (const QList<QVariant> &args : std::as_const(passLog))
+                lines << args.at(0).toString();
+            return lines.join(u'\n');
+        };
+        auto saidWaits = [&] {
+            for (const QList<QVariant> &args : std::as_const(passLog))
+                if (args.at(0).toString() == waits)
+                    return true;
+            return false;
+        };
+        m_station->setPlace(slew::sky::Station{55.7, 12.6, 10, {}, {}});
+        expectNothingSent("broker track, no position", [&] {
+            const std::optional<slew::remote::RemoteReply> reply =
+                commands.handle(R"j({"id":"t","cmd":"track","target":"azel:200,40"})j");
+            QVERIFY(reply && reply->ok);
+            QTRY_VERIFY2_WITH_TIMEOUT(saidWaits(), qPrintable(said()), 15000);
+        }, false);
+        m_station->untrack(QStringLiteral("test"));
+        passLog.clear();
+        const auto target = slew::tracking::TrackTarget::parseFixedOrCelestial(QStringLiteral("azel:200,40"), &error);
+        QVERIFY2(target, qPrintable(error));
+        expectNothingSent("schedule, no position", [&] {
+            QCOMPARE(m_station->runSchedule({*target}, slew::station::ScheduleOptions{}), QString());
+            QTRY_VERIFY2_WITH_TIMEOUT(saidWaits(), qPrintable(said()), 15000);
+        }, false);
+        m_station->untrack(QStringLiteral("test"));
     }
 
     void aLegalMoveIsSeen()
