@@ -239,8 +239,8 @@ void SimulatorFirmware::manualMove(Op op)
     case Op::MoveRight: m_rotator.driveAzimuth(az); break;
     case Op::MoveUp: m_rotator.driveElevation(el); break;
     case Op::MoveDown: m_rotator.driveElevation(-el); break;
-    case Op::StopAzimuth: m_rotator.stopAzimuth(); break;
-    case Op::StopElevation: m_rotator.stopElevation(); break;
+    case Op::StopAzimuth: stopAxis(Axis::Azimuth); break;
+    case Op::StopElevation: stopAxis(Axis::Elevation); break;
     default: break;
     }
 }

@@ -92,6 +92,7 @@ private:
     // The SatNOGS firmware's (simulatorfirmware_satnogs.cpp).
     int registerRead(int asked) const; // which register a CR n reads
     int combinedStatus() const;        // GS for the whole rotator
+    void stopAxis(Axis axis);          // SA, SE: let go, or hold where read (SatNOGS)
     bool answersAtAll() const { return m_dialect != protocol::Dialect::Easycomm1; }
     bool sendsAlarms() const;
 

@@ -33,4 +33,22 @@ int SimulatorFirmware::combinedStatus() const
     return bits;
 }
 
+void SimulatorFirmware::stopAxis(Axis axis)
+{
+    const bool azimuth = axis == Axis::Azimuth;
+    // The SatNOGS firmware stops an axis by making where it is when SA or SE
+    // is read its new set point: the axis, still turning, runs past it and
+    // is driven back to it. Elsewhere a stop lets go of the drive (a worm
+    // gear halts, a free drive coasts), as does a hold it cannot take.
+    if (m_firmware == Firmware::SatNogs) {
+        const double here = m_rotator.axis(axis).position();
+        if (azimuth ? m_rotator.pointAzimuth(here) : m_rotator.pointElevation(here))
+            return;
+    }
+    if (azimuth)
+        m_rotator.stopAzimuth();
+    else
+        m_rotator.stopElevation();
+}
+
 } // namespace slew::sim

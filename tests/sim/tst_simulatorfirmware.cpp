@@ -102,6 +102,38 @@ private slots:
         QCOMPARE(own.send("CR 10\n"), QByteArray("10,90.00\n"));
     }
 
+    void satnogsFirmwareStopsByHoldingWhereItWas()
+    {
+        // SA SE makes where the axis is its set point: still turning, it runs
+        // past and is driven back there. Slew's own reading lets go instead.
+        Bench b(Dialect::SatNogs);
+        b.firmware.setFirmware(Firmware::SatNogs);
+        QCOMPARE(b.send("AZ300.0 EL0.0\n"), QByteArray());
+        b.rotator.advanceBy(3.0);
+        const double stoppedAt = b.rotator.axis(Axis::Azimuth).position();
+        QVERIFY2(std::abs(b.rotator.axis(Axis::Azimuth).velocity()) > 1.0, "not turning when stopped");
+        b.send("SA SE\n");
+        double farthest = stoppedAt;
+        for (int i = 0; i < 2000; ++i) {
+            b.rotator.advanceBy(0.005);
+            farthest = std::max(farthest, b.rotator.axis(Axis::Azimuth).position());
+        }
+        const double after = b.rotator.axis(Axis::Azimuth).position();
+        qInfo("SatNOGS: stopped at %.2f, ran on to %.2f, back at %.2f", stoppedAt, farthest, after);
+        QVERIFY2(farthest > stoppedAt + 0.1, qPrintable(QString::number(farthest - stoppedAt)));
+        QVERIFY2(std::abs(after - stoppedAt) < 0.1, qPrintable(QString::number(after - stoppedAt)));
+
+        Bench own(Dialect::SatNogs);
+        QCOMPARE(own.send("AZ300.0 EL0.0\n"), QByteArray());
+        own.rotator.advanceBy(3.0);
+        const double ownStop = own.rotator.axis(Axis::Azimuth).position();
+        own.send("SA SE\n");
+        own.rotator.advanceBy(10.0);
+        const double ownAfter = own.rotator.axis(Axis::Azimuth).position();
+        qInfo("as documented: stopped at %.2f, at rest at %.2f", ownStop, ownAfter);
+        QVERIFY(ownAfter >= ownStop);
+    }
+
     void k3ngStopsWithinItsAzimuthTolerance()
     {
         Bench b(Dialect::Gs232B);
