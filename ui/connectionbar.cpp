@@ -175,7 +175,8 @@ void ConnectionBar::setUri(const QString &uri)
     if (uri.startsWith(QLatin1String("sim:"))) {
         m_simUri->setText(uri);
         kind = Simulator;
-    } else if (url.scheme() == QLatin1String("tcp") && !url.host().isEmpty() && url.port() > 0) {
+    } else if (url.scheme() == QLatin1String("tcp") && !url.host().isEmpty() && url.port() > 0 && !url.hasQuery()) {
+        // (a query, `?firmware=k3ng`, keeps the whole URI as it was written)
         m_tcpHost->setText(url.host());
         m_tcpPort->setValue(url.port());
         kind = Tcp;
@@ -235,6 +236,11 @@ void ConnectionBar::connectToRotator()
     if (const transport::LinkHints hints = transport::linkHintsFor(target); !hints.dialect.isEmpty()) {
         profile = session::profileWithHints(profile, hints);
         setDialect(profile.dialect);
+    } else {
+        // The dialect chosen here, and a firmware the URI names
+        // (`serial:/dev/ttyUSB0?firmware=k3ng`) or the profile held, where
+        // the firmware can speak it: SatNOGS's quirks never ride a GS-232 link.
+        profile = session::profileNamedByUri(profile, true);
     }
     // The calibration found for this rotator before (sun or moon alignment);
     // another rotator does not inherit this one's.

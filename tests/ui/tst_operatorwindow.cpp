@@ -6,6 +6,7 @@
 
 #include "alarmbanner.h"
 #include "configeditor.h"
+#include "connectionbar.h"
 #include "eventlog.h"
 #include "gotopanel.h"
 #include "polarplotwidget.h"
@@ -155,6 +156,28 @@ private slots:
         auto log = [&] { return f.window->eventLog()->toPlainText(); };
         QVERIFY2(f.waitFor([&] { return log().contains(QStringLiteral(": arrived, at az")); }, 10000), qPrintable(log()));
         QVERIFY2(!log().contains(QStringLiteral("came to rest")), qPrintable(log()));
+    }
+
+    // The connection bar: a firmware the URI names is taken where it can
+    // speak the dialect chosen, and one the profile held for another
+    // dialect goes (no SatNOGS quirks on a GS-232 link).
+    void theConnectionBarTakesTheFirmwareTheDialectAllows()
+    {
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
+        slew::ui::ConnectionBar *bar = f.window->connectionBar();
+        bar->setDialect(slew::protocol::Dialect::Gs232B);
+        bar->setUri(QStringLiteral("tcp://127.0.0.1:9?firmware=k3ng"));
+        bar->connectToRotator();
+        QCOMPARE(f.session.profile().dialect, slew::protocol::Dialect::Gs232B);
+        QCOMPARE(f.session.profile().firmware, slew::protocol::Firmware::K3ng);
+        bar->disconnectFromRotator();
+        slew::model::RotatorProfile satnogs = f.session.profile();
+        satnogs.firmware = slew::protocol::Firmware::SatNogs;
+        f.session.setProfile(satnogs);
+        bar->setUri(QStringLiteral("tcp://127.0.0.1:9"));
+        bar->connectToRotator();
+        QCOMPARE(f.session.profile().firmware, slew::protocol::Firmware::Generic);
+        bar->disconnectFromRotator();
     }
 
     void outOfRangeGotoSendsNothing_data()
