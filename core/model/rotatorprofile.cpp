@@ -59,6 +59,9 @@ QString RotatorProfile::validate() const
         return e;
     if (QString e = protocol::firmwareDialectConflict(firmware, dialect); !e.isEmpty())
         return e;
+    for (const std::optional<double> &t : {stopToleranceAzDeg, stopToleranceElDeg})
+        if (t && !(*t >= 0.0 && *t <= 10.0))
+            return QObject::tr("the controller's stop tolerance must be 0° to 10°");
     if (!MoveGate(limits).pointing(parkAz, parkEl, std::nullopt).allowed())
         return QObject::tr("park position %1°, %2° is outside the limits").arg(parkAz).arg(parkEl);
     if (!(deadbandDeg >= 0.0 && deadbandDeg <= 10.0))
@@ -106,6 +109,14 @@ QJsonObject RotatorProfile::toJson() const
     };
     if (firmware != protocol::Firmware::Generic)
         o.insert("firmware", protocol::firmwareName(firmware));
+    if (stopToleranceAzDeg || stopToleranceElDeg) {
+        QJsonObject t;
+        if (stopToleranceAzDeg)
+            t.insert("az", *stopToleranceAzDeg);
+        if (stopToleranceElDeg)
+            t.insert("el", *stopToleranceElDeg);
+        o.insert("stopTolerance", t);
+    }
     if (azGains)
         o.insert("azGains", gainsToJson(*azGains));
     if (elGains)
@@ -160,6 +171,15 @@ std::optional<RotatorProfile> RotatorProfile::fromJson(const QJsonObject &o, QSt
         || !readGains(o, "azGains", &p.azGains, &err) || !readGains(o, "elGains", &p.elGains, &err))
         return std::nullopt;
     p.pollHz = int(poll);
+    const QJsonObject tolerance = o.value("stopTolerance").toObject();
+    for (const auto &[key, out] : {std::pair{"az", &p.stopToleranceAzDeg}, std::pair{"el", &p.stopToleranceElDeg}}) {
+        if (!tolerance.contains(QLatin1String(key)))
+            continue;
+        double degrees = 0.0;
+        if (!readNumber(tolerance, key, &degrees, &err))
+            return std::nullopt;
+        *out = degrees;
+    }
     p.southStop = o.value("southStop").toBool(false);
     if (const QString drive = motion.value("drive").toString(QStringLiteral("servo")); drive == QLatin1String("relay"))
         m.drive = RotatorMotion::Drive::Relay;

@@ -45,6 +45,11 @@ struct RotatorProfile {
     // The controller's firmware, where its quirks matter (protocol/firmware.h):
     // how close it stops, whether its status shows motion, what it lacks.
     protocol::Firmware firmware = protocol::Firmware::Generic;
+    // How close the controller brings each axis before it lets go, where it
+    // was built otherwise than its firmware's default (K3NG's
+    // AZIMUTH_TOLERANCE set to 1°): 0..10°. Unset: the firmware's.
+    std::optional<double> stopToleranceAzDeg;
+    std::optional<double> stopToleranceElDeg;
     RotatorLimits limits;
     double parkAz = 0.0;
     double parkEl = 90.0;

@@ -108,10 +108,10 @@ void MoveWatch::onPosition(double az, double el, bool stale)
 bool MoveWatch::arrived(QPointF at) const
 {
     // Within the controller's own tolerance is where it stops by design
-    // (K3NG's 3° in azimuth): arrived, not short.
-    const protocol::FirmwareTraits &firmware = m_session->firmwareTraits();
-    return bearingDifference(at.x(), m_target->x()) <= std::max(kArrivedDegrees, firmware.azToleranceDeg)
-           && std::abs(at.y() - m_target->y()) <= std::max(kArrivedDegrees, firmware.elToleranceDeg);
+    // (K3NG's 3° in azimuth, or what the profile says it was built with):
+    // arrived, not short.
+    return bearingDifference(at.x(), m_target->x()) <= std::max(kArrivedDegrees, m_session->azStopToleranceDeg())
+           && std::abs(at.y() - m_target->y()) <= std::max(kArrivedDegrees, m_session->elStopToleranceDeg());
 }
 
 void MoveWatch::finish(Outcome outcome)

@@ -71,6 +71,10 @@ public:
     // own) and what it does that its dialect does not say.
     protocol::Firmware firmware() const { return protocol::firmwareOf(m_profile.dialect, m_profile.firmware); }
     const protocol::FirmwareTraits &firmwareTraits() const { return protocol::firmwareTraits(firmware()); }
+    // How close the controller stops each axis by design: the profile's
+    // figure where it has one, else the firmware's.
+    double azStopToleranceDeg() const { return m_profile.stopToleranceAzDeg.value_or(firmwareTraits().azToleranceDeg); }
+    double elStopToleranceDeg() const { return m_profile.stopToleranceElDeg.value_or(firmwareTraits().elToleranceDeg); }
     void setOptions(const Options &options);
     const Options &options() const { return m_options; }
 

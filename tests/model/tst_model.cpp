@@ -144,6 +144,13 @@ void ModelTest::profileRoundTrip()
     p.firmware = slew::protocol::Firmware::K3ng;
     QCOMPARE(p.toJson().value("firmware").toString(), QStringLiteral("k3ng"));
     QCOMPARE(RotatorProfile::fromJson(p.toJson(), &error)->firmware, slew::protocol::Firmware::K3ng);
+    // A controller built with its own stop tolerance: kept, each axis apart.
+    QVERIFY(!p.toJson().contains("stopTolerance"));
+    p.stopToleranceAzDeg = 1.5;
+    const auto tolerant = RotatorProfile::fromJson(p.toJson(), &error);
+    QVERIFY2(tolerant, qPrintable(error));
+    QCOMPARE(tolerant->stopToleranceAzDeg, std::optional<double>(1.5));
+    QVERIFY(!tolerant->stopToleranceElDeg);
     // A profile written before offsets and motion existed reads with none
     // and a G-5500's figures.
     const auto old = RotatorProfile::fromJson(QJsonDocument::fromJson(R"({"name":"old"})").object(), &error);
@@ -161,6 +168,8 @@ void ModelTest::profileRefusesBadValues_data()
     QTest::newRow("firmware") << QByteArray(R"({"firmware":"grbl"})") << "unknown firmware 'grbl'";
     QTest::newRow("firmware for another dialect") << QByteArray(R"({"dialect":"easycomm3","firmware":"k3ng"})")
                                                   << "k3ng speaks easycomm2, gs232a or gs232b, not easycomm3";
+    QTest::newRow("stop tolerance") << QByteArray(R"({"stopTolerance":{"az":30}})") << "stop tolerance must be 0° to 10°";
+    QTest::newRow("stop tolerance, not a number") << QByteArray(R"({"stopTolerance":{"el":"1"}})") << "'el' must be a number";
     QTest::newRow("az max") << QByteArray(R"({"limits":{"azMax":720}})") << "more than 450";
     QTest::newRow("string number") << QByteArray(R"({"limits":{"azMax":"360"}})") << "must be a number";
     QTest::newRow("park outside") << QByteArray(R"({"park":{"az":10,"el":120}})") << "park position";

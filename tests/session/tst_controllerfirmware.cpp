@@ -301,6 +301,28 @@ void ControllerFirmwareTest::k3ngStopWithinItsToleranceIsArrival()
     watch.watch(QPointF(40.0, 25.0));
     TRY_COMPARE(ended.count(), 1);
     QCOMPARE(ended.first().at(0).value<MoveWatch::Outcome>(), MoveWatch::Outcome::StoppedShort);
+    // Nor is it where the profile says this controller was built to stop
+    // within 1°; and a controller the profile says stops within 3° has
+    // arrived, whatever its firmware.
+    model::RotatorProfile tight = session->profile();
+    tight.firmware = protocol::Firmware::K3ng;
+    tight.stopToleranceAzDeg = 1.0;
+    session->setProfile(tight);
+    QCOMPARE(session->azStopToleranceDeg(), 1.0);
+    ended.clear();
+    QVERIFY(session->gotoPosition(90.0, 25.0));
+    watch.watch(QPointF(90.0, 25.0));
+    TRY_COMPARE(ended.count(), 1);
+    QCOMPARE(ended.first().at(0).value<MoveWatch::Outcome>(), MoveWatch::Outcome::StoppedShort);
+    model::RotatorProfile loose = session->profile();
+    loose.firmware = protocol::Firmware::Generic;
+    loose.stopToleranceAzDeg = 3.0;
+    session->setProfile(loose);
+    ended.clear();
+    QVERIFY(session->gotoPosition(40.0, 25.0));
+    watch.watch(QPointF(40.0, 25.0));
+    TRY_COMPARE(ended.count(), 1);
+    QCOMPARE(ended.first().at(0).value<MoveWatch::Outcome>(), MoveWatch::Outcome::Arrived);
 }
 
 void ControllerFirmwareTest::k3ngsEasycomParksWithAGoto()
