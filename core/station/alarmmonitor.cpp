@@ -75,6 +75,19 @@ AlarmMonitor::AlarmMonitor(RotatorSession *session, QObject *parent) : QObject(p
             QTimer::singleShot(0, this, &AlarmMonitor::flushHeldErrors);
         m_heldErrors << message;
     });
+    // A controller whose position does not read (most often the wrong
+    // dialect) moves nothing Slew sends: an alarm until a position comes.
+    auto checkPositionRead = [this] {
+        const session::Capabilities &caps = m_session->capabilities();
+        const bool unread = m_session->isConnected() && caps.probed && !caps.positionFeedback && m_session->awaitingPosition();
+        QString why = m_session->positionNotRead();
+        if (!why.isEmpty())
+            why[0] = why[0].toUpper();
+        setAlarm(QStringLiteral("no-position"), unread, why);
+    };
+    connect(session, &RotatorSession::capabilitiesChanged, this, checkPositionRead);
+    connect(session, &RotatorSession::positionChanged, this, checkPositionRead);
+    connect(session, &RotatorSession::stateChanged, this, checkPositionRead);
     connect(session, &RotatorSession::versionChanged, this,
             [this](const QString &v) { log(Severity::Info, tr("Controller version: %1").arg(v)); });
 }

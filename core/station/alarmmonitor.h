@@ -46,7 +46,8 @@ signals:
     void restingChanged(const QString &text);
     // One alarm or warning came or went: the station service logs these,
     // in the banner's words. `key` names the condition ("link", "ge", "gs",
-    // "stale", "endstop-…", "checksum", "unreadable", "refused-move").
+    // "stale", "endstop-…", "checksum", "unreadable", "no-position",
+    // "refused-move").
     void alarmRaised(const QString &key, const QString &text, slew::station::AlarmMonitor::Severity severity);
     void alarmCleared(const QString &key, const QString &text);
 

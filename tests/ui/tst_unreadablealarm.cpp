@@ -2,8 +2,9 @@
 // The window's alarm monitor and a controller whose replies turn to garbage:
 // one keyed alarm ("Unreadable replies") raised once however long the
 // garbage lasts, a bounded event log, and the alarm cleared once readable
-// replies have come back. The fake controller keeps its own clock, moved
-// by the event loop (tests/session/fakedevice.h); nothing sleeps.
+// replies have come back; a position that never reads is an alarm too. The
+// fake controller keeps its own clock, moved by the event loop
+// (tests/session/fakedevice.h); nothing sleeps.
 
 #include "../common/simulatorpump.h"
 #include "../session/fakedevice.h"
@@ -61,6 +62,31 @@ private slots:
         TRY_VERIFY_WITH_TIMEOUT(!monitor.isActive(QStringLiteral("unreadable")), 30000);
         QCOMPARE(alarmsRaised(), 1);
         QVERIFY(monitor.activeAlarms().isEmpty());
+    }
+
+    void aPositionItCannotReadIsAnAlarm()
+    {
+        // K3NG's GS-232B report on an Easycomm link: connected, and nothing
+        // it sends can move the antenna. One alarm in the refusal's words,
+        // cleared when a position is read at last.
+        FakeDevice device;
+        bool wrongDialect = true;
+        device.script = [&](const QByteArray &line) -> QByteArray {
+            if (line == "AZ EL")
+                return wrongDialect ? QByteArray("AZ=059EL=025\n") : QByteArray("AZ59.0 EL25.0\n");
+            return {};
+        };
+        RotatorSession s;
+        AlarmMonitor monitor(&s);
+        s.connectTo(device.uri());
+        TRY_VERIFY(s.isConnected() && s.capabilities().probed);
+        QVERIFY(monitor.isActive(QStringLiteral("no-position")));
+        QVERIFY(monitor.anySevere());
+        QVERIFY2(monitor.activeAlarms().contains(QStringLiteral("No position read from the controller: check the dialect (easycomm3)")),
+                 qPrintable(monitor.activeAlarms().join(u'\n')));
+        wrongDialect = false;
+        TRY_VERIFY_WITH_TIMEOUT(!monitor.isActive(QStringLiteral("no-position")), 30000);
+        QVERIFY(s.hasPosition());
     }
 };
 
