@@ -2,6 +2,7 @@
 
 #include "session/rotatorsession.h"
 
+#include <QRegularExpression>
 #include <QStringList>
 #include <QUrl>
 #include <QUrlQuery>
@@ -41,9 +42,6 @@ QString DialectResult::describe() const
         text += QObject::tr(" (SPID frames; an MD-01/02 answers the same: choose md01 for its move command)");
     if (firmware != protocol::Firmware::Generic)
         text += QObject::tr(" (%1)").arg(protocol::firmwareTitle(firmware));
-    // A Yaesu controller and K3NG's emulation of it answer alike.
-    else if (dialect == protocol::Dialect::Gs232B && c.positionFeedback)
-        text += QObject::tr(" (a K3NG controller answers the same: choose firmware k3ng for its 3° tolerance)");
     return text;
 }
 
@@ -127,6 +125,17 @@ void DialectIdentifier::next()
         else if (bytes != first && !session->hasPosition())
             conclude(Capabilities{});
     });
+    // K3NG's GS-232B emulation runs its two reports together
+    // (`AZ=059EL=025`), where a Yaesu puts spaces between them: the one
+    // thing that tells them apart on the wire.
+    m_joinedGs232Report = false;
+    if (d == Dialect::Gs232B) {
+        connect(session, &RotatorSession::bytesReceived, this, [this, heard = QByteArray()](const QByteArray &bytes) mutable {
+            heard = (heard + bytes).right(64);
+            static const QRegularExpression joined(QStringLiteral("AZ=\\d+(\\.\\d+)?EL="));
+            m_joinedGs232Report = m_joinedGs232Report || joined.match(QString::fromLatin1(heard)).hasMatch();
+        });
+    }
     connect(session, &RotatorSession::stateChanged, this, [this](RotatorSession::State s, const QString &why) {
         if (s == RotatorSession::State::Disconnected) {
             m_error = why;
@@ -167,6 +176,8 @@ void DialectIdentifier::conclude(const Capabilities &caps)
     // controller leaves them unanswered.
     r.firmware = protocol::firmwareOf(r.dialect, protocol::Firmware::Generic);
     if (r.dialect == Dialect::Easycomm2 && caps.positionFeedback && m_attempt.session()->refusedRequests() > 0)
+        r.firmware = protocol::Firmware::K3ng;
+    if (r.dialect == Dialect::Gs232B && caps.positionFeedback && m_joinedGs232Report)
         r.firmware = protocol::Firmware::K3ng;
     m_attempt.end();
     QMetaObject::invokeMethod(this, &DialectIdentifier::next, Qt::QueuedConnection);

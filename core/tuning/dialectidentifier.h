@@ -68,6 +68,7 @@ private:
     int m_total = 1; // dialects asked in this run
     ProbeAttempt m_attempt;
     QString m_error;
+    bool m_joinedGs232Report = false; // this attempt heard `AZ=059EL=025`
 };
 
 } // namespace slew::tuning

@@ -80,9 +80,10 @@ private slots:
         QTest::newRow("SatNOGS firmware") << "sim:?dialect=satnogs&firmware=satnogs" << "satnogs" << "satnogs";
         QTest::newRow("easycomm2") << "sim:?dialect=easycomm2" << "easycomm2" << "generic";
         // K3NG's controllers: Easycom says `?` to what it lacks; its Yaesu
-        // emulation (the default) is asked once no Easycomm got a position.
+        // emulation (the default) is asked once no Easycomm got a position,
+        // and runs its report together (`AZ=059EL=025`) where a Yaesu does not.
         QTest::newRow("K3NG Easycom") << "sim:?dialect=easycomm2&firmware=k3ng" << "easycomm2" << "k3ng";
-        QTest::newRow("K3NG GS-232B") << "sim:?dialect=gs232b&firmware=k3ng" << "gs232b" << "generic";
+        QTest::newRow("K3NG GS-232B") << "sim:?dialect=gs232b&firmware=k3ng" << "gs232b" << "k3ng";
         QTest::newRow("gs232b") << "sim:?dialect=gs232b" << "gs232b" << "generic";
         // SPID by its binary answers: after every line protocol failed, or
         // first on a line at a SPID rate. An MD-01/02 answers as a Rot2Prog.
@@ -105,8 +106,8 @@ private slots:
         QCOMPARE(protocol::dialectName(id.best()->dialect), dialect);
         QFETCH(QString, firmware);
         QCOMPARE(protocol::firmwareName(id.best()->firmware), firmware);
-        if (dialect == QLatin1String("gs232b"))
-            QVERIFY(id.best()->describe().contains(QStringLiteral("choose firmware k3ng")));
+        if (firmware == QLatin1String("k3ng"))
+            QVERIFY(id.best()->describe().contains(QStringLiteral("K3NG rotator controller")));
         if (dialect == QLatin1String("rot2prog"))
             QVERIFY(id.best()->describe().contains(QStringLiteral("choose md01")));
     }
