@@ -173,9 +173,20 @@ void SlewctlTest::k3ngFirmwareIsReadAndItsRefusalIsSaidAtOnce()
     QVERIFY2(homed.err.contains(QStringLiteral("the controller refused 'RESET' (it answered '?')")), qPrintable(homed.err));
     QVERIFY2(clock.elapsed() < 10000, qPrintable(QString::number(clock.elapsed())));
     // Its GS-232B runs the two reports together: read.
-    const Run yaesu = slewctl({"--dialect", "gs232b", "sim:?firmware=k3ng&dialect=gs232b&start_az=59&start_el=25", "get"});
+    const QString yaesuUri = QStringLiteral("sim:?firmware=k3ng&dialect=gs232b&time_scale=10&start_az=59&start_el=25");
+    const Run yaesu = slewctl({"--dialect", "gs232b", yaesuUri, "get"});
     QCOMPARE(yaesu.exitCode, 0);
     QCOMPARE(yaesu.out, QStringLiteral("az 59.00 el 25.00\n"));
+    // Its go-to ends inside its tolerance too (91.7°, reported in whole
+    // degrees); GS-232 has no PARK, so park is the same go-to to 0/90.
+    const Run yaesuWent = slewctl({"--dialect", "gs232b", yaesuUri, "goto", "94", "25", "--wait"});
+    QVERIFY2(yaesuWent.exitCode == 0, qPrintable(yaesuWent.err));
+    QVERIFY2(yaesuWent.out.endsWith(QStringLiteral("az 92.00 el 25.00\n")), qPrintable(yaesuWent.out));
+    const Run yaesuStop = slewctl({"--dialect", "gs232b", yaesuUri, "stop"});
+    QVERIFY2(yaesuStop.exitCode == 0, qPrintable(yaesuStop.err));
+    const Run yaesuParked = slewctl({"--dialect", "gs232b", yaesuUri, "park", "--wait"});
+    QVERIFY2(yaesuParked.exitCode == 0, qPrintable(yaesuParked.err));
+    QVERIFY2(yaesuParked.out.endsWith(QStringLiteral("az 2.00 el 90.00\n")), qPrintable(yaesuParked.out));
 }
 
 void SlewctlTest::satnogsFirmwareArrivesWhereItStops()
