@@ -31,6 +31,10 @@ RemoteReadout::RemoteReadout(QWidget *parent) : QWidget(parent)
     m_az = plainLabel(QStringLiteral("remoteAzimuth"));
     m_el = plainLabel(QStringLiteral("remoteElevation"));
     for (QLabel *big : {m_az, m_el}) {
+        // "Az 359.9°" never needs a second line; a wrapping label's height
+        // follows its width, and a layout may then give it less than its
+        // big font needs (seen once, 21 px of 28, on a loaded machine).
+        big->setWordWrap(false);
         QFont f = big->font();
         f.setPointSizeF(f.pointSizeF() * 2.0);
         f.setBold(true);

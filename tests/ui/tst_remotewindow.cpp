@@ -306,15 +306,32 @@ private:
         return qobject_cast<RemoteStationWindow *>(window);
     }
 
-    void checkLayoutAndPicture(QWidget *window, const QString &file)
+    // The layout at 1280x720 as it is, and with the alarm banner up (a
+    // station's alarm, or "Not live" when its state is late, as on a busy
+    // machine): nothing squeezed either way.
+    void checkLayoutAndPicture(RemoteStationWindow *window, const QString &file)
     {
         window->resize(1280, 720);
         QTRY_COMPARE(window->size(), QSize(1280, 720));
-        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest); // the layout, settled
-        const QStringList faults = layoutFaults(window);
+        auto faultsNow = [&] {
+            QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest); // the layout, settled
+            QStringList faults = layoutFaults(window);
+            if (!faults.isEmpty())
+                faults << QStringLiteral("the window's least size: %1x%2")
+                              .arg(window->minimumSizeHint().width())
+                              .arg(window->minimumSizeHint().height());
+            return faults;
+        };
+        QStringList faults = faultsNow();
         QVERIFY2(faults.isEmpty(), qPrintable(faults.join(u'\n')));
         QDir().mkpath(QStringLiteral("screenshots"));
         QVERIFY(window->grab().save(QStringLiteral("screenshots/") + file));
+        const bool bannerWasUp = window->alarmBanner()->isVisible();
+        window->alarmBanner()->showAlarms({QStringLiteral("Not live: no state from the station for 12 s")}, true);
+        faults = faultsNow();
+        QVERIFY2(faults.isEmpty(), qPrintable(QStringLiteral("with the alarm banner up:\n") + faults.join(u'\n')));
+        if (!bannerWasUp)
+            window->alarmBanner()->showAlarms({}, false);
     }
 
     QTemporaryDir m_settings;
