@@ -1,8 +1,6 @@
 #include "keyboardcontrol.h"
 
 #include "jogpad.h"
-#include "presetpanel.h"
-#include "rotatormotion.h"
 #include "stopbutton.h"
 #include "textfieldfocus.h"
 
@@ -26,9 +24,8 @@ std::optional<JogPad::Direction> jogDirection(int key)
 
 } // namespace
 
-KeyboardControl::KeyboardControl(QWidget *window, StopButton *stop, JogPad *jog, PresetPanel *presets,
-                                 const RotatorMotion *motion, QObject *parent)
-    : QObject(parent), m_window(window), m_stop(stop), m_jog(jog), m_presets(presets), m_motion(motion)
+KeyboardControl::KeyboardControl(QWidget *window, StopButton *stop, JogPad *jog, QObject *parent)
+    : QObject(parent), m_window(window), m_stop(stop), m_jog(jog)
 {
     qApp->installEventFilter(this);
     for (int d = 0; d < 4; ++d) {
@@ -64,34 +61,37 @@ bool KeyboardControl::eventFilter(QObject *watched, QEvent *event)
     if (!widget || widget->window() != m_window)
         return false;
     auto *key = static_cast<QKeyEvent *>(event);
-    if (key->modifiers() & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier))
-        return false;
-    const bool typing = isTyping();
     const int k = key->key();
+    const Qt::KeyboardModifiers modifiers = key->modifiers() & ~Qt::KeypadModifier;
 
-    // Space in a text field: Stop while the rotator moves, a space while it
-    // is idle (keyboardcontrol.h). Asked at the press; the release and any
-    // repeats follow the press, so none of them types a space either.
-    if (k == Qt::Key_Space && typing && type != QEvent::KeyRelease && !key->isAutoRepeat())
-        m_spaceStops = m_motion->isMoving();
-    if (k == Qt::Key_Escape || (k == Qt::Key_Space && (!typing || m_spaceStops))) {
+    // Esc and Pause stop from anywhere, whatever else is held; Space only
+    // where it types nothing.
+    const bool alwaysStop = k == Qt::Key_Escape || k == Qt::Key_Pause;
+    const bool typing = isTyping();
+    if (alwaysStop || (k == Qt::Key_Space && modifiers == Qt::NoModifier && !typing)) {
         if (type == QEvent::ShortcutOverride) {
             event->accept(); // keep a shortcut from taking it
             return false;
         }
         if (type == QEvent::KeyPress && !key->isAutoRepeat())
-            m_stop->stopAll();
+            m_stop->stopFor(k == Qt::Key_Escape ? tr("the Esc key") : k == Qt::Key_Pause ? tr("the Pause key") : tr("the Space key"));
         return true;
     }
-    if (typing || type == QEvent::ShortcutOverride)
+    // Alt+1..9: a preset, asked for on purpose.
+    if (modifiers == Qt::AltModifier && k >= Qt::Key_1 && k <= Qt::Key_9) {
+        if (type == QEvent::ShortcutOverride) {
+            event->accept();
+            return false;
+        }
+        if (type == QEvent::KeyPress && !key->isAutoRepeat())
+            emit presetKey(k - Qt::Key_1);
+        return true;
+    }
+    if (modifiers != Qt::NoModifier || typing || type == QEvent::ShortcutOverride)
         return false;
     if (const auto d = jogDirection(k)) {
         if (!key->isAutoRepeat())
             jogKey(*d, type == QEvent::KeyPress);
-        return true;
-    }
-    if (type == QEvent::KeyPress && k >= Qt::Key_1 && k <= Qt::Key_9 && !key->isAutoRepeat()) {
-        m_presets->recall(k - Qt::Key_1);
         return true;
     }
     return false;

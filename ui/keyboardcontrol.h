@@ -1,14 +1,11 @@
 #pragma once
-// The window's keys, handled before any widget sees them: Esc stops the
-// rotator from anywhere; arrow keys jog while held (auto-repeat ignored,
-// release stops); number keys 1..9 recall presets. Typing into a field keeps
-// its arrows and digits.
-//
-// Space is Stop wherever the focus is, with one exception: in a field that
-// takes text (textfieldfocus.h) it is a space while the rotator is idle, and
-// Stop while it moves (rotatormotion.h), because the operator who pressed
-// Enter on a go-to and then Space wants the antenna stopped, and a field's
-// stray space is cheap beside an antenna that keeps going.
+// The window's keys, handled before any widget sees them: Esc and Pause
+// stop the rotator from anywhere, a text field included; Space stops when
+// no text field has the focus, and is a space in one; arrow keys jog while
+// held (auto-repeat ignored, release stops). Typing into a field is only
+// typing: its digits, spaces and arrows are the field's. A preset is
+// Alt+1..9 (presetKey), never a bare digit, so a digit typed into a field
+// that lost its focus moves nothing.
 //
 // A held key must reach the jog pad as one press and one release. Qt marks
 // autorepeat (isAutoRepeat) only when it sees the repeat's press already
@@ -26,15 +23,17 @@ class QWidget;
 namespace slew::ui {
 
 class JogPad;
-class PresetPanel;
-class RotatorMotion;
 class StopButton;
 
 class KeyboardControl : public QObject {
     Q_OBJECT
 public:
-    KeyboardControl(QWidget *window, StopButton *stop, JogPad *jog, PresetPanel *presets, const RotatorMotion *motion,
-                    QObject *parent = nullptr);
+    KeyboardControl(QWidget *window, StopButton *stop, JogPad *jog, QObject *parent = nullptr);
+
+signals:
+    // Alt+1..9: the operator asks for preset `index` (0-based); the window
+    // recalls it, or asks first as for a plot click.
+    void presetKey(int index);
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
@@ -48,9 +47,6 @@ private:
     QWidget *m_window;
     StopButton *m_stop;
     JogPad *m_jog;
-    PresetPanel *m_presets;
-    const RotatorMotion *m_motion;
-    bool m_spaceStops = false; // the last Space pressed in a text field was Stop
     QTimer m_release[4]; // per JogPad::Direction: a release waiting for its repeat
 };
 

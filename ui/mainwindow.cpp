@@ -17,7 +17,6 @@
 #include "presetpanel.h"
 #include "radiopanel.h"
 #include "schedulepanel.h"
-#include "rotatormotion.h"
 #include "rotctldpanel.h"
 #include "rotorspanel.h"
 #include "stationdialog.h"
@@ -260,7 +259,8 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     connect(session, &RotatorSession::profileChanged, this, &MainWindow::showProfile);
     wirePlot();
     showProfile();
-    m_keys = new KeyboardControl(this, m_stop, m_jog, m_presets, new RotatorMotion(session, m_jog, this), this);
+    m_keys = new KeyboardControl(this, m_stop, m_jog, this);
+    connect(m_keys, &KeyboardControl::presetKey, this, &MainWindow::onPresetKey);
     // The plot takes no typing: the focus rests there after a go-to sent
     // with Enter and after a click beside a text field.
     new TextFieldFocus(this, m_plot, this);
@@ -431,8 +431,27 @@ void MainWindow::wirePlot()
     connect(m_confirm, &TargetConfirmation::accepted, this, &MainWindow::sendPickedTarget);
 }
 
+void MainWindow::onPresetKey(int index)
+{
+    // Alt+1..9. Without "Ask before moving" it goes at once, as a click on
+    // the preset list does; with it, the strip under the plot asks first,
+    // as for a click on the plot.
+    const model::Preset *preset = m_presets->presets().at(index);
+    if (!preset || !m_confirm->confirmationWanted()) {
+        m_presets->recall(index); // says "There is no preset 4." where there is none
+        return;
+    }
+    if (const model::MoveCheck check = m_session->previewPointing(preset->azimuth, preset->elevation); !check.allowed()) {
+        m_confirm->showProblem(check.refusal);
+        return;
+    }
+    m_askedPreset = index;
+    m_confirm->ask(preset->azimuth, preset->elevation, tr("preset '%1'").arg(preset->name));
+}
+
 void MainWindow::onTargetPicked(double az, double el)
 {
+    m_askedPreset.reset();
     if (const model::MoveCheck check = m_session->previewPointing(az, el); !check.allowed()) {
         m_confirm->showProblem(check.refusal);
         return;
@@ -446,6 +465,14 @@ void MainWindow::onTargetPicked(double az, double el)
 
 void MainWindow::sendPickedTarget(double az, double el)
 {
+    // A preset asked for by its key goes as the preset (its name in the log).
+    if (const std::optional<int> preset = std::exchange(m_askedPreset, std::nullopt)) {
+        if (m_presets->recall(*preset))
+            m_confirm->showGoing(m_session->targetAzimuth(), m_session->targetElevation());
+        else
+            m_confirm->cancel();
+        return;
+    }
     if (const session::CommandResult sent = m_session->gotoPosition(az, el); !sent) {
         m_confirm->showProblem(sent.refusal);
         return;
@@ -472,7 +499,10 @@ void MainWindow::wireOperatorActions()
     connect(m_parkHome, &ParkHomePanel::homingStarted, m_actions, [this] { m_actions->action(tr("home")); });
     connect(m_parkHome, &ParkHomePanel::homingFinished, m_actions,
             [this](bool ok, const QString &message) { m_actions->outcome(tr("home: %1").arg(message), !ok); });
-    connect(m_stop, &StopButton::stopped, m_actions, [this] { m_actions->action(tr("Stop")); });
+    connect(m_stop, &StopButton::stopped, m_actions, [this] {
+        const QString cause = m_stop->lastCause();
+        m_actions->action(cause.isEmpty() ? tr("Stop") : tr("Stop (%1)").arg(cause));
+    });
     connect(m_jog, &JogPad::jogStarted, m_actions, &OperatorActions::action);
     connect(m_jog, &JogPad::jogEnded, m_actions, [this](const QString &what) {
         m_actions->action(tr("%1: released at %2")

@@ -10,6 +10,8 @@
 
 #include <QMainWindow>
 
+#include <optional>
+
 class QTabWidget;
 
 namespace slew::bridge {
@@ -118,6 +120,7 @@ public slots:
 private:
     QWidget *buildControlColumn();
     void wirePlot();
+    void onPresetKey(int index);
     void onTargetPicked(double az, double el);
     void sendPickedTarget(double az, double el);
     void wireOperatorActions();
@@ -146,6 +149,7 @@ private:
     EventLog *m_log;
     QTabWidget *m_tabs;
     KeyboardControl *m_keys;
+    std::optional<int> m_askedPreset; // the preset the confirmation strip asks about
     OperatorActions *m_actions = nullptr;
     bool m_disconnectAsked = false; // the next Disconnected is the operator's, not a failure
     bridge::RotctldServer *m_rotctld;

@@ -21,7 +21,7 @@ PresetPanel::PresetPanel(session::RotatorSession *session, QWidget *parent) : QW
     setObjectName(QStringLiteral("presetPanel"));
     m_list = new QListWidget;
     m_list->setObjectName(QStringLiteral("presetList"));
-    m_list->setToolTip(tr("Click a preset, or press its number, to go there"));
+    m_list->setToolTip(tr("Click a preset, or press Alt and its number, to go there"));
     m_list->setMinimumHeight(48); // two rows; it scrolls, and takes more when there is room
     m_name = new QLineEdit;
     m_name->setObjectName(QStringLiteral("presetName"));
@@ -64,8 +64,9 @@ void PresetPanel::refresh()
     const auto &list = m_presets.presets();
     for (int i = 0; i < list.size(); ++i) {
         const auto &p = list[i];
+        // The key that recalls it (KeyboardControl): Alt+1..9.
         m_list->addItem(QStringLiteral("%1   %2   %3° / %4°")
-                            .arg(i + 1)
+                            .arg(i < 9 ? tr("Alt+%1").arg(i + 1) : QString::number(i + 1))
                             .arg(p.name)
                             .arg(p.azimuth, 0, 'f', 1)
                             .arg(p.elevation, 0, 'f', 1));

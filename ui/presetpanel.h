@@ -1,7 +1,8 @@
 #pragma once
 // Named positions: stored from where the rotator is now, recalled with one
-// click or the number key shown beside each (KeyboardControl). Kept in
-// QSettings, so they survive a restart.
+// click or Alt and the number shown beside each (KeyboardControl, which the
+// window asks first while "Ask before moving" is on). Kept in QSettings, so
+// they survive a restart.
 
 #include "model/presets.h"
 #include "session/rotatorsession.h"
@@ -26,7 +27,7 @@ public:
     const model::PresetList &presets() const { return m_presets; }
 
 public slots:
-    bool recall(int index); // 0-based; key 1 recalls index 0
+    bool recall(int index); // 0-based; Alt+1 recalls index 0
     bool storeCurrent(const QString &name);
     bool removeSelected();
     void moveEnded(); // the move a "Going to" line describes has ended

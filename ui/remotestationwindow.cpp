@@ -124,10 +124,12 @@ RemoteStationWindow::RemoteStationWindow(RemoteStation *station, QWidget *parent
         log(!online, online ? tr("station %1 is online").arg(m_station->name())
                             : tr("station %1 went offline").arg(m_station->name()));
     });
-    // Esc and Space stop, wherever the focus is (a text field keeps Space).
-    auto *esc = new QShortcut(QKeySequence(Qt::Key_Escape), this);
-    esc->setContext(Qt::WindowShortcut);
-    connect(esc, &QShortcut::activated, m_stop, &StopButton::stopAll);
+    // Esc and Pause stop, wherever the focus is (a text field keeps Space).
+    for (const Qt::Key key : {Qt::Key_Escape, Qt::Key_Pause}) {
+        auto *stop = new QShortcut(QKeySequence(key), this);
+        stop->setContext(Qt::WindowShortcut);
+        connect(stop, &QShortcut::activated, m_stop, &StopButton::stopAll);
+    }
     showLive(false);
     const QScreen *screen = QGuiApplication::primaryScreen();
     const QSize room = screen ? screen->availableSize() : QSize(1440, 900);

@@ -48,7 +48,7 @@ RotorTile::RotorTile(RotatorSession *session, int number, bool isMain, QWidget *
     m_stop = new QToolButton;
     m_stop->setText(tr("Stop"));
     m_stop->setObjectName(QStringLiteral("stop"));
-    m_stop->setToolTip(tr("Stop rotor %1 (the window's Stop, Space or Esc stops every rotor)").arg(number));
+    m_stop->setToolTip(tr("Stop rotor %1 (the window's Stop, Esc or Pause stops every rotor)").arg(number));
     m_stop->setStyleSheet(QStringLiteral("QToolButton { color: #e54848; font-weight: bold; }"));
     // Narrow enough that four tiles fit under the plot without widening the
     // window: a small compass, a bearing field without arrows (the wheel and

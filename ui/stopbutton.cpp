@@ -10,7 +10,7 @@ StopButton::StopButton(session::RotatorSession *session, QWidget *parent)
 StopButton::StopButton(std::function<bool()> stop, QWidget *parent) : QPushButton(tr("STOP"), parent), m_stop(std::move(stop))
 {
     setObjectName(QStringLiteral("stopButton"));
-    setToolTip(tr("Stop both axes now (Space or Esc)"));
+    setToolTip(tr("Stop both axes now (Esc or Pause anywhere; Space outside a text field)"));
     setAutoDefault(false);
     setFocusPolicy(Qt::NoFocus);
     // Big, but not so tall that the control column outgrows a 720-pixel
@@ -22,11 +22,17 @@ StopButton::StopButton(std::function<bool()> stop, QWidget *parent) : QPushButto
     setFont(f);
     setStyleSheet(QStringLiteral("QPushButton{background:#c62828;color:white;border:1px solid #8e1c1c;border-radius:6px;}"
                                  "QPushButton:pressed{background:#8e1c1c;}"));
-    connect(this, &QPushButton::clicked, this, &StopButton::stopAll);
+    connect(this, &QPushButton::clicked, this, [this] { stopFor(tr("the STOP button")); });
 }
 
 bool StopButton::stopAll()
 {
+    return stopFor(QString());
+}
+
+bool StopButton::stopFor(const QString &cause)
+{
+    m_lastCause = cause;
     emit stopped(); // first: a running jog or homing must not restart the motion
     return m_stop();
 }

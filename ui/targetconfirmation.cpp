@@ -71,10 +71,11 @@ void TargetConfirmation::setPending(std::optional<QPointF> azEl)
     emit pendingChanged(azEl);
 }
 
-void TargetConfirmation::ask(double az, double el)
+void TargetConfirmation::ask(double az, double el, const QString &what)
 {
     m_question->setStyleSheet(QString());
-    m_question->setText(tr("Go to az %1°, el %2°?").arg(az, 0, 'f', 1).arg(el, 0, 'f', 1));
+    const QString point = tr("az %1°, el %2°").arg(az, 0, 'f', 1).arg(el, 0, 'f', 1);
+    m_question->setText(what.isEmpty() ? tr("Go to %1?").arg(point) : tr("Go to %1, %2?").arg(what, point));
     m_going = false;
     m_question->setToolTip(QString());
     setPending(QPointF(az, el));

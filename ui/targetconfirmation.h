@@ -24,7 +24,8 @@ public:
     std::optional<QPointF> pending() const { return m_pending; }
 
 public slots:
-    void ask(double az, double el);
+    // `what` names the target when it is more than a point ("preset 'Moon'").
+    void ask(double az, double el, const QString &what = {});
     void showProblem(const QString &text); // the picked point cannot be reached
     void accept();
     void cancel();

@@ -14,6 +14,8 @@
 
 #include "windowfixture.h"
 
+#include "eventlog.h"
+
 #include <QLineEdit>
 #include <QPushButton>
 #include <QTabBar>
@@ -159,16 +161,18 @@ private slots:
         QVERIFY(std::abs(f.session.azimuth() - farAz) > 5.0); // stopped on the way, not arrived
     }
 
-    void spaceInTypingFieldStopsWhileMoving()
+    void typingInAFieldNeverStopsAMove()
     {
-        // Focus put back in the field by hand: while the rotator moves, Space
-        // is still Stop there.
+        // Focus put back in a field by hand while the rotator moves: Space is
+        // a space there ("145.95 MHz" typed during a park or a pass), and Esc
+        // and Pause still stop from inside it.
         WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
         f.window->activateWindow();
         QVERIFY(f.window->isActiveWindow()); // offscreen: at once
         auto *el = f.find<QLineEdit>(QStringLiteral("gotoElevation"));
-        QVERIFY(f.session.gotoPosition(f.session.azimuth() < 180.0 ? 300.0 : 20.0, 60.0));
+        const double farAz = f.session.azimuth() < 180.0 ? 300.0 : 20.0;
+        QVERIFY(f.session.gotoPosition(farAz, 60.0));
         QVERIFY(f.waitFor([&] { return !f.isStill(); }, 5000));
         el->setFocus();
         el->setText(QStringLiteral("60"));
@@ -177,8 +181,24 @@ private slots:
         key(f.window.get(), QEvent::KeyPress, Qt::Key_Space, false, QStringLiteral(" "));
         key(f.window.get(), QEvent::KeyRelease, Qt::Key_Space, false, QStringLiteral(" "));
         settle(f);
-        QCOMPARE(f.sentCount(kStop), 1);
-        QCOMPARE(el->text(), QStringLiteral("60"));
+        QCOMPARE(f.sentCount(kStop), 0);
+        QCOMPARE(el->text(), QStringLiteral("60 "));
+        QVERIFY(!f.isStill());
+        for (const Qt::Key stopKey : {Qt::Key_Pause, Qt::Key_Escape}) {
+            QVERIFY(f.session.gotoPosition(farAz, 60.0));
+            QVERIFY(f.waitFor([&] { return !f.isStill(); }, 5000));
+            el->setFocus();
+            f.sent.clear();
+            key(f.window.get(), QEvent::KeyPress, stopKey, false);
+            key(f.window.get(), QEvent::KeyRelease, stopKey, false);
+            settle(f);
+            QCOMPARE(f.sentCount(kStop), 1);
+            QVERIFY(f.waitUntilStill());
+        }
+        // The event log says which key it was.
+        const QString log = f.window->eventLog()->toPlainText();
+        QVERIFY2(log.contains(QStringLiteral("Stop (the Pause key)")) && log.contains(QStringLiteral("Stop (the Esc key)")),
+                 qPrintable(log));
     }
 
     void spaceInTypingFieldTypesWhileIdle()

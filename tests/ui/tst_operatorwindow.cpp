@@ -337,7 +337,7 @@ private slots:
         QCOMPARE(f.sentCount(kPositionCommand), 2);
     }
 
-    void presetsStoreAndRecallByNumberKey()
+    void presetsStoreAndRecallByAltAndNumber()
     {
         WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
@@ -349,8 +349,32 @@ private slots:
         QCOMPARE(panel->presets().size(), 1);
         QVERIFY(f.session.gotoPosition(10, 5));
         QVERIFY(f.waitUntilAt(10, 5));
+        QVERIFY(f.waitUntilStill());
         f.find<QWidget>(QStringLiteral("polarPlot"))->setFocus();
+        // A bare digit is no preset: "JAS-2" typed where a field lost its
+        // focus moves nothing.
+        const int before = f.sentCount(kPositionCommand);
         QTest::keyClick(f.window.get(), Qt::Key_1);
+        QTest::keyClick(f.window.get(), Qt::Key_2);
+        QCOMPARE(f.sentCount(kPositionCommand), before);
+        // Alt+1 with "Ask before moving" on: asked first, as a plot click
+        // is, and sent once accepted.
+        slew::ui::TargetConfirmation *confirm = f.window->targetConfirmation();
+        confirm->setConfirmationWanted(true);
+        QTest::keyClick(f.window.get(), Qt::Key_1, Qt::AltModifier);
+        QCOMPARE(f.sentCount(kPositionCommand), before);
+        QVERIFY(confirm->pending().has_value());
+        auto *question = confirm->findChild<QLabel *>();
+        QVERIFY(question);
+        QVERIFY2(question->text().contains(QStringLiteral("preset 'Relay'")), qPrintable(question->text()));
+        confirm->accept();
+        QCOMPARE(f.sentCount(kPositionCommand), before + 1);
+        QVERIFY(f.waitUntilAt(50, 25));
+        // With confirmation off, Alt+1 goes at once.
+        QVERIFY(f.session.gotoPosition(10, 5));
+        QVERIFY(f.waitUntilAt(10, 5));
+        confirm->setConfirmationWanted(false);
+        QTest::keyClick(f.window.get(), Qt::Key_1, Qt::AltModifier);
         QVERIFY(f.waitUntilAt(50, 25));
         QVERIFY(!panel->recall(5)); // no such preset: nothing sent
     }

@@ -5,13 +5,18 @@
 // - the window opens on the default simulator with no alarm banner;
 // - every chart's axis labels are numbers (times on the time axis), not "…";
 // - every wizard page, at the wizard's own default size, has no two visible
-//   widgets on top of each other, the tuning page with its figures filled in.
+//   widgets on top of each other, the tuning page with its figures filled in;
+// - keys from the X server itself (xdotool): typing "145.95 MHz" into a
+//   field during a park types it and stops nothing, Esc stops from inside
+//   the field, a bare digit moves nothing and Alt+1 asks for its preset.
 
 #include "../common/simulatorpump.h"
 #include "windowfixture.h"
 
 #include "alarmbanner.h"
 #include "linkschemes.h"
+#include "presetpanel.h"
+#include "targetconfirmation.h"
 #include "telemetrycharts.h"
 #include "operatortheme.h"
 #include "wizard/setupwizard.h"
@@ -28,10 +33,13 @@
 #include <QImage>
 #include <QLabel>
 #include <QLineEdit>
+#include <QProcess>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QRegularExpression>
+#include <QSignalSpy>
+#include <QStandardPaths>
 #include <QTest>
 #include <QWizardPage>
 
@@ -106,6 +114,29 @@ T *find(QWidget &w, const char *name)
     return child;
 }
 
+// Runs xdotool to its end (keys and clicks as the X server delivers them),
+// from the event loop: the window goes on reading what it sends.
+bool xdotool(const QStringList &arguments)
+{
+    QProcess p;
+    p.setProgram(QStandardPaths::findExecutable(QStringLiteral("xdotool")));
+    p.setArguments(arguments);
+    QSignalSpy finished(&p, &QProcess::finished);
+    p.start();
+    if (!finished.wait(10000) && p.state() != QProcess::NotRunning)
+        return false;
+    return p.exitStatus() == QProcess::NormalExit && p.exitCode() == 0;
+}
+
+// Clicks the middle of `w` through the X server: without a window manager
+// the keyboard then follows the pointer into the window.
+bool clickOn(QWidget *w)
+{
+    const QPoint at = w->mapToGlobal(w->rect().center());
+    return xdotool({QStringLiteral("mousemove"), QString::number(at.x()), QString::number(at.y()),
+                    QStringLiteral("click"), QStringLiteral("1")});
+}
+
 } // namespace
 
 class X11WindowTest : public QObject {
@@ -147,6 +178,59 @@ private slots:
         const QImage lightImage = chart->grab().toImage();
         const QColor lightMiddle = lightImage.pixelColor(lightImage.width() / 2, lightImage.height() / 2);
         QVERIFY2(lightMiddle.lightness() > 200, qPrintable(lightMiddle.name()));
+    }
+
+    void typingIsOnlyTypingFromTheXServer()
+    {
+        QVERIFY2(!QStandardPaths::findExecutable(QStringLiteral("xdotool")).isEmpty(),
+                 "xdotool is missing: install the Debian package xdotool (packaging/debian-packages.txt)");
+        // A slow rotator, parking from far away: it is still moving while
+        // the operator types.
+        WindowFixture f(QStringLiteral("sim:?model=g5500&start_az=300&start_el=40"));
+        f.window->resize(1600, 1000);
+        f.window->show();
+        QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
+        QVERIFY(f.connectAndWait());
+        const QRegularExpression stop(QStringLiteral("^S[AE]\\b"));
+        const QRegularExpression move(QStringLiteral("^(AZ|EL)\\d|^PARK"));
+        QVERIFY(f.session.park());
+        QVERIFY(f.waitFor([&] { return !f.isStill(); }, 10000));
+
+        auto *field = f.find<QLineEdit>(QStringLiteral("gotoAzimuth"));
+        QVERIFY(clickOn(field));
+        QVERIFY(f.waitFor([&] { return field->hasFocus(); }, 5000));
+        const int stopsBefore = f.sentCount(stop);
+        QVERIFY(xdotool({QStringLiteral("type"), QStringLiteral("--delay"), QStringLiteral("30"), QStringLiteral("145.95 MHz")}));
+        QVERIFY(f.waitFor([&] { return field->text() == QStringLiteral("145.95 MHz"); }, 5000));
+        QCOMPARE(f.sentCount(stop), stopsBefore);
+        QVERIFY(!f.isStill()); // still parking
+
+        // Esc, from inside the field: stopped.
+        QVERIFY(xdotool({QStringLiteral("key"), QStringLiteral("Escape")}));
+        QVERIFY(f.waitFor([&] { return f.sentCount(stop) > stopsBefore; }, 5000));
+        QVERIFY(f.waitUntilStill(30000));
+
+        // A preset, then digits typed where no field has the focus: nothing
+        // moves. Alt+1 asks first ("Ask before moving").
+        auto *presets = f.window->presetPanel();
+        QVERIFY(presets->storeCurrent(QStringLiteral("Here")));
+        const int movesBefore = f.sentCount(move);
+        // A click on the go-to group's frame takes the focus from the field.
+        QWidget *group = field->parentWidget();
+        while (group && !group->inherits("QGroupBox"))
+            group = group->parentWidget();
+        QVERIFY(group);
+        const QPoint frame = group->mapToGlobal(QPoint(group->width() / 2, 4));
+        QVERIFY(xdotool({QStringLiteral("mousemove"), QString::number(frame.x()), QString::number(frame.y()),
+                         QStringLiteral("click"), QStringLiteral("1")}));
+        QVERIFY(f.waitFor([&] { return !field->hasFocus(); }, 5000));
+        QVERIFY(xdotool({QStringLiteral("type"), QStringLiteral("--delay"), QStringLiteral("30"), QStringLiteral("12")}));
+        slew::ui::TargetConfirmation *confirm = f.window->targetConfirmation();
+        confirm->setConfirmationWanted(true);
+        QVERIFY(xdotool({QStringLiteral("key"), QStringLiteral("alt+1")}));
+        QVERIFY(f.waitFor([&] { return confirm->pending().has_value(); }, 5000));
+        QCOMPARE(f.sentCount(move), movesBefore);
+        confirm->cancel();
     }
 
     void windowOpensQuietlyWithNumbersOnEveryChart()
