@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "elementset.h"
 
+#include "satellitenames.h"
+
 #include "input/logtext.h"
 
 #include <QHash>
@@ -95,13 +97,31 @@ QList<const ElementSet *> findSatellites(const QList<ElementSet> &sets, const QS
         if (!found.isEmpty())
             return found;
     }
+    // By the names operators use (satellitenames.h), most telling first:
+    // the whole name or a designation in it, an AMSAT name the set lacks,
+    // the start of the name, then any part of it.
+    const QString key = satelliteNameKey(q);
+    if (key.isEmpty())
+        return found;
     for (const ElementSet &s : sets)
-        if (s.name.compare(q, Qt::CaseInsensitive) == 0)
+        if (satelliteNameKeys(s.name).contains(key))
+            found.append(&s);
+    if (!found.isEmpty())
+        return found;
+    if (const std::optional<int> number = amsatCatalogueNumber(key)) {
+        for (const ElementSet &s : sets)
+            if (s.catalogueNumber == *number)
+                found.append(&s);
+        if (!found.isEmpty())
+            return found;
+    }
+    for (const ElementSet &s : sets)
+        if (satelliteNameKey(s.name).startsWith(key))
             found.append(&s);
     if (!found.isEmpty())
         return found;
     for (const ElementSet &s : sets)
-        if (s.name.startsWith(q, Qt::CaseInsensitive))
+        if (satelliteNameKey(s.name).contains(key))
             found.append(&s);
     return found;
 }

@@ -80,8 +80,10 @@ struct ElementSetRead {
 QList<ElementSet> mergeByCatalogueNumber(const QList<ElementSet> &sets);
 
 // The sets a query names: a catalogue number matches exactly (also written
-// in Alpha-5, "A0001"); otherwise a case-insensitive prefix of the name. An
-// exact name match wins over prefixes.
+// in Alpha-5, "A0001"); otherwise, compared as satelliteNameKey (case,
+// spaces and hyphens aside), the first of these that finds any: the whole
+// name or a designation in parentheses ("ZARYA", "AO-91"), an AMSAT name
+// the set lacks ("OSCAR 7", "JAS-2"), the start of the name, any part of it.
 QList<const ElementSet *> findSatellites(const QList<ElementSet> &sets, const QString &query);
 
 // Exactly one set for a query, or nothing and *error: "no satellite 'X'" or

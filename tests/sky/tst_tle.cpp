@@ -44,6 +44,9 @@ class TestTle : public QObject {
     Q_OBJECT
 private slots:
     void readsTheFields();
+    void satellitesAreFoundByTheNamesOperatorsUse_data();
+    void satellitesAreFoundByTheNamesOperatorsUse();
+    void amsatNamesFindSetsThatLackThem();
     void checksum_data();
     void checksum();
     void refusals_data();
@@ -137,6 +140,59 @@ void TestTle::ambiguousNamesAreRefusedNamingTheMatches()
     const ElementSet *one = findOneSatellite(sets, QStringLiteral("noaa 19"), &error);
     QVERIFY(one);
     QCOMPARE(one->catalogueNumber, 33591);
+}
+
+void TestTle::satellitesAreFoundByTheNamesOperatorsUse_data()
+{
+    QTest::addColumn<QString>("query");
+    QTest::addColumn<int>("catalogueNumber");
+    // Gpredict's 2018 sets: "FOX-1B (AO-91)", "ISS (ZARYA)", "JAS-2 (FO-29)".
+    QTest::newRow("AO-91") << "AO-91" << 43017;
+    QTest::newRow("ao 91") << "ao 91" << 43017;
+    QTest::newRow("SO-50") << "SO-50" << 27607;
+    QTest::newRow("FO-29") << "FO-29" << 24278;
+    QTest::newRow("JAS-2") << "JAS-2" << 24278;
+    QTest::newRow("ZARYA") << "ZARYA" << 25544;
+    QTest::newRow("ISS") << "ISS" << 25544;
+    QTest::newRow("AO-7, not AO-71 or AO-73") << "AO-7" << 7530;
+    QTest::newRow("OSCAR 7") << "OSCAR 7" << 7530;
+    QTest::newRow("OSCAR7, its space eaten") << "OSCAR7" << 7530;
+    QTest::newRow("part of a name") << "ZARY" << 25544;
+    QTest::newRow("catalogue number") << "43017" << 43017;
+}
+
+void TestTle::satellitesAreFoundByTheNamesOperatorsUse()
+{
+    QFETCH(QString, query);
+    QFETCH(int, catalogueNumber);
+    static const ElementSetFile gpredict =
+        readElementSetFile(QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"));
+    QVERIFY2(gpredict.sets.size() > 900, qPrintable(gpredict.error));
+    QString error;
+    const ElementSet *found = findOneSatellite(gpredict.sets, query, &error);
+    QVERIFY2(found, qPrintable(error));
+    QCOMPARE(found->catalogueNumber, catalogueNumber);
+}
+
+void TestTle::amsatNamesFindSetsThatLackThem()
+{
+    // A set named as its operator names it, without the AMSAT designation:
+    // found by the built-in table, and by its own name as before.
+    QList<ElementSet> sets(2);
+    sets[0].name = QStringLiteral("RADFXSAT");
+    sets[0].catalogueNumber = 43017;
+    sets[1].name = QStringLiteral("ES'HAIL 2");
+    sets[1].catalogueNumber = 43700;
+    QString error;
+    for (const auto &[query, number] : {std::pair{"AO-91", 43017}, std::pair{"FOX-1B", 43017}, std::pair{"QO-100", 43700},
+                                         std::pair{"RADFX", 43017}}) {
+        const ElementSet *found = findOneSatellite(sets, QString::fromLatin1(query), &error);
+        QVERIFY2(found, qPrintable(error));
+        QCOMPARE(found->catalogueNumber, number);
+    }
+    QVERIFY(!findOneSatellite(sets, QStringLiteral("SO-50"), &error)); // in the table, not in these sets
+    QCOMPARE(error, QStringLiteral("no satellite 'SO-50'"));
+    QVERIFY(!findOneSatellite(sets, QStringLiteral(" - "), &error)); // nothing to search by
 }
 
 void TestTle::filesThatAreNotFilesAreRefused()
