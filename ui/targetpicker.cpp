@@ -47,8 +47,16 @@ QString displayName(const FavouriteTarget &t)
 
 bool matches(const FavouriteTarget &t, const QString &wanted)
 {
-    return wanted.isEmpty() || displayName(t).startsWith(wanted, Qt::CaseInsensitive)
-        || (t.kind == FavouriteTarget::Kind::Satellite && QString::number(t.catalogueNumber) == wanted);
+    if (wanted.isEmpty())
+        return true;
+    if (t.kind != FavouriteTarget::Kind::Satellite)
+        return displayName(t).startsWith(wanted, Qt::CaseInsensitive);
+    // A favourite satellite is found as the loaded sets are ("AO-91" for
+    // "FOX-1B (AO-91)"): the same search, on the one name.
+    sky::ElementSet named;
+    named.name = t.name;
+    named.catalogueNumber = t.catalogueNumber;
+    return !sky::findSatellites({named}, wanted).isEmpty();
 }
 
 } // namespace

@@ -145,6 +145,21 @@ private slots:
         WindowFixture f;
         QVERIFY(f.loadElementSets(kAllSets));
         QCOMPARE(scheduleTab(f)->targetSpecs(), (QStringList{"norad:27386", "norad:41617", "norad:40039"}));
+        // Added by the names operators use.
+        SchedulePanel *panel = scheduleTab(f);
+        for (const char *name : {"AO-91", "SO-50", "FO-29", "ZARYA"})
+            QVERIFY2(panel->addTarget(QString::fromLatin1(name)), name);
+        QCOMPARE(panel->targetSpecs().mid(3),
+                 (QStringList{"norad:43017", "norad:27607", "norad:24278", "norad:25544"}));
+        // Removed again, as the Remove button does, so the next test starts
+        // from the three.
+        auto *list = f.find<QListWidget>(QStringLiteral("scheduleTargets"));
+        auto *remove = f.find<QPushButton>(QStringLiteral("scheduleRemove"));
+        while (list->count() > 3) {
+            list->setCurrentRow(3);
+            remove->click();
+        }
+        QCOMPARE(panel->targetSpecs().size(), 3);
     }
 
     void runsAndStopsOnTheSimulator()

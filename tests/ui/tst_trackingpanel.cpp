@@ -404,6 +404,31 @@ private slots:
         QVERIFY(f.window->grab().save(QStringLiteral("screenshots/telemetry-pointing-error.png")));
     }
 
+    void satellitesFoundByTheNamesOperatorsUse()
+    {
+        // One target's search, as the Schedule's and --passes: AMSAT names,
+        // designations in parentheses, a catalogue number; a favourite too.
+        WindowFixture f;
+        QVERIFY(f.loadElementSets(kAllSets));
+        TrackingPanel *panel = f.window->trackingPanel();
+        auto *picker = panel->findChild<slew::ui::TargetPicker *>(QStringLiteral("targetPicker"));
+        QVERIFY(picker);
+        for (const auto &[query, number] : {std::pair{"AO-91", 43017}, std::pair{"SO-50", 27607}, std::pair{"FO-29", 24278},
+                                             std::pair{"ZARYA", 25544}, std::pair{"oscar 7", 7530}, std::pair{"43137", 43137}}) {
+            QVERIFY2(panel->selectTarget(QString::fromLatin1(query)), query);
+            const std::optional<slew::sky::FavouriteTarget> chosen = picker->chosen();
+            QVERIFY2(chosen && chosen->catalogueNumber == number, query);
+        }
+        auto *favourite = panel->findChild<QToolButton *>(QStringLiteral("favouriteToggle"));
+        QVERIFY(favourite);
+        QVERIFY(panel->selectTarget(QStringLiteral("AO-91")));
+        QVERIFY(!favourite->isChecked());
+        favourite->click(); // now a favourite: listed first, and still found
+        QVERIFY(panel->selectTarget(QStringLiteral("AO-91")));
+        QCOMPARE(picker->chosen()->catalogueNumber, 43017);
+        favourite->click();
+    }
+
     void directionsTypedInTheSearch()
     {
         // A fixed direction and a radio source are targets too: typed in
