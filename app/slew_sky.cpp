@@ -275,18 +275,28 @@ int runPasses(QCoreApplication &app)
             return fail(QStringLiteral("--hours: %1").arg(why));
         hours = *value;
     }
+    // AOS and LOS where the elevation crosses --aos-el (the horizon, as the
+    // window's pass table has them, or the almanac's rise and set); a pass
+    // is listed when its highest point climbs to --min-el.
+    double aosEl = body ? kRiseSetElevationDeg : 0.0;
     double minEl = body ? kRiseSetElevationDeg : 10.0;
-    if (parser.isSet(QStringLiteral("min-el"))) {
-        const auto value = slew::input::numberIn(parser.value(QStringLiteral("min-el")), {-5, 90, "°"}, &why);
+    for (const auto &[option, out] : {std::pair{"aos-el", &aosEl}, std::pair{"min-el", &minEl}}) {
+        if (!parser.isSet(QLatin1String(option)))
+            continue;
+        const auto value = slew::input::numberIn(parser.value(QLatin1String(option)), {-5, 90, "°"}, &why);
         if (!value)
-            return fail(QStringLiteral("--min-el: %1").arg(why));
-        minEl = *value;
+            return fail(QStringLiteral("--%1: %2").arg(QLatin1String(option), why));
+        *out = *value;
     }
-    const PassWindow window{common.julian, common.julian + hours / 24.0, minEl};
+    const PassWindow window{common.julian, common.julian + hours / 24.0, aosEl};
     const bool json = parser.isSet(QStringLiteral("json"));
+    auto highEnough = [minEl](QList<Pass> passes) {
+        passes.removeIf([minEl](const Pass &p) { return p.maxElevationDeg() < minEl; });
+        return passes;
+    };
 
     if (body) {
-        printPasses(predictBodyPasses(*body, common.station, window), json, true);
+        printPasses(highEnough(predictBodyPasses(*body, common.station, window)), json, true);
         return 0;
     }
     if (target.compare(QStringLiteral("all"), Qt::CaseInsensitive) == 0) {
@@ -305,7 +315,7 @@ int runPasses(QCoreApplication &app)
         }
         if (usable.isEmpty())
             return fail(QStringLiteral("none of the element sets from %1 can be propagated").arg(common.origin));
-        printPasses(predictPasses(usable, common.station, window), json, false);
+        printPasses(highEnough(predictPasses(usable, common.station, window)), json, false);
         return 0;
     }
     const ElementSet *tle = pickSatellite(common.sets, target, &why);
@@ -319,7 +329,7 @@ int runPasses(QCoreApplication &app)
                      qPrintable(sgp4ErrorText(sat.initialError())));
         return 1;
     }
-    printPasses(predictPasses(sat, common.station, window), json, false);
+    printPasses(highEnough(predictPasses(sat, common.station, window)), json, false);
     return 0;
 }
 

@@ -33,6 +33,7 @@ using tracking::TrackTarget;
 namespace {
 
 constexpr double kLookAheadDays = 1.0;
+constexpr double kLookBackDays = 1.0 / 24.0; // an hour: any LEO pass under way rose within it
 constexpr double kDopplerReferenceHz = 435e6;
 
 QString hms(double seconds)
@@ -201,8 +202,9 @@ void TrackingPanel::showPasses()
         m_planning = false;
         fillPasses(watcher->result());
     });
+    // A pass under way shows where it rose, not "now".
     watcher->setFuture(QtConcurrent::run([sky = *m_sky, station = *place, window, reach = reach()] {
-        return tracking::forecastPasses(sky, station, window, reach);
+        return tracking::forecastPasses(sky, station, window, reach, kLookBackDays);
     }));
     refreshLive();
 }
@@ -214,7 +216,14 @@ void TrackingPanel::fillPasses(const QList<tracking::PlannedPass> &planned)
         const sky::Pass &p = one.pass;
         const int row = m_passes->rowCount();
         m_passes->insertRow(row);
-        const QStringList cells{sky::utcFromJulian(p.aos.julian).toString(QStringLiteral("MM-dd HH:mm:ss")),
+        // A pass under way: its true AOS, marked, as `slew --passes` marks
+        // it; one that rose before the look-back says so.
+        QString aos = sky::utcFromJulian(p.aos.julian).toString(QStringLiteral("MM-dd HH:mm:ss"));
+        if (p.aosClipped)
+            aos = tr("before %1").arg(aos);
+        if (one.underWay())
+            aos += tr(" (under way)");
+        const QStringList cells{aos,
                                 QStringLiteral("%1°").arg(p.aos.azimuthDeg, 0, 'f', 0),
                                 QStringLiteral("%1°").arg(p.maxElevationDeg(), 0, 'f', 1),
                                 sky::utcFromJulian(p.los.julian).toString(QStringLiteral("MM-dd HH:mm:ss")),

@@ -409,11 +409,12 @@ ProgramMode makePassesMode()
     ProgramMode mode;
     mode.title = QStringLiteral("Pass prediction");
     mode.synopsis = QStringLiteral("slew --passes SAT|all|sun|moon --qth STATION [--tle FILE] [--hours 24] "
-                                   "[--min-el 10] [--start ISO8601] [--json]");
+                                   "[--min-el 10] [--aos-el 0] [--start ISO8601] [--json]");
     mode.description = QStringLiteral(
         "Prints the passes of a satellite over the station: AOS, the highest point (TCA) and LOS with their "
         "times (UTC) and azimuths, the maximum elevation and whether the satellite is in sunlight. SAT is a "
-        "catalogue number (Alpha-5 too) or the start of a name, in any case; \"all\" predicts every satellite, "
+        "catalogue number (Alpha-5 too) or a name it goes by (AO-91, ZARYA, OSCAR 7, part of a name), in any "
+        "case; \"all\" predicts every satellite, "
         "sorted by AOS. For the sun and the moon it prints rise, culmination and set, and needs no --tle.");
     mode.options = {
         {{QStringLiteral("passes")}, QStringLiteral("sat"), QStringLiteral("The satellite, \"all\", \"sun\" or \"moon\".")},
@@ -422,8 +423,12 @@ ProgramMode makePassesMode()
         {{QStringLiteral("hours")}, QStringLiteral("hours"), QStringLiteral("How far ahead to look, 0.1 to 720 (default 24).")},
         {{QStringLiteral("min-el")},
          QStringLiteral("degrees"),
-         QStringLiteral("Passes must climb above this elevation, -5 to 90 (default 10; the almanac's "
-                        "-0.833 for the sun and the moon when not given).")},
+         QStringLiteral("Only passes whose highest point climbs to this elevation, -5 to 90 (default 10; "
+                        "every rising for the sun and the moon). AOS and LOS stay where --aos-el puts them.")},
+        {{QStringLiteral("aos-el")},
+         QStringLiteral("degrees"),
+         QStringLiteral("AOS and LOS where the elevation crosses this, -5 to 90 (default 0, the horizon, as the "
+                        "window's pass table has them; the almanac's -0.833 for the sun and the moon).")},
         // --time too: --where's name for the same idea, so neither has to be
         // remembered for the right command.
         {{QStringLiteral("start"), QStringLiteral("time")},

@@ -6,13 +6,26 @@
 namespace slew::tracking {
 
 QList<PlannedPass> forecastPasses(const TargetSky &target, const sky::Station &station, const sky::PassWindow &window,
-                                  const RotatorReach &reach)
+                                  const RotatorReach &reach, double lookBackDays)
 {
     QList<PlannedPass> planned;
-    for (const sky::Pass &p : target.passes(station, window)) {
+    for (sky::Pass p : target.passes(station, window)) {
         if (window.stop && window.stop->load())
             break; // told to give up: the search is of no use any more
-        PlannedPass one{p, p.aos.julian, target.sample(station, p, p.aos.julian), {}};
+        const double from = p.aos.julian; // the window's start for a pass already up
+        if (p.aosClipped && lookBackDays > 0.0) {
+            // Where it rose: the pass the window before this one reports
+            // whole, still up at the window's start.
+            sky::PassWindow before = window;
+            before.startJulian = window.startJulian - lookBackDays;
+            before.endJulian = window.startJulian;
+            const QList<sky::Pass> earlier = target.passes(station, before);
+            if (!earlier.isEmpty() && earlier.back().los.julian >= window.startJulian) {
+                p.aos = earlier.back().aos;
+                p.aosClipped = earlier.back().aosClipped;
+            }
+        }
+        PlannedPass one{p, from, target.sample(station, p, from), {}};
         one.plan = planPass(one.points, reach);
         planned.append(std::move(one));
     }

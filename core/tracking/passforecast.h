@@ -23,13 +23,17 @@ namespace slew::tracking {
 struct PlannedPass {
     sky::Pass pass;
     double fromJulian = 0;    // where the samples start: the AOS, or later for a pass under way
+    bool underWay() const { return pass.aosClipped || fromJulian > pass.aos.julian; }
     QList<SkyPoint> points;   // seconds from fromJulian
     PassPlan plan;
 };
 
-// Every pass in `window`, sampled from its AOS and planned.
+// Every pass in `window`, planned, sampled from its AOS or, for one already
+// up when the window opens, from the window's start. Such a pass is given
+// the AOS it rose at, looked for up to `lookBackDays` before the window
+// (still clipped, and so marked, when it rose before that).
 QList<PlannedPass> forecastPasses(const TargetSky &target, const sky::Station &station, const sky::PassWindow &window,
-                                  const RotatorReach &reach);
+                                  const RotatorReach &reach, double lookBackDays = 0.0);
 
 // The first pass in `window` still up `marginSeconds` after `nowJulian`,
 // sampled from its AOS or from now if it is under way, and planned from

@@ -106,7 +106,11 @@ void TestSlewSky::passesAsJson()
                           .sets;
     const ElementSet *iss = findSatellites(sets, QStringLiteral("ISS")).first();
     const double start = julianOf(kStart);
-    const QList<Pass> expected = predictPasses(Sgp4(*iss), Station{55.6875, 12.625, 0, {}, {}}, {start, start + 1.0, 10.0});
+    // AOS and LOS at the horizon, and only the passes that climb to 10°.
+    QList<Pass> expected = predictPasses(Sgp4(*iss), Station{55.6875, 12.625, 0, {}, {}}, {start, start + 1.0, 0.0});
+    const qsizetype all = expected.size();
+    expected.removeIf([](const Pass &p) { return p.maxElevationDeg() < 10.0; });
+    QVERIFY(expected.size() < all); // some low pass was left out
     QCOMPARE(passes.size(), expected.size());
     for (int i = 0; i < passes.size(); ++i) {
         const QJsonObject p = passes[i].toObject();

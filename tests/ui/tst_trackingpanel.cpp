@@ -404,6 +404,27 @@ private slots:
         QVERIFY(f.window->grab().save(QStringLiteral("screenshots/telemetry-pointing-error.png")));
     }
 
+    void aPassUnderWayShowsWhereItRose()
+    {
+        // FLOCK 2P-1 rose at 07:42:56 (the pass above); looked at 90 s
+        // later, the table shows that AOS, marked, not "now".
+        WindowFixture f;
+        QVERIFY(f.loadElementSets(kAllSets));
+        TrackingPanel *panel = f.window->trackingPanel();
+        const slew::tracking::StationClock clock(slew::sky::julianFromIso(QStringLiteral("2018-01-22T07:44:26Z")), 1.0);
+        rehearse(panel, clock);
+        QVERIFY(panel->selectTarget(QStringLiteral("FLOCK 2P-1")));
+        QVERIFY(passesPlanned(panel));
+        QTableWidget *table = panel->passTable();
+        QVERIFY(table->rowCount() >= 2);
+        QCOMPARE(table->item(0, 0)->text(), QStringLiteral("01-22 07:42:56 (under way)"));
+        QCOMPARE(table->item(0, 2)->text(), QStringLiteral("7.1°"));
+        QVERIFY(!table->item(1, 0)->text().contains(QStringLiteral("under way")));
+        // The pass on the plot is what is left of it.
+        const auto &overlay = f.window->polarPlot()->passOverlay();
+        QVERIFY(overlay.has_value() && !overlay->sky.isEmpty());
+    }
+
     void satellitesFoundByTheNamesOperatorsUse()
     {
         // One target's search, as the Schedule's and --passes: AMSAT names,
