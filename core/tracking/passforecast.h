@@ -37,10 +37,12 @@ QList<PlannedPass> forecastPasses(const TargetSky &target, const sky::Station &s
 
 // The first pass in `window` still up `marginSeconds` after `nowJulian`,
 // sampled from its AOS or from now if it is under way, and planned from
-// where the antenna is; none if there is no such pass.
+// where the antenna is; none if there is no such pass. One already up when
+// the window opens has its true AOS and highest point, as forecastPasses.
 std::optional<PlannedPass> forecastNextPass(const TargetSky &target, const sky::Station &station,
                                             const sky::PassWindow &window, double nowJulian, double marginSeconds,
-                                            const RotatorReach &reach, const PlannerOptions &options);
+                                            const RotatorReach &reach, const PlannerOptions &options,
+                                            double lookBackDays = 0.0);
 
 // The schedule's pass (schedule/schedule.h): the first pass in `window`
 // still up `marginSeconds` after `nowJulian`, sampled from the latest of its

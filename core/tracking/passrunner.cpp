@@ -17,6 +17,7 @@ using session::RotatorSession;
 
 namespace {
 constexpr double kLookAheadDays = 2.0;
+constexpr double kLookBackDays = 1.0 / 24.0; // where a pass under way rose: any LEO pass within the hour
 constexpr int kRetryMs = 3600 * 1000; // no pass in two days: look again in an hour
 constexpr int kOtherQuietSeconds = 10;  // as RotctldServer::kSteeringQuietMs
 constexpr int kOtherLookAgainMs = 1000;
@@ -203,7 +204,9 @@ void PassRunner::nextPass()
         window.stop = stop.get();
         if (one)
             return forecastPassBetween(sky, station, window, now, 5.0, one->first, one->second, reach, options);
-        return forecastNextPass(sky, station, window, now, 5.0, reach, options);
+        // A pass joined under way is recorded and logged as it really is:
+        // its AOS and its highest point, which may be behind it.
+        return forecastNextPass(sky, station, window, now, 5.0, reach, options, kLookBackDays);
     }));
 }
 

@@ -160,6 +160,25 @@ private slots:
         }
     }
 
+    void aPassJoinedPastItsTopKeepsItsOwnHighest()
+    {
+        // FLOCK 2P-1 joined at 09:23:00, after its 56.4° top at 09:21:28:
+        // the record has the pass's AOS and highest point, not those of the
+        // part tracked (which starts at 09:23 and climbs no higher than
+        // where it is joined).
+        QTemporaryDir dir;
+        Station station;
+        QCOMPARE(station.openPassRecords(dir.filePath(QStringLiteral("passes.sqlite")), 90), QString());
+        QVERIFY(track(station, QStringLiteral("2018-01-22T09:23:00Z")));
+        QVERIFY(station.passRecorder()->currentRecord());
+        const slew::records::PassRecord r = *station.passRecords()->pass(*station.passRecorder()->currentRecord());
+        QVERIFY(r.planned.maxElevationDeg);
+        QVERIFY2(std::abs(*r.planned.maxElevationDeg - 56.4) < 0.1, qPrintable(QString::number(*r.planned.maxElevationDeg)));
+        QCOMPARE(r.planned.aos.toString(Qt::ISODate).left(16), QStringLiteral("2018-01-22T09:15"));
+        QCOMPARE(r.planned.tca.toString(Qt::ISODate).left(16), QStringLiteral("2018-01-22T09:21"));
+        station.untrack(QStringLiteral("test"));
+    }
+
     void aStopMidPassIsRecordedAsInterrupted()
     {
         QTemporaryDir dir;
