@@ -88,42 +88,36 @@ QList<ElementSet> mergeByCatalogueNumber(const QList<ElementSet> &sets)
 
 QList<const ElementSet *> findSatellites(const QList<ElementSet> &sets, const QString &query)
 {
-    QList<const ElementSet *> found;
-    const QString q = query.trimmed();
-    if (const std::optional<int> number = catalogueNumberFromAlpha5(q)) {
+    // The sets one rule takes; the search stops at the first rule that
+    // takes any.
+    const auto every = [&sets](const auto &takes) {
+        QList<const ElementSet *> found;
         for (const ElementSet &s : sets)
-            if (s.catalogueNumber == *number)
+            if (takes(s))
                 found.append(&s);
-        if (!found.isEmpty())
-            return found;
-    }
+        return found;
+    };
+    const auto numbered = [](std::optional<int> number) {
+        return [number](const ElementSet &s) { return number && s.catalogueNumber == *number; };
+    };
+    const QString q = query.trimmed();
+    if (QList<const ElementSet *> found = every(numbered(catalogueNumberFromAlpha5(q))); !found.isEmpty())
+        return found;
     // By the names operators use (satellitenames.h), most telling first:
     // the whole name or a designation in it, an AMSAT name the set lacks,
     // the start of the name, then any part of it.
     const QString key = satelliteNameKey(q);
     if (key.isEmpty())
+        return {};
+    if (QList<const ElementSet *> found = every([&key](const ElementSet &s) { return satelliteNameKeys(s.name).contains(key); });
+        !found.isEmpty())
         return found;
-    for (const ElementSet &s : sets)
-        if (satelliteNameKeys(s.name).contains(key))
-            found.append(&s);
-    if (!found.isEmpty())
+    if (QList<const ElementSet *> found = every(numbered(amsatCatalogueNumber(key))); !found.isEmpty())
         return found;
-    if (const std::optional<int> number = amsatCatalogueNumber(key)) {
-        for (const ElementSet &s : sets)
-            if (s.catalogueNumber == *number)
-                found.append(&s);
-        if (!found.isEmpty())
-            return found;
-    }
-    for (const ElementSet &s : sets)
-        if (satelliteNameKey(s.name).startsWith(key))
-            found.append(&s);
-    if (!found.isEmpty())
+    if (QList<const ElementSet *> found = every([&key](const ElementSet &s) { return satelliteNameKey(s.name).startsWith(key); });
+        !found.isEmpty())
         return found;
-    for (const ElementSet &s : sets)
-        if (satelliteNameKey(s.name).contains(key))
-            found.append(&s);
-    return found;
+    return every([&key](const ElementSet &s) { return satelliteNameKey(s.name).contains(key); });
 }
 
 const ElementSet *findOneSatellite(const QList<ElementSet> &sets, const QString &query, QString *error)
