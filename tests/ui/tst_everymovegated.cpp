@@ -127,14 +127,8 @@ private slots:
         expectNothingSent("plot click", [&] { emit m_window->polarPlot()->targetPicked(355, 10); }, false);
         expectNothingSent("a confirmed plot target",
                           [&] { emit m_window->targetConfirmation()->accepted(355, 10); });
-        expectNothingSent("jog pad", [&] {
-            auto *right = m_window->jogPad()->findChild<QPushButton *>(QStringLiteral("jogRight"));
-            QTest::mousePress(right, Qt::LeftButton);
-            QTest::mouseRelease(right, Qt::LeftButton);
-        });
-        expectNothingSent("park button", [&] {
-            QTest::mouseClick(m_window->findChild<QPushButton *>(QStringLiteral("parkButton")), Qt::LeftButton);
-        });
+        expectNothingSent("jog pad", [&] { jogRightOnce(); });
+        expectNothingSent("park button", [&] { clickPark(); });
         // A preset stored where the rotator once stood, past what the link
         // now allows.
         m_device->azimuth = 355.0;
@@ -275,14 +269,8 @@ private slots:
         });
         expectNothingSent("a confirmed plot target, no position",
                           [&] { emit m_window->targetConfirmation()->accepted(120, 30); });
-        expectNothingSent("jog pad, no position", [&] {
-            auto *right = m_window->jogPad()->findChild<QPushButton *>(QStringLiteral("jogRight"));
-            QTest::mousePress(right, Qt::LeftButton);
-            QTest::mouseRelease(right, Qt::LeftButton);
-        });
-        expectNothingSent("park button, no position", [&] {
-            QTest::mouseClick(m_window->findChild<QPushButton *>(QStringLiteral("parkButton")), Qt::LeftButton);
-        });
+        expectNothingSent("jog pad, no position", [&] { jogRightOnce(); });
+        expectNothingSent("park button, no position", [&] { clickPark(); });
         expectNothingSent("traffic console, no position", [&] {
             auto *console = m_window->trafficConsole();
             console->findChild<QLineEdit *>(QStringLiteral("rawCommand"))->setText(QStringLiteral("AZ120.0 EL30.0"));
@@ -371,6 +359,15 @@ private slots:
     }
 
 private:
+    // The window's own controls, as the operator uses them.
+    void jogRightOnce()
+    {
+        auto *right = m_window->jogPad()->findChild<QPushButton *>(QStringLiteral("jogRight"));
+        QTest::mousePress(right, Qt::LeftButton);
+        QTest::mouseRelease(right, Qt::LeftButton);
+    }
+    void clickPark() { QTest::mouseClick(m_window->findChild<QPushButton *>(QStringLiteral("parkButton")), Qt::LeftButton); }
+
     // Runs one path, then checks that no move reached the link. A refusal
     // by the session itself is expected too unless the widget refused first
     // (sessionRefuses false: the widget showed the gate's preview instead).
