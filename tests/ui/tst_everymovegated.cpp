@@ -157,23 +157,7 @@ private slots:
         });
     }
 
-    void theRotctldServer()
-    {
-        slew::bridge::RotctldServer server(m_session);
-        QString error;
-        QVERIFY2(server.listen(QHostAddress::LocalHost, 0, &error), qPrintable(error));
-        QTcpSocket tracker;
-        tracker.connectToHost(QHostAddress::LocalHost, server.port());
-        QTRY_COMPARE(tracker.state(), QAbstractSocket::ConnectedState);
-        for (const char *request : {"P 355 10\n", "P 100 85\n", "M 16 50\n"}) {
-            expectNothingSent(QByteArray("rotctld ") + request, [&] {
-                tracker.write(request);
-                QTRY_VERIFY(tracker.canReadLine());
-                const QByteArray answer = tracker.readLine();
-                QVERIFY2(answer.startsWith("RPRT -"), (QByteArray(request) + " -> " + answer).constData());
-            });
-        }
-    }
+    void theRotctldServer() { rotctldRefuses("rotctld ", {"P 355 10\n", "P 100 85\n", "M 16 50\n"}); }
 
     void theTunerAndSlewctl()
     {
@@ -278,20 +262,10 @@ private slots:
         });
 
         // rotctld (Gpredict, the SatNOGS client): an error, not RPRT 0.
-        slew::bridge::RotctldServer server(m_session);
-        QString error;
-        QVERIFY2(server.listen(QHostAddress::LocalHost, 0, &error), qPrintable(error));
-        QTcpSocket tracker;
-        tracker.connectToHost(QHostAddress::LocalHost, server.port());
-        QTRY_COMPARE(tracker.state(), QAbstractSocket::ConnectedState);
-        expectNothingSent("rotctld P, no position", [&] {
-            tracker.write("P 120 30\n");
-            QTRY_VERIFY(tracker.canReadLine());
-            const QByteArray answer = tracker.readLine();
-            QVERIFY2(answer.startsWith("RPRT -"), answer.constData());
-        });
+        rotctldRefuses("rotctld, no position: ", {"P 120 30\n"});
 
         // slewctl.
+        QString error;
         slew::console::ConsoleRunner runner(m_session, false);
         QSignalSpy finished(&runner, &slew::console::ConsoleRunner::finished);
         expectNothingSent("slewctl goto, no position", [&] {
@@ -365,6 +339,25 @@ private:
         auto *right = m_window->jogPad()->findChild<QPushButton *>(QStringLiteral("jogRight"));
         QTest::mousePress(right, Qt::LeftButton);
         QTest::mouseRelease(right, Qt::LeftButton);
+    }
+    // A tracker on the session's own rotctld server: each request answered
+    // with an error (RPRT -n), and nothing sent to the rotator.
+    void rotctldRefuses(const QByteArray &path, const QList<QByteArray> &requests)
+    {
+        slew::bridge::RotctldServer server(m_session);
+        QString error;
+        QVERIFY2(server.listen(QHostAddress::LocalHost, 0, &error), qPrintable(error));
+        QTcpSocket tracker;
+        tracker.connectToHost(QHostAddress::LocalHost, server.port());
+        QTRY_COMPARE(tracker.state(), QAbstractSocket::ConnectedState);
+        for (const QByteArray &request : requests) {
+            expectNothingSent(path + request, [&] {
+                tracker.write(request);
+                QTRY_VERIFY(tracker.canReadLine());
+                const QByteArray answer = tracker.readLine();
+                QVERIFY2(answer.startsWith("RPRT -"), (request + " -> " + answer).constData());
+            });
+        }
     }
     void clickPark() { QTest::mouseClick(m_window->findChild<QPushButton *>(QStringLiteral("parkButton")), Qt::LeftButton); }
 
