@@ -4,6 +4,8 @@
 #include <QAbstractButton>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QCoreApplication>
+#include <QEvent>
 #include <QLabel>
 #include <QLayout>
 #include <QLineEdit>
@@ -150,6 +152,15 @@ void walk(QWidget *w, QStringList *faults)
 
 QStringList layoutFaults(QWidget *top)
 {
+    // The layout as it settles. A label's new text re-lays its parent, whose
+    // new size hint re-lays the next one up: one level per posted
+    // LayoutRequest, and a round of sendPostedEvents sends only the events
+    // posted before it began. Checked mid-chain, a grid could be seen
+    // squeezed inside a parent not yet grown for it (once, on a loaded
+    // machine, a readout's four rows at 21 px each). A widget tree is far
+    // less than 32 levels deep.
+    for (int level = 0; level < 32; ++level)
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
     QStringList faults;
     walk(top, &faults);
     return faults;

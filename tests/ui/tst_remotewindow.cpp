@@ -314,7 +314,6 @@ private:
         window->resize(1280, 720);
         QTRY_COMPARE(window->size(), QSize(1280, 720));
         auto faultsNow = [&] {
-            QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest); // the layout, settled
             QStringList faults = layoutFaults(window);
             if (!faults.isEmpty())
                 faults << QStringLiteral("the window's least size: %1x%2")
