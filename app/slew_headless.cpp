@@ -245,6 +245,7 @@ int runHeadless(int argc, char *argv[])
     slew::cli::describeTo(parser, slew::cli::slewHeadlessMode());
     parser.process(configured->arguments);
     checkSettingsFile(); // saved calibrations are read from them
+    checkSatelliteNames();
     const QString connect = QStringLiteral("connect"), dialect = QStringLiteral("dialect"),
                   profile = QStringLiteral("profile"), listen = QStringLiteral("rotctld-listen"),
                   allow = QStringLiteral("rotctld-allow"), maxClients = QStringLiteral("rotctld-max-clients");

@@ -5,6 +5,7 @@
 
 #include "linkschemes.h"
 #include "model/settingsfile.h"
+#include "sky/satellitenames.h"
 
 #include <QCoreApplication>
 
@@ -27,4 +28,16 @@ inline QString checkSettingsFile()
     if (!message.isEmpty())
         std::fprintf(stderr, "slew: %s\n", qPrintable(message));
     return message;
+}
+
+// Every face that finds satellites by name runs this at start: what was
+// wrong in the operator's own satellite names (sky/satellitenames.h) is
+// said on stderr, and returned for the window to show as well; the good
+// lines are used.
+inline QStringList checkSatelliteNames()
+{
+    const QStringList &problems = slew::sky::satelliteNameProblems();
+    for (const QString &problem : problems)
+        std::fprintf(stderr, "slew: %s\n", qPrintable(problem));
+    return problems;
 }

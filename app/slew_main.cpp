@@ -202,6 +202,8 @@ int main(int argc, char *argv[])
     window.show();
     if (!settingsProblem.isEmpty())
         window.reportProblem(settingsProblem);
+    for (const QString &problem : checkSatelliteNames())
+        window.reportProblem(problem);
     if (!recordsProblem.isEmpty())
         window.reportProblem(QStringLiteral("pass records: %1").arg(recordsProblem));
 

@@ -48,6 +48,7 @@ int runSchedule(int argc, char **argv)
     QCoreApplication app(argc, argv);
     setUpSlewApplication();
     checkSettingsFile(); // the saved station is read from them
+    checkSatelliteNames();
     QCommandLineParser parser;
     slew::cli::describeTo(parser, slew::cli::slewScheduleMode());
     parser.process(app.arguments());

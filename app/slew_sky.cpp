@@ -444,5 +444,6 @@ int runSky(int argc, char **argv)
     QCoreApplication app(argc, argv);
     setUpSlewApplication();
     checkSettingsFile(); // the saved station is read from them
+    checkSatelliteNames();
     return hasOption(argc, argv, "--passes") ? runPasses(app) : runWhere(app);
 }

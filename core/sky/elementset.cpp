@@ -104,7 +104,7 @@ QList<const ElementSet *> findSatellites(const QList<ElementSet> &sets, const QS
     if (QList<const ElementSet *> found = every(numbered(catalogueNumberFromAlpha5(q))); !found.isEmpty())
         return found;
     // By the names operators use (satellitenames.h), most telling first:
-    // the whole name or a designation in it, an AMSAT name the set lacks,
+    // the whole name or a designation in it, a name from the table the set lacks,
     // the start of the name, then any part of it.
     const QString key = satelliteNameKey(q);
     if (key.isEmpty())
@@ -112,7 +112,7 @@ QList<const ElementSet *> findSatellites(const QList<ElementSet> &sets, const QS
     if (QList<const ElementSet *> found = every([&key](const ElementSet &s) { return satelliteNameKeys(s.name).contains(key); });
         !found.isEmpty())
         return found;
-    if (QList<const ElementSet *> found = every(numbered(amsatCatalogueNumber(key))); !found.isEmpty())
+    if (QList<const ElementSet *> found = every(numbered(satelliteNames().catalogueNumber(key))); !found.isEmpty())
         return found;
     if (QList<const ElementSet *> found = every([&key](const ElementSet &s) { return satelliteNameKey(s.name).startsWith(key); });
         !found.isEmpty())

@@ -82,8 +82,9 @@ QList<ElementSet> mergeByCatalogueNumber(const QList<ElementSet> &sets);
 // The sets a query names: a catalogue number matches exactly (also written
 // in Alpha-5, "A0001"); otherwise, compared as satelliteNameKey (case,
 // spaces and hyphens aside), the first of these that finds any: the whole
-// name or a designation in parentheses ("ZARYA", "AO-91"), an AMSAT name
-// the set lacks ("OSCAR 7", "JAS-2"), the start of the name, any part of it.
+// name or a designation in parentheses ("ZARYA", "AO-91"), a name from the
+// table of satellite names the set lacks ("OSCAR 7", "JAS-2", or the
+// operator's own: satellitenames.h), the start of the name, any part of it.
 QList<const ElementSet *> findSatellites(const QList<ElementSet> &sets, const QString &query);
 
 // Exactly one set for a query, or nothing and *error: "no satellite 'X'" or

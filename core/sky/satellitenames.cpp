@@ -1,34 +1,52 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "satellitenames.h"
 
-#include <array>
+#include <QFile>
+#include <QStandardPaths>
 
 namespace slew::sky {
 
 namespace {
 
-struct KnownName {
-    int catalogueNumber;
-    const char *name;
+// An alias file is a few hundred lines; anything this large is not one.
+constexpr qint64 kMostUserFileBytes = 1024 * 1024;
+// Catalogue numbers are nine digits at most (the GP formats' field).
+constexpr int kMostNumberDigits = 9;
+
+struct LoadedNames {
+    SatelliteNameTable table;
+    QStringList problems;
 };
 
-// AMSAT's OSCAR designations and the satellites' own or former names, as
-// AMSAT's satellite status page and its "OSCAR numbers" list give them.
-// Only names an element set may lack: where CelesTrak writes the
-// designation in parentheses ("FOX-1B (AO-91)"), the set is found by it
-// anyway. Checked against the catalogue numbers of CelesTrak's amateur
-// group.
-constexpr std::array<KnownName, 33> kAmsatNames{{
-    {7530, "AO-7"},           {7530, "OSCAR 7"},        {14781, "UO-11"},       {14781, "UOSAT 2"},
-    {20480, "FO-20"},         {20480, "JAS-1B"},        {22825, "AO-27"},       {24278, "FO-29"},
-    {24278, "JAS-2"},         {25544, "ISS"},           {25544, "ARISS"},       {27607, "SO-50"},
-    {27607, "SAUDISAT-1C"},   {39444, "AO-73"},         {39444, "FUNCUBE-1"},   {40654, "NO-84"},
-    {40654, "PSAT"},          {40931, "IO-86"},         {40931, "LAPAN-A2"},    {42017, "EO-88"},
-    {42017, "NAYIF-1"},       {43017, "AO-91"},         {43017, "FOX-1B"},      {43137, "AO-92"},
-    {43137, "FOX-1D"},        {43678, "PO-101"},        {43678, "DIWATA-2"},    {43700, "QO-100"},
-    {43700, "ES'HAIL-2"},     {43803, "JO-97"},         {43937, "FO-99"},       {44909, "RS-44"},
-    {44909, "DOSAAF-85"},
-}};
+LoadedNames loadNames()
+{
+    LoadedNames loaded;
+    QStringList builtInProblems;
+    loaded.table.read(builtInSatelliteNames(), QStringLiteral("satellite-names.txt"), &builtInProblems);
+    Q_ASSERT(builtInProblems.isEmpty()); // tst_tle reads it too
+
+    const QString path = userSatelliteNamesPath();
+    QFile file(path);
+    if (!file.exists())
+        return loaded;
+    if (file.size() > kMostUserFileBytes) {
+        loaded.problems << QStringLiteral("%1: larger than 1 MiB, not a list of satellite names: not read").arg(path);
+        return loaded;
+    }
+    if (!file.open(QIODevice::ReadOnly)) {
+        loaded.problems << QStringLiteral("%1: cannot be read (%2)").arg(path, file.errorString());
+        return loaded;
+    }
+    const QByteArray bytes = file.read(kMostUserFileBytes);
+    loaded.table.read(QString::fromUtf8(bytes), path, &loaded.problems);
+    return loaded;
+}
+
+const LoadedNames &loadedNames()
+{
+    static const LoadedNames loaded = loadNames();
+    return loaded;
+}
 
 } // namespace
 
@@ -58,14 +76,60 @@ QStringList satelliteNameKeys(const QString &name)
     return keys;
 }
 
-std::optional<int> amsatCatalogueNumber(const QString &key)
+void SatelliteNameTable::read(QStringView text, const QString &origin, QStringList *problems)
 {
-    if (key.isEmpty())
+    int lineNumber = 0;
+    for (QStringView line : text.split(QLatin1Char('\n'))) {
+        ++lineNumber;
+        const auto say = [&](const QString &why) { *problems << QStringLiteral("%1:%2: %3").arg(origin).arg(lineNumber).arg(why); };
+        if (const qsizetype hash = line.indexOf(QLatin1Char('#')); hash >= 0)
+            line = line.left(hash);
+        line = line.trimmed();
+        if (line.isEmpty())
+            continue;
+        qsizetype gap = 0;
+        while (gap < line.size() && !line.at(gap).isSpace())
+            ++gap;
+        const QStringView number = line.left(gap);
+        bool digits = number.size() <= kMostNumberDigits;
+        for (const QChar c : number)
+            digits = digits && c >= u'0' && c <= u'9';
+        const int catalogueNumber = digits ? number.toInt() : 0;
+        if (catalogueNumber <= 0) {
+            say(QStringLiteral("'%1' is not a catalogue number; a line is a number and a name").arg(number.left(20)));
+            continue;
+        }
+        const QString key = satelliteNameKey(line.sliced(gap));
+        if (key.isEmpty()) {
+            say(QStringLiteral("no name after the catalogue number %1").arg(catalogueNumber));
+            continue;
+        }
+        m_numbers.insert(key, catalogueNumber);
+    }
+}
+
+std::optional<int> SatelliteNameTable::catalogueNumber(const QString &key) const
+{
+    const auto found = m_numbers.constFind(key);
+    if (found == m_numbers.cend())
         return std::nullopt;
-    for (const KnownName &n : kAmsatNames)
-        if (satelliteNameKey(QString::fromLatin1(n.name)) == key)
-            return n.catalogueNumber;
-    return std::nullopt;
+    return *found;
+}
+
+const SatelliteNameTable &satelliteNames()
+{
+    return loadedNames().table;
+}
+
+const QStringList &satelliteNameProblems()
+{
+    return loadedNames().problems;
+}
+
+QString userSatelliteNamesPath()
+{
+    return QStandardPaths::writableLocation(QStandardPaths::GenericConfigLocation)
+           + QStringLiteral("/Slew/satellite-names.txt");
 }
 
 } // namespace slew::sky

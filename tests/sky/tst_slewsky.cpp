@@ -74,6 +74,7 @@ private slots:
     void refusals();
     void helpDescribesTheMode();
     void savedStationWhenNoQth();
+    void theOperatorsOwnSatelliteNames();
     void qthGivenToTheWindowIsKept();
     void qthInTheStationServiceConfig();
     void concatenatedFilesCountEachSatelliteOnce();
@@ -388,6 +389,35 @@ void TestSlewSky::savedStationWhenNoQth()
     const Run bad = runSlew(where, home.path());
     QCOMPARE(bad.exitCode, 2);
     QVERIFY2(bad.err.contains("give --qth"), bad.err.constData());
+}
+
+void TestSlewSky::theOperatorsOwnSatelliteNames()
+{
+    // ~/.config/Slew/satellite-names.txt adds names and takes back a
+    // built-in one; a bad line is said with its place and skipped.
+    QTemporaryDir home;
+    QVERIFY(QDir(home.path()).mkpath(QStringLiteral("Slew")));
+    QFile names(home.filePath(QStringLiteral("Slew/satellite-names.txt")));
+    QVERIFY(names.open(QIODevice::WriteOnly));
+    names.write("# mine\n25544  Space Station  # as the club calls it\nISS 25544\n25338 ARISS\n");
+    names.close();
+    const QStringList at{QStringLiteral("--qth"), QStringLiteral("JO65hq"), QStringLiteral("--tle"), kTle,
+                         QStringLiteral("--time"), QStringLiteral("2018-01-21T12:34:56Z"), QStringLiteral("--json")};
+    const auto numberWhere = [&](const QString &name, Run *run) {
+        *run = runSlew(QStringList{QStringLiteral("--where"), name} + at, home.path());
+        return QJsonDocument::fromJson(run->out).object().value(QStringLiteral("catalogue_number")).toInt();
+    };
+    Run r;
+    QCOMPARE(numberWhere(QStringLiteral("space station"), &r), 25544);
+    QVERIFY2(r.err.contains(qPrintable(names.fileName() + QStringLiteral(":3: 'ISS' is not a catalogue number"))),
+             r.err.constData());
+    QCOMPARE(numberWhere(QStringLiteral("ARISS"), &r), 25338); // the operator's, not the built-in 25544
+    // Without the file, the built-in names as before.
+    QCOMPARE(QJsonDocument::fromJson(runSlew(QStringList{QStringLiteral("--where"), QStringLiteral("ARISS")} + at).out)
+                 .object()
+                 .value(QStringLiteral("catalogue_number"))
+                 .toInt(),
+             25544);
 }
 
 void TestSlewSky::qthGivenToTheWindowIsKept()

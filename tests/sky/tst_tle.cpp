@@ -5,6 +5,7 @@
 
 #include "sky/tleformat.h"
 #include "sky/elementsetformat.h"
+#include "sky/satellitenames.h"
 
 #include <QTest>
 
@@ -47,6 +48,7 @@ private slots:
     void satellitesAreFoundByTheNamesOperatorsUse_data();
     void satellitesAreFoundByTheNamesOperatorsUse();
     void amsatNamesFindSetsThatLackThem();
+    void theNameTableSaysWhereALineIsWrong();
     void checksum_data();
     void checksum();
     void refusals_data();
@@ -193,6 +195,45 @@ void TestTle::amsatNamesFindSetsThatLackThem()
     QVERIFY(!findOneSatellite(sets, QStringLiteral("SO-50"), &error)); // in the table, not in these sets
     QCOMPARE(error, QStringLiteral("no satellite 'SO-50'"));
     QVERIFY(!findOneSatellite(sets, QStringLiteral(" - "), &error)); // nothing to search by
+}
+
+void TestTle::theNameTableSaysWhereALineIsWrong()
+{
+    // The built-in table reads whole.
+    SatelliteNameTable table;
+    QStringList problems;
+    table.read(builtInSatelliteNames(), QStringLiteral("satellite-names.txt"), &problems);
+    QVERIFY2(problems.isEmpty(), qPrintable(problems.join(u'\n')));
+    QCOMPARE(table.size(), 33);
+    QCOMPARE(table.catalogueNumber(satelliteNameKey(u"JAS-2")), 24278);
+    QCOMPARE(table.catalogueNumber(satelliteNameKey(u"es'hail 2")), 43700);
+
+    // An operator's file after it: its good lines kept, a name it gives
+    // another satellite its own, each bad line said with its place.
+    table.read(u"# mine\n"
+               u"99999 MY CUBESAT   # the club's\n"
+               u"ISS 25544\n"
+               u"12x4 AO-1\n"
+               u"42\n"
+               u"1234567890 TOO LONG\n"
+               u"0 ZERO\n"
+               u"\t 25338   jas-2 \r\n",
+               QStringLiteral("/home/op/.config/Slew/satellite-names.txt"), &problems);
+    QCOMPARE(problems,
+             QStringList({QStringLiteral("/home/op/.config/Slew/satellite-names.txt:3: 'ISS' is not a catalogue number; "
+                                         "a line is a number and a name"),
+                          QStringLiteral("/home/op/.config/Slew/satellite-names.txt:4: '12x4' is not a catalogue number; "
+                                         "a line is a number and a name"),
+                          QStringLiteral("/home/op/.config/Slew/satellite-names.txt:5: no name after the catalogue number 42"),
+                          QStringLiteral("/home/op/.config/Slew/satellite-names.txt:6: '1234567890' is not a catalogue "
+                                         "number; a line is a number and a name"),
+                          QStringLiteral("/home/op/.config/Slew/satellite-names.txt:7: '0' is not a catalogue number; "
+                                         "a line is a number and a name")}));
+    QCOMPARE(table.catalogueNumber(QStringLiteral("MYCUBESAT")), 99999);
+    QCOMPARE(table.catalogueNumber(QStringLiteral("JAS2")), 25338);
+    QCOMPARE(table.catalogueNumber(QStringLiteral("FO29")), 24278); // the rest stays
+    QCOMPARE(table.size(), 34);
+    QCOMPARE(table.catalogueNumber(QStringLiteral("ISS25544")), std::nullopt);
 }
 
 void TestTle::filesThatAreNotFilesAreRefused()
