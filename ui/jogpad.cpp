@@ -130,8 +130,6 @@ void JogPad::release(Direction d)
         return;
     m_held[d] = false;
     m_buttons[d]->setDown(false);
-    if (m_sent[d])
-        emit jogEnded(tr("jog %1").arg(directionName(d)));
     m_sent[d] = false;
     // The opposite direction on the same axis may still be held: resume it.
     const Direction opposite = Direction(d ^ 1);
@@ -139,7 +137,8 @@ void JogPad::release(Direction d)
         m_session->moveAxis(axisOf(opposite), signOf(opposite) * speed());
         return;
     }
-    m_session->stop(axisOf(d) == Axis::Azimuth ? Axes::Azimuth : Axes::Elevation);
+    m_session->stop(tr("jog %1 released").arg(directionName(d)),
+                    axisOf(d) == Axis::Azimuth ? Axes::Azimuth : Axes::Elevation);
 }
 
 void JogPad::releaseAll()

@@ -31,9 +31,9 @@ public slots:
     void releaseAll(); // the window lost focus: nothing may keep moving
 
 signals:
-    // For the Events log: a jog the session sent, and its release.
+    // For the Events log: a jog the session sent (its release is a stop,
+    // logged as every stop is, "jog left released").
     void jogStarted(const QString &what);
-    void jogEnded(const QString &what);
 
 private:
     void followAxes(); // an azimuth-only rotator has no up and down

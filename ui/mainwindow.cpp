@@ -77,7 +77,7 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     m_readout = new PositionReadout(session);
     m_goto = new GotoPanel(session);
     m_jog = new JogPad(session);
-    m_stop = new StopButton([station] { return bool(station->stop()); });
+    m_stop = new StopButton([station](const QString &cause) { return bool(station->stop(cause)); });
     m_parkHome = new ParkHomePanel(session);
     m_presets = new PresetPanel(session);
     m_charts = new TelemetryCharts(&m_recorder->history());
@@ -499,15 +499,12 @@ void MainWindow::wireOperatorActions()
     connect(m_parkHome, &ParkHomePanel::homingStarted, m_actions, [this] { m_actions->action(tr("home")); });
     connect(m_parkHome, &ParkHomePanel::homingFinished, m_actions,
             [this](bool ok, const QString &message) { m_actions->outcome(tr("home: %1").arg(message), !ok); });
-    connect(m_stop, &StopButton::stopped, m_actions, [this] {
-        const QString cause = m_stop->lastCause();
-        m_actions->action(cause.isEmpty() ? tr("Stop") : tr("Stop (%1)").arg(cause));
+    // Every stop that went out, whoever asked: the STOP button or a key, a
+    // released jog, a rotctld client, MQTT, a lease run out, a limit reached.
+    connect(m_session, &session::RotatorSession::stopSent, m_actions, [this](const QString &cause) {
+        m_actions->action(tr("Stop (%1) at %2").arg(cause, describePosition(QPointF(m_session->azimuth(), m_session->elevation()))));
     });
-    connect(m_jog, &JogPad::jogStarted, m_actions, &OperatorActions::action);
-    connect(m_jog, &JogPad::jogEnded, m_actions, [this](const QString &what) {
-        m_actions->action(tr("%1: released at %2")
-                              .arg(what, describePosition(QPointF(m_session->azimuth(), m_session->elevation()))));
-    });
+    connect(m_jog, &JogPad::jogStarted, m_actions, &OperatorActions::action); // its release is a stop
 }
 
 void MainWindow::showProfile()

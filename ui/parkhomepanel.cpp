@@ -178,7 +178,7 @@ void ParkHomePanel::cancelHoming()
 {
     if (!m_homing)
         return;
-    m_session->stop(session::Axes::Both);
+    m_session->stop(tr("homing was cancelled"));
     finish(false, tr("Homing cancelled; the rotator was stopped."));
 }
 

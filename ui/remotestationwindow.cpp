@@ -41,7 +41,8 @@ RemoteStationWindow::RemoteStationWindow(RemoteStation *station, QWidget *parent
     m_readout = new RemoteReadout;
     m_controls = new RemoteControls(station);
     // Stop always sends, live or not: a broker that is back takes it at once.
-    m_stop = new StopButton([station] { return !station->stop().isEmpty(); });
+    // The station logs "a stop over MQTT": the cause stays here.
+    m_stop = new StopButton([station](const QString &) { return !station->stop().isEmpty(); });
     m_recorder = new TelemetryRecorder(nullptr, this);
     m_charts = new TelemetryCharts(&m_recorder->history());
     m_log = new EventLog;
@@ -128,7 +129,8 @@ RemoteStationWindow::RemoteStationWindow(RemoteStation *station, QWidget *parent
     for (const Qt::Key key : {Qt::Key_Escape, Qt::Key_Pause}) {
         auto *stop = new QShortcut(QKeySequence(key), this);
         stop->setContext(Qt::WindowShortcut);
-        connect(stop, &QShortcut::activated, m_stop, &StopButton::stopAll);
+        connect(stop, &QShortcut::activated, m_stop,
+                [this, key] { m_stop->stopFor(key == Qt::Key_Escape ? tr("the Esc key") : tr("the Pause key")); });
     }
     showLive(false);
     const QScreen *screen = QGuiApplication::primaryScreen();

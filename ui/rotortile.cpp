@@ -79,7 +79,7 @@ RotorTile::RotorTile(RotatorSession *session, int number, bool isMain, QWidget *
         if (m_bearing->hasFocus())
             go();
     });
-    connect(m_stop, &QToolButton::clicked, this, [this] { m_session->stop(); });
+    connect(m_stop, &QToolButton::clicked, this, [this] { m_session->stop(tr("rotor %1's stop button").arg(m_number)); });
     connect(session, &RotatorSession::positionChanged, this, &RotorTile::showPosition);
     connect(session, &RotatorSession::targetChanged, this, [this](double az, double) {
         m_dial->setTarget(az);

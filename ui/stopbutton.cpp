@@ -3,11 +3,11 @@
 namespace slew::ui {
 
 StopButton::StopButton(session::RotatorSession *session, QWidget *parent)
-    : StopButton([session] { return bool(session->stop(session::Axes::Both)); }, parent)
+    : StopButton([session](const QString &cause) { return bool(session->stop(cause)); }, parent)
 {
 }
 
-StopButton::StopButton(std::function<bool()> stop, QWidget *parent) : QPushButton(tr("STOP"), parent), m_stop(std::move(stop))
+StopButton::StopButton(std::function<bool(const QString &)> stop, QWidget *parent) : QPushButton(tr("STOP"), parent), m_stop(std::move(stop))
 {
     setObjectName(QStringLiteral("stopButton"));
     setToolTip(tr("Stop both axes now (Esc or Pause anywhere; Space outside a text field)"));
@@ -25,16 +25,10 @@ StopButton::StopButton(std::function<bool()> stop, QWidget *parent) : QPushButto
     connect(this, &QPushButton::clicked, this, [this] { stopFor(tr("the STOP button")); });
 }
 
-bool StopButton::stopAll()
-{
-    return stopFor(QString());
-}
-
 bool StopButton::stopFor(const QString &cause)
 {
-    m_lastCause = cause;
     emit stopped(); // first: a running jog or homing must not restart the motion
-    return m_stop();
+    return m_stop(cause);
 }
 
 } // namespace slew::ui

@@ -19,23 +19,20 @@ class StopButton : public QPushButton {
     Q_OBJECT
 public:
     explicit StopButton(session::RotatorSession *session, QWidget *parent = nullptr);
-    // Stops with `stop`, which says whether a stop went out.
-    explicit StopButton(std::function<bool()> stop, QWidget *parent = nullptr);
-
-    // What asked for the last stop, for the event log: "the STOP button",
-    // "the Esc key".
-    QString lastCause() const { return m_lastCause; }
+    // Stops with `stop`, given what asked ("the STOP button", "the Esc
+    // key") for the logs; it says whether a stop went out.
+    explicit StopButton(std::function<bool(const QString &cause)> stop, QWidget *parent = nullptr);
 
 public slots:
-    bool stopAll();
     bool stopFor(const QString &cause);
 
 signals:
-    void stopped(); // after SA SE went out, so other panels can end what they were doing
+    // Before the stop goes out: a running jog or homing ends first, so it
+    // cannot send a move after the stop.
+    void stopped();
 
 private:
-    std::function<bool()> m_stop;
-    QString m_lastCause;
+    std::function<bool(const QString &)> m_stop;
 };
 
 } // namespace slew::ui

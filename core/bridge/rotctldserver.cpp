@@ -282,7 +282,7 @@ QByteArray RotctldServer::answerRequest(Client &c, const RotctldRequest &r, cons
             return formatStatus(r, refused);
         return formatStatus(r, steered(c, setPosition(r)));
     case Kind::Stop:
-        return formatStatus(r, m_session->stop() ? 0 : int(HamlibError::Io));
+        return formatStatus(r, m_session->stop(tr("rotctld client %1: S").arg(c.peer)) ? 0 : int(HamlibError::Io));
     case Kind::Park:
         if (m_remoteHeld)
             return formatStatus(r, int(HamlibError::Rejected));

@@ -91,7 +91,7 @@ void ConsoleRunner::start()
         startGoto();
         return;
     case Kind::Stop:
-        m_session->stop();
+        m_session->stop(tr("slewctl stop"));
         emit output(m_json ? json({{QStringLiteral("event"), QStringLiteral("stopped")}}) : tr("stopped"));
         finishWhenSent();
         return;
@@ -312,7 +312,7 @@ void ConsoleRunner::interrupt()
     if (moving) {
         m_deadline.stop();
         m_interrupted = true;
-        session::stopThenCall(*m_session, this,
+        session::stopThenCall(*m_session, tr("slewctl was interrupted"), this,
                               [this] { finish(ExitCode::Failed, tr("interrupted; the rotator was stopped")); });
         return;
     }

@@ -55,11 +55,11 @@ RotatorSession *ControllerRotors::rotor(int n) const
     return m_others[size_t(n - 1)].get();
 }
 
-int ControllerRotors::stopOthers()
+int ControllerRotors::stopOthers(const QString &cause)
 {
     int sent = 0;
     for (const auto &other : m_others) {
-        if (other && other->isConnected() && other->stop())
+        if (other && other->isConnected() && other->stop(cause))
             ++sent;
     }
     return sent;

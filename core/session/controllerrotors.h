@@ -42,7 +42,7 @@ public:
 public slots:
     // Stops every other rotor on the line (the window's Stop stops its own
     // session itself); returns how many stops went out.
-    int stopOthers();
+    int stopOthers(const QString &cause);
 
 signals:
     // The list of rotors changed (a multi-rotor controller came or went).

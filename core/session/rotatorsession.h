@@ -253,7 +253,9 @@ public slots:
     // an elevation past 90° (the flip), as a planned path names them
     // (tracking/passplanner.h). Gated as positions.
     CommandResult gotoUnwrapped(double azimuth, double elevation);
-    CommandResult stop(slew::session::Axes axes = slew::session::Axes::Both);
+    // `cause` says who or what asked, for the logs: "the Esc key", "a rotctld
+    // client (127.0.0.1:40522)", "the MQTT jog's lease ran out".
+    CommandResult stop(const QString &cause, slew::session::Axes axes = slew::session::Axes::Both);
     CommandResult park();
     CommandResult home();
     CommandResult readConfig(int reg);
@@ -282,8 +284,9 @@ signals:
     void stopHoldSent();
     void heldLinesWritten();
     // A stop went to the wire, whoever asked (the window, a rotctld client,
-    // shutdown): whatever was driving the rotator ends here.
-    void stopSent();
+    // shutdown): whatever was driving the rotator ends here. `cause` is the
+    // one stop() was given.
+    void stopSent(const QString &cause);
     void bytesSent(const QByteArray &bytes);
     void bytesReceived(const QByteArray &bytes);
     void alarmReceived(const QString &text);

@@ -253,7 +253,7 @@ CommandResult RotatorSession::moveAxis(Axis axis, double degreesPerSecond)
     if (!std::isfinite(degreesPerSecond))
         return refuse(tr("speed is not a number"));
     if (degreesPerSecond == 0.0)
-        return stop(axis == Axis::Azimuth ? Axes::Azimuth : Axes::Elevation);
+        return stop(tr("a jog at 0°/s"), axis == Axis::Azimuth ? Axes::Azimuth : Axes::Elevation);
     const bool az = axis == Axis::Azimuth;
     const bool positive = degreesPerSecond > 0;
     const std::optional<double> at = hasPosition() ? std::optional<double>(az ? m_az : m_el) : std::nullopt;
@@ -354,7 +354,7 @@ void RotatorSession::continueJogLegs()
     }
 }
 
-CommandResult RotatorSession::stop(Axes axes)
+CommandResult RotatorSession::stop(const QString &cause, Axes axes)
 {
     // Stop goes straight to the wire, ahead of any waiting query, in every
     // state where there is a link to send it on. It is never gated.
@@ -373,7 +373,7 @@ CommandResult RotatorSession::stop(Axes axes)
     write(line);
     m_refusals.noteCommand(line, nowMs());
     wakePolling(); // to see it come to rest
-    emit stopSent();
+    emit stopSent(cause);
     emit targetCleared();
     // A SPID stop halts every axis: one still held on the jog pad runs on.
     if (protocol::isSpid(m_profile.dialect)) {

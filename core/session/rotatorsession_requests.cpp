@@ -317,12 +317,14 @@ void RotatorSession::checkSoftLimits()
     // tighter than the controller's own, so stop the axis at them.
     const model::RotatorLimits lim = m_gate.limits();
     if ((m_jogSpeed[0] > 0 && m_az >= lim.azMax) || (m_jogSpeed[0] < 0 && m_az <= lim.azMin)) {
-        stop(Axes::Azimuth);
-        emit errorOccurred(tr("azimuth reached the profile limit at %1°; stopped").arg(m_az, 0, 'f', 1));
+        const QString why = tr("azimuth reached the profile limit at %1°").arg(m_az, 0, 'f', 1);
+        stop(why, Axes::Azimuth);
+        emit errorOccurred(tr("%1; stopped").arg(why));
     }
     if ((m_jogSpeed[1] > 0 && m_el >= lim.elMax) || (m_jogSpeed[1] < 0 && m_el <= lim.elMin)) {
-        stop(Axes::Elevation);
-        emit errorOccurred(tr("elevation reached the profile limit at %1°; stopped").arg(m_el, 0, 'f', 1));
+        const QString why = tr("elevation reached the profile limit at %1°").arg(m_el, 0, 'f', 1);
+        stop(why, Axes::Elevation);
+        emit errorOccurred(tr("%1; stopped").arg(why));
     }
 }
 

@@ -59,9 +59,9 @@ void callWhenSent(RotatorSession &session, QObject *context, std::function<void(
     QTimer::singleShot(kFlushGiveUpMs, context, finish);
 }
 
-bool stopThenCall(RotatorSession &session, QObject *context, std::function<void()> done)
+bool stopThenCall(RotatorSession &session, const QString &cause, QObject *context, std::function<void()> done)
 {
-    const bool stopped = session.link() && session.stop();
+    const bool stopped = session.link() && session.stop(cause);
     if (!session.stopHoldPending()) {
         callWhenSent(session, context, std::move(done));
         return stopped;

@@ -18,9 +18,9 @@ class RotatorSession;
 // a few bytes in a second is gone anyway. Nothing here waits.
 void callWhenSent(RotatorSession &session, QObject *context, std::function<void()> done);
 
-// Sends a stop if there is a link, and calls `done` once the stop and its
-// hold have been written out (as callWhenSent). Returns whether a stop was
-// sent.
-bool stopThenCall(RotatorSession &session, QObject *context, std::function<void()> done);
+// Sends a stop (for `cause`, as RotatorSession::stop) if there is a link,
+// and calls `done` once the stop and its hold have been written out (as
+// callWhenSent). Returns whether a stop was sent.
+bool stopThenCall(RotatorSession &session, const QString &cause, QObject *context, std::function<void()> done);
 
 } // namespace slew::session

@@ -54,7 +54,7 @@ std::optional<remote::RemoteReply> RemoteCommands::handle(const QByteArray &payl
         ++m_droppedTotal;
         m_floodEnd.start();
         if (isStop)
-            stopEveryRotor();
+            stopEveryRotor(tr("a stop over MQTT"));
         return std::nullopt;
     }
     if (!parsed.command) {
@@ -113,14 +113,14 @@ QString RemoteCommands::holdOnMoves() const
     return {};
 }
 
-CommandResult RemoteCommands::stopEveryRotor()
+CommandResult RemoteCommands::stopEveryRotor(const QString &cause)
 {
     m_jog->release();
     session::RotatorSession *first = m_station->session();
-    const CommandResult result = first->stop(session::Axes::Both);
+    const CommandResult result = first->stop(cause);
     for (int i = 1; i < m_station->rotorCount(); ++i) {
         if (m_station->session(i)->isConnected())
-            m_station->session(i)->stop(session::Axes::Both);
+            m_station->session(i)->stop(cause);
     }
     return result;
 }
@@ -128,7 +128,7 @@ CommandResult RemoteCommands::stopEveryRotor()
 CommandResult RemoteCommands::obey(const RemoteCommand &c)
 {
     if (c.kind == RemoteCommand::Kind::Stop)
-        return stopEveryRotor(); // always
+        return stopEveryRotor(tr("a stop over MQTT")); // always
     if (c.kind == RemoteCommand::Kind::Untrack) {
         if (!m_refusing.isEmpty())
             return CommandResult{m_refusing};

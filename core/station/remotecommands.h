@@ -57,7 +57,7 @@ signals:
 
 private:
     session::CommandResult obey(const remote::RemoteCommand &command);
-    session::CommandResult stopEveryRotor();
+    session::CommandResult stopEveryRotor(const QString &cause);
     QString holdOnMoves() const; // why a remote move may not go now, or empty
     QString describe(const remote::RemoteCommand &command) const;
     session::CommandResult track(const remote::RemoteCommand &command);

@@ -28,7 +28,8 @@ session::CommandResult RemoteJog::turn(Axis axis, double speed, double &current)
     if (speed == current)
         return {};
     session::CommandResult result = speed == 0.0
-                                        ? m_session->stop(axis == Axis::Azimuth ? session::Axes::Azimuth
+                                        ? m_session->stop(tr("a remote jog at 0°/s"),
+                                                          axis == Axis::Azimuth ? session::Axes::Azimuth
                                                                                 : session::Axes::Elevation)
                                         : m_session->moveAxis(axis, speed);
     if (result)
@@ -47,7 +48,7 @@ session::CommandResult RemoteJog::jog(double azSpeed, double elSpeed, int leaseM
     m_turning = false;
     if (!result || (m_azSpeed == 0.0 && m_elSpeed == 0.0)) {
         if (!result && (m_azSpeed != 0.0 || m_elSpeed != 0.0))
-            m_session->stop(session::Axes::Both); // half a jog is not what was asked
+            m_session->stop(tr("a remote jog the rotator took only half of")); // half a jog is not what was asked
         m_azSpeed = m_elSpeed = 0;
         m_lease.stop();
         return result;
@@ -69,7 +70,7 @@ void RemoteJog::onExpired()
 {
     const double az = m_azSpeed, el = m_elSpeed;
     m_azSpeed = m_elSpeed = 0;
-    m_session->stop(session::Axes::Both);
+    m_session->stop(tr("a remote jog's lease of %1 ms ran out").arg(m_leaseMs));
     emit expired(m_leaseMs, az, el);
 }
 

@@ -186,17 +186,17 @@ void Station::disconnectRotators()
     }
 }
 
-session::CommandResult Station::stop()
+session::CommandResult Station::stop(const QString &cause)
 {
     if (m_rotors.empty())
         return session::CommandResult{m_error};
-    session::CommandResult result = session()->stop(session::Axes::Both);
+    session::CommandResult result = session()->stop(cause);
     for (size_t i = 1; i < m_rotors.size(); ++i) {
         if (m_rotors[i].session->isConnected())
-            m_rotors[i].session->stop(session::Axes::Both);
+            m_rotors[i].session->stop(cause);
     }
     if (m_controllerRotors)
-        m_controllerRotors->stopOthers();
+        m_controllerRotors->stopOthers(cause);
     // The operator stays in charge: after a local Stop, trackers may not
     // move the rotator until the operator hands control back.
     for (Rotor &rotor : m_rotors) {
@@ -355,7 +355,7 @@ void Station::shutdown(const QString &why)
     }
     for (RotatorSession *s : sessions) {
         s->reportHeldBack(); // the journal gets the count of what it was spared
-        const bool sent = session::stopThenCall(*s, this, [this] { stoppedOne(); });
+        const bool sent = session::stopThenCall(*s, tr("Slew is ending: %1").arg(why), this, [this] { stoppedOne(); });
         for (const Rotor &rotor : m_rotors) {
             if (sent && rotor.session.get() == s)
                 emit exitStopSent(rotor.number);

@@ -151,7 +151,8 @@ public:
     // The operator's Stop: every rotor on the controller stops, Slew's own
     // tracking is not restarted by it, and trackers on the rotctld port are
     // held off until handControlBack(). Always sent when there is a link.
-    session::CommandResult stop();
+    // `cause` (the key, the button) goes to the logs with each stop.
+    session::CommandResult stop(const QString &cause);
     // Trackers on the rotctld port may steer again after the operator's Stop.
     void handControlBack();
     // Between the operator's Stop and handControlBack(): remote control

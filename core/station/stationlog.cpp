@@ -35,9 +35,6 @@ StationLog::StationLog(Station *station, std::FILE *file, QObject *parent)
         connect(recorder, &PassRecorder::logLine, this, &StationLog::write);
     connect(station->passRecords(), &records::PassRecordStore::writeFailed, this,
             [this](const QString &error) { write(tr("records: %1").arg(error)); });
-    connect(station, &Station::exitStopSent, this, [this](int number) {
-        write((number > 0 ? tr("rotor %1: ").arg(number) : QString()) + tr("rotator stopped"));
-    });
 }
 
 void StationLog::followRotor(int index)
@@ -53,6 +50,9 @@ void StationLog::followRotor(int index)
     // Lines about what the controller sent come escaped and rate-limited;
     // a controller alarm is among them ("controller alarm: ..."), so it is
     // not logged a second time from alarmReceived, which is not limited.
+    // Every stop, with what asked for it (a rotctld client's S, MQTT, a
+    // lease run out, the service ending on a signal).
+    connect(s, &RotatorSession::stopSent, this, [say](const QString &cause) { say(tr("stop sent (%1)").arg(cause)); });
     connect(s, &RotatorSession::errorOccurred, this, [say](const QString &m) { say(tr("error: %1").arg(m)); });
     connect(s, &RotatorSession::commandRefused, this, [say](const QString &m) { say(tr("refused: %1").arg(m)); });
     connect(s, &RotatorSession::versionChanged, this, [say](const QString &v) { say(tr("controller: %1").arg(v)); });

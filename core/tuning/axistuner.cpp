@@ -240,7 +240,7 @@ void AxisTuner::cancel()
     if (m_cancelReason.isEmpty())
         m_cancelReason = tr("tuning of %1 cancelled").arg(axisName(m_axis));
     m_step.cancel();
-    m_session->stop(m_axis == Axis::Azimuth ? session::Axes::Azimuth : session::Axes::Elevation);
+    m_session->stop(m_cancelReason, m_axis == Axis::Azimuth ? session::Axes::Azimuth : session::Axes::Elevation);
     if (m_phase == Phase::Restoring) {
         m_afterRestore = Phase::Cancelled;
         return;
@@ -296,7 +296,8 @@ void AxisTuner::fail(const QString &reason)
 {
     m_error = reason;
     m_step.cancel();
-    m_session->stop(m_axis == Axis::Azimuth ? session::Axes::Azimuth : session::Axes::Elevation);
+    m_session->stop(tr("tuning of %1 failed: %2").arg(axisName(m_axis), reason),
+                    m_axis == Axis::Azimuth ? session::Axes::Azimuth : session::Axes::Elevation);
     if (m_trialWritten && !m_registers.isRunning()) {
         m_afterRestore = Phase::Failed;
         if (writeGains(m_result.oldGains)) {

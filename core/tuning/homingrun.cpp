@@ -123,7 +123,7 @@ void HomingRun::end(bool ok, const QString &reason)
         emit succeeded();
         return;
     }
-    m_session->stop();
+    m_session->stop(tr("homing failed: %1").arg(reason));
     m_error = reason;
     emit failed(reason);
 }
@@ -134,7 +134,7 @@ void HomingRun::cancel()
         return;
     m_running = false;
     m_tick.stop();
-    m_session->stop();
+    m_session->stop(tr("homing was cancelled"));
     m_error = tr("homing cancelled; the rotator was stopped");
     emit cancelled();
 }

@@ -160,7 +160,8 @@ void StepExperiment::fail(const QString &reason)
     m_tick.stop();
     m_phase = Phase::Done;
     m_error = reason;
-    m_session->stop(m_axis == Axis::Azimuth ? session::Axes::Azimuth : session::Axes::Elevation);
+    m_session->stop(tr("a tuning step failed: %1").arg(reason),
+                    m_axis == Axis::Azimuth ? session::Axes::Azimuth : session::Axes::Elevation);
     emit failed(reason);
 }
 
@@ -170,7 +171,8 @@ void StepExperiment::cancel()
         return;
     m_tick.stop();
     m_phase = Phase::Idle;
-    m_session->stop(m_axis == Axis::Azimuth ? session::Axes::Azimuth : session::Axes::Elevation);
+    m_session->stop(tr("a tuning step was cancelled"),
+                    m_axis == Axis::Azimuth ? session::Axes::Azimuth : session::Axes::Elevation);
 }
 
 } // namespace slew::tuning

@@ -78,7 +78,7 @@ void TuningRun::interrupt()
     }
     // The sequence stops the rotator and writes the old gains back, then
     // reports failed(), which ends the run.
-    m_session.stop();
+    m_session.stop(tr("the tuning run was cancelled"));
     m_sequence.cancel();
 }
 
@@ -89,7 +89,7 @@ void TuningRun::end(int exitCode)
     m_ended = true;
     // The rotator is left standing: the stop (and its hold) leave the link
     // before finished() lets the program go.
-    if (!session::stopThenCall(m_session, this, [this, exitCode] { emit finished(exitCode); }))
+    if (!session::stopThenCall(m_session, tr("the tuning run ended"), this, [this, exitCode] { emit finished(exitCode); }))
         finishLater(exitCode);
 }
 

@@ -126,11 +126,11 @@ void RotctldLinkTest::againstHamlibDummy()
     // Near targets: Hamlib's dummy turns at 6°/s.
     QVERIFY(s.gotoPosition(6, 3));
     QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.azimuth() - 6) < 0.5 && std::abs(s.elevation() - 3) < 0.5, 30000);
-    QVERIFY(s.stop());
+    QVERIFY(s.stop(QStringLiteral("the test")));
     QVERIFY(s.park());
     QVERIFY(s.home());
     QVERIFY(s.moveAxis(session::Axis::Azimuth, 2.0));
-    QVERIFY(s.stop());
+    QVERIFY(s.stop(QStringLiteral("the test")));
     // What went on the wire is rotctld's own commands, nothing else.
     QByteArray wire;
     for (const QList<QVariant> &args : std::as_const(sent))
@@ -208,7 +208,7 @@ void RotctldLinkTest::againstHamlibEasycommOnTheSimulator()
     QVERIFY(s.gotoAxis(session::Axis::Elevation, 20));
     QTRY_VERIFY2(received().contains("AZ45.0 EL20.0"), received().right(300).constData());
     QTRY_VERIFY_WITH_TIMEOUT(std::abs(s.elevation() - 20) < 0.5, 30000);
-    QVERIFY(s.stop());
+    QVERIFY(s.stop(QStringLiteral("the test")));
     QTRY_VERIFY2(received().contains("SA SE"), received().right(300).constData());
     s.disconnectFromRotator();
     rotctld.terminate();

@@ -140,7 +140,7 @@ void RotctldServerTest::rotctlDrivesTheSimulator()
     // netrotctl read our \dump_state on open: its capabilities show our limits.
     r = runRotctl({"-m", "2", "-r", where, "1"});
     QVERIFY2(r.out.contains("Max Azimuth:\t\t360.00") && r.out.contains("Max Elevation:\t\t90.00"), r.out.constData());
-    session->stop();
+    session->stop(QStringLiteral("the test"));
 }
 
 void RotctldServerTest::stopBringsTheAntennaToRest_data()
@@ -388,20 +388,24 @@ void RotctldServerTest::repeatedTargetGoesOutAfterAStop()
     QCOMPARE(timesSent(sent, go), 1);
     QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n")); // still on its way: not re-sent
     QCOMPARE(timesSent(sent, go), 1);
-    // A remote stop: the same target must reach the rotator again.
+    // A remote stop: the same target must reach the rotator again. The
+    // logs say which client asked.
+    QSignalSpy stops(session, &session::RotatorSession::stopSent);
     QCOMPARE(ask(s, "S"), QByteArray("RPRT 0\n"));
+    QCOMPARE(stops.size(), 1);
+    QCOMPARE(stops.first().at(0).toString(), QStringLiteral("rotctld client 127.0.0.1:%1: S").arg(s.localPort()));
     QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n"));
     QCOMPARE(timesSent(sent, go), 2);
     // The operator's Stop (a local stop) likewise.
-    QVERIFY(session->stop());
+    QVERIFY(session->stop(QStringLiteral("the test")));
     QCOMPARE(ask(s, "P 100.2 40.1"), QByteArray("RPRT 0\n"));
     QCOMPARE(timesSent(sent, "AZ100.20 EL40.10\n"), 1);
     // A stop of one axis leaves no target either.
-    QVERIFY(session->stop(session::Axes::Elevation));
+    QVERIFY(session->stop(QStringLiteral("the test"), session::Axes::Elevation));
     QCOMPARE(ask(s, "P 100.2 40.1"), QByteArray("RPRT 0\n"));
     QCOMPARE(timesSent(sent, "AZ100.20 EL40.10\n"), 2);
     QCOMPARE(server->movesSuppressedByDeadband(), 1);
-    session->stop();
+    session->stop(QStringLiteral("the test"));
 }
 
 void RotctldServerTest::repeatedTargetGoesOutAfterALocalMove()
@@ -434,7 +438,7 @@ void RotctldServerTest::repeatedTargetGoesOutAfterALocalMove()
     QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n"));
     QCOMPARE(timesSent(sent, go), 6);
     QCOMPARE(server->movesSuppressedByDeadband(), 0);
-    session->stop();
+    session->stop(QStringLiteral("the test"));
 }
 
 void RotctldServerTest::repeatedTargetGoesOutAfterParkAndHome()
@@ -459,7 +463,7 @@ void RotctldServerTest::repeatedTargetGoesOutAfterParkAndHome()
     QCOMPARE(ask(s, "P 100 40"), QByteArray("RPRT 0\n"));
     QCOMPARE(timesSent(sent, go), 5);
     QCOMPARE(server->movesSuppressedByDeadband(), 0);
-    session->stop();
+    session->stop(QStringLiteral("the test"));
 }
 
 void RotctldServerTest::repeatedTargetGoesOutAfterTheLinkReturns()
@@ -495,7 +499,7 @@ void RotctldServerTest::repeatedTargetGoesOutAfterTheLinkReturns()
     QCOMPARE(ask(s, "P 180.3 60.2"), QByteArray("RPRT 0\n"));
     QCOMPARE(timesSent(sent, "AZ180.30 EL60.20\n"), 1);
     QCOMPARE(server->movesSuppressedByDeadband(), 0);
-    session->stop();
+    session->stop(QStringLiteral("the test"));
 }
 
 void RotctldServerTest::overlapPicksTheShortestLegalPath()
@@ -692,7 +696,7 @@ void RotctldServerTest::halfClosedClientsAreAnswered()
         many += "p\n";
     QCOMPARE(askThenHalfClose(server->port(), many, 20000).count('\n'), 100000);
     QTRY_COMPARE(server->clients().size(), 0);
-    session->stop();
+    session->stop(QStringLiteral("the test"));
 }
 
 void RotctldServerTest::clientsBeyondTheLimitAreRefused()
@@ -734,7 +738,7 @@ void RotctldServerTest::resetTakesOnlyResetAll()
     QCOMPARE(timesSent(sent, "RESET\n"), 0);
     QCOMPARE(ask(s, "R 1"), QByteArray("RPRT 0\n"));
     QCOMPARE(timesSent(sent, "RESET\n"), 1);
-    session->stop();
+    session->stop(QStringLiteral("the test"));
 }
 
 void RotctldServerTest::clientsSeeTheCalibratedPointing()

@@ -202,7 +202,7 @@ void ControllerFirmwareTest::satnogsLineGetsItsTurnaround()
     QVERIFY(session->gotoPosition(30.0, 10.0)); // a command among the polls
     const double until = device->now() + 2.0;
     TRY_VERIFY(device->now() >= until);
-    QVERIFY(session->stop(session::Axes::Both));
+    QVERIFY(session->stop(QStringLiteral("the test"), session::Axes::Both));
     TRY_VERIFY(device->received.contains("SA SE"));
     // No line reached the board within 10 ms of its last reply: on RS485 it
     // would have been lost under the end of that reply.

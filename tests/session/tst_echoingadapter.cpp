@@ -139,7 +139,7 @@ private:
                 out.facts << QStringLiteral("CR7 unanswered");
         }
         out.facts << values;
-        out.facts << QStringLiteral("stop %1").arg(bool(session.stop()));
+        out.facts << QStringLiteral("stop %1").arg(bool(session.stop(QStringLiteral("the test"))));
         pump.pause();
         out.facts << QStringLiteral("refused %1, failed %2, errors %3, alarms %4")
                          .arg(refused.count())

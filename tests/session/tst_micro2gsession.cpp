@@ -49,9 +49,9 @@ private slots:
 
         // A stop names it too; the elevation alone has nothing to stop.
         QVERIFY(s.gotoPosition(120, 0));
-        QVERIFY(s.stop());
+        QVERIFY(s.stop(QStringLiteral("the test")));
         QVERIFY(wrote(sent, "S2\r"));
-        QVERIFY(!s.stop(slew::session::Axes::Elevation));
+        QVERIFY(!s.stop(QStringLiteral("the test"), slew::session::Axes::Elevation));
     }
 
     void refusesWhatTheControllerCannotDo()
@@ -212,7 +212,7 @@ private slots:
         QCOMPARE(sent.first().at(0).toByteArray(), QByteArray("4\rM030\r"));
         TRY_VERIFY_WITH_TIMEOUT(s.azimuth() > 10, 15000); // rotor 4 turns, at 6 degrees a second
         QVERIFY(wrote(sent, "C4\r"));
-        QVERIFY(s.stop());
+        QVERIFY(s.stop(QStringLiteral("the test")));
         s.disconnectFromRotator();
         QCOMPARE(sim.stop(), 0);
     }

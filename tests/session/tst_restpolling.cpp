@@ -131,7 +131,7 @@ void RestPollingTest::aCommandWakesItAtOnce()
     switch (command) {
     case Command::GoTo: result = s.gotoPosition(s.azimuth() + 10.0, s.elevation() + 5.0); break;
     case Command::Jog: result = s.moveAxis(session::Axis::Azimuth, 2.0); break;
-    case Command::Stop: result = s.stop(); break;
+    case Command::Stop: result = s.stop(QStringLiteral("the test")); break;
     case Command::Park: result = s.park(); break;
     case Command::Home: result = s.home(); break;
     case Command::RawLine: result = s.sendRaw(QStringLiteral("VE")); break;
@@ -144,7 +144,7 @@ void RestPollingTest::aCommandWakesItAtOnce()
     // Whatever the command did, the station rests again once it is over
     // (a jog is stopped first: it runs until told otherwise).
     if (command == Command::Jog)
-        QVERIFY(s.stop());
+        QVERIFY(s.stop(QStringLiteral("the test")));
     QVERIFY(runFor(s, 30.0));
     QVERIFY(restsAtOneHertz(s));
 }

@@ -275,7 +275,7 @@ void RotatorSessionTest::activeTargetEndsWithAnythingElseSent()
     QVERIFY(session->gotoAxis(session::Axis::Elevation, 20)); // one axis: the other keeps its target
     QCOMPARE(session->activeTarget()->azimuth, 100.0);
     QCOMPARE(session->activeTarget()->elevation, 20.0);
-    QVERIFY(session->stop(session::Axes::Azimuth));
+    QVERIFY(session->stop(QStringLiteral("the test"), session::Axes::Azimuth));
     QVERIFY(!session->activeTarget());
     goThere();
     QVERIFY(session->moveAxis(session::Axis::Azimuth, 2.0));
@@ -325,10 +325,10 @@ void RotatorSessionTest::stopGoesOutEvenWhenTheQueueIsStuck()
     QVERIFY(session->readConfig(1));
     QVERIFY(session->readConfig(2));
     QVERIFY(session->queuedRequests() >= 2);
-    QVERIFY(session->stop());
+    QVERIFY(session->stop(QStringLiteral("the test")));
     TRY_VERIFY(device->received.contains("SA SE"));
     QVERIFY(session->queuedRequests() >= 1); // it did not wait for them
-    QVERIFY(session->stop(session::Axes::Azimuth));
+    QVERIFY(session->stop(QStringLiteral("the test"), session::Axes::Azimuth));
     TRY_VERIFY(device->received.contains("SA"));
 }
 
@@ -336,7 +336,7 @@ void RotatorSessionTest::stopIsFollowedByAZeroSpeedHold()
 {
     QVERIFY(connectSession(*session, *device));
     QSignalSpy held(session, &RotatorSession::stopHoldSent);
-    QVERIFY(session->stop());
+    QVERIFY(session->stop(QStringLiteral("the test")));
     TRY_VERIFY(device->received.contains("SA SE"));
     QVERIFY(session->stopHoldPending());
     QVERIFY(!device->received.contains("VL0000 VU0000")); // not at once: a worm gear stops faster on its own
@@ -344,7 +344,7 @@ void RotatorSessionTest::stopIsFollowedByAZeroSpeedHold()
     TRY_VERIFY(device->received.contains("VL0000 VU0000")); // SatNOGS writes four digits
     QVERIFY(!session->stopHoldPending());
     // One axis, one hold.
-    QVERIFY(session->stop(session::Axes::Elevation));
+    QVERIFY(session->stop(QStringLiteral("the test"), session::Axes::Elevation));
     QVERIFY(held.wait(2000));
     TRY_VERIFY(device->received.contains("VU0000"));
 }
@@ -353,7 +353,7 @@ void RotatorSessionTest::aMoveAfterStopCancelsTheHold()
 {
     QVERIFY(connectSession(*session, *device));
     QSignalSpy held(session, &RotatorSession::stopHoldSent);
-    QVERIFY(session->stop());
+    QVERIFY(session->stop(QStringLiteral("the test")));
     QVERIFY(session->gotoPosition(40, 20)); // the operator's next move wins
     QVERIFY(!session->stopHoldPending());
     TRY_VERIFY(device->received.contains("AZ40.0 EL20.0"));
@@ -367,7 +367,7 @@ void RotatorSessionTest::aMoveAfterStopCancelsTheHold()
 void RotatorSessionTest::dialectsWithoutSpeedCommandsOnlyRelease()
 {
     QVERIFY(connectSession(*session, *device, protocol::Dialect::Easycomm2));
-    QVERIFY(session->stop());
+    QVERIFY(session->stop(QStringLiteral("the test")));
     QVERIFY(!session->stopHoldPending());
     TRY_VERIFY(device->received.contains("SA SE"));
 }
@@ -624,7 +624,7 @@ void RotatorSessionTest::noMoveGoesOutWhileNoPositionIsRead()
     QVERIFY(movesRefused.count() >= 8);
     // A query and a stop still go: they are how to find out, and Stop always works.
     QVERIFY(session->sendRaw("VE"));
-    QVERIFY(session->stop(session::Axes::Both));
+    QVERIFY(session->stop(QStringLiteral("the test"), session::Axes::Both));
     TRY_VERIFY(device->received.contains("SA SE"));
     for (const QByteArray &line : device->received.mid(heard))
         QVERIFY2(line == "AZ EL" || line == "VE" || line == "SA SE" || line.startsWith("CR") || line.startsWith("IP")

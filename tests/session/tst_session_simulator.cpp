@@ -139,7 +139,7 @@ void SessionSimulatorTest::gotoStopParkHome()
     });
     QVERIFY(s.gotoPosition(80, 40));
     TRY_VERIFY(sawMoving);
-    QVERIFY(s.stop());
+    QVERIFY(s.stop(QStringLiteral("the test")));
     pump->resume();
     TRY_VERIFY_WITH_TIMEOUT(s.status().idle(), 15000);
     QVERIFY(std::abs(s.azimuth() - 80) > 1); // stopped on the way
@@ -166,7 +166,7 @@ void SessionSimulatorTest::telemetryArrives()
     QVERIFY(!std::isnan(s.telemetry().temperature));
     QVERIFY(!std::isnan(s.telemetry().azLoad));
     QVERIFY(s.telemetry().azEndStop >= 0);
-    QVERIFY(s.stop());
+    QVERIFY(s.stop(QStringLiteral("the test")));
     TRY_VERIFY_WITH_TIMEOUT(std::abs(s.telemetry().azVelocity) < 0.05, 10000);
 }
 
@@ -181,7 +181,7 @@ void SessionSimulatorTest::jamShowsAsMotorError()
     // The simulator stays reachable behind the session's link (tests, the wizard).
     sim::Simulator *simulator = sim::simulatorBehind(s.link());
     QVERIFY(simulator);
-    QVERIFY(s.stop());
+    QVERIFY(s.stop(QStringLiteral("the test")));
 }
 
 void SessionSimulatorTest::satnogsDialect()
@@ -210,7 +210,7 @@ void SessionSimulatorTest::easycomm2MovesWithMlMr()
     QSignalSpy sent(&s, &RotatorSession::bytesSent);
     QVERIFY(s.moveAxis(session::Axis::Azimuth, 3.0));
     TRY_VERIFY_WITH_TIMEOUT(s.azimuth() > start + 2, 10000);
-    QVERIFY(s.stop(session::Axes::Azimuth));
+    QVERIFY(s.stop(QStringLiteral("the test"), session::Axes::Azimuth));
     bool mr = false;
     for (const auto &b : sent)
         mr = mr || b.at(0).toByteArray() == "MR\n";
@@ -243,7 +243,7 @@ void SessionSimulatorTest::gs232Dialects()
     const double start = s.azimuth();
     QVERIFY(s.moveAxis(session::Axis::Azimuth, 3.0));
     TRY_VERIFY_WITH_TIMEOUT(s.azimuth() > start + 2, 10000);
-    QVERIFY(s.stop());
+    QVERIFY(s.stop(QStringLiteral("the test")));
     QStringList wire;
     for (const auto &b : sent)
         wire << QString::fromLatin1(b.at(0).toByteArray());

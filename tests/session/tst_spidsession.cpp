@@ -136,7 +136,7 @@ private slots:
         QVERIFY(runEventLoopUntil([&] { return s.azimuth() > 60; }, 20000));
         QSignalSpy sent(&s, &RotatorSession::bytesSent);
         QSignalSpy stops(&s, &RotatorSession::stopSent);
-        QVERIFY(s.stop());
+        QVERIFY(s.stop(QStringLiteral("the test")));
         QCOMPARE(stops.size(), 1);
         QCOMPARE(sent.first().at(0).toByteArray(), spid::encodeStop());
         QVERIFY(runEventLoopUntil([&] { return !s.positionStale(); }, 5000));
@@ -172,7 +172,7 @@ private slots:
         QCOMPARE(setIn(sent), QPointF(360, 0));
         // The elevation released: a stop (which halts both), and the azimuth goes on.
         sent.clear();
-        QVERIFY(s.stop(Axes::Elevation));
+        QVERIFY(s.stop(QStringLiteral("the test"), Axes::Elevation));
         QCOMPARE(sent.first().at(0).toByteArray(), spid::encodeStop());
         QCOMPARE(setIn(sent).value_or(QPointF()).x(), 360.0);
         QVERIFY(runEventLoopUntil([&] { return s.azimuth() > 359.5; }, 20000));
@@ -182,7 +182,7 @@ private slots:
         QVERIFY(!s.moveAxis(Axis::Azimuth, 5.0));
         QCOMPARE(refused.size(), 1);
         QCOMPARE(setIn(sent), std::nullopt);
-        QVERIFY(s.stop());
+        QVERIFY(s.stop(QStringLiteral("the test")));
         // Anticlockwise from 100°: to 0°, which is the way pressed.
         RotatorSession back;
         QVERIFY(open(back, Dialect::Rot2Prog, QStringLiteral("start_az=100&start_el=20&spid_pulses=1")));
@@ -190,7 +190,7 @@ private slots:
         QVERIFY(back.moveAxis(Axis::Azimuth, -5.0));
         QCOMPARE(setIn(backSent), QPointF(0, 20));
         QVERIFY(runEventLoopUntil([&] { return back.azimuth() < 90; }, 20000));
-        QVERIFY(back.stop());
+        QVERIFY(back.stop(QStringLiteral("the test")));
     }
 
     // The MD-01/02 has a move command: one frame names every running axis.
@@ -207,9 +207,9 @@ private slots:
         QCOMPARE(sent.last().at(0).toByteArray(), spid::encodeMove(Bit::Left | Bit::Up, Dialect::Md01).bytes);
         QVERIFY(runEventLoopUntil([&] { return s.azimuth() < 95 && s.elevation() > 25; }, 10000));
         sent.clear();
-        QVERIFY(s.stop(Axes::Azimuth));
+        QVERIFY(s.stop(QStringLiteral("the test"), Axes::Azimuth));
         QCOMPARE(frames(sent), (QList<QByteArray>{spid::encodeStop(), spid::encodeMove(Bit::Up, Dialect::Md01).bytes}));
-        QVERIFY(s.stop());
+        QVERIFY(s.stop(QStringLiteral("the test")));
     }
 
     // MD-01 firmware that logs text among its frames: skipped, said once,
@@ -312,7 +312,7 @@ private slots:
         QVERIFY(s.gotoPosition(75, 40));
         QVERIFY(runEventLoopUntil([&] { return std::abs(s.azimuth() - 75) < 0.3 && std::abs(s.elevation() - 40) < 0.3; },
                                   30000));
-        QVERIFY(s.stop());
+        QVERIFY(s.stop(QStringLiteral("the test")));
         QVERIFY(runEventLoopUntil([&] { return !s.positionStale(); }, 5000));
         QCOMPARE(failed.size(), 0);
         s.disconnectFromRotator();

@@ -104,7 +104,7 @@ private:
         case Step::Slewing:
             if (p.x() > 15.0 && p.y() > 6.0) {
                 pressed = p;
-                if (!m_session.stop())
+                if (!m_session.stop(QStringLiteral("the test")))
                     return fail(QStringLiteral("stop was refused"));
                 m_readAfterMs = now + m_case.restWithinMs;
                 m_step = Step::Settling;

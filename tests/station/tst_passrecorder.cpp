@@ -188,7 +188,7 @@ private slots:
         QVERIFY(track(station, QStringLiteral("2018-01-22T09:20:00Z")));
         const qint64 id = *station.passRecorder()->currentRecord();
         QVERIFY(QTest::qWaitFor([&] { return station.passRunner()->tracker().figures().samples > 5; }, 10000));
-        QVERIFY(station.stop());
+        QVERIFY(station.stop(QStringLiteral("the test")));
         const slew::records::PassRecord r = *station.passRecords()->pass(id);
         QCOMPARE(r.outcome, Outcome::Interrupted);
         QCOMPARE(r.reason, QStringLiteral("stopped"));

@@ -90,7 +90,7 @@ private slots:
         SimulatorPump pump;
         QVERIFY(connectAndWait(station, pump));
         RemoteCommands commands(&station, {});
-        QVERIFY(station.stop());
+        QVERIFY(station.stop(QStringLiteral("the test")));
         QVERIFY(station.operatorHolds());
         const RemoteReply held = answer(commands, R"j({"id":"1","cmd":"goto","az":40,"el":20})j");
         QVERIFY(!held.ok);
@@ -101,6 +101,7 @@ private slots:
         QSignalSpy stops(station.session(), &slew::session::RotatorSession::stopSent);
         QVERIFY(answer(commands, R"j({"id":"4","cmd":"stop"})j").ok);
         QCOMPARE(stops.size(), 1);
+        QCOMPARE(stops.first().at(0).toString(), QStringLiteral("a stop over MQTT")); // what the logs say asked
         station.handControlBack();
         QVERIFY(answer(commands, R"j({"id":"5","cmd":"goto","az":40,"el":20})j").ok);
     }
@@ -147,6 +148,7 @@ private slots:
         // Not renewed: stopped by itself.
         QVERIFY(expired.wait(3000));
         QCOMPARE(stops.size(), 1);
+        QCOMPARE(stops.first().at(0).toString(), QStringLiteral("a remote jog's lease of 300 ms ran out"));
         QVERIFY(!commands.jog()->isActive());
         // Another command ends a lease without a stop of its own.
         QVERIFY(answer(commands, R"j({"id":"3","cmd":"jog","az_speed":-10,"lease_ms":1000})j").ok);

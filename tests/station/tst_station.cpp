@@ -182,7 +182,7 @@ private slots:
         QCOMPARE(gpredict.ask("P 90 45"), QByteArray("RPRT 0\n"));
 
         QSignalSpy sent(rotor, &slew::session::RotatorSession::bytesSent);
-        QVERIFY(station.stop());
+        QVERIFY(station.stop(QStringLiteral("the test")));
         QVERIFY(!sent.isEmpty()); // the stop went out at once
         QVERIFY(server->isRemoteHeld());
         QCOMPARE(gpredict.ask("P 90 45"), QByteArray("RPRT -9\n"));

@@ -263,7 +263,7 @@ private slots:
         QVERIFY(tracker.track(greatCirclePass(90, 50, true), kAos, rig.reach, rig.clockWithAosIn(30, kAos)));
         QVERIFY(runEventLoopUntil([&] { return tracker.secondsFromAos() > 60; }, 10000));
         QCOMPARE(tracker.state(), Tracker::State::Tracking);
-        QVERIFY(rig.session.stop()); // the window's Stop, Space, Esc, rotctld S, shutdown: all end here
+        QVERIFY(rig.session.stop(QStringLiteral("the test"))); // the window's Stop, Space, Esc, rotctld S, shutdown: all end here
         QCOMPARE(tracker.state(), Tracker::State::Idle);
         const qsizetype sent = rig.targets.size();
         const double then = rig.sim->clock().now();

@@ -342,10 +342,10 @@ private slots:
         QVERIFY(sessions[3]->gotoPosition(90, 0));
         QVERIFY(sessions[0]->gotoPosition(90, 0));
         QVERIFY(runEventLoopUntil([&] { return sim->micro2g().travel(4) > 10 && sim->micro2g().travel(1) > 10; }, 10000));
-        QVERIFY(sessions[3]->stop());
+        QVERIFY(sessions[3]->stop(QStringLiteral("the test")));
         QVERIFY(runEventLoopUntil([&] { return sim->micro2g().drive(4) == Drive::Off; }, 1000));
         QVERIFY(sim->micro2g().drive(1) != Drive::Off);
-        QVERIFY(sessions[0]->stop());
+        QVERIFY(sessions[0]->stop(QStringLiteral("the test")));
 
         // No answer went to the wrong rotor: nothing was left unanswered.
         QCOMPARE(failedRequests, 0);

@@ -139,7 +139,7 @@ private slots:
         QVERIFY(f.waitFor([&] { return f.window->alarmBanner()->text().contains(QStringLiteral("end stop")); }, 30000));
         QVERIFY(!f.window->alarmBanner()->isHidden());
         QVERIFY(!f.window->alarmBanner()->isSevere()); // a warning, not a fault
-        f.session.stop();
+        f.session.stop(QStringLiteral("the test"));
     }
 
     void homingShowsProgressUntilIdle()

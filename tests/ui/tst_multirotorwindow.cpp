@@ -125,7 +125,7 @@ private slots:
         QVERIFY(WindowFixture::waitFor([&] { return sim->clock().now() > stopped + 0.5; }, 5000));
         QCOMPARE(sim->micro2g().drive(3), Micro2gController::Drive::Off);
         QVERIFY(sim->micro2g().drive(2) != Micro2gController::Drive::Off);
-        QVERIFY(f.session.stop());
+        QVERIFY(f.session.stop(QStringLiteral("the test")));
 
         // Disconnecting takes the others along, and the tiles go.
         f.session.disconnectFromRotator();
@@ -164,7 +164,7 @@ private slots:
         f.session.setProfile(profile);
         QCOMPARE(panel->tile(1)->session()->profile().azOffsetDeg, 0.0);
         QCOMPARE(panel->tile(3)->session()->profile().azOffsetDeg, 5.0);
-        QVERIFY(three->stop());
+        QVERIFY(three->stop(QStringLiteral("the test")));
     }
 
     void aRefusedMoveIsShownOnItsTile()

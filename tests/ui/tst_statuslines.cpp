@@ -13,6 +13,7 @@
 
 #include "configeditor.h"
 #include "eventlog.h"
+#include "jogpad.h"
 #include "parkhomepanel.h"
 #include "presetpanel.h"
 #include "stopbutton.h"
@@ -84,10 +85,22 @@ private slots:
         QCOMPARE(textOf(f, "presetMessage"), QString());
         QCOMPARE(textOf(f, "readoutTarget"), QString());
         QCOMPARE(linesWith(f, QStringLiteral("Stop")), 1);
+        QCOMPARE(linesWith(f, QStringLiteral("Stop (the STOP button) at az ")), 1); // what asked, and where
         QVERIFY2(linesWith(f, QStringLiteral("°): stopped at az ")) == 1, qPrintable(f.window->eventLog()->toPlainText()));
         // Coming to rest afterwards is not another ending.
         QVERIFY(f.waitUntilStill());
         QCOMPARE(linesWith(f, QStringLiteral("preset 'Mast'")), 2);
+    }
+
+    void aJogsReleaseIsAStopThatSaysSo()
+    {
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
+        QVERIFY(f.connectAndWait());
+        f.window->jogPad()->press(slew::ui::JogPad::Right);
+        QVERIFY(f.waitFor([&] { return f.session.azimuth() > 2; }, 20000));
+        f.window->jogPad()->release(slew::ui::JogPad::Right);
+        QCOMPARE(linesWith(f, QStringLiteral("jog azimuth clockwise at ")), 1);
+        QCOMPARE(linesWith(f, QStringLiteral("Stop (jog azimuth clockwise released) at az ")), 1);
     }
 
     void thePlotsLineGoesBackToItsPromptOnArrival()

@@ -45,7 +45,7 @@ private slots:
     {
         WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
-        QVERIFY(f.window->stopButton()->stopAll());
+        QVERIFY(f.window->stopButton()->stopFor(QStringLiteral("the test")));
         QCOMPARE(f.sentCount(kStopLine), 1);
     }
 

@@ -4,6 +4,7 @@
 // control is handed back; and the setup wizard opened from the menu.
 
 #include "bridge/rotctldserver.h"
+#include "eventlog.h"
 #include "rotctldpanel.h"
 #include "windowfixture.h"
 #include "wizard/setupwizard.h"
@@ -70,6 +71,12 @@ void TrackersTest::trackerSteersUntilTheOperatorStops()
     QVERIFY(!f.window->rotctldServer()->isRemoteHeld());
     QCOMPARE(ask(tracker, "P 100 30"), QByteArray("RPRT 0\n"));
     QVERIFY(f.waitUntilAt(100, 30));
+    // Each stop in Events with what asked: the button, then the tracker's S.
+    QCOMPARE(ask(tracker, "S"), QByteArray("RPRT 0\n"));
+    const QString events = f.window->eventLog()->toPlainText();
+    QVERIFY2(events.contains(QStringLiteral("Stop (the STOP button) at az ")), qPrintable(events));
+    QVERIFY2(events.contains(QStringLiteral("Stop (rotctld client 127.0.0.1:%1: S) at az ").arg(tracker.localPort())),
+             qPrintable(events));
 }
 
 void TrackersTest::badAddressKeepsTheServerOff()

@@ -171,7 +171,7 @@ void ConnectPage::disconnectAndProbe()
     m_status->setText(tr("Stopping the rotator and disconnecting the window…"));
     emit completeChanged();
     // The stop leaves the link before the link goes.
-    session::stopThenCall(*s, this, [this, s] {
+    session::stopThenCall(*s, tr("the wizard disconnects the window to probe"), this, [this, s] {
         s->disconnectFromRotator();
         probe();
     });

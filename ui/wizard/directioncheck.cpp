@@ -80,7 +80,7 @@ void DirectionCheck::onPosition()
         m_wrongReading = reading();
         // The loop is driving the axis away from its target, and would go on
         // into the end stop: stopped before anything else is said.
-        m_session->stop();
+        m_session->stop(tr("the direction check saw the axis go the wrong way"));
         conclude(Verdict::WrongWay);
     } else if (gone >= kRightWayShare * std::fabs(m_target - m_from)) {
         conclude(Verdict::RightWay);

@@ -79,7 +79,7 @@ bool SetupWizard::windowHasConnection() const
 
 void SetupWizard::stopRotator()
 {
-    m_stop->stopAll(); // stopRequested() first, so no run sends a move after the stop
+    m_stop->stopFor(tr("the wizard's Stop")); // stopRequested() first, so no run sends a move after the stop
 }
 
 void SetupWizard::keyPressEvent(QKeyEvent *event)

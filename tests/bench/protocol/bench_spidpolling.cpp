@@ -68,7 +68,7 @@ void run(Dialect d, int baud)
                 "the line carries; %.2f positions/s, %d failed requests\n",
                 qPrintable(protocol::dialectName(d)), baud, s.pollIntervalMs(), s.replyTimeoutMs(), polls / elapsed,
                 100.0 * polls / elapsed / lineCarries, lineCarries, positions / elapsed, failed);
-    s.stop();
+    s.stop(QStringLiteral("the test"));
 }
 
 // Hamlib's rotctld in front of a Rot2Prog at 600 baud, asked `p` back to
