@@ -288,15 +288,11 @@ int runPasses(QCoreApplication &app)
             return fail(QStringLiteral("--%1: %2").arg(QLatin1String(option), why));
         *out = *value;
     }
-    const PassWindow window{common.julian, common.julian + hours / 24.0, aosEl};
+    const PassWindow window{common.julian, common.julian + hours / 24.0, aosEl, nullptr, minEl};
     const bool json = parser.isSet(QStringLiteral("json"));
-    auto highEnough = [minEl](QList<Pass> passes) {
-        passes.removeIf([minEl](const Pass &p) { return p.maxElevationDeg() < minEl; });
-        return passes;
-    };
 
     if (body) {
-        printPasses(highEnough(predictBodyPasses(*body, common.station, window)), json, true);
+        printPasses(predictBodyPasses(*body, common.station, window), json, true);
         return 0;
     }
     if (target.compare(QStringLiteral("all"), Qt::CaseInsensitive) == 0) {
@@ -315,7 +311,7 @@ int runPasses(QCoreApplication &app)
         }
         if (usable.isEmpty())
             return fail(QStringLiteral("none of the element sets from %1 can be propagated").arg(common.origin));
-        printPasses(highEnough(predictPasses(usable, common.station, window)), json, false);
+        printPasses(predictPasses(usable, common.station, window), json, false);
         return 0;
     }
     const ElementSet *tle = pickSatellite(common.sets, target, &why);
@@ -329,7 +325,7 @@ int runPasses(QCoreApplication &app)
                      qPrintable(sgp4ErrorText(sat.initialError())));
         return 1;
     }
-    printPasses(highEnough(predictPasses(sat, common.station, window)), json, false);
+    printPasses(predictPasses(sat, common.station, window), json, false);
     return 0;
 }
 

@@ -395,8 +395,10 @@ Schedule planSchedule(const QList<tracking::TrackTarget> &targets, const sky::St
         out.notes << QObject::tr("nothing planned: the window or a setting is not a usable number");
         return out;
     }
-    const sky::PassWindow window{settings.startJulian, settings.startJulian + settings.hours / 24.0,
-                                 settings.minElevationDeg, stop};
+    // AOS and LOS at the horizon (or the mask), as everywhere; the minimum
+    // elevation keeps the passes that climb to it.
+    const sky::PassWindow window{settings.startJulian, settings.startJulian + settings.hours / 24.0, 0.0, stop,
+                                 settings.minElevationDeg};
     sky::Station flat = station;
     flat.horizon.reset();
     QList<QList<ScheduledPass>> byPriority;

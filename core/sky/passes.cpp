@@ -112,9 +112,9 @@ PassPoint pointAt(const ElevationFunction &f, double julian)
 QList<Pass> scanPasses(const ElevationFunction &f, const PassWindow &window, const PassScan &scan,
                        const HorizonMask *horizon)
 {
-    if (horizon)
-        return scanAboveMask(f, window, scan, *horizon);
-    return scanAboveThreshold(f, window, scan);
+    QList<Pass> passes = horizon ? scanAboveMask(f, window, scan, *horizon) : scanAboveThreshold(f, window, scan);
+    passes.removeIf([&window](const Pass &p) { return p.maxElevationDeg() < window.leastHighestDeg; });
+    return passes;
 }
 
 namespace {

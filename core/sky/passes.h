@@ -49,10 +49,14 @@ struct Pass {
 struct PassWindow {
     double startJulian = 0;
     double endJulian = 0;        // passes that begin before this are reported whole
-    double minElevationDeg = 0;
+    double minElevationDeg = 0;  // where AOS and LOS are: the horizon (0), or another crossing
     // When set and true, the search ends at its next step with what it has
     // found: how a worker thread is told to give up (a service stopping).
     const std::atomic<bool> *stop = nullptr;
+    // Only passes whose highest point climbs to this. What a "minimum
+    // elevation" means everywhere (slew --passes --min-el, the schedule,
+    // --track): a filter of the passes, never a move of their AOS and LOS.
+    double leastHighestDeg = -90.0;
 };
 
 // The next passes of one satellite. A satellite that cannot be propagated

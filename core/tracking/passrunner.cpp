@@ -111,7 +111,8 @@ void PassRunner::begin(const TrackTarget &target, const sky::Station &station, d
     if (m_one)
         emit logLine(tr("tracking %1 from %2 to %3").arg(target.name(), isoTime(m_one->first), isoTime(m_one->second)));
     else
-        emit logLine(tr("tracking %1 above %2°%3").arg(target.name()).arg(minElevationDeg)
+        emit logLine(tr("tracking %1%2%3")
+                         .arg(target.name(), minElevationDeg > 0 ? tr(", passes that climb to %1°").arg(minElevationDeg) : QString())
                          .arg(clock->isRehearsal() ? tr(", rehearsal clock from %1 at %2x").arg(isoTime(clock->nowJulian())).arg(clock->rate())
                                                    : QString()));
     if (m_session->isConnected())
@@ -174,12 +175,14 @@ void PassRunner::nextPass()
         endOne(OneEnd::NotFound, tr("its time was over by %1").arg(isoTime(now)));
         return;
     }
-    sky::PassWindow window{now, now + kLookAheadDays, m_minElevation};
+    // AOS and LOS at the horizon (or the mask); the minimum elevation keeps
+    // the passes that climb to it (sky/passes.h).
+    sky::PassWindow window{now, now + kLookAheadDays, 0.0, nullptr, m_minElevation};
     // The schedule's pass: its AOS falls between the times given (a minute's
     // margin for the pass predicted afresh), or it is under way then; never
     // an earlier pass of the same target (one the schedule dropped).
     if (m_one)
-        window = sky::PassWindow{m_one->first - 60.0 / sky::kSecondsPerDay, m_one->second, m_minElevation};
+        window = sky::PassWindow{m_one->first - 60.0 / sky::kSecondsPerDay, m_one->second, 0.0, nullptr, m_minElevation};
     const std::optional<std::pair<double, double>> one = m_one;
     const RotatorReach reach = reachOf(*m_session);
     PlannerOptions options;

@@ -135,7 +135,7 @@ QList<sky::Pass> TargetSky::passes(const sky::Station &station, const sky::PassW
         return sky::predictCelestialPasses(m_target.rightAscensionDeg, m_target.declinationDeg, station, window);
     case TrackTarget::Kind::Fixed: break;
     }
-    if (m_target.elevationDeg < window.minElevationDeg
+    if (m_target.elevationDeg < window.minElevationDeg || m_target.elevationDeg < window.leastHighestDeg
         || (station.horizon && m_target.elevationDeg < station.horizon->elevationAt(m_target.azimuthDeg)))
         return {}; // below the minimum, or behind what hides the sky there
     sky::Pass held;

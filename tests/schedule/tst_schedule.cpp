@@ -10,6 +10,8 @@
 #include "schedule/schedule.h"
 #include "schedule/scheduletext.h"
 
+#include "sky/passes.h"
+#include "sky/sgp4.h"
 #include "sky/tleformat.h"
 #include "sky/elementsetformat.h"
 #include "sky/utctime.h"
@@ -253,6 +255,31 @@ private slots:
         for (const ScheduledPass &p : s.passes) {
             QCOMPARE(p.reason, DropReason::StaleElements);
             QVERIFY2(p.why.contains("days from AOS (epoch 2018-01-2"), qPrintable(p.why));
+        }
+    }
+
+    void theMinimumElevationFiltersPassesAndKeepsTheirAos()
+    {
+        // A pass is one thing everywhere: AOS and LOS at the horizon, as the
+        // window's table and `slew --passes` give them. The schedule's
+        // minimum elevation keeps the passes that climb to it, whole.
+        ScheduleSettings settings = settingsFrom();
+        settings.hours = 24;
+        const slew::tracking::TrackTarget flock = satellite("FLOCK 2P-1");
+        const slew::sky::PassWindow window{settings.startJulian, settings.startJulian + 1.0, 0.0};
+        const QList<slew::sky::Pass> all = slew::sky::predictPasses(slew::sky::Sgp4(flock.elements), jo65hq(), window);
+        settings.minElevationDeg = 30;
+        const Schedule s = planSchedule({flock}, jo65hq(), rotator(450, 180), settings);
+        QList<slew::sky::Pass> high;
+        for (const slew::sky::Pass &p : all)
+            if (p.maxElevationDeg() >= 30)
+                high << p;
+        QVERIFY(!high.isEmpty() && high.size() < all.size()); // some climb to 30°, some do not
+        QCOMPARE(s.passes.size(), high.size());
+        for (int i = 0; i < high.size(); ++i) {
+            QCOMPARE(s.passes.at(i).pass.aos.julian, high.at(i).aos.julian);
+            QCOMPARE(s.passes.at(i).pass.los.julian, high.at(i).los.julian);
+            QCOMPARE(s.passes.at(i).startJulian, high.at(i).aos.julian); // tracked from the horizon
         }
     }
 
