@@ -29,7 +29,9 @@
 #include "rehearsalmarker.h"
 #include "timecontroller.h"
 #include "trafficconsole.h"
+#include "trackingline.h"
 #include "trackingpanel.h"
+#include "upcomingpanel.h"
 #include "wizard/setupwizard.h"
 #include "alignmentpanel.h"
 #include "operatoractions.h"
@@ -47,6 +49,7 @@
 
 #include <QDateTime>
 #include <QGuiApplication>
+#include <QHBoxLayout>
 #include <QScreen>
 #include <QMenuBar>
 #include <QCoreApplication>
@@ -78,6 +81,7 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     m_goto = new GotoPanel(session);
     m_jog = new JogPad(session);
     m_stop = new StopButton([station](const QString &cause) { return bool(station->stop(cause)); });
+    m_trackingLine = new TrackingLine(station);
     m_parkHome = new ParkHomePanel(session);
     m_presets = new PresetPanel(session);
     m_charts = new TelemetryCharts(&m_recorder->history());
@@ -140,6 +144,14 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     m_trackingTabs->setObjectName(QStringLiteral("trackingTabs"));
     m_trackingTabs->setDocumentMode(true);
     m_trackingTabs->addTab(oneTarget, tr("One target"));
+    // The favourites' next passes, soonest first; a double click opens one.
+    m_upcoming = new UpcomingPanel(station);
+    m_trackingTabs->addTab(m_upcoming, tr("Upcoming"));
+    connect(m_tracking, &TrackingPanel::favouritesChanged, m_upcoming, &UpcomingPanel::refresh);
+    connect(m_upcoming, &UpcomingPanel::targetChosen, this, [this, oneTarget](const QString &name) {
+        m_tracking->selectTarget(name);
+        bringToFront(oneTarget);
+    });
     m_trackingTabs->addTab(m_schedule, tr("Schedule"));
     m_history = new HistoryPanel(station);
     m_trackingTabs->addTab(m_history, tr("History"));
@@ -409,7 +421,11 @@ QWidget *MainWindow::buildControlColumn()
     l->addWidget(titledGroup(tr("Position"), m_readout));
     l->addWidget(titledGroup(tr("Go to"), m_goto));
     l->addWidget(titledGroup(tr("Jog: hold, or arrow keys"), m_jog));
-    l->addWidget(m_stop);
+    // STOP, and beside it what Slew's tracking is doing: one row.
+    auto *stopRow = new QHBoxLayout;
+    stopRow->addWidget(m_stop, 1);
+    stopRow->addWidget(m_trackingLine, 1);
+    l->addLayout(stopRow);
     l->addWidget(m_parkHome);
     l->addWidget(titledGroup(tr("Presets"), m_presets), 1);
     return column;

@@ -48,7 +48,9 @@ class TelemetryCharts;
 class TelemetryRecorder;
 class TimeController;
 class TrafficConsole;
+class TrackingLine;
 class TrackingPanel;
+class UpcomingPanel;
 
 }
 
@@ -76,6 +78,8 @@ public:
     GotoPanel *gotoPanel() const { return m_goto; }
     JogPad *jogPad() const { return m_jog; }
     StopButton *stopButton() const { return m_stop; }
+    TrackingLine *trackingLine() const { return m_trackingLine; }
+    UpcomingPanel *upcomingPanel() const { return m_upcoming; }
     ParkHomePanel *parkHomePanel() const { return m_parkHome; }
     PresetPanel *presetPanel() const { return m_presets; }
     TelemetryCharts *telemetryCharts() const { return m_charts; }
@@ -141,6 +145,8 @@ private:
     GotoPanel *m_goto;
     JogPad *m_jog;
     StopButton *m_stop;
+    TrackingLine *m_trackingLine; // beside STOP: what is tracked, until when
+    UpcomingPanel *m_upcoming;
     ParkHomePanel *m_parkHome;
     PresetPanel *m_presets;
     TelemetryCharts *m_charts;

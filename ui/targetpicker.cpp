@@ -212,6 +212,7 @@ void TargetPicker::toggleFavourite(const FavouriteTarget &target)
     QSettings settings;
     m_favourites.save(settings);
     fill();
+    emit favouritesChanged();
 }
 
 void TargetPicker::showMenu(const QPoint &at)

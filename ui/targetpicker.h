@@ -43,6 +43,8 @@ public:
 signals:
     // Another target, or the same one with elements reloaded.
     void chosenChanged();
+    // A target was marked or unmarked (saved in the settings already).
+    void favouritesChanged();
 
 private:
     void fill();

@@ -3,7 +3,9 @@
 
 #include "elementsetages.h"
 #include "elementsetsdialog.h"
+#include "passplanbadge.h"
 #include "targetpicker.h"
+#include "trackingline.h"
 
 #include "session/rotatorsession.h"
 #include "sky/observation.h"
@@ -35,30 +37,6 @@ namespace {
 constexpr double kLookAheadDays = 1.0;
 constexpr double kLookBackDays = 1.0 / 24.0; // an hour: any LEO pass under way rose within it
 constexpr double kDopplerReferenceHz = 435e6;
-
-QString hms(double seconds)
-{
-    const qint64 s = qint64(std::max(0.0, seconds));
-    return QStringLiteral("%1:%2:%3").arg(s / 3600).arg((s / 60) % 60, 2, 10, QLatin1Char('0')).arg(s % 60, 2, 10, QLatin1Char('0'));
-}
-
-QString badge(const tracking::PassPlan &plan)
-{
-    if (!plan.isValid())
-        return QObject::tr("no plan: %1").arg(plan.refusal);
-    QStringList parts;
-    if (plan.overTheTop)
-        parts << QObject::tr("over the top");
-    else if (plan.flipped)
-        parts << QObject::tr("flip");
-    if (plan.usesOverlap)
-        parts << QObject::tr("overlap");
-    if (plan.unwinds > 0)
-        parts << QObject::tr("unwind");
-    if (!plan.followable())
-        parts << QObject::tr("lags %1°").arg(plan.predictedWorstDeg, 0, 'f', 1);
-    return parts.isEmpty() ? QObject::tr("plain") : parts.join(QStringLiteral(", "));
-}
 
 } // namespace
 
@@ -92,7 +70,6 @@ TrackingPanel::TrackingPanel(station::Station *station, QWidget *parent)
     m_track->setObjectName(QStringLiteral("track"));
     m_stopTracking = new QPushButton(tr("Stop tracking"));
     m_stopTracking->setObjectName(QStringLiteral("stopTracking"));
-    m_stopTracking->setEnabled(false);
 
     auto *top = new QFormLayout;
     top->addRow(tr("Station"), m_stationLine);
@@ -109,23 +86,60 @@ TrackingPanel::TrackingPanel(station::Station *station, QWidget *parent)
     layout->addWidget(m_live);
 
     connect(m_picker, &TargetPicker::chosenChanged, this, &TrackingPanel::showPasses);
+    connect(m_picker, &TargetPicker::favouritesChanged, this, &TrackingPanel::favouritesChanged);
     connect(m_passes, &QTableWidget::itemSelectionChanged, this, &TrackingPanel::onPassChosen);
     connect(m_track, &QPushButton::clicked, this, &TrackingPanel::startTracking);
     connect(m_stopTracking, &QPushButton::clicked, this, [this] { m_station->untrack(tr("stopped from the Tracking tab")); });
     connect(m_sets, &sky::ElementSetSources::setsChanged, this, &TrackingPanel::showSetAges);
+    connect(m_sets, &sky::ElementSetSources::setsChanged, this, &TrackingPanel::showButtons);
     connect(m_session, &session::RotatorSession::profileChanged, this, &TrackingPanel::showPasses);
     connect(m_runner, &tracking::PassRunner::logLine, this, &TrackingPanel::message);
-    connect(&m_runner->tracker(), &tracking::Tracker::stateChanged, this, [this] {
-        m_stopTracking->setEnabled(m_runner->isRunning());
-        m_track->setEnabled(!m_runner->isRunning());
-    });
+    connect(&m_runner->tracker(), &tracking::Tracker::stateChanged, this, &TrackingPanel::showButtons);
+    connect(m_runner, &tracking::PassRunner::logLine, this, &TrackingPanel::showButtons); // started, stopped
+    connect(m_picker, &TargetPicker::chosenChanged, this, &TrackingPanel::showButtons);
+    connect(m_session, &session::RotatorSession::stateChanged, this, &TrackingPanel::showButtons);
     connect(&m_tick, &QTimer::timeout, this, &TrackingPanel::refreshLive);
     m_tick.start(1000);
     connect(m_station, &station::Station::placeChanged, this, &TrackingPanel::showStation);
+    connect(m_station, &station::Station::placeChanged, this, &TrackingPanel::showButtons);
     // A clock started again or sent back to real time: the day's passes are
     // another day's. (A running tracker plans again by itself: PassRunner.)
     connect(m_clock, &tracking::StationClock::changed, this, &TrackingPanel::showPasses);
     showStation();
+    showButtons();
+}
+
+void TrackingPanel::showButtons()
+{
+    // Each button says what it acts on, and a greyed one says why.
+    const auto shortName = [](const QString &name) { return name.size() > 24 ? name.left(23) + QChar(0x2026) : name; };
+    if (m_runner->isRunning()) {
+        const QString name = m_runner->target().name();
+        m_track->setText(tr("Track"));
+        m_track->setEnabled(false);
+        m_track->setToolTip(tr("Slew is tracking %1: Stop tracking first").arg(name));
+        m_stopTracking->setText(tr("Stop tracking %1").arg(shortName(name)));
+        m_stopTracking->setEnabled(true);
+        m_stopTracking->setToolTip(tr("Stop tracking %1; the antenna stays where it is").arg(name));
+        return;
+    }
+    m_stopTracking->setText(tr("Stop tracking"));
+    m_stopTracking->setEnabled(false);
+    m_stopTracking->setToolTip(tr("Nothing is being tracked"));
+    const std::optional<sky::FavouriteTarget> chosen = m_picker->chosen();
+    const std::optional<TrackTarget> target = chosenTarget();
+    const QString name = target ? target->name() : chosen ? chosen->name : QString();
+    m_track->setEnabled(true); // a click on what cannot start says why, as the tooltip does
+    m_track->setText(name.isEmpty() ? tr("Track") : tr("Track %1").arg(shortName(name)));
+    QStringList missing;
+    if (!target)
+        missing << (chosen ? tr("%1 is not in the loaded element sets").arg(name) : tr("pick a target above"));
+    if (!m_station->place())
+        missing << tr("set the station (Sky → Station…)");
+    if (!m_session->isConnected())
+        missing << tr("connect a rotator");
+    m_track->setToolTip(missing.isEmpty() ? tr("Track every pass of %1 from the next one").arg(name)
+                                          : tr("To track: %1").arg(missing.join(QStringLiteral("; "))));
 }
 
 void TrackingPanel::showStation()
@@ -227,7 +241,7 @@ void TrackingPanel::fillPasses(const QList<tracking::PlannedPass> &planned)
                                 QStringLiteral("%1°").arg(p.aos.azimuthDeg, 0, 'f', 0),
                                 QStringLiteral("%1°").arg(p.maxElevationDeg(), 0, 'f', 1),
                                 sky::utcFromJulian(p.los.julian).toString(QStringLiteral("MM-dd HH:mm:ss")),
-                                QStringLiteral("%1°").arg(p.los.azimuthDeg, 0, 'f', 0), badge(one.plan)};
+                                QStringLiteral("%1°").arg(p.los.azimuthDeg, 0, 'f', 0), passPlanBadge(one.plan)};
         for (int c = 0; c < cells.size(); ++c) {
             auto *item = new QTableWidgetItem(cells[c]);
             item->setToolTip(one.plan.describe());
@@ -287,8 +301,7 @@ void TrackingPanel::startTracking()
         emit message(refused);
         return;
     }
-    m_track->setEnabled(false);
-    m_stopTracking->setEnabled(true);
+    showButtons();
 }
 
 void TrackingPanel::refreshLive()
@@ -309,9 +322,9 @@ void TrackingPanel::refreshLive()
     } else if (!next) {
         m_countdown->setText(m_planned.isEmpty() && chosenTarget() ? tr("no pass in the next day") : QString());
     } else if (next->aos.julian > now) {
-        m_countdown->setText(tr("AOS in %1").arg(hms((next->aos.julian - now) * sky::kSecondsPerDay)));
+        m_countdown->setText(tr("AOS in %1").arg(TrackingLine::countdown((next->aos.julian - now) * sky::kSecondsPerDay)));
     } else {
-        m_countdown->setText(tr("up now: LOS in %1").arg(hms((next->los.julian - now) * sky::kSecondsPerDay)));
+        m_countdown->setText(tr("up now: LOS in %1").arg(TrackingLine::countdown((next->los.julian - now) * sky::kSecondsPerDay)));
     }
 
     const std::optional<sky::Station> place = m_station->place();

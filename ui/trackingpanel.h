@@ -72,6 +72,8 @@ signals:
     void message(const QString &text);
     // The pass table is filled (or emptied) for the target chosen.
     void passesShown();
+    // The operator marked or unmarked a favourite.
+    void favouritesChanged();
 
 private:
     void showStation();
@@ -81,6 +83,7 @@ private:
     void onPassChosen();
     void refreshLive();
     void startTracking();
+    void showButtons(); // what Track and Stop tracking act on, and why one is greyed
     tracking::RotatorReach reach() const;
     std::optional<tracking::TrackTarget> chosenTarget() const;
 

@@ -4,6 +4,7 @@
 #include "alarmmonitor.h"
 #include "dopplerradio.h"
 #include "station.h"
+#include "trackingnow.h"
 
 #include "remote/stationtopics.h"
 #include "session/rotatorsession.h"
@@ -187,27 +188,14 @@ remote::StationState StatePublisher::state() const
     if (s->parkKnown())
         out.park = QPointF(s->parkAzimuth(), s->parkElevation());
     out.azimuthOnly = s->isAzimuthOnly();
-    if (const tracking::PassRunner *runner = m_station->passRunner(); runner && runner->isRunning()) {
-        switch (runner->tracker().state()) {
-        case tracking::Tracker::State::Waiting:
-            out.tracking = QStringLiteral("waiting");
-            break;
-        case tracking::Tracker::State::Tracking:
-            out.tracking = QStringLiteral("tracking");
-            break;
-        case tracking::Tracker::State::Done:
-            out.tracking = QStringLiteral("done");
-            break;
-        default:
-            out.tracking = QStringLiteral("planning");
-        }
-        out.trackingTarget = runner->target().name().left(100);
-        if (runner->target().kind == tracking::TrackTarget::Kind::Satellite && runner->target().elements.catalogueNumber > 0)
-            out.trackingNorad = runner->target().elements.catalogueNumber;
-        if (const auto &pass = runner->pass()) {
-            out.passAosMs = julianToUnixMs(pass->aos.julian);
-            out.passLosMs = julianToUnixMs(pass->los.julian);
-            out.passMaxElevation = pass->maxElevationDeg();
+    if (const TrackingNow followed = trackingNow(m_station->passRunner()); followed.phase != TrackingNow::Phase::Off) {
+        out.tracking = phaseWord(followed.phase);
+        out.trackingTarget = followed.target.left(100);
+        out.trackingNorad = followed.norad;
+        if (followed.pass) {
+            out.passAosMs = julianToUnixMs(followed.pass->aos.julian);
+            out.passLosMs = julianToUnixMs(followed.pass->los.julian);
+            out.passMaxElevation = followed.pass->maxElevationDeg();
         }
     }
     for (const QString &alarm : m_station->alarms()->activeAlarms().mid(0, remote::kMostAlarms))

@@ -16,6 +16,8 @@
 #include "bridge/rotctldserver.h"
 #include "elementsetages.h"
 #include "polarplotwidget.h"
+#include "trackingline.h"
+#include "upcomingpanel.h"
 #include "sky/elementsetsources.h"
 #include "sky/utctime.h"
 #include "stopbutton.h"
@@ -39,7 +41,9 @@
 #include <QXYSeries>
 
 using slew::ui::TelemetryRecorder;
+using slew::ui::TrackingLine;
 using slew::ui::TrackingPanel;
+using slew::ui::UpcomingPanel;
 
 namespace {
 
@@ -124,6 +128,11 @@ private slots:
         QVERIFY(overlay->sky.size() > 400);
         QCOMPARE(overlay->planned.size(), overlay->sky.size());
         QVERIFY2(panel->countdown()->text().startsWith(QStringLiteral("AOS in 0:00:1")), qPrintable(panel->countdown()->text()));
+        // The buttons say what they act on; the line under STOP, that nothing is tracked.
+        QCOMPARE(panel->trackButton()->text(), QStringLiteral("Track FLOCK 2P-1"));
+        QVERIFY(!panel->stopTrackingButton()->isEnabled());
+        QCOMPARE(panel->stopTrackingButton()->toolTip(), QStringLiteral("Nothing is being tracked"));
+        QCOMPARE(f.window->trackingLine()->text(), QStringLiteral("Not tracking"));
 
         // Track: the rotator is the tracker's, remote trackers are held off.
         slew::bridge::RotctldServer *server = f.window->rotctldServer();
@@ -132,12 +141,22 @@ private slots:
         QTRY_VERIFY(panel->runner()->holdsRotator()); // moving to the AOS point
         QVERIFY(server->isRemoteHeld());
         QVERIFY(!panel->trackButton()->isEnabled());
+        QCOMPARE(panel->trackButton()->toolTip(), QStringLiteral("Slew is tracking FLOCK 2P-1: Stop tracking first"));
+        QCOMPARE(panel->stopTrackingButton()->text(), QStringLiteral("Stop tracking FLOCK 2P-1"));
+        // The line under STOP, with the pass's times from the table: waiting
+        // for the AOS, or (past it on a slow machine) tracking until LOS.
+        const QString line = f.window->trackingLine()->text();
+        const QString los = table->item(0, 3)->text().mid(6);
+        QVERIFY2(line.startsWith(QStringLiteral("Next: FLOCK 2P-1, AOS 07:42:56 UTC, in 0:00:"))
+                     || line.startsWith(QStringLiteral("Tracking FLOCK 2P-1 until %1 UTC, 0:0").arg(los)),
+                 qPrintable(line));
 
         // Stop tracking hands the rotator back.
         QTest::mouseClick(panel->stopTrackingButton(), Qt::LeftButton);
         QVERIFY(!panel->runner()->isRunning());
         QVERIFY(!server->isRemoteHeld());
         QVERIFY(panel->trackButton()->isEnabled());
+        QCOMPARE(f.window->trackingLine()->text(), QStringLiteral("Not tracking"));
 
         // The window's Stop ends tracking too.
         QTest::mouseClick(panel->trackButton(), Qt::LeftButton);
@@ -517,6 +536,100 @@ private slots:
         QTest::mouseClick(panel->trackButton(), Qt::LeftButton);
         QVERIFY(!panel->runner()->isRunning());
         QVERIFY(messages.last().at(0).toString().contains(QStringLiteral("station")));
+        // The button says what it would track, and what is missing for it.
+        QCOMPARE(panel->trackButton()->text(), QStringLiteral("Track the sun"));
+        QCOMPARE(panel->trackButton()->toolTip(),
+                 QStringLiteral("To track: set the station (Sky → Station…); connect a rotator"));
+    }
+
+    void upcomingListsTheFavouritesNextPasses()
+    {
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
+        QVERIFY(f.connectAndWait());
+        QVERIFY(f.loadElementSets(kAllSets));
+        TrackingPanel *panel = f.window->trackingPanel();
+        UpcomingPanel *upcoming = f.window->upcomingPanel();
+        const auto planned = [upcoming] { return QTest::qWaitFor([upcoming] { return !upcoming->isPlanning(); }, 10000); };
+        const auto status = [upcoming] { return upcoming->findChild<QLabel *>(QStringLiteral("upcomingStatus"))->text(); };
+        QVERIFY(planned());
+        QVERIFY2(status().contains(QStringLiteral("Set the station")), qPrintable(status()));
+        const slew::tracking::StationClock clock(slew::sky::julianFromIso(QStringLiteral("2018-01-22T07:42:45Z")), 1.0);
+        rehearse(panel, clock);
+        QVERIFY(planned());
+        QCOMPARE(upcoming->table()->rowCount(), 0); // no favourites yet: it says how to get some
+        QVERIFY2(status().contains(QStringLiteral("Star ")), qPrintable(status()));
+
+        // Two favourites, starred in One target.
+        QVERIFY(panel->selectTarget(QStringLiteral("FLOCK 2P-1")));
+        QVERIFY(passesPlanned(panel));
+        const QList<slew::sky::Pass> flockPasses = panel->passes();
+        QTest::mouseClick(panel->targetPicker()->favouriteButton(), Qt::LeftButton);
+        QVERIFY(panel->selectTarget(QStringLiteral("sun")));
+        QTest::mouseClick(panel->targetPicker()->favouriteButton(), Qt::LeftButton);
+        QVERIFY(planned());
+
+        // Soonest first, each pass as One target plans it, with its countdown.
+        const QList<UpcomingPanel::Row> &rows = upcoming->rows();
+        QVERIFY(rows.size() >= flockPasses.size() + 1);
+        for (int i = 1; i < rows.size(); ++i)
+            QVERIFY(rows.at(i - 1).planned.pass.aos.julian <= rows.at(i).planned.pass.aos.julian);
+        QTableWidget *table = upcoming->table();
+        const auto firstRowOf = [table](const QString &name) {
+            for (int row = 0; row < table->rowCount(); ++row)
+                if (table->item(row, 0)->text() == name)
+                    return row;
+            return -1;
+        };
+        const int flockRow = firstRowOf(QStringLiteral("FLOCK 2P-1")), sunRow = firstRowOf(QStringLiteral("the sun"));
+        QVERIFY(flockRow >= 0 && sunRow >= 0);
+        QCOMPARE(table->item(flockRow, 1)->text(), QStringLiteral("01-22 07:42:56"));
+        QVERIFY2(table->item(flockRow, 2)->text().startsWith(QStringLiteral("0:00:")), qPrintable(table->item(flockRow, 2)->text()));
+        QCOMPARE(table->item(flockRow, 3)->text(), QStringLiteral("7.1°"));
+        QCOMPARE(table->item(flockRow, 5)->text(), QStringLiteral("plain"));
+        QList<double> flockAos, sunAos;
+        for (const UpcomingPanel::Row &r : rows)
+            (r.target == QStringLiteral("the sun") ? sunAos : flockAos) << r.planned.pass.aos.julian;
+        QCOMPARE(flockAos.size(), flockPasses.size());
+        for (int i = 0; i < flockAos.size(); ++i)
+            QCOMPARE(flockAos.at(i), flockPasses.at(i).aos.julian);
+        QVERIFY(!sunAos.isEmpty());
+
+        // A double click opens the pass's target in One target.
+        QVERIFY(panel->selectTarget(QStringLiteral("FLOCK 2P-1")));
+        emit table->cellDoubleClicked(sunRow, 0);
+        QCOMPARE(panel->targetPicker()->chosen()->kind, slew::sky::FavouriteTarget::Kind::Sun);
+        QVERIFY(panel->isVisibleTo(f.window.get()));
+        QSettings().remove(QStringLiteral("tracking/favourites"));
+    }
+
+    void theLineUnderStopSaysWhatIsTracked()
+    {
+        // Each phase of the station's tracking, as the line words it, at
+        // 2018-01-22 07:40:00 UTC for a pass 07:42:56-07:51:04.
+        using slew::station::TrackingNow;
+        const double now = *slew::sky::julianFromIso(QStringLiteral("2018-01-22T07:40:00Z"));
+        TrackingNow followed;
+        QCOMPARE(TrackingLine::textFor(followed, now), QStringLiteral("Not tracking"));
+        followed.target = QStringLiteral("FLOCK 2P-1");
+        followed.phase = TrackingNow::Phase::Planning;
+        QCOMPARE(TrackingLine::textFor(followed, now), QStringLiteral("FLOCK 2P-1: finding the next pass"));
+        slew::sky::Pass pass;
+        pass.aos.julian = *slew::sky::julianFromIso(QStringLiteral("2018-01-22T07:42:56Z"));
+        pass.los.julian = *slew::sky::julianFromIso(QStringLiteral("2018-01-22T07:51:04Z"));
+        followed.pass = pass;
+        followed.phase = TrackingNow::Phase::Waiting;
+        QCOMPARE(TrackingLine::textFor(followed, now), QStringLiteral("Next: FLOCK 2P-1, AOS 07:42:56 UTC, in 0:02:56"));
+        QCOMPARE(TrackingLine::textFor(followed, pass.aos.julian + 1.0 / 86400),
+                 QStringLiteral("FLOCK 2P-1: the antenna is on its way, LOS 07:51:04 UTC"));
+        followed.phase = TrackingNow::Phase::Tracking;
+        QCOMPARE(TrackingLine::textFor(followed, pass.aos.julian + 60.0 / 86400),
+                 QStringLiteral("Tracking FLOCK 2P-1 until 07:51:04 UTC, 0:07:08 left"));
+        followed.phase = TrackingNow::Phase::Done;
+        QCOMPARE(TrackingLine::textFor(followed, pass.los.julian), QStringLiteral("FLOCK 2P-1: pass ended, finding the next"));
+        followed.phase = TrackingNow::Phase::Tracking;
+        followed.pass.reset();
+        followed.target = QStringLiteral("az 200.0°, el 40.0°");
+        QCOMPARE(TrackingLine::textFor(followed, now), QStringLiteral("Tracking az 200.0°, el 40.0°"));
     }
 };
 

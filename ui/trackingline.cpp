@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "trackingline.h"
+
+#include "sky/utctime.h"
+#include "station/station.h"
+#include "tracking/passrunner.h"
+#include "tracking/stationclock.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace slew::ui {
+
+namespace {
+
+QString utcClock(double julian)
+{
+    return sky::utcFromJulian(julian).toString(QStringLiteral("HH:mm:ss"));
+}
+
+} // namespace
+
+TrackingLine::TrackingLine(station::Station *station, QWidget *parent) : QLabel(parent), m_station(station)
+{
+    setObjectName(QStringLiteral("trackingLine"));
+    setTextFormat(Qt::PlainText);
+    setWordWrap(true);
+    setAlignment(Qt::AlignLeft | Qt::AlignVCenter);
+    tracking::PassRunner *runner = station->passRunner();
+    connect(&runner->tracker(), &tracking::Tracker::stateChanged, this, &TrackingLine::refresh);
+    connect(runner, &tracking::PassRunner::logLine, this, &TrackingLine::refresh); // planned, started, stopped
+    connect(station->clock(), &tracking::StationClock::changed, this, &TrackingLine::refresh);
+    connect(&m_tick, &QTimer::timeout, this, &TrackingLine::refresh);
+    m_tick.start(1000);
+    refresh();
+}
+
+QString TrackingLine::countdown(double seconds)
+{
+    const qint64 s = std::llround(std::max(0.0, seconds)); // 427.9999 s of arithmetic is 7:08
+    return QStringLiteral("%1:%2:%3").arg(s / 3600).arg((s / 60) % 60, 2, 10, QLatin1Char('0')).arg(s % 60, 2, 10, QLatin1Char('0'));
+}
+
+QString TrackingLine::textFor(const station::TrackingNow &followed, double nowJulian)
+{
+    using Phase = station::TrackingNow::Phase;
+    const QString &name = followed.target;
+    const auto secondsTo = [nowJulian](double julian) { return (julian - nowJulian) * sky::kSecondsPerDay; };
+    switch (followed.phase) {
+    case Phase::Off:
+        return tr("Not tracking");
+    case Phase::Planning:
+        return tr("%1: finding the next pass").arg(name);
+    case Phase::Done:
+        return tr("%1: pass ended, finding the next").arg(name);
+    case Phase::Waiting:
+        if (!followed.pass)
+            return tr("%1: the antenna is on its way").arg(name);
+        if (followed.pass->aos.julian > nowJulian)
+            return tr("Next: %1, AOS %2 UTC, in %3")
+                .arg(name, utcClock(followed.pass->aos.julian), countdown(secondsTo(followed.pass->aos.julian)));
+        return tr("%1: the antenna is on its way, LOS %2 UTC").arg(name, utcClock(followed.pass->los.julian));
+    case Phase::Tracking:
+        if (!followed.pass)
+            return tr("Tracking %1").arg(name); // a fixed direction, the sun all day: no LOS to count to
+        return tr("Tracking %1 until %2 UTC, %3 left")
+            .arg(name, utcClock(followed.pass->los.julian), countdown(secondsTo(followed.pass->los.julian)));
+    }
+    return {};
+}
+
+void TrackingLine::refresh()
+{
+    const station::TrackingNow followed = station::trackingNow(m_station->passRunner());
+    const QString text = textFor(followed, m_station->clock()->nowJulian());
+    if (text != this->text()) // a label's new text lays its column out again
+        setText(text);
+    setEnabled(followed.phase != station::TrackingNow::Phase::Off); // greyed when there is nothing to say
+}
+
+} // namespace slew::ui
