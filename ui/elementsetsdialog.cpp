@@ -12,6 +12,7 @@
 #include "sky/utctime.h"
 
 #include <QDateTime>
+#include <QDir>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -126,6 +127,9 @@ ElementSetsDialog::ElementSetsDialog(sky::ElementSetSources *sources, QWidget *p
         showStatus();
     });
     connect(m_sources, &sky::ElementSetSources::setsChanged, this, &ElementSetsDialog::showStatus);
+    connect(m_sources, &sky::ElementSetSources::loaded, this, [this] {
+        m_message->setText(tr("Read: %1 in all.").arg(count(m_sources->sets().size(), tr("element set"), tr("element sets"))));
+    });
     connect(m_sources, &sky::ElementSetSources::finished, this, [this] {
         m_refresh->setEnabled(true);
         qsizetype failed = 0;
@@ -189,6 +193,18 @@ void ElementSetsDialog::addFile(const QString &path)
     if (!text.isEmpty())
         text += u'\n';
     m_urls->setPlainText(text + QUrl::fromLocalFile(path).toString());
+    // Its sets at once: the files are read, the downloads stay as cached
+    // (no network until Refresh).
+    QList<QUrl> urls;
+    QString error;
+    if (!readUrls(&urls, &error)) {
+        m_message->setText(error);
+        return;
+    }
+    sky::saveElementSetUrls(urls);
+    m_sources->setUrls(urls);
+    m_message->setText(tr("Reading %1…").arg(QDir::toNativeSeparators(path)));
+    m_sources->loadFromCache(true);
 }
 
 void ElementSetsDialog::showStatus()

@@ -1,5 +1,8 @@
 #include "eventlog.h"
 
+#include "sky/utctime.h"
+#include "tracking/stationclock.h"
+
 #include <QScrollBar>
 #include <QTextCursor>
 
@@ -10,10 +13,22 @@ EventLog::EventLog(QWidget *parent) : QPlainTextEdit(parent)
     setObjectName(QStringLiteral("eventLog"));
     setReadOnly(true);
     setMaximumBlockCount(kMaxLines);
-    setLineWrapMode(QPlainTextEdit::NoWrap);
+    // A long line wraps, a long word in it too (a URI, a controller's
+    // reply): all of every line in view, its time first.
+    setLineWrapMode(QPlainTextEdit::WidgetWidth);
+    setWordWrapMode(QTextOption::WrapAtWordBoundaryOrAnywhere);
     QFont f(QStringLiteral("monospace"));
     f.setStyleHint(QFont::Monospace);
     setFont(f);
+}
+
+void EventLog::addEvent(station::AlarmMonitor::Severity severity, const QString &text)
+{
+    if (m_clock && m_clock->isRehearsal()) {
+        addEvent(sky::utcFromJulian(m_clock->nowJulian()).toLocalTime(), severity, tr("[rehearsal] %1").arg(text));
+        return;
+    }
+    addEvent(QDateTime::currentDateTime(), severity, text);
 }
 
 void EventLog::addEvent(const QDateTime &when, station::AlarmMonitor::Severity severity, const QString &text)
@@ -28,9 +43,8 @@ void EventLog::addEvent(const QDateTime &when, station::AlarmMonitor::Severity s
                    .arg(when.toString(QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz")), QLatin1String(colour),
                         QLatin1String(tag), text.toHtmlEscaped()));
     // The view follows the text cursor, which appending leaves at the end of
-    // the new line: a long one carried the view right (at once, or when the
-    // tab was next shown) and hid every line's time. The cursor goes to the
-    // start of the last line, so the view stays at the bottom with the times.
+    // the new line. The cursor goes to the start of the last line, so the
+    // view stays at the bottom with the times.
     QTextCursor cursor = textCursor();
     cursor.movePosition(QTextCursor::End);
     cursor.movePosition(QTextCursor::StartOfBlock);

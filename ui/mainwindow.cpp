@@ -92,6 +92,7 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     m_config = new ConfigEditor(session);
     m_traffic = new TrafficConsole(session);
     m_log = new EventLog;
+    m_log->setClock(station->clock()); // a rehearsal's lines in its time
     m_rotctld = station->server();
     m_trackers = new RotctldPanel(m_rotctld);
     m_controllerRotors = station->controllerRotors();
@@ -107,7 +108,7 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     connect(m_elementSets, &sky::ElementSetSources::loaded, this, [this] {
         for (const sky::ElementSetSourceStatus &s : m_elementSets->status())
             if (!s.error.isEmpty())
-                m_log->addEvent(QDateTime::currentDateTime(), station::AlarmMonitor::Severity::Warning,
+                m_log->addEvent(station::AlarmMonitor::Severity::Warning,
                                 tr("element sets: %1: %2").arg(s.url.toString(), s.error));
     });
     // Whenever a refresh ends, from the dialog or elsewhere: each source
@@ -118,7 +119,7 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
             if (!sky::sourceFailed(s))
                 continue;
             ++failed;
-            m_log->addEvent(QDateTime::currentDateTime(), station::AlarmMonitor::Severity::Warning,
+            m_log->addEvent(station::AlarmMonitor::Severity::Warning,
                             tr("element sets: %1").arg(sky::describeSource(s)));
         }
         // Never "refreshed" when a source kept its old copy.
@@ -204,7 +205,11 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     statusBar()->addPermanentWidget(resting);
     connect(m_alarms, &station::AlarmMonitor::restingChanged, resting, &ElidingLabel::setFullText);
     connect(m_connection, &ConnectionBar::disconnectRequested, m_alarms, &station::AlarmMonitor::expectDisconnect);
-    connect(m_alarms, &station::AlarmMonitor::eventLogged, m_log, &EventLog::addEvent);
+    // Stamped by the log's clock (a rehearsal's time during one), as every line.
+    connect(m_alarms, &station::AlarmMonitor::eventLogged, m_log,
+            [this](const QDateTime &, station::AlarmMonitor::Severity severity, const QString &text) {
+                m_log->addEvent(severity, text);
+            });
     connect(m_alarms, &station::AlarmMonitor::eventLogged, this,
             [this](const QDateTime &, station::AlarmMonitor::Severity, const QString &text) {
                 // The resting state has its own place at the foot: the event
@@ -279,7 +284,7 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     connect(m_goto, &GotoPanel::sentByEnter, m_plot, [this] { m_plot->setFocus(Qt::OtherFocusReason); });
     buildMenus();
     const QScreen *screen = QGuiApplication::primaryScreen();
-    new WindowState(this, splitter, m_tabs, screen ? screen->availableSize() : QSize(1440, 900));
+    new WindowState(this, splitter, m_tabs, screen ? screen->availableGeometry() : QRect(0, 0, 1440, 900));
 }
 
 void MainWindow::buildMenus()
@@ -399,13 +404,13 @@ void MainWindow::bringToFront(QWidget *page)
 
 void MainWindow::logInfo(const QString &text)
 {
-    m_log->addEvent(QDateTime::currentDateTime(), station::AlarmMonitor::Severity::Info, text);
+    m_log->addEvent(station::AlarmMonitor::Severity::Info, text);
     statusBar()->showMessage(text, 8000);
 }
 
 void MainWindow::reportProblem(const QString &text)
 {
-    m_log->addEvent(QDateTime::currentDateTime(), station::AlarmMonitor::Severity::Warning, text);
+    m_log->addEvent(station::AlarmMonitor::Severity::Warning, text);
     statusBar()->showMessage(text, 30000);
 }
 
@@ -502,7 +507,7 @@ void MainWindow::wireOperatorActions()
 {
     m_actions = new OperatorActions(m_station->moveWatch(), this);
     connect(m_actions, &OperatorActions::logged, this, [this](station::AlarmMonitor::Severity severity, const QString &text) {
-        m_log->addEvent(QDateTime::currentDateTime(), severity, text);
+        m_log->addEvent(severity, text);
         statusBar()->showMessage(text, severity == station::AlarmMonitor::Severity::Info ? 8000 : 30000);
     });
     // The lines that say where a move is going clear when it ends.

@@ -130,6 +130,12 @@ SchedulePanel::SchedulePanel(station::Station *station, QWidget *parent) : QWidg
     // What the preview depends on.
     connect(m_station, &station::Station::placeChanged, this, &SchedulePanel::preview);
     connect(m_station->elementSets(), &sky::ElementSetSources::setsChanged, this, &SchedulePanel::preview);
+    // The list names satellites by the loaded sets: at start they come after
+    // the list is restored, and a reload may rename one.
+    connect(m_station->elementSets(), &sky::ElementSetSources::setsChanged, this, [this] {
+        for (int i = 0; i < m_list->count(); ++i)
+            m_list->item(i)->setText(describeSpec(m_list->item(i)->data(kSpecRole).toString()));
+    });
     connect(m_station->clock(), &tracking::StationClock::changed, this, &SchedulePanel::preview);
     connect(&m_now, &QTimer::timeout, this, [this] { m_timeline->setNow(m_station->clock()->nowJulian()); });
     m_now.start(5000);

@@ -55,6 +55,19 @@ void ScheduleTimeline::setCurrent(const std::optional<ScheduledPass> &pass)
     update();
 }
 
+double ScheduleTimeline::startJulian() const
+{
+    // An empty plan has no start of its own (0, a day in 4713 BC).
+    return m_schedule.settings.startJulian > 0 ? m_schedule.settings.startJulian : m_now;
+}
+
+QString ScheduleTimeline::dayText() const
+{
+    if (!(startJulian() > 0))
+        return {};
+    return tr("UTC, %1").arg(sky::utcFromJulian(startJulian()).toString(QStringLiteral("d MMM")));
+}
+
 void ScheduleTimeline::setNow(double julian)
 {
     m_now = julian;
@@ -84,7 +97,7 @@ QRectF ScheduleTimeline::plotArea() const
 double ScheduleTimeline::xFor(double julian) const
 {
     const QRectF area = plotArea();
-    const double start = m_schedule.settings.startJulian;
+    const double start = startJulian();
     const double span = m_schedule.settings.hours / 24.0;
     if (!(span > 0))
         return area.left();
@@ -134,8 +147,7 @@ void ScheduleTimeline::paintEvent(QPaintEvent *)
     p.setFont(small);
 
     // The hours along the top, a tick every three.
-    const double start = m_schedule.settings.startJulian;
-    const QDateTime first = sky::utcFromJulian(start);
+    const double start = startJulian();
     p.setPen(kText);
     if (m_schedule.settings.hours > 0) {
         const double firstHour = std::ceil(start * 24.0 - 1e-9) / 24.0;
@@ -152,9 +164,7 @@ void ScheduleTimeline::paintEvent(QPaintEvent *)
         }
     }
     p.setPen(kText);
-    if (first.isValid())
-        p.drawText(QRectF(0, 0, kNameWidth - 4, kAxisHeight), Qt::AlignLeft | Qt::AlignVCenter,
-                   tr("UTC, %1").arg(first.toString(QStringLiteral("d MMM"))));
+    p.drawText(QRectF(0, 0, kNameWidth - 4, kAxisHeight), Qt::AlignLeft | Qt::AlignVCenter, dayText());
 
     // A lane a target, its name at the left.
     for (int i = 0; i < m_schedule.targets.size(); ++i) {

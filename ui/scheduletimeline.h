@@ -26,6 +26,10 @@ public:
     // Where a pass's bar is drawn, for tests; empty when it is not shown.
     QRectF barFor(const schedule::ScheduledPass &pass) const;
     const schedule::Schedule &schedule() const { return m_schedule; }
+    // Where the time line starts: the plan's start, or now while there is no
+    // plan; and the day over its names ("UTC, 5 Dec").
+    double startJulian() const;
+    QString dayText() const;
 
     QSize sizeHint() const override;
     QSize minimumSizeHint() const override;

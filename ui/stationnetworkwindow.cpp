@@ -119,9 +119,9 @@ void StationNetworkWindow::updateHeader()
         live += m_directory->isLive(it.key());
     const remote::MqttClient *client = m_directory->client();
     m_header->setText(client->isConnected()
-                          ? tr("REMOTE: station network on %1 · %2 stations, %3 live")
-                                .arg(m_directory->brokerDisplay())
-                                .arg(m_tiles.size())
+                          ? tr("REMOTE: station network on %1 · %2, %3 live")
+                                .arg(m_directory->brokerDisplay(),
+                                     m_tiles.size() == 1 ? tr("1 station") : tr("%1 stations").arg(m_tiles.size()))
                                 .arg(live)
                           : tr("REMOTE: station network on %1 · NOT CONNECTED: %2")
                                 .arg(m_directory->brokerDisplay(),

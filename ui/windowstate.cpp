@@ -26,13 +26,34 @@ QSize WindowState::openingSize(QSize available)
     return QSize(1440, 900).boundedTo(available);
 }
 
-WindowState::WindowState(QMainWindow *window, QSplitter *splitter, QTabWidget *tabs, QSize available)
+QRect WindowState::onScreen(QRect kept, QRect available)
+{
+    if (available.isEmpty())
+        return kept;
+    kept.setSize(kept.size().boundedTo(available.size()));
+    if (kept.right() > available.right())
+        kept.moveRight(available.right());
+    if (kept.bottom() > available.bottom())
+        kept.moveBottom(available.bottom());
+    if (kept.left() < available.left())
+        kept.moveLeft(available.left());
+    if (kept.top() < available.top())
+        kept.moveTop(available.top());
+    return kept;
+}
+
+WindowState::WindowState(QMainWindow *window, QSplitter *splitter, QTabWidget *tabs, QRect available)
     : QObject(window), m_window(window), m_splitter(splitter), m_tabs(tabs)
 {
     const QSettings settings;
-    // restoreGeometry keeps a window on a screen that has since shrunk.
-    if (!window->restoreGeometry(settings.value(QLatin1String(kGeometryKey)).toByteArray()))
-        window->resize(openingSize(available));
+    // restoreGeometry only brings back a window that would be wholly off
+    // the screen; one that stands partly out is moved in here.
+    if (window->restoreGeometry(settings.value(QLatin1String(kGeometryKey)).toByteArray())) {
+        if (const QRect kept = onScreen(window->geometry(), available); kept != window->geometry())
+            window->setGeometry(kept);
+    } else {
+        window->resize(openingSize(available.size()));
+    }
     if (!splitter->restoreState(settings.value(QLatin1String(kSplitterKey)).toByteArray())) {
         // The plot square where it can be, the tabs taking the rest.
         const int width = window->width();

@@ -6,6 +6,7 @@
 // put back at the next start.
 
 #include <QObject>
+#include <QRect>
 #include <QSize>
 
 class QMainWindow;
@@ -18,11 +19,15 @@ class WindowState : public QObject {
     Q_OBJECT
 public:
     // Restores what was kept, or lays the window out for a first start on a
-    // screen with room for `available`; from then on keeps every change.
-    WindowState(QMainWindow *window, QSplitter *splitter, QTabWidget *tabs, QSize available);
+    // screen whose room is `available`; from then on keeps every change.
+    WindowState(QMainWindow *window, QSplitter *splitter, QTabWidget *tabs, QRect available);
 
     // The first start's size: 1440x900, or the screen's room when smaller.
     static QSize openingSize(QSize available);
+    // A kept place and size brought wholly onto the screen's room: no
+    // bigger than it, moved in where it stood out (a window kept on a
+    // larger or second screen).
+    static QRect onScreen(QRect kept, QRect available);
 
 private:
     void keep();

@@ -115,7 +115,7 @@ void ElementSetSources::setUrls(const QList<QUrl> &urls)
         m_status[i].url = urls[i];
 }
 
-void ElementSetSources::loadFromCache()
+void ElementSetSources::loadFromCache(bool readFiles)
 {
     if (m_urls.isEmpty()) {
         // Still from the event loop, as when there is something to read.
@@ -128,7 +128,10 @@ void ElementSetSources::loadFromCache()
     for (int i = 0; i < m_urls.size(); ++i) {
         const QUrl url = m_urls[i];
         const QString file = cacheFile(url);
-        startJob(i, Step::Load, [url, file] { return loadCachedSource(url, file); });
+        if (readFiles && url.scheme().compare(u"file", Qt::CaseInsensitive) == 0)
+            startJob(i, Step::Load, [url, file] { return readLocalSource(url, file); });
+        else
+            startJob(i, Step::Load, [url, file] { return loadCachedSource(url, file); });
     }
 }
 

@@ -87,7 +87,9 @@ public:
 
     // Everything from the cache, with no network: what Slew starts with.
     // Read on worker threads; emits loaded() (and setsChanged()) when done.
-    void loadFromCache();
+    // With `readFiles`, a local file is read afresh rather than from its
+    // cached copy (a file just added has none): still no network.
+    void loadFromCache(bool readFiles = false);
     bool isLoading() const { return m_loading > 0; }
     // Fetch every URL; a source whose new copy fails or is not plausible
     // keeps its cached copy. Emits finished() (and setsChanged()) once all

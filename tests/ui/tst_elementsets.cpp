@@ -172,7 +172,12 @@ private slots:
         WindowFixture f;
         auto *dialog = openDialog(f);
         dialog->findChild<QPlainTextEdit *>(QStringLiteral("elementSetUrls"))->clear();
+        // Its sets at once, without a Refresh (and without the network).
+        QSignalSpy read(f.window->elementSets(), &slew::sky::ElementSetSources::loaded);
         dialog->addFile(path);
+        QVERIFY(read.count() > 0 || read.wait(20000));
+        QCOMPARE(f.window->elementSets()->sets().size(), 1);
+        QCOMPARE(f.window->elementSets()->urls(), QList<QUrl>{QUrl::fromLocalFile(path)});
         QSignalSpy done(f.window->elementSets(), &slew::sky::ElementSetSources::finished);
         QVERIFY(dialog->refresh());
         QVERIFY(done.count() > 0 || done.wait(20000));

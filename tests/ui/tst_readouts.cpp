@@ -8,6 +8,8 @@
 #include "positionreadout.h"
 
 #include "session/rotatorsession.h"
+#include "sky/utctime.h"
+#include "tracking/stationclock.h"
 
 #include <QApplication>
 #include <QCheckBox>
@@ -68,10 +70,11 @@ private slots:
         QCOMPARE(el->text().trimmed(), QStringLiteral("0.0°"));
     }
 
-    void eventLogKeepsTheTimesInView()
+    void eventLogKeepsEveryLineInView()
     {
         // As in the window: lines arrive while the Events tab is hidden,
-        // and it is opened later.
+        // and it is opened later. Long lines wrap, a long word in them too:
+        // nothing to scroll sideways to, the times in view.
         ui::EventLog log;
         for (int i = 0; i < 20; ++i)
             log.addEvent(QDateTime::currentDateTime(), station::AlarmMonitor::Severity::Warning,
@@ -79,11 +82,29 @@ private slots:
         log.resize(400, 200);
         log.show();
         QVERIFY(QTest::qWaitForWindowExposed(&log));
-        QVERIFY(log.horizontalScrollBar()->maximum() > 0); // there is somewhere to scroll to
-        QCOMPARE(log.horizontalScrollBar()->value(), 0);
+        QCOMPARE(log.horizontalScrollBar()->maximum(), 0);
+        QVERIFY(log.verticalScrollBar()->maximum() > 0); // the lines are taller instead
         // And while it is shown.
         log.addEvent(QDateTime::currentDateTime(), station::AlarmMonitor::Severity::Info, QString(500, u'y'));
-        QCOMPARE(log.horizontalScrollBar()->value(), 0);
+        QCOMPARE(log.horizontalScrollBar()->maximum(), 0);
+    }
+
+    void eventLogStampsARehearsalWithItsTime()
+    {
+        // On the station's clock: the computer's time, or during a
+        // rehearsal the rehearsal's, marked.
+        ui::EventLog log;
+        tracking::StationClock clock;
+        log.setClock(&clock);
+        log.addEvent(station::AlarmMonitor::Severity::Info, QStringLiteral("connected"));
+        QVERIFY2(log.toPlainText().startsWith(QDate::currentDate().toString(QStringLiteral("yyyy-MM-dd"))),
+                 qPrintable(log.toPlainText()));
+        const double start = *sky::julianFromIso(QStringLiteral("2018-01-22T09:19:00Z"));
+        clock.rehearse(start, 1.0);
+        log.addEvent(station::AlarmMonitor::Severity::Info, QStringLiteral("AOS"));
+        const QString last = log.toPlainText().split(u'\n').last();
+        const QString stamp = sky::utcFromJulian(start).toLocalTime().toString(QStringLiteral("yyyy-MM-dd HH:mm"));
+        QVERIFY2(last.startsWith(stamp) && last.endsWith(QStringLiteral("info [rehearsal] AOS")), qPrintable(last));
     }
 };
 

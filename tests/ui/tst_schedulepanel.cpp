@@ -95,6 +95,8 @@ private slots:
             // A page of the Tracking tab, beside One target.
             QCOMPARE(f.window->tabs()->tabText(f.window->tabs()->currentIndex()), QStringLiteral("Tracking"));
             QVERIFY(panel->isVisible());
+            // No target yet: the empty time line is headed with today.
+            QCOMPARE(panel->timeline()->dayText(), QStringLiteral("UTC, 22 Jan"));
 
             QVERIFY(panel->addTarget(QStringLiteral("FLOCK 2P-1")));
             QVERIFY(panel->addTarget(QStringLiteral("ENVISAT")));
@@ -141,10 +143,13 @@ private slots:
             QDir().mkpath(QStringLiteral("screenshots"));
             QVERIFY(f.window->grab().save(QStringLiteral("screenshots/schedule-tab.png")));
         }
-        // The list, in its order, at the next start.
+        // The list, in its order, at the next start; named by the sets once
+        // they have come in.
         WindowFixture f;
+        auto *list = f.find<QListWidget>(QStringLiteral("scheduleTargets"));
         QVERIFY(f.loadElementSets(kAllSets));
         QCOMPARE(scheduleTab(f)->targetSpecs(), (QStringList{"norad:27386", "norad:41617", "norad:40039"}));
+        QCOMPARE(list->item(0)->text(), QStringLiteral("ENVISAT"));
         // Added by the names operators use.
         SchedulePanel *panel = scheduleTab(f);
         for (const char *name : {"AO-91", "SO-50", "FO-29", "ZARYA"})
@@ -153,7 +158,6 @@ private slots:
                  (QStringList{"norad:43017", "norad:27607", "norad:24278", "norad:25544"}));
         // Removed again, as the Remove button does, so the next test starts
         // from the three.
-        auto *list = f.find<QListWidget>(QStringLiteral("scheduleTargets"));
         auto *remove = f.find<QPushButton>(QStringLiteral("scheduleRemove"));
         while (list->count() > 3) {
             list->setCurrentRow(3);

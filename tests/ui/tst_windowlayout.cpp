@@ -87,6 +87,15 @@ private slots:
         QCOMPARE(slew::ui::WindowState::openingSize(QSize(1280, 690)), QSize(1280, 690));
         QCOMPARE(slew::ui::WindowState::openingSize(QSize(1366, 740)), QSize(1366, 740));
         QCOMPARE(slew::ui::WindowState::openingSize(QSize(2560, 1400)), QSize(1440, 900));
+        // A place kept on a bigger or a second screen comes back wholly on
+        // this one: moved in, and no bigger than its room.
+        using slew::ui::WindowState;
+        const QRect field(0, 0, 1024, 600);
+        QCOMPARE(WindowState::onScreen(QRect(600, 300, 800, 500), field), QRect(224, 100, 800, 500));
+        QCOMPARE(WindowState::onScreen(QRect(-300, -40, 800, 500), field), QRect(0, 0, 800, 500));
+        QCOMPARE(WindowState::onScreen(QRect(2000, 100, 1440, 900), field), QRect(0, 0, 1024, 600));
+        QCOMPARE(WindowState::onScreen(QRect(100, 50, 640, 480), field), QRect(100, 50, 640, 480)); // in already
+        QCOMPARE(WindowState::onScreen(QRect(1950, 40, 800, 500), QRect(1920, 0, 1280, 1024)), QRect(1950, 40, 800, 500));
     }
 
     void everyTabFits_data()
