@@ -32,6 +32,7 @@
 #include "trackingline.h"
 #include "trackingpanel.h"
 #include "upcomingpanel.h"
+#include "scrollablepage.h"
 #include "wizard/setupwizard.h"
 #include "alignmentpanel.h"
 #include "operatoractions.h"
@@ -51,6 +52,8 @@
 #include <QGuiApplication>
 #include <QHBoxLayout>
 #include <QScreen>
+#include <QScrollArea>
+#include <QStyle>
 #include <QMenuBar>
 #include <QCoreApplication>
 #include <QMessageBox>
@@ -144,30 +147,31 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     m_trackingTabs = new QTabWidget;
     m_trackingTabs->setObjectName(QStringLiteral("trackingTabs"));
     m_trackingTabs->setDocumentMode(true);
-    m_trackingTabs->addTab(oneTarget, tr("One target"));
+    m_trackingTabs->addTab(scrollablePage(oneTarget), tr("One target"));
     // The favourites' next passes, soonest first; a double click opens one.
     m_upcoming = new UpcomingPanel(station);
-    m_trackingTabs->addTab(m_upcoming, tr("Upcoming"));
+    m_trackingTabs->addTab(scrollablePage(m_upcoming), tr("Upcoming"));
     connect(m_tracking, &TrackingPanel::favouritesChanged, m_upcoming, &UpcomingPanel::refresh);
     connect(m_upcoming, &UpcomingPanel::targetChosen, this, [this, oneTarget](const QString &name) {
         m_tracking->selectTarget(name);
         bringToFront(oneTarget);
     });
-    m_trackingTabs->addTab(m_schedule, tr("Schedule"));
+    m_trackingTabs->addTab(scrollablePage(m_schedule), tr("Schedule"));
     m_history = new HistoryPanel(station);
-    m_trackingTabs->addTab(m_history, tr("History"));
+    m_trackingTabs->addTab(scrollablePage(m_history), tr("History"));
     // The radio has a tab of its own: its link, its frequencies and its
     // live lines do not fit beside the passes on a 720-pixel screen.
     m_radio = new RadioPanel(station);
 
     m_tabs = new QTabWidget;
     m_tabs->setObjectName(QStringLiteral("mainTabs"));
-    m_tabs->addTab(m_charts, tr("Telemetry"));
+    // Each page scrolls where a small screen has less room than it needs.
+    m_tabs->addTab(scrollablePage(m_charts), tr("Telemetry"));
     m_tabs->addTab(m_trackingTabs, tr("Tracking"));
-    m_tabs->addTab(m_radio, tr("Radio"));
-    m_tabs->addTab(m_config, tr("Configuration"));
-    m_tabs->addTab(m_traffic, tr("Traffic"));
-    m_tabs->addTab(m_trackers, tr("Trackers"));
+    m_tabs->addTab(scrollablePage(m_radio), tr("Radio"));
+    m_tabs->addTab(scrollablePage(m_config), tr("Configuration"));
+    m_tabs->addTab(scrollablePage(m_traffic), tr("Traffic"));
+    m_tabs->addTab(scrollablePage(m_trackers), tr("Trackers"));
     m_tabs->addTab(m_log, tr("Events"));
 
     auto *plotColumn = new QWidget;
@@ -180,7 +184,15 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     auto *splitter = new QSplitter(Qt::Horizontal);
     splitter->setObjectName(QStringLiteral("mainSplitter"));
     splitter->addWidget(plotColumn);
-    splitter->addWidget(buildControlColumn());
+    // The controls scroll up and down on a short screen, never sideways: the
+    // scroll area keeps the column's width, and room for its bar.
+    QWidget *column = buildControlColumn();
+    ScrollablePage *controls = scrollablePage(column);
+    controls->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    const int bar = controls->style()->pixelMetric(QStyle::PM_ScrollBarExtent);
+    controls->setMinimumWidth(column->minimumWidth() + bar);
+    controls->setMaximumWidth(column->maximumWidth() + bar);
+    splitter->addWidget(controls);
     splitter->addWidget(m_tabs);
     // A wider window widens the plot and the tabs; the controls keep their width.
     splitter->setStretchFactor(0, 5);

@@ -28,8 +28,8 @@ RadioVfoChoice::RadioVfoChoice(station::DopplerRadio *radio, QWidget *parent) : 
     m_layout->setObjectName(QStringLiteral("radioVfos"));
     m_layout->addItem(tr("split: VFO A receives, VFO B transmits"), QString::fromLatin1(kSplitWord));
     m_layout->addItem(tr("satellite mode: Sub receives, Main transmits"), QString::fromLatin1(kMainSubWord));
-    m_layout->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    m_layout->setMinimumContentsLength(18);
+    // Its choices whole: on a narrow screen the Radio page scrolls instead.
+    m_layout->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     m_layout->setToolTip(tr("Split for most radios (Slew turns it on at AOS). Satellite mode for an IC-9700 "
                             "and its kind with satellite mode on at the radio; through rigctld, start rigctld with -o (VFO mode)."));
     m_restore = new QCheckBox(tr("Put it back after LOS"));

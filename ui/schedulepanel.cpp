@@ -51,6 +51,8 @@ SchedulePanel::SchedulePanel(station::Station *station, QWidget *parent) : QWidg
     m_add = new QLineEdit;
     m_add->setObjectName(QStringLiteral("scheduleAdd"));
     m_add->setPlaceholderText(tr("satellite, sun, moon, azel:…"));
+    // What it takes, readable however narrow the window: the page scrolls instead.
+    m_add->setMinimumWidth(m_add->fontMetrics().horizontalAdvance(m_add->placeholderText()) + 24);
     m_add->setToolTip(tr("A satellite of the loaded element sets (by name or catalogue number), sun, moon, "
                          "azel:AZ,EL (a fixed direction) or radec:RA,DEC (a radio source)"));
     auto *add = new QPushButton(tr("Add"));

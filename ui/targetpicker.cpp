@@ -67,7 +67,9 @@ TargetPicker::TargetPicker(const sky::ElementSetSources *sets, QWidget *parent) 
     m_search = new QLineEdit;
     m_search->setObjectName(QStringLiteral("targetSearch"));
     // Short enough for a 1280-pixel screen; the tooltip has every form.
-    m_search->setPlaceholderText(tr("name or number, sun, moon, azel:…, radec:…"));
+    m_search->setPlaceholderText(tr("satellite, sun, moon, azel:…, radec:…"));
+    // What it takes, readable however narrow the window: the page scrolls instead.
+    m_search->setMinimumWidth(m_search->fontMetrics().horizontalAdvance(m_search->placeholderText()) + 24);
     m_search->setToolTip(tr("A satellite's name or catalogue number, sun, moon, a fixed direction "
                             "(azel:AZ,EL) or a radio source (radec:RA,DEC)"));
     m_favourite = new QToolButton;

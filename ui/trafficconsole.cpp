@@ -30,6 +30,8 @@ TrafficConsole::TrafficConsole(RotatorSession *session, QWidget *parent) : QWidg
     m_filter = new QLineEdit;
     m_filter->setObjectName(QStringLiteral("trafficFilter"));
     m_filter->setPlaceholderText(tr("filter, e.g. ^(AZ|EL|GS)"));
+    // Its example whole, however narrow the window: the page scrolls instead.
+    m_filter->setMinimumWidth(m_filter->fontMetrics().horizontalAdvance(m_filter->placeholderText()) + 40);
     m_filter->setToolTip(tr("Show only the lines that match this regular expression"));
     m_filter->setClearButtonEnabled(true);
     m_invert = new QCheckBox(tr("Hide matches"));

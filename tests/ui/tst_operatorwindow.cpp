@@ -215,7 +215,7 @@ private slots:
         WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
         ConfigEditor *editor = f.window->configEditor();
-        f.window->tabs()->setCurrentWidget(editor); // opening it reads the device
+        f.window->bringToFront(editor); // opening it reads the device
         // Every register this test looks at: CR7/CR8 come early, the session
         // reads them on connect, so they are no sign the rest are in.
         QVERIFY(f.waitFor([&] {
@@ -245,7 +245,7 @@ private slots:
         WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
         ConfigEditor *editor = f.window->configEditor();
-        f.window->tabs()->setCurrentWidget(editor);
+        f.window->bringToFront(editor);
         QVERIFY(f.waitFor([&] { return !editor->deviceValue(2).isEmpty() && !editor->deviceValue(8).isEmpty(); }, 10000));
         WindowFixture::typeInto(f.find<QLineEdit>(QStringLiteral("configValue2")), QStringLiteral("0.25"));
         WindowFixture::typeInto(f.find<QLineEdit>(QStringLiteral("configValue8")), QStringLiteral("120")); // park el above 90
@@ -260,7 +260,7 @@ private slots:
         WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
         QVERIFY(f.connectAndWait());
         ConfigEditor *editor = f.window->configEditor();
-        f.window->tabs()->setCurrentWidget(editor);
+        f.window->bringToFront(editor);
         QVERIFY(f.waitFor([&] { return !editor->deviceValue(6).isEmpty(); }, 10000));
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("rotator.json"));

@@ -84,7 +84,7 @@ void untrack(WindowFixture &f)
 RadioPanel *radioTab(WindowFixture &f)
 {
     RadioPanel *panel = f.window->radioPanel();
-    f.window->tabs()->setCurrentWidget(panel);
+    f.window->bringToFront(panel);
     // Typed digits reach a field only while it has the focus (the window
     // takes 1 to 9 for the presets otherwise): the window must be active.
     f.window->activateWindow();
@@ -537,7 +537,7 @@ private slots:
         // Ten seconds (of the station's clock) before AOS, at 20 times.
         QVERIFY(f.rehearseAt(QStringLiteral("2018-01-22T09:15:35Z"), 20.0));
         QVERIFY(track(f, QStringLiteral("FLOCK 2P-1")));
-        f.window->tabs()->setCurrentWidget(panel);
+        f.window->bringToFront(panel);
         QSignalSpy steering(radio, &DopplerRadio::steeringChanged);
         QTRY_VERIFY_WITH_TIMEOUT(radio->isSteering(), 30000);
 
@@ -609,13 +609,13 @@ private slots:
         QVERIFY(box && !box->isHidden());
         for (const QPointF &p : receive->points())
             QVERIFY2(std::isfinite(p.y()) && std::abs(p.y()) < 1000.0, qPrintable(QString::number(p.y())));
-        f.window->tabs()->setCurrentWidget(charts);
+        f.window->bringToFront(charts);
         QVERIFY(f.window->findChild<QWidget *>(QStringLiteral("chartPointing"))->isVisible());
         QVERIFY(box->isVisible());
         QVERIFY(box->geometry().top() > f.window->findChild<QWidget *>(QStringLiteral("chartPointing"))->geometry().top());
         const QString chartFaults = layoutFaults(f.window.get()).join(QLatin1Char('\n'));
         QVERIFY2(chartFaults.isEmpty(), qPrintable(chartFaults));
-        f.window->tabs()->setCurrentWidget(panel);
+        f.window->bringToFront(panel);
 
         // LOS (09:27:10): the pass's figures and what was sent last stay.
         QTRY_VERIFY_WITH_TIMEOUT(!radio->isSteering(), 60000);

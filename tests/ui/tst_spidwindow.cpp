@@ -232,8 +232,7 @@ private slots:
         QVERIFY(f.waitFor([&] { return charts->redrawCount() > before + 2; }, 10000)); // the polls drawn
         QVERIFY(QDir().mkpath(QStringLiteral(SLEW_SCREENSHOT_DIR)));
         QVERIFY(f.window->grab().save(QStringLiteral(SLEW_SCREENSHOT_DIR "/spid-window.png")));
-        auto *tabs = f.find<QTabWidget>(QStringLiteral("mainTabs"));
-        tabs->setCurrentWidget(f.find<QWidget>(QStringLiteral("configEditor")));
+        f.window->bringToFront(f.find<QWidget>(QStringLiteral("configEditor")));
         QVERIFY(f.window->grab().save(QStringLiteral(SLEW_SCREENSHOT_DIR "/spid-configuration.png")));
     }
 };

@@ -109,7 +109,7 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
         QVERIFY(f.connectAndWait());
         TelemetryCharts *charts = f.window->telemetryCharts();
-        f.window->tabs()->setCurrentWidget(charts);
+        f.window->bringToFront(charts);
         if (pointing) {
             auto *recorder = f.window->findChild<TelemetryRecorder *>();
             QVERIFY(recorder);

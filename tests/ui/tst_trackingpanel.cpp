@@ -418,7 +418,7 @@ private slots:
         TRY_VERIFY(positions > 20);
         QCOMPARE(plotted(), afterStop);
 
-        f.window->tabs()->setCurrentWidget(charts);
+        f.window->bringToFront(charts);
         QDir().mkpath(QStringLiteral("screenshots"));
         QVERIFY(f.window->grab().save(QStringLiteral("screenshots/telemetry-pointing-error.png")));
     }
