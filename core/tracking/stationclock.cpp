@@ -5,6 +5,7 @@
 #include "sky/utctime.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace slew::tracking {
 
@@ -16,6 +17,8 @@ StationClock::StationClock(std::optional<double> startJulian, double rate, QObje
 
 double StationClock::nowJulian() const
 {
+    if (m_heldAt)
+        return *m_heldAt;
     if (!m_start)
         return sky::julianNow();
     // Nanoseconds: at 20 times, whole milliseconds would step the clock by 20 ms.
@@ -24,10 +27,14 @@ double StationClock::nowJulian() const
 
 void StationClock::rehearse(double startJulian, double rate)
 {
+    const bool wasPaused = isPaused();
+    m_heldAt.reset();
     m_start = startJulian;
     m_rate = std::clamp(rate, 1.0, kMaxRate);
     m_elapsed.restart();
     emit changed();
+    if (wasPaused)
+        emit pausedChanged(false);
 }
 
 void StationClock::setRate(double rate)
@@ -35,16 +42,56 @@ void StationClock::setRate(double rate)
     rate = std::clamp(rate, 1.0, kMaxRate);
     if (!m_start || rate == m_rate)
         return;
-    rehearse(nowJulian(), rate);
+    if (!isPaused()) {
+        rehearse(nowJulian(), rate);
+        return;
+    }
+    // Held: the instant stays; the new rate applies from the resume.
+    m_rate = rate;
+    emit changed();
 }
 
 void StationClock::followRealTime()
 {
     if (!m_start)
         return;
+    const bool wasPaused = isPaused();
+    m_heldAt.reset();
     m_start.reset();
     m_rate = 1.0;
     emit changed();
+    if (wasPaused)
+        emit pausedChanged(false);
+}
+
+void StationClock::pause()
+{
+    if (isPaused())
+        return;
+    const double now = nowJulian();
+    if (!m_start)
+        m_start = now; // the rehearsal begins where real time was
+    m_heldAt = now;
+    emit pausedChanged(true);
+}
+
+void StationClock::resume()
+{
+    if (!isPaused())
+        return;
+    m_start = *m_heldAt;
+    m_heldAt.reset();
+    m_elapsed.restart();
+    emit pausedChanged(false);
+}
+
+bool StationClock::step(double seconds)
+{
+    if (!isPaused() || !std::isfinite(seconds) || seconds <= 0.0)
+        return false;
+    *m_heldAt += seconds / sky::kSecondsPerDay;
+    emit stepped();
+    return true;
 }
 
 } // namespace slew::tracking

@@ -2,7 +2,8 @@
 // The station clock as the window's Time controller changes it: a rehearsal
 // from a chosen instant at 1 to 20 times real time, a new rate that goes on
 // from the time the clock reads, and back to real time, each said with
-// changed(). Rates are measured against wall readings taken around each
+// changed(); a pause that holds the instant and a step forward while
+// paused, each said with its own signal so nobody plans again. Rates are measured against wall readings taken around each
 // clock reading, so the check holds however busy the machine is.
 
 #include "sky/skyvector.h"
@@ -13,6 +14,9 @@
 #include <QSignalSpy>
 #include <QTest>
 #include <QTimer>
+
+#include <cmath>
+#include <limits>
 
 using slew::tracking::StationClock;
 
@@ -124,6 +128,83 @@ private slots:
         clock.followRealTime();
         QCOMPARE(changed.count(), 1);
         QCOMPARE(clock.rate(), 1.0);
+    }
+
+    void aPauseHoldsTheInstantAndResumeRunsOnFromIt()
+    {
+        StationClock clock;
+        clock.rehearse(kStart, 5.0);
+        QSignalSpy changed(&clock, &StationClock::changed);
+        QSignalSpy paused(&clock, &StationClock::pausedChanged);
+        clock.pause();
+        QVERIFY(clock.isPaused());
+        QCOMPARE(paused.count(), 1);
+        QCOMPARE(paused.last().at(0).toBool(), true);
+        const double held = clock.nowJulian();
+        QVERIFY(letWallTimePass(100));
+        QCOMPARE(clock.nowJulian(), held);
+        // A new rate while paused: kept for the resume, the instant held.
+        clock.setRate(10.0);
+        QCOMPARE(clock.rate(), 10.0);
+        QVERIFY(clock.isPaused());
+        QCOMPARE(clock.nowJulian(), held);
+
+        clock.resume();
+        QVERIFY(!clock.isPaused());
+        QCOMPARE(paused.count(), 2);
+        QCOMPARE(paused.last().at(0).toBool(), false);
+        // On from the instant it held, at the rate chosen.
+        QVERIFY(clock.nowJulian() >= held);
+        QVERIFY((clock.nowJulian() - held) * slew::sky::kSecondsPerDay < 5.0);
+        const Stretch s = measure(clock, 200);
+        QVERIFY2(s.runsAt(10.0), qPrintable(s.describe(10.0)));
+        // Only the new rate made planners plan again: a pause does not.
+        QCOMPARE(changed.count(), 1);
+    }
+
+    void aStepMovesAPausedClockForwardOnly()
+    {
+        StationClock clock(kStart, 2.0);
+        QSignalSpy stepped(&clock, &StationClock::stepped);
+        QSignalSpy changed(&clock, &StationClock::changed);
+        // Running: a step is refused and changes nothing.
+        QVERIFY(!clock.step(30.0));
+        clock.pause();
+        const double held = clock.nowJulian();
+        QVERIFY(clock.step(30.0));
+        QCOMPARE(stepped.count(), 1);
+        QVERIFY(std::abs((clock.nowJulian() - held) * slew::sky::kSecondsPerDay - 30.0) < kJulianSlackSeconds);
+        QVERIFY(clock.isPaused());
+        // Nothing backwards, nothing that is not a number.
+        for (const double bad : {0.0, -10.0, std::nan(""), std::numeric_limits<double>::infinity()})
+            QVERIFY(!clock.step(bad));
+        QCOMPARE(stepped.count(), 1);
+        QVERIFY(std::abs((clock.nowJulian() - held) * slew::sky::kSecondsPerDay - 30.0) < kJulianSlackSeconds);
+        QCOMPARE(changed.count(), 0);
+    }
+
+    void pausingRealTimeMakesARehearsalHeldAtNow()
+    {
+        StationClock clock;
+        clock.pause();
+        QVERIFY(clock.isRehearsal());
+        QVERIFY(clock.isPaused());
+        QCOMPARE(clock.rate(), 1.0);
+        const double held = clock.nowJulian();
+        QVERIFY(std::abs(held - slew::sky::julianNow()) * slew::sky::kSecondsPerDay < 1.0);
+        QVERIFY(letWallTimePass(50));
+        QCOMPARE(clock.nowJulian(), held);
+        // Back to real time, or a new start: running again, and said so.
+        QSignalSpy paused(&clock, &StationClock::pausedChanged);
+        clock.followRealTime();
+        QVERIFY(!clock.isPaused());
+        QVERIFY(!clock.isRehearsal());
+        QCOMPARE(paused.count(), 1);
+        clock.pause();
+        clock.rehearse(kStart, 1.0);
+        QVERIFY(!clock.isPaused());
+        QCOMPARE(paused.count(), 3);
+        QVERIFY(clock.nowJulian() >= kStart);
     }
 };
 
