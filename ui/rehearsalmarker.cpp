@@ -24,6 +24,9 @@ RehearsalMarker::RehearsalMarker(const tracking::StationClock *clock, QMainWindo
     // whatever it sets.
     m_titled->installEventFilter(this);
     connect(m_clock, &tracking::StationClock::changed, this, &RehearsalMarker::refresh);
+    // A pause of real time starts a rehearsal without a new plan: said at once too.
+    connect(m_clock, &tracking::StationClock::pausedChanged, this, &RehearsalMarker::refresh);
+    connect(m_clock, &tracking::StationClock::stepped, this, &RehearsalMarker::refresh);
     connect(&m_tick, &QTimer::timeout, this, &RehearsalMarker::refresh);
     m_tick.start(1000);
     // In the status bar first: it shows what it is given, and the marker
@@ -46,7 +49,9 @@ void RehearsalMarker::refresh()
 {
     const bool rehearsal = m_clock->isRehearsal();
     if (rehearsal)
-        setText(tr("REHEARSAL: station clock %1 %2").arg(clockText(m_clock->nowJulian()), rateText(m_clock->rate())));
+        setText(tr("REHEARSAL: station clock %1 %2%3")
+                    .arg(clockText(m_clock->nowJulian()), rateText(m_clock->rate()),
+                         m_clock->isPaused() ? tr(", paused") : QString()));
     setVisible(rehearsal);
     markTitle();
 }

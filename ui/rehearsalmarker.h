@@ -2,7 +2,8 @@
 #pragma once
 // The window's mark of a rehearsal: while the station clock is not real
 // time, an orange line in the status bar ("REHEARSAL: station clock
-// 2026-11-25 14:03:10 UTC ×5", every second) and the window's title starts
+// 2026-11-25 14:03:10 UTC ×5", every second; ", paused" while the clock
+// holds) and the window's title starts
 // with REHEARSAL, so no one takes a rehearsed pass for the real sky, even
 // with the Time controller closed. In real time both are gone.
 

@@ -4,6 +4,10 @@
 // time; it runs at the rate chosen, the built-in simulator with it; a change
 // while tracking plans again; and while the clock is not real time the
 // window says so, in the status bar and the title, until it is again.
+// The start is taken as typed; a pause holds the clock (and a tracker's
+// pass goes on from where it was), a step moves it on, the slider moves it
+// along the next hours, and a chosen pass is rehearsed from two minutes
+// before its AOS.
 //
 // The rates are measured against wall readings taken around each clock
 // reading, so the checks hold however busy the machine is.
@@ -17,17 +21,21 @@
 #include "sky/elementsetsources.h"
 #include "sky/utctime.h"
 #include "timecontroller.h"
+#include "utctimefield.h"
 #include "trackingpanel.h"
 
 #include <QAction>
-#include <QDateTimeEdit>
 #include <QLabel>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QTest>
+#include <QSlider>
 #include <QTimer>
+
+#include <cmath>
 
 using slew::ui::TimeController;
 using slew::ui::TrackingPanel;
@@ -50,11 +58,6 @@ bool passesPlanned(const TrackingPanel *panel)
     return WindowFixture::waitFor([panel] { return !panel->isPlanning(); }, 10000);
 }
 
-QDateTime utc(const QString &iso)
-{
-    return slew::sky::utcFromJulian(*slew::sky::julianFromIso(iso));
-}
-
 // Sky → Time controller…, as the operator opens it.
 TimeController *openTimeController(WindowFixture &f)
 {
@@ -65,12 +68,30 @@ TimeController *openTimeController(WindowFixture &f)
     return f.window->timeController();
 }
 
-// Start here, with this time and rate in the fields.
+// Types `text` over what the start field holds, as an operator does.
+void typeStart(TimeController *time, const QString &text)
+{
+    QWidget *field = time->startField();
+    QTest::keyClick(field, Qt::Key_A, Qt::ControlModifier);
+    QTest::keyClicks(field, text);
+}
+
+// Start here, with this time and rate typed in the fields.
 void startRehearsal(TimeController *time, const QString &iso, int rate)
 {
-    time->startField()->setDateTime(utc(iso));
+    typeStart(time, iso);
     time->rateField()->setValue(rate);
     QTest::mouseClick(time->startButton(), Qt::LeftButton);
+}
+
+double secondsBetween(double laterJulian, double earlierJulian)
+{
+    return (laterJulian - earlierJulian) * slew::sky::kSecondsPerDay;
+}
+
+double julian(const QString &iso)
+{
+    return *slew::sky::julianFromIso(iso);
 }
 
 // A wall clock runs on wall time: let some pass on the event loop.
@@ -301,6 +322,165 @@ private slots:
         QVERIFY(panel->passes().first().los.julian > *slew::sky::julianFromIso(QStringLiteral("2026-11-25T06:00:00Z")));
         QTest::mouseClick(panel->stopTrackingButton(), Qt::LeftButton);
         QVERIFY(!panel->runner()->isRunning());
+    }
+
+    void theStartIsTakenAsTyped()
+    {
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
+        TimeController *time = openTimeController(f);
+        QVERIFY(time);
+        const slew::tracking::StationClock *clock = time->clock();
+        // What operators typed, and what a date field made of it (15:59:24).
+        startRehearsal(time, QStringLiteral("2026-12-05 15:24:00"), 1);
+        QVERIFY(clock->isRehearsal());
+        const double fromTyped = secondsBetween(clock->nowJulian(), julian(QStringLiteral("2026-12-05T15:24:00Z")));
+        QVERIFY2(fromTyped >= 0.0 && fromTyped < 5.0, qPrintable(QString::number(fromTyped)));
+        // The instant as the window shows it, with its zone, and ISO 8601.
+        startRehearsal(time, QStringLiteral("2026-12-06 08:00:30 UTC"), 1);
+        QVERIFY(secondsBetween(clock->nowJulian(), julian(QStringLiteral("2026-12-06T08:00:30Z"))) < 5.0);
+        startRehearsal(time, QStringLiteral("2026-12-07T09:10:11Z"), 1);
+        QVERIFY(secondsBetween(clock->nowJulian(), julian(QStringLiteral("2026-12-07T09:10:11Z"))) < 5.0);
+        QVERIFY(!time->problemLine()->isVisible());
+
+        // Not a time: said where, and the clock is unchanged.
+        const double before = clock->nowJulian();
+        startRehearsal(time, QStringLiteral("2026-13-05 15:24"), 1);
+        QVERIFY(time->problemLine()->isVisible());
+        QCOMPARE(time->problemLine()->text(),
+                 QStringLiteral("Start at: \"2026-13-05 15:24\" is not a UTC date and time: type it as "
+                                "2026-12-05 15:24:00. The station clock is unchanged."));
+        QVERIFY(secondsBetween(clock->nowJulian(), before) < 5.0);
+        QVERIFY(clock->nowJulian() >= before);
+        // Correcting it clears the message; Enter in the field starts there.
+        typeStart(time, QStringLiteral("2026-12-08 10:00:00"));
+        QVERIFY(!time->problemLine()->isVisible());
+        QTest::keyClick(time->startField(), Qt::Key_Return);
+        QVERIFY(secondsBetween(clock->nowJulian(), julian(QStringLiteral("2026-12-08T10:00:00Z"))) < 5.0);
+        // Enter in another field presses no button (Start here would jump back).
+        QTest::mouseClick(time->pauseButton(), Qt::LeftButton);
+        time->stepField()->setValue(60);
+        QTest::mouseClick(time->stepButton(), Qt::LeftButton);
+        const double stepped = clock->nowJulian();
+        QTest::keyClick(time->stepField(), Qt::Key_Return);
+        QVERIFY(clock->isPaused());
+        QCOMPARE(clock->nowJulian(), stepped);
+    }
+
+    void aPauseHoldsTheClockAndAStepMovesItOn()
+    {
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
+        QVERIFY(f.connectAndWait());
+        TrackingPanel *panel = f.window->trackingPanel();
+        atJo65hq(panel);
+        TimeController *time = openTimeController(f);
+        QVERIFY(time);
+        const slew::tracking::StationClock *clock = time->clock();
+        QVERIFY(!time->stepButton()->isEnabled()); // only a paused clock steps
+        startRehearsal(time, QStringLiteral("2026-11-23T18:00:00Z"), 5);
+        QVERIFY(panel->selectTarget(QStringLiteral("azel:200,30")));
+        QVERIFY(passesPlanned(panel));
+        QTest::mouseClick(panel->trackButton(), Qt::LeftButton);
+        TRY_VERIFY(panel->runner()->isActive());
+
+        // Paused: the instant holds, and the tracker goes on with its pass.
+        QSignalSpy messages(panel, &TrackingPanel::message);
+        QTest::mouseClick(time->pauseButton(), Qt::LeftButton);
+        QVERIFY(clock->isPaused());
+        QCOMPARE(time->pauseButton()->text(), QStringLiteral("Resume"));
+        QVERIFY2(time->stateLine()->text().startsWith(QStringLiteral("Rehearsal, paused: the station clock holds 2026-11-23 18:0")),
+                 qPrintable(time->stateLine()->text()));
+        const double held = clock->nowJulian();
+        QVERIFY(letWallTimePass(300));
+        QCOMPARE(clock->nowJulian(), held);
+        QVERIFY(panel->runner()->isActive());
+
+        // A step: forward by the amount chosen, still paused.
+        QVERIFY(time->stepButton()->isEnabled());
+        time->stepField()->setValue(30);
+        QTest::mouseClick(time->stepButton(), Qt::LeftButton);
+        QVERIFY(std::abs(secondsBetween(clock->nowJulian(), held) - 30.0) < 0.001);
+        QVERIFY(clock->isPaused());
+
+        // Resumed: on from there at the rate it had.
+        QTest::mouseClick(time->pauseButton(), Qt::LeftButton);
+        QVERIFY(!clock->isPaused());
+        QCOMPARE(time->pauseButton()->text(), QStringLiteral("Pause"));
+        QVERIFY(!time->stepButton()->isEnabled());
+        QString seen;
+        QVERIFY2(runsAt(clock, 5.0, &seen), qPrintable(seen));
+        QVERIFY(secondsBetween(clock->nowJulian(), held) >= 30.0);
+        // None of it made the tracker plan again.
+        for (const QList<QVariant> &m : messages)
+            QVERIFY2(!m.at(0).toString().contains(QStringLiteral("planning again")), qPrintable(m.at(0).toString()));
+        QVERIFY(panel->runner()->isActive());
+        QTest::mouseClick(panel->stopTrackingButton(), Qt::LeftButton);
+    }
+
+    void pausingRealTimeHoldsNowAsARehearsal()
+    {
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
+        TimeController *time = openTimeController(f);
+        QVERIFY(time);
+        auto *marker = f.find<QLabel>(QStringLiteral("rehearsalMarker"));
+        QVERIFY(marker && marker->isHidden());
+        QTest::mouseClick(time->pauseButton(), Qt::LeftButton);
+        QVERIFY(time->clock()->isPaused());
+        QVERIFY(std::abs(secondsBetween(time->clock()->nowJulian(), slew::sky::julianNow())) < 2.0);
+        // The window says so at once: the clock is no longer real time.
+        QVERIFY(marker->isVisible());
+        QVERIFY2(marker->text().endsWith(QStringLiteral(" UTC ×1, paused")), qPrintable(marker->text()));
+        QVERIFY(time->realTimeButton()->isEnabled());
+        QTest::mouseClick(time->realTimeButton(), Qt::LeftButton);
+        QVERIFY(!time->clock()->isPaused());
+        QVERIFY(marker->isHidden());
+    }
+
+    void theSliderMovesTheClockAlongTheNextHours()
+    {
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
+        TimeController *time = openTimeController(f);
+        QVERIFY(time);
+        const slew::tracking::StationClock *clock = time->clock();
+        startRehearsal(time, QStringLiteral("2026-12-05 15:24:00"), 1);
+        QTest::mouseClick(time->pauseButton(), Qt::LeftButton);
+        QCOMPARE(time->slider()->value(), 0);
+        QCOMPARE(time->slider()->maximum(), TimeController::kSliderMinutes);
+        QSignalSpy changed(clock, &slew::tracking::StationClock::changed);
+        // Half an hour on, from the keyboard: a jump that everyone plans by again.
+        QTest::keyClick(time->slider(), Qt::Key_PageUp);
+        QCOMPARE(changed.count(), 1);
+        QVERIFY(clock->isPaused());
+        QVERIFY(std::abs(secondsBetween(clock->nowJulian(), julian(QStringLiteral("2026-12-05T15:54:00Z")))) < 0.001);
+        QCOMPARE(time->sliderLine()->text(), QStringLiteral("+0:30 2026-12-05 15:54 UTC"));
+        // Stepped on while paused, the slider follows the clock.
+        time->stepField()->setValue(3600);
+        QTest::mouseClick(time->stepButton(), Qt::LeftButton);
+        QCOMPARE(time->slider()->value(), 90);
+        QCOMPARE(time->sliderLine()->text(), QStringLiteral("+1:30 2026-12-05 16:54 UTC"));
+    }
+
+    void aChosenPassIsRehearsedFromTwoMinutesBeforeItsAos()
+    {
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
+        QVERIFY(f.loadElementSets(kAllSets));
+        TrackingPanel *panel = f.window->trackingPanel();
+        atJo65hq(panel);
+        QVERIFY(panel->selectTarget(QStringLiteral("FLOCK 2P-1")));
+        TimeController *time = f.window->timeController();
+        time->rateField()->setValue(2);
+        // FLOCK 2P-1's pass of 2018-01-22 07:42:56 (the first test's).
+        const double aos = julian(QStringLiteral("2018-01-22T07:42:56Z"));
+        time->rehearsePass(aos);
+        const slew::tracking::StationClock *clock = time->clock();
+        QVERIFY(clock->isRehearsal());
+        QCOMPARE(clock->rate(), 2.0);
+        const double lead = secondsBetween(aos, clock->nowJulian());
+        QVERIFY2(lead > 110.0 && lead <= 120.0, qPrintable(QString::number(lead)));
+        QCOMPARE(time->startField()->text(), QStringLiteral("2018-01-22 07:40:56"));
+        QVERIFY(passesPlanned(panel));
+        // Two minutes, less what has passed since.
+        QVERIFY2(QRegularExpression(QStringLiteral("^AOS in 0:0(1:[0-5]\\d|2:00)$")).match(panel->countdown()->text()).hasMatch(),
+                 qPrintable(panel->countdown()->text()));
     }
 };
 
