@@ -44,6 +44,23 @@ QTableWidgetItem *cell(const QString &text, Qt::Alignment align = Qt::AlignRight
     return item;
 }
 
+// The AOS, and whether it was the real sky's: a rehearsed pass ran by the
+// rehearsal clock, so its times are that clock's and its figures are of
+// practice, not of a real pass.
+QTableWidgetItem *aosCell(const records::PassPlanned &planned)
+{
+    QString text = planned.aos.isValid() ? planned.aos.toString(QStringLiteral("yyyy-MM-dd HH:mm")) : kNone;
+    if (!planned.rehearsal)
+        return cell(text, Qt::AlignLeft | Qt::AlignVCenter);
+    QTableWidgetItem *item = cell(text + QObject::tr(" · rehearsal"), Qt::AlignLeft | Qt::AlignVCenter);
+    item->setToolTip(QObject::tr("Rehearsed: by the rehearsal clock (Sky → Time controller), not the real sky; "
+                                 "the times are that clock's."));
+    QFont italic = item->font();
+    italic.setItalic(true);
+    item->setFont(italic);
+    return item;
+}
+
 } // namespace
 
 HistoryPanel::HistoryPanel(station::Station *station, QWidget *parent) : QWidget(parent), m_station(station)
@@ -131,9 +148,7 @@ void HistoryPanel::fill()
         const records::PassRecord &r = m_passes[row];
         m_table->setItem(row, Id, cell(QString::number(r.id)));
         m_table->setItem(row, Target, cell(r.planned.target, Qt::AlignLeft | Qt::AlignVCenter));
-        m_table->setItem(row, Aos, cell(r.planned.aos.isValid() ? r.planned.aos.toString(QStringLiteral("yyyy-MM-dd HH:mm"))
-                                                                : kNone,
-                                        Qt::AlignLeft | Qt::AlignVCenter));
+        m_table->setItem(row, Aos, aosCell(r.planned));
         m_table->setItem(row, MaxEl, cell(degrees(r.planned.maxElevationDeg, 1)));
         QTableWidgetItem *outcome = cell(records::outcomeName(r.outcome), Qt::AlignLeft | Qt::AlignVCenter);
         outcome->setToolTip(r.reason);

@@ -2,7 +2,8 @@
 #pragma once
 // The History page of the Tracking tab: the passes the station recorded, newest first, with
 // their figures (target, AOS, highest elevation, how each ended, pointing
-// RMS and worst, commands, Doppler RMS), a filter by target, Export CSV…
+// RMS and worst, commands, Doppler RMS; a rehearsed pass marked so at its
+// AOS), a filter by target, Export CSV…
 // of what is listed (passhistorycsv.h), and the picture of the selected
 // pass (passreportpicture.h) in a window of its own. It reads the
 // Station's pass records and writes nothing into them.

@@ -3,8 +3,9 @@
 // recorded, newest first, with their figures; the filter by target; a pass
 // recorded while the tab is shown appears in it; Export CSV… in the
 // telemetry export's conventions; the picture of the selected pass in a
-// window of its own, and a dropped pass said to have none. Nothing on the
-// tab overlaps or is cut.
+// window of its own, and a dropped pass said to have none; a rehearsed pass
+// marked as one in the table and the export. Nothing on the tab overlaps or
+// is cut.
 
 #include "layoutfaults.h"
 #include "windowfixture.h"
@@ -177,6 +178,50 @@ private slots:
         QVERIFY(!history->showSelectedPicture());
         QCOMPARE(f.find<QLabel>(QStringLiteral("historyStatus"))->text(),
                  QStringLiteral("Pass %1 was dropped: it has no samples to draw.").arg(iss));
+    }
+
+    void marksRehearsedPasses()
+    {
+        QTemporaryDir dir;
+        WindowFixture f;
+        QCOMPARE(f.station.openPassRecords(dir.filePath(QStringLiteral("passes.sqlite")), 90), QString());
+        PassRecordStore *store = f.station.passRecords();
+        const qint64 real = *store->beginPass(planned(QStringLiteral("FLOCK 2P-1"), 41617, 0));
+        QVERIFY(store->finishPass(real, Outcome::Tracked, {}, kAos.addSecs(685)));
+        slew::records::PassPlanned practice = planned(QStringLiteral("FLOCK 2P-1"), 41617, 95);
+        practice.rehearsal = true;
+        const qint64 rehearsed = *store->beginPass(practice);
+        recordSamples(store, rehearsed, practice.aos, 50);
+        QVERIFY(store->finishPass(rehearsed, Outcome::Tracked, {}, practice.aos.addSecs(685)));
+
+        f.window->resize(1280, 720);
+        QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
+        slew::ui::HistoryPanel *history = f.window->historyPanel();
+        f.window->bringToFront(history);
+        settle();
+        auto *table = f.find<QTableWidget>(QStringLiteral("historyTable"));
+        QCOMPARE(table->rowCount(), 2);
+        // Newest first: the rehearsal, said so at its AOS, and the real pass as it was.
+        QCOMPARE(table->item(0, 0)->text(), QString::number(rehearsed));
+        QCOMPARE(table->item(0, 2)->text(), QStringLiteral("2018-01-22 10:50 · rehearsal"));
+        QVERIFY(table->item(0, 2)->toolTip().startsWith(QStringLiteral("Rehearsed: by the rehearsal clock")));
+        QCOMPARE(table->item(1, 2)->text(), QStringLiteral("2018-01-22 09:15"));
+        QVERIFY(table->item(1, 2)->toolTip().isEmpty());
+        const QString faults = layoutFaults(f.window.get()).join(QLatin1Char('\n'));
+        QVERIFY2(faults.isEmpty(), qPrintable(faults));
+
+        // The export says which was rehearsed, in its rehearsal column.
+        const QString csv = dir.filePath(QStringLiteral("passes.csv"));
+        QString error;
+        QVERIFY2(history->exportCsv(csv, &error), qPrintable(error));
+        QFile file(csv);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QList<QByteArray> lines = file.readAll().split('\n');
+        QCOMPARE(lines.size(), 4);
+        const int column = int(lines[0].split(',').indexOf("rehearsal"));
+        QVERIFY(column > 0);
+        QCOMPARE(lines[1].split(',').at(column), QByteArray("yes"));
+        QCOMPARE(lines[2].split(',').at(column), QByteArray("no"));
     }
 
     void saysWhenNoRecordsAreOpen()
