@@ -116,7 +116,8 @@ void PassRecorder::begin()
     m_lastSampleMs = 0;
     m_samples = 0;
     m_radioSteered = m_radio && m_radio->isSteering();
-    emit logLine(tr("records: pass %1 (%2) in progress").arg(*m_id).arg(m_target));
+    m_rehearsal = p.rehearsal;
+    emit logLine(tr("records: pass %1 (%2) in progress%3").arg(*m_id).arg(m_target, rehearsalMark()));
     emit recording(*m_id, true);
 }
 
@@ -155,6 +156,13 @@ void PassRecorder::onPointingError(double degrees, double)
     ++m_samples;
 }
 
+QString PassRecorder::rehearsalMark() const
+{
+    // Said where the record is, so a rehearsed pass is not read in the
+    // log as one of the real sky.
+    return m_rehearsal ? tr(" (rehearsal)") : QString();
+}
+
 void PassRecorder::finish(Outcome outcome, const QString &why)
 {
     const qint64 id = *m_id;
@@ -164,11 +172,12 @@ void PassRecorder::finish(Outcome outcome, const QString &why)
     if (!m_recordingIn->finishPass(id, outcome, why, sky::utcFromJulian(m_clock->nowJulian()), &error))
         emit logLine(tr("records: %1").arg(error));
     else
-        emit logLine(tr("records: pass %1 (%2) %3%4, %5 samples")
+        emit logLine(tr("records: pass %1 (%2) %3%4, %5 samples%6")
                          .arg(id)
                          .arg(m_target, records::outcomeName(outcome),
                               why.isEmpty() ? QString() : QStringLiteral(": ") + why)
-                         .arg(m_samples));
+                         .arg(m_samples)
+                         .arg(rehearsalMark()));
     m_recordingIn = nullptr;
     emit recording(id, false);
 }

@@ -82,6 +82,7 @@ private:
     void finish(records::Outcome outcome, const QString &why);
     records::PassFigures figures() const;
     qint64 nowMs() const;
+    QString rehearsalMark() const;
 
     session::RotatorSession *m_session;
     tracking::PassRunner *m_runner;
@@ -91,6 +92,7 @@ private:
     records::PassRecordStore *m_recordingIn = nullptr; // the store the current record began in
     std::optional<qint64> m_id;
     QString m_target;
+    bool m_rehearsal = false; // the record under way is of a rehearsed pass
     qint64 m_lastSampleMs = 0;
     int m_samples = 0;
     bool m_radioSteered = false; // the radio tuned this pass: its figures are this pass's

@@ -99,6 +99,7 @@ private slots:
         radio->setPlan(plan);
         radio->connectRadio();
         QSignalSpy recording(station.passRecorder(), &slew::station::PassRecorder::recording);
+        QSignalSpy said(station.passRecorder(), &slew::station::PassRecorder::logLine);
 
         // A whole pass, short, with time to be at the AOS point first: 17 s
         // of the test's time.
@@ -122,6 +123,14 @@ private slots:
         QCOMPARE(r.planned.target, QStringLiteral("SJ-6D"));
         QCOMPARE(r.planned.norad, 270033591);
         QVERIFY(r.planned.rehearsal);
+        // The log says it was rehearsed, where it says the record began and ended.
+        QStringList lines;
+        for (const QList<QVariant> &line : said)
+            lines << line.at(0).toString();
+        QVERIFY2(lines.contains(QStringLiteral("records: pass %1 (SJ-6D) in progress (rehearsal)").arg(id)),
+                 qPrintable(lines.join(u'\n')));
+        QVERIFY2(lines.contains(QStringLiteral("records: pass %1 (SJ-6D) tracked, %2 samples (rehearsal)").arg(id).arg(r.samples)),
+                 qPrintable(lines.join(u'\n')));
         // The pass's own times, as predicted.
         const slew::sky::Pass &pass = *station.passRunner()->pass();
         QVERIFY(std::abs(r.planned.aos.toMSecsSinceEpoch() - slew::sky::utcFromJulian(pass.aos.julian).toMSecsSinceEpoch()) <= 1);
