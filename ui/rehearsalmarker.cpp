@@ -14,10 +14,7 @@ RehearsalMarker::RehearsalMarker(const tracking::StationClock *clock, QMainWindo
     : QLabel(window), m_clock(clock), m_titled(window)
 {
     setObjectName(QStringLiteral("rehearsalMarker"));
-    // Orange on dark text: unlike the amber alarm banner and the status
-    // bar's grey, and readable at a glance across the shack.
-    setStyleSheet(QStringLiteral("background:#f07818; color:#1a1a1a; font-weight:bold; padding:1px 8px; "
-                                 "border-radius:3px;"));
+    setStyleSheet(markStyle());
     setToolTip(tr("The station clock is not real time: the passes, the plot and tracking follow it. "
                   "Sky → Time controller… goes back to real time."));
     // The window sets its own title as the link comes and goes: mark
@@ -38,6 +35,13 @@ RehearsalMarker::RehearsalMarker(const tracking::StationClock *clock, QMainWindo
 QString RehearsalMarker::clockText(double julian)
 {
     return sky::utcFromJulian(julian).toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")) + QStringLiteral(" UTC");
+}
+
+QString RehearsalMarker::markStyle()
+{
+    // Orange on dark text: unlike the amber alarm banner and the status
+    // bar's grey, and readable at a glance across the shack.
+    return QStringLiteral("background:#f07818; color:#1a1a1a; font-weight:bold; padding:1px 8px; border-radius:3px;");
 }
 
 QString RehearsalMarker::rateText(double rate)

@@ -29,6 +29,8 @@ public:
     static QString clockText(double julian);
     // "×5", "×2.5"
     static QString rateText(double rate);
+    // How a rehearsal is marked wherever the window says it: orange.
+    static QString markStyle();
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;

@@ -5,8 +5,11 @@
 
 #include "chartaxisticks.h"
 #include "plotareaaligner.h"
+#include "rehearsalmarker.h"
 #include "statuslaneview.h"
 #include "telemetrycsv.h"
+
+#include "tracking/stationclock.h"
 
 #include <QCategoryAxis>
 #include <QChart>
@@ -90,6 +93,11 @@ TelemetryCharts::TelemetryCharts(const model::TelemetryHistory *history, QWidget
         b->setAutoDefault(false);
         b->setFocusPolicy(Qt::NoFocus);
     }
+    m_rehearsal = new QLabel;
+    m_rehearsal->setObjectName(QStringLiteral("chartRehearsal"));
+    m_rehearsal->setStyleSheet(RehearsalMarker::markStyle());
+    m_rehearsal->setToolTip(tr("The charts' times are the station clock's, a rehearsal's own time, not the real time."));
+    m_rehearsal->hide();
 
     auto *controls = new QHBoxLayout;
     controls->addWidget(new QLabel(tr("Window")));
@@ -97,6 +105,7 @@ TelemetryCharts::TelemetryCharts(const model::TelemetryHistory *history, QWidget
     controls->addWidget(m_pause);
     controls->addWidget(m_export);
     controls->addWidget(m_message, 1);
+    controls->addWidget(m_rehearsal);
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     layout->setSpacing(2);
@@ -343,10 +352,32 @@ void TelemetryCharts::setWindowMs(qint64 ms)
     redraw();
 }
 
+void TelemetryCharts::followClock(const tracking::StationClock *clock)
+{
+    m_clock = clock;
+    if (clock) {
+        connect(clock, &tracking::StationClock::changed, this, &TelemetryCharts::showRehearsal, Qt::UniqueConnection);
+        connect(clock, &tracking::StationClock::pausedChanged, this, &TelemetryCharts::showRehearsal,
+                Qt::UniqueConnection);
+    }
+    showRehearsal();
+    redraw();
+}
+
+void TelemetryCharts::showRehearsal()
+{
+    const bool rehearsal = m_clock && m_clock->isRehearsal();
+    if (rehearsal)
+        m_rehearsal->setText(tr("REHEARSAL: the times are the station clock's (%1%2)")
+                                 .arg(RehearsalMarker::rateText(m_clock->rate()),
+                                      m_clock->isPaused() ? tr(", paused") : QString()));
+    m_rehearsal->setVisible(rehearsal);
+}
+
 void TelemetryCharts::setPaused(bool paused)
 {
     m_paused = paused;
-    m_frozenAt = QDateTime::currentMSecsSinceEpoch();
+    m_frozenAt = TelemetryRecorder::nowMs(m_clock);
     m_pause->setChecked(paused);
     m_pause->setText(paused ? tr("Resume") : tr("Pause"));
     m_message->setText(paused ? tr("Paused: still recording") : QString());
@@ -358,7 +389,7 @@ void TelemetryCharts::redraw()
 {
     if (m_paused)
         return;
-    const qint64 to = QDateTime::currentMSecsSinceEpoch();
+    const qint64 to = TelemetryRecorder::nowMs(m_clock);
     const qint64 from = to - m_windowMs;
     for (Panel &p : m_panels) {
         if (!p.offered)
@@ -422,7 +453,7 @@ void TelemetryCharts::redrawLanes(Panel &panel, qint64 from, qint64 to)
 
 bool TelemetryCharts::exportCsv(const QString &path, QString *error) const
 {
-    const qint64 to = m_paused ? m_frozenAt : QDateTime::currentMSecsSinceEpoch();
+    const qint64 to = m_paused ? m_frozenAt : TelemetryRecorder::nowMs(m_clock);
     const qint64 from = to - m_windowMs;
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly | QIODevice::Text)) {

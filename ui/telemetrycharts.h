@@ -13,6 +13,9 @@
 // The window runs from one minute to 24 hours; each redraw asks the history
 // for at most two points per pixel column, so a day of 10 Hz samples costs
 // no more to draw than a minute. Pausing freezes the view, not the record.
+// Following the station clock (followClock), the time axis is that clock's:
+// during a rehearsal the rehearsal's own time, and a line above the charts
+// says so, as the status bar does.
 
 #include "telemetryrecorder.h"
 
@@ -30,6 +33,10 @@ class QChartView;
 class QDateTimeAxis;
 class QValueAxis;
 
+namespace slew::tracking {
+class StationClock;
+}
+
 namespace slew::ui {
 
 class PlotAreaAligner;
@@ -40,6 +47,13 @@ class TelemetryCharts : public QWidget {
 public:
     // The history's series are in TelemetryRecorder::Series order.
     explicit TelemetryCharts(const model::TelemetryHistory *history, QWidget *parent = nullptr);
+
+    // The time axis ends at the time `clock` reads (it must outlive this),
+    // as the recorder stamps it (TelemetryRecorder::followClock); with
+    // none, at this machine's UTC.
+    void followClock(const tracking::StationClock *clock);
+    // "REHEARSAL: the times are the station clock's (×5)", shown only in a rehearsal.
+    QLabel *rehearsalLine() const { return m_rehearsal; }
 
     qint64 windowMs() const { return m_windowMs; }
     void setWindowMs(qint64 ms); // clamped to 1 min .. 24 h
@@ -101,6 +115,7 @@ private:
     void redrawPanel(Panel &panel, qint64 from, qint64 to);
     void redrawLanes(Panel &panel, qint64 from, qint64 to);
     void chooseExportFile();
+    void showRehearsal();
 
     const model::TelemetryHistory *m_history;
     std::vector<Panel> m_panels;
@@ -110,6 +125,8 @@ private:
     QPushButton *m_pause;
     QPushButton *m_export;
     QLabel *m_message;
+    QLabel *m_rehearsal;
+    const tracking::StationClock *m_clock = nullptr;
     QTimer m_timer;
     qint64 m_windowMs = 60 * 1000; // live by default: the last minute
     qint64 m_frozenAt = 0; // the view's right edge while paused

@@ -1,5 +1,8 @@
 #include "telemetryrecorder.h"
 
+#include "sky/skyvector.h"
+#include "tracking/stationclock.h"
+
 #include <QDateTime>
 
 #include <cmath>
@@ -19,13 +22,13 @@ TelemetryRecorder::TelemetryRecorder(RotatorSession *session, QObject *parent) :
     connect(session, &RotatorSession::positionChanged, this, [this](double az, double el, bool stale) {
         if (stale)
             return; // a stale position is the old one again, not a new sample
-        const qint64 now = QDateTime::currentMSecsSinceEpoch();
+        const qint64 now = nowMs();
         record(AzActual, now, az, false);
         record(ElActual, now, el, false);
         emit recorded();
     });
     connect(session, &RotatorSession::commandedChanged, this, [this](double az, double el) {
-        const qint64 now = QDateTime::currentMSecsSinceEpoch();
+        const qint64 now = nowMs();
         record(AzCommanded, now, az, false);
         record(ElCommanded, now, el, false);
         emit recorded();
@@ -34,15 +37,56 @@ TelemetryRecorder::TelemetryRecorder(RotatorSession *session, QObject *parent) :
     connect(session, &RotatorSession::statusChanged, this, [this](session::StatusWord s) {
         if (!s.valid)
             return;
-        const qint64 now = QDateTime::currentMSecsSinceEpoch();
+        const qint64 now = nowMs();
         record(AzStatus, now, s.azimuth(), true);
         record(ElStatus, now, s.elevation(), true);
         emit recorded();
     });
     connect(session, &RotatorSession::errorFlagsChanged, this, [this](int ge) {
-        record(ErrorFlags, QDateTime::currentMSecsSinceEpoch(), ge, true);
+        record(ErrorFlags, nowMs(), ge, true);
         emit recorded();
     });
+}
+
+void TelemetryRecorder::followClock(const tracking::StationClock *clock)
+{
+    m_clock = clock;
+    if (!clock)
+        return;
+    connect(clock, &tracking::StationClock::changed, this, &TelemetryRecorder::onClockMoved, Qt::UniqueConnection);
+    // A pause of real time turns it into a rehearsal, with no new start.
+    connect(clock, &tracking::StationClock::pausedChanged, this, &TelemetryRecorder::onClockMoved,
+            Qt::UniqueConnection);
+    onClockMoved();
+}
+
+qint64 TelemetryRecorder::nowMs(const tracking::StationClock *clock)
+{
+    if (!clock)
+        return QDateTime::currentMSecsSinceEpoch();
+    return qint64(std::llround(sky::unixSecondsFromJulian(clock->nowJulian()) * 1000.0));
+}
+
+void TelemetryRecorder::onClockMoved()
+{
+    const bool rehearsal = m_clock->isRehearsal();
+    const qint64 now = nowMs();
+    bool earlier = false;
+    for (int s = 0; s < SeriesCount; ++s) {
+        const std::optional<QPointF> last = m_history.lastSample(s);
+        earlier = earlier || (last && qint64(last->x()) > now);
+    }
+    const bool otherKind = rehearsal != m_recordsRehearsal;
+    m_recordsRehearsal = rehearsal;
+    if (!otherKind && !earlier)
+        return;
+    // The history keeps time in order (an earlier sample would be taken as
+    // the latest): a new start earlier than the record, or another kind of
+    // time, begins a new record.
+    m_history.clear();
+    m_lastValue.fill(session::kUnknown);
+    m_lastTime.fill(0);
+    emit recorded();
 }
 
 QString TelemetryRecorder::seriesLabel(Series s)
@@ -81,7 +125,7 @@ void TelemetryRecorder::record(Series s, qint64 now, double value, bool onlyOnCh
 
 void TelemetryRecorder::recordPointingError(double degrees)
 {
-    record(PointingError, QDateTime::currentMSecsSinceEpoch(), degrees, false);
+    record(PointingError, nowMs(), degrees, false);
     emit recorded();
 }
 
@@ -89,7 +133,7 @@ void TelemetryRecorder::recordDopplerError(double receiveHz, double transmitHz)
 {
     // A path that is not tuned is not recorded: a gap, not zeros (record()
     // skips NaN).
-    const qint64 now = QDateTime::currentMSecsSinceEpoch();
+    const qint64 now = nowMs();
     record(ReceiveDopplerError, now, receiveHz, false);
     record(TransmitDopplerError, now, transmitHz, false);
     emit recorded();
@@ -99,7 +143,7 @@ void TelemetryRecorder::onTelemetry(const session::Telemetry &t)
 {
     // Each IP reply re-sends the whole set; only values that moved (or have
     // not been written for a second) become samples.
-    const qint64 now = QDateTime::currentMSecsSinceEpoch();
+    const qint64 now = nowMs();
     record(AzVelocity, now, t.azVelocity, false);
     record(ElVelocity, now, t.elVelocity, false);
     record(AzLoad, now, t.azLoad, false);
@@ -114,7 +158,7 @@ namespace slew::ui {
 
 void TelemetryRecorder::recordRemote(const remote::TelemetrySample &s)
 {
-    const qint64 now = QDateTime::currentMSecsSinceEpoch();
+    const qint64 now = nowMs();
     const auto put = [&](Series series, const std::optional<double> &value, bool onlyOnChange = false) {
         if (value)
             record(series, now, *value, onlyOnChange);

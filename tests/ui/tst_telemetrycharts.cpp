@@ -2,8 +2,9 @@
 // The telemetry tab as an operator reads it: every chart's heading whole and
 // every plot on one left edge at the window sizes operators use, with and
 // without the pointing-error chart; the status and error registers as named
-// states; and the CSV export a spreadsheet takes as it is, one row per time
-// with the values the controller sent.
+// states; the CSV export a spreadsheet takes as it is, one row per time
+// with the values the controller sent; and during a rehearsal, the samples
+// and the time axis in the station clock's time, said above the charts.
 #include "mainwindow.h"
 #include "statuslaneview.h"
 #include "telemetrycharts.h"
@@ -11,12 +12,16 @@
 #include "telemetryrecorder.h"
 #include "windowfixture.h"
 
+#include "sky/skyvector.h"
 #include "sky/utctime.h"
+#include "timecontroller.h"
+#include "tracking/stationclock.h"
 
 #include <QCategoryAxis>
 #include <QChart>
 #include <QChartView>
 #include <QDateTime>
+#include <QDateTimeAxis>
 #include <QDir>
 #include <QFile>
 #include <QLabel>
@@ -173,6 +178,56 @@ private slots:
                                           .arg(size.width())
                                           .arg(size.height())
                                           .arg(pointing ? QStringLiteral("-pointing") : QString())));
+    }
+
+    void aRehearsalIsChartedInTheStationClocksTime()
+    {
+        WindowFixture f(QString::fromLatin1(WindowFixture::fastSimOnItsClock));
+        auto *recorder = f.window->findChild<TelemetryRecorder *>();
+        QVERIFY(recorder);
+        TelemetryCharts *charts = f.window->telemetryCharts();
+        f.window->tabs()->setCurrentWidget(charts);
+        // As the window wires them: both follow the station clock.
+        recorder->followClock(f.station.clock());
+        charts->followClock(f.station.clock());
+        QVERIFY(f.connectAndWait());
+        const int az = Series::AzActual;
+        const TelemetryHistory &history = recorder->history();
+        const auto msFrom = [](double julian) { return slew::sky::unixSecondsFromJulian(julian) * 1000.0; };
+        // The newest position sample within `seconds` after `fromMs`.
+        const auto recordedFrom = [&](double fromMs, double seconds) {
+            const std::optional<QPointF> last = history.lastSample(az);
+            return last && last->x() >= fromMs && last->x() <= fromMs + seconds * 1000.0;
+        };
+        const auto axisEnd = [&] {
+            auto *view = charts->findChild<QChartView *>(QStringLiteral("chartAzElView"));
+            auto *axis = view ? qobject_cast<QDateTimeAxis *>(view->chart()->axes(Qt::Horizontal).value(0)) : nullptr;
+            return axis ? axis->max() : QDateTime();
+        };
+        const double realStart = msFrom(slew::sky::julianNow()) - 1000.0;
+        QVERIFY(f.waitFor([&] { return recordedFrom(realStart, 30); }, 10000));
+        QVERIFY(charts->rehearsalLine()->isHidden());
+
+        // A rehearsal of another day: a record of its own, in its time.
+        const double start = *slew::sky::julianFromIso(QStringLiteral("2018-01-22T07:40:00Z"));
+        f.window->timeController()->rehearse(start, 5.0);
+        QCOMPARE(history.sampleCount(az), 0);
+        QVERIFY(f.waitFor([&] { return recordedFrom(msFrom(start), 60); }, 10000));
+        QVERIFY(f.waitFor([&] { return axisEnd().date() == QDate(2018, 1, 22); }, 10000));
+        QVERIFY(charts->rehearsalLine()->isVisible());
+        QCOMPARE(charts->rehearsalLine()->text(), QStringLiteral("REHEARSAL: the times are the station clock's (×5)"));
+        // Paused, it says so.
+        f.station.clock()->pause();
+        QCOMPARE(charts->rehearsalLine()->text(),
+                 QStringLiteral("REHEARSAL: the times are the station clock's (×5, paused)"));
+
+        // Real time again: a new record, and the mark gone.
+        f.window->timeController()->followRealTime();
+        QCOMPARE(history.sampleCount(az), 0);
+        const double back = msFrom(slew::sky::julianNow()) - 1000.0;
+        QVERIFY(f.waitFor([&] { return recordedFrom(back, 30); }, 10000));
+        QVERIFY(f.waitFor([&] { return axisEnd().date() >= QDateTime::currentDateTimeUtc().date().addDays(-1); }, 10000));
+        QVERIFY(charts->rehearsalLine()->isHidden());
     }
 
     void statusRegistersAreNamedStates()
