@@ -31,6 +31,11 @@ bool SimulatorLink::setTimeScale(double scale)
     return true;
 }
 
+double SimulatorLink::timeScale() const
+{
+    return m_simulator.clock().isManual() ? 1.0 : m_simulator.clock().timeScale();
+}
+
 void SimulatorLink::open()
 {
     if (m_connection)

@@ -27,6 +27,7 @@ public:
     std::optional<double> clockSeconds() const override;
     bool clockIsStepped() const override { return m_simulator.clock().isManual(); }
     bool setTimeScale(double scale) override;
+    double timeScale() const override;
 
     Simulator &simulator() { return m_simulator; }
     // The firmware of the open connection (counters, dialect); null when closed.

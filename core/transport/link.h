@@ -78,6 +78,9 @@ public:
         Q_UNUSED(scale);
         return false;
     }
+    // How many times faster than real time that clock runs now: 1 where
+    // the far end keeps no clock of its own to scale.
+    virtual double timeScale() const { return 1.0; }
     // The session calls this with true just before it writes a query it
     // will wait an answer to, and with false once that query is answered,
     // given up or abandoned. Only a link that shares its wire with other

@@ -112,6 +112,11 @@ bool SharedLineLink::setTimeScale(double scale)
     return m_line && m_line->line() && m_line->line()->setTimeScale(scale);
 }
 
+double SharedLineLink::timeScale() const
+{
+    return m_line && m_line->line() ? m_line->line()->timeScale() : 1.0;
+}
+
 void SharedLineLink::setAwaitingReply(bool awaiting)
 {
     // The session says so just before it writes the query; anything it

@@ -52,6 +52,7 @@ public:
     std::optional<double> clockSeconds() const override;
     bool clockIsStepped() const override;
     bool setTimeScale(double scale) override;
+    double timeScale() const override;
     void setAwaitingReply(bool awaiting) override;
 
     int rotor() const { return m_rotor; }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "axistuner.h"
 
+#include "sampleclock.h"
 #include "session/rotatorsession.h"
 
 #include <cmath>
@@ -72,6 +73,10 @@ bool AxisTuner::start(Axis axis)
         m_error = tr("the step size must be a positive number of degrees");
         return false;
     }
+    if (const QString why = fasterThanRealTime(m_session); !why.isEmpty()) {
+        m_error = tr("not tuned: %1").arg(why);
+        return false;
+    }
     // The gate's travel: positions here are in the pointing frame, as its are.
     const model::RotatorLimits lim = m_session->moveGate().limits();
     const double lo = axis == Axis::Azimuth ? lim.azMin : lim.elMin;
@@ -137,6 +142,13 @@ void AxisTuner::startStep()
 
 void AxisTuner::onStepFinished(const StepResponse &response)
 {
+    // A rehearsal started while the step ran: its samples are too few to
+    // go by, and nothing is offered from them (fail() writes the old gains
+    // back if a trial is on the controller).
+    if (const QString why = fasterThanRealTime(m_session); !why.isEmpty()) {
+        fail(tr("the measurement is discarded: %1").arg(why));
+        return;
+    }
     const StepResponseAnalyzer analyzer(m_settings.analysis);
     if (m_phase == Phase::MeasuringBefore) {
         m_result.before = response;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "motionrun.h"
 
+#include "sampleclock.h"
 #include "session/rotatorsession.h"
 
 #include <cmath>
@@ -23,6 +24,11 @@ MotionRun::MotionRun(session::RotatorSession *session, QObject *parent)
     settings.prepareSeconds = 5.0;
     m_step.setSettings(settings);
     connect(&m_step, &StepExperiment::finished, this, [this](const StepResponse &response) {
+        // As in the tuner: a step measured faster than real time is not kept.
+        if (const QString why = fasterThanRealTime(m_session); !why.isEmpty()) {
+            emit failed(why);
+            return;
+        }
         const AxisMotion motion = measureAxisMotion(response, m_step.settings().band);
         if (motion.ok)
             emit measured(m_axis, motion);
@@ -41,6 +47,10 @@ bool MotionRun::start(Axis axis)
     }
     if (!m_session->isConnected() || !m_session->hasPosition()) {
         m_error = tr("connect to the rotator first: there is no position to measure from");
+        return false;
+    }
+    if (const QString why = fasterThanRealTime(m_session); !why.isEmpty()) {
+        m_error = tr("speed not measured: %1").arg(why);
         return false;
     }
     const model::RotatorLimits lim = m_session->moveGate().limits();

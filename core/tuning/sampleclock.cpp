@@ -3,6 +3,8 @@
 #include "session/rotatorsession.h"
 #include "transport/link.h"
 
+#include <QObject>
+
 namespace slew::tuning {
 
 SampleClock::SampleClock(const session::RotatorSession *session) : m_session(session)
@@ -18,6 +20,18 @@ double SampleClock::now() const
             return *linkClock;
     }
     return double(m_wall.nsecsElapsed()) / 1e9;
+}
+
+QString fasterThanRealTime(const session::RotatorSession *session)
+{
+    const transport::Link *link = session ? session->link() : nullptr;
+    const double scale = link ? link->timeScale() : 1.0;
+    if (scale <= 1.0)
+        return {};
+    return QObject::tr("the simulator runs %1 times faster than real time, with a rehearsal's station clock: its "
+                       "position is read at the usual pace, so a step would get %1 times fewer samples than it needs. "
+                       "Put the station clock back to real time to measure")
+        .arg(scale, 0, 'g', 3);
 }
 
 } // namespace slew::tuning

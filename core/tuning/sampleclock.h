@@ -5,6 +5,7 @@
 // however fast or slow the machine running it is.
 
 #include <QElapsedTimer>
+#include <QString>
 
 namespace slew::session {
 class RotatorSession;
@@ -23,5 +24,13 @@ private:
     const session::RotatorSession *m_session;
     QElapsedTimer m_wall;
 };
+
+// Why a step cannot be measured on the session's link now, in the
+// operator's words, or empty. A simulator run faster than real time (paced
+// to a rehearsal's station clock) moves that many times further between
+// two position reads, which keep the wall clock's pace: a step gets a few
+// samples, too few to fit gains or measure a speed by, and the figures
+// would be offered as if they were good.
+QString fasterThanRealTime(const session::RotatorSession *session);
 
 } // namespace slew::tuning

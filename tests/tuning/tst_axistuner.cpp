@@ -2,12 +2,16 @@
 // The tuning engine against a deliberately mistuned simulator on a stepped
 // clock: the proposal must take the overshoot under 5 % and cut the settling
 // time by at least 30 % on both axes, and cancel must leave the registers.
+// A simulator run faster than real time (a rehearsal's pace) is not tuned
+// or measured, and a run it speeds up midway is discarded.
 #include "../common/simulatorpump.h"
 
 #include "linkschemes.h"
 #include "session/rotatorsession.h"
 #include "sim/simulatorscheme.h"
+#include "transport/link.h"
 #include "tuning/axistuner.h"
+#include "tuning/motionrun.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -150,6 +154,57 @@ private slots:
         QVERIFY2(big.error().contains(QStringLiteral("does not fit")), qPrintable(big.error()));
         for (const QList<QVariant> &bytes : sent)
             QVERIFY(!bytes.front().toByteArray().startsWith("EL"));
+    }
+
+    void refusesFasterThanRealTime()
+    {
+        // On the wall clock, as operators run it, at five times real time:
+        // what the Time controller's rehearsal does to the built-in simulator.
+        connectTo(QStringLiteral("sim:?unsolicited=1&kp=12&ki=1&kd=1&start_az=100&start_el=30"));
+        if (QTest::currentTestFailed())
+            return;
+        QVERIFY(m_session->link()->setTimeScale(5.0));
+        QCOMPARE(m_session->link()->timeScale(), 5.0);
+        QSignalSpy sent(m_session.get(), &RotatorSession::bytesSent);
+        AxisTuner tuner(m_session.get());
+        QVERIFY(!tuner.start(Axis::Azimuth));
+        QVERIFY2(tuner.error().startsWith(QStringLiteral("not tuned: the simulator runs 5 times faster than real time, "
+                                                         "with a rehearsal's station clock")),
+                 qPrintable(tuner.error()));
+        QVERIFY(tuner.error().endsWith(QStringLiteral("Put the station clock back to real time to measure")));
+        tuning::MotionRun speed(m_session.get());
+        QVERIFY(!speed.start(Axis::Elevation));
+        QVERIFY2(speed.error().startsWith(QStringLiteral("speed not measured: the simulator runs 5 times faster")),
+                 qPrintable(speed.error()));
+        // Nothing moved, and no register was read or written.
+        for (const QList<QVariant> &bytes : sent) {
+            const QByteArray b = bytes.front().toByteArray();
+            QVERIFY2(!b.startsWith("AZ") && !b.startsWith("EL") && !b.startsWith("CR") && !b.startsWith("CW"), b.constData());
+        }
+    }
+
+    void discardsARunSpedUpMidway()
+    {
+        connectTo(QStringLiteral("sim:?unsolicited=1&kp=12&ki=1&kd=1&start_az=100&start_el=30"));
+        if (QTest::currentTestFailed())
+            return;
+        const sim::PidGains before = simGains(*m_session, Axis::Azimuth);
+        AxisTuner tuner(m_session.get());
+        QSignalSpy failed(&tuner, &AxisTuner::failed);
+        QSignalSpy offered(&tuner, &AxisTuner::resultReady);
+        QVERIFY2(tuner.start(Axis::Azimuth), qPrintable(tuner.error()));
+        // A rehearsal starts while the step runs.
+        QVERIFY(m_session->link()->setTimeScale(5.0));
+        QVERIFY(failed.wait(60000));
+        QVERIFY2(failed.front().front().toString().startsWith(
+                     QStringLiteral("the measurement is discarded: the simulator runs 5 times faster")),
+                 qPrintable(failed.front().front().toString()));
+        QCOMPARE(offered.count(), 0);
+        QVERIFY(!tuner.isRunning());
+        const sim::PidGains after = simGains(*m_session, Axis::Azimuth);
+        QCOMPARE(after.kp, before.kp);
+        QCOMPARE(after.ki, before.ki);
+        QCOMPARE(after.kd, before.kd);
     }
 };
 

@@ -3,12 +3,17 @@
 // page, the wizard's STOP during homing (the rotator stops), a homing
 // failure injected in the simulator (the wizard says so), tuning with before
 // and after, and the summary's write, read-back and profile save; the
-// summary's register names, and Finish only once the registers read back.
+// summary's register names, and Finish only once the registers read back;
+// no tuning or speed measurement while a rehearsal runs the simulator
+// faster than real time, and the page says why.
 #include "../common/simulatorpump.h"
 
 #include "linkschemes.h"
 #include "session/rotatorsession.h"
 #include "sim/simulatorscheme.h"
+#include "sky/utctime.h"
+#include "tracking/simulatorpace.h"
+#include "tracking/stationclock.h"
 #include "wizard/setupwizard.h"
 
 #include <QAbstractButton>
@@ -347,6 +352,44 @@ private slots:
         TRY_VERIFY(finish->isEnabled());
         QCOMPARE(find<QListWidget>(wizard, "writeResults")->count(), 2); // the park registers
         QVERIFY2(note->text().contains(QStringLiteral("Every register reads back")), qPrintable(note->text()));
+    }
+
+    void noTuningInARehearsalFasterThanRealTime()
+    {
+        // The simulator on the wall clock, paced to a station clock
+        // rehearsing at five times, as the window's Time controller does.
+        RotatorSession session;
+        session.connectTo(QStringLiteral("sim:?unsolicited=1&start_az=40&start_el=20"));
+        TRY_VERIFY_WITH_TIMEOUT(session.capabilities().probed && session.hasPosition(), 5000);
+        tracking::StationClock clock;
+        tracking::SimulatorPace pace(&session, &clock);
+        clock.rehearse(*sky::julianFromIso(QStringLiteral("2018-01-22T07:40:00Z")), 5.0);
+        QVERIFY(pace.follows());
+        SetupWizard wizard(&session);
+        wizard.setStartId(SetupWizard::TuningPageId);
+        wizard.show();
+        QSignalSpy sent(&session, &RotatorSession::bytesSent);
+        auto *status = find<QLabel>(wizard, "tuningStatus");
+        QTest::mouseClick(find<QPushButton>(wizard, "tune"), Qt::LeftButton);
+        QVERIFY2(status->text().startsWith(QStringLiteral("not tuned: the simulator runs 5 times faster than real "
+                                                          "time, with a rehearsal's station clock")),
+                 qPrintable(status->text()));
+        QVERIFY(find<QPushButton>(wizard, "tune")->isEnabled());
+        QVERIFY(!find<QPushButton>(wizard, "accept")->isEnabled()); // no gains offered
+        QTest::mouseClick(find<QPushButton>(wizard, "measureSpeed"), Qt::LeftButton);
+        QVERIFY2(status->text().startsWith(QStringLiteral("speed not measured: the simulator runs 5 times faster")),
+                 qPrintable(status->text()));
+        for (const QList<QVariant> &bytes : sent) {
+            const QByteArray b = bytes.front().toByteArray();
+            QVERIFY2(!b.startsWith("AZ") && !b.startsWith("EL") && !b.startsWith("CR"), b.constData());
+        }
+
+        // Back in real time, tuning starts.
+        clock.followRealTime();
+        QTest::mouseClick(find<QPushButton>(wizard, "tune"), Qt::LeftButton);
+        QVERIFY2(!find<QPushButton>(wizard, "tune")->isEnabled(), qPrintable(status->text()));
+        wizard.stopRotator();
+        TRY_VERIFY(find<QPushButton>(wizard, "tune")->isEnabled());
     }
 
     void cancellingTheWizardStopsTheRotator()
