@@ -4,12 +4,13 @@
 // for rehearsing a pass and checking a plan as Gpredict's Time Controller
 // does. Start the clock at a chosen UTC instant, run it 1 to 20 times
 // faster, or go back to real time; pause it, step it forward while paused,
-// or move it along the next hours with the slider, as in Gpredict's; or
-// rehearse a chosen pass from two minutes before its AOS. The Tracking tab's passes, the pass and
-// the target on the plot, and a running tracker follow the clock (each plans
-// again when it changes), and the built-in simulator keeps its pace
-// (tracking/simulatorpace.h). A non-modal dialog: the window goes on
-// working beside it, and closing it keeps the clock as it is.
+// or move it along the next hours with the slider; or rehearse a chosen
+// pass from two minutes before its AOS. The Tracking tab's passes, the pass
+// and the target on the plot, and a running tracker follow the clock (each
+// plans again when it starts again; a pause or a step needs no new plan),
+// and the built-in simulator keeps its pace (tracking/simulatorpace.h). A
+// non-modal dialog: the window goes on working beside it, and closing it
+// keeps the clock as it is.
 
 #include "tracking/stationclock.h"
 
