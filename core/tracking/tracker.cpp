@@ -195,6 +195,11 @@ bool Tracker::send(double az, double el, bool duringPass)
     return true;
 }
 
+void Tracker::lookAgain()
+{
+    tick(); // does nothing unless waiting or tracking
+}
+
 void Tracker::tick()
 {
     if (m_state != State::Waiting && m_state != State::Tracking)

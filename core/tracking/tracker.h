@@ -87,6 +87,10 @@ public:
     bool track(const QList<SkyPoint> &pass, const PassPlan &plan, double aosJulian, const RotatorReach &reach,
                std::function<double()> now);
     void stopTracking(const QString &why);
+    // The station's time moved on by itself (a paused rehearsal stepped
+    // forward): look at once, rather than at the end of a wait that was
+    // planned for the time before (up to 30 s long hours before a pass).
+    void lookAgain();
 
     State state() const { return m_state; }
     // The rotator is the tracker's: moving to the AOS point, or tracking.

@@ -2,7 +2,8 @@
 // The tracker on the simulator's manual clock: a whole pass in about a
 // second of test time. It arrives at the AOS point early, follows the plan
 // inside the limits, sends fewer than one command a second, parks after
-// LOS, and a stop from anywhere ends it at once.
+// LOS, and a stop from anywhere ends it at once; a step of the station
+// clock is seen at once, not at the end of a long wait.
 
 #include "../common/simulatorpump.h"
 #include "linkschemes.h"
@@ -269,6 +270,28 @@ private slots:
         const double then = rig.sim->clock().now();
         QVERIFY(runEventLoopUntil([&] { return rig.sim->clock().now() > then + 20; }, 10000));
         QCOMPARE(rig.targets.size(), sent); // nothing more went out
+    }
+
+    void aStepOfTheClockIsSeenAtOnce()
+    {
+        Rig rig;
+        QVERIFY(rig.open(450, 180));
+        Tracker tracker(&rig.session);
+        // An hour before AOS the tracker waits 30 s between looks; a paused
+        // rehearsal then stepped to ten seconds before AOS.
+        double stepped = 0;
+        const std::function<double()> station = rig.clockWithAosIn(3600, kAos);
+        QVERIFY(tracker.track(greatCirclePass(90, 50, true), kAos, rig.reach,
+                              [&] { return station() + stepped / 86400.0; }));
+        const double then = rig.sim->clock().now();
+        QVERIFY(runEventLoopUntil([&] { return rig.sim->clock().now() > then + 2; }, 10000));
+        QCOMPARE(tracker.state(), Tracker::State::Waiting);
+        QVERIFY(!tracker.hasRotator());
+        stepped = 3590;
+        tracker.lookAgain();
+        // On its way to the AOS point now, not half a minute later.
+        QVERIFY(tracker.hasRotator());
+        QVERIFY(!rig.targets.isEmpty());
     }
 
     void aLostLinkEndsTracking()
