@@ -88,6 +88,9 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     m_parkHome = new ParkHomePanel(session);
     m_presets = new PresetPanel(session);
     m_charts = new TelemetryCharts(&m_recorder->history());
+    // The charts in the station clock's time: a rehearsal's own.
+    m_recorder->followClock(station->clock());
+    m_charts->followClock(station->clock());
     connect(session, &RotatorSession::capabilitiesChanged, m_charts, [this](const session::Capabilities &caps) {
         // Until the probe has answered, everything is offered.
         m_charts->setReportsShown(!caps.probed || caps.inputs, !caps.probed || caps.status || caps.errors);
@@ -246,6 +249,12 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     connect(station->passRecords(), &records::PassRecordStore::writeFailed, this,
             [this](const QString &error) { reportProblem(tr("pass records: %1").arg(error)); });
     m_time = new TimeController(station, this);
+    // The Tracking tab's "Rehearse this pass": from two minutes before its
+    // AOS, with the Time controller shown to pause or step it.
+    connect(m_tracking, &TrackingPanel::rehearsePassRequested, m_time, [this](double aosJulian) {
+        m_time->rehearsePass(aosJulian);
+        m_time->showController();
+    });
     new RehearsalMarker(station->clock(), this);
     connect(m_tracking, &TrackingPanel::passOverlayChanged, m_plot, &PolarPlotWidget::setPassOverlay);
     connect(m_tracking, &TrackingPanel::passTargetMoved, m_plot, &PolarPlotWidget::setPassTarget);

@@ -37,7 +37,9 @@ TrackingLine::TrackingLine(station::Station *station, QWidget *parent) : QLabel(
 
 QString TrackingLine::countdown(double seconds)
 {
-    const qint64 s = std::llround(std::max(0.0, seconds)); // 427.9999 s of arithmetic is 7:08
+    // Whole seconds left, as a countdown shows them. A Julian day carries
+    // times to some 40 µs: 427.9999 s of its arithmetic is 7:08.
+    const qint64 s = qint64(std::floor(std::max(0.0, seconds) + 1e-3));
     return QStringLiteral("%1:%2:%3").arg(s / 3600).arg((s / 60) % 60, 2, 10, QLatin1Char('0')).arg(s % 60, 2, 10, QLatin1Char('0'));
 }
 

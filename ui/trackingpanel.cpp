@@ -70,12 +70,18 @@ TrackingPanel::TrackingPanel(station::Station *station, QWidget *parent)
     m_track->setObjectName(QStringLiteral("track"));
     m_stopTracking = new QPushButton(tr("Stop tracking"));
     m_stopTracking->setObjectName(QStringLiteral("stopTracking"));
+    m_rehearse = new QPushButton(tr("Rehearse this pass"));
+    m_rehearse->setObjectName(QStringLiteral("rehearsePass"));
+    m_rehearse->setToolTip(tr("Start the station clock two minutes before the selected pass's AOS "
+                              "(Sky → Time controller), to practise it on the simulator or the rotator."));
+    m_rehearse->setEnabled(false);
 
     auto *top = new QFormLayout;
     top->addRow(tr("Station"), m_stationLine);
     top->addRow(tr("Element sets"), m_setAges);
     auto *buttons = new QHBoxLayout;
     buttons->addWidget(m_countdown, 1);
+    buttons->addWidget(m_rehearse);
     buttons->addWidget(m_track);
     buttons->addWidget(m_stopTracking);
     auto *layout = new QVBoxLayout(this);
@@ -89,6 +95,13 @@ TrackingPanel::TrackingPanel(station::Station *station, QWidget *parent)
     connect(m_picker, &TargetPicker::favouritesChanged, this, &TrackingPanel::favouritesChanged);
     connect(m_passes, &QTableWidget::itemSelectionChanged, this, &TrackingPanel::onPassChosen);
     connect(m_track, &QPushButton::clicked, this, &TrackingPanel::startTracking);
+    connect(m_passes, &QTableWidget::itemSelectionChanged, this,
+            [this] { m_rehearse->setEnabled(!m_passes->selectedItems().isEmpty()); });
+    connect(m_rehearse, &QPushButton::clicked, this, [this] {
+        const QList<QTableWidgetItem *> chosen = m_passes->selectedItems();
+        if (!chosen.isEmpty() && chosen.first()->row() < m_planned.size())
+            emit rehearsePassRequested(m_planned[chosen.first()->row()].pass.aos.julian);
+    });
     connect(m_stopTracking, &QPushButton::clicked, this, [this] { m_station->untrack(tr("stopped from the Tracking tab")); });
     connect(m_sets, &sky::ElementSetSources::setsChanged, this, &TrackingPanel::showSetAges);
     connect(m_sets, &sky::ElementSetSources::setsChanged, this, &TrackingPanel::showButtons);

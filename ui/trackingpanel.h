@@ -55,6 +55,7 @@ public:
     bool selectTarget(const QString &name);
     QTableWidget *passTable() const { return m_passes; }
     QPushButton *trackButton() const { return m_track; }
+    QPushButton *rehearseButton() const { return m_rehearse; }
     QPushButton *stopTrackingButton() const { return m_stopTracking; }
     QLabel *countdown() const { return m_countdown; }
     QLabel *live() const { return m_live; }
@@ -74,6 +75,9 @@ signals:
     void passesShown();
     // The operator marked or unmarked a favourite.
     void favouritesChanged();
+    // Rehearse this pass: the window starts the station clock two minutes
+    // before this AOS.
+    void rehearsePassRequested(double aosJulian);
 
 private:
     void showStation();
@@ -104,6 +108,7 @@ private:
     QLabel *m_countdown;
     QLabel *m_live;
     QPushButton *m_track;
+    QPushButton *m_rehearse;
     QPushButton *m_stopTracking;
     QTimer m_tick;
 };

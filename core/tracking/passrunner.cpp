@@ -78,6 +78,7 @@ void PassRunner::endOne(OneEnd end, const QString &why)
     m_running = false;
     m_planning = false;
     disconnect(m_clockChanged);
+    disconnect(m_clockStepped);
     cancelPlanning();
     ++m_generation;
     m_retry.stop();
@@ -94,6 +95,7 @@ void PassRunner::begin(const TrackTarget &target, const sky::Station &station, d
     m_minElevation = minElevationDeg;
     m_clock = clock;
     disconnect(m_clockChanged);
+    disconnect(m_clockStepped);
     m_clockChanged = connect(clock, &StationClock::changed, this, [this] {
         if (m_one) {
             // The schedule was made for the old time: it plans again.
@@ -103,6 +105,8 @@ void PassRunner::begin(const TrackTarget &target, const sky::Station &station, d
         }
         startAfresh(tr("the station clock was changed"));
     });
+    // A paused rehearsal stepped on: the tracker looks at the new instant at once.
+    m_clockStepped = connect(clock, &StationClock::stepped, &m_tracker, &Tracker::lookAgain);
     m_running = true;
     m_planning = false;
     cancelPlanning();
@@ -132,6 +136,7 @@ void PassRunner::stop(const QString &why)
     m_running = false;
     m_planning = false;
     disconnect(m_clockChanged);
+    disconnect(m_clockStepped);
     cancelPlanning();
     ++m_generation;
     m_retry.stop();

@@ -110,6 +110,7 @@ private:
     QString m_waitingFor; // the other tracker a pass is waiting on, if any
     const StationClock *m_clock = nullptr;
     QMetaObject::Connection m_clockChanged;
+    QMetaObject::Connection m_clockStepped;
     bool m_running = false;
     bool m_planning = false;
     int m_generation = 0; // a plan still being made when this moves on is of no use

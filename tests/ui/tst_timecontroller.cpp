@@ -481,6 +481,16 @@ private slots:
         // Two minutes, less what has passed since.
         QVERIFY2(QRegularExpression(QStringLiteral("^AOS in 0:0(1:[0-5]\\d|2:00)$")).match(panel->countdown()->text()).hasMatch(),
                  qPrintable(panel->countdown()->text()));
+
+        // The Tracking tab's button does it for the pass chosen in its table
+        // (its AOS read first: the table is planned again once the clock moves).
+        QVERIFY(!panel->rehearseButton()->isEnabled() || !panel->passTable()->selectedItems().isEmpty());
+        panel->passTable()->selectRow(2);
+        QVERIFY(panel->rehearseButton()->isEnabled());
+        const double third = panel->passes().at(2).aos.julian;
+        QTest::mouseClick(panel->rehearseButton(), Qt::LeftButton);
+        const double leadThird = secondsBetween(third, clock->nowJulian());
+        QVERIFY2(leadThird > 110.0 && leadThird <= 120.0, qPrintable(QString::number(leadThird)));
     }
 };
 
