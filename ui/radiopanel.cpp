@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "radiopanel.h"
 
-#include "frequencytext.h"
 #include "radiolinkbox.h"
 #include "radioplanform.h"
 #include "radioplansettings.h"
 #include "radioreadout.h"
 #include "radiovfochoice.h"
 
+#include "radio/frequencytext.h"
 #include "radio/transponderset.h"
 #include "radio/transpondersources.h"
 #include "sky/elementsetsources.h"
@@ -39,11 +39,11 @@ QGroupBox *box(const QString &title, QWidget *content, const QString &name)
 QString describePlan(const radio::RadioPlan &plan)
 {
     const radio::SatelliteFrequencies &f = plan.frequencies;
-    QString text = QObject::tr("downlink %1").arg(groupedMegahertz(f.downlinkHz + f.downlinkOffsetHz));
+    QString text = QObject::tr("downlink %1").arg(radio::groupedMegahertz(f.downlinkHz + f.downlinkOffsetHz));
     if (!plan.receiveMode.isEmpty())
         text += QLatin1Char(' ') + plan.receiveMode;
     if (f.uplinkHz) {
-        text += QObject::tr(", uplink %1").arg(groupedMegahertz(*f.uplinkHz + f.uplinkOffsetHz));
+        text += QObject::tr(", uplink %1").arg(radio::groupedMegahertz(*f.uplinkHz + f.uplinkOffsetHz));
         if (!plan.transmitMode.isEmpty())
             text += QLatin1Char(' ') + plan.transmitMode;
     }

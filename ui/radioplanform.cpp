@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "radioplanform.h"
 
+#include "radio/frequencytext.h"
 #include "station/radiooptions.h"
 
 #include <QComboBox>
@@ -118,7 +119,7 @@ void RadioPlanForm::setTransponders(const QList<radio::Transponder> &transponder
     for (const radio::Transponder &t : transponders) {
         QString item = t.displayName();
         if (t.downlinkLowHz)
-            item += QStringLiteral(" · %1 MHz").arg(*t.downlinkLowHz / 1e6, 0, 'f', 3);
+            item += QStringLiteral(" · %1").arg(radio::groupedMegahertz(*t.downlinkLowHz));
         if (!t.mode.isEmpty())
             item += QLatin1Char(' ') + t.mode;
         if (!t.alive)

@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "radioreadout.h"
 
-#include "frequencytext.h"
-
 #include "radio/doppler.h"
 #include "radio/dopplersteering.h"
+#include "radio/frequencytext.h"
 #include "station/dopplerradio.h"
 #include "station/station.h"
 #include "tracking/passrunner.h"
@@ -107,9 +106,9 @@ void RadioReadout::refresh()
     } else {
         const radio::SatelliteFrequencies &f = plan->frequencies;
         auto path = [](const QString &name, double hz, double offsetHz) {
-            QString text = tr("%1 %2").arg(name, groupedMegahertz(hz));
+            QString text = tr("%1 %2").arg(name, radio::groupedMegahertz(hz));
             if (offsetHz != 0)
-                text += tr(" (calibration %1)").arg(signedHertz(offsetHz));
+                text += tr(" (calibration %1)").arg(radio::signedHertz(offsetHz));
             return text;
         };
         QString text = path(tr("down"), f.downlinkHz, f.downlinkOffsetHz);
@@ -129,9 +128,9 @@ void RadioReadout::refresh()
     }
     QStringList sent;
     if (m_lastReceive)
-        sent << tr("receive %1").arg(groupedMegahertz(*m_lastReceive));
+        sent << tr("receive %1").arg(radio::groupedMegahertz(*m_lastReceive));
     if (m_lastTransmit)
-        sent << tr("transmit %1").arg(groupedMegahertz(*m_lastTransmit));
+        sent << tr("transmit %1").arg(radio::groupedMegahertz(*m_lastTransmit));
     QString sentText = sent.isEmpty() ? tr("nothing yet") : sent.join(tr(", "));
     if (radio->isControlHeld())
         sentText = sent.isEmpty() ? tr("nothing: radio control stopped") : tr("%1; radio control stopped").arg(sentText);
@@ -147,9 +146,9 @@ void RadioReadout::refresh()
             return uplink ? radio::uplinkToSendHz(hz, rangeRate) - hz : radio::downlinkOnGroundHz(hz, rangeRate) - hz;
         };
         auto path = [&](const QString &name, double hz, bool uplink) {
-            QString text = tr("%1 %2").arg(name, signedHertz(shift(hz, look->rangeRateKmS, uplink)));
+            QString text = tr("%1 %2").arg(name, radio::signedHertz(shift(hz, look->rangeRateKmS, uplink)));
             if (later)
-                text += tr(" (%1/s)").arg(signedHertz(shift(hz, later->rangeRateKmS, uplink)
+                text += tr(" (%1/s)").arg(radio::signedHertz(shift(hz, later->rangeRateKmS, uplink)
                                                        - shift(hz, look->rangeRateKmS, uplink)));
             return text;
         };
@@ -168,7 +167,7 @@ void RadioReadout::refresh()
     if (!m_lastDialHz || std::abs(*m_lastDialHz) < 0.5)
         m_dial->setText(tr("not turned"));
     else
-        m_dial->setText(tr("%1 on the downlink, followed").arg(signedHertz(*m_lastDialHz)));
+        m_dial->setText(tr("%1 on the downlink, followed").arg(radio::signedHertz(*m_lastDialHz)));
 
     const radio::DopplerFigures figures = radio->figures();
     if (figures.samples == 0 && figures.commands == 0) {
@@ -176,7 +175,7 @@ void RadioReadout::refresh()
     } else {
         m_figures->setText(tr("%1: error RMS %2, worst %3 over %4 readings; %5 frequencies sent")
                                .arg(radio->isSteering() ? tr("this pass") : tr("last pass"),
-                                    tenthsOfHertz(figures.rmsHz), tenthsOfHertz(figures.worstHz))
+                                    radio::tenthsOfHertz(figures.rmsHz), radio::tenthsOfHertz(figures.worstHz))
                                .arg(figures.samples)
                                .arg(figures.commands));
     }

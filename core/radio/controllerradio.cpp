@@ -41,7 +41,7 @@ void ControllerRadioLink::setState(State state, const QString &detail)
         m_readInFlight = false;
     }
     m_state = state;
-    emit stateChanged(state, detail);
+    emit stateChanged(state, tr("%1: %2").arg(uri(), detail)); // named, as every link's detail (radiolink.h)
 }
 
 void ControllerRadioLink::open()

@@ -89,6 +89,10 @@ public:
     virtual void setMinimumIntervalMs(int ms) = 0;
 
 signals:
+    // `detail` names the link first ("rigctld://host:4532: cannot connect
+    // ...": the operator may have more than one radio in mind), so whoever
+    // shows it adds no name of its own; frequencies in it are as
+    // frequencytext.h writes them.
     void stateChanged(slew::radio::RadioLink::State state, const QString &detail);
     void frequenciesRead(const slew::radio::RadioFrequencies &frequencies);
     // Each command as it went to the radio, for the traffic view and tests.

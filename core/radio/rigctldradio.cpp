@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "rigctldradio.h"
 
+#include "frequencytext.h"
 #include "input/finitenumber.h"
 #include "input/logtext.h"
 #include "protocol/hamliberrors.h"
@@ -498,9 +499,10 @@ void RigctldRadioLink::becomeOpen()
 {
     if (m_state != State::Opening)
         return; // closed by a handler of the signals before
-    setState(State::Open, tr("%1: open at %2 Hz; a set answered in %3 ms")
-                              .arg(m_uri, hzText(m_receiveRead.value_or(0)))
-                              .arg(m_latencyMs));
+    // The frequency as the operator reads it off the dial; none when the
+    // first reading had none.
+    const QString where = m_receiveRead ? tr(" at %1").arg(groupedMegahertz(*m_receiveRead)) : QString();
+    setState(State::Open, tr("%1: open%2; a set answered in %3 ms").arg(m_uri, where).arg(m_latencyMs));
 }
 
 } // namespace slew::radio

@@ -2,6 +2,7 @@
 #include "dopplerradio.h"
 
 #include "radio/controllerradio.h"
+#include "radio/frequencytext.h"
 #include "radio/radiolinks.h"
 #include "session/rotatorsession.h"
 #include "tracking/passrunner.h"
@@ -23,11 +24,6 @@ namespace {
 constexpr std::array kReopenSeconds{1, 2, 5, 10, 30};
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-QString megahertz(double hz)
-{
-    return QStringLiteral("%1 MHz").arg(hz / 1e6, 0, 'f', 6);
-}
 
 // The larger of two errors, either of which may be NaN (not measured).
 double larger(double held, double error)
@@ -99,8 +95,7 @@ bool DopplerRadio::setLink(const QString &uri, QString *error)
     m_steering = std::make_unique<radio::DopplerSteering>(m_link.get());
     connect(m_steering.get(), &radio::DopplerSteering::measured, this, &DopplerRadio::onMeasured);
     connect(m_steering.get(), &radio::DopplerSteering::dialFollowed, this, [this](double offsetHz) {
-        emit logLine(tr("radio: the operator's dial moved the downlink by %1 Hz; followed")
-                         .arg(offsetHz, 0, 'f', 0));
+        emit logLine(tr("radio: the operator's dial moved the downlink by %1; followed").arg(radio::signedHertz(offsetHz)));
     });
     connect(m_link.get(), &RadioLink::stateChanged, this, &DopplerRadio::onLinkState);
     connect(m_link.get(), &RadioLink::frequenciesRead, this, [this](const radio::RadioFrequencies &f) {
@@ -182,8 +177,9 @@ void DopplerRadio::onLinkState(RadioLink::State state, const QString &detail)
         break;
     case RadioLink::State::Open:
         m_reopenAttempt = 0;
-        emit logLine(tr("radio: connected to %1 (%2); latency %3 ms, tuning step %4 Hz")
-                         .arg(m_link->uri(), detail)
+        // The link's detail names it (radio/radiolink.h).
+        emit logLine(tr("radio: connected to %1; latency %2 ms, tuning step %3 Hz")
+                         .arg(detail)
                          .arg(m_link->latencyMs())
                          .arg(m_link->tuningStepHz(), 0, 'f', 0));
         readFound();
@@ -194,7 +190,7 @@ void DopplerRadio::onLinkState(RadioLink::State state, const QString &detail)
         if (isSteering())
             end(tr("the radio's link closed"));
         if (m_wanted) {
-            emit logLine(tr("radio: %1: %2").arg(m_link->uri(), detail));
+            emit logLine(tr("radio: %1").arg(detail)); // the detail names the link (radio/radiolink.h)
             scheduleReopen();
         }
         break;
@@ -250,11 +246,11 @@ void DopplerRadio::readFound()
 QString DopplerRadio::describePlan() const
 {
     const radio::SatelliteFrequencies &f = m_plan->frequencies;
-    QString text = tr("downlink %1").arg(megahertz(f.downlinkHz + f.downlinkOffsetHz));
+    QString text = tr("downlink %1").arg(radio::groupedMegahertz(f.downlinkHz + f.downlinkOffsetHz));
     if (!m_plan->receiveMode.isEmpty())
         text += QLatin1Char(' ') + m_plan->receiveMode;
     if (f.uplinkHz) {
-        text += tr(", uplink %1").arg(megahertz(*f.uplinkHz + f.uplinkOffsetHz));
+        text += tr(", uplink %1").arg(radio::groupedMegahertz(*f.uplinkHz + f.uplinkOffsetHz));
         if (!m_plan->transmitMode.isEmpty())
             text += QLatin1Char(' ') + m_plan->transmitMode;
     }
@@ -340,10 +336,8 @@ void DopplerRadio::end(const QString &why, bool putBack)
         this->putBack();
     m_splitTurnedOn = false;
     const radio::DopplerFigures &f = m_lastFigures;
-    emit logLine(tr("radio: %1: Doppler error RMS %2 Hz, worst %3 Hz over %4 readings; %5 frequencies sent")
-                     .arg(why)
-                     .arg(f.rmsHz, 0, 'f', 1)
-                     .arg(f.worstHz, 0, 'f', 1)
+    emit logLine(tr("radio: %1: Doppler error RMS %2, worst %3 over %4 readings; %5 frequencies sent")
+                     .arg(why, radio::tenthsOfHertz(f.rmsHz), radio::tenthsOfHertz(f.worstHz))
                      .arg(f.samples)
                      .arg(f.commands));
     emit steeringChanged(false);

@@ -235,7 +235,7 @@ void HamlibRadioTest::opensWithMeasuredLatency()
     QCOMPARE(states.at(0).at(1).toString(), QStringLiteral("sim: opening the Hamlib Dummy"));
     QCOMPARE(states.at(1).at(0).value<RadioLink::State>(), RadioLink::State::Open);
     QCOMPARE(states.at(1).at(1).toString(),
-             QStringLiteral("sim: open at 145000000 Hz; a set answered in %1 ms").arg(link->latencyMs()));
+             QStringLiteral("sim: open at 145.000 000 MHz; a set answered in %1 ms").arg(link->latencyMs()));
     QCOMPARE(link->uri(), QStringLiteral("sim:"));
 }
 

@@ -475,8 +475,11 @@ private slots:
             DopplerRadio *radio = f.station.radio();
             connectRadio(panel, uri);
             QTRY_VERIFY_WITH_TIMEOUT(radio->link() && radio->link()->isOpen(), 10000);
-            QTRY_VERIFY2(textOf(panel, "radioLinkState").startsWith(QStringLiteral("Open: ") + uri),
+            // Named once, and the dummy rig's frequency as an operator reads it.
+            QTRY_VERIFY2(textOf(panel, "radioLinkState").startsWith(QStringLiteral("Open: ") + uri
+                                                                     + QStringLiteral(": open at 145.000 000 MHz; ")),
                          qPrintable(textOf(panel, "radioLinkState")));
+            QCOMPARE(textOf(panel, "radioLinkState").count(uri), 1);
             QVERIFY(in<QPushButton>(panel, "radioDisconnect")->isEnabled());
             QCOMPARE(panel->linkBox()->offeredUris().value(0), uri); // the last used first
 
@@ -497,11 +500,22 @@ private slots:
             QTRY_VERIFY_WITH_TIMEOUT(radio->link()->isOpen(), 10000);
             QCOMPARE(in<QComboBox>(panel, "radioUri")->currentText(), uri);
 
-            // rigctld goes away: the panel says so, and each try again.
+            // rigctld goes away: the panel says so, and each try again; the
+            // lines for the event log and the status bar name the radio once.
+            QSignalSpy said(panel, &RadioPanel::message);
             QVERIFY(endHamlibDaemon(rigctld));
             QTRY_VERIFY2_WITH_TIMEOUT(textOf(panel, "radioLinkState").contains(QStringLiteral("(attempt 2)")),
                                       qPrintable(textOf(panel, "radioLinkState")), 15000);
             QVERIFY(textOf(panel, "radioLinkState").contains(QStringLiteral("trying again in")));
+            QVERIFY(textOf(panel, "radioLinkState").count(uri) == 1);
+            QStringList lost;
+            for (const QList<QVariant> &args : std::as_const(said))
+                if (args.at(0).toString().contains(uri))
+                    lost << args.at(0).toString();
+            QVERIFY(!lost.isEmpty());
+            for (const QString &line : std::as_const(lost))
+                QVERIFY2(line.startsWith(QStringLiteral("radio: ") + uri + QStringLiteral(": ")) && line.count(uri) == 1,
+                         qPrintable(line));
 
             QTest::mouseClick(in<QPushButton>(panel, "radioDisconnect"), Qt::LeftButton);
             QTRY_COMPARE(textOf(panel, "radioLinkState"), QStringLiteral("Not connected"));

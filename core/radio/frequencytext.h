@@ -7,7 +7,7 @@
 
 #include <QString>
 
-namespace slew::ui {
+namespace slew::radio {
 
 // "435.851 234 MHz": `hz` rounded to the hertz.
 QString groupedMegahertz(double hz);
@@ -19,4 +19,4 @@ QString signedHertz(double hz);
 // "1.2 Hz": an error figure, to a tenth.
 QString tenthsOfHertz(double hz);
 
-} // namespace slew::ui
+} // namespace slew::radio

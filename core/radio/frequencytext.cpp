@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-namespace slew::ui {
+namespace slew::radio {
 
 namespace {
 
@@ -44,4 +44,4 @@ QString tenthsOfHertz(double hz)
     return std::isfinite(hz) ? QStringLiteral("%1 Hz").arg(hz, 0, 'f', 1) : QStringLiteral("—");
 }
 
-} // namespace slew::ui
+} // namespace slew::radio
