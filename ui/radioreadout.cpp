@@ -124,7 +124,7 @@ void RadioReadout::refresh()
         if (steering->sentTransmitHz())
             m_lastTransmit = steering->sentTransmitHz();
         if (plan)
-            m_lastDialHz = steering->satellite().downlinkHz - plan->frequencies.downlinkHz;
+            m_lastDialHz = steering->dialOffsetHz();
     }
     QStringList sent;
     if (m_lastReceive)
@@ -173,11 +173,8 @@ void RadioReadout::refresh()
     if (figures.samples == 0 && figures.commands == 0) {
         m_figures->setText(radio->isSteering() ? tr("this pass: none yet") : tr("no pass tuned yet"));
     } else {
-        m_figures->setText(tr("%1: error RMS %2, worst %3 over %4 readings; %5 frequencies sent")
-                               .arg(radio->isSteering() ? tr("this pass") : tr("last pass"),
-                                    radio::tenthsOfHertz(figures.rmsHz), radio::tenthsOfHertz(figures.worstHz))
-                               .arg(figures.samples)
-                               .arg(figures.commands));
+        m_figures->setText(tr("%1: %2").arg(radio->isSteering() ? tr("this pass") : tr("last pass"),
+                                            radio::describeFigures(figures)));
     }
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "dopplersteering.h"
 
+#include "frequencytext.h"
 #include "radiolink.h"
 
 #include "sky/observation.h"
@@ -39,6 +40,17 @@ double sameFrequencyHz(double stepHz)
 
 } // namespace
 
+QString describeFigures(const DopplerFigures &f)
+{
+    QString text = QObject::tr("error RMS %1, worst %2 over %3 readings; %4 frequencies sent")
+                       .arg(tenthsOfHertz(f.rmsHz), tenthsOfHertz(f.worstHz))
+                       .arg(f.samples)
+                       .arg(f.commands);
+    if (std::abs(f.dialOffsetHz) >= 0.5) // as signedHertz() would write it: not 0
+        text += QObject::tr("; dial offset %1").arg(signedHertz(f.dialOffsetHz));
+    return text;
+}
+
 DopplerSteering::DopplerSteering(RadioLink *link, QObject *parent) : QObject(parent), m_link(link)
 {
     connect(link, &RadioLink::frequenciesRead, this, &DopplerSteering::onRead);
@@ -57,6 +69,7 @@ DopplerSteering::DopplerSteering(RadioLink *link, QObject *parent) : QObject(par
 void DopplerSteering::begin(const SatelliteFrequencies &satellite, RangeRate rangeRate)
 {
     m_satellite = satellite;
+    m_dialOffsetHz = 0;
     m_rangeRate = std::move(rangeRate);
     m_sentReceive.reset();
     m_sentTransmit.reset();
@@ -88,23 +101,33 @@ DopplerFigures DopplerSteering::figures() const
     f.rmsHz = m_samples > 0 ? std::sqrt(m_sumSquares / m_samples) : 0.0;
     f.worstHz = m_worst;
     f.commands = m_commandsSent - m_commandsAtBegin;
+    f.dialOffsetHz = m_dialOffsetHz;
     return f;
 }
 
-void DopplerSteering::noteHeld(std::deque<Held> &held, double hz, qint64 fromMs)
+SatelliteFrequencies DopplerSteering::retuned(double dialOffsetHz) const
 {
-    held.push_back({hz, fromMs});
+    SatelliteFrequencies moved = m_satellite;
+    moved.downlinkHz += dialOffsetHz;
+    if (moved.uplinkHz && moved.uplinkFollows != UplinkFollowsDial::No)
+        *moved.uplinkHz += moved.uplinkFollows == UplinkFollowsDial::OppositeWay ? -dialOffsetHz : dialOffsetHz;
+    return moved;
+}
+
+void DopplerSteering::noteHeld(std::deque<Held> &held, double hz, qint64 fromMs) const
+{
+    held.push_back({hz, fromMs, m_dialOffsetHz});
     // Only the newest value already on the radio, and those still on
     // their way, are ever asked for.
     while (held.size() > kRecentSent)
         held.pop_front();
 }
 
-std::optional<double> DopplerSteering::heldAt(const std::deque<Held> &held, qint64 nowMs)
+std::optional<DopplerSteering::Held> DopplerSteering::heldAt(const std::deque<Held> &held, qint64 nowMs)
 {
     for (auto it = held.rbegin(); it != held.rend(); ++it) {
         if (it->fromMs <= nowMs)
-            return it->hz;
+            return *it;
     }
     return std::nullopt;
 }
@@ -116,7 +139,8 @@ void DopplerSteering::measure()
     const std::optional<double> rangeRate = m_rangeRate(m_lastJulian);
     if (!rangeRate || !std::isfinite(*rangeRate))
         return;
-    const RadioTuning truth = tuningFor(m_satellite, *rangeRate);
+    // Each frequency against the truth for the dial offset it was sent for.
+    auto truthFor = [&](const Held &held) { return tuningFor(retuned(held.dialOffsetHz), *rangeRate); };
     double receiveError = std::numeric_limits<double>::quiet_NaN();
     double transmitError = std::numeric_limits<double>::quiet_NaN();
     auto count = [this](double error) {
@@ -124,13 +148,13 @@ void DopplerSteering::measure()
         m_worst = std::max(m_worst, std::abs(error));
         ++m_samples;
     };
-    if (const std::optional<double> held = heldAt(m_heldReceive, m_nowMs)) {
-        receiveError = *held - truth.receiveHz;
+    if (const std::optional<Held> held = heldAt(m_heldReceive, m_nowMs)) {
+        receiveError = held->hz - truthFor(*held).receiveHz;
         count(receiveError);
     }
-    if (truth.transmitHz) {
-        if (const std::optional<double> held = heldAt(m_heldTransmit, m_nowMs)) {
-            transmitError = *held - *truth.transmitHz;
+    if (const std::optional<Held> held = heldAt(m_heldTransmit, m_nowMs)) {
+        if (const std::optional<double> truth = truthFor(*held).transmitHz) {
+            transmitError = held->hz - *truth;
             count(transmitError);
         }
     }
@@ -220,8 +244,9 @@ void DopplerSteering::sendDue()
     const std::optional<double> after = m_rangeRate(at + kRateSpanS / 2 / 86400.0);
     if (!now || !before || !after || !std::isfinite(*now) || !std::isfinite(*before) || !std::isfinite(*after))
         return;
-    const RadioTuning wanted = tuningFor(m_satellite, *now);
-    const RadioTuning early = tuningFor(m_satellite, *before), late = tuningFor(m_satellite, *after);
+    const SatelliteFrequencies satellite = this->satellite();
+    const RadioTuning wanted = tuningFor(satellite, *now);
+    const RadioTuning early = tuningFor(satellite, *before), late = tuningFor(satellite, *after);
     const double receiveRate = (late.receiveHz - early.receiveHz) / kRateSpanS; // Hz/s
     const double transmitRate = wanted.transmitHz ? (*late.transmitHz - *early.transmitHz) / kRateSpanS : 0.0;
 
@@ -355,10 +380,9 @@ void DopplerSteering::adoptDial(bool overwritten)
     const std::optional<double> rangeRate = m_rangeRate(pointJulian);
     const bool corrected = m_satellite.correct != DopplerOn::UplinkOnly;
     const double atSatellite = corrected && rangeRate ? point / sky::dopplerFactor(*rangeRate) : point;
-    const double offset = atSatellite - (m_satellite.downlinkHz + m_satellite.downlinkOffsetHz);
-    m_satellite.downlinkHz += offset;
-    if (m_satellite.uplinkHz && m_satellite.uplinkFollows != UplinkFollowsDial::No)
-        *m_satellite.uplinkHz += m_satellite.uplinkFollows == UplinkFollowsDial::OppositeWay ? -offset : offset;
+    const SatelliteFrequencies before = satellite();
+    const double offset = atSatellite - (before.downlinkHz + before.downlinkOffsetHz);
+    m_dialOffsetHz += offset; // the uplink follows through retuned()
     m_receiveTaken = true;
     m_dial.reset();
     if (overwritten) {

@@ -335,11 +335,7 @@ void DopplerRadio::end(const QString &why, bool putBack)
     if (putBack && m_restoreAfterPass)
         this->putBack();
     m_splitTurnedOn = false;
-    const radio::DopplerFigures &f = m_lastFigures;
-    emit logLine(tr("radio: %1: Doppler error RMS %2, worst %3 over %4 readings; %5 frequencies sent")
-                     .arg(why, radio::tenthsOfHertz(f.rmsHz), radio::tenthsOfHertz(f.worstHz))
-                     .arg(f.samples)
-                     .arg(f.commands));
+    emit logLine(tr("radio: %1: Doppler %2").arg(why, radio::describeFigures(m_lastFigures)));
     emit steeringChanged(false);
 }
 

@@ -210,6 +210,61 @@ private slots:
         QCOMPARE(followed.count(), 1);
     }
 
+    void aDialTurnIsNoDopplerError()
+    {
+        // The operator retunes 14 kHz up the passband of an inverting
+        // transponder, on a radio that takes 100 ms for a command: until it
+        // has taken the uplink of the new point it holds the old one, which
+        // was right for the old point. The pass's error stays the Doppler's;
+        // the turn is a figure of its own.
+        FakeRadioLink radio;
+        radio.latency = 100;
+        DopplerSteering steering(&radio);
+        SatelliteFrequencies sat;
+        sat.downlinkHz = 435.850e6;
+        sat.uplinkHz = 145.950e6;
+        sat.uplinkFollows = UplinkFollowsDial::OppositeWay;
+        steering.begin(sat, sweep);
+        QSignalSpy measured(&steering, &DopplerSteering::measured);
+        qint64 ms = 0;
+        auto runUntil = [&](qint64 end) {
+            for (; ms <= end; ms += 10) {
+                radio.advanceTo(ms);
+                if (ms % 20 == 0)
+                    steering.step(julianAt(ms), ms);
+            }
+        };
+        runUntil(30000);
+        // In two clicks, a latency apart: a command of Slew's on its way
+        // when the first lands may overwrite it (CAT has no lock), as on a
+        // real radio; the second stays.
+        const double turnedTo = *radio.receive + 14000;
+        radio.turnDialTo(turnedTo - 7000);
+        runUntil(30150);
+        radio.turnDialTo(turnedTo);
+        runUntil(60000);
+
+        const DopplerFigures figures = steering.figures();
+        QVERIFY(figures.samples > 1000);
+        QVERIFY2(figures.worstHz < 50, qPrintable(describeFigures(figures)));
+        QVERIFY2(std::abs(figures.dialOffsetHz - 14000) < 15, qPrintable(describeFigures(figures)));
+        QCOMPARE(steering.dialOffsetHz(), figures.dialOffsetHz);
+        for (const QList<QVariant> &round : std::as_const(measured)) {
+            for (const QVariant &error : round) {
+                if (std::isfinite(error.toDouble()))
+                    QVERIFY2(std::abs(error.toDouble()) < 50, qPrintable(error.toString()));
+            }
+        }
+        QVERIFY2(describeFigures(figures).contains(QStringLiteral("; dial offset +14 0")),
+                 qPrintable(describeFigures(figures)));
+        // The radio ends where the operator put it, the uplink 14 kHz down.
+        const RadioTuning truth = tuningFor(steering.satellite(), *sweep(julianAt(ms)));
+        QVERIFY(std::abs(*radio.receive - truth.receiveHz) < 5);
+        QVERIFY(std::abs(*steering.satellite().uplinkHz - (145.950e6 - figures.dialOffsetHz)) < 1e-3);
+        // Not turned: no offset said.
+        QVERIFY(!describeFigures(DopplerFigures{}).contains(QStringLiteral("dial")));
+    }
+
     void theRadiosFrequencyBeforeAosIsNoDial()
     {
         // At AOS the radio is on another frequency (where the operator left

@@ -186,6 +186,11 @@ private slots:
         QVERIFY(figures.captured(3).toInt() > 100);
         QVERIFY(figures.captured(4).toInt() > 20);
         QVERIFY(std::isfinite(figures.captured(1).toDouble()));
+        // The turn is said as the operator's, not counted as an error.
+        const QRegularExpressionMatch offset =
+            QRegularExpression("frequencies sent; dial offset ([+−][\\d ]+) Hz").match(QString::fromUtf8(out));
+        QVERIFY2(offset.hasMatch(), out.constData());
+        QVERIFY2(std::abs(signedHertzValue(offset.captured(1)) - 2000) < 800, qPrintable(offset.captured(0)));
         QVERIFY(QTest::qWaitFor([&] { return askRigctld(port, "s", 2) == QList<QByteArray>({"0", "VFOA"}); }, 5000));
         QVERIFY2(QTest::qWaitFor([&] { return askRigctld(port, "f", 1) == before; }, 5000),
                  (askRigctld(port, "f", 1).value(0) + " " + before.value(0) + "\n" + out.right(1500)).constData());
