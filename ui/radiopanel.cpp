@@ -2,6 +2,7 @@
 #include "radiopanel.h"
 
 #include "radiolinkbox.h"
+#include "radiopassbandtuner.h"
 #include "radioplanform.h"
 #include "radioplansettings.h"
 #include "radioreadout.h"
@@ -109,7 +110,15 @@ RadioPanel::RadioPanel(station::Station *station, QWidget *parent) : QWidget(par
     duringLayout->setContentsMargins(0, 0, 0, 0);
     duringLayout->setSpacing(4);
     duringLayout->addWidget(m_readout);
-    duringLayout->addWidget(m_hold, 0, Qt::AlignLeft);
+    // Across the passband, as the radio's dial; beside Stop radio control.
+    auto *tuner = new RadioPassbandTuner(radio);
+    tuner->tuneWithWheelOver(m_readout->sentLine());
+    connect(tuner, &RadioPassbandTuner::tuned, m_readout, &RadioReadout::refresh);
+    auto *controls = new QHBoxLayout;
+    controls->setSpacing(8);
+    controls->addWidget(m_hold);
+    controls->addWidget(tuner, 1);
+    duringLayout->addLayout(controls);
     layout->addWidget(box(tr("During the pass"), during, QStringLiteral("radioReadoutGroup")));
     layout->addStretch(1);
 

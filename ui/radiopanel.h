@@ -13,7 +13,8 @@
 //     and applies them; one with none kept gets its default transponder
 //     filled in, to Apply;
 //   - the live lines of a pass (radioreadout.h), and Stop radio control:
-//     the operator's hands back on the radio, until resumed.
+//     the operator's hands back on the radio, until resumed; and tuning
+//     across the passband from the tab (radiopassbandtuner.h).
 //
 // The Doppler error the radio measures is charted on the Telemetry tab,
 // under the pointing error (the window wires it to the recorder).

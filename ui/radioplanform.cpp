@@ -327,9 +327,11 @@ std::optional<radio::RadioPlan> RadioPlanForm::readPlan(int noradId)
     // What is wrong only in the whole (Doppler on an uplink that is not
     // there) the service's rules say too.
     QStringList notes;
-    const std::optional<radio::RadioPlan> plan = station::resolveRadioPlan(options, noradId, &notes, &why);
+    std::optional<radio::RadioPlan> plan = station::resolveRadioPlan(options, noradId, &notes, &why);
     if (!plan)
         refuse(m_doppler, m_dopplerError, why);
+    else if (!plan->frequencies.downlinkPassband) // typed, or kept: the passband of the transponder it is on
+        plan->frequencies.downlinkPassband = radio::passbandAround(m_transponders, plan->frequencies.downlinkHz);
     return plan;
 }
 

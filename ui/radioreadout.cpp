@@ -64,6 +64,11 @@ RadioReadout::RadioReadout(station::Station *station, QWidget *parent) : QWidget
     refresh();
 }
 
+QWidget *RadioReadout::sentLine() const
+{
+    return m_sent;
+}
+
 void RadioReadout::onSteering(bool steering)
 {
     if (steering) {
@@ -167,7 +172,7 @@ void RadioReadout::refresh()
     if (!m_lastDialHz || std::abs(*m_lastDialHz) < 0.5)
         m_dial->setText(tr("not turned"));
     else
-        m_dial->setText(tr("%1 on the downlink, followed").arg(radio::signedHertz(*m_lastDialHz)));
+        m_dial->setText(tr("%1 on the downlink, from the plan's").arg(radio::signedHertz(*m_lastDialHz)));
 
     const radio::DopplerFigures figures = radio->figures();
     if (figures.samples == 0 && figures.commands == 0) {

@@ -2,9 +2,9 @@
 #pragma once
 // The Radio panel's live lines while a satellite is tracked: its frequencies
 // as applied (with the calibration), what the radio was last sent (receive
-// and transmit), the Doppler shift now on each path and how fast it moves, how far the operator's
-// dial has moved the downlink, and the pass's Doppler figures (RMS and worst
-// error, frequencies sent). After LOS the last pass's figures and the last
+// and transmit), the Doppler shift now on each path and how fast it moves, how far the operator
+// has moved the downlink (by the radio's dial or the tab's tuning), and the pass's Doppler figures
+// (RMS and worst error, frequencies sent, the operator's offset). After LOS the last pass's figures and the last
 // frequencies sent stay shown until the next pass is tuned.
 
 #include "tracking/tracktarget.h"
@@ -27,6 +27,9 @@ class RadioReadout : public QWidget {
 public:
     // The station must outlive the readout.
     explicit RadioReadout(station::Station *station, QWidget *parent = nullptr);
+
+    // The line of what the radio was last sent (the wheel over it tunes).
+    QWidget *sentLine() const;
 
 public slots:
     void refresh();

@@ -22,6 +22,12 @@ enum class DopplerOn { Both, DownlinkOnly, UplinkOnly };
 // transponder), or the opposite way (an inverting one, as most are).
 enum class UplinkFollowsDial { No, SameWay, OppositeWay };
 
+// A linear transponder's downlink passband (at the satellite), Hz.
+struct Passband {
+    double lowHz = 0;
+    double highHz = 0;
+};
+
 // What the satellite sends and listens on, with the operator's calibration
 // offsets (a satellite's crystal drifts with age and temperature), in Hz.
 struct SatelliteFrequencies {
@@ -31,6 +37,11 @@ struct SatelliteFrequencies {
     double uplinkOffsetHz = 0;           // added to uplinkHz
     DopplerOn correct = DopplerOn::Both;
     UplinkFollowsDial uplinkFollows = UplinkFollowsDial::No;
+    // Where the operator may tune the downlink from the window: the linear
+    // transponder's passband it lies in; none when not known (a single
+    // frequency, or one typed by hand for a satellite with no transponder
+    // list), and the window's steps are then not bounded.
+    std::optional<Passband> downlinkPassband;
 };
 
 // What to tune the radio to: receive and, with an uplink, transmit.

@@ -309,6 +309,33 @@ void DopplerSteering::sendDue()
         emit tuned(RadioTuning{*m_sentReceive, m_sentTransmit});
 }
 
+double DopplerSteering::retuneBy(double hz, QString *why)
+{
+    auto refuse = [why](const QString &reason) {
+        if (why)
+            *why = reason;
+        return 0.0;
+    };
+    if (!m_rangeRate)
+        return refuse(tr("no pass is being tuned"));
+    if (m_dial)
+        return refuse(tr("the radio's dial is being turned"));
+    if (!std::isfinite(hz))
+        return refuse(tr("not a step"));
+    double wanted = m_dialOffsetHz + hz;
+    if (const std::optional<Passband> &band = m_satellite.downlinkPassband) {
+        // The plan's downlink (without calibration, as the passband is
+        // listed) moved by the offset stays inside the passband.
+        wanted = std::clamp(wanted, band->lowHz - m_satellite.downlinkHz, band->highHz - m_satellite.downlinkHz);
+    }
+    const double moved = wanted - m_dialOffsetHz;
+    if (std::abs(moved) < 0.5)
+        return refuse(hz > 0 ? tr("at the top of the passband") : tr("at the bottom of the passband"));
+    m_dialOffsetHz = wanted;
+    sendDue(); // the uplink now; the downlink in answer to the next reading (see sendDue)
+    return moved;
+}
+
 bool DopplerSteering::isOwn(double receiveHz) const
 {
     // A reading that matches a recent command is Slew's own, even an older

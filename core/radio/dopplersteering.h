@@ -22,6 +22,10 @@
 //     takes the new point as the operator's, moves the uplink with it (the
 //     opposite way on an inverting transponder), and goes on correcting
 //     from there. It never sends the old frequency back over a turn.
+//   - The window's tuning (retuneBy): the same offset the dial moves, moved
+//     by steps instead, kept within the transponder's passband when it is
+//     known; the radio follows it at the next reading.
+
 //
 // step() does one round at a given time, so tests and benchmarks run it on
 // simulated time; start() runs it from a timer on the station clock.
@@ -104,6 +108,11 @@ public:
     // How far the operator's dial has moved the downlink since begin(), at
     // the satellite.
     double dialOffsetHz() const { return m_dialOffsetHz; }
+    // The operator tunes from the window: the downlink moves by `hz` (at
+    // the satellite) and the uplink with it, as a turn of the dial moves
+    // them, up to the passband's edge. How far it moved; 0 with *why when
+    // it cannot: no pass steered, the hand on the dial, or at the edge.
+    double retuneBy(double hz, QString *why);
 
     // One round at `julian` (the station clock) and `nowMs` (a monotonic
     // clock of the same pace).

@@ -63,6 +63,15 @@ std::optional<double> hertzIn(const QString &text, QString *error)
 
 } // namespace
 
+std::optional<Passband> passbandAround(const QList<Transponder> &transponders, double downlinkHz)
+{
+    for (const Transponder &t : transponders) {
+        if (t.isLinear() && t.downlinkContains(downlinkHz))
+            return Passband{*t.downlinkLowHz, *t.downlinkHighHz};
+    }
+    return std::nullopt;
+}
+
 std::optional<RadioPlan> planFor(const Transponder &t, QString *note, QString *error)
 {
     if (!t.downlinkLowHz) {
@@ -80,6 +89,7 @@ std::optional<RadioPlan> planFor(const Transponder &t, QString *note, QString *e
             f.uplinkHz = t.uplinkForDownlink(f.downlinkHz);
             f.uplinkFollows = t.inverting ? UplinkFollowsDial::OppositeWay : UplinkFollowsDial::SameWay;
         }
+        f.downlinkPassband = Passband{*t.downlinkLowHz, *t.downlinkHighHz};
     } else {
         f.downlinkHz = *t.downlinkLowHz;
         if (t.hasUplink())

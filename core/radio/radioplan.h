@@ -21,6 +21,7 @@
 #include "doppler.h"
 #include "transponder.h"
 
+#include <QList>
 #include <QString>
 
 #include <optional>
@@ -40,6 +41,10 @@ struct RadioPlan {
 // operator (a mode with no Hamlib name). Nothing, with *error, for a
 // transponder without a downlink.
 std::optional<RadioPlan> planFor(const Transponder &transponder, QString *note, QString *error);
+
+// The passband of the first linear transponder among `transponders` whose
+// downlink passband holds `downlinkHz`; none when no such one is known.
+std::optional<Passband> passbandAround(const QList<Transponder> &transponders, double downlinkHz);
 
 // Hertz from "145.8M", "145.8 MHz", "1296200k", "10.368G" or a plain
 // number of hertz ("437800000"); letter case aside. From 1 Hz to

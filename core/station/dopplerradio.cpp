@@ -359,6 +359,18 @@ void DopplerRadio::setPlan(const std::optional<RadioPlan> &plan)
     onPassState();
 }
 
+QString DopplerRadio::tuneBy(double hz)
+{
+    if (m_held)
+        return tr("radio control is stopped");
+    if (!isSteering())
+        return tr("the radio is tuned only during a pass");
+    QString why;
+    if (m_steering->retuneBy(hz, &why) == 0.0)
+        return why;
+    return {};
+}
+
 radio::DopplerFigures DopplerRadio::figures() const
 {
     return isSteering() ? m_steering->figures() : m_lastFigures;

@@ -105,6 +105,11 @@ public:
     void holdControl(bool held);
     bool isControlHeld() const { return m_held; }
 
+    // The operator tunes across the passband from the window (steps, the
+    // wheel): radio/dopplersteering.h's retuneBy, the same offset the
+    // radio's dial moves. Empty when it moved, else why not, in words.
+    QString tuneBy(double hz);
+
     // Figures of the pass being tuned, or of the last one.
     bool isSteering() const { return m_steering && m_steering->isSteering(); }
     radio::DopplerFigures figures() const;

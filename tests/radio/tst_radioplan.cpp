@@ -103,6 +103,13 @@ private slots:
         QCOMPARE(plan->transmitMode, QString("LSB")); // turned over by the transponder
         QCOMPARE(plan->noradId, 24278);
         QVERIFY(note.isEmpty());
+        // Its passband, where the operator may tune from the window; found
+        // again for a downlink typed by hand inside it, not outside.
+        QVERIFY(plan->frequencies.downlinkPassband);
+        QCOMPARE(plan->frequencies.downlinkPassband->lowHz, 435.8e6);
+        QCOMPARE(plan->frequencies.downlinkPassband->highHz, 435.9e6);
+        QCOMPARE(passbandAround({t}, 435.812e6).value_or(Passband{}).highHz, 435.9e6);
+        QVERIFY(!passbandAround({t}, 435.95e6));
     }
 
     void aRepeaterIsTunedToItsChannels()
@@ -120,6 +127,8 @@ private slots:
         QCOMPARE(plan->frequencies.uplinkFollows, UplinkFollowsDial::No);
         QCOMPARE(plan->receiveMode, QString("FM"));
         QCOMPARE(plan->transmitMode, QString("FM"));
+        QVERIFY(!plan->frequencies.downlinkPassband); // a channel: nothing to tune across
+        QVERIFY(!passbandAround({t}, 437.8e6));
     }
 
     void aModeWithoutAHamlibNameIsLeftAlone()

@@ -24,6 +24,7 @@
 #include "radio/transpondersources.h"
 #include "sky/elementsetsources.h"
 #include "sky/utctime.h"
+#include "radio/dopplersteering.h"
 #include "station/dopplerradio.h"
 #include "telemetrycharts.h"
 #include "telemetryrecorder.h"
@@ -44,6 +45,7 @@
 #include <QFile>
 #include <QTabWidget>
 #include <QTest>
+#include <QWheelEvent>
 #include <QXYSeries>
 
 using slew::radio::DopplerOn;
@@ -522,6 +524,105 @@ private slots:
             QVERIFY(!in<QPushButton>(panel, "radioDisconnect")->isEnabled());
             QCOMPARE(QSettings().value(QStringLiteral("radio/connected")).toBool(), false);
         }
+    }
+
+    void tunesAcrossThePassbandFromTheTab()
+    {
+        // FLOCK 2P-1 given an inverting linear transponder (435.8-435.9 MHz
+        // down, 145.9-146.0 MHz up), the radio Hamlib's rigctld (dummy rig).
+        QProcess rigctld;
+        const quint16 port = startHamlibDaemon(rigctld, "rigctld", {"-m", "1"});
+        QVERIFY(port);
+        QTemporaryDir dir;
+        QFile trsp(dir.filePath(QStringLiteral("41617.trsp")));
+        QVERIFY(trsp.open(QIODevice::WriteOnly));
+        trsp.write("[Mode V/U linear]\nUP_LOW=145900000\nUP_HIGH=146000000\nDOWN_LOW=435800000\n"
+                   "DOWN_HIGH=435900000\nINVERT=true\nMODE=SSB\n");
+        trsp.close();
+        WindowFixture f;
+        QVERIFY(f.connectAndWait());
+        QVERIFY(f.loadElementSets(kAllSets));
+        slew::radio::TransponderSources *sources = f.station.transponders();
+        sources->setUrls({QUrl::fromLocalFile(trsp.fileName())});
+        QSignalSpy refreshed(sources, &slew::radio::TransponderSources::finished);
+        sources->refresh();
+        QVERIFY(refreshed.wait(10000));
+        RadioPanel *panel = radioTab(f);
+        DopplerRadio *radio = f.station.radio();
+        connectRadio(panel, QStringLiteral("rigctld://127.0.0.1:%1").arg(port));
+        QTRY_VERIFY_WITH_TIMEOUT(radio->link() && radio->link()->isOpen(), 10000);
+        auto *up1k = in<QPushButton>(panel, "radioTuneUp1k");
+        QVERIFY(up1k && !up1k->isEnabled()); // no pass tuned: nothing to tune across
+
+        // Tracked: its transponder fills the fields, applied with its passband.
+        QVERIFY(f.rehearseAt(QStringLiteral("2018-01-22T09:15:35Z"), 20.0));
+        QVERIFY(track(f, QStringLiteral("FLOCK 2P-1")));
+        QTRY_COMPARE(in<QLineEdit>(panel, "radioDownlink")->text(), QStringLiteral("435.85M"));
+        apply(panel);
+        QVERIFY(radio->plan() && radio->plan()->frequencies.downlinkPassband);
+        QCOMPARE(radio->plan()->frequencies.downlinkPassband->lowHz, 435.8e6);
+        QCOMPARE(radio->plan()->frequencies.downlinkPassband->highHz, 435.9e6);
+        f.window->tabs()->setCurrentWidget(panel);
+        QTRY_VERIFY_WITH_TIMEOUT(radio->isSteering(), 30000);
+        QTRY_VERIFY(up1k->isEnabled());
+        const slew::radio::DopplerSteering *steering = radio->steering();
+        QTRY_VERIFY(steering->sentReceiveHz() && steering->sentTransmitHz());
+
+        // +1 kHz: the downlink up, the uplink down with it (the transponder
+        // inverts); the real radio follows. At 20 times the Doppler moves a
+        // few hundred hertz a second: 800 Hz is the step, not the Doppler.
+        QSignalSpy read(radio->link(), &slew::radio::RadioLink::frequenciesRead);
+        const double receiveBefore = *steering->sentReceiveHz();
+        const double transmitBefore = *steering->sentTransmitHz();
+        QTest::mouseClick(up1k, Qt::LeftButton);
+        QCOMPARE(steering->dialOffsetHz(), 1000.0);
+        QCOMPARE(*steering->satellite().uplinkHz, 145.95e6 - 1000);
+        auto radioHeld = [&](auto moved) {
+            for (const QList<QVariant> &args : std::as_const(read))
+                if (moved(args.at(0).value<slew::radio::RadioFrequencies>()))
+                    return true;
+            return false;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(radioHeld([&](const slew::radio::RadioFrequencies &r) {
+                                     return r.receiveHz && *r.receiveHz > receiveBefore + 800 && r.transmitHz
+                                            && *r.transmitHz < transmitBefore - 800;
+                                 }),
+                                 5000);
+        QTRY_COMPARE(textOf(panel, "radioDial"), QStringLiteral("+1 000 Hz on the downlink, from the plan's"));
+
+        // A notch of the wheel over the frequencies sent: 100 Hz more.
+        QWidget *sentLine = in<QWidget>(panel, "radioSent");
+        const QPointF middle = QPointF(sentLine->rect().center());
+        QWheelEvent notch(middle, sentLine->mapToGlobal(middle), QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier,
+                          Qt::NoScrollPhase, false);
+        QApplication::sendEvent(sentLine, &notch);
+        QCOMPARE(steering->dialOffsetHz(), 1100.0);
+        QCOMPARE(*steering->satellite().uplinkHz, 145.95e6 - 1100);
+
+        // Up to the passband's top and no further: said beside the buttons.
+        for (int i = 0; i < 60; ++i)
+            QTest::mouseClick(up1k, Qt::LeftButton);
+        QCOMPARE(steering->dialOffsetHz(), 50000.0);
+        QCOMPARE(*steering->satellite().uplinkHz, 145.9e6); // the uplink passband's bottom
+        QCOMPARE(textOf(panel, "radioTuneRefusal"), QStringLiteral("Not tuned: at the top of the passband"));
+        QTest::mouseClick(in<QPushButton>(panel, "radioTuneDown100"), Qt::LeftButton);
+        QCOMPARE(steering->dialOffsetHz(), 49900.0);
+        QVERIFY(textOf(panel, "radioTuneRefusal").isEmpty());
+        // The offset is the operator's, not an error of the Doppler.
+        QTRY_VERIFY2(textOf(panel, "radioFigures").endsWith(QStringLiteral("; dial offset +49 900 Hz")),
+                     qPrintable(textOf(panel, "radioFigures")));
+        QVERIFY2(radio->figures().worstHz < 1000, qPrintable(textOf(panel, "radioFigures")));
+
+        // Radio control stopped: nothing to tune until resumed.
+        QTest::mouseClick(in<QPushButton>(panel, "radioHold"), Qt::LeftButton);
+        QVERIFY(!up1k->isEnabled());
+        QCOMPARE(radio->tuneBy(1000), QStringLiteral("radio control is stopped"));
+        QTest::mouseClick(in<QPushButton>(panel, "radioHold"), Qt::LeftButton);
+        QTRY_VERIFY(up1k->isEnabled());
+
+        untrack(f);
+        radio->disconnectRadio();
+        QVERIFY(endHamlibDaemon(rigctld));
     }
 
     void showsAndChartsAPassAsTheRadioIsTuned()
