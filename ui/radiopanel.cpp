@@ -6,11 +6,13 @@
 #include "radioplanform.h"
 #include "radioplansettings.h"
 #include "radioreadout.h"
+#include "radiotransponderdialog.h"
 #include "radiovfochoice.h"
 
 #include "radio/frequencytext.h"
 #include "radio/transponderset.h"
 #include "radio/transpondersources.h"
+#include "radio/transponderwatch.h"
 #include "sky/elementsetsources.h"
 #include "station/dopplerradio.h"
 #include "station/station.h"
@@ -80,11 +82,25 @@ RadioPanel::RadioPanel(station::Station *station, QWidget *parent) : QWidget(par
     refresh->setToolTip(tr("Fetch the transponder lists (SatNOGS DB's, unless others are kept) into the cache "
                            "beside the element sets"));
     connect(refresh, &QPushButton::clicked, this, &RadioPanel::refreshTransponders);
+    auto *sources = new QPushButton(tr("Sources…"));
+    sources->setObjectName(QStringLiteral("radioTransponderSources"));
+    sources->setAutoDefault(false);
+    sources->setToolTip(tr("Add or remove transponder sources: Gpredict .trsp files, SatNOGS DB lists, URLs "
+                           "(the list slew --update-transponders keeps too)"));
+    connect(sources, &QPushButton::clicked, this, &RadioPanel::showTransponderSources);
     auto *applyRow = new QHBoxLayout;
     applyRow->addWidget(m_apply, 0, Qt::AlignTop);
     applyRow->addWidget(refresh, 0, Qt::AlignTop);
+    applyRow->addWidget(sources, 0, Qt::AlignTop);
     applyRow->addWidget(m_planState, 1);
     planLayout->addLayout(applyRow);
+    // What the last refresh of the transponders gave, on the tab (the
+    // Events tab has each source's line).
+    m_transponderState = new QLabel;
+    m_transponderState->setObjectName(QStringLiteral("radioTransponderState"));
+    m_transponderState->setWordWrap(true);
+    m_transponderState->hide();
+    planLayout->addWidget(m_transponderState);
 
     m_planBox = box(QString(), plan, QStringLiteral("radioPlanBox"));
     auto *layout = new QVBoxLayout(this);
@@ -132,10 +148,17 @@ RadioPanel::RadioPanel(station::Station *station, QWidget *parent) : QWidget(par
     connect(transponders, &radio::TransponderSources::finished, this, [this, transponders] {
         for (const radio::TransponderSourceStatus &s : transponders->status())
             emit message(tr("transponders: %1").arg(radio::describeTransponderSource(s)));
+        showRefreshResult();
     });
     if (transponders->urls().isEmpty())
         transponders->setUrls(radio::savedTransponderUrls());
     transponders->loadFromCache();
+    // What `slew --update-transponders` saves while the window is open is
+    // read as it lands (radio/transponderwatch.h).
+    connect(transponders->followSaved(), &radio::TransponderWatch::followed, this, [this](const QString &what) {
+        emit message(tr("transponders: %1").arg(what));
+        showTransponderState(tr("Transponders: %1.").arg(what), QString());
+    });
     connect(m_link, &RadioLinkBox::message, this, &RadioPanel::message);
     connect(vfos, &RadioVfoChoice::message, this, &RadioPanel::message);
     connect(radio, &station::DopplerRadio::logLine, this, &RadioPanel::message);
@@ -202,8 +225,52 @@ void RadioPanel::refreshTransponders()
         radio::saveTransponderUrls(urls);
         transponders->setUrls(urls);
     }
-    emit message(tr("transponders: refreshing from %n source(s)", nullptr, int(transponders->urls().size())));
+    const QString refreshing = tr("refreshing from %n source(s)", nullptr, int(transponders->urls().size()));
+    emit message(tr("transponders: %1").arg(refreshing));
+    showTransponderState(tr("Transponders: %1…").arg(refreshing), QString());
     transponders->refresh();
+}
+
+void RadioPanel::showTransponderSources()
+{
+    if (!m_sourcesDialog) {
+        m_sourcesDialog = new RadioTransponderDialog(m_station->transponders(), this);
+        connect(m_sourcesDialog, &RadioTransponderDialog::message, this, &RadioPanel::message);
+    }
+    m_sourcesDialog->show();
+    m_sourcesDialog->raise();
+    m_sourcesDialog->activateWindow();
+}
+
+void RadioPanel::showRefreshResult()
+{
+    const QList<radio::TransponderSourceStatus> status = m_station->transponders()->status();
+    QStringList failed;
+    int count = 0;
+    for (const radio::TransponderSourceStatus &s : status) {
+        count += s.count;
+        if (!s.fetched || !s.error.isEmpty())
+            failed << radio::describeTransponderSource(s);
+    }
+    if (failed.isEmpty()) {
+        showTransponderState(tr("Transponders refreshed: %1 from %2.")
+                                 .arg(tr("%n transponder(s)", nullptr, count),
+                                      tr("%n source(s)", nullptr, int(status.size()))),
+                             QString());
+    } else {
+        showTransponderState(tr("Transponders: %1 of %2 source(s) not refreshed: %3")
+                                 .arg(failed.size())
+                                 .arg(status.size())
+                                 .arg(failed.join(QStringLiteral("; "))),
+                             QStringLiteral("#f2a33c"));
+    }
+}
+
+void RadioPanel::showTransponderState(const QString &text, const QString &colour)
+{
+    m_transponderState->setText(text);
+    m_transponderState->setStyleSheet(colour.isEmpty() ? QString() : QStringLiteral("color:%1;").arg(colour));
+    m_transponderState->show();
 }
 
 void RadioPanel::showTransponders()

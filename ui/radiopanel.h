@@ -7,7 +7,8 @@
 //     its VFOs and whether it is put back after LOS (radiovfochoice.h);
 //   - what to tune (radioplanform.h), by hand or from one of the tracked
 //     satellite's transponders (the station's cache, refreshed when the
-//     operator asks), applied to the radio for the satellite tracked (or
+//     operator asks, from the sources kept in radiotransponderdialog.h and
+//     those another Slew saves), applied to the radio for the satellite tracked (or
 //     any satellite, when none is) and kept in the settings per satellite:
 //     tracking a satellite again brings its frequencies and offsets back,
 //     and applies them; one with none kept gets its default transponder
@@ -39,6 +40,7 @@ namespace slew::ui {
 class RadioLinkBox;
 class RadioPlanForm;
 class RadioReadout;
+class RadioTransponderDialog;
 
 class RadioPanel : public QWidget {
     Q_OBJECT
@@ -66,6 +68,10 @@ private:
     void onTracking();
     void showTransponders();
     void refreshTransponders();
+    void showTransponderSources();
+    // The last refresh's outcome on the tab: every source fine, or which not and why.
+    void showRefreshResult();
+    void showTransponderState(const QString &text, const QString &colour);
     void showPlanState();
     void showHold(); // the Stop/Resume radio control button as the radio stands
 
@@ -77,6 +83,8 @@ private:
     QPushButton *m_apply;
     QPushButton *m_hold;
     QLabel *m_planState;
+    QLabel *m_transponderState;
+    RadioTransponderDialog *m_sourcesDialog = nullptr;
     int m_tracked = 0; // the satellite whose frequencies the fields were last given for
     bool m_refused = false;
     QTimer m_watch;

@@ -2,9 +2,11 @@
 #include "transpondersources.h"
 
 #include "transponderimport.h"
+#include "transponderwatch.h"
 
 #include "input/atomicfile.h"
 #include "input/boundedfile.h"
+#include "input/logtext.h"
 #include "sky/elementsetsources.h"
 
 #include <QCryptographicHash>
@@ -141,6 +143,46 @@ void saveTransponderUrls(const QList<QUrl> &urls)
     QSettings().setValue(QLatin1String(kTransponderUrlsSettingsKey), texts);
 }
 
+std::optional<QUrl> transponderSourceUrl(const QString &text, QString *error)
+{
+    const QString given = text.trimmed();
+    const QString shown = input::loggableText(given, 80);
+    auto refuse = [&](const QString &why) -> std::optional<QUrl> {
+        if (error)
+            *error = why;
+        return std::nullopt;
+    };
+    if (given.isEmpty())
+        return refuse(QObject::tr("name a transponder source: a .trsp or .json file, or an https:// URL"));
+    // A path as typed (no scheme, or a Windows-like drive letter) is a local file.
+    const QUrl asUrl(given, QUrl::StrictMode);
+    const QString scheme = asUrl.scheme().toLower();
+    if (scheme == u"http" || scheme == u"https") {
+        if (!asUrl.isValid() || asUrl.host().isEmpty())
+            return refuse(QObject::tr("'%1' is not a URL Slew can fetch: it names no host").arg(shown));
+        return asUrl;
+    }
+    if (!scheme.isEmpty() && scheme != u"file")
+        return refuse(QObject::tr("'%1': a source is an https:// or http:// URL, or a file").arg(shown));
+    const QString path = scheme == u"file" ? asUrl.toLocalFile() : given;
+    const QFileInfo file(path);
+    if (!file.exists())
+        return refuse(QObject::tr("'%1': no such file").arg(shown));
+    if (!file.isFile() || !file.isReadable())
+        return refuse(QObject::tr("'%1' is not a file Slew can read").arg(shown));
+    const QUrl url = QUrl::fromLocalFile(file.absoluteFilePath());
+    if (isTrsp(url)) {
+        if (!noradIdFromTrspFileName(url.path()))
+            return refuse(QObject::tr("'%1': a .trsp file is named after its satellite's catalogue number "
+                                      "(25544.trsp)")
+                              .arg(shown));
+    } else if (file.suffix().compare(QLatin1String("json"), Qt::CaseInsensitive) != 0) {
+        return refuse(QObject::tr("'%1': a transponder file is a Gpredict .trsp or a SatNOGS DB .json list")
+                          .arg(shown));
+    }
+    return url;
+}
+
 QString transponderCacheDirectory()
 {
     return QFileInfo(sky::elementSetCacheDirectory()).dir().filePath(QStringLiteral("transponders"));
@@ -212,6 +254,13 @@ void TransponderSources::setUrls(const QList<QUrl> &urls)
     m_set = TransponderSet();
     for (int i = 0; i < urls.size(); ++i)
         m_status[i].url = urls[i];
+}
+
+TransponderWatch *TransponderSources::followSaved()
+{
+    if (!m_watch)
+        m_watch = new TransponderWatch(this, this);
+    return m_watch;
 }
 
 void TransponderSources::loadFromCache()

@@ -36,6 +36,8 @@ class QNetworkAccessManager;
 
 namespace slew::radio {
 
+class TransponderWatch;
+
 // The settings key of the list of sources, and the one to suggest.
 inline constexpr char kTransponderUrlsSettingsKey[] = "radio/transponderUrls";
 inline constexpr char kSatnogsTransmittersUrl[] = "https://db.satnogs.org/api/transmitters/?format=json";
@@ -44,6 +46,13 @@ inline constexpr int kTransponderTransferMs = 120000;
 
 QList<QUrl> savedTransponderUrls();
 void saveTransponderUrls(const QList<QUrl> &urls);
+
+// A source as the operator names one: an https:// or http:// URL, a
+// file:// URL or a local file's path. A local file must be there and be a
+// .trsp named after its satellite's catalogue number (25544.trsp) or a
+// SatNOGS DB list (.json). Nothing, with *error naming what was given and
+// why not, otherwise.
+std::optional<QUrl> transponderSourceUrl(const QString &text, QString *error);
 // Beside the element sets' cache.
 QString transponderCacheDirectory();
 // The cached copy of one source in `directory`: HASH.json, or HASH/25544.trsp
@@ -81,6 +90,11 @@ public:
     // finished() once all have answered.
     void refresh();
     bool isBusy() const { return m_pending > 0; }
+    // From now on the list saved in the settings and the cached copies are
+    // followed as another Slew (slew --update-transponders) changes them
+    // (transponderwatch.h); the watch says what it took. Asked again, the
+    // same watch.
+    TransponderWatch *followSaved();
 
     // Every source's transponders, merged in the order of the list (the
     // first source's copy of a repeated transponder is kept).
@@ -111,6 +125,7 @@ private:
     QList<quint64> m_appliedSequence;
     QList<sky::BoundedDownload *> m_downloads;
     TransponderSet m_set;
+    TransponderWatch *m_watch = nullptr;
     QNetworkAccessManager *m_network = nullptr;
     sky::DownloadLimits m_limits;
     quint64 m_generation = 0;

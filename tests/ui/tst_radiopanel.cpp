@@ -21,6 +21,7 @@
 #include "radiolinkbox.h"
 #include "radiopanel.h"
 #include "radioplanform.h"
+#include "radiotransponderdialog.h"
 #include "radio/transpondersources.h"
 #include "sky/elementsetsources.h"
 #include "sky/utctime.h"
@@ -36,6 +37,7 @@
 #include <QGroupBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QListWidget>
 #include <QProcess>
 #include <QPushButton>
 #include <QRegularExpression>
@@ -463,6 +465,105 @@ private slots:
         QCOMPARE(f.station.radio()->plan()->frequencies.downlinkOffsetHz, -700.0);
         QCOMPARE(f.station.radio()->plan()->receiveMode, QStringLiteral("CW"));
         untrack(f);
+    }
+
+    void keepsTransponderSourcesAndFollowsAnotherSlew()
+    {
+        QTemporaryDir dir;
+        auto writeFile = [&](const QString &name, const QByteArray &bytes) {
+            QFile file(dir.filePath(name));
+            if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size())
+                qWarning("cannot write %s", qPrintable(file.fileName()));
+            return file.fileName();
+        };
+        const QString flock = writeFile(QStringLiteral("41617.trsp"),
+                                        "[Mode V/U linear]\nUP_LOW=145900000\nUP_HIGH=146000000\nDOWN_LOW=435800000\n"
+                                        "DOWN_HIGH=435900000\nINVERT=true\nMODE=SSB\n\n[CW beacon]\nDOWN_LOW=435795000\n");
+        const QString misnamed = writeFile(QStringLiteral("beacon.trsp"), "[CW beacon]\nDOWN_LOW=435795000\n");
+        WindowFixture f;
+        RadioPanel *panel = radioTab(f);
+        slew::radio::TransponderSources *sources = f.station.transponders();
+        QTest::mouseClick(in<QPushButton>(panel, "radioTransponderSources"), Qt::LeftButton);
+        auto *dialog = panel->findChild<slew::ui::RadioTransponderDialog *>();
+        QVERIFY(dialog);
+        QTRY_VERIFY(dialog->isVisible());
+        auto *field = dialog->findChild<QLineEdit *>(QStringLiteral("radioTransponderSourceField"));
+        auto *add = dialog->findChild<QPushButton *>(QStringLiteral("radioAddTransponderSource"));
+        auto *refusal = dialog->findChild<QLabel *>(QStringLiteral("radioTransponderSourceRefusal"));
+        auto *list = dialog->findChild<QListWidget *>(QStringLiteral("radioTransponderSourceList"));
+        QVERIFY(field && add && refusal && list);
+        auto addSource = [&](const QString &text) {
+            field->setText(text);
+            QTest::mouseClick(add, Qt::LeftButton);
+        };
+
+        // Refused, each in words saying what was given, and nothing kept.
+        const QList<std::pair<QString, QString>> refused{
+            {dir.filePath(QStringLiteral("nosuch.trsp")), QStringLiteral("nosuch.trsp': no such file")},
+            {misnamed, QStringLiteral("is named after its satellite's catalogue number")},
+            {QStringLiteral("ftp://example.org/x.json"), QStringLiteral("'ftp://example.org/x.json': a source is")},
+            {QStringLiteral("https:///x.json"), QStringLiteral("names no host")},
+        };
+        for (const auto &[text, words] : refused) {
+            addSource(text);
+            QVERIFY2(refusal->isVisible() && refusal->text().contains(words), qPrintable(refusal->text()));
+            QVERIFY(sources->urls().isEmpty());
+            QVERIFY(!QSettings().contains(QLatin1String(slew::radio::kTransponderUrlsSettingsKey)));
+        }
+
+        // A Gpredict file: kept, fetched, and the outcome said on the tab.
+        QSignalSpy finished(sources, &slew::radio::TransponderSources::finished);
+        addSource(flock);
+        QVERIFY(!refusal->isVisible());
+        QCOMPARE(sources->urls(), QList<QUrl>{QUrl::fromLocalFile(flock)});
+        QCOMPARE(slew::radio::savedTransponderUrls(), sources->urls());
+        QVERIFY(finished.wait(10000));
+        QTRY_COMPARE(textOf(panel, "radioTransponderState"),
+                     QStringLiteral("Transponders refreshed: 2 transponder(s) from 1 source(s)."));
+        QCOMPARE(sources->transponders().forSatellite(kFlock).size(), 2);
+        QVERIFY2(list->item(0)->text().contains(QStringLiteral("replaced, 2 transponder(s)")), qPrintable(list->item(0)->text()));
+        addSource(flock);
+        QVERIFY(refusal->text().contains(QStringLiteral("a source already")));
+
+        // A URL nobody answers: the refresh says so on the tab, not only in Events.
+        const QString silent = QStringLiteral("http://127.0.0.1:%1/transmitters.json").arg(freeTcpPort());
+        addSource(silent);
+        QVERIFY(finished.wait(20000));
+        QTRY_VERIFY2(textOf(panel, "radioTransponderState").startsWith(QStringLiteral("Transponders: 1 of 2 source(s) "
+                                                                                       "not refreshed: ") + silent),
+                     qPrintable(textOf(panel, "radioTransponderState")));
+        QCOMPARE(sources->transponders().forSatellite(kFlock).size(), 2); // the file's still read
+        // Removed: gone from the list kept.
+        list->setCurrentRow(1);
+        QTest::mouseClick(dialog->findChild<QPushButton *>(QStringLiteral("radioRemoveTransponderSource")),
+                          Qt::LeftButton);
+        QCOMPARE(sources->urls(), QList<QUrl>{QUrl::fromLocalFile(flock)});
+        QCOMPARE(slew::radio::savedTransponderUrls(), sources->urls());
+        QTRY_COMPARE(sources->transponders().forSatellite(kFlock).size(), 2);
+
+        // Another Slew (slew --update-transponders: the same class on the
+        // same cache, the list saved under the same key) adds a source and
+        // refreshes: the window reads both as they land.
+        const QString jpss = writeFile(QStringLiteral("43013.trsp"), "[X band]\nDOWN_LOW=7812500000\nMODE=QPSK\n");
+        slew::radio::TransponderSources other(slew::radio::transponderCacheDirectory());
+        const QList<QUrl> both{QUrl::fromLocalFile(flock), QUrl::fromLocalFile(jpss)};
+        slew::radio::saveTransponderUrls(both);
+        QSettings().sync();
+        other.setUrls(both);
+        QSignalSpy otherDone(&other, &slew::radio::TransponderSources::finished);
+        other.refresh();
+        QVERIFY(otherDone.wait(10000));
+        QTRY_COMPARE_WITH_TIMEOUT(sources->urls(), both, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(sources->transponders().forSatellite(kJpss).size(), 1, 5000);
+        QTRY_VERIFY2(textOf(panel, "radioTransponderState").contains(QStringLiteral("saved by another Slew")),
+                     qPrintable(textOf(panel, "radioTransponderState")));
+        QTRY_COMPARE(list->count(), 2);
+        // ...and a copy it refreshes, the list unchanged.
+        writeFile(QStringLiteral("43013.trsp"), "[X band]\nDOWN_LOW=7812500000\nMODE=QPSK\n\n[S band]\nDOWN_LOW=2247500000\n");
+        other.refresh();
+        QVERIFY(otherDone.wait(10000));
+        QTRY_COMPARE_WITH_TIMEOUT(sources->transponders().forSatellite(kJpss).size(), 2, 5000);
+        dialog->close();
     }
 
     void connectsToRigctldAndSaysWhenItIsLost()
