@@ -95,7 +95,8 @@ bool DopplerRadio::setLink(const QString &uri, QString *error)
     m_steering = std::make_unique<radio::DopplerSteering>(m_link.get());
     connect(m_steering.get(), &radio::DopplerSteering::measured, this, &DopplerRadio::onMeasured);
     connect(m_steering.get(), &radio::DopplerSteering::dialFollowed, this, [this](double offsetHz) {
-        emit logLine(tr("radio: the operator's dial moved the downlink by %1; followed").arg(radio::signedHertz(offsetHz)));
+        emit logLine(
+            tr("radio: the operator's dial moved the downlink by %1; followed").arg(radio::signedHertz(offsetHz)));
     });
     connect(m_link.get(), &RadioLink::stateChanged, this, &DopplerRadio::onLinkState);
     connect(m_link.get(), &RadioLink::frequenciesRead, this, [this](const radio::RadioFrequencies &f) {

@@ -476,9 +476,10 @@ private slots:
                 qWarning("cannot write %s", qPrintable(file.fileName()));
             return file.fileName();
         };
-        const QString flock = writeFile(QStringLiteral("41617.trsp"),
-                                        "[Mode V/U linear]\nUP_LOW=145900000\nUP_HIGH=146000000\nDOWN_LOW=435800000\n"
-                                        "DOWN_HIGH=435900000\nINVERT=true\nMODE=SSB\n\n[CW beacon]\nDOWN_LOW=435795000\n");
+        const QString flock =
+            writeFile(QStringLiteral("41617.trsp"), "[Mode V/U linear]\nUP_LOW=145900000\nUP_HIGH=146000000\n"
+                                                    "DOWN_LOW=435800000\nDOWN_HIGH=435900000\nINVERT=true\nMODE=SSB\n\n"
+                                                    "[CW beacon]\nDOWN_LOW=435795000\n");
         const QString misnamed = writeFile(QStringLiteral("beacon.trsp"), "[CW beacon]\nDOWN_LOW=435795000\n");
         WindowFixture f;
         RadioPanel *panel = radioTab(f);
@@ -521,7 +522,8 @@ private slots:
         QTRY_COMPARE(textOf(panel, "radioTransponderState"),
                      QStringLiteral("Transponders refreshed: 2 transponder(s) from 1 source(s)."));
         QCOMPARE(sources->transponders().forSatellite(kFlock).size(), 2);
-        QVERIFY2(list->item(0)->text().contains(QStringLiteral("replaced, 2 transponder(s)")), qPrintable(list->item(0)->text()));
+        QVERIFY2(list->item(0)->text().contains(QStringLiteral("replaced, 2 transponder(s)")),
+                 qPrintable(list->item(0)->text()));
         addSource(flock);
         QVERIFY(refusal->text().contains(QStringLiteral("a source already")));
 
@@ -559,7 +561,8 @@ private slots:
                      qPrintable(textOf(panel, "radioTransponderState")));
         QTRY_COMPARE(list->count(), 2);
         // ...and a copy it refreshes, the list unchanged.
-        writeFile(QStringLiteral("43013.trsp"), "[X band]\nDOWN_LOW=7812500000\nMODE=QPSK\n\n[S band]\nDOWN_LOW=2247500000\n");
+        writeFile(QStringLiteral("43013.trsp"),
+                  "[X band]\nDOWN_LOW=7812500000\nMODE=QPSK\n\n[S band]\nDOWN_LOW=2247500000\n");
         other.refresh();
         QVERIFY(otherDone.wait(10000));
         QTRY_COMPARE_WITH_TIMEOUT(sources->transponders().forSatellite(kJpss).size(), 2, 5000);
@@ -617,7 +620,8 @@ private slots:
                     lost << args.at(0).toString();
             QVERIFY(!lost.isEmpty());
             for (const QString &line : std::as_const(lost))
-                QVERIFY2(line.startsWith(QStringLiteral("radio: ") + uri + QStringLiteral(": ")) && line.count(uri) == 1,
+                QVERIFY2(line.startsWith(QStringLiteral("radio: ") + uri + QStringLiteral(": "))
+                             && line.count(uri) == 1,
                          qPrintable(line));
 
             QTest::mouseClick(in<QPushButton>(panel, "radioDisconnect"), Qt::LeftButton);
