@@ -31,6 +31,9 @@ private:
 // two position reads, which keep the wall clock's pace: a step gets a few
 // samples, too few to fit gains or measure a speed by, and the figures
 // would be offered as if they were good.
+// It is said when the reads come fewer than kLeastReadsPerSimulatedSecond
+// to a second of the simulator's time.
+inline constexpr double kLeastReadsPerSimulatedSecond = 10.0;
 QString fasterThanRealTime(const session::RotatorSession *session);
 
 } // namespace slew::tuning
