@@ -49,6 +49,8 @@
 #include "sky/elementsetsources.h"
 
 #include <QDateTime>
+
+#include <algorithm>
 #include <QGuiApplication>
 #include <QHBoxLayout>
 #include <QScreen>
@@ -306,6 +308,10 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     buildMenus();
     const QScreen *screen = QGuiApplication::primaryScreen();
     new WindowState(this, splitter, m_tabs, screen ? screen->availableGeometry() : QRect(0, 0, 1440, 900));
+    // Whenever the splitter is laid out again: the tabs their pages' width.
+    m_splitter = splitter;
+    splitter->installEventFilter(this);
+    QMetaObject::invokeMethod(this, &MainWindow::giveTheTabsTheirWidth, Qt::QueuedConnection);
 }
 
 void MainWindow::buildMenus()
@@ -421,6 +427,33 @@ void MainWindow::bringToFront(QWidget *page)
         if (tabs && tabs->indexOf(child) >= 0)
             tabs->setCurrentWidget(child);
     }
+}
+
+void MainWindow::giveTheTabsTheirWidth()
+{
+    // The pages scroll on a screen too narrow for them (1024x600); where
+    // the plot can spare the width, they get what their widest page needs
+    // not to scroll sideways, and the plot (a square, and the first to
+    // grow) what is left, never below its least.
+    int need = 0;
+    for (const ScrollablePage *page : m_tabs->findChildren<ScrollablePage *>())
+        need = std::max(need, page->pageLeastWidth());
+    need += m_tabs->width() - m_tabs->currentWidget()->width(); // the tab widget's own frame
+    QList<int> sizes = m_splitter->sizes();
+    const int plotLeast = m_splitter->widget(0)->minimumSizeHint().width();
+    if (sizes.size() != 3 || sizes[2] >= need || sizes[0] <= plotLeast)
+        return;
+    const int give = std::min(need - sizes[2], sizes[0] - plotLeast);
+    sizes[0] -= give;
+    sizes[2] += give;
+    m_splitter->setSizes(sizes);
+}
+
+bool MainWindow::eventFilter(QObject *watched, QEvent *event)
+{
+    if (watched == m_splitter && event->type() == QEvent::Resize)
+        QMetaObject::invokeMethod(this, &MainWindow::giveTheTabsTheirWidth, Qt::QueuedConnection);
+    return QMainWindow::eventFilter(watched, event);
 }
 
 void MainWindow::logInfo(const QString &text)

@@ -12,6 +12,7 @@
 
 #include <optional>
 
+class QSplitter;
 class QTabWidget;
 
 namespace slew::bridge {
@@ -121,8 +122,12 @@ public slots:
     // be read, ...): a warning in the event log and the status bar.
     void reportProblem(const QString &text);
 
+protected:
+    bool eventFilter(QObject *watched, QEvent *event) override; // the splitter laid out again
+
 private:
     QWidget *buildControlColumn();
+    void giveTheTabsTheirWidth();
     void wirePlot();
     void onPresetKey(int index);
     void onTargetPicked(double az, double el);
@@ -154,6 +159,7 @@ private:
     TrafficConsole *m_traffic;
     EventLog *m_log;
     QTabWidget *m_tabs;
+    QSplitter *m_splitter = nullptr; // the plot, the controls, the tabs
     KeyboardControl *m_keys;
     std::optional<int> m_askedPreset; // the preset the confirmation strip asks about
     OperatorActions *m_actions = nullptr;

@@ -45,10 +45,12 @@ RadioVfoChoice::RadioVfoChoice(station::DopplerRadio *radio, QWidget *parent) : 
     auto *grid = new QGridLayout(this);
     grid->setContentsMargins(0, 0, 0, 0);
     grid->setVerticalSpacing(3);
+    // The check box under the choice: beside it, the two would not fit
+    // the Radio page at 1280x720 without scrolling.
     grid->addWidget(new QLabel(tr("VFOs")), 0, 0);
     grid->addWidget(m_layout, 0, 1);
-    grid->addWidget(m_restore, 0, 2);
-    grid->addWidget(m_refusal, 1, 0, 1, 3);
+    grid->addWidget(m_restore, 1, 1, Qt::AlignLeft); // as wide as its words: a click beside them is not on it
+    grid->addWidget(m_refusal, 2, 0, 1, 2);
     grid->setColumnStretch(1, 1);
 
     const QSettings settings;

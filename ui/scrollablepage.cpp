@@ -2,6 +2,9 @@
 #include "scrollablepage.h"
 
 #include <QEvent>
+#include <QLayout>
+
+#include <algorithm>
 
 namespace slew::ui {
 
@@ -35,9 +38,18 @@ void ScrollablePage::fit()
     if (!page)
         return;
     const QSize least = page->minimumSizeHint().expandedTo(page->minimumSize());
-    const QSize size = viewport()->size().expandedTo(least);
+    QSize size = viewport()->size().expandedTo(least);
+    // A page of wrapping labels needs more height when narrower.
+    if (const QLayout *layout = page->layout(); layout && layout->hasHeightForWidth())
+        size.setHeight(std::max(size.height(), layout->totalMinimumHeightForWidth(size.width())));
     if (page->size() != size)
         page->resize(size);
+}
+
+int ScrollablePage::pageLeastWidth() const
+{
+    const QWidget *page = widget();
+    return page ? page->minimumSizeHint().expandedTo(page->minimumSize()).width() : 0;
 }
 
 ScrollablePage *scrollablePage(QWidget *page)

@@ -17,6 +17,9 @@ class ScrollablePage : public QScrollArea {
 public:
     explicit ScrollablePage(QWidget *page, QWidget *parent = nullptr);
 
+    // The width the page needs not to scroll sideways.
+    int pageLeastWidth() const;
+
 protected:
     bool viewportEvent(QEvent *event) override;
     bool eventFilter(QObject *watched, QEvent *event) override;

@@ -97,6 +97,7 @@ TelemetryCharts::TelemetryCharts(const model::TelemetryHistory *history, QWidget
     m_rehearsal->setObjectName(QStringLiteral("chartRehearsal"));
     m_rehearsal->setStyleSheet(RehearsalMarker::markStyle());
     m_rehearsal->setToolTip(tr("The charts' times are the station clock's, a rehearsal's own time, not the real time."));
+    m_rehearsal->setWordWrap(true);
     m_rehearsal->hide();
 
     auto *controls = new QHBoxLayout;
@@ -105,11 +106,13 @@ TelemetryCharts::TelemetryCharts(const model::TelemetryHistory *history, QWidget
     controls->addWidget(m_pause);
     controls->addWidget(m_export);
     controls->addWidget(m_message, 1);
-    controls->addWidget(m_rehearsal);
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     layout->setSpacing(2);
     layout->addLayout(controls);
+    // A line of its own: beside the controls it widened the page past
+    // what 1280x720 gives the tabs.
+    layout->addWidget(m_rehearsal);
 
     const QColor az(0x4c, 0xd9, 0x64), el(0x3c, 0xb4, 0xf2), azCmd(0xf2, 0xc0, 0x3c), elCmd(0xc0, 0x7c, 0xf2);
     addPanel(QStringLiteral("AzEl"), tr("Az/El"), QStringLiteral("°"),

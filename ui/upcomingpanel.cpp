@@ -174,7 +174,12 @@ void UpcomingPanel::fill(const QList<Row> &rows)
     tick();
     m_table->resizeColumnsToContents();
     // The countdowns change every second: room for the longest of them.
-    const int countdownWidth = m_table->fontMetrics().horizontalAdvance(tr("up now, LOS in %1").arg(QStringLiteral("00:00:00"))) + 16;
+    const bool anyUp = std::any_of(m_rows.cbegin(), m_rows.cend(), [this](const Row &r) {
+        return r.planned.pass.aos.julian <= m_station->clock()->nowJulian();
+    });
+    const QString longest = QStringLiteral("00:00:00");
+    const int countdownWidth =
+        m_table->fontMetrics().horizontalAdvance(anyUp ? tr("up now, LOS in %1").arg(longest) : longest) + 16;
     m_table->setColumnWidth(InColumn, std::max(m_table->columnWidth(InColumn), countdownWidth));
     emit rowsShown();
 }

@@ -13,6 +13,11 @@
 #include "linkschemes.h"
 #include "operatortheme.h"
 #include "polarplotwidget.h"
+#include "schedulepanel.h"
+#include "scrollablepage.h"
+#include "targetpicker.h"
+#include "trackingpanel.h"
+#include "upcomingpanel.h"
 #include "targetconfirmation.h"
 #include "telemetryrecorder.h"
 #include "windowstate.h"
@@ -23,10 +28,13 @@
 #include <QHostAddress>
 #include <QLabel>
 #include <QScreen>
+#include <QScrollBar>
+#include <QSettings>
 #include <QStatusBar>
 #include <QSplitter>
 #include <QTabBar>
 #include <QTabWidget>
+#include <QToolButton>
 #include <QTest>
 
 using slew::ui::MainWindow;
@@ -51,6 +59,21 @@ QString faultsOnEveryTab(MainWindow &window)
     QDir().mkpath(folder);
     const auto picture = [&](const QString &name) {
         window.grab().save(folder + name.toLower().replace(u' ', u'-') + QStringLiteral(".png"));
+        // From 1280x720 up, a page has the room it needs: no scroll bar.
+        if (window.width() < 1280 || window.height() < 720)
+            return;
+        for (const auto *page : window.findChildren<slew::ui::ScrollablePage *>())
+            if (page->isVisible() && (page->horizontalScrollBar()->isVisible() || page->verticalScrollBar()->isVisible()))
+                all << QStringLiteral("[%1] %2 scrolls at %3x%4 (page %5x%6, least %7x%8, room %9x%10)")
+                           .arg(name, page->objectName())
+                           .arg(window.width())
+                           .arg(window.height())
+                           .arg(page->widget()->width())
+                           .arg(page->widget()->height())
+                           .arg(page->widget()->minimumSizeHint().width())
+                           .arg(page->widget()->minimumSizeHint().height())
+                           .arg(page->viewport()->width())
+                           .arg(page->viewport()->height());
     };
     for (int i = 0; i < tabs->count(); ++i) {
         tabs->setCurrentIndex(i);
@@ -129,9 +152,24 @@ private slots:
         f.window->resize(size);
         QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
         QVERIFY(f.connectAndWait());
+        // The pages filled as on a station's first evening: element sets, a
+        // rehearsal over JO65hq before FLOCK 2P-1's pass, a target chosen
+        // and starred, a schedule of two.
+        QVERIFY(f.loadElementSets(QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle")));
+        QVERIFY(f.rehearseAt(QStringLiteral("2018-01-22T07:40:00Z"), 1.0));
+        slew::ui::TrackingPanel *tracking = f.window->trackingPanel();
+        QVERIFY(tracking->selectTarget(QStringLiteral("FLOCK 2P-1")));
+        QTest::mouseClick(tracking->targetPicker()->favouriteButton(), Qt::LeftButton);
+        QVERIFY(f.window->schedulePanel()->addTarget(QStringLiteral("FLOCK 2P-1")));
+        QVERIFY(f.window->schedulePanel()->addTarget(QStringLiteral("AO-91")));
+        QVERIFY(QTest::qWaitFor([&] { return !tracking->isPlanning() && !f.window->upcomingPanel()->isPlanning()
+                                             && f.window->schedulePanel()->isPreviewing(); },
+                                10000));
         settle();
         QCOMPARE(f.window->size(), size);
         const QString faults = faultsOnEveryTab(*f.window);
+        QSettings().remove(QStringLiteral("tracking/favourites"));
+        QSettings().remove(QStringLiteral("schedule"));
         QVERIFY2(faults.isEmpty(), qPrintable(faults));
         QCOMPARE(f.window->size(), size);
     }
