@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "radiorunner.h"
 
+#include "radio/frequencytext.h"
+
 #include <QJsonDocument>
 #include <QJsonObject>
 
@@ -79,9 +81,10 @@ void RadioRunner::onRead(const radio::RadioFrequencies &f)
             o.insert(QStringLiteral("transmit_hz"), *f.transmitHz);
         emit output(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)));
     } else {
-        QString line = tr("receive %1 Hz").arg(f.receiveHz ? QString::number(*f.receiveHz, 'f', 0) : tr("unknown"));
+        // As the window writes them; --json has the hertz.
+        QString line = tr("receive %1").arg(f.receiveHz ? radio::groupedMegahertz(*f.receiveHz) : tr("unknown"));
         if (f.transmitHz)
-            line += tr(", transmit %1 Hz").arg(*f.transmitHz, 0, 'f', 0);
+            line += tr(", transmit %1").arg(radio::groupedMegahertz(*f.transmitHz));
         emit output(line);
     }
     // A frequency set and read back differently: the radio moved it (its

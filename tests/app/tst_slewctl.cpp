@@ -365,7 +365,7 @@ void SlewctlTest::tunesARadioThroughRigctld()
     const QString uri = QStringLiteral("rigctld://127.0.0.1:%1").arg(port);
     Run r = slewctl({"--radio", uri, "freq", "145.8M"});
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-    QCOMPARE(r.out.trimmed(), QString("receive 145800000 Hz"));
+    QCOMPARE(r.out.trimmed(), QString("receive 145.800 000 MHz"));
     r = slewctl({"--radio", uri, "split", "on"});
     QCOMPARE(r.exitCode, 0);
     // A new connection knows split is on, so the transmit side is read too.
