@@ -1,6 +1,7 @@
 #include "passoverlay.h"
 
 #include <QObject>
+#include <QFontMetricsF>
 #include <QPainter>
 
 #include <algorithm>
@@ -18,6 +19,24 @@ void label(QPainter &p, const QPointF &at, const QString &text, const QColor &co
 {
     p.setPen(colour);
     p.drawText(at + QPointF(8, -6), text);
+}
+
+// A label for a point on the horizon (AOS, LOS), set inside the circle
+// towards the zenith: outside it, it sat on the bearings' numbers and
+// letters ("LOS" on "E").
+void labelInside(QPainter &p, const QPointF &at, const QPointF &zenith, const QString &text, const QColor &colour)
+{
+    const QPointF towards = zenith - at;
+    const double length = std::hypot(towards.x(), towards.y());
+    if (length < 30.0) {
+        label(p, at, text, colour);
+        return;
+    }
+    const QPointF middle = at + towards * (16.0 / length);
+    const QFontMetricsF metrics(p.font());
+    const QSizeF size(metrics.horizontalAdvance(text) + 2, metrics.height());
+    p.setPen(colour);
+    p.drawText(QRectF(middle - QPointF(size.width() / 2, size.height() / 2), size), Qt::AlignCenter, text);
 }
 
 } // namespace
@@ -54,8 +73,9 @@ void paintPassOverlay(QPainter &p, const PassOverlay &o, const std::function<QPo
     p.setBrush(Qt::NoBrush);
     p.drawEllipse(aos, 4, 4);
     p.drawRect(QRectF(los.x() - 4, los.y() - 4, 8, 8));
-    label(p, aos, QObject::tr("AOS"), kLabel);
-    label(p, los, QObject::tr("LOS"), kLabel);
+    const QPointF zenith = pointFor(0.0, 90.0);
+    labelInside(p, aos, zenith, QObject::tr("AOS"), kLabel);
+    labelInside(p, los, zenith, QObject::tr("LOS"), kLabel);
     if (overlapAt)
         label(p, pointFor(overlapAt->x(), overlapAt->y()), QObject::tr("overlap"), kOverlap);
     if (unwindAt)

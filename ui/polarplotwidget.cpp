@@ -5,6 +5,7 @@
 #include "sky/horizonmask.h"
 
 #include <QMouseEvent>
+#include <QFontMetricsF>
 #include <QPainter>
 #include <QPainterPath>
 #include <QToolTip>
@@ -306,8 +307,17 @@ void PolarPlotWidget::paintMarkers(QPainter &p) const
         p.setBrush(col);
         p.drawEllipse(at, 7, 7);
         if (m_stale) {
+            // Towards the zenith, clear of the marker: beside it, at a low
+            // elevation, it sat on the bearings' numbers ("STALE" on "120").
+            const QPointF towards = centre() - at;
+            const double length = std::hypot(towards.x(), towards.y());
+            const QString text = tr("STALE");
+            const QFontMetricsF metrics(p.font());
+            const QSizeF size(metrics.horizontalAdvance(text) + 2, metrics.height());
+            const QPointF middle = length < 40.0 ? at + QPointF(size.width() / 2 + 10, -8)
+                                                 : at + towards * ((size.width() / 2 + 12) / length);
             p.setPen(kStale);
-            p.drawText(at + QPointF(10, -8), tr("STALE"));
+            p.drawText(QRectF(middle - QPointF(size.width() / 2, size.height() / 2), size), Qt::AlignCenter, text);
         }
     }
 }
