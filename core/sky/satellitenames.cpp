@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "satellitenames.h"
 
-#include <QFile>
+#include "input/boundedfile.h"
+
+#include <QFileInfo>
 #include <QStandardPaths>
 
 namespace slew::sky {
@@ -26,19 +28,16 @@ LoadedNames loadNames()
     Q_ASSERT(builtInProblems.isEmpty()); // tst_tle reads it too
 
     const QString path = userSatelliteNamesPath();
-    QFile file(path);
-    if (!file.exists())
-        return loaded;
-    if (file.size() > kMostUserFileBytes) {
-        loaded.problems << QStringLiteral("%1: larger than 1 MiB, not a list of satellite names: not read").arg(path);
-        return loaded;
-    }
-    if (!file.open(QIODevice::ReadOnly)) {
-        loaded.problems << QStringLiteral("%1: cannot be read (%2)").arg(path, file.errorString());
+    if (!QFileInfo::exists(path) && !QFileInfo(path).isSymLink())
+        return loaded; // none: the built-in names alone
+    // A regular file, read whole up to the cap: a FIFO or a device put
+    // there is refused, never waited on.
+    const input::BoundedRead read = input::readBoundedFile(path, kMostUserFileBytes);
+    if (!read.ok()) {
+        loaded.problems << QStringLiteral("%1: not read").arg(read.error);
         return loaded;
     }
-    const QByteArray bytes = file.read(kMostUserFileBytes);
-    loaded.table.read(QString::fromUtf8(bytes), path, &loaded.problems);
+    loaded.table.read(QString::fromUtf8(read.bytes), path, &loaded.problems);
     return loaded;
 }
 

@@ -412,6 +412,14 @@ void TestSlewSky::theOperatorsOwnSatelliteNames()
     QVERIFY2(r.err.contains(qPrintable(names.fileName() + QStringLiteral(":3: 'ISS' is not a catalogue number"))),
              r.err.constData());
     QCOMPARE(numberWhere(QStringLiteral("ARISS"), &r), 25338); // the operator's, not the built-in 25544
+    // A FIFO in its place is refused, not waited on; the built-in names stay.
+    QTemporaryDir fifoHome;
+    QVERIFY(QDir(fifoHome.path()).mkpath(QStringLiteral("Slew")));
+    QVERIFY(::mkfifo(QFile::encodeName(fifoHome.filePath(QStringLiteral("Slew/satellite-names.txt"))).constData(), 0600) == 0);
+    const Run fifo = runSlew(QStringList{QStringLiteral("--where"), QStringLiteral("ARISS")} + at, fifoHome.path());
+    QCOMPARE(fifo.exitCode, 0);
+    QVERIFY2(fifo.err.contains("satellite-names.txt") && fifo.err.contains("not read"), fifo.err.constData());
+    QCOMPARE(QJsonDocument::fromJson(fifo.out).object().value(QStringLiteral("catalogue_number")).toInt(), 25544);
     // Without the file, the built-in names as before.
     QCOMPARE(QJsonDocument::fromJson(runSlew(QStringList{QStringLiteral("--where"), QStringLiteral("ARISS")} + at).out)
                  .object()
