@@ -33,6 +33,18 @@ double julianAt(qint64 ms)
     return double(ms) / kMsPerDay;
 }
 
+// The radio and the steering on one simulated clock, from *ms up to `end`:
+// the radio every `radioStepMs`, the steering every 20 ms, as the
+// station's timer drives it.
+void runRadioAndSteering(FakeRadioLink &radio, DopplerSteering &steering, qint64 *ms, qint64 end, qint64 radioStepMs)
+{
+    for (; *ms <= end; *ms += radioStepMs) {
+        radio.advanceTo(*ms);
+        if (*ms % 20 == 0)
+            steering.step(julianAt(*ms), *ms);
+    }
+}
+
 } // namespace
 
 class DopplerTest : public QObject {
@@ -172,13 +184,7 @@ private slots:
         steering.begin(sat, sweep);
         QSignalSpy followed(&steering, &DopplerSteering::dialFollowed);
         qint64 ms = 0;
-        auto runUntil = [&](qint64 end) {
-            for (; ms <= end; ms += 10) {
-                radio.advanceTo(ms);
-                if (ms % 20 == 0)
-                    steering.step(julianAt(ms), ms);
-            }
-        };
+        auto runUntil = [&](qint64 end) { runRadioAndSteering(radio, steering, &ms, end, 10); };
         runUntil(30000);
         QVERIFY(!steering.dialTurning()); // Slew's own commands, read back late, are not a turn
         QCOMPARE(followed.count(), 0);
@@ -227,13 +233,7 @@ private slots:
         steering.begin(sat, sweep);
         QSignalSpy measured(&steering, &DopplerSteering::measured);
         qint64 ms = 0;
-        auto runUntil = [&](qint64 end) {
-            for (; ms <= end; ms += 10) {
-                radio.advanceTo(ms);
-                if (ms % 20 == 0)
-                    steering.step(julianAt(ms), ms);
-            }
-        };
+        auto runUntil = [&](qint64 end) { runRadioAndSteering(radio, steering, &ms, end, 10); };
         runUntil(30000);
         // In two clicks, a latency apart: a command of Slew's on its way
         // when the first lands may overwrite it (CAT has no lock), as on a
@@ -305,12 +305,7 @@ private slots:
         steering.begin(sat, sweep);
         QSignalSpy followed(&steering, &DopplerSteering::dialFollowed);
         qint64 ms = 0;
-        auto runUntil = [&](qint64 end) {
-            for (; ms <= end; ms += 20) {
-                radio.advanceTo(ms);
-                steering.step(julianAt(ms), ms);
-            }
-        };
+        auto runUntil = [&](qint64 end) { runRadioAndSteering(radio, steering, &ms, end, 20); };
         runUntil(20000);
         for (int again = 0; again < 20; ++again) {
             steering.begin(sat, sweep);
@@ -334,12 +329,7 @@ private slots:
         sat.downlinkHz = 435.85e6;
         steering.begin(sat, sweep);
         qint64 ms = 0;
-        auto runUntil = [&](qint64 end) {
-            for (; ms <= end; ms += 20) {
-                radio.advanceTo(ms);
-                steering.step(julianAt(ms), ms);
-            }
-        };
+        auto runUntil = [&](qint64 end) { runRadioAndSteering(radio, steering, &ms, end, 20); };
         runUntil(5000);
         radio.failReads = true;
         runUntil(5100); // a read asked, and lost
