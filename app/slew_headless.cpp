@@ -52,7 +52,7 @@ QString shown(const QString &text)
 }
 
 // --track and what goes with it: the targets (cli/trackoptions.h), --min-el,
-// --guard, --clock-start, --clock-rate. Messages name each option as `label`
+// --guard, --max-element-age, --clock-start, --clock-rate. Messages name each option as `label`
 // gives it.
 std::optional<slew::station::ServiceConfig::Track> readTrack(const QCommandLineParser &parser,
                                                               const OptionLabel &label, QString *error)
@@ -84,6 +84,15 @@ std::optional<slew::station::ServiceConfig::Track> readTrack(const QCommandLineP
             return std::nullopt;
         }
         track.guardSeconds = *value;
+    }
+    const QString maxAge = QStringLiteral("max-element-age");
+    if (parser.isSet(maxAge)) {
+        const auto value = slew::input::numberIn(parser.value(maxAge), {0.5, 365, " days"}, &why);
+        if (!value) {
+            *error = QStringLiteral("%1: %2 (days from the elements' epoch, 0.5 to 365)").arg(label(maxAge), why);
+            return std::nullopt;
+        }
+        track.maxElementAgeDays = *value;
     }
     const auto clock = slew::cli::readStationClockOptions(parser, label, error);
     if (!clock)
@@ -314,7 +323,7 @@ int runHeadless(int argc, char *argv[])
             return fail(QStringLiteral("--track needs --qth: where the antenna stands"));
         config.track = *track;
     } else {
-        for (const char *option : {"tle", "min-el", "guard", "clock-start", "clock-rate"}) {
+        for (const char *option : {"tle", "min-el", "guard", "max-element-age", "clock-start", "clock-rate"}) {
             // With --mqtt, --tle names the satellites a remote `track` may ask for.
             if (parser.isSet(QString::fromLatin1(option)) && !(option == std::string_view("tle") && parser.isSet(QStringLiteral("mqtt"))))
                 return fail(QStringLiteral("%1 goes with --track%2")

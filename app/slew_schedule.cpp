@@ -92,7 +92,8 @@ int runSchedule(int argc, char **argv)
     };
     if (!number("hours", {0.1, 168, " hours"}, &settings.hours)
         || !number("min-el", {-5, 90, "°"}, &settings.minElevationDeg)
-        || !number("guard", {0, 3600, " s"}, &settings.guardSeconds))
+        || !number("guard", {0, 3600, " s"}, &settings.guardSeconds)
+        || !number("max-element-age", {0.5, 365, " days"}, &settings.maxElementAgeDays))
         return fail(error);
 
     const slew::schedule::Schedule plan =

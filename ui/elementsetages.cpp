@@ -90,9 +90,9 @@ void ElementSetAges::refresh(double julianNow, double limitDays)
         if (s.cachedAt.isValid())
             text += tr(", downloaded %1 ago").arg(describeAgeSince(s.cachedAt));
         if (stale)
-            text = tr("⚠ %1: older than %2 days, predictions drift; refresh in Sky → Element sets…")
+            text = tr("⚠ %1: older than %2 days, not tracked; refresh in Sky → Element sets…")
                        .arg(text)
-                       .arg(limitDays, 0, 'f', 0);
+                       .arg(limitDays, 0, 'g', 4);
         QLabel *line = m_lines[i];
         line->setText(text);
         line->setToolTip(s.url.toString());

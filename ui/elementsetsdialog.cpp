@@ -28,7 +28,6 @@ namespace slew::ui {
 namespace {
 
 constexpr char kAgeLimitKey[] = "sky/elementSetAgeLimitDays";
-constexpr double kDefaultAgeLimitDays = 7.0; // a LEO set a week old can be minutes off
 
 // "1 element set", "2 element sets" (no translator supplies plural forms).
 QString count(qsizetype n, const QString &one, const QString &many)
@@ -82,7 +81,10 @@ ElementSetsDialog::ElementSetsDialog(sky::ElementSetSources *sources, QWidget *p
     m_ageLimit->setSuffix(tr(" days"));
     m_ageLimit->setValue(savedAgeLimitDays());
     m_ageLimit->setMaximumWidth(140);
-    form->addRow(tr("Warn about sets older than"), m_ageLimit);
+    m_ageLimit->setToolTip(tr("A satellite is tracked, by One target and by the schedule, only while its elements "
+                              "are at most this far from their epoch; older sets are named below and on the "
+                              "Tracking tab"));
+    form->addRow(tr("Track sets up to"), m_ageLimit);
     layout->addLayout(form);
 
     auto *buttons = new QHBoxLayout;
@@ -125,6 +127,7 @@ ElementSetsDialog::ElementSetsDialog(sky::ElementSetSources *sources, QWidget *p
     connect(m_ageLimit, &QDoubleSpinBox::valueChanged, this, [this](double days) {
         QSettings().setValue(QLatin1String(kAgeLimitKey), days);
         showStatus();
+        emit ageLimitChanged(days);
     });
     connect(m_sources, &sky::ElementSetSources::setsChanged, this, &ElementSetsDialog::showStatus);
     connect(m_sources, &sky::ElementSetSources::loaded, this, [this] {
@@ -146,7 +149,7 @@ ElementSetsDialog::ElementSetsDialog(sky::ElementSetSources *sources, QWidget *p
 double ElementSetsDialog::savedAgeLimitDays()
 {
     const std::optional<double> days = input::finiteNumber(QSettings().value(QLatin1String(kAgeLimitKey)).toString());
-    return days && *days > 0 ? *days : kDefaultAgeLimitDays;
+    return days && *days > 0 ? *days : sky::kElementAgeLimitDays;
 }
 
 bool ElementSetsDialog::readUrls(QList<QUrl> *urls, QString *error) const
@@ -254,7 +257,7 @@ void ElementSetsDialog::showStatus()
                      .arg(t.name.isEmpty() ? QString::number(t.catalogueNumber) : t.name)
                      .arg(stale[i].ageDays, 0, 'f', 0);
     }
-    m_staleWarning->setText(tr("%1 older than the limit; predictions from them drift: %2%3")
+    m_staleWarning->setText(tr("%1 older than the limit, not tracked until refreshed: %2%3")
                                 .arg(count(stale.size(), tr("element set"), tr("element sets")),
                                      named.join(QStringLiteral(", ")), stale.size() > 5 ? tr(", …") : QString()));
 }

@@ -34,6 +34,12 @@ public:
     // savedElementSetUrls(), shared with slew --update-elements).
     static double savedAgeLimitDays();
 
+signals:
+    // The operator changed the age limit (already saved).
+    void ageLimitChanged(double days);
+
+public:
+
     // Takes the typed sources (refusing a line that is not a URL, with its
     // number) and fetches them all; false, with the reason shown, if a line
     // is refused.

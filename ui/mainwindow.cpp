@@ -75,6 +75,8 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
 {
     setObjectName(QStringLiteral("mainWindow"));
     setWindowTitle(tr("Slew"));
+    // The operator's limit, kept with the element sets' settings.
+    station->setElementAgeLimitDays(ElementSetsDialog::savedAgeLimitDays());
     RotatorSession *session = m_session;
     m_connection = new ConnectionBar(session);
     m_banner = new AlarmBanner;
@@ -403,6 +405,7 @@ void MainWindow::openElementSets()
 {
     auto *dialog = new ElementSetsDialog(m_elementSets, this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &ElementSetsDialog::ageLimitChanged, m_station, &station::Station::setElementAgeLimitDays);
     dialog->open();
 }
 

@@ -2,7 +2,6 @@
 #include "trackingpanel.h"
 
 #include "elementsetages.h"
-#include "elementsetsdialog.h"
 #include "passplanbadge.h"
 #include "targetpicker.h"
 #include "trackingline.h"
@@ -147,6 +146,12 @@ void TrackingPanel::showButtons()
     QStringList missing;
     if (!target)
         missing << (chosen ? tr("%1 is not in the loaded element sets").arg(name) : tr("pick a target above"));
+    else if (target->kind == TrackTarget::Kind::Satellite) {
+        const QString old = sky::elementsTooOld(target->elements, m_clock->nowJulian(),
+                                                m_station->elementAgeLimitDays(), tr("now"));
+        if (!old.isEmpty())
+            missing << tr("refresh the element sets, or raise the limit under Sky → Element sets… (%1)").arg(old);
+    }
     if (!m_station->place())
         missing << tr("set the station (Sky → Station…)");
     if (!m_session->isConnected())
@@ -166,7 +171,7 @@ void TrackingPanel::showStation()
 
 void TrackingPanel::showSetAges()
 {
-    m_setAges->refresh(m_clock->nowJulian(), ElementSetsDialog::savedAgeLimitDays());
+    m_setAges->refresh(m_clock->nowJulian(), m_station->elementAgeLimitDays());
 }
 
 bool TrackingPanel::selectTarget(const QString &name)

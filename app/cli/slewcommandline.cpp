@@ -118,6 +118,18 @@ ProgramOption passKeepDaysOption(bool inConfigFile = false)
             inConfigFile};
 }
 
+// One rule for the window, the service and the plan printed
+// (sky/elementage.h); the window keeps its own under Sky → Element sets.
+ProgramOption maxElementAgeOption(bool inConfigFile = false)
+{
+    return {{QStringLiteral("max-element-age")},
+            QStringLiteral("days"),
+            QStringLiteral("A satellite is tracked only while its elements are at most this many days from their "
+                           "epoch (either side: a rehearsal of an old pass with new elements is as far off), 0.5 to "
+                           "365 (default 14); a pass further out is dropped, with the reason."),
+            inConfigFile};
+}
+
 ProgramOption tleOption(const QString &purpose)
 {
     return {{QStringLiteral("tle")},
@@ -184,7 +196,7 @@ ProgramMode makeHeadlessMode()
     mode.synopsis = QStringLiteral("slew --headless [--config FILE] [--connect URI] [--dialect NAME] "
                                    "[--profile FILE] [--limits AZMIN:AZMAX,ELMIN:ELMAX] [--rotctld-listen ADDRESS:PORT] "
                                    "[--rotctld-allow ADDRESSES] [--rotors LIST] [--qth STATION [--tle FILE] "
-                                   "--track CATNR|NAME|sun|moon|azel:AZ,EL|radec:RA,DEC [--track ...] [--horizon FILE] [--min-el DEG] [--guard S] [--clock-start ISO8601] [--clock-rate N] "
+                                   "--track CATNR|NAME|sun|moon|azel:AZ,EL|radec:RA,DEC [--track ...] [--horizon FILE] [--min-el DEG] [--guard S] [--max-element-age DAYS] [--clock-start ISO8601] [--clock-rate N] "
                                    "[--radio URI (--downlink FREQ [--uplink FREQ] | --transponders FILE [--transponder NAME])]] "
                                    "[--mqtt mqtts://USER@HOST:8883 --station-name NAME [--mqtt-password-file FILE]]");
     mode.description = QStringLiteral(
@@ -197,7 +209,7 @@ ProgramMode makeHeadlessMode()
         {{QStringLiteral("config")},
          QStringLiteral("file"),
          QStringLiteral("Read settings from FILE, one `name = value` a line, where name is one of connect, dialect, "
-                        "profile, limits, rotctld-listen, rotctld-allow, rotctld-max-clients, rotors, qth, horizon, tle, track (a line a target), min-el, guard, and the radio's "
+                        "profile, limits, rotctld-listen, rotctld-allow, rotctld-max-clients, rotors, qth, horizon, tle, track (a line a target), min-el, guard, max-element-age, and the radio's "
                         "radio, downlink, uplink, downlink-mode, uplink-mode, doppler, uplink-follows, downlink-offset, "
                         "uplink-offset, transponders, transponder, transponder-invert, radio-restore, radio-vfos, "
                         "pass-db, pass-keep-days, and the broker's mqtt, station-name, mqtt-password-file. Options on "
@@ -214,7 +226,7 @@ ProgramMode makeHeadlessMode()
         limitsOption(),
         {{QStringLiteral("track")},
          QStringLiteral("target"),
-         QStringLiteral("Track every pass of a satellite (a catalogue number or the start of a name, of --tle's sets or "
+         QStringLiteral("Track every pass of a satellite (a catalogue number, an AMSAT name or any part of a name, of --tle's sets or "
                         "else the cached ones of the window's sources), the sun "
                         "or the moon until SIGTERM: plan each pass before AOS (never the long way round, the flip or "
                         "the overlap where the travel has them), pre-position, follow, and log the plan, AOS, and at "
@@ -233,6 +245,7 @@ ProgramMode makeHeadlessMode()
          QStringLiteral("With --track given more than once: the least time between two passes of the schedule, "
                         "besides the rotator's move, 0 to 3600 (default 30)."),
          true},
+        maxElementAgeOption(true),
         [] {
             ProgramOption tle = tleOption(QStringLiteral("The satellites of --track, and those a remote track (--mqtt) "
                                                          "may name."));
@@ -445,7 +458,7 @@ ProgramMode makeScheduleMode()
     ProgramMode mode;
     mode.title = QStringLiteral("A schedule of several targets");
     mode.synopsis = QStringLiteral("slew --schedule --track TARGET [--track TARGET ...] --qth STATION [--tle FILE] "
-                                   "[--horizon FILE] [--start ISO8601] [--hours 24] [--min-el DEG] [--guard S] "
+                                   "[--horizon FILE] [--start ISO8601] [--hours 24] [--min-el DEG] [--guard S] [--max-element-age DAYS] "
                                    "[--profile FILE | --limits AZMIN:AZMAX,ELMIN:ELMAX] [--json]");
     mode.description = QStringLiteral(
         "Prints the plan the station service follows for these targets, the first the highest priority: every "
@@ -458,7 +471,7 @@ ProgramMode makeScheduleMode()
         {{QStringLiteral("schedule")}, {}, QStringLiteral("Print a schedule.")},
         {{QStringLiteral("track")},
          QStringLiteral("target"),
-         QStringLiteral("A target: a satellite (a catalogue number or the start of a name), sun, moon, "
+         QStringLiteral("A target: a satellite (a catalogue number, an AMSAT name or any part of a name), sun, moon, "
                         "azel:AZ,EL or radec:RA,DEC. Once for each target, the first the highest priority."),
          false,
          true},
@@ -475,6 +488,7 @@ ProgramMode makeScheduleMode()
         {{QStringLiteral("guard")},
          QStringLiteral("seconds"),
          QStringLiteral("The least time between two passes, besides the rotator's move, 0 to 3600 (default 30).")},
+        maxElementAgeOption(),
         profileOption(),
         limitsOption(),
         {{QStringLiteral("json")}, {}, QStringLiteral("Print JSON instead of a line a pass.")},

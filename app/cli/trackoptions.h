@@ -20,7 +20,7 @@ class QCommandLineParser;
 namespace slew::cli {
 
 // Every --track in the order given: a satellite of --tle (its catalogue
-// number or the start of its name; the file is read once), sun, moon,
+// number, an AMSAT name or any part of its name; the file is read once), sun, moon,
 // azel:AZ,EL or radec:RA,DEC. The same target twice is refused: a schedule
 // takes each once, at one priority.
 std::optional<QList<tracking::TrackTarget>> readTrackTargets(const QCommandLineParser &parser,

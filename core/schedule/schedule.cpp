@@ -4,6 +4,7 @@
 #include "tracking/rotatorreach.h"
 
 #include "input/finitenumber.h"
+#include "sky/elementage.h"
 #include "sky/utctime.h"
 
 #include <QObject>
@@ -439,13 +440,12 @@ Schedule planSchedule(const QList<tracking::TrackTarget> &targets, const sky::St
         }
         for (const sky::Pass &p : passes) {
             ScheduledPass c = candidate(p);
-            const double ageDays = satellite ? std::abs(p.aos.julian - target.elements.epochJulian()) : 0.0;
-            if (ageDays > settings.maxElementAgeDays) {
+            if (const QString old = satellite ? sky::elementsTooOld(target.elements, p.aos.julian,
+                                                                      settings.maxElementAgeDays, QObject::tr("AOS"))
+                                              : QString();
+                !old.isEmpty()) {
                 c.reason = DropReason::StaleElements;
-                c.why = QObject::tr("its elements are %1 days from AOS (epoch %2); the limit is %3 days")
-                            .arg(ageDays, 0, 'f', 1)
-                            .arg(sky::isoUtc(target.elements.epochJulian()))
-                            .arg(settings.maxElementAgeDays, 0, 'f', 0);
+                c.why = old;
             } else {
                 c.points = sky.sample(station, p, c.startJulian);
                 if (target.isFixed()) {

@@ -36,6 +36,7 @@
 #include "tracking/passplanner.h"
 #include "tracking/tracktarget.h"
 
+#include "sky/elementage.h"
 #include "sky/passes.h"
 #include "sky/station.h"
 
@@ -93,7 +94,7 @@ struct ScheduleSettings {
     double guardSeconds = 30;
     // A satellite whose elements are further than this from a pass's AOS:
     // dropped (a LEO's prediction is minutes off after a few weeks).
-    double maxElementAgeDays = 14;
+    double maxElementAgeDays = sky::kElementAgeLimitDays;
     // The least of a long target's time worth a place between passes.
     double shortestPieceSeconds = 300;
     // Where the antenna stands at the start, when known: the first pass

@@ -227,15 +227,6 @@ QList<ElementSet> ElementSetSources::sets() const
     return mergeByCatalogueNumber(all);
 }
 
-QList<ElementAge> staleElements(const QList<ElementSet> &sets, double julianNow, double limitDays)
-{
-    QList<ElementAge> stale;
-    for (const ElementSet &t : sets)
-        if (julianNow - t.epochJulian() > limitDays)
-            stale.append({&t, julianNow - t.epochJulian()});
-    return stale;
-}
-
 std::optional<double> newestEpochJulian(const QList<ElementSet> &sets)
 {
     std::optional<double> newest;

@@ -13,6 +13,7 @@
 // class, its cache directory and the saved list of sources.
 
 #include "boundeddownload.h"
+#include "elementage.h"
 #include "elementsetformat.h"
 
 #include <QDateTime>
@@ -130,14 +131,6 @@ private:
     int m_pending = 0;
     int m_loading = 0;
 };
-
-// Element sets older than a limit at a time: they predict worse every day
-// (a LEO set a week old can be minutes off).
-struct ElementAge {
-    const ElementSet *set = nullptr;
-    double ageDays = 0;
-};
-QList<ElementAge> staleElements(const QList<ElementSet> &sets, double julianNow, double limitDays);
 
 // The epoch of the newest set (a Julian date), none for no sets: how current
 // a source is, as a group file holds sets of many ages.

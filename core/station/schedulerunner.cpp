@@ -171,7 +171,7 @@ void ScheduleRunner::plan(const QString &why)
     settings.hours = m_options.hours;
     settings.minElevationDeg = m_options.minElevationDeg;
     settings.guardSeconds = m_options.guardSeconds;
-    settings.maxElementAgeDays = m_options.maxElementAgeDays;
+    settings.maxElementAgeDays = m_runner->elementAgeLimitDays();
     if (m_session->hasPosition())
         settings.antennaAt = schedule::AntennaPoint{m_session->azimuth(), m_session->elevation()};
     // The pass the rotator is on (or moving to) is not taken away from it.

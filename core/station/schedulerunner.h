@@ -48,7 +48,8 @@ struct ScheduleOptions {
     double minElevationDeg = 0;
     double hours = 24;
     double guardSeconds = 30;
-    double maxElementAgeDays = 14;
+    // The elements' age limit is the pass runner's, one for one target and
+    // the schedule (PassRunner::setElementAgeLimitDays).
 };
 
 class ScheduleRunner : public QObject {

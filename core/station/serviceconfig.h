@@ -9,6 +9,7 @@
 
 #include "model/rotatorlimits.h"
 #include "model/rotatorprofile.h"
+#include "sky/elementage.h"
 #include "sky/station.h"
 #include "tracking/tracktarget.h"
 
@@ -41,6 +42,7 @@ struct ServiceConfig {
         const tracking::TrackTarget &target() const { return targets.first(); }
         double minElevationDeg = 0;
         double guardSeconds = 30; // --guard: between two passes of a schedule
+        double maxElementAgeDays = sky::kElementAgeLimitDays; // --max-element-age
         std::optional<double> clockStartJulian; // --clock-start: a rehearsal
         double clockRate = 1.0;                 // --clock-rate
     };

@@ -14,6 +14,7 @@
 #include "session/movewatch.h"
 #include "session/rotatorsession.h"
 #include "session/stopbeforeexit.h"
+#include "sky/elementage.h"
 #include "sky/elementsetsources.h"
 #include "tracking/passrunner.h"
 #include "tracking/simulatorpace.h"
@@ -22,6 +23,8 @@
 #include "transport/sharedline.h"
 
 #include <QSettings>
+
+#include <cmath>
 
 namespace slew::station {
 
@@ -249,6 +252,12 @@ QString Station::track(const tracking::TrackTarget &target, double minElevationD
         return m_error;
     if (!m_place)
         return tr("tracking needs the station's place");
+    if (target.kind == tracking::TrackTarget::Kind::Satellite) {
+        const QString old = sky::elementsTooOld(target.elements, m_clock->nowJulian(), m_runner->elementAgeLimitDays(),
+                                                tr("now"));
+        if (!old.isEmpty())
+            return tr("%1 is not tracked: %2; refresh the element sets or raise the limit").arg(target.name(), old);
+    }
     if (QString other = otherSteering(); !other.isEmpty()) {
         other[0] = other[0].toUpper();
         return tr("%1 is steering the rotator: stop it (or Stop, which holds remote trackers off) "
@@ -258,6 +267,17 @@ QString Station::track(const tracking::TrackTarget &target, double minElevationD
     m_schedule->stop(tr("one target is tracked instead"));
     m_runner->start(target, *m_place, minElevationDeg, m_clock.get());
     return {};
+}
+
+void Station::setElementAgeLimitDays(double days)
+{
+    if (m_runner && std::isfinite(days) && days > 0)
+        m_runner->setElementAgeLimitDays(days);
+}
+
+double Station::elementAgeLimitDays() const
+{
+    return m_runner ? m_runner->elementAgeLimitDays() : sky::kElementAgeLimitDays;
 }
 
 QString Station::runSchedule(const QList<tracking::TrackTarget> &targets, const ScheduleOptions &options)

@@ -166,6 +166,11 @@ public:
     // rotor, by the station's clock. Empty when started, else why not: the
     // place is not set, or a remote tracker steers the rotator.
     QString track(const tracking::TrackTarget &target, double minElevationDeg);
+    // How far from its elements' epoch a satellite is tracked, by one target
+    // and the schedule alike (sky/elementage.h); track() refuses a satellite
+    // already past it, and a pass past it is not tracked.
+    void setElementAgeLimitDays(double days);
+    double elementAgeLimitDays() const;
     // Follows the passes of several targets, taken by priority (the first
     // highest) where they overlap and only where the rotator can get from
     // one to the next: the schedule (schedulerunner.h). Empty when started,

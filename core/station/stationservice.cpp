@@ -111,6 +111,7 @@ bool StationService::start(const ServiceConfig &config, QString *error)
         if (config.track->clockStartJulian)
             m_station->clock()->rehearse(*config.track->clockStartJulian, config.track->clockRate);
         m_tracking = true;
+        m_station->setElementAgeLimitDays(config.track->maxElementAgeDays);
         QString refused;
         if (config.track->targets.size() == 1) {
             refused = m_station->track(config.track->target(), config.track->minElevationDeg);

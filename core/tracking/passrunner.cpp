@@ -236,6 +236,22 @@ void PassRunner::onPlanned(const std::optional<PlannedPass> &next, const Rotator
         return;
     }
     const sky::Pass &pass = next->pass;
+    if (m_target.kind == TrackTarget::Kind::Satellite) {
+        const QString old = sky::elementsTooOld(m_target.elements, pass.aos.julian, m_elementAgeLimitDays, tr("AOS"));
+        if (!old.isEmpty()) {
+            // Later passes are further still: nothing to wait for.
+            const QString why = tr("the pass of %1 at %2 is not tracked: %3; refresh the element sets or raise the "
+                                   "limit")
+                                    .arg(m_target.name(), isoTime(pass.aos.julian), old);
+            if (m_one) {
+                endOne(OneEnd::NotFound, why);
+                return;
+            }
+            emit logLine(why);
+            stop(why);
+            return;
+        }
+    }
     m_pass = pass;
     if (m_target.isFixed())
         emit logLine(tr("holding %1 until %2").arg(m_target.name(), isoTime(pass.los.julian)));

@@ -16,6 +16,7 @@
 #include "sky/sgp4.h"
 #include "sky/station.h"
 #include "sky/sunmoon.h"
+#include "sky/elementage.h"
 #include "sky/elementsetformat.h"
 
 #include <QObject>
@@ -38,6 +39,10 @@ public:
     // reach come from the session's profile as each pass is planned
     // (rotatorreach.h), so a profile changed between passes applies to the next.
     void setAfterPass(TrackerSettings::AfterPass afterPass) { m_afterPass = afterPass; }
+    // A satellite's pass whose AOS is further than this from its elements'
+    // epoch is not tracked (sky/elementage.h).
+    void setElementAgeLimitDays(double days) { m_elementAgeLimitDays = days; }
+    double elementAgeLimitDays() const { return m_elementAgeLimitDays; }
     // Who else is steering the rotator now (a remote tracker on the rotctld
     // port), or empty. A pass does not start while someone does: the two
     // would fight over the rotator.
@@ -105,6 +110,7 @@ private:
     std::optional<sky::Pass> m_pass;
     sky::Station m_station;
     double m_minElevation = 0;
+    double m_elementAgeLimitDays = sky::kElementAgeLimitDays;
     TrackerSettings::AfterPass m_afterPass = TrackerSettings::AfterPass::Park;
     std::function<QString()> m_otherSteering;
     QString m_waitingFor; // the other tracker a pass is waiting on, if any

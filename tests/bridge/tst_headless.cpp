@@ -561,6 +561,12 @@ void HeadlessTest::refusesABadTrack()
         {{"--track", "FLOCK 2P-1", "--tle", tle}, "--track needs --qth"},
         {{"--track", "FLOCK 2P-1", "--qth", "JO65hq"}, "no element sets: give --tle FILE"},
         {{"--track", "NO SUCH BIRD", "--qth", "JO65hq", "--tle", tle}, "no satellite 'NO SUCH BIRD' in"},
+        // Elements from 2018 on today's clock: past the limit, as in the window.
+        {{"--track", "FLOCK 2P-1", "--qth", "JO65hq", "--tle", tle},
+         "FLOCK 2P-1 is not tracked: its elements are"},
+        {{"--track", "FLOCK 2P-1", "--qth", "JO65hq", "--tle", tle, "--max-element-age", "0"},
+         "--max-element-age: "},
+        {{"--max-element-age", "3"}, "--max-element-age goes with --track"},
         {{"--track", "sun", "--qth", "JO65hq", "--clock-rate", "5"}, "--clock-rate"},
         {{"--track", "sun", "--qth", "JO65hq", "--clock-start", "yesterday"}, "--clock-start"},
         {{"--track", "moon", "--qth", "JO65hq", "--min-el", "95"}, "--min-el"},

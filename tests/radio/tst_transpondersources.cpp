@@ -186,7 +186,7 @@ private slots:
         slew.setProcessEnvironment(home.environment());
         slew.start(qEnvironmentVariable("SLEW_BIN"),
                    {"--headless", "--connect", "sim:", "--qth", "JO65hq", "--tle", SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle",
-                    "--track", "25544",
+                    "--track", "25544", "--clock-start", "2018-01-22T07:00:00Z",
                     "--radio", "rigctld://127.0.0.1:1"});
         QByteArray log;
         QVERIFY2(QTest::qWaitFor(

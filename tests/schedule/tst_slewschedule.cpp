@@ -81,6 +81,16 @@ private slots:
                  qPrintable(out));
         QVERIFY(out.contains("PERSEUS-M1 [3]"));
         QVERIFY(out.contains(" taken, ") && out.contains(" dropped, 2018-01-22 09:00 to 2018-01-22 10:00 UTC"));
+
+        // A day's limit: FLOCK 2P-1's elements (epoch 2018-01-20 22:08) are
+        // 1.5 days from its AOS, and the pass is dropped, saying so.
+        const Run strict = runSlew(kPlan + QStringList{"--max-element-age", "1"});
+        QCOMPARE(strict.exitCode, 0);
+        const QString dropped = QString::fromUtf8(strict.out);
+        QVERIFY2(dropped.contains("FLOCK 2P-1 [1]  max 56.4°  dropped: its elements are 1.5 days from AOS (epoch "
+                                  "2018-01-20T22:08:"),
+                 qPrintable(dropped));
+        QVERIFY2(dropped.contains("the limit is 1 days"), qPrintable(dropped));
     }
 
     void printsJson()
@@ -156,6 +166,8 @@ private slots:
                                    << "--hours: 'nan' is not a finite number";
         QTest::newRow("hours too many") << base + QStringList{"--track", "sun", "--hours", "1000"} << "--hours: 1000";
         QTest::newRow("guard") << base + QStringList{"--track", "sun", "--guard", "-1"} << "--guard: -1";
+        QTest::newRow("max-element-age") << base + QStringList{"--track", "sun", "--max-element-age", "0.1"}
+                                         << "--max-element-age: 0.1";
         QTest::newRow("horizon device") << base + QStringList{"--track", "sun", "--horizon", "/dev/zero"}
                                         << "--horizon: /dev/zero is a character device";
         QTest::newRow("horizon bad line")

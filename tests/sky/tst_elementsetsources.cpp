@@ -234,6 +234,19 @@ void TestElementSetSources::staleElements()
     QCOMPARE(veryStale.size(), 1);
     QCOMPARE(veryStale[0].set->catalogueNumber, 25544);
     QVERIFY(veryStale[0].ageDays > 3400);
+    // Either side of the epoch: elements asked about a time long before it
+    // predict as badly.
+    QCOMPARE(slew::sky::staleElements(read.sets, read.sets[1].epochJulian() - 4.0, 3.0).size(), 2);
+
+    // The reason, as the schedule and the trackers give it.
+    QVERIFY(slew::sky::elementsTooOld(read.sets[1], now, 5.0, QStringLiteral("AOS")).isEmpty());
+    const QString why = slew::sky::elementsTooOld(read.sets[1], now, 3.0, QStringLiteral("AOS"));
+    QVERIFY2(why.startsWith(QStringLiteral("its elements are 4.1 days from AOS (epoch 2018-01-20T")), qPrintable(why));
+    QVERIFY2(why.endsWith(QStringLiteral("; the limit is 3 days")), qPrintable(why));
+    const QString halfDay = slew::sky::elementsTooOld(read.sets[1], now, 0.5, QStringLiteral("now"));
+    QVERIFY2(halfDay.contains(QStringLiteral(" days from now (epoch 2018-01-20T"))
+                 && halfDay.endsWith(QStringLiteral("; the limit is 0.5 days")),
+             qPrintable(halfDay));
 
     // A source is as current as its newest set: NOAA 19's.
     QVERIFY(!slew::sky::newestEpochJulian({}).has_value());

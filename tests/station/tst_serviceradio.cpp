@@ -301,7 +301,9 @@ private slots:
     {
         QTest::addColumn<QStringList>("args");
         QTest::addColumn<QString>("says");
-        const QStringList track{"--qth", "JO65hq", "--tle", kTle, "--track", "FLOCK 2P-1"};
+        // The morning of the elements: a rehearsal, so that they are fresh.
+        const QStringList track{"--qth", "JO65hq", "--tle", kTle, "--track", "FLOCK 2P-1", "--clock-start",
+                                "2018-01-22T07:00:00Z"};
         QTest::newRow("no track") << QStringList{"--radio", "sim:", "--downlink", "437.8M"}
                                   << "--radio goes with --track of a satellite";
         QTest::newRow("the sun") << QStringList{"--qth", "JO65hq", "--track", "sun", "--radio", "sim:", "--downlink",

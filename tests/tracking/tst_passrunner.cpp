@@ -1,14 +1,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The station service's pass runner: the reverse hold (a pass waits while
 // another tracker steers the rotator, and starts once it is quiet), and a
-// stop while a pass is still being planned on the worker thread.
+// stop while a pass is still being planned on the worker thread, and a pass
+// past the elements' age limit left alone.
 
 #include "../common/simulatorpump.h"
 #include "linkschemes.h"
 #include "session/rotatorsession.h"
+#include "sky/elementset.h"
+#include "sky/tleformat.h"
 #include "sky/utctime.h"
 #include "tracking/passrunner.h"
 
+#include <QFile>
 #include <QSignalSpy>
 #include <QTest>
 #include <QThreadPool>
@@ -127,6 +131,46 @@ private slots:
         runner.stop(QStringLiteral("done"));
         clock.rehearse(*slew::sky::julianFromIso(QStringLiteral("2018-01-22T07:00:00Z")), 1.0);
         QVERIFY(!runner.isRunning());
+    }
+
+    // Elements within the limit now, past it by the next pass's AOS: that
+    // pass is not tracked, the runner says why and stops (later passes are
+    // further still), and the rotator is never sent anywhere.
+    void aPassPastTheElementsAgeIsNotTracked()
+    {
+        QFile file(QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"));
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QList<slew::sky::ElementSet> sets = slew::sky::readTleText(QString::fromLatin1(file.readAll())).sets;
+        const QList<const slew::sky::ElementSet *> found = slew::sky::findSatellites(sets, QStringLiteral("FLOCK 2P-1"));
+        QCOMPARE(found.size(), 1);
+        TrackTarget flock;
+        flock.elements = *found.first();
+
+        RotatorSession session;
+        session.connectTo(QStringLiteral("sim:"));
+        QVERIFY(runEventLoopUntil([&] { return session.capabilities().probed && session.hasPosition(); }, 10000));
+        QSignalSpy gotos(&session, &RotatorSession::targetChanged);
+        PassRunner runner(&session);
+        QSignalSpy lines(&runner, &PassRunner::logLine);
+        // 07:00, the pass rises after 07:30: a limit five minutes past the
+        // age now.
+        const StationClock clock(slew::sky::julianFromIso(QStringLiteral("2018-01-22T07:00:00Z")).value(), 1.0);
+        const double ageNow = clock.nowJulian() - flock.elements.epochJulian();
+        runner.setElementAgeLimitDays(ageNow + 5.0 / 1440.0);
+        runner.start(flock, kStation, 0.0, &clock);
+        QVERIFY(runEventLoopUntil([&] { return !runner.isRunning(); }, 20000));
+        QVERIFY2(logged(lines, QStringLiteral("the pass of FLOCK 2P-1 at 2018-01-22T07:")), qPrintable(lines.last().at(0).toString()));
+        QVERIFY(logged(lines, QStringLiteral("is not tracked: its elements are 1.4 days from AOS (epoch 2018-01-20T22:08:")));
+        QVERIFY(logged(lines, QStringLiteral("refresh the element sets or raise the limit")));
+        QVERIFY(!runner.isActive());
+        QCOMPARE(gotos.count(), 0);
+
+        // The same pass with a day's more leeway is planned and taken.
+        runner.setElementAgeLimitDays(ageNow + 1.0);
+        runner.start(flock, kStation, 0.0, &clock);
+        QVERIFY(runEventLoopUntil([&] { return runner.isActive(); }, 20000));
+        QVERIFY(logged(lines, QStringLiteral("next pass: FLOCK 2P-1, AOS 2018-01-22T07:")));
+        runner.stop(QStringLiteral("done"));
     }
 };
 

@@ -104,13 +104,17 @@ private slots:
         limit->setValue(1.0);
         QVERIFY2(warning->text().startsWith(QStringLiteral("2 element sets older")), qPrintable(warning->text()));
         QCOMPARE(slew::ui::ElementSetsDialog::savedAgeLimitDays(), 1.0);
+        // One limit: the station tracks (and schedules) by the same one.
+        QCOMPARE(f.window->station()->elementAgeLimitDays(), 1.0);
         limit->setValue(7.0);
+        QCOMPARE(f.window->station()->elementAgeLimitDays(), 7.0);
 
         // The next start: the same sources from the cache, the server gone,
         // read off the event loop while the window is already up.
         server.close();
         WindowFixture next;
         QCOMPARE(next.window->elementSets()->urls().size(), 2);
+        QCOMPARE(next.window->station()->elementAgeLimitDays(), 7.0); // the saved limit
         QTRY_COMPARE(next.window->elementSets()->sets().size(), 2);
         QVERIFY(next.window->elementSets()->status()[0].fromCache);
         QCOMPARE(server.requests, 2);

@@ -373,13 +373,38 @@ private slots:
                  qPrintable(line->text()));
         QVERIFY(!slew::ui::ElementSetAges::isStale(line));
 
-        // Three weeks later the same sets are past the 7-day limit: a warning.
+        // Three weeks later the same sets are past the 14-day limit: a
+        // warning, and One target refuses them as the schedule drops them.
         const slew::tracking::StationClock later(slew::sky::julianFromIso(QStringLiteral("2018-02-15T01:04:49Z")), 1.0);
         rehearse(panel, later);
         QVERIFY2(line->text().contains(QStringLiteral("newest elements 24.0 days old")), qPrintable(line->text()));
-        QVERIFY2(line->text().contains(QStringLiteral("older than 7 days")), qPrintable(line->text()));
+        QVERIFY2(line->text().contains(QStringLiteral("older than 14 days, not tracked")), qPrintable(line->text()));
         QVERIFY(slew::ui::ElementSetAges::isStale(line));
         QVERIFY(!line->styleSheet().isEmpty());
+
+        QVERIFY(f.connectAndWait());
+        QVERIFY(panel->selectTarget(QStringLiteral("FLOCK 2P-1")));
+        QVERIFY2(panel->trackButton()->toolTip().startsWith(
+                     QStringLiteral("To track: refresh the element sets, or raise the limit under Sky → Element sets… "
+                                    "(its elements are 25.1 days from now (epoch 2018-01-20T22:08:")),
+                 qPrintable(panel->trackButton()->toolTip()));
+        QSignalSpy messages(panel, &TrackingPanel::message);
+        QTest::mouseClick(panel->trackButton(), Qt::LeftButton);
+        QVERIFY(!panel->runner()->isRunning());
+        QVERIFY2(messages.last().at(0).toString().startsWith(
+                     QStringLiteral("FLOCK 2P-1 is not tracked: its elements are 25.1 days from now")),
+                 qPrintable(messages.last().at(0).toString()));
+
+        // The operator's limit (Sky → Element sets…, kept in the settings)
+        // reaches the station: a month, and the same sets are tracked.
+        panel->station()->setElementAgeLimitDays(30);
+        rehearse(panel, later);
+        QVERIFY(!slew::ui::ElementSetAges::isStale(line));
+        QVERIFY2(panel->trackButton()->toolTip().startsWith(QStringLiteral("Track every pass")),
+                 qPrintable(panel->trackButton()->toolTip()));
+        QTest::mouseClick(panel->trackButton(), Qt::LeftButton);
+        QVERIFY(panel->runner()->isRunning());
+        panel->station()->untrack(QStringLiteral("done"));
     }
 
     void chartsThePointingErrorWhileTracking()
