@@ -59,7 +59,9 @@ QString RemoteStation::whyNotLive() const
     if (!m_online)
         return tr("station %1 is offline").arg(m_name);
     if (stateAgeMs() > kStaleAfterMs)
-        return tr("station %1 has said nothing for %2 s").arg(m_name).arg(stateAgeMs() / 1000);
+        // The threshold, not a running count: this text is shown where it is
+        // not refreshed (the alarm line); the banner gives the state's age.
+        return tr("station %1 has said nothing for over %2 s").arg(m_name).arg(kStaleAfterMs / 1000);
     return {};
 }
 

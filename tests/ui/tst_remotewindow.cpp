@@ -178,6 +178,32 @@ private slots:
         delete window;
     }
 
+    // A station that stops talking (its process stopped, its connection
+    // still open: no last will) goes stale after 12 s. The banner counts the
+    // state's age on; the alarm line, which is not refreshed, says the
+    // threshold, so the two never give two different ages.
+    void aSilentStationIsToldWithOneAge()
+    {
+        RemoteStationWindow *window = open(QStringLiteral("operator"), QStringLiteral("dish2"));
+        QVERIFY(window);
+        RemoteStation *remote = window->station();
+        QTRY_VERIFY_WITH_TIMEOUT(remote->isLive(), 20000);
+        ::kill(pid_t(m_dish->process.processId()), SIGSTOP);
+        QTRY_VERIFY_WITH_TIMEOUT(!remote->isLive(), 20000);
+        const QString alarm = window->alarmBanner()->text();
+        QVERIFY2(alarm.startsWith(QStringLiteral("Not live: station dish2 has said nothing for over 12 s")), qPrintable(alarm));
+        const QString banner = window->remoteBanner()->text();
+        QVERIFY2(banner.contains(QStringLiteral("NOT LIVE: station dish2 has said nothing for over 12 s · last state 1")),
+                 qPrintable(banner));
+        // Two seconds on: the banner's age has moved, the alarm line has not
+        // and needs not.
+        QTRY_VERIFY_WITH_TIMEOUT(window->remoteBanner()->text() != banner, 5000);
+        QCOMPARE(window->alarmBanner()->text(), alarm);
+        ::kill(pid_t(m_dish->process.processId()), SIGCONT);
+        QTRY_VERIFY_WITH_TIMEOUT(remote->isLive(), 20000);
+        delete window;
+    }
+
     void theNetworkShowsEveryStation()
     {
         QString error;
