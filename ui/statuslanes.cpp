@@ -4,6 +4,8 @@
 #include "session/sessiontypes.h"
 
 #include <QCoreApplication>
+#include <QFontMetricsF>
+#include <QStringList>
 
 #include <algorithm>
 #include <optional>
@@ -76,6 +78,22 @@ QString stateName(StatusRegister reg, int bits)
         return session::describeAxisStatus(quint8(bits));
     const QString errors = session::describeErrorFlags(bits);
     return errors.isEmpty() ? QCoreApplication::translate("StatusLanes", "no error") : errors;
+}
+
+QString fittedStateName(const QString &name, const QFontMetricsF &metrics, double width)
+{
+    if (metrics.horizontalAdvance(name) <= width)
+        return name;
+    const QString separator = QStringLiteral(", ");
+    const QString more = separator + QChar(0x2026);
+    QStringList names = name.split(separator);
+    while (names.size() > 1) {
+        names.removeLast();
+        const QString cut = names.join(separator) + more;
+        if (metrics.horizontalAdvance(cut) <= width)
+            return cut;
+    }
+    return {};
 }
 
 QString hexValue(int bits)

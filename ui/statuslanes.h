@@ -15,6 +15,8 @@
 
 #include <vector>
 
+class QFontMetricsF;
+
 namespace slew::ui {
 
 // Which register a lane shows: one axis' byte of GS, or GE.
@@ -45,6 +47,10 @@ StatusTone toneOf(StatusRegister reg, int bits);
 // The names of the bits that are set: "moving, pointing", "motor error",
 // "no error" (GE's 1, or nothing set).
 QString stateName(StatusRegister reg, int bits);
+// The state's name cut to `width` at a whole name, never inside one:
+// "moving, …" for "moving, pointing"; empty when not even the first name
+// fits. "no error" cut to "no …" read as the opposite of what it says.
+QString fittedStateName(const QString &name, const QFontMetricsF &metrics, double width);
 // The register's raw value as the controller sent it: "0x06".
 QString hexValue(int bits);
 QColor toneColour(StatusTone tone);

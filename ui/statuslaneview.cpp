@@ -107,11 +107,11 @@ void StatusLaneView::drawForeground(QPainter *painter, const QRectF &rect)
             // The names, where there is room for some of them: the
             // tooltip has them all.
             const QRectF room = bar.intersected(plot).adjusted(3, 0, -3, 0);
-            if (room.width() < metrics.averageCharWidth() * 3)
+            const QString name = fittedStateName(stateName(lane.reg, s.bits), metrics, room.width());
+            if (name.isEmpty())
                 continue;
             painter->setPen(Qt::white);
-            painter->drawText(room, Qt::AlignVCenter | Qt::AlignLeft,
-                              metrics.elidedText(stateName(lane.reg, s.bits), Qt::ElideRight, room.width()));
+            painter->drawText(room, Qt::AlignVCenter | Qt::AlignLeft, name);
         }
     }
     painter->restore();

@@ -24,6 +24,7 @@
 #include <QDateTimeAxis>
 #include <QDir>
 #include <QFile>
+#include <QFontMetricsF>
 #include <QLabel>
 #include <QLayout>
 #include <QTabWidget>
@@ -293,6 +294,16 @@ private slots:
         // An azimuth-only rotator has no elevation lane.
         charts.setElevationShown(false);
         QCOMPARE(lanes->laneAxis()->categoriesLabels(), (QStringList{QStringLiteral("GE"), QStringLiteral("GS az")}));
+
+        // A short stretch shows whole names or none: "no error" never
+        // becomes "no …", which reads as its opposite.
+        const QFontMetricsF metrics(lanes->laneAxis()->labelsFont());
+        const QString noError = QStringLiteral("no error");
+        QCOMPARE(slew::ui::fittedStateName(noError, metrics, metrics.horizontalAdvance(noError)), noError);
+        QCOMPARE(slew::ui::fittedStateName(noError, metrics, metrics.horizontalAdvance(noError) - 1), QString());
+        const QString cut = QStringLiteral("moving, …");
+        QCOMPARE(slew::ui::fittedStateName(QStringLiteral("moving, pointing"), metrics, metrics.horizontalAdvance(cut)), cut);
+        QCOMPARE(slew::ui::fittedStateName(QStringLiteral("moving, pointing"), metrics, 2.0), QString());
     }
 
     void aFlappingRegisterCostsAStretchAPixel()
