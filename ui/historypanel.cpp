@@ -89,7 +89,14 @@ HistoryPanel::HistoryPanel(station::Station *station, QWidget *parent) : QWidget
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->verticalHeader()->hide();
     m_table->setWordWrap(false);
-    m_table->horizontalHeader()->setStretchLastSection(true);
+    // The figures keep their width; the target's name takes what is left
+    // (cut with "…", whole in its tooltip), so every figure, the Doppler
+    // last, stays in view at 1280x720.
+    m_table->setTextElideMode(Qt::ElideRight);
+    QHeaderView *header = m_table->horizontalHeader();
+    header->setStretchLastSection(false);
+    header->setSectionResizeMode(QHeaderView::ResizeToContents);
+    header->setSectionResizeMode(Target, QHeaderView::Stretch);
     m_status = new QLabel;
     m_status->setObjectName(QStringLiteral("historyStatus"));
     m_status->setWordWrap(true);
@@ -147,7 +154,9 @@ void HistoryPanel::fill()
     for (int row = 0; row < m_passes.size(); ++row) {
         const records::PassRecord &r = m_passes[row];
         m_table->setItem(row, Id, cell(QString::number(r.id)));
-        m_table->setItem(row, Target, cell(r.planned.target, Qt::AlignLeft | Qt::AlignVCenter));
+        QTableWidgetItem *target = cell(r.planned.target, Qt::AlignLeft | Qt::AlignVCenter);
+        target->setToolTip(r.planned.target);
+        m_table->setItem(row, Target, target);
         m_table->setItem(row, Aos, aosCell(r.planned));
         m_table->setItem(row, MaxEl, cell(degrees(r.planned.maxElevationDeg, 1)));
         QTableWidgetItem *outcome = cell(records::outcomeName(r.outcome), Qt::AlignLeft | Qt::AlignVCenter);
@@ -162,7 +171,6 @@ void HistoryPanel::fill()
         if (was && was->id == r.id)
             m_table->selectRow(row);
     }
-    m_table->resizeColumnsToContents();
 }
 
 std::optional<records::PassRecord> HistoryPanel::selected() const

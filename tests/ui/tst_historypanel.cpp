@@ -22,6 +22,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QTabWidget>
+#include <QScrollBar>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
@@ -127,6 +128,16 @@ private slots:
         QCOMPARE(table->item(2, 7)->text(), QStringLiteral("117"));
         QCOMPARE(table->item(2, 8)->text(), QStringLiteral("2.0 Hz"));
         QCOMPARE(table->item(1, 8)->text(), QStringLiteral("—"));
+        // Every figure in view at 1280x720, the Doppler column last: the
+        // target's name gives way (whole in its tooltip).
+        QVERIFY(!table->horizontalScrollBar()->isVisible());
+        for (int column = 0; column < table->columnCount(); ++column) {
+            const int right = table->columnViewportPosition(column) + table->columnWidth(column);
+            QVERIFY2(right <= table->viewport()->width(),
+                     qPrintable(QStringLiteral("column %1 ends at %2 of %3").arg(column).arg(right).arg(table->viewport()->width())));
+        }
+        QVERIFY(table->columnWidth(8) > table->fontMetrics().horizontalAdvance(table->item(2, 8)->text())); // "2.0 Hz" whole
+        QCOMPARE(table->item(0, 1)->toolTip(), QStringLiteral("ISS (ZARYA)"));
         const QString faults = layoutFaults(f.window.get()).join(QLatin1Char('\n'));
         QVERIFY2(faults.isEmpty(), qPrintable(faults));
         QCOMPARE(f.window->size(), QSize(1280, 720));
