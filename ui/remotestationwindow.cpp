@@ -13,11 +13,15 @@
 #include "telemetrycharts.h"
 #include "titledgroup.h"
 #include "telemetryrecorder.h"
+#include "trackingline.h"
 
 #include "remote/remotestation.h"
+#include "sky/skyvector.h"
+#include "station/trackingnow.h"
 
 #include <QDateTime>
 #include <QGuiApplication>
+#include <QHBoxLayout>
 #include <QScreen>
 #include <QShortcut>
 #include <QSplitter>
@@ -29,6 +33,37 @@ namespace slew::ui {
 
 using remote::RemoteStation;
 using station::AlarmMonitor;
+
+namespace {
+
+double julianOfUnixMs(qint64 ms)
+{
+    return sky::julianFromUnixSeconds(double(ms) / 1000.0);
+}
+
+// What the station's tracking does, from its last state, counted by its own
+// clock (a rehearsal's, during one).
+TrackingLine::Reading remoteReading(const RemoteStation &station)
+{
+    TrackingLine::Reading reading;
+    const std::optional<qint64> now = station.stationClockMs();
+    const auto &state = station.state();
+    if (!state || !now)
+        return reading;
+    reading.nowJulian = julianOfUnixMs(*now);
+    reading.followed.phase = station::phaseFromWord(state->tracking).value_or(station::TrackingNow::Phase::Off);
+    reading.followed.target = state->trackingTarget;
+    reading.followed.norad = state->trackingNorad;
+    if (state->passAosMs && state->passLosMs) {
+        sky::Pass pass;
+        pass.aos.julian = julianOfUnixMs(*state->passAosMs);
+        pass.los.julian = julianOfUnixMs(*state->passLosMs);
+        reading.followed.pass = pass;
+    }
+    return reading;
+}
+
+} // namespace
 
 RemoteStationWindow::RemoteStationWindow(RemoteStation *station, QWidget *parent)
     : QMainWindow(parent), m_station(station)
@@ -43,6 +78,7 @@ RemoteStationWindow::RemoteStationWindow(RemoteStation *station, QWidget *parent
     // Stop always sends, live or not: a broker that is back takes it at once.
     // The station logs "a stop over MQTT": the cause stays here.
     m_stop = new StopButton([station](const QString &) { return !station->stop().isEmpty(); });
+    m_trackingLine = new TrackingLine([station] { return remoteReading(*station); });
     m_recorder = new TelemetryRecorder(nullptr, this);
     m_charts = new TelemetryCharts(&m_recorder->history());
     m_log = new EventLog;
@@ -62,7 +98,12 @@ RemoteStationWindow::RemoteStationWindow(RemoteStation *station, QWidget *parent
     columnLayout->setContentsMargins(4, 0, 4, 0);
     columnLayout->addWidget(titledGroup(tr("Position"), m_readout));
     columnLayout->addWidget(titledGroup(tr("Control"), m_controls));
-    columnLayout->addWidget(m_stop);
+    // As in the local window: what the station's tracking does, beside STOP.
+    auto *stopRow = new QHBoxLayout;
+    stopRow->setSpacing(6);
+    stopRow->addWidget(m_stop, 1);
+    stopRow->addWidget(m_trackingLine, 1);
+    columnLayout->addLayout(stopRow);
     columnLayout->addStretch(1);
 
     auto *splitter = new QSplitter(Qt::Horizontal);
@@ -84,6 +125,7 @@ RemoteStationWindow::RemoteStationWindow(RemoteStation *station, QWidget *parent
     setCentralWidget(central);
 
     connect(station, &RemoteStation::stateChanged, this, &RemoteStationWindow::showState);
+    connect(station, &RemoteStation::stateChanged, m_trackingLine, &TrackingLine::refresh);
     connect(station, &RemoteStation::liveChanged, this, &RemoteStationWindow::showLive);
     connect(station, &RemoteStation::telemetryReceived, m_recorder, &TelemetryRecorder::recordRemote);
     // The telemetry carries the position at the poll rate; the state, while

@@ -30,6 +30,7 @@ class RemoteControls;
 class RemoteReadout;
 class RemoteScheduleView;
 class StopButton;
+class TrackingLine;
 class TelemetryCharts;
 class TelemetryRecorder;
 
@@ -46,6 +47,7 @@ public:
     RemoteReadout *readout() const { return m_readout; }
     RemoteControls *controls() const { return m_controls; }
     StopButton *stopButton() const { return m_stop; }
+    TrackingLine *trackingLine() const { return m_trackingLine; }
     TelemetryCharts *telemetryCharts() const { return m_charts; }
     EventLog *eventLog() const { return m_log; }
     RemoteScheduleView *scheduleView() const { return m_schedule; }
@@ -63,6 +65,7 @@ private:
     RemoteReadout *m_readout;
     RemoteControls *m_controls;
     StopButton *m_stop;
+    TrackingLine *m_trackingLine;
     TelemetryRecorder *m_recorder;
     TelemetryCharts *m_charts;
     EventLog *m_log;

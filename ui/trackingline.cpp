@@ -20,19 +20,28 @@ QString utcClock(double julian)
 
 } // namespace
 
-TrackingLine::TrackingLine(station::Station *station, QWidget *parent) : QLabel(parent), m_station(station)
+TrackingLine::TrackingLine(std::function<Reading()> read, QWidget *parent) : QLabel(parent), m_read(std::move(read))
 {
     setObjectName(QStringLiteral("trackingLine"));
     setTextFormat(Qt::PlainText);
     setWordWrap(true);
     setAlignment(Qt::AlignLeft | Qt::AlignVCenter);
+    connect(&m_tick, &QTimer::timeout, this, &TrackingLine::refresh);
+    m_tick.start(1000);
+    refresh();
+}
+
+TrackingLine::TrackingLine(station::Station *station, QWidget *parent)
+    : TrackingLine(
+          [station] {
+              return Reading{station::trackingNow(station->passRunner()), station->clock()->nowJulian()};
+          },
+          parent)
+{
     tracking::PassRunner *runner = station->passRunner();
     connect(&runner->tracker(), &tracking::Tracker::stateChanged, this, &TrackingLine::refresh);
     connect(runner, &tracking::PassRunner::logLine, this, &TrackingLine::refresh); // planned, started, stopped
     connect(station->clock(), &tracking::StationClock::changed, this, &TrackingLine::refresh);
-    connect(&m_tick, &QTimer::timeout, this, &TrackingLine::refresh);
-    m_tick.start(1000);
-    refresh();
 }
 
 QString TrackingLine::countdown(double seconds)
@@ -73,11 +82,11 @@ QString TrackingLine::textFor(const station::TrackingNow &followed, double nowJu
 
 void TrackingLine::refresh()
 {
-    const station::TrackingNow followed = station::trackingNow(m_station->passRunner());
-    const QString text = textFor(followed, m_station->clock()->nowJulian());
+    const Reading now = m_read();
+    const QString text = textFor(now.followed, now.nowJulian);
     if (text != this->text()) // a label's new text lays its column out again
         setText(text);
-    setEnabled(followed.phase != station::TrackingNow::Phase::Off); // greyed when there is nothing to say
+    setEnabled(now.followed.phase != station::TrackingNow::Phase::Off); // greyed when there is nothing to say
 }
 
 } // namespace slew::ui

@@ -4,12 +4,15 @@
 // when ("Tracking FO-29 until 15:32:10 UTC, 0:08:12 left"), in the
 // station's time (a rehearsal's, during one). The words are the station's
 // (station/trackingnow.h). A few short lines in the height of the button:
-// the control column has no height to spare at 1280x720.
+// the control column has no height to spare at 1280x720. The local window
+// reads its own station; a remote window, the state the station publishes.
 
 #include "station/trackingnow.h"
 
 #include <QLabel>
 #include <QTimer>
+
+#include <functional>
 
 namespace slew::station {
 class Station;
@@ -20,7 +23,17 @@ namespace slew::ui {
 class TrackingLine : public QLabel {
     Q_OBJECT
 public:
+    // What is followed, and the station's time (a Julian date) to count by.
+    struct Reading {
+        station::TrackingNow followed;
+        double nowJulian = 0;
+    };
+    // Read every second, and at refresh().
+    explicit TrackingLine(std::function<Reading()> read, QWidget *parent = nullptr);
+    // This station's tracking, also refreshed as it changes.
     explicit TrackingLine(station::Station *station, QWidget *parent = nullptr);
+
+    void refresh();
 
     // The line for `followed` at `nowJulian`.
     static QString textFor(const station::TrackingNow &followed, double nowJulian);
@@ -28,9 +41,7 @@ public:
     static QString countdown(double seconds);
 
 private:
-    void refresh();
-
-    station::Station *m_station;
+    std::function<Reading()> m_read;
     QTimer m_tick; // the countdown's second
 };
 

@@ -65,6 +65,15 @@ QString RemoteStation::whyNotLive() const
     return {};
 }
 
+std::optional<qint64> RemoteStation::stationClockMs() const
+{
+    if (!m_state)
+        return std::nullopt;
+    if (!m_state->clockMs)
+        return QDateTime::currentMSecsSinceEpoch();
+    return *m_state->clockMs + qint64(double(stateAgeMs()) * m_state->clockRate);
+}
+
 void RemoteStation::updateLive()
 {
     const bool live = whyNotLive().isEmpty();

@@ -60,6 +60,10 @@ public:
     const std::optional<StationPlan> &plan() const { return m_plan; }
     const std::optional<StationSchedule> &schedule() const { return m_schedule; }
     bool isOnline() const { return m_online; }
+    // The station's clock now, in Unix milliseconds: the wall clock, or a
+    // rehearsal's time carried on from its last state at its rate. None
+    // before the first state.
+    std::optional<qint64> stationClockMs() const;
     // Milliseconds since the last state arrived; -1 before the first.
     qint64 stateAgeMs() const { return m_stateAge.isValid() ? m_stateAge.elapsed() : -1; }
     // Connected to the broker, the station online, and a state not older

@@ -73,6 +73,10 @@ QByteArray encodeStationState(const StationState &s)
         o.insert(QStringLiteral("tracking_target"), s.trackingTarget);
     if (s.trackingNorad)
         o.insert(QStringLiteral("tracking_norad"), *s.trackingNorad);
+    if (s.clockMs) {
+        o.insert(QStringLiteral("clock_ms"), double(*s.clockMs));
+        o.insert(QStringLiteral("clock_rate"), s.clockRate);
+    }
     if (s.passAosMs)
         o.insert(QStringLiteral("pass_aos_ms"), double(*s.passAosMs));
     if (s.passLosMs)
@@ -121,6 +125,8 @@ std::optional<StationState> parseStationState(const QByteArray &payload, QString
     s.trackingTarget = f.text(QStringLiteral("tracking_target"), 100).value_or(QString());
     if (const auto norad = f.whole(QStringLiteral("tracking_norad"), 1, 999999999))
         s.trackingNorad = int(*norad);
+    s.clockMs = f.whole(QStringLiteral("clock_ms"), 0, kLatestMs);
+    s.clockRate = f.number(QStringLiteral("clock_rate"), {0, kMostClockRate, "x"}).value_or(1.0);
     s.passAosMs = f.whole(QStringLiteral("pass_aos_ms"), 0, kLatestMs);
     s.passLosMs = f.whole(QStringLiteral("pass_los_ms"), 0, kLatestMs);
     s.passMaxElevation = f.number(QStringLiteral("pass_max_el"), {-90, 90, "°"});

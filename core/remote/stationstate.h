@@ -28,6 +28,11 @@ namespace slew::remote {
 
 struct StationState {
     qint64 unixMs = 0;
+    // The station's own clock at unixMs, when it is not the wall clock (a
+    // rehearsal), and how fast it runs (0 while paused): the pass times
+    // below are in its time, and a viewer counts down by it.
+    std::optional<qint64> clockMs;
+    double clockRate = 1.0;
     // disconnected, connecting, connected, reconnecting: the rotator's link.
     QString link = QStringLiteral("disconnected");
     QString linkDetail; // why it failed, when it did
@@ -53,6 +58,7 @@ struct StationState {
 
 inline constexpr int kLargestStateMessage = 16 * 1024;
 inline constexpr int kMostAlarms = 32;
+inline constexpr double kMostClockRate = 100.0; // above any rehearsal's (StationClock::kMaxRate)
 
 QByteArray encodeStationState(const StationState &state);
 std::optional<StationState> parseStationState(const QByteArray &payload, QString *error);

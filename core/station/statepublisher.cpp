@@ -10,6 +10,7 @@
 #include "session/rotatorsession.h"
 #include "sky/utctime.h"
 #include "tracking/passrunner.h"
+#include "tracking/stationclock.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -132,6 +133,11 @@ void StatePublisher::follow()
     connect(m_station->alarms(), &AlarmMonitor::alarmsChanged, this, state);
     connect(m_station, &Station::trackingChanged, this, state);
     connect(m_station, &Station::operatorHoldChanged, this, state);
+    // A rehearsal started, paused, stepped or ended: viewers count by it.
+    const tracking::StationClock *clock = m_station->clock();
+    connect(clock, &tracking::StationClock::changed, this, state);
+    connect(clock, &tracking::StationClock::pausedChanged, this, state);
+    connect(clock, &tracking::StationClock::stepped, this, state);
     if (tracking::PassRunner *runner = m_station->passRunner()) {
         connect(&runner->tracker(), &tracking::Tracker::stateChanged, this, state);
         connect(&runner->tracker(), &tracking::Tracker::pointingError, this, [this](double degrees) {
@@ -177,6 +183,10 @@ remote::StationState StatePublisher::state() const
     const RotatorSession *s = m_station->session();
     remote::StationState out;
     out.unixMs = QDateTime::currentMSecsSinceEpoch();
+    if (const tracking::StationClock *clock = m_station->clock(); clock->isRehearsal()) {
+        out.clockMs = julianToUnixMs(clock->nowJulian());
+        out.clockRate = clock->isPaused() ? 0.0 : clock->rate();
+    }
     out.link = linkName(s->state());
     out.linkDetail = m_linkDetail.left(400);
     if (s->hasPosition())

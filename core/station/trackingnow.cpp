@@ -47,4 +47,14 @@ QString phaseWord(TrackingNow::Phase phase)
     return QStringLiteral("off");
 }
 
+std::optional<TrackingNow::Phase> phaseFromWord(const QString &word)
+{
+    using Phase = TrackingNow::Phase;
+    for (const Phase phase : {Phase::Off, Phase::Planning, Phase::Waiting, Phase::Tracking, Phase::Done}) {
+        if (phaseWord(phase) == word)
+            return phase;
+    }
+    return std::nullopt;
+}
+
 } // namespace slew::station

@@ -36,5 +36,7 @@ TrackingNow trackingNow(const tracking::PassRunner *runner);
 // The phase as the station's published state spells it: "off", "planning",
 // "waiting", "tracking", "done".
 QString phaseWord(TrackingNow::Phase phase);
+// The phase a word names; none for a word that names none.
+std::optional<TrackingNow::Phase> phaseFromWord(const QString &word);
 
 } // namespace slew::station

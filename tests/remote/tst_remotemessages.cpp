@@ -189,6 +189,8 @@ private slots:
         s.tracking = QStringLiteral("tracking");
         s.trackingTarget = QStringLiteral("GP TEST LEO-9");
         s.trackingNorad = 270033591; // nine digits
+        s.clockMs = 1516612740000; // a rehearsal's clock, at twice real time
+        s.clockRate = 2.0;
         s.passAosMs = 1790000000000;
         s.passLosMs = 1790000600000;
         s.passMaxElevation = 56.1;
@@ -201,6 +203,13 @@ private slots:
         const auto back = parseStationState(encodeStationState(s), &error);
         QVERIFY2(back, qPrintable(error));
         QCOMPARE(encodeStationState(*back), encodeStationState(s));
+        QCOMPARE(back->clockMs, s.clockMs);
+        QCOMPARE(back->clockRate, 2.0);
+        // On the wall clock: neither is sent, and the rate reads 1.
+        s.clockMs.reset();
+        const QByteArray wall = encodeStationState(s);
+        QVERIFY(!wall.contains("clock_ms") && !wall.contains("clock_rate"));
+        QCOMPARE(parseStationState(wall, &error)->clockRate, 1.0);
     }
 
     void badStates_data()
@@ -216,6 +225,8 @@ private slots:
         QTest::newRow("alarm escape") << "{" + base + ",\"alarms\":[\"\\u001b[31m\"]}" << "'alarms'";
         QTest::newRow("unknown") << "{" + base + R"j(,"x":1})j" << "unknown field";
         QTest::newRow("ten-digit norad") << "{" + base + R"j(,"tracking_norad":1000000000})j" << "'tracking_norad'";
+        QTest::newRow("clock too fast") << "{" + base + R"j(,"clock_ms":1,"clock_rate":1000})j" << "'clock_rate'";
+        QTest::newRow("clock backwards") << "{" + base + R"j(,"clock_ms":1,"clock_rate":-1})j" << "'clock_rate'";
         QTest::newRow("negative time") << QByteArray(R"j({"unix_ms":-5,"link":"connected","az_min":0,"az_max":360,"el_min":0,"el_max":90})j") << "'unix_ms'";
     }
     void badStates()

@@ -25,6 +25,7 @@
 #include "remotescheduleview.h"
 #include "scheduletimeline.h"
 #include "remotestationwindow.h"
+#include "trackingline.h"
 #include "stationnetworkwindow.h"
 #include "stationtile.h"
 #include "stopbutton.h"
@@ -236,7 +237,7 @@ private slots:
     {
         // A station that runs a schedule, FLOCK 2P-1 first and PERSEUS-M1
         // second, its clock a rehearsal from inside FLOCK 2P-1's pass over
-        // JO65hq (AOS 09:17:51, LOS 09:25:04 UTC).
+        // JO65hq (AOS 09:15:45, LOS 09:27:10 UTC).
         StationProcess roof(station(QStringLiteral("roof"), QStringLiteral("sim:?start_az=0&start_el=0"))
                             + QStringList{"--qth", "JO65hq", "--tle",
                                           QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"), "--track",
@@ -257,6 +258,19 @@ private slots:
         const auto &shown = view->timeline()->schedule();
         QCOMPARE(shown.passes.size(), remote->schedule()->schedule.passes.size());
         QVERIFY(!view->timeline()->barFor(shown.passes.at(*remote->schedule()->current)).isEmpty());
+
+        // Beside STOP, what the station's tracking does, counted by its
+        // rehearsal clock (by the wall clock this LOS was years ago).
+        QTRY_VERIFY2_WITH_TIMEOUT(window->trackingLine()->text().startsWith(
+                                      QStringLiteral("Tracking FLOCK 2P-1 until 09:27:10 UTC, 0:0")),
+                                  qPrintable(window->trackingLine()->text()), 30000);
+        {
+            const QString line = window->trackingLine()->text();
+            const QStringList left = line.section(QStringLiteral(", "), 1).section(u' ', 0, 0).split(u':');
+            QCOMPARE(left.size(), 3);
+            const int seconds = left[1].toInt() * 60 + left[2].toInt();
+            QVERIFY2(seconds > 0 && seconds <= 8 * 60 + 10, qPrintable(line)); // LOS 09:27:10, clock from 09:19:00
+        }
 
         // The plan of the pass on the plot, as the local window draws it.
         QTRY_VERIFY_WITH_TIMEOUT(window->polarPlot()->passOverlay().has_value(), 30000);
