@@ -57,16 +57,15 @@ RemoteReadout::RemoteReadout(QWidget *parent) : QWidget(parent)
 
 QString RemoteReadout::trackingText(const remote::StationState &s)
 {
-    if (s.tracking == u"off")
-        return tr("Not tracking");
+    // What tracking does now is the line beside STOP (trackingline.h);
+    // here, the pass it is about.
+    if (s.tracking == u"off" || !s.passAosMs || !s.passLosMs)
+        return {};
     const QString target = s.trackingNorad ? tr("%1 (NORAD %2)").arg(s.trackingTarget).arg(*s.trackingNorad)
                                            : s.trackingTarget;
-    QString text = tr("Tracking %1: %2").arg(target, s.tracking);
-    if (s.passAosMs && s.passLosMs) {
-        text += tr(", pass %1–%2 UTC").arg(utcTime(*s.passAosMs), utcTime(*s.passLosMs));
-        if (s.passMaxElevation)
-            text += tr(", highest %1°").arg(*s.passMaxElevation, 0, 'f', 1);
-    }
+    QString text = tr("Pass of %1: %2–%3 UTC").arg(target, utcTime(*s.passAosMs), utcTime(*s.passLosMs));
+    if (s.passMaxElevation)
+        text += tr(", highest %1°").arg(*s.passMaxElevation, 0, 'f', 1);
     return text;
 }
 

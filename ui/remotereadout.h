@@ -19,7 +19,8 @@ class RemoteReadout : public QWidget {
 public:
     explicit RemoteReadout(QWidget *parent = nullptr);
 
-    // "Tracking ISS (ZARYA): pass 12:03–12:13 UTC, highest 56.1°".
+    // "Pass of ISS (ZARYA) (NORAD 25544): 12:03:10–12:13:40 UTC, highest
+    // 56.1°"; empty when no pass is followed or waited for.
     static QString trackingText(const remote::StationState &state);
 
 public slots:

@@ -68,7 +68,7 @@ std::optional<PlannedPass> forecastNextPass(const TargetSky &target, const sky::
 std::optional<PlannedPass> forecastPassBetween(const TargetSky &target, const sky::Station &station,
                                                const sky::PassWindow &window, double nowJulian, double marginSeconds,
                                                double fromJulian, double untilJulian, const RotatorReach &reach,
-                                               const PlannerOptions &options)
+                                               const PlannerOptions &options, double lookBackDays)
 {
     const double margin = marginSeconds / sky::kSecondsPerDay;
     const double until = std::min(untilJulian, window.endJulian);
@@ -85,7 +85,7 @@ std::optional<PlannedPass> forecastPassBetween(const TargetSky &target, const sk
             p.los.julian = to;
             p.losClipped = true;
         }
-        PlannedPass next{p, from, target.sample(station, p, from), {}};
+        PlannedPass next{wholePass(target, station, window, p, lookBackDays), from, target.sample(station, p, from), {}};
         next.plan = planPass(next.points, reach, options);
         return next;
     }

@@ -47,10 +47,13 @@ std::optional<PlannedPass> forecastNextPass(const TargetSky &target, const sky::
 // The schedule's pass (schedule/schedule.h): the first pass in `window`
 // still up `marginSeconds` after `nowJulian`, sampled from the latest of its
 // AOS, now and `fromJulian` to the earliest of its LOS and `untilJulian` (a
-// long target's piece between other passes), and planned.
+// long target's piece between other passes), and planned. A pass already
+// up when the window opens is reported as it really is (its AOS and
+// highest point, looked for up to `lookBackDays` back), as forecastNextPass
+// does: a schedule joined under way records the pass, not the join.
 std::optional<PlannedPass> forecastPassBetween(const TargetSky &target, const sky::Station &station,
                                                const sky::PassWindow &window, double nowJulian, double marginSeconds,
                                                double fromJulian, double untilJulian, const RotatorReach &reach,
-                                               const PlannerOptions &options);
+                                               const PlannerOptions &options, double lookBackDays = 0.0);
 
 } // namespace slew::tracking

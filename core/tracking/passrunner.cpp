@@ -211,7 +211,8 @@ void PassRunner::nextPass()
                                           stop = m_planStop, one]() mutable {
         window.stop = stop.get();
         if (one)
-            return forecastPassBetween(sky, station, window, now, 5.0, one->first, one->second, reach, options);
+            return forecastPassBetween(sky, station, window, now, 5.0, one->first, one->second, reach, options,
+                                       kLookBackDays);
         // A pass joined under way is recorded and logged as it really is:
         // its AOS and its highest point, which may be behind it.
         return forecastNextPass(sky, station, window, now, 5.0, reach, options, kLookBackDays);

@@ -270,6 +270,10 @@ private slots:
             QCOMPARE(left.size(), 3);
             const int seconds = left[1].toInt() * 60 + left[2].toInt();
             QVERIFY2(seconds > 0 && seconds <= 8 * 60 + 10, qPrintable(line)); // LOS 09:27:10, clock from 09:19:00
+            // The readout says the pass itself, not the phase again: as it
+            // rose, though the schedule joined it at 09:19.
+            const QString pass = window->findChild<QLabel *>(QStringLiteral("remoteTracking"))->text();
+            QCOMPARE(pass, QStringLiteral("Pass of FLOCK 2P-1 (NORAD 41617): 09:15:45–09:27:10 UTC, highest 56.4°"));
         }
 
         // The plan of the pass on the plot, as the local window draws it.
