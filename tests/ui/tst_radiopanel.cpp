@@ -619,10 +619,10 @@ private slots:
                 if (args.at(0).toString().contains(uri))
                     lost << args.at(0).toString();
             QVERIFY(!lost.isEmpty());
+            // ("radio: URI: …", or "radio: +f: URI: …" for a command the
+            // loss caught on its way, as a loaded machine may see.)
             for (const QString &line : std::as_const(lost))
-                QVERIFY2(line.startsWith(QStringLiteral("radio: ") + uri + QStringLiteral(": "))
-                             && line.count(uri) == 1,
-                         qPrintable(line));
+                QVERIFY2(line.startsWith(QStringLiteral("radio: ")) && line.count(uri) == 1, qPrintable(line));
 
             QTest::mouseClick(in<QPushButton>(panel, "radioDisconnect"), Qt::LeftButton);
             QTRY_COMPARE(textOf(panel, "radioLinkState"), QStringLiteral("Not connected"));
