@@ -61,24 +61,6 @@ double bearingDifference(double a, double b)
     return std::min(d, 360.0 - d);
 }
 
-int hamlibModelFor(protocol::Dialect d)
-{
-    switch (d) {
-    case protocol::Dialect::Easycomm1: return 201;
-    case protocol::Dialect::Easycomm2: return 202;
-    case protocol::Dialect::Easycomm3:
-    case protocol::Dialect::SatNogs: return 204;
-    case protocol::Dialect::Gs232A: return 601;
-    case protocol::Dialect::Gs232B: return 603;
-    case protocol::Dialect::Rotctld: return 2; // netrotctl: Slew is itself behind a rotctld
-    case protocol::Dialect::Micro2g: return 1; // Hamlib has no Micro-2g backend: its dummy
-    case protocol::Dialect::Rot2Prog: return 901;
-    case protocol::Dialect::Rot1Prog: return 902;
-    case protocol::Dialect::Md01: return 903;
-    }
-    return 204;
-}
-
 } // namespace
 
 RotctldServer::RotctldServer(session::RotatorSession *session, QObject *parent)
@@ -323,7 +305,7 @@ QByteArray RotctldServer::answerRequest(Client &c, const RotctldRequest &r, cons
         // The travel a client may command: the gate's, in the pointing frame
         // (an azimuth-only rotator's elevation range is the single value 0).
         const model::RotatorLimits l = m_session->moveGate().limits();
-        return formatDumpState({l.azMin, l.azMax, l.elMin, l.elMax, hamlibModelFor(profile.dialect)});
+        return formatDumpState({l.azMin, l.azMax, l.elMin, l.elMax, protocol::dialectRow(profile.dialect).hamlibModel});
     }
     case Kind::Quit:
         return {};

@@ -4,32 +4,32 @@
 
 #include <QStringList>
 
+#include <iterator>
+
 namespace slew::protocol {
+
+// The table is indexed by the enum: each row in its own place.
+static_assert([] {
+    for (std::size_t i = 0; i < std::size(kDialects); ++i)
+        if (static_cast<std::size_t>(kDialects[i].dialect) != i)
+            return false;
+    return true;
+}());
+static_assert(std::size(kDialects) == static_cast<std::size_t>(Dialect::Md01) + 1, "a dialect without a row");
 
 QString dialectName(Dialect d)
 {
-    switch (d) {
-    case Dialect::Easycomm1: return QStringLiteral("easycomm1");
-    case Dialect::Easycomm2: return QStringLiteral("easycomm2");
-    case Dialect::Easycomm3: return QStringLiteral("easycomm3");
-    case Dialect::SatNogs: return QStringLiteral("satnogs");
-    case Dialect::Gs232A: return QStringLiteral("gs232a");
-    case Dialect::Gs232B: return QStringLiteral("gs232b");
-    case Dialect::Rotctld: return QStringLiteral("rotctld");
-    case Dialect::Micro2g: return QStringLiteral("micro2g");
-    case Dialect::Rot2Prog: return QStringLiteral("rot2prog");
-    case Dialect::Rot1Prog: return QStringLiteral("rot1prog");
-    case Dialect::Md01: return QStringLiteral("md01");
-    }
-    return {};
+    return QString::fromLatin1(dialectRow(d).name);
 }
 
 const QList<Dialect> &allDialects()
 {
-    static const QList<Dialect> all{Dialect::Easycomm1, Dialect::Easycomm2, Dialect::Easycomm3,
-                                    Dialect::SatNogs,   Dialect::Gs232A,    Dialect::Gs232B,
-                                    Dialect::Rotctld,   Dialect::Micro2g,   Dialect::Rot2Prog,
-                                    Dialect::Rot1Prog,  Dialect::Md01};
+    static const QList<Dialect> all = [] {
+        QList<Dialect> list;
+        for (const DialectRow &row : kDialects)
+            list << row.dialect;
+        return list;
+    }();
     return all;
 }
 
@@ -39,31 +39,6 @@ QString dialectNameList()
     for (Dialect d : allDialects())
         names << dialectName(d);
     return names.join(QStringLiteral(", "));
-}
-
-bool isAzimuthOnly(Dialect d)
-{
-    return d == Dialect::Micro2g || d == Dialect::Rot1Prog;
-}
-
-int rotorsOnLine(Dialect d)
-{
-    return d == Dialect::Micro2g ? 4 : 1;
-}
-
-// Micro-2g counts here too: its go-to names one rotor's azimuth, and the
-// session then treats the (always 0) elevation as the other axis. A SPID set
-// frame always carries both (Rot1Prog: the azimuth alone, as Micro-2g).
-bool setsBothAxesTogether(Dialect d)
-{
-    return d == Dialect::Easycomm1 || isGs232(d) || d == Dialect::Rotctld || d == Dialect::Micro2g || isSpid(d);
-}
-
-char lineTerminator(Dialect d)
-{
-    if (isSpid(d))
-        return '\0';
-    return isGs232(d) || d == Dialect::Micro2g ? '\r' : '\n';
 }
 
 std::optional<Dialect> dialectFromName(QStringView name)
@@ -117,17 +92,6 @@ bool dialectSupports(Dialect d, Op op)
     case EasycommReach::Easycomm3Only: return d == Dialect::Easycomm3;
     }
     return false;
-}
-
-int angleDecimals(Dialect d)
-{
-    if (isGs232(d) || d == Dialect::Micro2g || d == Dialect::Rot1Prog)
-        return 0; // whole degrees: W010 020, M035, a Rot1Prog set
-    if (isSpid(d))
-        return 1; // a Rot2Prog or MD-01 reply is in tenths
-    if (d == Dialect::Rotctld)
-        return 2; // as rotctld prints its own answers
-    return d == Dialect::Easycomm3 ? 2 : 1;
 }
 
 } // namespace slew::protocol

@@ -6,6 +6,8 @@
 #include "protocol/encoder.h"
 #include "protocol/parser.h"
 
+#include <QFile>
+#include <QMap>
 #include <QTest>
 
 #include <limits>
@@ -32,6 +34,7 @@ private slots:
     void hugeNumbersAreWrittenWhole();
     void wholeNumbersAreDefinedForEveryDouble();
     void dialectNames();
+    void theDialectTableIsDocumented();
 };
 
 void EncoderTest::hamlibWireStrings()
@@ -333,6 +336,46 @@ void EncoderTest::dialectNames()
     QCOMPARE(dialectFromName(u"SATNOGS"), std::optional<Dialect>(Dialect::SatNogs));
     QVERIFY(!dialectFromName(u"gs232").has_value());
     QCOMPARE(dialectFromName(u"GS232B"), std::optional<Dialect>(Dialect::Gs232B));
+}
+
+// docs/protocol.md shows the dialect table; its copy and the code's agree,
+// row by row and column by column, and the Hamlib models are Hamlib's own
+// numbers for the same protocols (rotlist: 201, 202, 204, 601, 603, 901-903).
+void EncoderTest::theDialectTableIsDocumented()
+{
+    QFile doc(QStringLiteral(SLEW_SOURCE_DIR "/docs/protocol.md"));
+    QVERIFY(doc.open(QIODevice::ReadOnly | QIODevice::Text));
+    const QString text = QString::fromUtf8(doc.readAll());
+    const qsizetype start = text.indexOf(QStringLiteral("### The dialect table"));
+    QVERIFY(start >= 0);
+    const QStringList lines = text.mid(start).split(u'\n');
+    const auto lineEnd = [](char c) {
+        return c == '\n' ? QStringLiteral("LF") : c == '\r' ? QStringLiteral("CR") : QStringLiteral("—");
+    };
+    const auto yesNo = [](bool b) { return b ? QStringLiteral("yes") : QStringLiteral("no"); };
+    const QMap<DialectFamily, QString> families{{DialectFamily::Easycomm, "Easycomm"}, {DialectFamily::Gs232, "GS-232"},
+                                                {DialectFamily::Rotctld, "rotctld"}, {DialectFamily::Micro2g, "Micro-2g"},
+                                                {DialectFamily::Spid, "SPID"}};
+    int rows = 0;
+    for (const DialectRow &row : kDialects) {
+        const QString expected = QStringLiteral("| `%1` | %2 | %3 | %4 | %5 | %6 | %7 | %8 | %9 |")
+                                     .arg(QString::fromLatin1(row.name), families.value(row.family),
+                                          row.framing == Framing::Lines ? QStringLiteral("lines") : QStringLiteral("SPID frames"))
+                                     .arg(row.hamlibModel)
+                                     .arg(lineEnd(row.terminator))
+                                     .arg(row.angleDecimals)
+                                     .arg(yesNo(row.azimuthOnly))
+                                     .arg(row.rotorsOnLine)
+                                     .arg(yesNo(row.setsBothAxes));
+        QVERIFY2(lines.contains(expected), qPrintable(QStringLiteral("docs/protocol.md lacks: ") + expected));
+        ++rows;
+    }
+    QCOMPARE(rows, 11);
+    const QMap<Dialect, int> hamlib{{Dialect::Easycomm1, 201}, {Dialect::Easycomm2, 202}, {Dialect::SatNogs, 204},
+                                    {Dialect::Gs232A, 601},    {Dialect::Gs232B, 603},    {Dialect::Rot2Prog, 901},
+                                    {Dialect::Rot1Prog, 902},  {Dialect::Md01, 903}};
+    for (auto it = hamlib.cbegin(); it != hamlib.cend(); ++it)
+        QCOMPARE(dialectRow(it.key()).hamlibModel, it.value());
 }
 
 QTEST_GUILESS_MAIN(EncoderTest)
