@@ -240,16 +240,22 @@ void PassRunner::onPlanned(const std::optional<PlannedPass> &next, const Rotator
     if (m_target.kind == TrackTarget::Kind::Satellite) {
         const QString old = sky::elementsTooOld(m_target.elements, pass.aos.julian, m_elementAgeLimitDays, tr("AOS"));
         if (!old.isEmpty()) {
-            // Later passes are further still: nothing to wait for.
-            const QString why = tr("the pass of %1 at %2 is not tracked: %3; refresh the element sets or raise the "
-                                   "limit")
-                                    .arg(m_target.name(), isoTime(pass.aos.julian), old);
+            const QString why = tr("the pass of %1 at %2 is not tracked: %3").arg(m_target.name(), isoTime(pass.aos.julian), old);
             if (m_one) {
                 endOne(OneEnd::NotFound, why);
                 return;
             }
-            emit logLine(why);
-            stop(why);
+            if (pass.aos.julian < m_target.elements.epochJulian()) {
+                // A rehearsal before the elements' epoch: later passes come
+                // nearer to it.
+                emit logLine(tr("%1; trying the next one after its LOS").arg(why));
+                retryAfter(pass, plannedAtJulian);
+                return;
+            }
+            // Later passes are further still: nothing to wait for.
+            const QString end = tr("%1; refresh the element sets or raise the limit").arg(why);
+            emit logLine(end);
+            stop(end);
             return;
         }
     }
@@ -277,9 +283,14 @@ void PassRunner::onPlanned(const std::optional<PlannedPass> &next, const Rotator
             return;
         }
         emit logLine(tr("cannot track this pass: %1; trying the next one after its LOS").arg(m_tracker.error()));
-        const double wait = (pass.los.julian - plannedAtJulian) * sky::kSecondsPerDay / std::max(1.0, m_clock->rate());
-        m_retry.start(int(std::min(wait * 1000.0 + 1000.0, double(kRetryMs))));
+        retryAfter(pass, plannedAtJulian);
     }
+}
+
+void PassRunner::retryAfter(const sky::Pass &pass, double plannedAtJulian)
+{
+    const double wait = (pass.los.julian - plannedAtJulian) * sky::kSecondsPerDay / std::max(1.0, m_clock->rate());
+    m_retry.start(int(std::min(wait * 1000.0 + 1000.0, double(kRetryMs))));
 }
 
 void PassRunner::onTrackerState(Tracker::State state, const QString &why)

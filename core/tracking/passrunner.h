@@ -101,6 +101,8 @@ private:
     void startAfresh(const QString &why);
     void onPlanned(const std::optional<PlannedPass> &next, const RotatorReach &reach, double plannedAtJulian);
     void onTrackerState(Tracker::State state, const QString &why);
+    // Plans again a second after the pass's LOS (at most an hour on).
+    void retryAfter(const sky::Pass &pass, double plannedAtJulian);
     static QString isoTime(double julian);
 
     session::RotatorSession *m_session;

@@ -171,6 +171,21 @@ private slots:
         QVERIFY(runEventLoopUntil([&] { return runner.isActive(); }, 20000));
         QVERIFY(logged(lines, QStringLiteral("next pass: FLOCK 2P-1, AOS 2018-01-22T07:")));
         runner.stop(QStringLiteral("done"));
+        const qsizetype sent = gotos.count();
+
+        // Before the epoch (a rehearsal of an earlier day with these
+        // elements) later passes come nearer to it: the runner skips the
+        // pass and waits for the next instead of giving up.
+        const StationClock before(flock.elements.epochJulian() - 1.5, 1.0);
+        runner.setElementAgeLimitDays(1.2);
+        lines.clear();
+        runner.start(flock, kStation, 0.0, &before);
+        QVERIFY(runEventLoopUntil([&] { return logged(lines, QStringLiteral("trying the next one after its LOS")); }, 20000));
+        QVERIFY(logged(lines, QStringLiteral("is not tracked: its elements are 1.")));
+        QVERIFY(runner.isRunning());
+        QVERIFY(!runner.isActive());
+        runner.stop(QStringLiteral("done"));
+        QCOMPARE(gotos.count(), sent); // nothing sent for the skipped pass
     }
 };
 
