@@ -22,6 +22,7 @@
 #include "protocol/dialect.h"
 #include "transport/linkfactory.h"
 #include "cli/terminationsignalwatcher.h"
+#include "sky/elementage.h"
 #include "sky/elementsetformat.h"
 #include "sky/utctime.h"
 
@@ -87,9 +88,10 @@ std::optional<slew::station::ServiceConfig::Track> readTrack(const QCommandLineP
     }
     const QString maxAge = QStringLiteral("max-element-age");
     if (parser.isSet(maxAge)) {
-        const auto value = slew::input::numberIn(parser.value(maxAge), {0.5, 365, " days"}, &why);
+        const auto value = slew::input::numberIn(
+            parser.value(maxAge), {slew::sky::kLeastElementAgeLimitDays, slew::sky::kMostElementAgeLimitDays, " days"}, &why);
         if (!value) {
-            *error = QStringLiteral("%1: %2 (days from the elements' epoch, 0.5 to 365)").arg(label(maxAge), why);
+            *error = QStringLiteral("%1: %2 (days from the elements' epoch)").arg(label(maxAge), why);
             return std::nullopt;
         }
         track.maxElementAgeDays = *value;

@@ -14,6 +14,7 @@
 #include "model/rotatorprofile.h"
 #include "schedule/schedule.h"
 #include "schedule/scheduletext.h"
+#include "sky/elementage.h"
 #include "sky/station.h"
 #include "sky/utctime.h"
 #include "tracking/rotatorreach.h"
@@ -93,7 +94,9 @@ int runSchedule(int argc, char **argv)
     if (!number("hours", {0.1, 168, " hours"}, &settings.hours)
         || !number("min-el", {-5, 90, "°"}, &settings.minElevationDeg)
         || !number("guard", {0, 3600, " s"}, &settings.guardSeconds)
-        || !number("max-element-age", {0.5, 365, " days"}, &settings.maxElementAgeDays))
+        || !number("max-element-age",
+                   {slew::sky::kLeastElementAgeLimitDays, slew::sky::kMostElementAgeLimitDays, " days"},
+                   &settings.maxElementAgeDays))
         return fail(error);
 
     const slew::schedule::Schedule plan =

@@ -76,7 +76,7 @@ ElementSetsDialog::ElementSetsDialog(sky::ElementSetSources *sources, QWidget *p
     auto *form = new QFormLayout;
     m_ageLimit = new QDoubleSpinBox;
     m_ageLimit->setObjectName(QStringLiteral("elementSetAgeLimit"));
-    m_ageLimit->setRange(0.5, 365.0);
+    m_ageLimit->setRange(sky::kLeastElementAgeLimitDays, sky::kMostElementAgeLimitDays);
     m_ageLimit->setDecimals(1);
     m_ageLimit->setSuffix(tr(" days"));
     m_ageLimit->setValue(savedAgeLimitDays());
@@ -149,7 +149,10 @@ ElementSetsDialog::ElementSetsDialog(sky::ElementSetSources *sources, QWidget *p
 double ElementSetsDialog::savedAgeLimitDays()
 {
     const std::optional<double> days = input::finiteNumber(QSettings().value(QLatin1String(kAgeLimitKey)).toString());
-    return days && *days > 0 ? *days : sky::kElementAgeLimitDays;
+    // A hand-edited value outside what the dialog allows is not taken.
+    return days && *days >= sky::kLeastElementAgeLimitDays && *days <= sky::kMostElementAgeLimitDays
+               ? *days
+               : sky::kElementAgeLimitDays;
 }
 
 bool ElementSetsDialog::readUrls(QList<QUrl> *urls, QString *error) const

@@ -18,6 +18,10 @@
 namespace slew::sky {
 
 inline constexpr double kElementAgeLimitDays = 14.0;
+// What an operator may set it to, in the window, the settings and
+// --max-element-age alike.
+inline constexpr double kLeastElementAgeLimitDays = 0.5;
+inline constexpr double kMostElementAgeLimitDays = 365.0;
 
 // Days between the set's epoch and a time, never negative.
 double elementAgeDays(const ElementSet &set, double julian);

@@ -115,6 +115,12 @@ private slots:
         WindowFixture next;
         QCOMPARE(next.window->elementSets()->urls().size(), 2);
         QCOMPARE(next.window->station()->elementAgeLimitDays(), 7.0); // the saved limit
+        // A hand-edited limit the dialog would not allow is not taken.
+        for (const char *bad : {"1e9", "0.1", "nan", "-3"}) {
+            QSettings().setValue(QStringLiteral("sky/elementSetAgeLimitDays"), QString::fromLatin1(bad));
+            QCOMPARE(slew::ui::ElementSetsDialog::savedAgeLimitDays(), 14.0);
+        }
+        QSettings().setValue(QStringLiteral("sky/elementSetAgeLimitDays"), 7.0);
         QTRY_COMPARE(next.window->elementSets()->sets().size(), 2);
         QVERIFY(next.window->elementSets()->status()[0].fromCache);
         QCOMPARE(server.requests, 2);
