@@ -47,7 +47,9 @@ void StationConfigTest::exampleFileStartsAStation()
     QVERIFY(QTest::qWaitFor(
         [&] {
             out += slew.readAllStandardOutput();
-            return out.contains("rotctld listening on") || slew.state() == QProcess::NotRunning;
+            // The whole line: the port at its end may come in a later read.
+            const qsizetype at = out.indexOf("rotctld listening on");
+            return (at >= 0 && out.indexOf('\n', at) > at) || slew.state() == QProcess::NotRunning;
         },
         20000));
     QVERIFY2(slew.state() == QProcess::Running, slew.readAllStandardError().constData());

@@ -83,7 +83,9 @@ bool HeadlessTest::startSlew(QProcess &slew, const QStringList &args, quint16 *r
     const bool ready = QTest::qWaitFor(
         [&] {
             out += slew.readAllStandardOutput();
-            return out.contains("rotctld listening on") || slew.state() == QProcess::NotRunning;
+            // The whole line: the port at its end may come in a later read.
+            const qsizetype at = out.indexOf("rotctld listening on");
+            return (at >= 0 && out.indexOf('\n', at) > at) || slew.state() == QProcess::NotRunning;
         },
         10000);
     if (!ready || slew.state() == QProcess::NotRunning)
@@ -326,7 +328,7 @@ void HeadlessTest::servesOneRotctldPortPerRotor()
     QByteArray out = m_startupLog;
     QVERIFY(QTest::qWaitFor([&] {
         out += slew.readAllStandardOutput();
-        return out.count("rotctld listening on") == 4;
+        return out.count("rotctld listening on") == 4 && out.endsWith('\n'); // the fourth line whole
     }, 10000));
     QMap<int, quint16> ports;
     const QRegularExpression ready(QStringLiteral("rotor (\\d): rotctld listening on 127.0.0.1:(\\d+)"));
