@@ -46,7 +46,8 @@ install_missing() {
 }
 
 configure_and_build() {
-    cmake -S "$top" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE="${SLEW_BUILD_TYPE:-RelWithDebInfo}" >/dev/null
+    cmake -S "$top" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE="${SLEW_BUILD_TYPE:-RelWithDebInfo}" \
+        -DSLEW_SHARED_LIBRARIES=ON >/dev/null
     cmake --build "$build" -j "$jobs"
 }
 
@@ -55,7 +56,8 @@ configure_and_build() {
 # which fails it on any ASan, LSan or UBSan report.
 sanitize_build=${SLEW_SANITIZE_BUILD_DIR:-$top/build-sanitize}
 sanitize_configure_and_build() {
-    cmake -S "$top" -B "$sanitize_build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSLEW_SANITIZE=ON >/dev/null
+    cmake -S "$top" -B "$sanitize_build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSLEW_SANITIZE=ON \
+        -DSLEW_SHARED_LIBRARIES=ON >/dev/null
     cmake --build "$sanitize_build" -j "$jobs"
 }
 
