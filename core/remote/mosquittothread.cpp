@@ -22,6 +22,10 @@
 namespace slew::remote {
 namespace {
 
+// How long one turn of the loop waits for the socket: also how soon a
+// close() with no last message is acted on.
+constexpr int kLoopWaitMs = 200;
+
 void initialiseLibraryOnce()
 {
     // Never cleaned up: a thread stuck in a name lookup may still use it as
@@ -270,11 +274,15 @@ int MosquittoThread::connectOnce(const QByteArray &host, const char *bindAddress
     }
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(m_settings.connectTimeoutMs);
     while (!stopping()) {
-        rc = mosquitto_loop(m_mosq, 1000, 1);
+        // A short wait, so that a close() with nothing to wait for is
+        // acted on soon: only this thread may disconnect (close()).
+        rc = mosquitto_loop(m_mosq, kLoopWaitMs, 1);
         if (rc != MOSQ_ERR_SUCCESS) {
             m_failureErrno = errno;
             return rc;
         }
+        if (m_disconnectDue.exchange(false))
+            disconnectNow();
         if (m_connected)
             *wasUp = true;
         else if (!*wasUp && std::chrono::steady_clock::now() > deadline)
@@ -298,25 +306,41 @@ int MosquittoThread::subscribe(const QString &filter, int qos, int *mid)
 void MosquittoThread::close(const std::optional<MqttMessage> &last)
 {
     const bool connected = m_connected;
-    {
-        std::lock_guard lock(m_mutex);
-        m_closing = true;
-        // Not connected (still connecting, or waiting to try again): there
-        // is nobody to say goodbye to, and the thread ends at once.
-        if (!connected) {
-            m_stopping = true;
-            m_wake.notify_all();
-        }
+    std::lock_guard lock(m_mutex);
+    m_closing = true;
+    // Not connected (still connecting, or waiting to try again): there
+    // is nobody to say goodbye to, and the thread ends at once.
+    if (!connected) {
+        m_stopping = true;
+        m_wake.notify_all();
+        return;
     }
-    if (connected && last)
-        publish(*last, nullptr);
-    // Queued behind the last message; once written, the library closes the
-    // socket and onDisconnect ends the thread. It also wakes the loop.
+    // The disconnect is left to the thread, after the broker has taken the
+    // last message. Sent from here, it marks the connection closing at once,
+    // and libmosquitto then refuses whatever arrives before its own loop has
+    // written the queue (a command for the station, an acknowledgement) by
+    // dropping the connection: the last message and the goodbye were lost
+    // and the broker published the will (seen under load). The mutex keeps
+    // onPublish from looking for the id before it is known.
+    int mid = -1;
+    if (last && publish(*last, &mid) == MOSQ_ERR_SUCCESS)
+        m_lastMid = mid;
+    else
+        m_disconnectDue = true;
+}
+
+void MosquittoThread::disconnectNow()
+{
+    // Queued behind everything not yet written; written here and now, so
+    // that nothing is read in between. Once the goodbye is out the library
+    // closes the socket and onDisconnect ends the thread.
     if (mosquitto_disconnect(m_mosq) == MOSQ_ERR_NO_CONN) {
         std::lock_guard lock(m_mutex);
         m_stopping = true;
         m_wake.notify_all();
+        return;
     }
+    mosquitto_loop_write(m_mosq, 1);
 }
 
 void MosquittoThread::abandon(int waitMs)
@@ -365,12 +389,20 @@ void MosquittoThread::onDisconnect(mosquitto *, void *self, int, const mosquitto
 
 void MosquittoThread::onPublish(mosquitto *, void *self, int mid, int reason, const mosquitto_property *)
 {
+    auto *t = static_cast<MosquittoThread *>(self);
+    {
+        std::lock_guard lock(t->m_mutex);
+        if (t->m_closing && mid == t->m_lastMid) {
+            t->m_lastMid = -1;
+            t->m_disconnectDue = true; // acted on as soon as this callback returns
+        }
+    }
     // Only a refusal is news (MQTT 5: a PUBACK reason of 0x80 or more, the
     // access list's "not authorised"). Every message taken would otherwise
     // wake the event loop once more for nothing: a station publishes ten a
     // second while it slews.
     if (reason >= 0x80)
-        static_cast<MosquittoThread *>(self)->post([mid, reason](MqttClient *c) { c->onRefused(mid, reason); });
+        t->post([mid, reason](MqttClient *c) { c->onRefused(mid, reason); });
 }
 
 void MosquittoThread::onSubscribe(mosquitto *, void *self, int mid, int count, const int *granted,

@@ -45,8 +45,9 @@ public:
     // From the receiver's thread. libmosquitto's MOSQ_ERR_* codes.
     int publish(const MqttMessage &message, int *mid);
     int subscribe(const QString &filter, int qos, int *mid);
-    // Publishes `last` (when given) and then disconnects cleanly, so the
-    // broker keeps the will to itself; the thread ends once both have left.
+    // Publishes `last` (when given) and, once the broker has taken it,
+    // disconnects cleanly, so the broker keeps the will to itself; the
+    // thread ends once both have left.
     void close(const std::optional<MqttMessage> &last);
     // The receiver is going: nothing more is posted to it, the connection
     // is closed, and the thread is waited for up to `waitMs` (a thread stuck
@@ -63,6 +64,8 @@ private:
     // MOSQ_ERR_* code; *wasUp once the broker accepted it). `bindAddress`
     // picks the address family (run()).
     int connectOnce(const QByteArray &host, const char *bindAddress, bool *wasUp);
+    // The clean end of a connection, on the thread itself (close()).
+    void disconnectNow();
     bool waitBeforeRetry(int seconds);
     bool stopping();
     // Runs `call` on the receiver's thread, unless it has gone.
@@ -83,9 +86,14 @@ private:
     MqttClient *m_receiver = nullptr;
     bool m_stopping = false;
     bool m_closing = false;
+    // The last message's id: its acknowledgement ends the connection
+    // (onPublish). -1 while none is awaited. Guarded by m_mutex.
+    int m_lastMid = -1;
     bool m_finished = false; // run() has returned
     // Set by the callbacks, which run on the thread itself.
     std::atomic<bool> m_connected{false};
+    // close() wants the connection ended; the thread does it (disconnectNow).
+    std::atomic<bool> m_disconnectDue{false};
     QString m_refusal; // the broker's answer to a refused connection
     int m_failureErrno = 0; // errno when connectOnce's last call failed
     std::atomic<int> m_waiting{0};
