@@ -35,6 +35,7 @@ transport::LinkHints RotctldLink::hints() const
 {
     transport::LinkHints h;
     h.dialect = protocol::dialectName(protocol::Dialect::Rotctld);
+    h.dialectFixed = true;
     return h;
 }
 

@@ -1,7 +1,6 @@
 #include "controllerrotors.h"
 
 #include "model/savedcalibration.h"
-#include "protocol/dialect.h"
 #include "transport/sharedline.h"
 
 namespace slew::session {
@@ -28,7 +27,7 @@ ControllerRotors::~ControllerRotors()
 
 transport::LinkResult ControllerRotors::makeLink(const QString &uri)
 {
-    if (protocol::rotorsOnLine(m_main->profile().dialect) <= 1)
+    if (m_main->codec().row().rotorsOnLine <= 1)
         return transport::createLink(uri);
     // A new line (another port or host): the old one's rotors go with it.
     if (!m_line || m_line->uri() != transport::SharedLine::lineUri(uri)) {
@@ -67,7 +66,7 @@ int ControllerRotors::stopOthers(const QString &cause)
 
 void ControllerRotors::onMainState(RotatorSession::State state)
 {
-    const int count = protocol::rotorsOnLine(m_main->profile().dialect);
+    const int count = m_main->codec().row().rotorsOnLine;
     const bool onSharedLine = m_line && m_main->link() && count > 1;
     if (state == RotatorSession::State::Disconnected || (state == RotatorSession::State::Connected && !onSharedLine)) {
         clearOthers();

@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "micro2gcalibration.h"
 
-#include "rotatorsession.h"
+#include "controllerchannel.h"
 
-#include "protocol/encoder.h"
 #include "protocol/operations.h"
 
 namespace slew::session {
@@ -20,9 +19,9 @@ QString printable(const QByteArray &line)
 
 } // namespace
 
-Micro2gCalibration::Micro2gCalibration(RotatorSession *session) : m_session(session)
+Micro2gCalibration::Micro2gCalibration(ControllerChannel *channel) : m_channel(channel)
 {
-    session->setListingReader([this](const Message &m) { return read(m); });
+    channel->setListingReader([this](const Message &m) { return read(m); });
 }
 
 bool Micro2gCalibration::read(const Message &m)
@@ -45,20 +44,19 @@ bool Micro2gCalibration::read(const Message &m)
 
 CommandResult Micro2gCalibration::refuseUnlessSupported(Op op, const QString &what)
 {
-    const protocol::Dialect d = m_session->profile().dialect;
-    if (protocol::dialectSupports(d, op))
+    if (m_channel->codec().supports(op))
         return {};
-    return m_session->refuse(tr("%1 has no %2").arg(protocol::dialectName(d), what));
+    return m_channel->refuse(tr("%1 has no %2").arg(m_channel->codec().name(), what));
 }
 
 CommandResult Micro2gCalibration::refuseUnlessCalibratable(int rotor, const QString &what)
 {
-    if (auto linked = m_session->requireLink(); !linked)
+    if (auto linked = m_channel->requireLink(); !linked)
         return linked;
     if (auto supported = refuseUnlessSupported(Op::Calibration, what); !supported)
         return supported;
     if (rotor < 1 || rotor > kRotors)
-        return m_session->refuse(tr("rotors are 1 to %1, not %2").arg(kRotors).arg(rotor));
+        return m_channel->refuse(tr("rotors are 1 to %1, not %2").arg(kRotors).arg(rotor));
     return {};
 }
 
@@ -66,7 +64,7 @@ CommandResult Micro2gCalibration::request(int rotor)
 {
     if (auto usable = refuseUnlessCalibratable(rotor, tr("calibration listing")); !usable)
         return usable;
-    return queueCalibration(protocol::encodeLine({Message::query(Op::Calibration)}, m_session->profile().dialect), rotor);
+    return queueCalibration(m_channel->codec().line({Message::query(Op::Calibration)}), rotor);
 }
 
 CommandResult Micro2gCalibration::set(int rotor, Point point, int value)
@@ -75,40 +73,40 @@ CommandResult Micro2gCalibration::set(int rotor, Point point, int value)
         return usable;
     const bool range = point == Point::DegreeRange;
     if (range && (value < 90 || value > 540))
-        return m_session->refuse(tr("a degree range is 90 to 540, not %1").arg(value));
+        return m_channel->refuse(tr("a degree range is 90 to 540, not %1").arg(value));
     if (!range && (value < 0 || value > 359))
-        return m_session->refuse(tr("a bearing is 0 to 359, not %1").arg(value));
+        return m_channel->refuse(tr("a bearing is 0 to 359, not %1").arg(value));
     const char which = range ? 'D' : point == Point::LeftStop ? 'L' : 'R';
     const QByteArray argument = which + QByteArray(" ") + QByteArray::number(value).rightJustified(3, '0');
-    const QByteArray line = protocol::encodeLine(
-        {Message::word(Op::Calibration, argument, rotor), Message::query(Op::Calibration)}, m_session->profile().dialect);
+    const QByteArray line =
+        m_channel->codec().line({Message::word(Op::Calibration, argument, rotor), Message::query(Op::Calibration)});
     const CommandResult queued = queueCalibration(line, rotor);
     // The controller drops its target when the scale under it changes.
     if (queued)
-        m_session->forgetActiveTarget();
+        m_channel->forgetActiveTarget();
     return queued;
 }
 
 CommandResult Micro2gCalibration::requestAdcReadings()
 {
-    if (auto linked = m_session->requireLink(); !linked)
+    if (auto linked = m_channel->requireLink(); !linked)
         return linked;
     if (auto supported = refuseUnlessSupported(Op::AdcReadings, tr("A/D listing")); !supported)
         return supported;
-    const QByteArray line = protocol::encodeLine({Message::query(Op::AdcReadings)}, m_session->profile().dialect);
+    const QByteArray line = m_channel->codec().line({Message::query(Op::AdcReadings)});
     Request r;
     r.line = line;
     r.expects[0] = Expectation{Op::AdcReadings, -1};
     r.expectCount = 1;
-    r.attemptsLeft = m_session->options().retries + 1;
+    r.attemptsLeft = m_channel->retries() + 1;
     r.purpose = RequestPurpose::User;
-    r.done = [session = m_session, text = printable(line)](bool ok, const QString &reason) {
+    r.done = [channel = m_channel, text = printable(line)](bool ok, const QString &reason) {
         if (!ok)
-            emit session->requestFailed(text, reason); // as the session's own queries say it
+            channel->reportRequestFailed(text, reason); // as the session's own queries say it
     };
     // One on its way already: its answer serves this asker too. A
     // calibration page reads with every poll while the operator turns the rotor.
-    return m_session->queueRequest(std::move(r), RotatorSession::SameLine::Shared);
+    return m_channel->queueRequest(std::move(r), ControllerChannel::SameLine::Shared);
 }
 
 CommandResult Micro2gCalibration::queueCalibration(const QByteArray &line, int rotor)
@@ -128,7 +126,7 @@ CommandResult Micro2gCalibration::queueCalibration(const QByteArray &line, int r
         if (!ok)
             emit calibrationFailed(rotor, reason);
     };
-    return m_session->queueRequest(std::move(r), RotatorSession::SameLine::Queued);
+    return m_channel->queueRequest(std::move(r), ControllerChannel::SameLine::Queued);
 }
 
 } // namespace slew::session

@@ -21,7 +21,7 @@
 
 namespace slew::session {
 
-class RotatorSession;
+class ControllerChannel;
 
 class Micro2gCalibration : public QObject {
     Q_OBJECT
@@ -31,7 +31,7 @@ public:
 
     // Reads the session's listing lines from now on; the session owns this
     // (and so outlives it).
-    explicit Micro2gCalibration(RotatorSession *session);
+    explicit Micro2gCalibration(ControllerChannel *channel);
 
     // `Z`, done when rotor's line is in.
     CommandResult request(int rotor);
@@ -55,7 +55,7 @@ private:
     // A link, a dialect with calibration, and a rotor 1..kRotors.
     CommandResult refuseUnlessCalibratable(int rotor, const QString &what);
 
-    RotatorSession *m_session;
+    ControllerChannel *m_channel;
 };
 
 } // namespace slew::session

@@ -65,7 +65,7 @@ model::RotatorProfile profileNamedByUri(model::RotatorProfile profile, bool oper
 {
     const transport::LinkHints hints = transport::linkHintsFor(profile.uri);
     const auto dialect = protocol::dialectFromName(hints.dialect);
-    if (dialect && (*dialect == protocol::Dialect::Rotctld || !operatorNamedDialect))
+    if (dialect && (hints.dialectFixed || !operatorNamedDialect))
         profile.dialect = *dialect;
     takeFirmware(profile, hints);
     return profile;

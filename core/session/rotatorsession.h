@@ -8,7 +8,9 @@
 // stop, park, home, config) into the dialect's bytes after checking the
 // profile's limits. Everything is driven by signals; nothing here waits.
 
+#include "controllerchannel.h"
 #include "controllerlogallowance.h"
+#include "joglegs.h"
 #include "echofilter.h"
 #include "lineturnaround.h"
 #include "linktimer.h"
@@ -18,7 +20,7 @@
 #include "refusalowner.h"
 #include "protocol/checksum.h"
 #include "protocol/firmware.h"
-#include "protocol/parser.h"
+#include "protocol/codec.h"
 #include "requestqueue.h"
 #include "transport/linkfactory.h"
 #include "sessiontypes.h"
@@ -43,7 +45,9 @@ namespace slew::session {
 class Micro2gCalibration;
 class StationRadio;
 
-class RotatorSession : public QObject {
+// Private ControllerChannel: the narrow face its helpers (the station
+// radio, the Micro-2g calibration) get, with no access to the rest.
+class RotatorSession : public QObject, private ControllerChannel {
     Q_OBJECT
 public:
     enum class State { Disconnected, Connecting, Connected, Reconnecting };
@@ -67,6 +71,9 @@ public:
 
     void setProfile(const model::RotatorProfile &profile);
     const model::RotatorProfile &profile() const { return m_profile; }
+    // The controller's language as the profile names it: what it can do,
+    // and how its commands are written (protocol/codec.h).
+    const protocol::Codec &codec() const override { return *m_codec; }
     // The controller's firmware (the profile's, or the SatNOGS dialect's
     // own) and what it does that its dialect does not say.
     protocol::Firmware firmware() const { return protocol::firmwareOf(m_profile.dialect, m_profile.firmware); }
@@ -121,7 +128,7 @@ public:
     // park) sends PARK before they are in. A
     // controller without them parks at the profile's position (by a go-to, or
     // its own command), which is then as known as it gets.
-    // (rotatorsession_park.cpp)
+    // (rotatorsession_registers.cpp)
     bool hasParkRegisters() const;
     bool parkKnown() const;
     // The controller's own angles (uncalibrated), as the registers hold them.
@@ -169,7 +176,7 @@ public:
     int rotor() const { return m_rotor; }
     // The controller turns azimuth only (the Micro-2g): elevation reads 0,
     // and the gate allows no elevation but 0.
-    bool isAzimuthOnly() const { return protocol::isAzimuthOnly(m_profile.dialect); }
+    bool isAzimuthOnly() const { return m_codec->isAzimuthOnly(); }
     int checksumFailures() const { return m_checksumFailures; }
     // Refused frames in a row after which badFramesAlarm(true) is raised.
     static constexpr int kBadFramesAlarm = 3;
@@ -316,28 +323,24 @@ signals:
     void errorOccurred(const QString &message);
 
 private:
-    // The session's helpers, each a part of one conversation with the
-    // controller kept in a file of its own, ask through the hooks below.
-    friend class Micro2gCalibration;
-    friend class StationRadio;
-    // A request of a helper's own: refused, as the session's own are (the
-    // result, and commandRefused()), with no link or a full queue.
-    // SameLine::Shared: one with the same line already waiting serves this
-    // asker too, and nothing is added.
-    enum class SameLine { Queued, Shared };
-    CommandResult queueRequest(Request request, SameLine same);
-    CommandResult requireLink();
+    // The channel its helpers ask through (controllerchannel.h). A request
+    // of a helper's own is refused, as the session's own are, with no link
+    // or a full queue.
+    CommandResult queueRequest(Request request, SameLine same) override;
+    CommandResult requireLink() override;
+    void writeCommand(const QByteArray &line) override { write(line); }
+    int retries() const override { return m_options.retries; }
+    void reportRequestFailed(const QString &line, const QString &reason) override { emit requestFailed(line, reason); }
     // Refuses a move (refuseMove, unless Quietly) while the controller's
     // position, which it could report, has not been read on this link.
     enum class Report { Refusing, Quietly };
     CommandResult requirePositionRead(Report report = Report::Refusing);
     static bool isRawMove(const protocol::Message &m);
-    // Reads the listing lines (Op::Calibration, Op::AdcReadings) that arrive:
-    // says whether a line was one; one that is not (an echoed command)
-    // completes no request.
-    void setListingReader(std::function<bool(const protocol::Message &)> reader) { m_listingReader = std::move(reader); }
-    // The controller dropped its target (its scale changed under it).
-    void forgetActiveTarget() { m_activeTarget.reset(); }
+    void setListingReader(std::function<bool(const protocol::Message &)> reader) override
+    {
+        m_listingReader = std::move(reader);
+    }
+    void forgetActiveTarget() override { m_activeTarget.reset(); }
 
     void setState(State s, const QString &detail = {});
     void openLink();
@@ -357,7 +360,7 @@ private:
     void applyInput(int index, double value);
     void applyConfig(int reg, const QString &text, bool numeric, double value);
 
-    CommandResult refuse(const QString &reason);
+    CommandResult refuse(const QString &reason) override;
     CommandResult refuseMove(const QString &reason); // refuse(), and moveRefused()
     // The gate's answer to one message of a raw line, empty when it may go.
     QString rawMoveRefusal(const protocol::Message &m) const;
@@ -397,7 +400,9 @@ private:
 
     model::RotatorProfile m_profile;
     Options m_options;
-    protocol::Parser m_parser;
+    // The controller's language: what to send, and what its replies say.
+    // Made anew when the profile names another dialect.
+    std::unique_ptr<protocol::Codec> m_codec;
     bool m_checksum = false;
     int m_rotor = 0; // from the link's hints when it opens
     protocol::ChecksumReader m_frames; // checksummed lines are checked here before the parser
@@ -463,21 +468,12 @@ private:
     // active target; go-to and relative moves share it. Pointing frame in,
     // the controller's angles out.
     CommandResult sendSetPosition(double az, double el);
-    // The set-position bytes for the controller's own angles: a line, or a
-    // SPID frame in the resolution the controller's replies gave; empty
-    // with the reason when there are none.
-    QByteArray encodeSet(double wireAz, double wireEl, QString *why) const;
-    // A jog on a controller with set-position but no speed or move command
-    // (Rot2Prog, Rot1Prog): a go-to the end of the travel that way, which
-    // the release's stop ends, as a velocity jog's would.
+    // A jog on a controller with set-position but no command to run an
+    // axis (joglegs.h): a go-to towards the end of the travel that way,
+    // which the release's stop ends, as a speed jog's would.
     CommandResult jogBySetPosition(Axis axis, double degreesPerSecond);
-    double jogLegEnd(bool azimuth, double speed) const;
-    void continueJogLegs();
-    static constexpr double kJogLegDeg = 170.0;      // under half a turn: no bearing is ambiguous
-    static constexpr double kJogLegRenewDeg = 30.0;  // the next leg goes out this far before the end
-    std::array<double, 2> m_jogLeg{0.0, 0.0};        // where each axis's jog leg ends
-    // The MD-01/02 move frame for the axes jogging now (m_jogSpeed).
-    QByteArray spidMoveFrame() const;
+    JogLegs::Where jogWhere() const;
+    JogLegs m_jogLegs;
     void updatePollPace();
     qint64 nowMs() const;  // the link's time where it is stepped, else m_clock's
     int m_replyTimeoutMs = 500;

@@ -1,10 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "stationradio.h"
 
-#include "rotatorsession.h"
+#include "controllerchannel.h"
 
-#include "protocol/dialect.h"
-#include "protocol/encoder.h"
 #include "protocol/operations.h"
 
 #include <cmath>
@@ -31,26 +29,26 @@ Op modeOp(StationRadio::Path path)
 
 } // namespace
 
-StationRadio::StationRadio(RotatorSession *session) : m_session(session) {}
+StationRadio::StationRadio(ControllerChannel *channel) : m_channel(channel) {}
 
 bool StationRadio::isSupported() const
 {
-    return protocol::dialectSupports(m_session->profile().dialect, Op::UplinkFreq);
+    return m_channel->codec().supports(Op::UplinkFreq);
 }
 
 bool StationRadio::canRead() const
 {
     // Easycomm I is one line out and nothing back.
-    return isSupported() && m_session->profile().dialect != protocol::Dialect::Easycomm1;
+    return isSupported() && m_channel->codec().answers();
 }
 
 CommandResult StationRadio::refuseUnlessSupported()
 {
-    if (auto linked = m_session->requireLink(); !linked)
+    if (auto linked = m_channel->requireLink(); !linked)
         return linked;
     if (!isSupported())
-        return m_session->refuse(
-            tr("%1 has no station radio commands (UP, DN)").arg(protocol::dialectName(m_session->profile().dialect)));
+        return m_channel->refuse(
+            tr("%1 has no station radio commands (UP, DN)").arg(m_channel->codec().name()));
     return {};
 }
 
@@ -59,8 +57,8 @@ CommandResult StationRadio::setFrequency(Path path, double hz)
     if (auto usable = refuseUnlessSupported(); !usable)
         return usable;
     if (!std::isfinite(hz) || hz < 1.0 || hz > kHighestHz)
-        return m_session->refuse(tr("a radio frequency is 1 Hz to 9999999999 Hz (ten digits), not %1").arg(hz, 0, 'f', 0));
-    m_session->write(protocol::encodeLine({Message::number(frequencyOp(path), std::round(hz))}, m_session->profile().dialect));
+        return m_channel->refuse(tr("a radio frequency is 1 Hz to 9999999999 Hz (ten digits), not %1").arg(hz, 0, 'f', 0));
+    m_channel->writeCommand(m_channel->codec().line({Message::number(frequencyOp(path), std::round(hz))}));
     return {};
 }
 
@@ -73,8 +71,8 @@ CommandResult StationRadio::setMode(Path path, const QString &mode)
     for (char c : text)
         plain = plain && ((c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'));
     if (!plain)
-        return m_session->refuse(tr("a radio mode is 1 to 8 letters or digits (USB, FM), not '%1'").arg(mode.left(20)));
-    m_session->write(protocol::encodeLine({Message::word(modeOp(path), text)}, m_session->profile().dialect));
+        return m_channel->refuse(tr("a radio mode is 1 to 8 letters or digits (USB, FM), not '%1'").arg(mode.left(20)));
+    m_channel->writeCommand(m_channel->codec().line({Message::word(modeOp(path), text)}));
     return {};
 }
 
@@ -83,14 +81,14 @@ CommandResult StationRadio::readFrequency(Path path)
     if (auto usable = refuseUnlessSupported(); !usable)
         return usable;
     if (!canRead())
-        return m_session->refuse(tr("%1 answers no station radio queries").arg(protocol::dialectName(m_session->profile().dialect)));
+        return m_channel->refuse(tr("%1 answers no station radio queries").arg(m_channel->codec().name()));
     Request r;
-    r.line = protocol::encodeLine({Message::query(frequencyOp(path))}, m_session->profile().dialect);
+    r.line = m_channel->codec().line({Message::query(frequencyOp(path))});
     r.expects[0] = Expectation{frequencyOp(path), -1};
     r.expectCount = 1;
     r.attemptsLeft = 1; // a newer reading is asked for soon enough
     r.purpose = RequestPurpose::User;
-    return m_session->queueRequest(std::move(r), RotatorSession::SameLine::Shared);
+    return m_channel->queueRequest(std::move(r), ControllerChannel::SameLine::Shared);
 }
 
 void StationRadio::read(const Message &m)

@@ -20,7 +20,7 @@
 
 namespace slew::session {
 
-class RotatorSession;
+class ControllerChannel;
 
 class StationRadio : public QObject {
     Q_OBJECT
@@ -28,8 +28,8 @@ public:
     enum class Path { Uplink, Downlink };
     Q_ENUM(Path)
 
-    // The session owns this (and so outlives it).
-    explicit StationRadio(RotatorSession *session);
+    // The session owns this (and so outlives it) and speaks for it.
+    explicit StationRadio(ControllerChannel *channel);
 
     // The session's dialect has the station commands (UP, DN, UM, DM).
     bool isSupported() const;
@@ -47,13 +47,14 @@ signals:
     void frequencyReported(slew::session::StationRadio::Path path, double hz);
     void modeReported(slew::session::StationRadio::Path path, const QString &mode);
 
-private:
-    friend class RotatorSession;
-    // A UP, DN, UM or DM line the controller sent.
+public:
+    // A UP, DN, UM or DM line the controller sent (the session hands each here).
     void read(const protocol::Message &m);
+
+private:
     CommandResult refuseUnlessSupported();
 
-    RotatorSession *m_session;
+    ControllerChannel *m_channel;
 };
 
 } // namespace slew::session

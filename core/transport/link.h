@@ -22,6 +22,9 @@ namespace slew::transport {
 // Only what is known is set.
 struct LinkHints {
     QString dialect; // as named in profiles and --dialect; empty: not known
+    // The link speaks only that dialect (a rotctld server): it replaces one
+    // the operator named. Else the dialect is a hint the operator may overrule.
+    bool dialectFixed = false;
     // The controller's firmware where its dialect does not say all
     // (protocol/firmware.h): "k3ng", "satnogs"; empty: not known.
     QString firmware;

@@ -1,10 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The encoder per dialect: the exact bytes Hamlib's backends and the Easycomm III derivative
 // controller send, and a round trip through the parser for every command.
+// The codec the session speaks through (codec.h): the same bytes, chosen by
+// what the dialect can do rather than by its name.
 
 #include "messagedump.h"
+#include "protocol/codec.h"
 #include "protocol/encoder.h"
 #include "protocol/parser.h"
+#include "protocol/spidcodec.h"
 
 #include <QFile>
 #include <QMap>
@@ -35,6 +39,10 @@ private slots:
     void wholeNumbersAreDefinedForEveryDouble();
     void dialectNames();
     void theDialectTableIsDocumented();
+    void codecsSetByWhatTheDialectCan();
+    void codecsJogByWhatTheDialectHas();
+    void aSpidCodecLearnsItsResolutionFromReplies();
+    void codecsRefuseRawLinesTheyCannotVouchFor();
 };
 
 void EncoderTest::hamlibWireStrings()
@@ -371,11 +379,128 @@ void EncoderTest::theDialectTableIsDocumented()
         ++rows;
     }
     QCOMPARE(rows, 11);
+    // What each can do, as the codec tells the session: the second table.
+    const auto jogWay = [](const Codec &c) {
+        if (!c.answers())
+            return QStringLiteral("none (no position to start from)");
+        if (!c.jogsItself())
+            return QStringLiteral("legs of set-position");
+        if (c.supports(Op::VelocityLeft))
+            return QStringLiteral("speed");
+        return c.readsTextLines() ? QStringLiteral("move") : QStringLiteral("move frame");
+    };
+    QStringList missing;
+    for (const DialectRow &row : kDialects) {
+        const auto c = Codec::forDialect(row.dialect);
+        const QString expected = QStringLiteral("| `%1` | %2 | %3 | %4 | %5 | %6 | %7 | %8 | %9 |")
+                                     .arg(QString::fromLatin1(row.name), yesNo(c->answers()), jogWay(*c),
+                                          yesNo(!c->stop(true, true).isEmpty()), yesNo(c->supports(Op::Park)),
+                                          yesNo(c->supports(Op::Reset)), yesNo(c->supports(Op::ConfigRead)),
+                                          yesNo(c->supports(Op::UplinkFreq)), yesNo(c->supports(Op::KeepAlive)));
+        if (!lines.contains(expected))
+            missing << expected;
+    }
+    QVERIFY2(missing.isEmpty(), qPrintable(QStringLiteral("docs/protocol.md lacks:\n") + missing.join(u'\n')));
     const QMap<Dialect, int> hamlib{{Dialect::Easycomm1, 201}, {Dialect::Easycomm2, 202}, {Dialect::SatNogs, 204},
                                     {Dialect::Gs232A, 601},    {Dialect::Gs232B, 603},    {Dialect::Rot2Prog, 901},
                                     {Dialect::Rot1Prog, 902},  {Dialect::Md01, 903}};
     for (auto it = hamlib.cbegin(); it != hamlib.cend(); ++it)
         QCOMPARE(dialectRow(it.key()).hamlibModel, it.value());
+}
+
+// The session's set, one axis or both, and the finest step it makes.
+void EncoderTest::codecsSetByWhatTheDialectCan()
+{
+    const auto easycomm = Codec::forDialect(Dialect::Easycomm3);
+    QCOMPARE(easycomm->setPosition(123.4, 45.6).bytes, encodeSetPosition(123.4, 45.6, Dialect::Easycomm3));
+    QCOMPARE(easycomm->setAxis(true, 123.4).bytes, encodeLine({Message::number(Op::Azimuth, 123.4)}, Dialect::Easycomm3));
+    QCOMPARE(easycomm->setResolutionDeg(), 0.01);
+    QVERIFY(easycomm->answers() && easycomm->readsTextLines() && !easycomm->stopHaltsEveryAxis());
+    // GS-232 sets both axes in one W: no single axis.
+    const auto gs232 = Codec::forDialect(Dialect::Gs232B);
+    QVERIFY(gs232->setsBothAxes());
+    QVERIFY(!gs232->setAxis(false, 30).ok());
+    QCOMPARE(gs232->setResolutionDeg(), 1.0);
+    QCOMPARE(gs232->stop(true, true), encodeStop(true, true, Dialect::Gs232B));
+    // Easycomm I answers nothing; Micro-2g writes the rotor it was given.
+    QVERIFY(!Codec::forDialect(Dialect::Easycomm1)->answers());
+    const auto micro2g = Codec::forDialect(Dialect::Micro2g, 3);
+    QCOMPARE(micro2g->queryPosition(), encodeQueryPosition(Dialect::Micro2g, 3));
+    QVERIFY(micro2g->azimuthIsBearing() && micro2g->isAzimuthOnly());
+    QCOMPARE(micro2g->row().rotorsOnLine, 4);
+    // SPID: frames, a stop that halts both axes, no lines.
+    const auto spid = Codec::forDialect(Dialect::Rot2Prog);
+    QVERIFY(!spid->readsTextLines() && spid->stopHaltsEveryAxis());
+    QCOMPARE(spid->queryPosition(), spid::encodeStatus());
+    QCOMPARE(spid->stop(false, true), spid::encodeStop());
+    QVERIFY(spid->line({Message::query(Op::Park)}).isEmpty());
+}
+
+// A jog is a speed where the dialect has speeds, a bare move where it has
+// moves, the MD-01's one frame for both axes, and otherwise legs of
+// set-position (session/joglegs.h), which the codec does not write.
+void EncoderTest::codecsJogByWhatTheDialectHas()
+{
+    const auto easycomm = Codec::forDialect(Dialect::Easycomm3);
+    QVERIFY(easycomm->jogsItself());
+    const Encoded speed = easycomm->jog({-1.5, 0.0}, true);
+    QCOMPARE(speed.bytes, encodeLine({Message::number(Op::VelocityLeft, 1500)}, Dialect::Easycomm3));
+    QVERIFY(speed.echo && speed.echo->op == Op::VelocityLeft); // an echo is not a report
+    const Encoded down = Codec::forDialect(Dialect::Gs232A)->jog({0.0, -2.0}, false);
+    QCOMPARE(down.bytes, encodeLine({Message::query(Op::MoveDown)}, Dialect::Gs232A));
+    QVERIFY(!down.echo);
+    const Encoded both = Codec::forDialect(Dialect::Md01)->jog({1.0, -1.0}, false);
+    QCOMPARE(both.bytes, spid::encodeMove(spid::MoveBit::Right | spid::MoveBit::Down, Dialect::Md01).bytes);
+    QCOMPARE(Codec::forDialect(Dialect::Rotctld)->jog({0.0, 2.0}, false).bytes,
+             encodeLine({Message::query(Op::MoveUp)}, Dialect::Rotctld));
+    for (Dialect d : {Dialect::Rot2Prog, Dialect::Rot1Prog, Dialect::Micro2g, Dialect::Easycomm1})
+        QVERIFY2(!Codec::forDialect(d)->jogsItself(), qPrintable(dialectName(d)));
+    const Encoded none = Codec::forDialect(Dialect::Micro2g)->jog({1.0, 0.0}, true);
+    QVERIFY(none.bytes.isEmpty());
+    QCOMPARE(none.refusal, QStringLiteral("micro2g has no command to move an axis"));
+}
+
+// A SPID set counts in the controller's pulses a degree, which only its
+// replies tell: until one has come, a set is refused, not guessed.
+void EncoderTest::aSpidCodecLearnsItsResolutionFromReplies()
+{
+    const auto spid = Codec::forDialect(Dialect::Rot2Prog);
+    const Encoded early = spid->setPosition(100.0, 20.0);
+    QVERIFY(early.bytes.isEmpty());
+    QVERIFY2(early.refusal.contains(QStringLiteral("resolution is not known yet")), qPrintable(early.refusal));
+    int positions = 0;
+    spid->feed(spid::encodeReply(10.5, 20.0, Dialect::Rot2Prog, 2, 2), [&](const Message &m) {
+        positions += m.op == Op::Azimuth || m.op == Op::Elevation;
+    });
+    QCOMPARE(positions, 2);
+    QCOMPARE(spid->setResolutionDeg(), 0.5);
+    QCOMPARE(spid->setPosition(100.0, 20.0).bytes, spid::encodeSet(100.0, 20.0, Dialect::Rot2Prog, 2, 2).bytes);
+    // Outside what a frame holds: refused with the frame's reason.
+    QVERIFY(!spid->setPosition(600.0, 20.0).ok());
+    // Rot1Prog's whole degrees need no reply first.
+    const auto rot1 = Codec::forDialect(Dialect::Rot1Prog);
+    QCOMPARE(rot1->setPosition(123.0, 0.0).bytes, spid::encodeSet(123.0, 0.0, Dialect::Rot1Prog).bytes);
+    QCOMPARE(rot1->setResolutionDeg(), 1.0);
+}
+
+// An operator's raw line goes only where the codec can say what it does.
+void EncoderTest::codecsRefuseRawLinesTheyCannotVouchFor()
+{
+    const auto refusalOf = [](Dialect d, QByteArray line) {
+        const auto codec = Codec::forDialect(d);
+        QString why;
+        codec->feed(line + '\n', [&](const Message &m) {
+            if (why.isEmpty())
+                why = codec->rawLineRefusal(m);
+        });
+        return why;
+    };
+    QVERIFY(refusalOf(Dialect::Rotctld, "w AZ10").contains(QStringLiteral("not a rotctld command")));
+    QVERIFY(refusalOf(Dialect::Rotctld, "P 10 20").isEmpty());
+    QVERIFY(refusalOf(Dialect::Gs232B, "O+1x").contains(QStringLiteral("not a relative move")));
+    QVERIFY(refusalOf(Dialect::Gs232B, "W100 020").isEmpty());
+    QVERIFY(refusalOf(Dialect::Micro2g, "M400").contains(QStringLiteral("not a Micro-2g go-to")));
+    QVERIFY(refusalOf(Dialect::Easycomm3, "AZ10.0 EL20.0").isEmpty());
 }
 
 QTEST_GUILESS_MAIN(EncoderTest)

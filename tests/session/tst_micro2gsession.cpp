@@ -16,6 +16,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <cmath>
+
 using slew::session::Axis;
 using slew::session::Micro2gCalibration;
 using slew::session::RotatorSession;
@@ -64,7 +66,6 @@ private slots:
         QVERIFY(!s.gotoAxis(Axis::Elevation, 10));
         QVERIFY(!s.moveBy(0, 5));
         QCOMPARE(refusedMoves.count(), 3);
-        QVERIFY(!s.moveAxis(Axis::Azimuth, 3.0));       // no speeds, no bare moves
         QVERIFY(!s.readConfig(1));                      // no registers
         QVERIFY(!s.writeConfig(1, QStringLiteral("2")));
         QVERIFY(!s.home());
@@ -76,6 +77,18 @@ private slots:
         // Without a rotor on the URI, the default rotor's forms.
         QVERIFY(s.gotoAxis(Axis::Azimuth, 90));
         QCOMPARE(sent.last().at(0).toByteArray(), QByteArray("M090\r"));
+        // No speeds and no bare moves: a jog is set-position legs of under
+        // half a turn (session/joglegs.h), the bearing the short way, which
+        // is the way pressed; the release's stop ends it.
+        QVERIFY(s.stop(QStringLiteral("the test")));
+        const double from = s.azimuth();
+        QVERIFY(s.moveAxis(Axis::Azimuth, 3.0));
+        const QByteArray leg = sent.last().at(0).toByteArray();
+        QVERIFY2(leg.startsWith('M') && leg.endsWith('\r'), leg.constData());
+        const int to = leg.mid(1, 3).toInt();
+        QVERIFY2(std::fmod(to - from + 360.0, 360.0) > 1.0 && std::fmod(to - from + 360.0, 360.0) <= 170.5,
+                 leg.constData());
+        QVERIFY(s.stop(QStringLiteral("the test")));
     }
 
     void asksForAndSetsTheCalibrationThroughTheQueue()

@@ -263,8 +263,8 @@ private slots:
         QVERIFY(runEventLoopUntil([&] { return early.has_value(); }, 10000));
         QVERIFY(!*early);
         // The first reply brings both the position and the resolution: the
-        // set is refused for the first (session/rotatorsession_commands.cpp,
-        // requirePositionRead), and encodeSet would refuse it for the second.
+        // set is refused for the first (session/rotatorsession_moves.cpp,
+        // requirePositionRead), and the codec's set would refuse it for the second.
         QVERIFY2(early->refusal == QStringLiteral("no position read from the controller yet"), qPrintable(early->refusal));
         QVERIFY(runEventLoopUntil([&] { return s.hasPosition(); }, 10000));
         QVERIFY(s.gotoPosition(50, 10));

@@ -1,9 +1,9 @@
-// RotatorSession, part two: the request queue on the wire (one query at a
+// SPDX-License-Identifier: GPL-3.0-or-later
+// RotatorSession's queries: the request queue on the wire (one query at a
 // time, timeouts and retries), the capability probe and polling.
 
 #include "rotatorsession.h"
 
-#include "protocol/encoder.h"
 #include "transport/link.h"
 
 #include <QIODevice>
@@ -12,7 +12,6 @@
 
 namespace slew::session {
 
-using protocol::Dialect;
 using protocol::Message;
 using protocol::Op;
 
@@ -138,13 +137,12 @@ void RotatorSession::finishFront(bool ok, const QString &reason)
 
 void RotatorSession::startProbe()
 {
-    const Dialect d = m_profile.dialect;
     m_caps = Capabilities{};
-    m_caps.velocity = protocol::dialectSupports(d, Op::VelocityLeft);
-    m_caps.moveCommands = protocol::dialectSupports(d, Op::MoveLeft);
-    m_caps.park = protocol::dialectSupports(d, Op::Park);
-    m_caps.reset = protocol::dialectSupports(d, Op::Reset);
-    m_caps.stop = protocol::dialectSupports(d, Op::StopAzimuth);
+    m_caps.velocity = m_codec->supports(Op::VelocityLeft);
+    m_caps.moveCommands = m_codec->supports(Op::MoveLeft);
+    m_caps.park = m_codec->supports(Op::Park);
+    m_caps.reset = m_codec->supports(Op::Reset);
+    m_caps.stop = m_codec->supports(Op::StopAzimuth);
     m_telemetryFailures.clear();
 
     struct Probe {
@@ -161,17 +159,17 @@ void RotatorSession::startProbe()
     m_probesOutstanding = 0;
     QList<Request> requests;
     for (const Probe &p : probes) {
-        if (!protocol::dialectSupports(d, p.op))
+        if (!m_codec->supports(p.op))
             continue;
         Request r;
         r.purpose = RequestPurpose::Probe;
         if (p.op == Op::Azimuth) {
-            r.line = protocol::encodeQueryPosition(d, m_rotor);
+            r.line = m_codec->queryPosition();
             r.expects = {Expectation{Op::Azimuth, -1}, Expectation{Op::Elevation, -1}};
             r.expectCount = 2;
             r.attemptsLeft = m_options.retries + 1;
         } else {
-            r.line = protocol::encodeLine({Message::query(p.op, p.index)}, d);
+            r.line = m_codec->line({Message::query(p.op, p.index)});
             r.expects[0] = Expectation{p.op, p.index};
             r.expectCount = 1;
             r.attemptsLeft = 1; // a controller that lacks a command stays silent
@@ -214,11 +212,10 @@ void RotatorSession::poll()
     if (m_jogSpeed[0] != 0.0 || m_jogSpeed[1] != 0.0)
         m_pace.wake(nowMs());
     retimePolling();
-    const Dialect d = m_profile.dialect;
     // A controller whose position did not read at connect is asked again,
     // less and less often, and each failure is said: a wrong dialect, a
     // controller still booting, a cable that comes loose all show there.
-    const QByteArray positionLine = protocol::encodeQueryPosition(d, m_rotor);
+    const QByteArray positionLine = m_codec->queryPosition();
     const bool askPosition = !positionLine.isEmpty()
         && (m_caps.positionFeedback || nowMs() >= m_positionRetry.dueMs);
     if (askPosition && !m_queue.contains(positionLine)) {
@@ -246,7 +243,7 @@ void RotatorSession::poll()
         return;
 
     auto ask = [&](Op op, int index) {
-        const QByteArray line = protocol::encodeLine({Message::query(op, index)}, d);
+        const QByteArray line = m_codec->line({Message::query(op, index)});
         if (line.isEmpty() || m_queue.contains(line) || m_telemetryFailures.value(line) >= kTelemetryGiveUpAfter)
             return;
         Request r;
@@ -292,7 +289,7 @@ void RotatorSession::keepAlive()
     // while it is paused.
     if (m_pollingEnabled || m_state != State::Connected || !m_link || !m_link->isOpen() || !m_caps.probed)
         return;
-    const QByteArray line = protocol::encodeLine({Message::query(Op::KeepAlive)}, m_profile.dialect);
+    const QByteArray line = m_codec->line({Message::query(Op::KeepAlive)});
     if (line.isEmpty() || m_queue.contains(line))
         return;
     Request r;
