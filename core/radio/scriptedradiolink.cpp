@@ -1,0 +1,407 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "scriptedradiolink.h"
+
+#include "frequencytext.h"
+#include "input/finitenumber.h"
+#include "input/logtext.h"
+#include "protocol/hamliberrors.h"
+#include "radiolimits.h"
+
+namespace slew::radio {
+
+namespace {
+
+using protocol::HamlibError;
+
+// Letters and digits only, not too long (radiolimits.h says why).
+bool isModeName(const QString &mode)
+{
+    if (mode.isEmpty() || mode.size() > limits::kMaxModeChars)
+        return false;
+    for (const QChar c : mode) {
+        if (!(c.isDigit() || (c >= u'A' && c <= u'Z') || (c >= u'a' && c <= u'z')))
+            return false;
+    }
+    return true;
+}
+
+// The number a read answered, in `range`; else nothing, and *failure says
+// why (a refusal has said it already).
+std::optional<double> valueIn(const RadioAnswer &answer, const input::NumberRange &range, QString *failure)
+{
+    if (answer.code != 0)
+        return std::nullopt;
+    if (!answer.value) {
+        *failure = QObject::tr("the answer held no value");
+        return std::nullopt;
+    }
+    QString why;
+    const std::optional<double> v = input::numberIn(*answer.value, range, &why);
+    if (!v)
+        *failure = QObject::tr("unusable answer: %1").arg(why);
+    return v;
+}
+
+RadioCommand frequencyCommand(RadioCommand::Call call, RadioPath path, double hz = 0)
+{
+    RadioCommand c;
+    c.call = call;
+    c.path = path;
+    c.hz = hz;
+    return c;
+}
+
+} // namespace
+
+ScriptedRadioLink::ScriptedRadioLink(QString uri, std::unique_ptr<ExchangePerformer> performer, QObject *parent)
+    : RadioLink(parent), m_uri(std::move(uri)), m_performer(std::move(performer)),
+      m_replyTimeoutMs(limits::kReplyTimeoutMs), m_tuningStepHz(limits::kUnknownStepHz)
+{
+    connect(&m_pacer, &CommandPacer::ready, this, &ScriptedRadioLink::onReady);
+    m_deadline.setSingleShot(true);
+    connect(&m_deadline, &QTimer::timeout, this, &ScriptedRadioLink::onDeadline);
+    connect(m_performer.get(), &ExchangePerformer::opened, this, &ScriptedRadioLink::onOpened);
+    connect(m_performer.get(), &ExchangePerformer::answered, this, &ScriptedRadioLink::onAnswered);
+    connect(m_performer.get(), &ExchangePerformer::lost, this,
+            [this](const QString &reason) { fail(tr("%1: %2").arg(label(), reason)); });
+    connect(m_performer.get(), &ExchangePerformer::said, this, &RadioLink::commandSent);
+}
+
+ScriptedRadioLink::~ScriptedRadioLink()
+{
+    // The performer goes after the pacer and the timer: nothing it says
+    // while it ends may reach them.
+    m_performer->disconnect(this);
+}
+
+QString ScriptedRadioLink::label() const
+{
+    return m_uri.endsWith(QLatin1Char(':')) ? m_uri.chopped(1) : m_uri;
+}
+
+void ScriptedRadioLink::setState(State state, const QString &detail)
+{
+    m_state = state;
+    emit stateChanged(state, detail);
+}
+
+void ScriptedRadioLink::open()
+{
+    m_pacer.clear();
+    m_deadline.stop();
+    // Each opening starts knowing nothing of the radio.
+    m_layout = m_wantedLayout;
+    m_receiveRead.reset();
+    m_splitOn = false;
+    m_timeoutsInARow = 0;
+    m_latencyMs = 0;
+    m_tuningStepHz = limits::kUnknownStepHz;
+    setState(State::Opening, tr("%1: %2").arg(label(), m_performer->reaching()));
+    m_performer->open(m_layout);
+}
+
+void ScriptedRadioLink::close()
+{
+    if (m_state == State::Closed)
+        return;
+    m_state = State::Closed;
+    m_pacer.clear();
+    m_deadline.stop();
+    m_performer->close();
+    emit stateChanged(State::Closed, tr("%1: closed").arg(label()));
+}
+
+void ScriptedRadioLink::fail(const QString &reason)
+{
+    if (m_state == State::Closed)
+        return;
+    const std::optional<PacedCommand> pending = m_pacer.inFlight();
+    m_state = State::Closed;
+    m_pacer.clear();
+    m_deadline.stop();
+    m_performer->abort();
+    if (pending)
+        emit commandFailed(pending->text, reason);
+    emit stateChanged(State::Closed, reason);
+}
+
+QString ScriptedRadioLink::setVfoLayout(VfoLayout layout)
+{
+    m_wantedLayout = layout;
+    return {};
+}
+
+// --- What the owner asks ---------------------------------------------------
+
+bool ScriptedRadioLink::acceptFrequency(const RadioCommand &command)
+{
+    QString why;
+    if (input::checkNumber(command.hz, limits::kFrequencyRange, &why))
+        return true;
+    emit commandFailed(m_performer->text(command), tr("not sent: %1").arg(why));
+    return false;
+}
+
+bool ScriptedRadioLink::acceptMode(const RadioCommand &command)
+{
+    const QString text = m_performer->text(command);
+    if (!isModeName(command.mode)) {
+        emit commandFailed(input::loggableText(text, 60),
+                           tr("not sent: a mode is a Hamlib mode name of letters and digits (USB, FM, PKTUSB)"));
+        return false;
+    }
+    if (command.passbandHz < limits::kMinPassbandHz || command.passbandHz > limits::kMaxPassbandHz) {
+        emit commandFailed(text, tr("not sent: a passband is from %1 to %2 Hz (0: the mode's default)")
+                                     .arg(limits::kMinPassbandHz)
+                                     .arg(limits::kMaxPassbandHz));
+        return false;
+    }
+    return true;
+}
+
+void ScriptedRadioLink::submit(CommandKind kind, const RadioCommand &command)
+{
+    const QString text = m_performer->text(command);
+    if (m_state != State::Open) {
+        emit commandFailed(text, tr("not sent: %1 is not open").arg(m_uri));
+        return;
+    }
+    if (const QString why = m_performer->refusal(command); !why.isEmpty()) {
+        emit commandFailed(text, tr("not sent: %1").arg(why));
+        return;
+    }
+    m_newest[kind] = command;
+    m_pacer.submit(paced(Step::Set, kind, command));
+}
+
+void ScriptedRadioLink::setReceiveHz(double hz)
+{
+    const RadioCommand command = frequencyCommand(RadioCommand::Call::SetFrequency, RadioPath::Receive, hz);
+    if (acceptFrequency(command))
+        submit(CommandKind::ReceiveFrequency, command);
+}
+
+void ScriptedRadioLink::setTransmitHz(double hz)
+{
+    const RadioCommand command = frequencyCommand(RadioCommand::Call::SetFrequency, RadioPath::Transmit, hz);
+    if (acceptFrequency(command))
+        submit(CommandKind::TransmitFrequency, command);
+}
+
+void ScriptedRadioLink::setSplit(bool on)
+{
+    if (m_layout == VfoLayout::MainSub)
+        return; // Main and Sub are the two paths already: no split
+    RadioCommand command;
+    command.call = RadioCommand::Call::SetSplit;
+    command.on = on;
+    submit(CommandKind::Split, command);
+}
+
+void ScriptedRadioLink::setMode(const QString &mode, int passbandHz)
+{
+    RadioCommand command;
+    command.call = RadioCommand::Call::SetMode;
+    command.mode = mode;
+    command.passbandHz = passbandHz;
+    if (acceptMode(command))
+        submit(CommandKind::Mode, command);
+}
+
+void ScriptedRadioLink::setTransmitMode(const QString &mode, int passbandHz)
+{
+    // With Main/Sub the transmit VFO's own mode; with split, the split mode.
+    RadioCommand command;
+    command.call = RadioCommand::Call::SetMode;
+    command.path = RadioPath::Transmit;
+    command.mode = mode;
+    command.passbandHz = passbandHz;
+    if (acceptMode(command))
+        submit(CommandKind::TransmitMode, command);
+}
+
+void ScriptedRadioLink::readFrequencies()
+{
+    const RadioCommand command = frequencyCommand(RadioCommand::Call::ReadFrequency, RadioPath::Receive);
+    if (m_state != State::Open) {
+        emit commandFailed(m_performer->text(command), tr("not sent: %1 is not open").arg(m_uri));
+        return;
+    }
+    m_pacer.submit(paced(Step::ReadReceive, CommandKind::Read, command));
+}
+
+// --- The exchanges ---------------------------------------------------------
+
+PacedCommand ScriptedRadioLink::paced(Step step, CommandKind kind, const RadioCommand &command) const
+{
+    return PacedCommand{kind, m_performer->text(command), int(step)};
+}
+
+RadioCommand ScriptedRadioLink::commandFor(const PacedCommand &paced) const
+{
+    using Call = RadioCommand::Call;
+    switch (Step(paced.tag)) {
+    case Step::OpeningRead:
+    case Step::ReadReceive:
+        return frequencyCommand(Call::ReadFrequency, RadioPath::Receive);
+    case Step::ReadTransmit:
+        return frequencyCommand(Call::ReadFrequency, RadioPath::Transmit);
+    case Step::OpeningLatency:
+        return frequencyCommand(Call::SetFrequency, RadioPath::Receive, m_receiveRead.value_or(0));
+    case Step::OpeningStep:
+        return frequencyCommand(Call::ReadStep, RadioPath::Receive);
+    case Step::OpeningSplit:
+        return frequencyCommand(Call::ReadSplit, RadioPath::Receive);
+    case Step::Set:
+        break;
+    }
+    return m_newest.at(paced.kind);
+}
+
+void ScriptedRadioLink::onOpened()
+{
+    if (m_state != State::Opening)
+        return;
+    const RadioCommand read = frequencyCommand(RadioCommand::Call::ReadFrequency, RadioPath::Receive);
+    m_pacer.submit(paced(Step::OpeningRead, CommandKind::Read, read));
+}
+
+void ScriptedRadioLink::onReady(const PacedCommand &paced)
+{
+    m_onTheWire = commandFor(paced);
+    m_sentAt.start();
+    m_deadline.start(m_replyTimeoutMs);
+    emit commandSent(paced.text);
+    // A handler of commandSent may have closed the link.
+    if (m_state != State::Closed && m_pacer.inFlight())
+        m_performer->perform(m_onTheWire);
+}
+
+void ScriptedRadioLink::onAnswered(const RadioAnswer &answer)
+{
+    if (m_state == State::Closed || !m_pacer.inFlight())
+        return; // an answer that no longer has a command
+    m_deadline.stop();
+    const PacedCommand command = *m_pacer.inFlight();
+    finishExchange(command, answer);
+}
+
+void ScriptedRadioLink::onDeadline()
+{
+    const QString command = m_pacer.inFlight() ? m_pacer.inFlight()->text : QString();
+    fail(tr("%1: %2 did not answer '%3' within %4 s")
+             .arg(label(), m_performer->peerName(), command)
+             .arg(m_replyTimeoutMs / 1000.0));
+}
+
+bool ScriptedRadioLink::givesUp(int code)
+{
+    if (code == -int(HamlibError::Timeout))
+        return ++m_timeoutsInARow >= limits::kTimeoutsBeforeClosing;
+    m_timeoutsInARow = 0;
+    return code == -int(HamlibError::Io) || code == -int(HamlibError::Protocol);
+}
+
+void ScriptedRadioLink::finishExchange(const PacedCommand &command, const RadioAnswer &answer)
+{
+    const Step step = Step(command.tag);
+    const RadioCommand performed = m_onTheWire; // the pacer may put the next one on the wire below
+    Outcome outcome;
+    outcome.failure = answer.code != 0 ? answer.why : QString();
+    const bool gone = givesUp(answer.code);
+    if (step == Step::OpeningRead) {
+        // Without the radio's frequency there is nothing to time or to steer from.
+        const std::optional<double> hz = valueIn(answer, limits::kFrequencyRange, &outcome.failure);
+        if (!hz) {
+            fail(tr("%1: cannot read the frequency: %2").arg(label(), outcome.failure));
+            return;
+        }
+        m_receiveRead = hz;
+        outcome.next = paced(Step::OpeningLatency, CommandKind::ReceiveFrequency,
+                             frequencyCommand(RadioCommand::Call::SetFrequency, RadioPath::Receive, *hz));
+    } else if (gone) {
+        QString reason = tr("%1: %2 %3").arg(label(), command.text, answer.why);
+        if (answer.code == -int(HamlibError::Timeout))
+            reason += tr(", %1 times in a row").arg(m_timeoutsInARow);
+        fail(reason);
+        return;
+    } else if (step == Step::OpeningLatency || step == Step::OpeningStep || step == Step::OpeningSplit) {
+        takeOpeningAnswer(step, answer, outcome);
+    } else {
+        takeAnswer(step, performed, answer, outcome);
+    }
+
+    m_pacer.finished(outcome.next);
+    if (!outcome.failure.isEmpty())
+        emit commandFailed(command.text, outcome.failure);
+    if (outcome.read)
+        emit frequenciesRead(*outcome.read);
+    if (outcome.opened)
+        becomeOpen();
+}
+
+void ScriptedRadioLink::takeOpeningAnswer(Step step, const RadioAnswer &answer, Outcome &outcome)
+{
+    const bool refused = answer.code != 0;
+    switch (step) {
+    case Step::OpeningLatency:
+        if (!refused)
+            m_latencyMs = int(m_sentAt.elapsed()); // why the set: radiolimits.h
+        outcome.next = paced(Step::OpeningStep, CommandKind::Read,
+                             frequencyCommand(RadioCommand::Call::ReadStep, RadioPath::Receive));
+        return;
+    case Step::OpeningStep:
+        if (refused)
+            outcome.failure.clear(); // a backend without get_ts: the step is not known, no fault of the link
+        else if (const std::optional<double> hz = valueIn(answer, limits::kStepRange, &outcome.failure); hz && *hz > 0)
+            m_tuningStepHz = *hz;
+        // Whether split is on already (the operator's, or a pass before):
+        // reads then ask the transmit frequency too.
+        if (m_layout == VfoLayout::Split && m_performer->canReadSplit())
+            outcome.next = paced(Step::OpeningSplit, CommandKind::Read,
+                                 frequencyCommand(RadioCommand::Call::ReadSplit, RadioPath::Receive));
+        else
+            outcome.opened = true;
+        return;
+    case Step::OpeningSplit:
+        outcome.failure.clear(); // a backend without get_split_vfo: split is then taken as off
+        m_splitOn = !refused && answer.value && answer.value->trimmed() == QLatin1String("1");
+        outcome.opened = true;
+        return;
+    default:
+        return;
+    }
+}
+
+void ScriptedRadioLink::takeAnswer(Step step, const RadioCommand &performed, const RadioAnswer &answer,
+                                   Outcome &outcome)
+{
+    if (step == Step::Set) {
+        if (answer.code == 0 && performed.call == RadioCommand::Call::SetSplit)
+            m_splitOn = performed.on;
+        return;
+    }
+    const std::optional<double> hz = valueIn(answer, limits::kFrequencyRange, &outcome.failure);
+    if (!hz)
+        return; // a half read is no reading
+    if (step == Step::ReadTransmit) {
+        outcome.read = RadioFrequencies{m_receiveRead, hz};
+    } else if (m_layout == VfoLayout::MainSub || m_splitOn) {
+        m_receiveRead = hz;
+        outcome.next = paced(Step::ReadTransmit, CommandKind::Read,
+                             frequencyCommand(RadioCommand::Call::ReadFrequency, RadioPath::Transmit));
+    } else {
+        outcome.read = RadioFrequencies{hz, std::nullopt};
+    }
+}
+
+void ScriptedRadioLink::becomeOpen()
+{
+    if (m_state != State::Opening)
+        return; // closed by a handler of the signals before
+    // The frequency as the operator reads it off the dial.
+    const QString where = m_receiveRead ? tr(" at %1").arg(groupedMegahertz(*m_receiveRead)) : QString();
+    setState(State::Open, tr("%1: open%2; a set answered in %3 ms").arg(label(), where).arg(m_latencyMs));
+}
+
+} // namespace slew::radio
