@@ -35,144 +35,39 @@
 // `+f Main`, and no split; without VFO mode the link does not open, and says
 // to start rigctld with -o.
 //
-// Opening: connect, read `+f`, then time `+F` with the frequency just read
+// Opening: connect, ask `+\chk_vfo`, then the exchange script's opening
+// (scriptedradiolink.h): read `+f`, time `+F` with the frequency just read
 // to its RPRT, ask `+n`, and (of a peer answering in the extended form)
-// `+s`, whether split is on already; then Open. The latency is the set's, not the
-// read's: Hamlib answers get_freq from its cache (500 ms by default)
-// without a byte to the radio, while a set always reaches the radio, and
-// above 100 MHz Hamlib reads the frequency back before it answers
-// (rig_set_freq), so a set's round trip is the command-to-read-back the
-// Doppler steering lives with. The dummy rig shows the difference: `f` in
-// 0.1 ms, `F` in 40 ms. Setting the frequency the radio just reported
-// changes nothing on it. A tuning step of 0 (none set) or a refused get_ts
-// (a backend without it answers RPRT -11) leaves the step at 1 Hz.
+// `+s`, whether split is on already. The dummy rig shows why the set is
+// timed and not the read (radiolimits.h): `f` in 0.1 ms, `F` in 40 ms.
 //
-// Commands are paced (commandpacer.h). Commands given while the link is not
-// open are refused through commandFailed(). A refusal (`RPRT -9`) or a bad
-// value in a well-formed answer (`Frequency: nan`) is reported through
+// The script paces, checks and gives up (scriptedradiolink.h); the wire is
+// rigctldperformer.h's. A refusal (`RPRT -9`) or a bad value in a
+// well-formed answer (`Frequency: nan`) is reported through
 // commandFailed() and changes nothing. An answer that fits no form, a line
 // past kMaxLineBytes, words nobody asked for, or silence past the reply
-// timeout (10 s unless set) cannot be matched to commands any more: the
-// link closes with the reason. A lost connection closes it too; reopening
-// is the owner's, with open(). Reads ask the transmit frequency only once
-// split was turned on over this connection.
+// timeout cannot be matched to commands any more: the link closes with the
+// reason. A lost connection closes it too.
 
-#include "commandpacer.h"
-#include "radiolink.h"
-#include "rigctldreply.h"
-
-#include <QElapsedTimer>
-#include <QTcpSocket>
-#include <QTimer>
-
-#include <memory>
-#include <optional>
+#include "rigctldperformer.h"
+#include "scriptedradiolink.h"
 
 namespace slew::radio {
 
-class RigctldRadioLink : public RadioLink {
+class RigctldRadioLink : public ScriptedRadioLink {
     Q_OBJECT
 public:
     static constexpr quint16 kDefaultPort = 4532;
-    static constexpr int kConnectTimeoutMs = 5000;
-    // Above Hamlib's own give-up time for a silent radio (its timeout times
-    // its retries, a few seconds), so a slow radio's RPRT -5 comes first.
-    static constexpr int kDefaultReplyTimeoutMs = 10000;
-    static constexpr qsizetype kMaxLineBytes = 256;
-    // What Slew tunes: from 1 Hz to 1 THz (a 10 GHz transverter's too).
-    static constexpr double kMinHz = 1;
-    static constexpr double kMaxHz = 1e12;
 
     RigctldRadioLink(QString uri, QString host, quint16 port, QObject *parent = nullptr);
-    ~RigctldRadioLink() override;
 
-    void open() override;
-    void close() override;
-    State state() const override { return m_state; }
-    QString uri() const override { return m_uri; }
-
-    void setReceiveHz(double hz) override;
-    void setTransmitHz(double hz) override;
-    void setSplit(bool on) override;
-    void setMode(const QString &mode, int passbandHz) override;
-    void setTransmitMode(const QString &mode, int passbandHz) override;
-    void readFrequencies() override;
-    QString setVfoLayout(VfoLayout layout) override;
-    VfoLayout vfoLayout() const override { return m_layout; }
+    QString host() const { return rigctld().host(); }
+    quint16 port() const { return rigctld().port(); }
     // rigctld was started in VFO mode (-o): every command names its VFO.
-    bool inVfoMode() const { return m_vfoMode; }
-
-    double tuningStepHz() const override { return m_tuningStepHz; }
-    int latencyMs() const override { return m_latencyMs; }
-    void setMinimumIntervalMs(int ms) override { m_pacer.setMinimumIntervalMs(ms); }
-    void dropWaiting() override { m_pacer.dropWaiting(); }
-    // How long a command may go unanswered before the link gives up on it.
-    void setReplyTimeoutMs(int ms) { m_replyTimeoutMs = qMax(ms, 1); }
-
-    QString host() const { return m_host; }
-    quint16 port() const { return m_port; }
-
-    // For tests and the traffic view: what the pacer holds.
-    const CommandPacer &pacer() const { return m_pacer; }
+    bool inVfoMode() const { return rigctld().inVfoMode(); }
 
 private:
-    // What each exchange is, carried through the pacer as its tag.
-    enum class Exchange {
-        OpeningVfoMode,
-        OpeningRead,
-        OpeningLatency,
-        OpeningStep,
-        OpeningSplit,
-        SetReceive,
-        SetTransmit,
-        SetSplitOn,
-        SetSplitOff,
-        SetMode,
-        SetTransmitMode,
-        ReadReceive,
-        ReadTransmit,
-    };
-
-    RigctldReply replyFor(Exchange exchange, RigctldReply::Form form) const;
-    void submit(CommandKind kind, Exchange exchange, const QString &text);
-    void submitMode(CommandKind kind, Exchange exchange, const QString &verb, const QString &mode, int passbandHz);
-    // A command line: `+F 145800000`, or in VFO mode `+F VFOA 145800000`
-    // (`+F Sub 145800000` for the receive path with Main/Sub).
-    enum class Path { Receive, Transmit };
-    QString line(const char *verb, Path path, const QString &arguments = {}) const;
-    // The answer to \chk_vfo: one line of its own, in no form of RigctldReply's.
-    void takeVfoModeAnswer(QByteArrayView line);
-    bool acceptFrequency(const QString &command, double hz);
-    void send(const PacedCommand &command);
-    void onConnected();
-    void onSocketError();
-    void onReadyRead();
-    void onDeadline();
-    void takeLine(QByteArrayView line);
-    void finishExchange(const PacedCommand &command, const RigctldReply &reply);
-    void becomeOpen();
-    void setState(State state, const QString &detail);
-    // Closes with the reason; the command on the wire, if any, failed with it.
-    void fail(const QString &reason);
-
-    QString m_uri;
-    VfoLayout m_layout = VfoLayout::Split;
-    bool m_vfoMode = false;
-    QString m_host;
-    quint16 m_port;
-    QTcpSocket m_socket;
-    CommandPacer m_pacer;
-    QTimer m_deadline; // for the connection, then for each answer
-    QElapsedTimer m_sentAt;
-    std::unique_ptr<RigctldReply> m_reply; // the answer being read, while a command is out
-    RigctldReply::Form m_peerForm = RigctldReply::Form::Either; // as its first answer showed
-    State m_state = State::Closed;
-    bool m_connected = false; // this connection got as far as connected()
-    std::optional<double> m_receiveRead; // a read's first half, until its second comes
-    bool m_splitOn = false;              // as the radio last accepted
-    double m_tuningStepHz = 1.0;
-    int m_latencyMs = 0;
-    int m_replyTimeoutMs = kDefaultReplyTimeoutMs;
+    const RigctldPerformer &rigctld() const { return static_cast<const RigctldPerformer &>(performer()); }
 };
 
 } // namespace slew::radio
