@@ -5,10 +5,12 @@
 // of a socat pseudo-terminal pair with nothing answering at the other, for
 // a radio that keeps Hamlib in its timeouts (the IC-9700 for 10 to 20 s):
 // the event loop runs on throughout, and the link can be destroyed in the
-// middle of it.
+// middle of it. And, over the dummy rig, the contract every link that
+// reads its radio back keeps (radiolinkcontract.h).
 
 #include "../common/hamlibprocess.h"
 #include "../common/ptypair.h"
+#include "radiolinkcontract.h"
 #include "radio/hamlibradio.h"
 #include "radio/hamliburi.h"
 #include "radio/radiolinks.h"
@@ -105,6 +107,8 @@ private slots:
     void silentRadioFailsToOpen();
     void silentRadioNeverHoldsTheEventLoop();
     void destroyedDuringSlowOpen();
+    void contract_data() { radiolinkcontract::addContractRows(); }
+    void contract();
 
 private:
     // A link made from the URI, open.
@@ -533,6 +537,17 @@ void HamlibRadioTest::destroyedDuringSlowOpen()
           destroyMs, outlivedMs, watch.longestGapMs());
     QVERIFY2(outlivedMs > 2 * kMaxLoopGapMs, qPrintable(QString::number(outlivedMs)));
     QVERIFY2(watch.longestGapMs() < kMaxLoopGapMs, qPrintable(QString::number(watch.longestGapMs())));
+}
+
+void HamlibRadioTest::contract()
+{
+    QFETCH(QString, check);
+    QString error;
+    std::unique_ptr<RadioLink> made = makeRadioLink("sim:", &error);
+    QVERIFY2(made, qPrintable(error));
+    auto *link = qobject_cast<HamlibRadioLink *>(made.get());
+    QVERIFY(link);
+    radiolinkcontract::checkContract(check, *link);
 }
 
 QTEST_GUILESS_MAIN(HamlibRadioTest)

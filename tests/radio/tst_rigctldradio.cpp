@@ -2,9 +2,11 @@
 // The rigctld:// radio link: URIs; against a fake rigctld in this file
 // (pacing, the opening, refusals, bad answers, a peer that breaks the
 // protocol); and against Hamlib's real rigctld with its dummy rig (model
-// 1), checked through a second connection of our own.
+// 1), checked through a second connection of our own; and the contract
+// every link that reads its radio back keeps (radiolinkcontract.h).
 
 #include "../common/hamlibprocess.h"
+#include "radiolinkcontract.h"
 #include "radio/radiolinks.h"
 #include "radio/rigctldradio.h"
 
@@ -159,6 +161,8 @@ private slots:
     void realRigctldGoingAwayCloses();
     void vfoModeNamesTheVfo();
     void realRigctldInVfoModeMainAndSub();
+    void contract_data() { radiolinkcontract::addContractRows(); }
+    void contract();
 
 private:
     // A link to the fake, open.
@@ -831,6 +835,19 @@ void RigctldRadioTest::realRigctldInVfoModeMainAndSub()
     QVERIFY2(states.last().at(1).toString().contains("start it with -o"), qPrintable(states.last().at(1).toString()));
     QVERIFY(endHamlibDaemon(rigctld));
     QVERIFY(endHamlibDaemon(plain));
+}
+
+void RigctldRadioTest::contract()
+{
+    QFETCH(QString, check);
+    QProcess rigctld;
+    const quint16 port = startHamlibDaemon(rigctld, "rigctld", {"-m", "1"});
+    QVERIFY(port);
+    {
+        RigctldRadioLink link(QStringLiteral("rigctld://127.0.0.1:%1").arg(port), "127.0.0.1", port);
+        radiolinkcontract::checkContract(check, link);
+    }
+    QVERIFY(endHamlibDaemon(rigctld));
 }
 
 QTEST_GUILESS_MAIN(RigctldRadioTest)
