@@ -35,6 +35,10 @@ struct PacedCommand {
     CommandKind kind = CommandKind::Read;
     QString text; // what goes on the wire, without its line end
     int tag = 0;  // the link's own mark of what this exchange is; untouched here
+    // What a setting carries, for a link that hands it on as a value rather
+    // than as text (the controller's UP/DN): the newest, as the command is.
+    double hz = 0;
+    QString mode{};
 };
 
 class CommandPacer : public QObject {

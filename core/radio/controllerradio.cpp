@@ -69,43 +69,41 @@ bool ControllerRadioLink::canReadBack() const
     return false; // the controller tells what it was told, not where the dial is
 }
 
+void ControllerRadioLink::submit(const PacedCommand &command)
+{
+    // Refused in words, as every radio link refuses, rather than dropped.
+    if (m_state != State::Open) {
+        emit commandFailed(command.text, tr("not sent: %1 is not open").arg(uri()));
+        return;
+    }
+    m_pacer.submit(command);
+}
+
 void ControllerRadioLink::setReceiveHz(double hz)
 {
-    if (m_state != State::Open)
-        return;
-    m_receiveHz = hz;
-    m_pacer.submit({CommandKind::ReceiveFrequency, QStringLiteral("DN%1").arg(hz, 0, 'f', 0)});
+    submit({CommandKind::ReceiveFrequency, QStringLiteral("DN%1").arg(hz, 0, 'f', 0), 0, hz, {}});
 }
 
 void ControllerRadioLink::setTransmitHz(double hz)
 {
-    if (m_state != State::Open)
-        return;
-    m_transmitHz = hz;
-    m_pacer.submit({CommandKind::TransmitFrequency, QStringLiteral("UP%1").arg(hz, 0, 'f', 0)});
+    submit({CommandKind::TransmitFrequency, QStringLiteral("UP%1").arg(hz, 0, 'f', 0), 0, hz, {}});
 }
 
 void ControllerRadioLink::setMode(const QString &mode, int)
 {
-    if (m_state != State::Open)
-        return;
-    m_mode = mode;
-    m_pacer.submit({CommandKind::Mode, QStringLiteral("DM%1").arg(mode)});
+    submit({CommandKind::Mode, QStringLiteral("DM%1").arg(mode), 0, 0, mode});
 }
 
 void ControllerRadioLink::setTransmitMode(const QString &mode, int)
 {
-    if (m_state != State::Open)
-        return;
-    m_transmitMode = mode;
-    m_pacer.submit({CommandKind::TransmitMode, QStringLiteral("UM%1").arg(mode)});
+    submit({CommandKind::TransmitMode, QStringLiteral("UM%1").arg(mode), 0, 0, mode});
 }
 
 void ControllerRadioLink::readFrequencies()
 {
-    if (m_state != State::Open || !m_session->stationRadio()->canRead())
-        return;
-    m_pacer.submit({CommandKind::Read, QStringLiteral("DN UP")});
+    if (!m_session->stationRadio()->canRead())
+        return; // Easycomm I takes settings blind
+    submit({CommandKind::Read, QStringLiteral("DN UP")});
 }
 
 void ControllerRadioLink::send(const PacedCommand &command)
@@ -114,16 +112,16 @@ void ControllerRadioLink::send(const PacedCommand &command)
     session::CommandResult result;
     switch (command.kind) {
     case CommandKind::ReceiveFrequency:
-        result = radio->setFrequency(StationRadio::Path::Downlink, m_receiveHz); // the newest
+        result = radio->setFrequency(StationRadio::Path::Downlink, command.hz); // the newest: it replaced any older
         break;
     case CommandKind::TransmitFrequency:
-        result = radio->setFrequency(StationRadio::Path::Uplink, m_transmitHz);
+        result = radio->setFrequency(StationRadio::Path::Uplink, command.hz);
         break;
     case CommandKind::Mode:
-        result = radio->setMode(StationRadio::Path::Downlink, m_mode);
+        result = radio->setMode(StationRadio::Path::Downlink, command.mode);
         break;
     case CommandKind::TransmitMode:
-        result = radio->setMode(StationRadio::Path::Uplink, m_transmitMode);
+        result = radio->setMode(StationRadio::Path::Uplink, command.mode);
         break;
     case CommandKind::Split:
         break;

@@ -50,6 +50,7 @@ public:
 
 private:
     void setState(State state, const QString &detail);
+    void submit(const PacedCommand &command);
     void send(const PacedCommand &command);
     void onReported(int path, double hz);
     void finishRead(bool ok, const QString &why);
@@ -57,8 +58,6 @@ private:
     session::RotatorSession *m_session;
     CommandPacer m_pacer;
     State m_state = State::Closed;
-    double m_receiveHz = 0, m_transmitHz = 0; // the newest asked for
-    QString m_mode, m_transmitMode;
     // A read on its way: what has come back of it, and since when.
     RadioFrequencies m_reading;
     bool m_readInFlight = false;

@@ -152,6 +152,18 @@ private slots:
         QCOMPARE(radio.state(), RadioLink::State::Closed);
         QVERIFY2(state.last().at(1).toString().contains(QStringLiteral("no station radio commands")),
                  qPrintable(state.last().at(1).toString()));
+        // A setting on the closed link is refused in words, as every radio
+        // link refuses, and nothing reaches the wire.
+        QSignalSpy failed(&radio, &RadioLink::commandFailed);
+        QSignalSpy sent(&session, &RotatorSession::bytesSent);
+        radio.setReceiveHz(437.8e6);
+        radio.setMode(QStringLiteral("FM"), 0);
+        QCOMPARE(failed.size(), 2);
+        QCOMPARE(failed.first().at(0).toString(), QStringLiteral("DN437800000"));
+        QCOMPARE(failed.first().at(1).toString(), QStringLiteral("not sent: controller is not open"));
+        for (const auto &args : sent)
+            QVERIFY2(!args.at(0).toByteArray().startsWith("DN") && !args.at(0).toByteArray().startsWith("DM"),
+                     args.at(0).toByteArray().constData());
     }
 };
 
