@@ -1,14 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The limits every radio link that reads its radio back keeps, whatever
-// carries its commands (rigctld over TCP, libhamlib in process): what goes
-// to a radio, what is taken from one, and how long an answer is waited
-// for. One place, so the two backends cannot drift apart; the exchange
-// script (scriptedradiolink.h) and the backends (rigctldperformer.h,
-// hamlibperformer.h) read them here.
+// The limits radio links keep, whatever carries their commands (rigctld
+// over TCP, libhamlib in process, the rotator controller's UP/DN): what
+// goes to a radio, what is taken from one, and how long an answer is
+// waited for. One place, so the backends cannot drift apart; the exchange
+// script (scriptedradiolink.h), its backends (rigctldperformer.h,
+// hamlibperformer.h) and the controller's link (controllerradio.h) read
+// them here. What goes to a radio is refused by every link in the same
+// words (frequencyRefusal(), modeRefusal()).
 
 #include "input/finitenumber.h"
 
+#include <QString>
 #include <QtGlobal>
 
 namespace slew::radio::limits {
@@ -60,5 +63,13 @@ inline constexpr int kConnectTimeoutMs = 5000;
 // above 100 MHz Hamlib reads the frequency back before it answers, so a
 // set's round trip is the command-to-read-back the Doppler steering lives
 // with. Timed from the moment the command leaves the link to its answer.
+
+// Why no radio is given this frequency, as every link says it when it
+// refuses one ("not sent: 0.4 Hz is outside 1..1e+12 Hz"); empty when it
+// is inside kFrequencyRange.
+QString frequencyRefusal(double hz);
+// The same for a mode name and its passband (kMaxModeChars,
+// kMinPassbandHz..kMaxPassbandHz).
+QString modeRefusal(const QString &mode, int passbandHz);
 
 } // namespace slew::radio::limits

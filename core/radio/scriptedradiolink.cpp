@@ -13,18 +13,6 @@ namespace {
 
 using protocol::HamlibError;
 
-// Letters and digits only, not too long (radiolimits.h says why).
-bool isModeName(const QString &mode)
-{
-    if (mode.isEmpty() || mode.size() > limits::kMaxModeChars)
-        return false;
-    for (const QChar c : mode) {
-        if (!(c.isDigit() || (c >= u'A' && c <= u'Z') || (c >= u'a' && c <= u'z')))
-            return false;
-    }
-    return true;
-}
-
 // The number a read answered, in `range`; else nothing, and *failure says
 // why (a refusal has said it already).
 std::optional<double> valueIn(const RadioAnswer &answer, const input::NumberRange &range, QString *failure)
@@ -133,30 +121,24 @@ QString ScriptedRadioLink::setVfoLayout(VfoLayout layout)
 
 // --- What the owner asks ---------------------------------------------------
 
+// The shared limits' words (radiolimits.h), as the controller's link says them too.
 bool ScriptedRadioLink::acceptFrequency(const RadioCommand &command)
 {
-    QString why;
-    if (input::checkNumber(command.hz, limits::kFrequencyRange, &why))
+    const QString why = limits::frequencyRefusal(command.hz);
+    if (why.isEmpty())
         return true;
-    emit commandFailed(m_performer->text(command), tr("not sent: %1").arg(why));
+    emit commandFailed(m_performer->text(command), why);
     return false;
 }
 
 bool ScriptedRadioLink::acceptMode(const RadioCommand &command)
 {
-    const QString text = m_performer->text(command);
-    if (!isModeName(command.mode)) {
-        emit commandFailed(input::loggableText(text, 60),
-                           tr("not sent: a mode is a Hamlib mode name of letters and digits (USB, FM, PKTUSB)"));
-        return false;
-    }
-    if (command.passbandHz < limits::kMinPassbandHz || command.passbandHz > limits::kMaxPassbandHz) {
-        emit commandFailed(text, tr("not sent: a passband is from %1 to %2 Hz (0: the mode's default)")
-                                     .arg(limits::kMinPassbandHz)
-                                     .arg(limits::kMaxPassbandHz));
-        return false;
-    }
-    return true;
+    const QString why = limits::modeRefusal(command.mode, command.passbandHz);
+    if (why.isEmpty())
+        return true;
+    // A mode name that is refused may hold a line end or a NUL.
+    emit commandFailed(input::loggableText(m_performer->text(command), 60), why);
+    return false;
 }
 
 void ScriptedRadioLink::submit(CommandKind kind, const RadioCommand &command)
