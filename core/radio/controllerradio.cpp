@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "controllerradio.h"
 
+#include "input/logtext.h"
+#include "radiolimits.h"
 #include "session/rotatorsession.h"
 #include "session/stationradio.h"
 
@@ -14,6 +16,14 @@ namespace {
 // A reading the controller has not answered by then is given up: the
 // session's own reply timeout and retries are well inside it.
 constexpr int kReadTimeoutMs = 3000;
+
+// What the Easycomm tables' lines carry, narrower than the shared limits:
+// DN/UP take whole hertz of ten digits at most, DM/UM a mode of one to
+// eight letters or digits. session/stationradio.cpp refuses the same on
+// the line; checked here too so the refusal comes when the value is given
+// (the pacer may send it much later), in words the operator reads.
+constexpr double kLineHighestHz = 9999999999.0;
+constexpr qsizetype kLineModeChars = 8;
 
 } // namespace
 
@@ -79,30 +89,66 @@ void ControllerRadioLink::submit(const PacedCommand &command)
     m_pacer.submit(command);
 }
 
+void ControllerRadioLink::setFrequency(CommandKind kind, const QString &line, double hz)
+{
+    // The shared limits first, so what no radio takes is refused in the
+    // words every link uses; then what the line carries.
+    const QString text = line + QString::number(hz, 'f', 0);
+    QString why = limits::frequencyRefusal(hz);
+    if (why.isEmpty() && hz > kLineHighestHz)
+        why = tr("not sent: the controller's %1 line carries at most ten digits of hertz (%2 Hz)")
+                  .arg(line)
+                  .arg(kLineHighestHz, 0, 'f', 0);
+    if (!why.isEmpty()) {
+        emit commandFailed(text, why);
+        return;
+    }
+    submit({kind, text, 0, hz, {}});
+}
+
+void ControllerRadioLink::setPathMode(CommandKind kind, const QString &line, const QString &mode, int passbandHz)
+{
+    // The passband does not reach the controller (DM/UM carry a mode name
+    // only), but one out of range is refused as every link refuses it.
+    const QString text = input::loggableText(line + mode, 60); // a refused name may hold a line end
+    QString why = limits::modeRefusal(mode, passbandHz);
+    if (why.isEmpty() && mode.size() > kLineModeChars)
+        why = tr("not sent: the controller's %1 line carries a mode of at most %2 letters or digits")
+                  .arg(line)
+                  .arg(kLineModeChars);
+    if (!why.isEmpty()) {
+        emit commandFailed(text, why);
+        return;
+    }
+    submit({kind, line + mode, 0, 0, mode});
+}
+
 void ControllerRadioLink::setReceiveHz(double hz)
 {
-    submit({CommandKind::ReceiveFrequency, QStringLiteral("DN%1").arg(hz, 0, 'f', 0), 0, hz, {}});
+    setFrequency(CommandKind::ReceiveFrequency, QStringLiteral("DN"), hz);
 }
 
 void ControllerRadioLink::setTransmitHz(double hz)
 {
-    submit({CommandKind::TransmitFrequency, QStringLiteral("UP%1").arg(hz, 0, 'f', 0), 0, hz, {}});
+    setFrequency(CommandKind::TransmitFrequency, QStringLiteral("UP"), hz);
 }
 
-void ControllerRadioLink::setMode(const QString &mode, int)
+void ControllerRadioLink::setMode(const QString &mode, int passbandHz)
 {
-    submit({CommandKind::Mode, QStringLiteral("DM%1").arg(mode), 0, 0, mode});
+    setPathMode(CommandKind::Mode, QStringLiteral("DM"), mode, passbandHz);
 }
 
-void ControllerRadioLink::setTransmitMode(const QString &mode, int)
+void ControllerRadioLink::setTransmitMode(const QString &mode, int passbandHz)
 {
-    submit({CommandKind::TransmitMode, QStringLiteral("UM%1").arg(mode), 0, 0, mode});
+    setPathMode(CommandKind::TransmitMode, QStringLiteral("UM"), mode, passbandHz);
 }
 
 void ControllerRadioLink::readFrequencies()
 {
-    if (!m_session->stationRadio()->canRead())
-        return; // Easycomm I takes settings blind
+    // Refused while closed, as every command is; open, Easycomm I answers
+    // nothing (it takes settings blind), so there is nothing to ask.
+    if (m_state == State::Open && !m_session->stationRadio()->canRead())
+        return;
     submit({CommandKind::Read, QStringLiteral("DN UP")});
 }
 

@@ -12,6 +12,12 @@
 // is not followed on this path (canReadBack() is false); readings still
 // check what the controller holds, where the dialect answers them
 // (Easycomm II and later; Easycomm I takes settings blind).
+//
+// A setting is checked before it is queued: against the limits every radio
+// link keeps (radiolimits.h), refused in the same words as the others, and
+// then against what the controller's line carries (ten digits of hertz, a
+// mode of eight letters or digits), so a value no controller can take is
+// refused in words when it is given, never dropped on the way.
 
 #include "commandpacer.h"
 #include "radiolink.h"
@@ -48,8 +54,13 @@ public:
     void setMinimumIntervalMs(int ms) override { m_pacer.setMinimumIntervalMs(ms); }
     void dropWaiting() override { m_pacer.dropWaiting(); }
 
+    // For tests and the traffic view: what the pacer holds.
+    const CommandPacer &pacer() const { return m_pacer; }
+
 private:
     void setState(State state, const QString &detail);
+    void setFrequency(CommandKind kind, const QString &line, double hz);
+    void setPathMode(CommandKind kind, const QString &line, const QString &mode, int passbandHz);
     void submit(const PacedCommand &command);
     void send(const PacedCommand &command);
     void onReported(int path, double hz);

@@ -32,6 +32,26 @@ std::optional<double> approaching(double julian)
     return -6.0 + 12.0 * (julian * 86400.0) / 600.0; // km/s, over ten minutes
 }
 
+QStringList texts(const QSignalSpy &spy, int column)
+{
+    QStringList out;
+    for (const QList<QVariant> &args : spy)
+        out << args.at(column).toString();
+    return out;
+}
+
+// A session on the in-process simulator (Easycomm II, which answers
+// DN/UP), connected, with its clock pumped by the event loop.
+bool connectToSimulator(RotatorSession &session)
+{
+    slew::model::RotatorProfile profile;
+    profile.dialect = slew::protocol::Dialect::Easycomm2;
+    session.setProfile(profile);
+    session.connectTo(QStringLiteral("sim:?clock=manual&dialect=easycomm2"));
+    (new SimulatorPump(0.005, &session))->follow(&session);
+    return runEventLoopUntil([&] { return session.isConnected() && session.capabilities().probed; }, 10000);
+}
+
 } // namespace
 
 class ControllerRadioTest : public QObject {
@@ -106,6 +126,39 @@ private slots:
         radio.setTransmitMode("LSB", 0);
         QVERIFY(runEventLoopUntil([&] { return record().contains("DMUSB") && record().contains("UMLSB"); }, 5000));
         session.disconnectFromRotator();
+    }
+
+    // What the shared limits allow but the controller's lines cannot carry
+    // (ten digits of hertz, a mode of eight characters) is refused in words
+    // when given, and never reaches the wire; what they carry goes.
+    void refusesWhatItsLinesCannotCarry()
+    {
+        RotatorSession session;
+        QVERIFY(connectToSimulator(session));
+        ControllerRadioLink radio(&session);
+        radio.open();
+        QTRY_VERIFY(!radio.pacer().isBusy()); // the opening's reading is in
+        QSignalSpy failed(&radio, &RadioLink::commandFailed);
+        QSignalSpy bytes(&session, &RotatorSession::bytesSent);
+        radio.setReceiveHz(2e10);
+        radio.setTransmitHz(9999999999.6); // eleven digits once rounded
+        radio.setMode("PKTUSBWIDE", 0);
+        radio.setTransmitMode("PKTLSBWIDE", 0);
+        QCOMPARE(texts(failed, 0),
+                 (QStringList{"DN20000000000", "UP10000000000", "DMPKTUSBWIDE", "UMPKTLSBWIDE"}));
+        QCOMPARE(texts(failed, 1),
+                 (QStringList{"not sent: the controller's DN line carries at most ten digits of hertz (9999999999 Hz)",
+                              "not sent: the controller's UP line carries at most ten digits of hertz (9999999999 Hz)",
+                              "not sent: the controller's DM line carries a mode of at most 8 letters or digits",
+                              "not sent: the controller's UM line carries a mode of at most 8 letters or digits"}));
+        radio.setReceiveHz(9999999999);
+        radio.setMode("PKTUSB", 0);
+        QCOMPARE(failed.count(), 4);
+        QByteArray wire;
+        for (const auto &args : bytes)
+            wire += args.at(0).toByteArray();
+        QVERIFY2(wire.contains("DN9999999999") && wire.contains("DMPKTUSB"), wire.constData());
+        QVERIFY2(!wire.contains("DN2") && !wire.contains("UP1") && !wire.contains("WIDE"), wire.constData());
     }
 
     void easycommOneIsSteeredBlind()
