@@ -3,11 +3,13 @@
 // through the rotator session to slew-sim, a real process on TCP, whose
 // record of what it received shows the frequencies; and its answers to
 // `DN`/`UP` read back through the same link. Easycomm I takes the
-// settings blind.
+// settings blind. And the contract every radio link keeps
+// (radiolinkcontract.h), over a session on the simulator in process.
 
 #include "../common/simulatorpump.h"
 #include "../sim/slewsimprocess.h"
 #include "linkschemes.h"
+#include "radiolinkcontract.h"
 #include "radio/controllerradio.h"
 #include "radio/dopplersteering.h"
 #include "session/rotatorsession.h"
@@ -30,14 +32,6 @@ namespace {
 std::optional<double> approaching(double julian)
 {
     return -6.0 + 12.0 * (julian * 86400.0) / 600.0; // km/s, over ten minutes
-}
-
-QStringList texts(const QSignalSpy &spy, int column)
-{
-    QStringList out;
-    for (const QList<QVariant> &args : spy)
-        out << args.at(column).toString();
-    return out;
 }
 
 // A session on the in-process simulator (Easycomm II, which answers
@@ -128,6 +122,17 @@ private slots:
         session.disconnectFromRotator();
     }
 
+    void contract_data() { radiolinkcontract::addContractRows(); }
+    void contract()
+    {
+        QFETCH(QString, check);
+        RotatorSession session;
+        QVERIFY(connectToSimulator(session));
+        ControllerRadioLink link(&session);
+        // Its settings have no answer, and UP is a path of its own: read always.
+        radiolinkcontract::checkEveryLinkContract(check, {link, link.pacer(), false, true});
+    }
+
     // What the shared limits allow but the controller's lines cannot carry
     // (ten digits of hertz, a mode of eight characters) is refused in words
     // when given, and never reaches the wire; what they carry goes.
@@ -144,9 +149,9 @@ private slots:
         radio.setTransmitHz(9999999999.6); // eleven digits once rounded
         radio.setMode("PKTUSBWIDE", 0);
         radio.setTransmitMode("PKTLSBWIDE", 0);
-        QCOMPARE(texts(failed, 0),
+        QCOMPARE(radiolinkcontract::texts(failed, 0),
                  (QStringList{"DN20000000000", "UP10000000000", "DMPKTUSBWIDE", "UMPKTLSBWIDE"}));
-        QCOMPARE(texts(failed, 1),
+        QCOMPARE(radiolinkcontract::texts(failed, 1),
                  (QStringList{"not sent: the controller's DN line carries at most ten digits of hertz (9999999999 Hz)",
                               "not sent: the controller's UP line carries at most ten digits of hertz (9999999999 Hz)",
                               "not sent: the controller's DM line carries a mode of at most 8 letters or digits",
