@@ -17,13 +17,13 @@ namespace {
 // session's own reply timeout and retries are well inside it.
 constexpr int kReadTimeoutMs = 3000;
 
-// What the Easycomm tables' lines carry, narrower than the shared limits:
-// DN/UP take whole hertz of ten digits at most, DM/UM a mode of one to
-// eight letters or digits. session/stationradio.cpp refuses the same on
-// the line; checked here too so the refusal comes when the value is given
-// (the pacer may send it much later), in words the operator reads.
-constexpr double kLineHighestHz = 9999999999.0;
-constexpr qsizetype kLineModeChars = 8;
+// What the Easycomm tables' lines carry (StationRadio::kHighestHz,
+// kLongestMode) is narrower than the shared limits. StationRadio refuses
+// the same on the line; checked here too so the refusal comes when the
+// value is given (the pacer may send it much later), in the words every
+// radio link uses.
+constexpr double kLineHighestHz = StationRadio::kHighestHz;
+constexpr qsizetype kLineModeChars = StationRadio::kLongestMode;
 
 } // namespace
 

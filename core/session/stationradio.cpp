@@ -14,9 +14,6 @@ using protocol::Op;
 
 namespace {
 
-// Ten digits: what the protocol tables carry for UP and DN.
-constexpr double kHighestHz = 9999999999.0;
-
 Op frequencyOp(StationRadio::Path path)
 {
     return path == StationRadio::Path::Uplink ? Op::UplinkFreq : Op::DownlinkFreq;
@@ -67,7 +64,7 @@ CommandResult StationRadio::setMode(Path path, const QString &mode)
     if (auto usable = refuseUnlessSupported(); !usable)
         return usable;
     const QByteArray text = mode.trimmed().toUpper().toLatin1();
-    bool plain = !text.isEmpty() && text.size() <= 8;
+    bool plain = !text.isEmpty() && text.size() <= kLongestMode;
     for (char c : text)
         plain = plain && ((c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'));
     if (!plain)

@@ -28,6 +28,11 @@ public:
     enum class Path { Uplink, Downlink };
     Q_ENUM(Path)
 
+    // What the lines carry: DN/UP whole hertz of ten digits at most, DM/UM
+    // a mode of one to eight letters or digits.
+    static constexpr double kHighestHz = 9999999999.0;
+    static constexpr qsizetype kLongestMode = 8;
+
     // The session owns this (and so outlives it) and speaks for it.
     explicit StationRadio(ControllerChannel *channel);
 
