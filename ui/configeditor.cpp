@@ -1,5 +1,6 @@
 #include "configeditor.h"
 
+#include "operatortheme.h"
 #include "filechooser.h"
 
 #include <QScopeGuard>
@@ -205,8 +206,8 @@ void ConfigEditor::setState(int reg, FieldState s, const QString &detail)
         const char *colour;
     };
     static const Look looks[] = {{"", ""},           {"", ""},          {"changed", "#f2c03c"},
-                                 {"invalid", "#e54848"}, {"verifying…", "#9aa5b4"}, {"confirmed", "#4cd964"},
-                                 {"mismatch", "#e54848"}, {"no answer", "#e54848"}};
+                                 {"invalid", tone::kRefused}, {"verifying…", "#9aa5b4"}, {"confirmed", "#4cd964"},
+                                 {"mismatch", tone::kRefused}, {"no answer", tone::kRefused}};
     const Look &look = looks[int(s)];
     row.state->setText(detail.isEmpty() ? tr(look.text) : QStringLiteral("%1: %2").arg(tr(look.text), detail));
     row.state->setStyleSheet(*look.colour ? QStringLiteral("color:%1;").arg(QLatin1String(look.colour)) : QString());
@@ -389,7 +390,7 @@ int ConfigEditor::apply()
 void ConfigEditor::say(const QString &text, bool error)
 {
     m_message->setText(text);
-    m_message->setStyleSheet(error ? QStringLiteral("color:#e54848;") : QString());
+    m_message->setStyleSheet(error ? refusedText() : QString());
 }
 
 void ConfigEditor::showEvent(QShowEvent *event)

@@ -1,5 +1,6 @@
 #include "gotopanel.h"
 
+#include "operatortheme.h"
 #include "operatoractions.h"
 
 #include "model/movegate.h"
@@ -30,7 +31,7 @@ std::optional<double> parseAngle(const QString &text)
 
 void markField(QLineEdit *field, bool bad)
 {
-    field->setStyleSheet(bad ? QStringLiteral("QLineEdit{border:2px solid #e54848;}") : QString());
+    field->setStyleSheet(bad ? refusedField() : QString());
 }
 
 } // namespace
@@ -125,7 +126,7 @@ void GotoPanel::revalidate()
     markField(m_az, c.azimuthBad);
     markField(m_el, c.elevationBad);
     m_message->setText(filled ? c.message : QString());
-    m_message->setStyleSheet(ok ? QString() : QStringLiteral("color:#e54848;"));
+    m_message->setStyleSheet(ok ? QString() : refusedText());
     m_go->setEnabled(ok && m_session->isConnected());
 }
 
@@ -140,7 +141,7 @@ bool GotoPanel::go()
     const Checked c = check();
     if (!c.azimuth || !c.elevation) {
         m_message->setText(c.message);
-        m_message->setStyleSheet(QStringLiteral("color:#e54848;"));
+        m_message->setStyleSheet(refusedText());
         return false; // nothing is sent
     }
     // The bearing as typed: the gate decides again at sending time, from
@@ -148,7 +149,7 @@ bool GotoPanel::go()
     const session::CommandResult sent = m_session->gotoPosition(*parseAngle(m_az->text()), *c.elevation);
     if (!sent) {
         m_message->setText(sent.refusal);
-        m_message->setStyleSheet(QStringLiteral("color:#e54848;"));
+        m_message->setStyleSheet(refusedText());
         return false;
     }
     const QPointF target(m_session->targetAzimuth(), m_session->targetElevation());

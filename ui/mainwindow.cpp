@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "mainwindow.h"
 
+#include "operatortheme.h"
 #include "alarmbanner.h"
 #include "configeditor.h"
 #include "elementsetsdialog.h"
@@ -279,7 +280,7 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     auto *linkProblem = new QLabel;
     linkProblem->setObjectName(QStringLiteral("linkProblem"));
     linkProblem->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
-    linkProblem->setStyleSheet(QStringLiteral("color:#f2a33c;"));
+    linkProblem->setStyleSheet(warningText());
     statusBar()->addWidget(linkProblem, 1);
     connect(m_connection, &ConnectionBar::disconnectRequested, this, [this] { m_disconnectAsked = true; });
     connect(session, &RotatorSession::stateChanged, linkProblem,

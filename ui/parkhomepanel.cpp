@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "parkhomepanel.h"
 
+#include "operatortheme.h"
 #include "protocol/dialect.h"
 
 #include <QGridLayout>
@@ -95,7 +96,7 @@ bool ParkHomePanel::park()
     m_message->setText(sent ? m_session->parkKnown() ? tr("Parking at %1.").arg(parkText())
                                                      : tr("Parking where the controller says (%1).").arg(parkText())
                             : tr("Not parking: %1").arg(sent.refusal));
-    m_message->setStyleSheet(sent ? QString() : QStringLiteral("color:#e54848;"));
+    m_message->setStyleSheet(sent ? QString() : refusedText());
     m_parking = bool(sent);
     if (sent)
         emit moveSent(tr("park (%1)").arg(parkText()),
@@ -119,7 +120,7 @@ bool ParkHomePanel::home()
         return false;
     if (const session::CommandResult sent = m_session->home(); !sent) {
         m_message->setText(tr("Not homing: %1").arg(sent.refusal));
-        m_message->setStyleSheet(QStringLiteral("color:#e54848;"));
+        m_message->setStyleSheet(refusedText());
         m_parking = false;
         return false;
     }
@@ -197,7 +198,7 @@ void ParkHomePanel::finish(bool ok, const QString &message)
     m_progress->setVisible(false);
     m_cancel->setVisible(false);
     m_message->setText(message);
-    m_message->setStyleSheet(ok ? QString() : QStringLiteral("color:#e54848;"));
+    m_message->setStyleSheet(ok ? QString() : refusedText());
     updateEnabled();
     emit homingFinished(ok, message);
 }

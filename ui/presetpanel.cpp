@@ -1,5 +1,6 @@
 #include "presetpanel.h"
 
+#include "operatortheme.h"
 #include "operatoractions.h"
 
 #include <QGridLayout>
@@ -88,7 +89,7 @@ void PresetPanel::say(const QString &text, bool error)
 {
     m_going = false;
     m_message->setText(text);
-    m_message->setStyleSheet(error ? QStringLiteral("color:#e54848;") : QString());
+    m_message->setStyleSheet(error ? refusedText() : QString());
 }
 
 bool PresetPanel::recall(int index)

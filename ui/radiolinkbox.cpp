@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "radiolinkbox.h"
 
+#include "operatortheme.h"
 #include "station/dopplerradio.h"
 
 #include <QComboBox>
@@ -54,7 +55,7 @@ RadioLinkBox::RadioLinkBox(station::DopplerRadio *radio, QWidget *parent) : QWid
     m_refusal = new QLabel;
     m_refusal->setObjectName(QStringLiteral("radioLinkRefusal"));
     m_refusal->setWordWrap(true);
-    m_refusal->setStyleSheet(QStringLiteral("color:#e54848;"));
+    m_refusal->setStyleSheet(refusedText());
     m_refusal->hide();
 
     auto *grid = new QGridLayout(this);
@@ -182,7 +183,7 @@ void RadioLinkBox::showState(RadioLink::State state, const QString &detail)
         break;
     }
     m_state->setText(m_stateText);
-    m_state->setStyleSheet(state == RadioLink::State::Closed && m_radio->isWanted() ? QStringLiteral("color:#f2a33c;")
+    m_state->setStyleSheet(state == RadioLink::State::Closed && m_radio->isWanted() ? warningText()
                                                                                      : QString());
     showButtons();
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "radiopanel.h"
 
+#include "operatortheme.h"
 #include "radiolinkbox.h"
 #include "radiopassbandtuner.h"
 #include "radioplanform.h"
@@ -262,7 +263,7 @@ void RadioPanel::showRefreshResult()
                                  .arg(failed.size())
                                  .arg(status.size())
                                  .arg(failed.join(QStringLiteral("; "))),
-                             QStringLiteral("#f2a33c"));
+                             QString::fromLatin1(tone::kWarning));
     }
 }
 
@@ -335,7 +336,7 @@ void RadioPanel::showPlanState()
     QString colour;
     if (m_refused) {
         text = tr("Not applied: put right what is marked above.");
-        colour = QStringLiteral("#e54848");
+        colour = QString::fromLatin1(tone::kRefused);
     } else if (!plan) {
         text = tr("Nothing applied: the radio is left alone.");
     } else {
@@ -344,7 +345,7 @@ void RadioPanel::showPlanState()
             // The radio would not be tuned for this pass (DopplerRadio
             // checks the plan's satellite at AOS): say so before AOS.
             text += tr(" Not for the satellite tracked: Apply to tune it.");
-            colour = QStringLiteral("#f2a33c");
+            colour = QString::fromLatin1(tone::kWarning);
         }
     }
     m_planState->setText(text);

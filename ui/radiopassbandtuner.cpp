@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "radiopassbandtuner.h"
 
+#include "operatortheme.h"
 #include "station/dopplerradio.h"
 
 #include <QHBoxLayout>
@@ -51,7 +52,7 @@ RadioPassbandTuner::RadioPassbandTuner(station::DopplerRadio *radio, QWidget *pa
     }
     m_refusal = new QLabel;
     m_refusal->setObjectName(QStringLiteral("radioTuneRefusal"));
-    m_refusal->setStyleSheet(QStringLiteral("color:#f2a33c;"));
+    m_refusal->setStyleSheet(warningText());
     row->addWidget(m_refusal, 1);
     connect(m_radio, &station::DopplerRadio::steeringChanged, this, &RadioPassbandTuner::showEnabled);
     connect(m_radio, &station::DopplerRadio::controlHeldChanged, this, &RadioPassbandTuner::showEnabled);

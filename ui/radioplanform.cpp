@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "radioplanform.h"
 
+#include "operatortheme.h"
 #include "radio/frequencytext.h"
 #include "station/radiooptions.h"
 
@@ -14,7 +15,6 @@ namespace slew::ui {
 
 namespace {
 
-constexpr char kRefusedField[] = "QLineEdit{border:2px solid #e54848;} QComboBox{border:2px solid #e54848;}";
 
 // The combo's entry whose data is `word`, else the first.
 void chooseWord(QComboBox *combo, const QString &word)
@@ -208,7 +208,7 @@ QLabel *RadioPlanForm::addError(const QString &name)
     auto *label = new QLabel;
     label->setObjectName(name);
     label->setWordWrap(true);
-    label->setStyleSheet(QStringLiteral("color:#e54848;"));
+    label->setStyleSheet(refusedText());
     label->hide();
     return label;
 }
@@ -242,7 +242,7 @@ RadioPlanTexts RadioPlanForm::texts() const
 
 void RadioPlanForm::refuse(QWidget *field, QLabel *error, const QString &why)
 {
-    field->setStyleSheet(QLatin1String(kRefusedField));
+    field->setStyleSheet(refusedField() + QLatin1Char(' ') + refusedField("QComboBox"));
     error->setText(why);
     error->show();
 }

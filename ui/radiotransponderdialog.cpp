@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "radiotransponderdialog.h"
 
+#include "operatortheme.h"
 #include "filechooser.h"
 
 #include "radio/transpondersources.h"
@@ -37,7 +38,7 @@ RadioTransponderDialog::RadioTransponderDialog(radio::TransponderSources *source
     m_refusal = new QLabel;
     m_refusal->setObjectName(QStringLiteral("radioTransponderSourceRefusal"));
     m_refusal->setWordWrap(true);
-    m_refusal->setStyleSheet(QStringLiteral("color:#e54848;"));
+    m_refusal->setStyleSheet(refusedText());
     m_refusal->hide();
     auto *close = new QDialogButtonBox(QDialogButtonBox::Close);
     connect(close, &QDialogButtonBox::rejected, this, &QDialog::close);

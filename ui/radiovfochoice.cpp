@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "radiovfochoice.h"
 
+#include "operatortheme.h"
 #include "station/dopplerradio.h"
 
 #include <QCheckBox>
@@ -39,7 +40,7 @@ RadioVfoChoice::RadioVfoChoice(station::DopplerRadio *radio, QWidget *parent) : 
     m_refusal = new QLabel;
     m_refusal->setObjectName(QStringLiteral("radioVfoRefusal"));
     m_refusal->setWordWrap(true);
-    m_refusal->setStyleSheet(QStringLiteral("color:#e54848;"));
+    m_refusal->setStyleSheet(refusedText());
     m_refusal->hide();
 
     auto *grid = new QGridLayout(this);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "remoteconnectdialog.h"
 
+#include "operatortheme.h"
 #include "remoteopener.h"
 
 #include "model/settingsfile.h"
@@ -29,7 +30,7 @@ RemoteConnectDialog::RemoteConnectDialog(QWidget *parent) : QDialog(parent)
     m_problem->setObjectName(QStringLiteral("remoteProblem"));
     m_problem->setTextFormat(Qt::PlainText);
     m_problem->setWordWrap(true);
-    m_problem->setStyleSheet(QStringLiteral("color:#f2a33c;"));
+    m_problem->setStyleSheet(warningText());
     auto *note = new QLabel(tr("Without /STATION: every station on the broker (the station network)."));
     note->setWordWrap(true);
     auto *buttons = new QDialogButtonBox(QDialogButtonBox::Open | QDialogButtonBox::Cancel);

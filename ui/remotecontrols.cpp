@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "remotecontrols.h"
 
+#include "operatortheme.h"
 #include "input/finitenumber.h"
 #include "remote/remotestation.h"
 
@@ -143,7 +144,7 @@ QString RemoteControls::message() const
 void RemoteControls::showMessage(const QString &text, bool problem)
 {
     m_message->setText(text);
-    m_message->setStyleSheet(problem ? QStringLiteral("color:#f2a33c;") : QString());
+    m_message->setStyleSheet(problem ? warningText() : QString());
 }
 
 void RemoteControls::setFields(double az, double el)

@@ -1,5 +1,6 @@
 #include "rotortile.h"
 
+#include "operatortheme.h"
 #include "compassdial.h"
 
 #include "session/rotatorsession.h"
@@ -49,7 +50,7 @@ RotorTile::RotorTile(RotatorSession *session, int number, bool isMain, QWidget *
     m_stop->setText(tr("Stop"));
     m_stop->setObjectName(QStringLiteral("stop"));
     m_stop->setToolTip(tr("Stop rotor %1 (the window's Stop, Esc or Pause stops every rotor)").arg(number));
-    m_stop->setStyleSheet(QStringLiteral("QToolButton { color: #e54848; font-weight: bold; }"));
+    m_stop->setStyleSheet(QStringLiteral("QToolButton { color: %1; font-weight: bold; }").arg(QLatin1String(tone::kRefused)));
     // Narrow enough that four tiles fit under the plot without widening the
     // window: a small compass, a bearing field without arrows (the wheel and
     // the keys still step it), words that wrap.
@@ -127,7 +128,7 @@ void RotorTile::showState()
     QString colour = QStringLiteral("#9aa5b4");
     if (!m_refusal.isEmpty()) {
         text = m_refusal;
-        colour = QStringLiteral("#e54848");
+        colour = QString::fromLatin1(tone::kRefused);
     } else if (!m_session->isConnected()) {
         text = m_session->state() == RotatorSession::State::Disconnected ? tr("not connected") : tr("connecting…");
         m_dial->clear();

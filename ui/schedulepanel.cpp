@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "schedulepanel.h"
 
+#include "operatortheme.h"
 #include "scheduletimeline.h"
 
 #include "schedule/scheduletext.h"
@@ -64,7 +65,7 @@ SchedulePanel::SchedulePanel(station::Station *station, QWidget *parent) : QWidg
     m_refusal = new QLabel;
     m_refusal->setObjectName(QStringLiteral("scheduleRefusal"));
     m_refusal->setWordWrap(true);
-    m_refusal->setStyleSheet(QStringLiteral("color:#e54848;"));
+    m_refusal->setStyleSheet(refusedText());
     m_refusal->hide();
     m_run = new QPushButton;
     m_run->setObjectName(QStringLiteral("scheduleRun"));

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "stationtile.h"
 
+#include "operatortheme.h"
 #include "polarplotwidget.h"
 #include "remotebanner.h"
 
@@ -31,7 +32,7 @@ StationTile::StationTile(const QString &name, QWidget *parent) : QFrame(parent),
     m_alarms = new QLabel;
     m_alarms->setTextFormat(Qt::PlainText);
     m_alarms->setWordWrap(true);
-    m_alarms->setStyleSheet(QStringLiteral("color:#f2a33c;"));
+    m_alarms->setStyleSheet(warningText());
     m_alarms->setVisible(false);
     m_open = new QPushButton(tr("Open"));
     m_open->setObjectName(QStringLiteral("openStation_%1").arg(name));

@@ -1,5 +1,6 @@
 #include "targetconfirmation.h"
 
+#include "operatortheme.h"
 #include <QCheckBox>
 #include <QHBoxLayout>
 #include <QVBoxLayout>
@@ -83,7 +84,7 @@ void TargetConfirmation::ask(double az, double el, const QString &what)
 
 void TargetConfirmation::showProblem(const QString &text)
 {
-    m_question->setStyleSheet(QStringLiteral("color:#e54848;"));
+    m_question->setStyleSheet(refusedText());
     m_question->setText(text);
     m_question->setToolTip(text);
     m_going = false;
