@@ -25,6 +25,18 @@ void CommandPacer::submit(const PacedCommand &command)
     pump();
 }
 
+void CommandPacer::submitFirst(const PacedCommand &command)
+{
+    const auto same = std::find_if(m_waiting.begin(), m_waiting.end(),
+                                   [&](const PacedCommand &c) { return c.kind == command.kind; });
+    if (same != m_waiting.end()) {
+        m_waiting.erase(same);
+        ++m_replaced;
+    }
+    m_waiting.insert(m_waiting.begin(), command);
+    pump();
+}
+
 void CommandPacer::finished(const std::optional<PacedCommand> &next)
 {
     if (!m_inFlight)

@@ -48,6 +48,10 @@ public:
 
     // Queues the command, or replaces the one of its kind still waiting.
     void submit(const PacedCommand &command);
+    // The same, ahead of every waiting command (an exchange's follow-up
+    // still goes first): for a command that answers what was just read,
+    // and is worth less the longer it waits.
+    void submitFirst(const PacedCommand &command);
     // The command on the wire is done; `next`, when given, goes next.
     void finished(const std::optional<PacedCommand> &next = std::nullopt);
     // Forgets the command on the wire and every waiting one (link closed).

@@ -78,8 +78,10 @@ void ScriptedRadioLink::open()
     m_pacer.clear();
     m_deadline.stop();
     // Each opening starts knowing nothing of the radio.
+    ++m_openings;
     m_layout = m_wantedLayout;
     m_receiveRead.reset();
+    m_transmitRead.reset();
     m_splitOn = false;
     m_timeoutsInARow = 0;
     m_latencyMs = 0;
@@ -103,13 +105,14 @@ void ScriptedRadioLink::fail(const QString &reason)
 {
     if (m_state == State::Closed)
         return;
-    const std::optional<PacedCommand> pending = m_pacer.inFlight();
+    const bool pending = m_pacer.inFlight().has_value();
+    const QString pendingText = pending ? m_performer->text(m_onTheWire) : QString();
     m_state = State::Closed;
     m_pacer.clear();
     m_deadline.stop();
     m_performer->abort();
     if (pending)
-        emit commandFailed(pending->text, reason);
+        emit commandFailed(pendingText, reason);
     emit stateChanged(State::Closed, reason);
 }
 
@@ -141,7 +144,7 @@ bool ScriptedRadioLink::acceptMode(const RadioCommand &command)
     return false;
 }
 
-void ScriptedRadioLink::submit(CommandKind kind, const RadioCommand &command)
+void ScriptedRadioLink::submit(CommandKind kind, const RadioCommand &command, Place place)
 {
     const QString text = m_performer->text(command);
     if (m_state != State::Open) {
@@ -153,14 +156,17 @@ void ScriptedRadioLink::submit(CommandKind kind, const RadioCommand &command)
         return;
     }
     m_newest[kind] = command;
-    m_pacer.submit(paced(Step::Set, kind, command));
+    if (place == Place::First)
+        m_pacer.submitFirst(paced(Step::Set, kind, command));
+    else
+        m_pacer.submit(paced(Step::Set, kind, command));
 }
 
 void ScriptedRadioLink::setReceiveHz(double hz)
 {
     const RadioCommand command = frequencyCommand(RadioCommand::Call::SetFrequency, RadioPath::Receive, hz);
     if (acceptFrequency(command))
-        submit(CommandKind::ReceiveFrequency, command);
+        submit(CommandKind::ReceiveFrequency, command, Place::First); // why first: the header
 }
 
 void ScriptedRadioLink::setTransmitHz(double hz)
@@ -204,12 +210,12 @@ void ScriptedRadioLink::setTransmitMode(const QString &mode, int passbandHz)
 
 void ScriptedRadioLink::readFrequencies()
 {
-    const RadioCommand command = frequencyCommand(RadioCommand::Call::ReadFrequency, RadioPath::Receive);
+    const RadioCommand receive = frequencyCommand(RadioCommand::Call::ReadFrequency, RadioPath::Receive);
     if (m_state != State::Open) {
-        emit commandFailed(m_performer->text(command), tr("not sent: %1 is not open").arg(m_uri));
+        emit commandFailed(m_performer->text(receive), tr("not sent: %1 is not open").arg(m_uri));
         return;
     }
-    m_pacer.submit(paced(Step::ReadReceive, CommandKind::Read, command));
+    m_pacer.submit(paced(Step::Read, CommandKind::Read, receive));
 }
 
 // --- The exchanges ---------------------------------------------------------
@@ -223,11 +229,14 @@ RadioCommand ScriptedRadioLink::commandFor(const PacedCommand &paced) const
 {
     using Call = RadioCommand::Call;
     switch (Step(paced.tag)) {
+    case Step::Read:
+        // The transmit frequency first, where it is read: the receive
+        // frequency is read last (the header says why). Split may have
+        // come on since the read was asked.
+        return frequencyCommand(Call::ReadFrequency, readsTransmit() ? RadioPath::Transmit : RadioPath::Receive);
     case Step::OpeningRead:
     case Step::ReadReceive:
         return frequencyCommand(Call::ReadFrequency, RadioPath::Receive);
-    case Step::ReadTransmit:
-        return frequencyCommand(Call::ReadFrequency, RadioPath::Transmit);
     case Step::OpeningLatency:
         return frequencyCommand(Call::SetFrequency, RadioPath::Receive, m_receiveRead.value_or(0));
     case Step::OpeningStep:
@@ -238,6 +247,11 @@ RadioCommand ScriptedRadioLink::commandFor(const PacedCommand &paced) const
         break;
     }
     return m_newest.at(paced.kind);
+}
+
+bool ScriptedRadioLink::readsTransmit() const
+{
+    return m_layout == VfoLayout::MainSub || m_splitOn;
 }
 
 void ScriptedRadioLink::onOpened()
@@ -253,7 +267,7 @@ void ScriptedRadioLink::onReady(const PacedCommand &paced)
     m_onTheWire = commandFor(paced);
     m_sentAt.start();
     m_deadline.start(m_replyTimeoutMs);
-    emit commandSent(paced.text);
+    emit commandSent(m_performer->text(m_onTheWire));
     // A handler of commandSent may have closed the link.
     if (m_state != State::Closed && m_pacer.inFlight())
         m_performer->perform(m_onTheWire);
@@ -270,7 +284,7 @@ void ScriptedRadioLink::onAnswered(const RadioAnswer &answer)
 
 void ScriptedRadioLink::onDeadline()
 {
-    const QString command = m_pacer.inFlight() ? m_pacer.inFlight()->text : QString();
+    const QString command = m_pacer.inFlight() ? m_performer->text(m_onTheWire) : QString();
     fail(tr("%1: %2 did not answer '%3' within %4 s")
              .arg(label(), m_performer->peerName(), command)
              .arg(m_replyTimeoutMs / 1000.0));
@@ -302,7 +316,7 @@ void ScriptedRadioLink::finishExchange(const PacedCommand &command, const RadioA
         outcome.next = paced(Step::OpeningLatency, CommandKind::ReceiveFrequency,
                              frequencyCommand(RadioCommand::Call::SetFrequency, RadioPath::Receive, *hz));
     } else if (gone) {
-        QString reason = tr("%1: %2 %3").arg(label(), command.text, answer.why);
+        QString reason = tr("%1: %2 %3").arg(label(), m_performer->text(performed), answer.why);
         if (answer.code == -int(HamlibError::Timeout))
             reason += tr(", %1 times in a row").arg(m_timeoutsInARow);
         fail(reason);
@@ -313,11 +327,17 @@ void ScriptedRadioLink::finishExchange(const PacedCommand &command, const RadioA
         takeAnswer(step, performed, answer, outcome);
     }
 
-    m_pacer.finished(outcome.next);
+    // Told while this command still holds the wire: what is sent in answer
+    // goes next (the header says why). A handler may close the link, and
+    // open it again.
+    const int opening = m_openings;
     if (!outcome.failure.isEmpty())
-        emit commandFailed(command.text, outcome.failure);
+        emit commandFailed(m_performer->text(performed), outcome.failure);
     if (outcome.read)
         emit frequenciesRead(*outcome.read);
+    if (m_state == State::Closed || opening != m_openings)
+        return;
+    m_pacer.finished(outcome.next);
     if (outcome.opened)
         becomeOpen();
 }
@@ -366,15 +386,15 @@ void ScriptedRadioLink::takeAnswer(Step step, const RadioCommand &performed, con
     const std::optional<double> hz = valueIn(answer, limits::kFrequencyRange, &outcome.failure);
     if (!hz)
         return; // a half read is no reading
-    if (step == Step::ReadTransmit) {
-        outcome.read = RadioFrequencies{m_receiveRead, hz};
-    } else if (m_layout == VfoLayout::MainSub || m_splitOn) {
-        m_receiveRead = hz;
-        outcome.next = paced(Step::ReadTransmit, CommandKind::Read,
-                             frequencyCommand(RadioCommand::Call::ReadFrequency, RadioPath::Transmit));
-    } else {
-        outcome.read = RadioFrequencies{hz, std::nullopt};
+    if (performed.path == RadioPath::Transmit) {
+        m_transmitRead = hz;
+        outcome.next = paced(Step::ReadReceive, CommandKind::Read,
+                             frequencyCommand(RadioCommand::Call::ReadFrequency, RadioPath::Receive));
+        return;
     }
+    // A read that started with the receive frequency has no transmit half.
+    const std::optional<double> transmit = step == Step::ReadReceive ? m_transmitRead : std::nullopt;
+    outcome.read = RadioFrequencies{hz, transmit};
 }
 
 void ScriptedRadioLink::becomeOpen()

@@ -26,6 +26,13 @@
 // command unanswered for the reply timeout. Reopening is the owner's, with
 // open(). A read asks the transmit frequency too when split is on (found
 // at opening or turned on since), and always with Main/Sub.
+//
+// The receive frequency is read last, the reading is told while the read
+// still holds the wire, and a receive frequency goes ahead of anything
+// waiting: a frequency sent in answer to a reading then follows it at
+// once. CAT has no lock, and a turn of the radio's dial that lands between
+// the reading and that frequency is overwritten unseen; this keeps that
+// window to one round trip.
 
 #include "commandpacer.h"
 #include "exchangeperformer.h"
@@ -79,16 +86,20 @@ protected:
 
 private:
     // Where a command stands in the script, carried through the pacer as its tag.
-    enum class Step { OpeningRead, OpeningLatency, OpeningStep, OpeningSplit, Set, ReadReceive, ReadTransmit };
+    // A read (Read) starts with the transmit frequency where it is read,
+    // as the link stands when the read goes, and ends with ReadReceive.
+    enum class Step { OpeningRead, OpeningLatency, OpeningStep, OpeningSplit, Set, Read, ReadReceive };
 
     // The URI as messages start with it, without a colon of its own at the
     // end ("sim: closed", not "sim:: closed").
     QString label() const;
     bool acceptFrequency(const RadioCommand &command);
     bool acceptMode(const RadioCommand &command);
-    void submit(CommandKind kind, const RadioCommand &command);
+    enum class Place { InLine, First };
+    void submit(CommandKind kind, const RadioCommand &command, Place place = Place::InLine);
     PacedCommand paced(Step step, CommandKind kind, const RadioCommand &command) const;
     RadioCommand commandFor(const PacedCommand &paced) const;
+    bool readsTransmit() const;
     void onOpened();
     void onReady(const PacedCommand &paced);
     void onAnswered(const RadioAnswer &answer);
@@ -123,7 +134,9 @@ private:
     // of each kind given, which is the one the pacer holds waiting.
     std::map<CommandKind, RadioCommand> m_newest;
     RadioCommand m_onTheWire;
-    std::optional<double> m_receiveRead; // the opening's reading; a read's first half, until its second comes
+    std::optional<double> m_receiveRead;  // the opening's reading
+    std::optional<double> m_transmitRead; // a read's first half, until its second comes
+    int m_openings = 0;                   // open() calls: an answer's handlers may close and reopen
     bool m_splitOn = false;              // as the radio last said or accepted
     int m_timeoutsInARow = 0;
     double m_tuningStepHz;

@@ -28,6 +28,7 @@ private slots:
     void sendsAtOnceWhenIdle();
     void oneOnTheWireNewestOfEachKindWaits();
     void followUpGoesAheadOfTheLine();
+    void submitFirstGoesAheadOfTheWaiting();
     void minimumIntervalFromEndToStart();
     void synchronousAnswersDoNotRecurse();
     void clearForgetsEverything();
@@ -37,6 +38,7 @@ private slots:
     void scriptOpensInOrder();
     void scriptOpeningFailures();
     void scriptReadsBothFrequenciesWhenSplit();
+    void scriptAnswersAReadingFirst();
     void scriptReplacesWaitingCommands();
     void scriptRefusesUnsendableAndWhileClosed();
     void scriptPassesRefusalsOn();
@@ -112,6 +114,25 @@ void CommandPacerTest::followUpGoesAheadOfTheLine()
     pacer.finished();
     pacer.finished();
     QCOMPARE(texts(ready), (QStringList{"f", "i", "F 5", "f"}));
+}
+
+void CommandPacerTest::submitFirstGoesAheadOfTheWaiting()
+{
+    CommandPacer pacer;
+    QSignalSpy ready(&pacer, &CommandPacer::ready);
+    pacer.submit({CommandKind::Read, "f"});
+    pacer.submit({CommandKind::TransmitFrequency, "I 1"});
+    pacer.submit({CommandKind::ReceiveFrequency, "F 1"});
+    pacer.submit({CommandKind::Mode, "M FM 0"});
+    // Ahead of the line, its older value taken out of its place...
+    pacer.submitFirst({CommandKind::ReceiveFrequency, "F 2"});
+    QCOMPARE(pacer.waitingCount(), 3);
+    QCOMPARE(pacer.replacedCount(), 1);
+    // ...but behind an exchange's follow-up.
+    pacer.finished(PacedCommand{CommandKind::Read, "i"});
+    for (int i = 0; i < 4; ++i)
+        pacer.finished();
+    QCOMPARE(texts(ready), (QStringList{"f", "i", "F 2", "I 1", "M FM 0"}));
 }
 
 void CommandPacerTest::minimumIntervalFromEndToStart()
@@ -290,7 +311,7 @@ void CommandPacerTest::scriptOpensInOrder()
     s.fake->holding = false;
     s.fake->performed.clear();
     s.link->readFrequencies();
-    const QStringList readsBoth{"f", "i"}, readsReceive{"f"};
+    const QStringList readsBoth{"i", "f"}, readsReceive{"f"}; // the receive frequency last
     QCOMPARE(s.fake->performed, (splitKnown || mainSub) ? readsBoth : readsReceive);
 }
 
@@ -355,7 +376,27 @@ void CommandPacerTest::scriptReadsBothFrequenciesWhenSplit()
     const auto f = read.at(1).at(0).value<RadioFrequencies>();
     QCOMPARE(f.receiveHz.value_or(0), 145900000.0);
     QCOMPARE(f.transmitHz.value_or(0), 435100000.0);
-    QCOMPARE(s.fake->performed, (QStringList{"f", "S 1", "F 145900000", "I 435100000", "f", "i"}));
+    QCOMPARE(s.fake->performed, (QStringList{"f", "S 1", "F 145900000", "I 435100000", "i", "f"}));
+}
+
+void CommandPacerTest::scriptAnswersAReadingFirst()
+{
+    // What the owner sends in answer to a reading goes next, ahead of what
+    // waited: a turn of the radio's dial then has one round trip to land
+    // between the reading and the frequency, unseen.
+    ScriptOverFake s;
+    QVERIFY(s.opened());
+    s.link->setSplit(true);
+    s.fake->holding = true;
+    s.fake->performed.clear();
+    connect(s.link.get(), &RadioLink::frequenciesRead, s.link.get(),
+            [&](const RadioFrequencies &) { s.link->setReceiveHz(145900000); });
+    s.link->readFrequencies();
+    s.link->setTransmitHz(435100000);
+    s.link->setMode("USB", 0);
+    for (int i = 0; i < 5; ++i)
+        s.fake->answerHeld();
+    QCOMPARE(s.fake->performed, (QStringList{"i", "f", "F 145900000", "I 435100000", "M USB 0"}));
 }
 
 void CommandPacerTest::scriptReplacesWaitingCommands()
@@ -619,7 +660,7 @@ void CommandPacerTest::scriptDropWaitingFinishesTheExchange()
     QCOMPARE(read.at(0).at(0).value<RadioFrequencies>().transmitHz.value_or(0), 435000000.0);
     // ...and nothing that waited follows.
     QVERIFY(!s.fake->isHolding());
-    QCOMPARE(s.fake->performed, (QStringList{"S 1", "f", "i"}));
+    QCOMPARE(s.fake->performed, (QStringList{"S 1", "i", "f"}));
     QVERIFY(!s.link->pacer().isBusy());
 }
 
@@ -645,7 +686,7 @@ void CommandPacerTest::scriptCloseMidExchange()
     RadioAnswer late;
     late.value = QStringLiteral("145800000");
     s.fake->answer(late);
-    QCOMPARE(s.fake->performed, (QStringList{"S 1", "f"}));
+    QCOMPARE(s.fake->performed, (QStringList{"S 1", "i"}));
     QCOMPARE(read.count(), 0);
     QCOMPARE(failed.count(), 0);
     QCOMPARE(states.count(), 1);

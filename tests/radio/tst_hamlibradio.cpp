@@ -276,7 +276,7 @@ void HamlibRadioTest::setsReachTheRadio()
     QCOMPARE(failed.count(), 0);
     QCOMPARE(sentTexts(sent),
              (QStringList{"get_freq", "set_split_vfo 1 VFOB", "set_freq 145900000", "set_split_freq 435100000",
-                          "set_mode USB 2400", "set_split_mode LSB 0", "get_freq", "get_split_freq",
+                          "set_mode USB 2400", "set_split_mode LSB 0", "get_split_freq", "get_freq",
                           "set_split_vfo 0 VFOA", "set_mode FM 0", "get_freq"}));
 }
 
@@ -305,7 +305,7 @@ void HamlibRadioTest::mainAndSub()
     link->readFrequencies();
     QVERIFY(read.wait(10000));
     QCOMPARE(sentTexts(sent), (QStringList{"set_freq Sub 435100000", "set_freq Main 145900000", "set_mode Sub USB 0",
-                                           "set_mode Main LSB 0", "get_freq Sub", "get_freq Main"}));
+                                           "set_mode Main LSB 0", "get_freq Main", "get_freq Sub"}));
     const auto f = read.at(0).at(0).value<RadioFrequencies>();
     QCOMPARE(f.receiveHz.value_or(0), 435100000.0);
     QCOMPARE(f.transmitHz.value_or(0), 145900000.0);

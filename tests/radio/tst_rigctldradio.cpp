@@ -389,7 +389,7 @@ void RigctldRadioTest::readsBothFrequenciesWhenSplit()
     const auto f = read.at(1).at(0).value<RadioFrequencies>();
     QCOMPARE(f.receiveHz.value_or(0), 145800000.0);
     QCOMPARE(f.transmitHz.value_or(0), 435100000.0);
-    QCOMPARE(sentTexts(sent), (QStringList{"+f", "+S 1 VFOB", "+I 435100000", "+f", "+i"}));
+    QCOMPARE(sentTexts(sent), (QStringList{"+f", "+S 1 VFOB", "+I 435100000", "+i", "+f"}));
 
     // Split already on when the link opens (the operator's, or a pass
     // before): the first read asks the transmit frequency too.
@@ -458,7 +458,9 @@ void RigctldRadioTest::badValuesChangeNothing()
     QTRY_VERIFY(!link->pacer().isBusy());
     QSignalSpy failed(link.get(), &RadioLink::commandFailed);
     QSignalSpy read(link.get(), &RadioLink::frequenciesRead);
-    // A bad receive frequency, then a bad transmit frequency after a good receive one.
+    // A bad receive frequency after a good transmit one, then a bad
+    // transmit frequency (the read's first half).
+    fake.tx = "435000000";
     fake.rx = value;
     link->readFrequencies();
     QVERIFY(failed.wait(5000));

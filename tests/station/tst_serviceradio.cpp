@@ -148,8 +148,15 @@ private slots:
                      },
                      5000),
                  QByteArray::number(heard, 'f', 0).constData());
-        const double sent = number(askRigctld(port, "i", 1).value(0));
-        QVERIFY2(sent < 145.95e6 - 300 && sent > 145.95e6 - 4000, QByteArray::number(sent, 'f', 0).constData());
+        // The uplink goes right after the downlink, each a command of its own.
+        double sent = 0;
+        QVERIFY2(QTest::qWaitFor(
+                     [&] {
+                         sent = number(askRigctld(port, "i", 1).value(0));
+                         return sent < 145.95e6 - 300 && sent > 145.95e6 - 4000;
+                     },
+                     5000),
+                 QByteArray::number(sent, 'f', 0).constData());
 
         // The operator turns the dial 2 kHz up, in five clicks: Slew sends
         // nothing over it, and once it rests takes it as the new point. The
