@@ -13,7 +13,7 @@
 #include "slew_headless.h"
 
 #include "station/radiooptions.h"
-#include "session/profilehints.h"
+#include "session/connectionplan.h"
 #include "station/remoteoperation.h"
 #include "remote/brokeraddress.h"
 #include "remote/brokerpassword.h"
@@ -274,7 +274,7 @@ int runHeadless(int argc, char *argv[])
     }
     // Where neither names one, the link may (`dialect=`, a simulator's own),
     // as the window's connection bar takes it; and its `firmware=`.
-    config.profile = slew::session::profileNamedByUri(config.profile, parser.isSet(dialect) || parser.isSet(profile));
+    config.profile = slew::session::commandLineConnectionProfile(config.profile, parser.isSet(dialect) || parser.isSet(profile));
     if (parser.isSet(listen)) {
         if (!slew::transport::parseHostPort(parser.value(listen), &config.rotctldAddress, &config.rotctldPort))
             return fail(QStringLiteral("%1 %2: expected ADDRESS:PORT, with a port from 0 to 65535")

@@ -12,7 +12,7 @@
 #include "linkschemes.h"
 #include "model/rotatorprofile.h"
 #include "protocol/dialect.h"
-#include "session/profilehints.h"
+#include "session/connectionplan.h"
 #include "session/rotatorsession.h"
 #include "transport/linkfactory.h"
 #include "cli/terminationsignalwatcher.h"
@@ -174,7 +174,7 @@ int main(int argc, char *argv[])
     profile.uri = positional.first();
     // What the URI names (`dialect=`, `firmware=`, a simulator's own, a
     // rotctld:// peer) where --dialect and --profile do not say otherwise.
-    profile = slew::session::profileNamedByUri(
+    profile = slew::session::commandLineConnectionProfile(
         profile, parser.isSet(QStringLiteral("dialect")) || parser.isSet(QStringLiteral("profile")));
     int timeoutSeconds = 600;
     if (parser.isSet(QStringLiteral("timeout"))) {

@@ -1,8 +1,6 @@
 #include "connectionbar.h"
 
-#include "model/savedcalibration.h"
-#include "session/profilehints.h"
-#include "transport/linkfactory.h"
+#include "session/connectionplan.h"
 #include "transport/serialports.h"
 
 #include <QComboBox>
@@ -228,28 +226,9 @@ void ConnectionBar::connectToRotator()
         showState(tr("no address"), QColor(0xe5, 0x48, 0x48), tr("Fill in where the rotator is first."));
         return;
     }
-    model::RotatorProfile profile = m_session->profile();
-    profile.uri = target;
-    profile.dialect = dialect();
-    // What the link says of its far end (a simulator's URI names the
-    // rotator and its dialect); hardware says nothing and the profile stands.
-    if (const transport::LinkHints hints = transport::linkHintsFor(target); !hints.dialect.isEmpty()) {
-        profile = session::profileWithHints(profile, hints);
-        setDialect(profile.dialect);
-    } else {
-        // The dialect chosen here, and a firmware the URI names
-        // (`serial:/dev/ttyUSB0?firmware=k3ng`) or the profile held, where
-        // the firmware can speak it: SatNOGS's quirks never ride a GS-232 link.
-        profile = session::profileNamedByUri(profile, true);
-    }
-    // The calibration found for this rotator before (sun or moon alignment);
-    // another rotator does not inherit this one's.
-    if (const auto saved = model::savedCalibration(target)) {
-        profile.azOffsetDeg = saved->azDeg;
-        profile.elOffsetDeg = saved->elDeg;
-    } else if (target != m_session->uri() && !m_session->uri().isEmpty()) {
-        profile.azOffsetDeg = profile.elOffsetDeg = 0.0;
-    }
+    const model::RotatorProfile profile =
+        session::windowConnectionProfile(target, m_session->profile(), dialect(), m_session->uri());
+    setDialect(profile.dialect); // the link's, where it names one
     m_session->setProfile(profile);
     m_operatorDisconnected = false;
     m_everConnected = false;

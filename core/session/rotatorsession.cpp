@@ -9,7 +9,7 @@
 #include "rotatorsession.h"
 
 #include "micro2gcalibration.h"
-#include "profilehints.h"
+#include "connectionplan.h"
 #include "stationradio.h"
 
 #include "input/logtext.h"

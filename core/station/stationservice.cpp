@@ -9,13 +9,11 @@
 
 #include "bridge/rotctldserver.h"
 #include "radio/transpondersources.h"
-#include "protocol/dialect.h"
 #include "records/passrecordschema.h"
 #include "records/passrecordstore.h"
 #include "session/rotatorsession.h"
 #include "tracking/passrunner.h"
 #include "tracking/stationclock.h"
-#include "transport/linkfactory.h"
 
 #include <QFileInfo>
 
@@ -69,10 +67,6 @@ bool StationService::start(const ServiceConfig &config, QString *error)
     StationOptions options;
     options.autoReconnect = true; // a service keeps trying after a loss
     options.profile = config.profile;
-    // A rotctld:// peer speaks one dialect whatever the profile names (the
-    // window takes it from the link's hints the same way).
-    if (transport::linkHintsFor(config.profile.uri).dialect == protocol::dialectName(protocol::Dialect::Rotctld))
-        options.profile->dialect = protocol::Dialect::Rotctld;
     options.rotors = config.rotors;
     options.sharedLineUri = config.profile.uri;
     if (config.rotctldEnabled && !config.rotors.isEmpty() && config.rotctldPort != 0

@@ -60,7 +60,7 @@ QString readBaud(QStringView value, LinkHints *hints)
 // `dialect=gs232b` and `firmware=k3ng`: what the controller at the far end
 // speaks and runs, so a URI alone says it (the names of --dialect and the
 // profile). Kept as written, lower-cased: the names are the protocol's,
-// which the session checks before it opens the link (session/profilehints.h).
+// which the session checks before it opens the link (session/connectionplan.h).
 QString readName(const char *what, QStringView value, QString *into)
 {
     if (value.trimmed().isEmpty())

@@ -4,7 +4,7 @@
 #include "sim/simulator.h"
 #include "sim/simulatorconnection.h"
 #include "sim/simulatorlink.h"
-#include "session/profilehints.h"
+#include "session/connectionplan.h"
 #include "sim/simulatorscheme.h"
 
 #include "transport/linkfactory.h"

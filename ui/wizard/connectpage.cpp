@@ -4,9 +4,9 @@
 #include "setupwizard.h"
 
 #include "protocol/dialect.h"
+#include "session/connectionplan.h"
 #include "session/rotatorsession.h"
 #include "session/stopbeforeexit.h"
-#include "transport/linkfactory.h"
 #include "transport/serialports.h"
 
 #include <QComboBox>
@@ -182,9 +182,7 @@ void ConnectPage::probe()
     m_results->clear();
     // Ask in the dialect the link names (a simulator's URI) or the window is
     // set to: a Micro-2g answers no Easycomm query at any baud rate.
-    protocol::Dialect dialect = m_wizard->profile().dialect;
-    if (const auto named = protocol::dialectFromName(transport::linkHintsFor(m_uri->text()).dialect))
-        dialect = *named;
+    const protocol::Dialect dialect = session::probeDialect(m_uri->text(), m_wizard->profile().dialect);
     m_answeringUri.clear();
     if (!m_probe.start(m_uri->text(), dialect)) {
         m_probeButton->setEnabled(true);

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "profilehints.h"
+#include "connectionplan.h"
 
-#include "protocol/dialect.h"
+#include "model/savedcalibration.h"
 #include "protocol/firmware.h"
 #include "transport/linkfactory.h"
 
@@ -61,7 +61,36 @@ QString hintNamesProblem(const transport::LinkHints &hints)
     return {};
 }
 
-model::RotatorProfile profileNamedByUri(model::RotatorProfile profile, bool operatorNamedDialect)
+model::RotatorProfile windowConnectionProfile(const QString &uri, model::RotatorProfile current,
+                                              protocol::Dialect chosen, const QString &connectedBefore)
+{
+    model::RotatorProfile profile = std::move(current);
+    profile.uri = uri;
+    profile.dialect = chosen;
+    // What the link says of its far end (a simulator's URI names the
+    // rotator and its dialect); hardware says nothing and the profile stands,
+    // but for a firmware the URI names (`serial:/dev/ttyUSB0?firmware=k3ng`)
+    // or the profile held, where it can speak the dialect chosen: SatNOGS's
+    // quirks never ride a GS-232 link.
+    if (const transport::LinkHints hints = transport::linkHintsFor(uri); !hints.dialect.isEmpty())
+        profile = profileWithHints(profile, hints);
+    else
+        profile = commandLineConnectionProfile(profile, true);
+    if (const auto saved = model::savedCalibration(uri)) {
+        profile.azOffsetDeg = saved->azDeg;
+        profile.elOffsetDeg = saved->elDeg;
+    } else if (uri != connectedBefore && !connectedBefore.isEmpty()) {
+        profile.azOffsetDeg = profile.elOffsetDeg = 0.0;
+    }
+    return profile;
+}
+
+protocol::Dialect probeDialect(const QString &uri, protocol::Dialect chosen)
+{
+    return protocol::dialectFromName(transport::linkHintsFor(uri).dialect).value_or(chosen);
+}
+
+model::RotatorProfile commandLineConnectionProfile(model::RotatorProfile profile, bool operatorNamedDialect)
 {
     const transport::LinkHints hints = transport::linkHintsFor(profile.uri);
     const auto dialect = protocol::dialectFromName(hints.dialect);
