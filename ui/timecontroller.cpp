@@ -215,13 +215,15 @@ double TimeController::sliderOrigin() const
 void TimeController::onSliderMoved(int minutes)
 {
     const double origin = sliderOrigin();
-    const bool paused = m_clock->isPaused();
     m_origin = origin;
     // A jump: whoever planned by the clock plans again. A paused clock
-    // stays paused at the new instant.
-    m_clock->rehearse(origin + minutes / kMinutesPerDay, double(m_rate->value()));
-    if (paused)
-        m_clock->pause();
+    // stays paused at the new instant, exactly: started and paused again,
+    // it ran on while the planners answered the start.
+    const double to = origin + minutes / kMinutesPerDay;
+    if (m_clock->isPaused())
+        m_clock->holdAt(to);
+    else
+        m_clock->rehearse(to, double(m_rate->value()));
 }
 
 void TimeController::showState()

@@ -75,6 +75,17 @@ void StationClock::pause()
     emit pausedChanged(true);
 }
 
+bool StationClock::holdAt(double julian)
+{
+    if (!isPaused() || !std::isfinite(julian))
+        return false;
+    m_start = julian;
+    m_heldAt = julian;
+    m_elapsed.restart();
+    emit changed(); // a jump: whoever planned by the clock plans again
+    return true;
+}
+
 void StationClock::resume()
 {
     if (!isPaused())

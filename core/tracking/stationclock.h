@@ -51,6 +51,10 @@ public:
     // Back to the system's UTC; a pause ends.
     void followRealTime();
 
+    // While paused: holds `julian` instead, still paused, as one change
+    // (a jump of the window's slider). False, and nothing changes, when
+    // running (rehearse() moves a running clock) or for no number.
+    bool holdAt(double julian);
     // Holds the instant it reads now. In real time that makes it a
     // rehearsal from now (the clock no longer follows the system's UTC).
     void pause();

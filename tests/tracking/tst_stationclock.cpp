@@ -183,6 +183,29 @@ private slots:
         QCOMPARE(changed.count(), 0);
     }
 
+    void aPausedClockIsMovedAsOneChange()
+    {
+        // The window's slider moves a paused rehearsal: it lands on the
+        // instant asked, however long the planners take to answer, and
+        // stays paused without saying otherwise on the way.
+        StationClock clock(kStart, 2.0);
+        QVERIFY(!clock.holdAt(kStart + 1.0)); // running: rehearse() moves it
+        clock.pause();
+        QSignalSpy changed(&clock, &StationClock::changed);
+        QSignalSpy paused(&clock, &StationClock::pausedChanged);
+        const double to = kStart + 30.0 / (24.0 * 60.0);
+        QVERIFY(clock.holdAt(to));
+        QVERIFY(letWallTimePass(50));
+        QCOMPARE(clock.nowJulian(), to);
+        QVERIFY(clock.isPaused());
+        QCOMPARE(changed.count(), 1);
+        QCOMPARE(paused.count(), 0);
+        QVERIFY(!clock.holdAt(std::nan("")));
+        QCOMPARE(clock.nowJulian(), to);
+        clock.resume();
+        QVERIFY(clock.nowJulian() >= to);
+    }
+
     void pausingRealTimeMakesARehearsalHeldAtNow()
     {
         StationClock clock;
