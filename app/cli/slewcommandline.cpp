@@ -695,79 +695,122 @@ const ProgramDescription &slewProgram()
             "MD-02), over a serial port, over TCP, through Hamlib's rotctld, or its own simulator when no "
             "rotator is attached. Every move, from the operator, a tracker, a preset or a raw command, is checked "
             "against the rotator's limits before a byte is sent.");
-        p.modes = {makeWindowMode(), makeHeadlessMode(), makeTuneMode(), makePassesMode(), makeWhereMode(),
-                   makeUpdateElementsMode(), makeUpdateTranspondersMode(), makeScheduleMode(),
-                   makePassReportMode(), makeRemoteMode(), makeExportElementsMode()};
+        // The manual's order; each mode is its own accessor's, never found by
+        // its place here.
+        p.modes = {slewWindowMode(),
+                   slewHeadlessMode(),
+                   slewTuneMode(),
+                   slewPassesMode(),
+                   slewWhereMode(),
+                   slewUpdateElementsMode(),
+                   slewUpdateTranspondersMode(),
+                   slewScheduleMode(),
+                   slewPassReportMode(),
+                   slewRemoteMode(),
+                   slewExportElementsMode()};
         p.sections = {
             {QStringLiteral("Links"),
-             QStringLiteral("A link is named by a URI, the same on the command line, in the window and in profiles:\n"
-                            "\n"
-                            "  serial:/dev/ttyUSB0?baud=19200&data=8&parity=none&stop=1&flow=none\n"
-                            "  tcp://HOST:PORT\n"
-                            "  rotctld://HOST:PORT\n"
-                            "  sim:?az_max=450&el_max=180\n"
-                            "\n"
-                            "The simulator's options are listed in slew-sim(1).")},
+             QStringLiteral(
+                 "A link is named by a URI, the same on the command line, in "
+                 "the window and in profiles:\n"
+                 "\n"
+                 "  "
+                 "serial:/dev/"
+                 "ttyUSB0?baud=19200&data=8&parity=none&stop=1&flow=none\n"
+                 "  tcp://HOST:PORT\n"
+                 "  rotctld://HOST:PORT\n"
+                 "  sim:?az_max=450&el_max=180\n"
+                 "\n"
+                 "The simulator's options are listed in slew-sim(1).")},
             {QStringLiteral("Keyboard"),
              QStringLiteral("In the operator window:\n"
                             "\n"
                             "  Esc          Stop, always\n"
-                            "  Space        Stop; in a text field only while the rotator moves\n"
-                            "  arrow keys   jog while held (one start and one stop, however the keyboard repeats)\n"
+                            "  Space        Stop; in a text field only while "
+                            "the rotator moves\n"
+                            "  arrow keys   jog while held (one start and one "
+                            "stop, however the keyboard repeats)\n"
                             "  1 to 9       go to the preset of that number\n"
-                            "  Enter        in the go-to fields: go (the focus then leaves the field)\n"
-                            "  Ctrl+D       in the target picker: keep the target as a favourite")},
+                            "  Enter        in the go-to fields: go (the focus "
+                            "then leaves the field)\n"
+                            "  Ctrl+D       in the target picker: keep the "
+                            "target as a favourite")},
             {QStringLiteral("Files"),
-             QStringLiteral("  /etc/slew/NAME.conf\n"
-                            "\n"
-                            "Settings of the station service slew-station@NAME.service, read with --config. "
-                            "/etc/slew/example.conf shows every setting.\n"
-                            "\n"
-                            "  ~/.config/Slew/slew.conf\n"
-                            "\n"
-                            "The window's remembered connection, presets, station and preferences, and the list of "
-                            "element-set sources that slew --update-elements refreshes. One that cannot be read is "
-                            "moved aside to slew.conf.broken-DATE, never deleted.\n"
-                            "\n"
-                            "  ~/.config/Slew/satellite-names.txt\n"
-                            "\n"
-                            "The operator's own names for satellites, a catalogue number and a name a line ('#' "
-                            "begins a comment), read after the built-in AMSAT names: a name given here is found by "
-                            "every search. A bad line is said and skipped.\n"
-                            "\n"
-                            "  ~/.cache/Slew/slew/element-sets/\n"
-                            "\n"
-                            "The last good copy of each element-set source, shared by the window and "
-                            "slew --update-elements.\n"
-                            "\n"
-                            "  ~/.local/share/Slew/slew/passes.sqlite\n"
-                            "\n"
-                            "The record of every tracked pass (SQLite), unless --pass-db names another; the station "
-                            "service's is under its state directory, /var/lib/slew-station/NAME/.\n"
-                            "\n"
-                            "  rotator.json\n"
-                            "\n"
-                            "A rotator profile, wherever the window's Configuration tab exports it (Export profile) "
-                            "and --profile reads it from: the link, dialect, limits, overlap and park.")},
+             QStringLiteral(
+                 "  /etc/slew/NAME.conf\n"
+                 "\n"
+                 "Settings of the station service slew-station@NAME.service, "
+                 "read with --config. "
+                 "/etc/slew/example.conf shows every setting.\n"
+                 "\n"
+                 "  ~/.config/Slew/slew.conf\n"
+                 "\n"
+                 "The window's remembered connection, presets, station and "
+                 "preferences, and the list of "
+                 "element-set sources that slew --update-elements refreshes. "
+                 "One that cannot be read is "
+                 "moved aside to slew.conf.broken-DATE, never deleted.\n"
+                 "\n"
+                 "  ~/.config/Slew/satellite-names.txt\n"
+                 "\n"
+                 "The operator's own names for satellites, a catalogue number "
+                 "and a name a line ('#' "
+                 "begins a comment), read after the built-in AMSAT names: a "
+                 "name given here is found by "
+                 "every search. A bad line is said and skipped.\n"
+                 "\n"
+                 "  ~/.cache/Slew/slew/element-sets/\n"
+                 "\n"
+                 "The last good copy of each element-set source, shared by the "
+                 "window and "
+                 "slew --update-elements.\n"
+                 "\n"
+                 "  ~/.local/share/Slew/slew/passes.sqlite\n"
+                 "\n"
+                 "The record of every tracked pass (SQLite), unless --pass-db "
+                 "names another; the station "
+                 "service's is under its state directory, "
+                 "/var/lib/slew-station/NAME/.\n"
+                 "\n"
+                 "  rotator.json\n"
+                 "\n"
+                 "A rotator profile, wherever the window's Configuration tab "
+                 "exports it (Export profile) "
+                 "and --profile reads it from: the link, dialect, limits, "
+                 "overlap and park.")},
             {QStringLiteral("Exit status"),
-             QStringLiteral("0 when Slew ends normally, 1 when a tuning run fails or is cancelled, --passes or "
-                            "--where finds no satellite to answer for, --update-elements could not refresh a "
-                            "source (each is named), or --pass-report finds no such pass or no samples of it, 2 for "
-                            "a bad option, a bad config file, a server that cannot listen, --update-elements with no "
+             QStringLiteral("0 when Slew ends normally, 1 when a tuning run "
+                            "fails or is cancelled, --passes or "
+                            "--where finds no satellite to answer for, "
+                            "--update-elements could not refresh a "
+                            "source (each is named), or --pass-report finds no "
+                            "such pass or no samples of it, 2 for "
+                            "a bad option, a bad config file, a server that "
+                            "cannot listen, --update-elements with no "
                             "sources, or pass records that cannot be read.")},
             {QStringLiteral("Examples"),
-             QStringLiteral("  slew --connect serial:/dev/ttyUSB0?baud=9600 --dialect easycomm2\n"
-                            "  slew --headless --connect tcp://192.0.2.10:4533 --rotctld-listen 127.0.0.1:4533\n"
+             QStringLiteral("  slew --connect serial:/dev/ttyUSB0?baud=9600 "
+                            "--dialect easycomm2\n"
+                            "  slew --headless --connect tcp://192.0.2.10:4533 "
+                            "--rotctld-listen 127.0.0.1:4533\n"
                             "  systemctl enable --now slew-station@example\n"
                             "  slew --tune sim:?kp=12&ki=1&kd=1 --axis az\n"
-                            "  slew --passes \"ISS (ZARYA)\" --qth JO65hq --tle amateur.txt --hours 48\n"
+                            "  slew --passes \"ISS (ZARYA)\" --qth JO65hq "
+                            "--tle amateur.txt --hours 48\n"
                             "  slew --where moon --qth 55.69,12.63,20\n"
-                            "  slew --connect sim: --qth JO65hq --clock-start 2026-11-25T12:00:00Z --clock-rate 5\n"
-                            "  slew --update-elements 'https://celestrak.org/NORAD/elements/gp.php?GROUP=amateur&FORMAT=csv'\n"
-                            "  slew --export-elements --format tle --out ~/.config/Gpredict/amateur.tle\n"
+                            "  slew --connect sim: --qth JO65hq --clock-start "
+                            "2026-11-25T12:00:00Z --clock-rate 5\n"
+                            "  slew --update-elements "
+                            "'https://celestrak.org/NORAD/elements/"
+                            "gp.php?GROUP=amateur&FORMAT=csv'\n"
+                            "  slew --export-elements --format tle --out "
+                            "~/.config/Gpredict/amateur.tle\n"
                             "  slew --pass-report 12 --out pass-12.png\n"
-                            "  slew --remote 'mqtts://alice@broker.example:8883/mast?cafile=/etc/slew/broker-ca.pem'")},
-            {QStringLiteral("See also"), QStringLiteral("slew-sim(1), ") + seeAlso()},
+                            "  slew --remote "
+                            "'mqtts://alice@broker.example:8883/mast?cafile=/"
+                            "etc/slew/broker-ca.pem'")},
+            {QStringLiteral("See also"),
+             QStringLiteral("slew-sim(1), ") + seeAlso()},
         };
         return p;
     }();
@@ -776,57 +819,68 @@ const ProgramDescription &slewProgram()
 
 const ProgramMode &slewWindowMode()
 {
-    return slewProgram().modes.at(0);
+    static const ProgramMode mode = makeWindowMode();
+    return mode;
 }
 
 const ProgramMode &slewHeadlessMode()
 {
-    return slewProgram().modes.at(1);
+    static const ProgramMode mode = makeHeadlessMode();
+    return mode;
 }
 
 const ProgramMode &slewTuneMode()
 {
-    return slewProgram().modes.at(2);
+    static const ProgramMode mode = makeTuneMode();
+    return mode;
 }
 
 const ProgramMode &slewPassesMode()
 {
-    return slewProgram().modes.at(3);
+    static const ProgramMode mode = makePassesMode();
+    return mode;
 }
 
 const ProgramMode &slewWhereMode()
 {
-    return slewProgram().modes.at(4);
+    static const ProgramMode mode = makeWhereMode();
+    return mode;
 }
 
 const ProgramMode &slewUpdateElementsMode()
 {
-    return slewProgram().modes.at(5);
+    static const ProgramMode mode = makeUpdateElementsMode();
+    return mode;
 }
 
 const ProgramMode &slewUpdateTranspondersMode()
 {
-    return slewProgram().modes.at(6);
+    static const ProgramMode mode = makeUpdateTranspondersMode();
+    return mode;
 }
 
 const ProgramMode &slewScheduleMode()
 {
-    return slewProgram().modes.at(7);
+    static const ProgramMode mode = makeScheduleMode();
+    return mode;
 }
 
 const ProgramMode &slewPassReportMode()
 {
-    return slewProgram().modes.at(8);
+    static const ProgramMode mode = makePassReportMode();
+    return mode;
 }
 
 const ProgramMode &slewRemoteMode()
 {
-    return slewProgram().modes.at(9);
+    static const ProgramMode mode = makeRemoteMode();
+    return mode;
 }
 
 const ProgramMode &slewExportElementsMode()
 {
-    return slewProgram().modes.at(10);
+    static const ProgramMode mode = makeExportElementsMode();
+    return mode;
 }
 
 const ProgramDescription &slewSimProgram()
@@ -835,7 +889,7 @@ const ProgramDescription &slewSimProgram()
         ProgramDescription p;
         p.name = QStringLiteral("slew-sim");
         p.summary = QStringLiteral("simulated az/el antenna rotator on TCP or a pseudo-terminal");
-        p.modes = {makeSimMode()};
+        p.modes = {slewSimMode()};
         p.description = p.modes.first().description;
         p.sections = {
             {QStringLiteral("Examples"),
@@ -851,7 +905,8 @@ const ProgramDescription &slewSimProgram()
 
 const ProgramMode &slewSimMode()
 {
-    return slewSimProgram().modes.at(0);
+    static const ProgramMode mode = makeSimMode();
+    return mode;
 }
 
 const ProgramDescription &slewctlProgram()
