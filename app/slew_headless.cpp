@@ -307,8 +307,8 @@ int runHeadless(int argc, char *argv[])
     }
 
     if (parser.isSet(QStringLiteral("qth"))) {
-        slew::sky::Station where;
-        if (!slew::sky::parseStation(parser.value(QStringLiteral("qth")), &where, &error))
+        slew::sky::Site where;
+        if (!slew::sky::parseSite(parser.value(QStringLiteral("qth")), &where, &error))
             return fail(QStringLiteral("%1: %2").arg(label(QStringLiteral("qth")), error));
         if (!slew::cli::readHorizonOption(parser, label, &where.horizon, &error))
             return fail(error);

@@ -25,7 +25,7 @@
 #include "bridge/rotctldserver.h"
 #include "session/rotatorsession.h"
 #include "station/station.h"
-#include "sky/station.h"
+#include "sky/site.h"
 #include "input/finitenumber.h"
 #include "input/logtext.h"
 #include "cli/terminationsignalwatcher.h"
@@ -96,9 +96,9 @@ QString parse(QCommandLineParser &parser, const QStringList &argv, Arguments &ou
                 .arg(parser.value(maxClients));
     }
     if (parser.isSet(QStringLiteral("qth"))) {
-        slew::sky::Station station;
+        slew::sky::Site station;
         QString error;
-        if (!slew::sky::parseStation(parser.value(QStringLiteral("qth")), &station, &error))
+        if (!slew::sky::parseSite(parser.value(QStringLiteral("qth")), &station, &error))
             return QStringLiteral("--qth: %1").arg(error);
         out.station = parser.value(QStringLiteral("qth")).trimmed();
     }
@@ -182,7 +182,7 @@ int main(int argc, char *argv[])
     const QString settingsProblem = checkSettingsFile();
     if (!args.station.isEmpty()) {
         // Said kept only when it is: a later --passes would use the old one.
-        if (const QString why = slew::model::saveSetting(QLatin1String(slew::sky::kStationSettingsKey), args.station);
+        if (const QString why = slew::model::saveSetting(QLatin1String(slew::sky::kSiteSettingsKey), args.station);
             !why.isEmpty()) {
             std::fprintf(stderr, "slew: --qth: the station was not saved: %s\n", qPrintable(why));
             return 1;

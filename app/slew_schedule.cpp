@@ -15,7 +15,7 @@
 #include "schedule/schedule.h"
 #include "schedule/scheduletext.h"
 #include "sky/elementage.h"
-#include "sky/station.h"
+#include "sky/site.h"
 #include "sky/utctime.h"
 #include "tracking/rotatorreach.h"
 
@@ -61,7 +61,7 @@ int runSchedule(int argc, char **argv)
     const auto targets = slew::cli::readTrackTargets(parser, label, &error);
     if (!targets)
         return fail(error);
-    slew::sky::Station station;
+    slew::sky::Site station;
     if (const QString problem = readSkyStation(parser, true, &station); !problem.isEmpty())
         return fail(problem);
 
@@ -103,13 +103,13 @@ int runSchedule(int argc, char **argv)
         slew::schedule::planSchedule(*targets, station, slew::tracking::reachOf(profile.limits, profile.motion), settings);
     if (parser.isSet(QStringLiteral("json"))) {
         QJsonObject json = slew::schedule::scheduleToJson(plan);
-        json.insert(QStringLiteral("station"), slew::sky::describeStation(station));
+        json.insert(QStringLiteral("station"), slew::sky::describeSite(station));
         if (station.horizon)
             json.insert(QStringLiteral("horizon"), station.horizon->describe());
         std::fputs(QJsonDocument(json).toJson(QJsonDocument::Indented).constData(), stdout);
         return 0;
     }
-    std::printf("%s\n", qPrintable(slew::sky::describeStation(station)));
+    std::printf("%s\n", qPrintable(slew::sky::describeSite(station)));
     if (station.horizon)
         std::printf("horizon mask: %s\n", qPrintable(station.horizon->describe()));
     for (int i = 0; i < plan.targets.size(); ++i)

@@ -12,7 +12,7 @@
 #include "sky/passes.h"
 #include "sky/utctime.h"
 #include "sky/sgp4.h"
-#include "sky/station.h"
+#include "sky/site.h"
 #include "sky/sunmoon.h"
 #include "sky/elementsetformat.h"
 
@@ -81,7 +81,7 @@ double nowJulian()
 }
 
 struct Common {
-    Station station;
+    Site station;
     double julian = 0;
     QList<ElementSet> sets;
     QString origin; // where the sets came from: --tle's file, or the cache
@@ -89,20 +89,20 @@ struct Common {
 
 } // namespace
 
-QString readSkyStation(const QCommandLineParser &parser, bool withHorizon, Station *out)
+QString readSkyStation(const QCommandLineParser &parser, bool withHorizon, Site *out)
 {
     // The station from --qth, else the one the window saved (Sky → Station…).
     QString error;
     bool saved = false;
     if (parser.isSet(QStringLiteral("qth"))) {
-        if (!parseStation(parser.value(QStringLiteral("qth")), out, &error))
+        if (!parseSite(parser.value(QStringLiteral("qth")), out, &error))
             return QStringLiteral("--qth: %1").arg(error);
     } else {
-        const QString text = QSettings().value(QLatin1String(kStationSettingsKey)).toString();
+        const QString text = QSettings().value(QLatin1String(kSiteSettingsKey)).toString();
         if (text.isEmpty())
             return QStringLiteral("--qth is needed: LAT,LON[,HEIGHT_M] or a Maidenhead locator "
                                   "(or set the station in the window: Sky → Station…)");
-        if (!parseStation(text, out, &error))
+        if (!parseSite(text, out, &error))
             return QStringLiteral("the saved station \"%1\": %2 (give --qth)").arg(text, error);
         saved = true;
     }
@@ -351,7 +351,7 @@ int runWhere(QCoreApplication &app)
         look.azimuthDeg = p.azimuthDeg;
         look.elevationDeg = p.elevationDeg;
         // Range from the station, rate by a one-second difference.
-        const Vec3 station = stationEarthFixed(common.station);
+        const Vec3 station = siteEarthFixed(common.station);
         auto rangeAt = [&](double julian) {
             const BodyPosition q = bodyPosition(*body, common.station, julian);
             const double ra = radians(q.rightAscensionDeg), dec = radians(q.declinationDeg);

@@ -12,10 +12,10 @@ int runSky(int argc, char **argv);
 class QCommandLineParser;
 class QString;
 namespace slew::sky {
-struct Station;
+struct Site;
 }
 
 // The station for a sky command: --qth, else the one the window keeps
 // (Sky → Station…); with `withHorizon`, its mask from --horizon, else the
 // one kept with the saved station. Empty, or why not.
-QString readSkyStation(const QCommandLineParser &parser, bool withHorizon, slew::sky::Station *out);
+QString readSkyStation(const QCommandLineParser &parser, bool withHorizon, slew::sky::Site *out);

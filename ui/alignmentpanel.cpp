@@ -56,7 +56,7 @@ AlignmentPanel::AlignmentPanel(RotatorSession *session, QWidget *parent)
     updateButtons();
 }
 
-void AlignmentPanel::setStation(const std::optional<sky::Station> &station)
+void AlignmentPanel::setStation(const std::optional<sky::Site> &station)
 {
     m_station = station;
     updateButtons();

@@ -7,7 +7,7 @@
 // at once, so the plot, the rotctld server and the tracker all use them, and
 // remembered for this rotator's link (model/savedcalibration.h).
 
-#include "sky/station.h"
+#include "sky/site.h"
 #include "sky/sunmoon.h"
 
 #include <QWidget>
@@ -29,7 +29,7 @@ class AlignmentPanel : public QWidget {
 public:
     explicit AlignmentPanel(session::RotatorSession *session, QWidget *parent = nullptr);
 
-    void setStation(const std::optional<sky::Station> &station);
+    void setStation(const std::optional<sky::Site> &station);
     // The time to align at, as a UTC Julian date: the system clock unless a
     // test sets another.
     void setClock(std::function<double()> julianNow) { m_now = std::move(julianNow); }
@@ -47,7 +47,7 @@ private:
     void updateButtons();
 
     session::RotatorSession *m_session;
-    std::optional<sky::Station> m_station;
+    std::optional<sky::Site> m_station;
     std::function<double()> m_now;
     QLabel *m_offsets;
     QLabel *m_result;

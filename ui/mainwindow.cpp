@@ -270,7 +270,7 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     connect(station->radio(), &station::DopplerRadio::measured, m_recorder, &TelemetryRecorder::recordDopplerError);
     // The place the station keeps; the Tracking tab follows it by itself.
     connect(station, &station::Station::placeChanged, m_alignment, &AlignmentPanel::setStation);
-    connect(station, &station::Station::placeChanged, m_plot, [this](const std::optional<sky::Station> &place) {
+    connect(station, &station::Station::placeChanged, m_plot, [this](const std::optional<sky::Site> &place) {
         m_plot->setHorizonMask(place ? place->horizon : nullptr);
     });
     if (const QString problem = station->restoreSavedPlace(); !problem.isEmpty())
@@ -352,8 +352,8 @@ void MainWindow::buildMenus()
         dialog->setAttribute(Qt::WA_DeleteOnClose);
         connect(dialog, &QDialog::accepted, this, [this, dialog] {
             m_station->setPlace(dialog->station());
-            logInfo(tr("station set to %1").arg(sky::stationLocator(dialog->station().latitudeDeg,
-                                                                    dialog->station().longitudeDeg)));
+            logInfo(tr("station set to %1").arg(sky::siteLocator(dialog->station().latitudeDeg,
+                                                                 dialog->station().longitudeDeg)));
             if (dialog->station().horizon)
                 logInfo(tr("horizon mask: %1").arg(dialog->station().horizon->describe()));
         });

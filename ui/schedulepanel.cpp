@@ -276,7 +276,7 @@ void SchedulePanel::preview()
         return;
     QStringList missing;
     const QList<TrackTarget> list = targets(&missing);
-    const std::optional<sky::Station> place = m_station->place();
+    const std::optional<sky::Site> place = m_station->place();
     if (list.isEmpty() || !place) {
         m_previewing = false;
         show(schedule::Schedule{});

@@ -69,23 +69,23 @@ StationDialog::StationDialog(QWidget *parent)
     check();
 }
 
-bool StationDialog::savedStation(sky::Station *out, QString *text)
+bool StationDialog::savedStation(sky::Site *out, QString *text)
 {
-    const QString saved = QSettings().value(QLatin1String(sky::kStationSettingsKey)).toString();
+    const QString saved = QSettings().value(QLatin1String(sky::kSiteSettingsKey)).toString();
     if (text)
         *text = saved;
     QString error;
-    return !saved.isEmpty() && sky::parseStation(saved, out, &error);
+    return !saved.isEmpty() && sky::parseSite(saved, out, &error);
 }
 
 void StationDialog::check()
 {
     QString error;
-    sky::Station parsed;
-    const bool ok = sky::parseStation(m_edit->text(), &parsed, &error);
+    sky::Site parsed;
+    const bool ok = sky::parseSite(m_edit->text(), &parsed, &error);
     if (ok)
         m_station = parsed;
-    m_feedback->setText(ok ? sky::describeStation(parsed) : error);
+    m_feedback->setText(ok ? sky::describeSite(parsed) : error);
     m_feedback->setProperty("refused", !ok);
     // The mask is read as it is named: a file that cannot be used is said
     // here, and OK waits for a good one (or none).
@@ -107,12 +107,12 @@ void StationDialog::check()
 void StationDialog::accept()
 {
     QString error;
-    sky::Station parsed;
-    if (!sky::parseStation(m_edit->text(), &parsed, &error))
+    sky::Site parsed;
+    if (!sky::parseSite(m_edit->text(), &parsed, &error))
         return;
     // The dialog stays open, saying why, when the settings file cannot take
     // the station: closing would claim it was kept.
-    if (const QString why = model::saveSetting(QLatin1String(sky::kStationSettingsKey), m_edit->text().trimmed());
+    if (const QString why = model::saveSetting(QLatin1String(sky::kSiteSettingsKey), m_edit->text().trimmed());
         !why.isEmpty()) {
         m_feedback->setText(tr("The station was not saved: %1").arg(why));
         m_feedback->setProperty("refused", true);

@@ -6,7 +6,7 @@
 // while either is wrong, and both are kept in the settings for pass
 // prediction, the schedule and tracking.
 
-#include "sky/station.h"
+#include "sky/site.h"
 
 #include <QDialog>
 
@@ -22,10 +22,10 @@ public:
     explicit StationDialog(QWidget *parent = nullptr);
 
     // The station the settings hold; false when none has been set.
-    static bool savedStation(sky::Station *out, QString *text = nullptr);
+    static bool savedStation(sky::Site *out, QString *text = nullptr);
 
     // The station typed, with the horizon mask named (if any).
-    sky::Station station() const { return m_station; }
+    sky::Site station() const { return m_station; }
 
     void accept() override;
 
@@ -38,7 +38,7 @@ private:
     QLabel *m_horizonFeedback = nullptr;
     std::shared_ptr<const sky::HorizonMask> m_mask; // the file's, as last read
     QDialogButtonBox *m_buttons = nullptr;
-    sky::Station m_station;
+    sky::Site m_station;
 };
 
 } // namespace slew::ui

@@ -162,8 +162,8 @@ void TrackingPanel::showButtons()
 
 void TrackingPanel::showStation()
 {
-    const std::optional<sky::Station> place = m_station->place();
-    m_stationLine->setText(place ? sky::describeStation(*place) : tr("not set: Sky → Station…"));
+    const std::optional<sky::Site> place = m_station->place();
+    m_stationLine->setText(place ? sky::describeSite(*place) : tr("not set: Sky → Station…"));
     m_stationLine->setToolTip(place && place->horizon ? tr("Horizon mask: %1").arg(place->horizon->describe())
                                                       : QString());
     showPasses();
@@ -213,7 +213,7 @@ void TrackingPanel::showPasses()
     m_planning = false;
     const int generation = ++m_generation; // a forecast still running is for another choice
     const auto target = chosenTarget();
-    const std::optional<sky::Station> place = m_station->place();
+    const std::optional<sky::Site> place = m_station->place();
     if (!target || !place) {
         emit passOverlayChanged(std::nullopt);
         refreshLive();
@@ -345,7 +345,7 @@ void TrackingPanel::refreshLive()
         m_countdown->setText(tr("up now: LOS in %1").arg(TrackingLine::countdown((next->los.julian - now) * sky::kSecondsPerDay)));
     }
 
-    const std::optional<sky::Station> place = m_station->place();
+    const std::optional<sky::Site> place = m_station->place();
     if (!m_sky || !place) {
         m_live->clear();
         return;

@@ -10,7 +10,7 @@
 #include "passoverlay.h"
 
 #include "sky/passes.h"
-#include "sky/station.h"
+#include "sky/site.h"
 #include "tracking/passrunner.h"
 #include "tracking/stationclock.h"
 

@@ -75,7 +75,7 @@ UpcomingPanel::UpcomingPanel(station::Station *station, QWidget *parent) : QWidg
 void UpcomingPanel::refresh()
 {
     const int generation = ++m_generation;
-    const std::optional<sky::Station> place = m_station->place();
+    const std::optional<sky::Site> place = m_station->place();
     sky::FavouriteTargets favourites;
     favourites.load(QSettings());
     // The favourites as targets: a satellite from the loaded sets (one no

@@ -384,7 +384,7 @@ Schedule arrangeSchedule(const QList<QList<ScheduledPass>> &candidatesByPriority
     return out;
 }
 
-Schedule planSchedule(const QList<tracking::TrackTarget> &targets, const sky::Station &station,
+Schedule planSchedule(const QList<tracking::TrackTarget> &targets, const sky::Site &station,
                       const tracking::RotatorReach &reach, const ScheduleSettings &settings,
                       const QList<ScheduledPass> &pinned, const std::atomic<bool> *stop)
 {
@@ -400,7 +400,7 @@ Schedule planSchedule(const QList<tracking::TrackTarget> &targets, const sky::St
     // elevation keeps the passes that climb to it.
     const sky::PassWindow window{settings.startJulian, settings.startJulian + settings.hours / 24.0, 0.0, stop,
                                  settings.minElevationDeg};
-    sky::Station flat = station;
+    sky::Site flat = station;
     flat.horizon.reset();
     QList<QList<ScheduledPass>> byPriority;
     for (int priority = 0; priority < targets.size(); ++priority) {

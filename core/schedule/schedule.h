@@ -6,7 +6,7 @@
 // Passes are taken by priority, greedily: every pass of the first target,
 // then those of the second that fit between them, and so on. A pass is
 // taken only when
-//   - it clears the station's horizon mask (sky::Station::horizon) and the
+//   - it clears the station's horizon mask (sky::Site::horizon) and the
 //     minimum elevation: one that never does is dropped, "below the horizon";
 //   - its satellite's elements are not too old at its AOS;
 //   - the planner (tracking/passplanner.h) finds a path for it;
@@ -38,7 +38,7 @@
 
 #include "sky/elementage.h"
 #include "sky/passes.h"
-#include "sky/station.h"
+#include "sky/site.h"
 
 #include <QList>
 #include <QString>
@@ -118,7 +118,7 @@ struct Schedule {
 // window and arranges them as above. `pinned` are taken first (their
 // points and plan as they were). `stop`, when set true, ends the work early
 // with what is arranged so far.
-Schedule planSchedule(const QList<tracking::TrackTarget> &targets, const sky::Station &station,
+Schedule planSchedule(const QList<tracking::TrackTarget> &targets, const sky::Site &station,
                       const tracking::RotatorReach &reach, const ScheduleSettings &settings,
                       const QList<ScheduledPass> &pinned = {}, const std::atomic<bool> *stop = nullptr);
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The station's horizon: the lowest usable elevation at each azimuth, where
+// The site's horizon: the lowest usable elevation at each azimuth, where
 // trees, buildings and hills hide the sky. It is given as points (azimuth,
 // elevation) and read between them as straight lines, round through north;
 // a wall is two points at one azimuth (the foot and the top, in either
@@ -17,7 +17,7 @@
 //
 // AOS and LOS are where the target rises above the mask (or the minimum
 // elevation asked for, whichever is higher) and sets below it: passes.h
-// applies the mask that sky::Station carries. Pure code.
+// applies the mask that sky::Site carries. Pure code.
 
 #include <QList>
 #include <QString>

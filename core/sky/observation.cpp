@@ -32,11 +32,11 @@ Vec3 temeVelocityToEarthFixed(const Vec3 &positionTeme, const Vec3 &velocityTeme
     return {v.x + kEarthRotationRadS * r.y, v.y - kEarthRotationRadS * r.x, v.z};
 }
 
-Vec3 stationEarthFixed(const Station &station)
+Vec3 siteEarthFixed(const Site &site)
 {
-    const double lat = radians(station.latitudeDeg);
-    const double lon = radians(station.longitudeDeg);
-    const double h = station.heightM / 1000.0;
+    const double lat = radians(site.latitudeDeg);
+    const double lon = radians(site.longitudeDeg);
+    const double h = site.heightM / 1000.0;
     const double sinLat = std::sin(lat);
     const double primeVertical = kWgs84RadiusKm / std::sqrt(1.0 - kWgs84EccSq * sinLat * sinLat);
     return {(primeVertical + h) * std::cos(lat) * std::cos(lon),
@@ -60,11 +60,11 @@ Geodetic earthFixedToGeodetic(const Vec3 &p)
     return {degrees(lat), degrees(std::atan2(p.y, p.x)), height};
 }
 
-StationFrame::StationFrame(const Station &station)
-    : position(stationEarthFixed(station))
+SiteFrame::SiteFrame(const Site &site)
+    : position(siteEarthFixed(site))
 {
-    const double lat = radians(station.latitudeDeg);
-    const double lon = radians(station.longitudeDeg);
+    const double lat = radians(site.latitudeDeg);
+    const double lon = radians(site.longitudeDeg);
     const double sinLat = std::sin(lat), cosLat = std::cos(lat);
     const double sinLon = std::sin(lon), cosLon = std::cos(lon);
     east = {-sinLon, cosLon, 0.0};
@@ -72,13 +72,13 @@ StationFrame::StationFrame(const Station &station)
     up = {cosLat * cosLon, cosLat * sinLon, sinLat};
 }
 
-LookAngles lookAnglesEarthFixed(const StationFrame &station, const Vec3 &positionEcef, const Vec3 &velocityEcef)
+LookAngles lookAnglesEarthFixed(const SiteFrame &site, const Vec3 &positionEcef, const Vec3 &velocityEcef)
 {
-    const Vec3 rho = positionEcef - station.position;
+    const Vec3 rho = positionEcef - site.position;
     LookAngles look;
     look.rangeKm = rho.norm();
-    look.azimuthDeg = wrap360(degrees(std::atan2(rho.dot(station.east), rho.dot(station.north))));
-    look.elevationDeg = degrees(std::asin(std::clamp(rho.dot(station.up) / look.rangeKm, -1.0, 1.0)));
+    look.azimuthDeg = wrap360(degrees(std::atan2(rho.dot(site.east), rho.dot(site.north))));
+    look.elevationDeg = degrees(std::asin(std::clamp(rho.dot(site.up) / look.rangeKm, -1.0, 1.0)));
     look.rangeRateKmS = rho.dot(velocityEcef) / look.rangeKm;
     return look;
 }
@@ -92,10 +92,10 @@ EarthFixedState temeStateToEarthFixed(const Vec3 &p, const Vec3 &v, double julia
     return {r, {vr.x + kEarthRotationRadS * r.y, vr.y - kEarthRotationRadS * r.x, vr.z}};
 }
 
-LookAngles lookAngles(const Station &station, const Vec3 &positionTeme, const Vec3 &velocityTeme, double julianDate)
+LookAngles lookAngles(const Site &site, const Vec3 &positionTeme, const Vec3 &velocityTeme, double julianDate)
 {
     const EarthFixedState e = temeStateToEarthFixed(positionTeme, velocityTeme, julianDate);
-    return lookAnglesEarthFixed(StationFrame(station), e.position, e.velocity);
+    return lookAnglesEarthFixed(SiteFrame(site), e.position, e.velocity);
 }
 
 double refractionDeg(double elevationDeg)

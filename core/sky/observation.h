@@ -4,11 +4,11 @@
 // coordinates (GMST IAU-82, as "Revisiting Spacetrack Report #3" does; UT1
 // is taken as UTC and polar motion is ignored, which moves a LEO satellite
 // by well under the beamwidth of any amateur antenna), azimuth, elevation,
-// range and range-rate from the station, the Doppler factor, refraction, the
+// range and range-rate from the site, the Doppler factor, refraction, the
 // sub-satellite point and whether the satellite is in sunlight.
 
 #include "skyvector.h"
-#include "station.h"
+#include "site.h"
 
 namespace slew::sky {
 
@@ -33,21 +33,21 @@ Vec3 temeToEarthFixed(const Vec3 &teme, double julianDate);
 // Velocity seen from the rotating earth.
 Vec3 temeVelocityToEarthFixed(const Vec3 &positionTeme, const Vec3 &velocityTeme, double julianDate);
 
-Vec3 stationEarthFixed(const Station &station); // km, WGS-84
+Vec3 siteEarthFixed(const Site &site); // km, WGS-84
 Geodetic earthFixedToGeodetic(const Vec3 &ecef);
 
-// The station's position and local east/north/up axes, worked out once for
+// The site's position and local east/north/up axes, worked out once for
 // the many look angles of a pass search.
-struct StationFrame {
-    explicit StationFrame(const Station &station);
+struct SiteFrame {
+    explicit SiteFrame(const Site &site);
     Vec3 position, east, north, up;
 };
 
 // Look angles to an Earth-fixed position and velocity.
-LookAngles lookAnglesEarthFixed(const StationFrame &station, const Vec3 &positionEcef, const Vec3 &velocityEcef);
-inline LookAngles lookAnglesEarthFixed(const Station &station, const Vec3 &positionEcef, const Vec3 &velocityEcef)
+LookAngles lookAnglesEarthFixed(const SiteFrame &site, const Vec3 &positionEcef, const Vec3 &velocityEcef);
+inline LookAngles lookAnglesEarthFixed(const Site &site, const Vec3 &positionEcef, const Vec3 &velocityEcef)
 {
-    return lookAnglesEarthFixed(StationFrame(station), positionEcef, velocityEcef);
+    return lookAnglesEarthFixed(SiteFrame(site), positionEcef, velocityEcef);
 }
 
 // A TEME state in the Earth-fixed frame: position and velocity seen from
@@ -57,7 +57,7 @@ struct EarthFixedState {
 };
 EarthFixedState temeStateToEarthFixed(const Vec3 &positionTeme, const Vec3 &velocityTeme, double julianDate);
 // Look angles to a TEME state at a Julian date (UTC).
-LookAngles lookAngles(const Station &station, const Vec3 &positionTeme, const Vec3 &velocityTeme, double julianDate);
+LookAngles lookAngles(const Site &site, const Vec3 &positionTeme, const Vec3 &velocityTeme, double julianDate);
 
 // The factor a transmitted frequency is multiplied by on arrival:
 // 1 − range-rate / c (first order; the relativistic term is 1e-10).

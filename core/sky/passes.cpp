@@ -242,25 +242,25 @@ QList<Pass> scanAboveThreshold(const ElevationFunction &f, const PassWindow &win
 
 } // namespace
 
-bool observeSatellite(const Sgp4 &satellite, const Station &station, double julian, LookAngles *out)
+bool observeSatellite(const Sgp4 &satellite, const Site &site, double julian, LookAngles *out)
 {
     Sgp4Propagator once(satellite);
-    return observeSatellite(once, station, julian, out);
+    return observeSatellite(once, site, julian, out);
 }
 
-bool observeSatellite(Sgp4Propagator &satellite, const Station &station, double julian, LookAngles *out)
+bool observeSatellite(Sgp4Propagator &satellite, const Site &site, double julian, LookAngles *out)
 {
     const Sgp4State s = satellite.propagateToJulian(julian);
     if (!s.ok())
         return false;
-    const LookAngles look = lookAngles(station, s.positionKm, s.velocityKmS, julian);
+    const LookAngles look = lookAngles(site, s.positionKm, s.velocityKmS, julian);
     if (!input::allFinite(look.azimuthDeg, look.elevationDeg, look.rangeKm, look.rangeRateKmS))
         return false;
     *out = look;
     return true;
 }
 
-QList<Pass> predictPasses(const Sgp4 &satellite, const Station &station, const PassWindow &window)
+QList<Pass> predictPasses(const Sgp4 &satellite, const Site &site, const PassWindow &window)
 {
     if (satellite.initialError() != Sgp4Error::None)
         return {};
@@ -268,17 +268,17 @@ QList<Pass> predictPasses(const Sgp4 &satellite, const Station &station, const P
 
     // Geometry that bounds how soon the satellite can rise or set. Seen
     // from the earth's centre, a satellite at radius r is above elevation E
-    // only within the angle ψ(r) = acos(R cos E / r) − E of the station. It
+    // only within the angle ψ(r) = acos(R cos E / r) − E of the site. It
     // moves over the ground no faster than its angular rate at perigee plus
     // the earth's rotation, so while it is further than ψ(apogee) away it
     // cannot rise, and while it is nearer than ψ(perigee) it cannot set.
     // Half a degree covers the difference between the geocentric and the
     // geodetic vertical; 1 % on the radii (60 km for a LEO) covers the
     // short-period terms and a week of drag.
-    const StationFrame frame(station);
-    const Vec3 stationEcef = frame.position;
-    const double stationRadius = stationEcef.norm();
-    const Vec3 stationUnit = stationEcef * (1.0 / stationRadius);
+    const SiteFrame frame(site);
+    const Vec3 siteEcef = frame.position;
+    const double siteRadius = siteEcef.norm();
+    const Vec3 siteUnit = siteEcef * (1.0 / siteRadius);
     const double meanMotionRadS = tle.meanMotionRevPerDay * kTwoPi / kSecondsPerDay;
     const double semiMajorKm = std::cbrt(398600.8 / (meanMotionRadS * meanMotionRadS)); // Kepler's third law
     const double e = tle.eccentricity;
@@ -287,7 +287,7 @@ QList<Pass> predictPasses(const Sgp4 &satellite, const Station &station, const P
     const double threshold = radians(window.minElevationDeg);
     const double margin = radians(0.5);
     auto visibleAngle = [&](double radius) {
-        const double c = stationRadius * std::cos(threshold) / radius;
+        const double c = siteRadius * std::cos(threshold) / radius;
         return c >= 1.0 ? 0.0 : std::acos(c) - threshold;
     };
     const double riseAngle = visibleAngle(apogee) + margin;
@@ -306,7 +306,7 @@ QList<Pass> predictPasses(const Sgp4 &satellite, const Station &station, const P
         const EarthFixedState fixed = temeStateToEarthFixed(s.positionKm, s.velocityKmS, julian);
         const Vec3 &r = fixed.position;
         const LookAngles look = lookAnglesEarthFixed(frame, r, fixed.velocity);
-        const double angle = std::acos(std::clamp(stationUnit.dot(r) / r.norm(), -1.0, 1.0));
+        const double angle = std::acos(std::clamp(siteUnit.dot(r) / r.norm(), -1.0, 1.0));
         double quiet = 0.0;
         if (look.elevationDeg < window.minElevationDeg)
             quiet = std::max(0.0, (angle - riseAngle) / groundRate);
@@ -319,7 +319,7 @@ QList<Pass> predictPasses(const Sgp4 &satellite, const Station &station, const P
     scan.inPassStepS = 60.0;
     scan.maxStepS = 3600.0;
 
-    QList<Pass> passes = scanPasses(f, window, scan, station.horizon.get());
+    QList<Pass> passes = scanPasses(f, window, scan, site.horizon.get());
     for (Pass &p : passes) {
         p.name = tle.displayName();
         p.catalogueNumber = tle.catalogueNumber;
@@ -337,11 +337,11 @@ QList<Pass> predictPasses(const Sgp4 &satellite, const Station &station, const P
     return passes;
 }
 
-QList<Pass> predictPasses(const QList<ElementSet> &satellites, const Station &station, const PassWindow &window)
+QList<Pass> predictPasses(const QList<ElementSet> &satellites, const Site &site, const PassWindow &window)
 {
     QList<Pass> all;
     for (const ElementSet &tle : satellites)
-        all += predictPasses(Sgp4(tle), station, window);
+        all += predictPasses(Sgp4(tle), site, window);
     std::stable_sort(all.begin(), all.end(), [](const Pass &a, const Pass &b) { return a.aos.julian < b.aos.julian; });
     return all;
 }
@@ -371,18 +371,18 @@ QList<Pass> skyPasses(const std::function<BodyPosition(double)> &position, const
 
 } // namespace
 
-QList<Pass> predictBodyPasses(SkyBody body, const Station &station, const PassWindow &window)
+QList<Pass> predictBodyPasses(SkyBody body, const Site &site, const PassWindow &window)
 {
-    return skyPasses([&](double julian) { return bodyPosition(body, station, julian); },
+    return skyPasses([&](double julian) { return bodyPosition(body, site, julian); },
                      body == SkyBody::Sun ? QStringLiteral("Sun") : QStringLiteral("Moon"), window,
-                     station.horizon.get());
+                     site.horizon.get());
 }
 
-QList<Pass> predictCelestialPasses(double ra, double dec, const Station &station, const PassWindow &window)
+QList<Pass> predictCelestialPasses(double ra, double dec, const Site &site, const PassWindow &window)
 {
-    return skyPasses([&](double julian) { return celestialPosition(ra, dec, station, julian); },
+    return skyPasses([&](double julian) { return celestialPosition(ra, dec, site, julian); },
                      QStringLiteral("RA %1° Dec %2°").arg(ra, 0, 'f', 3).arg(dec, 0, 'f', 3), window,
-                     station.horizon.get());
+                     site.horizon.get());
 }
 
 } // namespace slew::sky

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Pass prediction: when a satellite (or the sun, or the moon) is above a
-// minimum elevation at the station, and above its horizon mask
+// minimum elevation at the site, and above its horizon mask
 // (horizonmask.h) where it has one. A pass has its acquisition (AOS), the
 // time of closest approach (TCA, taken as the moment of highest elevation,
 // which is what an antenna cares about) and its loss (LOS), each with the
 // azimuth, and whether the satellite is in sunlight during it.
 //
 // The search steps through time, as far as the object provably cannot
-// cross the threshold (for a satellite: its angle from the station about
+// cross the threshold (for a satellite: its angle from the site about
 // the earth's centre, against the largest angle at which it can be up and
 // the fastest it can move), then pins each crossing down by bisection to
 // 10 ms and the peak by golden section. A pass that clears the threshold for
@@ -17,7 +17,7 @@
 
 #include "sgp4.h"
 #include "sgp4propagator.h"
-#include "station.h"
+#include "site.h"
 #include "sunmoon.h"
 #include "elementset.h"
 
@@ -61,20 +61,20 @@ struct PassWindow {
 
 // The next passes of one satellite. A satellite that cannot be propagated
 // (decayed, invalid elements) has none.
-QList<Pass> predictPasses(const Sgp4 &satellite, const Station &station, const PassWindow &window);
+QList<Pass> predictPasses(const Sgp4 &satellite, const Site &site, const PassWindow &window);
 
 // Every satellite, all passes sorted by AOS.
-QList<Pass> predictPasses(const QList<ElementSet> &satellites, const Station &station, const PassWindow &window);
+QList<Pass> predictPasses(const QList<ElementSet> &satellites, const Site &site, const PassWindow &window);
 
 // Rise, culmination and set of the sun or the moon above the window's
 // minimum elevation. The almanac's sunrise and sunset put the centre at
 // kRiseSetElevationDeg: the upper limb on the horizon, lifted by standard
 // refraction.
 inline constexpr double kRiseSetElevationDeg = -0.8333;
-QList<Pass> predictBodyPasses(SkyBody body, const Station &station, const PassWindow &window);
+QList<Pass> predictBodyPasses(SkyBody body, const Site &site, const PassWindow &window);
 // Rise, culmination and set of a fixed point of the sky (sunmoon.h,
 // celestialPosition), its centre on the window's minimum elevation.
-QList<Pass> predictCelestialPasses(double rightAscensionJ2000Deg, double declinationJ2000Deg, const Station &station,
+QList<Pass> predictCelestialPasses(double rightAscensionJ2000Deg, double declinationJ2000Deg, const Site &site,
                                    const PassWindow &window);
 
 // The engine, on any elevation function: exposed for tests. It ends on any
@@ -103,8 +103,8 @@ QList<Pass> scanPasses(const ElevationFunction &elevation, const PassWindow &win
                        const HorizonMask *horizon = nullptr);
 
 // The satellite's look angles at a time; false when it cannot be propagated.
-bool observeSatellite(const Sgp4 &satellite, const Station &station, double julian, LookAngles *out);
+bool observeSatellite(const Sgp4 &satellite, const Site &site, double julian, LookAngles *out);
 // The same for one of a run of times: the propagator carries what it can to the next.
-bool observeSatellite(Sgp4Propagator &satellite, const Station &station, double julian, LookAngles *out);
+bool observeSatellite(Sgp4Propagator &satellite, const Site &site, double julian, LookAngles *out);
 
 } // namespace slew::sky

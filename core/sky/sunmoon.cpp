@@ -90,10 +90,10 @@ Geocentric geocentric(SkyBody body, double julianDateUtc)
     return g;
 }
 
-// Where an apparent position of date stands in the station's sky.
-BodyPosition horizontalOf(const ln_equ_posn &topocentric, const Station &station, double julianDate)
+// Where an apparent position of date stands in the site's sky.
+BodyPosition horizontalOf(const ln_equ_posn &topocentric, const Site &site, double julianDate)
 {
-    ln_lnlat_posn observer{station.longitudeDeg, station.latitudeDeg};
+    ln_lnlat_posn observer{site.longitudeDeg, site.latitudeDeg};
     // Apparent sidereal time, since the positions include nutation.
     ln_hrz_posn horizontal{};
     ln_equ_posn object = topocentric;
@@ -113,33 +113,33 @@ GeocentricPlace geocentricPlace(SkyBody body, double julianDate)
     return {g.equatorial.ra, g.equatorial.dec, g.distanceKm};
 }
 
-BodyPosition bodyPositionFrom(const GeocentricPlace &place, const Station &station, double julianDate)
+BodyPosition bodyPositionFrom(const GeocentricPlace &place, const Site &site, double julianDate)
 {
-    ln_lnlat_posn observer{station.longitudeDeg, station.latitudeDeg};
-    // The moon is 60 earth radii away: seen from the station it is up to a
+    ln_lnlat_posn observer{site.longitudeDeg, site.latitudeDeg};
+    // The moon is 60 earth radii away: seen from the site it is up to a
     // degree from where it is seen from the centre.
     ln_equ_posn shift{};
     ln_equ_posn object{place.rightAscensionDeg, place.declinationDeg};
-    ln_get_parallax(&object, place.distanceKm / kAstronomicalUnitKm, &observer, station.heightM, julianDate, &shift);
-    BodyPosition p = horizontalOf({object.ra + shift.ra, object.dec + shift.dec}, station, julianDate);
+    ln_get_parallax(&object, place.distanceKm / kAstronomicalUnitKm, &observer, site.heightM, julianDate, &shift);
+    BodyPosition p = horizontalOf({object.ra + shift.ra, object.dec + shift.dec}, site, julianDate);
     p.distanceKm = place.distanceKm;
     p.rightAscensionDeg = place.rightAscensionDeg;
     p.declinationDeg = place.declinationDeg;
     return p;
 }
 
-BodyPosition bodyPosition(SkyBody body, const Station &station, double julianDate)
+BodyPosition bodyPosition(SkyBody body, const Site &site, double julianDate)
 {
-    return bodyPositionFrom(geocentricPlace(body, julianDate), station, julianDate);
+    return bodyPositionFrom(geocentricPlace(body, julianDate), site, julianDate);
 }
 
-BodyPosition celestialPosition(double raJ2000Deg, double decJ2000Deg, const Station &station, double julianDate)
+BodyPosition celestialPosition(double raJ2000Deg, double decJ2000Deg, const Site &site, double julianDate)
 {
     ln_equ_posn j2000{wrap360(raJ2000Deg), decJ2000Deg};
     ln_equ_posn noProperMotion{0, 0};
     ln_equ_posn ofDate{};
     ln_get_apparent_posn(&j2000, &noProperMotion, dynamicalJulian(julianDate), &ofDate);
-    BodyPosition p = horizontalOf(ofDate, station, julianDate);
+    BodyPosition p = horizontalOf(ofDate, site, julianDate);
     p.rightAscensionDeg = ofDate.ra;
     p.declinationDeg = ofDate.dec;
     return p;

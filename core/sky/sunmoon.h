@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The sun and the moon as the station sees them: apparent topocentric
+// The sun and the moon as the site sees them: apparent topocentric
 // azimuth and elevation (aberration, nutation and, for the moon, parallax),
 // computed with libnova (Meeus's "Astronomical Algorithms"). Times are UTC
 // Julian dates; the difference to dynamical time is applied here.
 
 #include "observation.h"
 #include "skyvector.h"
-#include "station.h"
+#include "site.h"
 
 namespace slew::sky {
 
@@ -21,7 +21,7 @@ struct BodyPosition {
     double declinationDeg = 0;
 };
 
-BodyPosition bodyPosition(SkyBody body, const Station &station, double julianDate);
+BodyPosition bodyPosition(SkyBody body, const Site &site, double julianDate);
 
 // bodyPosition in two halves. The first is the slow one (the moon's theory
 // costs 1.7 ms): where the body is seen from the earth's centre, of date.
@@ -34,15 +34,15 @@ struct GeocentricPlace {
     double distanceKm = 0;
 };
 GeocentricPlace geocentricPlace(SkyBody body, double julianDate);
-BodyPosition bodyPositionFrom(const GeocentricPlace &place, const Station &station, double julianDate);
-inline BodyPosition sunPosition(const Station &s, double jd) { return bodyPosition(SkyBody::Sun, s, jd); }
-inline BodyPosition moonPosition(const Station &s, double jd) { return bodyPosition(SkyBody::Moon, s, jd); }
+BodyPosition bodyPositionFrom(const GeocentricPlace &place, const Site &site, double julianDate);
+inline BodyPosition sunPosition(const Site &s, double jd) { return bodyPosition(SkyBody::Sun, s, jd); }
+inline BodyPosition moonPosition(const Site &s, double jd) { return bodyPosition(SkyBody::Moon, s, jd); }
 
 // A fixed point of the sky (a radio source, a star) given by its J2000
-// right ascension and declination, as the station sees it now: precession,
+// right ascension and declination, as the site sees it now: precession,
 // nutation and aberration applied; at infinity, so no parallax. The
 // distance is 0.
-BodyPosition celestialPosition(double rightAscensionJ2000Deg, double declinationJ2000Deg, const Station &station,
+BodyPosition celestialPosition(double rightAscensionJ2000Deg, double declinationJ2000Deg, const Site &site,
                                double julianDate);
 
 // Geocentric direction to the sun in the equatorial frame of date (close

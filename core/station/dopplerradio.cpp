@@ -313,7 +313,7 @@ void DopplerRadio::begin()
     // The same sky the tracker follows, a copy of its own: lookAt() carries
     // the propagation on from call to call.
     auto sky = std::make_shared<tracking::TargetSky>(target);
-    const sky::Station place = m_runner->station();
+    const sky::Site place = m_runner->station();
     m_steering->begin(m_plan->frequencies, [sky, place](double julian) -> std::optional<double> {
         const std::optional<sky::LookAngles> look = sky->lookAt(place, julian);
         return look ? std::optional<double>(look->rangeRateKmS) : std::nullopt;

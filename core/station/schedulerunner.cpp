@@ -67,7 +67,7 @@ QString ScheduleRunner::keyOf(const ScheduledPass &pass) const
     return QStringLiteral("%1@%2").arg(pass.target).arg(qint64(std::llround(pass.startJulian * sky::kSecondsPerDay)));
 }
 
-void ScheduleRunner::start(const QList<tracking::TrackTarget> &targets, const sky::Station &place,
+void ScheduleRunner::start(const QList<tracking::TrackTarget> &targets, const sky::Site &place,
                            const ScheduleOptions &options)
 {
     if (m_running)

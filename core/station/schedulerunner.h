@@ -24,7 +24,7 @@
 #include "tracking/passrunner.h"
 #include "tracking/tracktarget.h"
 
-#include "sky/station.h"
+#include "sky/site.h"
 #include "sky/elementsetformat.h"
 
 #include <QObject>
@@ -61,7 +61,7 @@ public:
     ~ScheduleRunner() override;
 
     // Plans and runs. The targets are in priority order, the first highest.
-    void start(const QList<tracking::TrackTarget> &targets, const sky::Station &place, const ScheduleOptions &options);
+    void start(const QList<tracking::TrackTarget> &targets, const sky::Site &place, const ScheduleOptions &options);
     void stop(const QString &why);
     bool isRunning() const { return m_running; }
 
@@ -102,7 +102,7 @@ private:
     tracking::PassRunner *m_runner;
     const tracking::StationClock *m_clock;
     QList<tracking::TrackTarget> m_targets;
-    sky::Station m_place;
+    sky::Site m_place;
     ScheduleOptions m_options;
     schedule::Schedule m_schedule;
     std::optional<schedule::ScheduledPass> m_current;

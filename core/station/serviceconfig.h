@@ -10,7 +10,7 @@
 #include "model/rotatorlimits.h"
 #include "model/rotatorprofile.h"
 #include "sky/elementage.h"
-#include "sky/station.h"
+#include "sky/site.h"
 #include "tracking/tracktarget.h"
 
 #include <QHostAddress>
@@ -27,7 +27,7 @@ struct ServiceConfig {
     bool rotctldEnabled = false;
     QList<QHostAddress> allowedClients; // empty: any
     int rotctldMaxClients = 32;         // RotctldServer::kDefaultMaxClients
-    std::optional<sky::Station> station; // --qth / `qth =`: where the antenna stands
+    std::optional<sky::Site> station; // --qth / `qth =`: where the antenna stands
     // --rotors: the rotors of a multi-rotor controller to serve, each with a
     // session and a rotctld port of its own: rotctldPort, the next port, and
     // so on (each a free port of its own when rotctldPort is 0). Empty: the

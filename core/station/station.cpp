@@ -325,7 +325,7 @@ QString Station::openPassRecords(const QString &path, int keepDays, bool readWhe
     return error;
 }
 
-void Station::setPlace(const std::optional<sky::Station> &place)
+void Station::setPlace(const std::optional<sky::Site> &place)
 {
     m_place = place;
     emit placeChanged(m_place);
@@ -333,11 +333,11 @@ void Station::setPlace(const std::optional<sky::Station> &place)
 
 QString Station::restoreSavedPlace()
 {
-    sky::Station saved;
+    sky::Site saved;
     QString ignored;
     const QSettings settings;
-    const QString text = settings.value(QLatin1String(sky::kStationSettingsKey)).toString();
-    if (text.isEmpty() || !sky::parseStation(text, &saved, &ignored))
+    const QString text = settings.value(QLatin1String(sky::kSiteSettingsKey)).toString();
+    if (text.isEmpty() || !sky::parseSite(text, &saved, &ignored))
         return {};
     QString problem;
     const QString horizon = settings.value(QLatin1String(sky::kHorizonSettingsKey)).toString();

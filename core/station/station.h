@@ -31,7 +31,7 @@
 
 #include "model/rotatorprofile.h"
 #include "session/sessiontypes.h"
-#include "sky/station.h"
+#include "sky/site.h"
 
 #include <QList>
 #include <QObject>
@@ -189,8 +189,8 @@ public:
     QString openPassRecords(const QString &path, int keepDays, bool readWhenTaken = false);
 
     // Where the antenna stands; nothing until set.
-    std::optional<sky::Station> place() const { return m_place; }
-    void setPlace(const std::optional<sky::Station> &place);
+    std::optional<sky::Site> place() const { return m_place; }
+    void setPlace(const std::optional<sky::Site> &place);
     // The place kept in the settings (Sky → Station…, --qth), if any, with
     // its horizon mask file. Empty, or why the mask kept could not be read
     // (the place is then set with a flat horizon).
@@ -203,7 +203,7 @@ public:
     bool isShuttingDown() const { return m_shuttingDown; }
 
 signals:
-    void placeChanged(const std::optional<slew::sky::Station> &place);
+    void placeChanged(const std::optional<slew::sky::Site> &place);
     void operatorHoldChanged(bool holds);
     // Slew's own tracking holds the first rotor, or no longer does.
     void trackingChanged(bool holdsRotator);
@@ -239,7 +239,7 @@ private:
     std::unique_ptr<records::PassRecordStore> m_records;
     std::unique_ptr<PassRecorder> m_recorder; // after the store it writes to and the parts it follows
     std::unique_ptr<RemoteOperation> m_remote; // after every part it publishes
-    std::optional<sky::Station> m_place;
+    std::optional<sky::Site> m_place;
     bool m_shuttingDown = false;
     bool m_operatorHolds = false;
     int m_stillStopping = 0;

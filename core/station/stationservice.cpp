@@ -84,7 +84,7 @@ bool StationService::start(const ServiceConfig &config, QString *error)
     if (!openPassRecords(config, error))
         return false;
     if (config.station) {
-        m_log->write(tr("station: %1").arg(sky::describeStation(*config.station)));
+        m_log->write(tr("station: %1").arg(sky::describeSite(*config.station)));
         if (config.station->horizon)
             m_log->write(tr("station: horizon mask: %1").arg(config.station->horizon->describe()));
         m_station->setPlace(config.station);

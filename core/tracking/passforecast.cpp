@@ -11,7 +11,7 @@ namespace {
 // at and its highest point, from the pass the window before reports whole
 // (a search reports whole every pass that begins before its end). Looked
 // for up to `lookBackDays` back; a pass that rose before stays clipped.
-sky::Pass wholePass(const TargetSky &target, const sky::Station &station, const sky::PassWindow &window, sky::Pass p,
+sky::Pass wholePass(const TargetSky &target, const sky::Site &station, const sky::PassWindow &window, sky::Pass p,
                     double lookBackDays)
 {
     if (!p.aosClipped || !(lookBackDays > 0.0))
@@ -32,7 +32,7 @@ sky::Pass wholePass(const TargetSky &target, const sky::Station &station, const 
 
 } // namespace
 
-QList<PlannedPass> forecastPasses(const TargetSky &target, const sky::Station &station, const sky::PassWindow &window,
+QList<PlannedPass> forecastPasses(const TargetSky &target, const sky::Site &station, const sky::PassWindow &window,
                                   const RotatorReach &reach, double lookBackDays)
 {
     QList<PlannedPass> planned;
@@ -47,7 +47,7 @@ QList<PlannedPass> forecastPasses(const TargetSky &target, const sky::Station &s
     return planned;
 }
 
-std::optional<PlannedPass> forecastNextPass(const TargetSky &target, const sky::Station &station,
+std::optional<PlannedPass> forecastNextPass(const TargetSky &target, const sky::Site &station,
                                             const sky::PassWindow &window, double nowJulian, double marginSeconds,
                                             const RotatorReach &reach, const PlannerOptions &options,
                                             double lookBackDays)
@@ -65,7 +65,7 @@ std::optional<PlannedPass> forecastNextPass(const TargetSky &target, const sky::
     return std::nullopt;
 }
 
-std::optional<PlannedPass> forecastPassBetween(const TargetSky &target, const sky::Station &station,
+std::optional<PlannedPass> forecastPassBetween(const TargetSky &target, const sky::Site &station,
                                                const sky::PassWindow &window, double nowJulian, double marginSeconds,
                                                double fromJulian, double untilJulian, const RotatorReach &reach,
                                                const PlannerOptions &options, double lookBackDays)

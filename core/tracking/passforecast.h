@@ -32,14 +32,14 @@ struct PlannedPass {
 // up when the window opens, from the window's start. Such a pass is given
 // the AOS it rose at, looked for up to `lookBackDays` before the window
 // (still clipped, and so marked, when it rose before that).
-QList<PlannedPass> forecastPasses(const TargetSky &target, const sky::Station &station, const sky::PassWindow &window,
+QList<PlannedPass> forecastPasses(const TargetSky &target, const sky::Site &station, const sky::PassWindow &window,
                                   const RotatorReach &reach, double lookBackDays = 0.0);
 
 // The first pass in `window` still up `marginSeconds` after `nowJulian`,
 // sampled from its AOS or from now if it is under way, and planned from
 // where the antenna is; none if there is no such pass. One already up when
 // the window opens has its true AOS and highest point, as forecastPasses.
-std::optional<PlannedPass> forecastNextPass(const TargetSky &target, const sky::Station &station,
+std::optional<PlannedPass> forecastNextPass(const TargetSky &target, const sky::Site &station,
                                             const sky::PassWindow &window, double nowJulian, double marginSeconds,
                                             const RotatorReach &reach, const PlannerOptions &options,
                                             double lookBackDays = 0.0);
@@ -51,7 +51,7 @@ std::optional<PlannedPass> forecastNextPass(const TargetSky &target, const sky::
 // up when the window opens is reported as it really is (its AOS and
 // highest point, looked for up to `lookBackDays` back), as forecastNextPass
 // does: a schedule joined under way records the pass, not the join.
-std::optional<PlannedPass> forecastPassBetween(const TargetSky &target, const sky::Station &station,
+std::optional<PlannedPass> forecastPassBetween(const TargetSky &target, const sky::Site &station,
                                                const sky::PassWindow &window, double nowJulian, double marginSeconds,
                                                double fromJulian, double untilJulian, const RotatorReach &reach,
                                                const PlannerOptions &options, double lookBackDays = 0.0);

@@ -59,14 +59,14 @@ bool PassRunner::isActive() const
     return m_tracker.state() == Tracker::State::Waiting || m_tracker.state() == Tracker::State::Tracking;
 }
 
-void PassRunner::start(const TrackTarget &target, const sky::Station &station, double minElevationDeg,
+void PassRunner::start(const TrackTarget &target, const sky::Site &station, double minElevationDeg,
                        const StationClock *clock)
 {
     m_one.reset();
     begin(target, station, minElevationDeg, clock);
 }
 
-void PassRunner::startOne(const TrackTarget &target, const sky::Station &station, double minElevationDeg,
+void PassRunner::startOne(const TrackTarget &target, const sky::Site &station, double minElevationDeg,
                           const StationClock *clock, double fromJulian, double untilJulian)
 {
     m_one = std::pair{fromJulian, untilJulian};
@@ -86,7 +86,7 @@ void PassRunner::endOne(OneEnd end, const QString &why)
     emit onePassEnded(end, why);
 }
 
-void PassRunner::begin(const TrackTarget &target, const sky::Station &station, double minElevationDeg,
+void PassRunner::begin(const TrackTarget &target, const sky::Site &station, double minElevationDeg,
                        const StationClock *clock)
 {
     m_target = target;

@@ -14,7 +14,7 @@
 #include "tracktarget.h"
 
 #include "sky/sgp4.h"
-#include "sky/station.h"
+#include "sky/site.h"
 #include "sky/sunmoon.h"
 #include "sky/elementage.h"
 #include "sky/elementsetformat.h"
@@ -51,14 +51,14 @@ public:
     // outlive the runner. When the clock is changed (started again, another
     // rate, real time) the runner starts afresh as it would for a new
     // target: the pass it was on was planned for another time.
-    void start(const TrackTarget &target, const sky::Station &station, double minElevationDeg,
+    void start(const TrackTarget &target, const sky::Site &station, double minElevationDeg,
                const StationClock *clock);
     // One pass only, the schedule's (schedule/schedule.h): the pass of
     // `target` between `fromJulian` and `untilJulian`, or the stretch of a
     // long target (the sun, a fixed direction) between them; then it stops
     // and says onePassEnded(). A lost link pauses it as ever; a changed
     // clock ends it (the schedule plans again).
-    void startOne(const TrackTarget &target, const sky::Station &station, double minElevationDeg,
+    void startOne(const TrackTarget &target, const sky::Site &station, double minElevationDeg,
                   const StationClock *clock, double fromJulian, double untilJulian);
     void stop(const QString &why);
 
@@ -71,7 +71,7 @@ public:
     const Tracker &tracker() const { return m_tracker; }
     // What is tracked and from where, as start() was told.
     const TrackTarget &target() const { return m_target; }
-    const sky::Station &station() const { return m_station; }
+    const sky::Site &station() const { return m_station; }
     int passesDone() const { return m_passesDone; }
     // The pass handed to the tracker last (its AOS, TCA and LOS as
     // predicted), so what is recorded of it has its times and a station can
@@ -94,7 +94,7 @@ signals:
     void activeChanged(bool holdsRotator);
 
 private:
-    void begin(const TrackTarget &target, const sky::Station &station, double minElevationDeg,
+    void begin(const TrackTarget &target, const sky::Site &station, double minElevationDeg,
                const StationClock *clock);
     void endOne(OneEnd end, const QString &why);
     void nextPass();
@@ -110,7 +110,7 @@ private:
     TrackTarget m_target;
     std::optional<TargetSky> m_sky;
     std::optional<sky::Pass> m_pass;
-    sky::Station m_station;
+    sky::Site m_station;
     double m_minElevation = 0;
     double m_elementAgeLimitDays = sky::kElementAgeLimitDays;
     TrackerSettings::AfterPass m_afterPass = TrackerSettings::AfterPass::Park;

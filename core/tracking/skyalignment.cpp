@@ -35,7 +35,7 @@ double refractionDeg(double h)
     return std::max(0.0, arcMinutes / 60.0);
 }
 
-Alignment alignOn(sky::SkyBody body, const sky::Station &station, double julian, double readingAz, double readingEl,
+Alignment alignOn(sky::SkyBody body, const sky::Site &station, double julian, double readingAz, double readingEl,
                   bool hasElevation)
 {
     Alignment a;

@@ -11,7 +11,7 @@
 // by a tenth at 30°. A reading past 90° of elevation (a flipped antenna)
 // points over the top, at the azimuth opposite its own.
 
-#include "sky/station.h"
+#include "sky/site.h"
 #include "sky/sunmoon.h"
 
 #include <QString>
@@ -34,7 +34,7 @@ struct Alignment {
 // The offsets that make the controller's own reading (readingAz, readingEl:
 // the uncalibrated angles) point at `body` at `julian` from `station`.
 // An azimuth-only rotator (hasElevation false) gets an azimuth offset only.
-Alignment alignOn(sky::SkyBody body, const sky::Station &station, double julian, double readingAz, double readingEl,
+Alignment alignOn(sky::SkyBody body, const sky::Site &station, double julian, double readingAz, double readingEl,
                   bool hasElevation = true);
 
 // Standard refraction for a geometric elevation (Saemundsson's formula, as

@@ -21,7 +21,7 @@ bool sampleable(double durationSeconds, double stepSeconds)
 
 } // namespace
 
-QList<SkyPoint> sampleSatellitePass(const sky::Sgp4 &satellite, const sky::Station &station, const sky::Pass &pass,
+QList<SkyPoint> sampleSatellitePass(const sky::Sgp4 &satellite, const sky::Site &station, const sky::Pass &pass,
                                     double stepSeconds)
 {
     QList<SkyPoint> points;
@@ -40,7 +40,7 @@ QList<SkyPoint> sampleSatellitePass(const sky::Sgp4 &satellite, const sky::Stati
     return points;
 }
 
-QList<SkyPoint> sampleBodyPass(sky::SkyBody body, const sky::Station &station, double fromJulian, double toJulian,
+QList<SkyPoint> sampleBodyPass(sky::SkyBody body, const sky::Site &station, double fromJulian, double toJulian,
                                double stepSeconds)
 {
     return sampleSkyPass([&](double julian) { return sky::bodyPosition(body, station, julian); }, fromJulian, toJulian,

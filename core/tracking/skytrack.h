@@ -14,12 +14,12 @@ namespace slew::tracking {
 // The satellite's look angles every `stepSeconds` from the pass's AOS to
 // its LOS (both included); seconds count from AOS. Points the satellite
 // cannot be propagated at are left out.
-QList<SkyPoint> sampleSatellitePass(const sky::Sgp4 &satellite, const sky::Station &station, const sky::Pass &pass,
+QList<SkyPoint> sampleSatellitePass(const sky::Sgp4 &satellite, const sky::Site &station, const sky::Pass &pass,
                                     double stepSeconds = 1.0);
 
 // The same for the sun or the moon, from `fromJulian` (at or after the
 // pass's rise) to its set; seconds count from `fromJulian`.
-QList<SkyPoint> sampleBodyPass(sky::SkyBody body, const sky::Station &station, double fromJulian, double toJulian,
+QList<SkyPoint> sampleBodyPass(sky::SkyBody body, const sky::Site &station, double fromJulian, double toJulian,
                                double stepSeconds = 1.0);
 
 // The same for anything whose position a function gives (tracktarget.h).

@@ -44,7 +44,7 @@ std::optional<double> sexagesimal(const QString &text)
     return m.captured(1) == QLatin1String("-") ? -value : value;
 }
 
-sky::BodyPosition skyPosition(const TrackTarget &t, const sky::Station &station, double julian)
+sky::BodyPosition skyPosition(const TrackTarget &t, const sky::Site &station, double julian)
 {
     switch (t.kind) {
     case TrackTarget::Kind::Sun: return sky::sunPosition(station, julian);
@@ -125,7 +125,7 @@ TargetSky::TargetSky(const TrackTarget &target) : m_target(target)
     }
 }
 
-QList<sky::Pass> TargetSky::passes(const sky::Station &station, const sky::PassWindow &window) const
+QList<sky::Pass> TargetSky::passes(const sky::Site &station, const sky::PassWindow &window) const
 {
     switch (m_target.kind) {
     case TrackTarget::Kind::Satellite: return sky::predictPasses(*m_satellite, station, window);
@@ -148,7 +148,7 @@ QList<sky::Pass> TargetSky::passes(const sky::Station &station, const sky::PassW
     return {held};
 }
 
-QList<SkyPoint> TargetSky::sample(const sky::Station &station, const sky::Pass &pass, double fromJulian) const
+QList<SkyPoint> TargetSky::sample(const sky::Site &station, const sky::Pass &pass, double fromJulian) const
 {
     if (m_satellite) {
         sky::Pass rest = pass;
@@ -182,7 +182,7 @@ QList<SkyPoint> TargetSky::sample(const sky::Station &station, const sky::Pass &
                          pass.los.julian, m_target.isFixed() ? kFixedStepS : kSkyStepS);
 }
 
-std::optional<sky::LookAngles> TargetSky::lookAt(const sky::Station &station, double julian)
+std::optional<sky::LookAngles> TargetSky::lookAt(const sky::Site &station, double julian)
 {
     sky::LookAngles look;
     if (m_ticking) {

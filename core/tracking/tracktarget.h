@@ -14,7 +14,7 @@
 
 #include "sky/passes.h"
 #include "sky/sgp4.h"
-#include "sky/station.h"
+#include "sky/site.h"
 #include "sky/elementsetformat.h"
 
 #include <QList>
@@ -55,15 +55,15 @@ public:
     // Passes whose AOS falls in the window (one in progress included). A
     // fixed target above the minimum elevation has one pass the length of
     // the window.
-    QList<sky::Pass> passes(const sky::Station &station, const sky::PassWindow &window) const;
+    QList<sky::Pass> passes(const sky::Site &station, const sky::PassWindow &window) const;
     // The pass from `fromJulian` (at or after its AOS) to its LOS, as the
     // planner reads it: seconds from `fromJulian`.
-    QList<SkyPoint> sample(const sky::Station &station, const sky::Pass &pass, double fromJulian) const;
+    QList<SkyPoint> sample(const sky::Site &station, const sky::Pass &pass, double fromJulian) const;
     // Where the target is at `julian`; a satellite's range and range rate
     // too. Empty when a satellite cannot be propagated. Asked every tick, so
     // a satellite's propagation carries on from the last call: not const,
     // and for one thread at a time (a copy has its own).
-    std::optional<sky::LookAngles> lookAt(const sky::Station &station, double julian);
+    std::optional<sky::LookAngles> lookAt(const sky::Site &station, double julian);
 
 private:
     TrackTarget m_target;

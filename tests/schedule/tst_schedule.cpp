@@ -106,11 +106,11 @@ slew::tracking::TrackTarget satellite(const QString &name)
     return t;
 }
 
-slew::sky::Station jo65hq()
+slew::sky::Site jo65hq()
 {
-    slew::sky::Station s;
+    slew::sky::Site s;
     QString error;
-    slew::sky::parseStation(QStringLiteral("JO65hq"), &s, &error);
+    slew::sky::parseSite(QStringLiteral("JO65hq"), &s, &error);
     return s;
 }
 
@@ -216,7 +216,7 @@ private slots:
         QVERIFY(targets.first().elements.catalogueNumber != 0);
         const RotatorReach reach = rotator(450, 180);
         const Schedule open = planSchedule(targets, jo65hq(), reach, settings);
-        slew::sky::Station ridge = jo65hq();
+        slew::sky::Site ridge = jo65hq();
         ridge.horizon = slew::sky::parseHorizonText("0 15\n", "ridge").mask;
         const Schedule masked = planSchedule(targets, ridge, reach, settings);
         qInfo("open:\n%s\nmasked:\n%s", qPrintable(describeScheduleSummary(open)),

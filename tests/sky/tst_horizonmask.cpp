@@ -37,11 +37,11 @@ std::shared_ptr<const HorizonMask> maskOf(const QString &text)
 }
 
 // JO65hq, the station of the rehearsals.
-Station copenhagen()
+Site copenhagen()
 {
-    Station s;
+    Site s;
     QString error;
-    parseStation(QStringLiteral("JO65hq"), &s, &error);
+    parseSite(QStringLiteral("JO65hq"), &s, &error);
     return s;
 }
 
@@ -146,13 +146,13 @@ private slots:
         const Sgp4 noaa(*found.first());
         const double start = std::floor(noaa.epochJulian()) + 0.5;
         const PassWindow window{start, start + 1.0, 0.0};
-        Station flat = copenhagen();
+        Site flat = copenhagen();
         const QList<Pass> open = predictPasses(noaa, flat, window);
         QVERIFY(open.size() >= 4);
 
         // A ridge of 10° all round: every pass starts later and ends sooner,
         // at 10°, and the low ones are gone.
-        Station ridge = flat;
+        Site ridge = flat;
         ridge.horizon = maskOf(QStringLiteral("0 10\n"));
         const QList<Pass> masked = predictPasses(noaa, ridge, window);
         int higher = 0;
@@ -179,7 +179,7 @@ private slots:
                 high = &p;
         const double rise = high->aos.azimuthDeg;
         auto at = [](double az) { return std::fmod(az + 360.0, 360.0); };
-        Station walled = flat;
+        Site walled = flat;
         walled.horizon = maskOf(QStringLiteral("%1 0\n%1 30\n%2 30\n%2 0\n")
                                     .arg(at(rise - 15), 0, 'f', 3)
                                     .arg(at(rise + 15), 0, 'f', 3));
@@ -203,7 +203,7 @@ private slots:
         // (tracking::TargetSky reads the same mask for a fixed target; see
         // tst_tracktarget.) Here: the sun behind a ridge higher than it
         // ever climbs on a winter's day has no pass at all.
-        Station s = copenhagen();
+        Site s = copenhagen();
         s.horizon = maskOf(QStringLiteral("0 80\n"));
         const double start = 2458140.5; // 2018-01-22 00:00 UTC
         const PassWindow window{start, start + 1.0, 0.0};

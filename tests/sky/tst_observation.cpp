@@ -6,13 +6,13 @@
 
 #include "sky/observation.h"
 #include "sky/sgp4.h"
-#include "sky/station.h"
+#include "sky/site.h"
 
 #include <QTest>
 
 using namespace slew::sky;
 
-Q_DECLARE_METATYPE(slew::sky::Station)
+Q_DECLARE_METATYPE(slew::sky::Site)
 
 class TestObservation : public QObject {
     Q_OBJECT
@@ -58,9 +58,9 @@ void TestObservation::stations()
     QFETCH(double, lat);
     QFETCH(double, lon);
     QFETCH(double, height);
-    Station s;
+    Site s;
     QString error;
-    QVERIFY2(parseStation(text, &s, &error), qPrintable(error));
+    QVERIFY2(parseSite(text, &s, &error), qPrintable(error));
     QVERIFY2(std::fabs(s.latitudeDeg - lat) < 1e-6, qPrintable(QString::number(s.latitudeDeg, 'f', 9)));
     QVERIFY2(std::fabs(s.longitudeDeg - lon) < 1e-6, qPrintable(QString::number(s.longitudeDeg, 'f', 9)));
     QCOMPARE(s.heightM, height);
@@ -86,17 +86,17 @@ void TestObservation::refusedStations()
 {
     QFETCH(QString, text);
     QFETCH(QString, reasonContains);
-    Station s;
+    Site s;
     QString error;
-    QVERIFY(!parseStation(text, &s, &error));
+    QVERIFY(!parseSite(text, &s, &error));
     QVERIFY2(error.contains(reasonContains), qPrintable(error));
 }
 
 void TestObservation::locatorOfAPosition()
 {
-    QCOMPARE(stationLocator(55.6875, 12.625), QStringLiteral("JO65hq"));
-    QCOMPARE(stationLocator(41.7147, -72.7272), QStringLiteral("FN31pr"));
-    QCOMPARE(stationLocator(-90.0, -180.0), QStringLiteral("AA00aa"));
+    QCOMPARE(siteLocator(55.6875, 12.625), QStringLiteral("JO65hq"));
+    QCOMPARE(siteLocator(41.7147, -72.7272), QStringLiteral("FN31pr"));
+    QCOMPARE(siteLocator(-90.0, -180.0), QStringLiteral("AA00aa"));
 }
 
 void TestObservation::siderealTime()
@@ -110,26 +110,26 @@ void TestObservation::siderealTime()
 
 void TestObservation::lookAngles_data()
 {
-    QTest::addColumn<Station>("station");
+    QTest::addColumn<Site>("station");
     QTest::addColumn<double>("x");
     QTest::addColumn<double>("y");
     QTest::addColumn<double>("z");
     QTest::addColumn<double>("az");
     QTest::addColumn<double>("el");
     QTest::addColumn<double>("range");
-    const Station origin{0, 0, 0, {}, {}};
+    const Site origin{0, 0, 0, {}, {}};
     const double r = 6378.137;
     QTest::newRow("overhead") << origin << r + 1000 << 0.0 << 0.0 << -1.0 << 90.0 << 1000.0;
     QTest::newRow("due east on the horizon") << origin << r << 1000.0 << 0.0 << 90.0 << 0.0 << 1000.0;
     QTest::newRow("due north on the horizon") << origin << r << 0.0 << 1000.0 << 0.0 << 0.0 << 1000.0;
     QTest::newRow("due west, 45 up") << origin << r + 1000 << -1000.0 << 0.0 << 270.0 << 45.0 << std::sqrt(2.0) * 1000;
-    QTest::newRow("pole, south at 45") << Station{90, 0, 0, {}, {}} << 1000.0 << 0.0 << 6356.752314 + 1000 << 180.0 << 45.0
+    QTest::newRow("pole, south at 45") << Site{90, 0, 0, {}, {}} << 1000.0 << 0.0 << 6356.752314 + 1000 << 180.0 << 45.0
                                         << std::sqrt(2.0) * 1000;
 }
 
 void TestObservation::lookAngles()
 {
-    QFETCH(Station, station);
+    QFETCH(Site, station);
     QFETCH(double, x);
     QFETCH(double, y);
     QFETCH(double, z);
@@ -145,7 +145,7 @@ void TestObservation::lookAngles()
 
 void TestObservation::rangeRateAndDoppler()
 {
-    const Station origin{0, 0, 0, {}, {}};
+    const Site origin{0, 0, 0, {}, {}};
     // Overhead and climbing straight up at 7 km/s: receding at 7 km/s.
     const LookAngles away = lookAnglesEarthFixed(origin, {6378.137 + 500, 0, 0}, {7, 0, 0});
     QVERIFY(std::fabs(away.rangeRateKmS - 7.0) < 1e-12);
@@ -166,8 +166,8 @@ void TestObservation::rangeRateAndDoppler()
 
 void TestObservation::geodeticRoundTrip()
 {
-    const Station s{45.0, 10.0, 500000.0, {}, {}};
-    const Geodetic g = earthFixedToGeodetic(stationEarthFixed(s));
+    const Site s{45.0, 10.0, 500000.0, {}, {}};
+    const Geodetic g = earthFixedToGeodetic(siteEarthFixed(s));
     QVERIFY(std::fabs(g.latitudeDeg - 45.0) < 1e-9);
     QVERIFY(std::fabs(g.longitudeDeg - 10.0) < 1e-9);
     QVERIFY(std::fabs(g.heightKm - 500.0) < 1e-6);

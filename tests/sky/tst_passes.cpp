@@ -18,7 +18,7 @@
 
 using namespace slew::sky;
 
-Q_DECLARE_METATYPE(slew::sky::Station)
+Q_DECLARE_METATYPE(slew::sky::Site)
 
 namespace {
 
@@ -43,7 +43,7 @@ struct BrutePass {
 };
 
 // Every 0.1 s: AOS is the first sample at or above the threshold, LOS the last.
-QList<BrutePass> bruteForce(const Sgp4 &sat, const Station &station, const PassWindow &w)
+QList<BrutePass> bruteForce(const Sgp4 &sat, const Site &station, const PassWindow &w)
 {
     QList<BrutePass> passes;
     const double step = 0.1 / kSecondsPerDay;
@@ -121,9 +121,9 @@ void TestPasses::matchesBruteForce_data()
 {
     QTest::addColumn<QString>("satellite");
     QTest::addColumn<double>("minElevation");
-    QTest::addColumn<Station>("station");
-    const Station copenhagen{55.6875, 12.625, 20, {}, {}};
-    const Station quito{-0.2, -78.5, 2850, {}, {}};
+    QTest::addColumn<Site>("station");
+    const Site copenhagen{55.6875, 12.625, 20, {}, {}};
+    const Site quito{-0.2, -78.5, 2850, {}, {}};
     QTest::newRow("ISS, horizon") << QStringLiteral("ISS (ZARYA)") << 0.0 << copenhagen;
     QTest::newRow("NOAA 18, 10 degrees") << QStringLiteral("NOAA 18") << 10.0 << copenhagen;
     QTest::newRow("AO-91, equator") << QStringLiteral("FOX-1B (AO-91)") << 5.0 << quito;
@@ -134,7 +134,7 @@ void TestPasses::matchesBruteForce()
 {
     QFETCH(QString, satellite);
     QFETCH(double, minElevation);
-    QFETCH(Station, station);
+    QFETCH(Site, station);
     const QList<ElementSet> sets = snapshot();
     const ElementSet *tle = named(sets, satellite);
     QVERIFY2(tle, qPrintable(satellite));
@@ -176,7 +176,7 @@ void TestPasses::allSatellitesSortedByAos()
     QList<ElementSet> some;
     for (const QString &name : {QStringLiteral("ISS (ZARYA)"), QStringLiteral("NOAA 18"), QStringLiteral("FOX-1B")})
         some.append(*named(sets, name));
-    const Station station{55.6875, 12.625, 20, {}, {}};
+    const Site station{55.6875, 12.625, 20, {}, {}};
     const double start = std::floor(Sgp4(some[0]).epochJulian());
     const PassWindow window{start, start + 1.0, 0.0};
     const QList<Pass> all = predictPasses(some, station, window);
@@ -257,13 +257,13 @@ void TestPasses::decayedSatelliteHasNoPasses()
                      QStringLiteral("2 28872  96.4736 157.9986 0303955 244.0492 110.6523 16.46015938 10708"), &tle,
                      &r, false));
     const Sgp4 sat(tle);
-    const QList<Pass> passes = predictPasses(sat, Station{0, 0, 0, {}, {}}, {sat.epochJulian() + 1, sat.epochJulian() + 2, 0});
+    const QList<Pass> passes = predictPasses(sat, Site{0, 0, 0, {}, {}}, {sat.epochJulian() + 1, sat.epochJulian() + 2, 0});
     QVERIFY(passes.isEmpty());
 }
 
 void TestPasses::sunAndMoonAgreeWithPyEphem()
 {
-    const Station station{51.4779, -0.0015, 46, {}, {}};
+    const Site station{51.4779, -0.0015, 46, {}, {}};
     const double start = 2460481.5; // 2024-06-20 00:00 UTC
     const PassWindow window{start, start + 3.0, kRiseSetElevationDeg};
 

@@ -108,7 +108,7 @@ void TestSlewSky::passesAsJson()
     const ElementSet *iss = findSatellites(sets, QStringLiteral("ISS")).first();
     const double start = julianOf(kStart);
     // AOS and LOS at the horizon, and only the passes that climb to 10°.
-    QList<Pass> expected = predictPasses(Sgp4(*iss), Station{55.6875, 12.625, 0, {}, {}}, {start, start + 1.0, 0.0});
+    QList<Pass> expected = predictPasses(Sgp4(*iss), Site{55.6875, 12.625, 0, {}, {}}, {start, start + 1.0, 0.0});
     const qsizetype all = expected.size();
     expected.removeIf([](const Pass &p) { return p.maxElevationDeg() < 10.0; });
     QVERIFY(expected.size() < all); // some low pass was left out
@@ -194,7 +194,7 @@ void TestSlewSky::whereMatchesTheLibrary()
     const Sgp4 iss(*findSatellites(sets, QStringLiteral("25544")).first());
     const double jd = julianOf(when);
     const Sgp4State s = iss.propagateToJulian(jd);
-    const LookAngles look = lookAngles(Station{55.6875, 12.625, 0, {}, {}}, s.positionKm, s.velocityKmS, jd);
+    const LookAngles look = lookAngles(Site{55.6875, 12.625, 0, {}, {}}, s.positionKm, s.velocityKmS, jd);
     QVERIFY(std::fabs(o.value(QStringLiteral("azimuth")).toDouble() - look.azimuthDeg) < 1e-6);
     QVERIFY(std::fabs(o.value(QStringLiteral("elevation")).toDouble() - look.elevationDeg) < 1e-6);
     QVERIFY(std::fabs(o.value(QStringLiteral("range_km")).toDouble() - look.rangeKm) < 1e-6);
@@ -225,7 +225,7 @@ void TestSlewSky::whereSunAndMoon()
                             QStringLiteral("--time"), QStringLiteral("2024-06-20T12:00:00Z"), QStringLiteral("--json")});
         QVERIFY2(r.exitCode == 0, r.err.constData());
         const QJsonObject o = QJsonDocument::fromJson(r.out).object();
-        const Station s{41.729166666, -72.708333333, 0, {}, {}};
+        const Site s{41.729166666, -72.708333333, 0, {}, {}};
         const BodyPosition p = bodyPosition(body == u"sun" ? SkyBody::Sun : SkyBody::Moon, s, 2460482.0);
         QVERIFY(std::fabs(o.value(QStringLiteral("azimuth")).toDouble() - p.azimuthDeg) < 1e-6);
         QVERIFY(std::fabs(o.value(QStringLiteral("elevation")).toDouble() - p.elevationDeg) < 1e-6);

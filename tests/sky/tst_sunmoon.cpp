@@ -43,7 +43,7 @@ double separationDeg(double az1, double el1, double az2, double el2)
 }
 
 struct Case {
-    Station station;
+    Site station;
     double jd;
 };
 
@@ -68,8 +68,8 @@ void TestSunMoon::agreesWithPyEphem()
     cases.append({{19.82, -155.47, 4200, {}, {}}, 2461000.1});
     QRandomGenerator random(12);
     while (cases.size() < 400) {
-        const Station s{degrees(std::asin(random.generateDouble() * 2 - 1)), random.generateDouble() * 360 - 180,
-                        random.generateDouble() * 3000, {}, {}};
+        const Site s{degrees(std::asin(random.generateDouble() * 2 - 1)), random.generateDouble() * 360 - 180,
+                     random.generateDouble() * 3000, {}, {}};
         // 1980..2040
         cases.append({s, 2444239.5 + random.generateDouble() * 60 * 365.25});
     }

@@ -9,7 +9,7 @@
 #include "linkschemes.h"
 #include "radio/radiolink.h"
 #include "session/rotatorsession.h"
-#include "sky/station.h"
+#include "sky/site.h"
 #include "sky/elementsetformat.h"
 #include "sky/utctime.h"
 #include "radio/doppler.h"
@@ -44,9 +44,9 @@ slew::sky::ElementSet flock()
 // `iso` at `rate`, tracking FLOCK 2P-1 until the tracker is in `state`.
 bool trackFlock(Station &station, const QString &iso, double rate, slew::tracking::Tracker::State state)
 {
-    slew::sky::Station place;
+    slew::sky::Site place;
     QString error;
-    if (!slew::sky::parseStation(QStringLiteral("JO65hq"), &place, &error))
+    if (!slew::sky::parseSite(QStringLiteral("JO65hq"), &place, &error))
         return false;
     station.setPlace(place);
     station.clock()->rehearse(*slew::sky::julianFromIso(iso), rate);
@@ -139,7 +139,7 @@ private slots:
         slew::tracking::TrackTarget target;
         target.elements = flock();
         slew::tracking::TargetSky sky(target);
-        const slew::sky::Station place = station.passRunner()->station();
+        const slew::sky::Site place = station.passRunner()->station();
         auto truth = [&](double julian) {
             return slew::radio::tuningFor(plan.frequencies, sky.lookAt(place, julian)->rangeRateKmS);
         };

@@ -17,7 +17,7 @@
 #include "radio/radioplan.h"
 #include "records/passrecordstore.h"
 #include "session/rotatorsession.h"
-#include "sky/station.h"
+#include "sky/site.h"
 #include "sky/elementsetformat.h"
 #include "sky/utctime.h"
 #include "station/dopplerradio.h"
@@ -56,9 +56,9 @@ slew::sky::ElementSet satellite(const QString &name)
 bool track(Station &station, const QString &iso, const QString &name = QStringLiteral("FLOCK 2P-1"),
            int renumberTo = 0)
 {
-    slew::sky::Station place;
+    slew::sky::Site place;
     QString error;
-    if (!slew::sky::parseStation(QStringLiteral("JO65hq"), &place, &error))
+    if (!slew::sky::parseSite(QStringLiteral("JO65hq"), &place, &error))
         return false;
     station.setPlace(place);
     station.clock()->rehearse(*slew::sky::julianFromIso(iso), 20.0);

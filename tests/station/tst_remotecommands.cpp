@@ -112,7 +112,7 @@ private slots:
         SimulatorPump pump;
         QVERIFY(connectAndWait(station, pump));
         RemoteCommands commands(&station, {});
-        station.setPlace(slew::sky::Station{55.7, 12.6, 10, {}, {}});
+        station.setPlace(slew::sky::Site{55.7, 12.6, 10, {}, {}});
         QVERIFY(answer(commands, R"j({"id":"t","cmd":"track","target":"azel:200,40"})j").ok);
         TRY_VERIFY_WITH_TIMEOUT(station.passRunner()->holdsRotator(), 20000);
         const RemoteReply held = answer(commands, R"j({"id":"g","cmd":"goto","az":40,"el":20})j");

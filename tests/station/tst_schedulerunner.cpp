@@ -11,7 +11,7 @@
 #include "linkschemes.h"
 #include "schedule/scheduletext.h"
 #include "session/rotatorsession.h"
-#include "sky/station.h"
+#include "sky/site.h"
 #include "sky/elementsetformat.h"
 #include "sky/utctime.h"
 #include "records/passrecordstore.h"
@@ -67,9 +67,9 @@ private slots:
     void followsTheTakenPassesAndSaysTheDroppedOnes()
     {
         Station station;
-        slew::sky::Station place;
+        slew::sky::Site place;
         QString error;
-        QVERIFY(slew::sky::parseStation(QStringLiteral("JO65hq"), &place, &error));
+        QVERIFY(slew::sky::parseSite(QStringLiteral("JO65hq"), &place, &error));
         station.setPlace(place);
         station.clock()->rehearse(at("2018-01-22T09:25:40Z"), 20.0);
         station.session()->connectTo(QStringLiteral("sim:"));

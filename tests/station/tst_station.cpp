@@ -30,7 +30,7 @@ using slew::station::StationOptions;
 
 namespace {
 
-const slew::sky::Station kPlace{55.7, 12.6, 10, {}, {}};
+const slew::sky::Site kPlace{55.7, 12.6, 10, {}, {}};
 
 StationOptions onTheSimulator(const QString &uri)
 {

@@ -374,9 +374,9 @@ private:
         slew::sky::Pass pass;
     };
 
-    static slew::sky::Station station()
+    static slew::sky::Site station()
     {
-        slew::sky::Station s;
+        slew::sky::Site s;
         s.latitudeDeg = 55.6875; // JO65hq
         s.longitudeDeg = 12.625;
         return s;

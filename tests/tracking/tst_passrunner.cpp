@@ -22,7 +22,7 @@ using namespace slew::tracking;
 
 namespace {
 
-const slew::sky::Station kStation{55.7, 12.6, 10, {}, {}};
+const slew::sky::Site kStation{55.7, 12.6, 10, {}, {}};
 
 bool logged(const QSignalSpy &lines, const QString &part)
 {

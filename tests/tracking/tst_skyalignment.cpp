@@ -15,8 +15,8 @@ using namespace slew::tracking;
 
 namespace {
 
-const sky::Station kCopenhagen{55.7, 12.6, 10, {}, {}};
-const sky::Station kSvalbard{78.2, 15.6, 10, {}, {}};
+const sky::Site kCopenhagen{55.7, 12.6, 10, {}, {}};
+const sky::Site kSvalbard{78.2, 15.6, 10, {}, {}};
 
 double at(const char *iso)
 {

@@ -22,7 +22,7 @@ using tracking::TrackTarget;
 
 namespace {
 
-const sky::Station kStation{55.7, 12.6, 10, {}, {}};
+const sky::Site kStation{55.7, 12.6, 10, {}, {}};
 constexpr double kSiderealDay = 0.99726957;
 
 double at(const char *iso)

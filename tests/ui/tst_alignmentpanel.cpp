@@ -23,7 +23,7 @@ using namespace slew;
 
 namespace {
 
-const sky::Station kStation{55.7, 12.6, 10, {}, {}};
+const sky::Site kStation{55.7, 12.6, 10, {}, {}};
 const char kUri[] = "sim:?clock=manual&start_az=150&start_el=40";
 
 } // namespace

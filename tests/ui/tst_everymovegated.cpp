@@ -305,7 +305,7 @@ private slots:
                     return true;
             return false;
         };
-        m_station->setPlace(slew::sky::Station{55.7, 12.6, 10, {}, {}});
+        m_station->setPlace(slew::sky::Site{55.7, 12.6, 10, {}, {}});
         expectNothingSent("broker track, no position", [&] {
             const std::optional<slew::remote::RemoteReply> reply =
                 commands.handle(R"j({"id":"t","cmd":"track","target":"azel:200,40"})j");

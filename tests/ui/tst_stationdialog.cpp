@@ -58,7 +58,7 @@ private slots:
             return;
         okButton->click();
         QCOMPARE(dialog.result(), int(QDialog::Accepted));
-        slew::sky::Station saved;
+        slew::sky::Site saved;
         QString savedText;
         QVERIFY(StationDialog::savedStation(&saved, &savedText));
         QCOMPARE(savedText, text);

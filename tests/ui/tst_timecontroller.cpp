@@ -46,9 +46,9 @@ const QString kAllSets = QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites
 
 void atJo65hq(TrackingPanel *panel)
 {
-    slew::sky::Station station;
+    slew::sky::Site station;
     QString error;
-    QVERIFY(slew::sky::parseStation(QStringLiteral("JO65hq"), &station, &error));
+    QVERIFY(slew::sky::parseSite(QStringLiteral("JO65hq"), &station, &error));
     panel->station()->setPlace(station);
 }
 

@@ -52,9 +52,9 @@ const QString kAllSets = QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites
 // The rehearsal station, JO65hq, on a clock that starts at `iso`.
 void rehearse(TrackingPanel *panel, const slew::tracking::StationClock &clock)
 {
-    slew::sky::Station station;
+    slew::sky::Site station;
     QString error;
-    QVERIFY(slew::sky::parseStation(QStringLiteral("JO65hq"), &station, &error));
+    QVERIFY(slew::sky::parseSite(QStringLiteral("JO65hq"), &station, &error));
     // The station's own clock, started where the test's is.
     slew::station::Station *home = panel->station();
     home->clock()->rehearse(clock.nowJulian(), clock.rate());

@@ -4,7 +4,7 @@
 #include <QLineEdit>
 
 #include "sim/simulatorscheme.h"
-#include "sky/station.h"
+#include "sky/site.h"
 #include "sky/elementsetsources.h"
 #include "sky/utctime.h"
 #include "tracking/stationclock.h"
@@ -99,10 +99,10 @@ bool WindowFixture::loadElementSets(const QString &file)
 
 bool WindowFixture::rehearseAt(const QString &iso, double rate, const QString &locator)
 {
-    slew::sky::Station place;
+    slew::sky::Site place;
     QString error;
     const std::optional<double> start = slew::sky::julianFromIso(iso);
-    if (!start || !slew::sky::parseStation(locator, &place, &error))
+    if (!start || !slew::sky::parseSite(locator, &place, &error))
         return false;
     station.clock()->rehearse(*start, rate);
     station.setPlace(place);

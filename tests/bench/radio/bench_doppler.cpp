@@ -43,9 +43,9 @@ constexpr double kUplinkHz = 145.9e6;
 constexpr int kLatencyMs = 30;
 constexpr double kSecondsPerDay = 86400.0;
 
-sky::Station station()
+sky::Site station()
 {
-    sky::Station s;
+    sky::Site s;
     s.latitudeDeg = 55.6875; // JO65hq
     s.longitudeDeg = 12.625;
     return s;

@@ -35,7 +35,7 @@
 #include "sky/observation.h"
 #include "sky/passes.h"
 #include "sky/sgp4.h"
-#include "sky/station.h"
+#include "sky/site.h"
 #include "sky/elementsetformat.h"
 #include "sky/utctime.h"
 
@@ -253,9 +253,9 @@ int main(int argc, char **argv)
         parser.showHelp(2);
 
     const double offsetS = parser.value(QStringLiteral("offset")).toDouble();
-    sky::Station station;
+    sky::Site station;
     QString why;
-    if (!sky::parseStation(parser.value(QStringLiteral("qth")), &station, &why)) {
+    if (!sky::parseSite(parser.value(QStringLiteral("qth")), &station, &why)) {
         std::fprintf(stderr, "doppler_from_log: --qth: %s\n", qPrintable(why));
         return 2;
     }

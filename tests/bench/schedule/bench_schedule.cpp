@@ -51,11 +51,11 @@ constexpr int kTargetCount = int(std::size(kTargets));
 // anywhere; longer gaps are skipped, the antenna standing still in them.
 constexpr double kLongestWaitS = 300.0;
 
-sky::Station jo65hq()
+sky::Site jo65hq()
 {
-    sky::Station s;
+    sky::Site s;
     QString error;
-    sky::parseStation(QStringLiteral("JO65hq"), &s, &error);
+    sky::parseSite(QStringLiteral("JO65hq"), &s, &error);
     return s;
 }
 

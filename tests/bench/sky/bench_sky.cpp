@@ -148,7 +148,7 @@ int main(int argc, char **argv)
     double start = 0;
     for (const ElementSet &t : sets)
         start = std::max(start, t.epochJulian());
-    const Station station{55.6875, 12.625, 20, {}, {}};
+    const Site station{55.6875, 12.625, 20, {}, {}};
     QElapsedTimer timer;
     timer.start();
     const double cpuStart = threadCpuSeconds();

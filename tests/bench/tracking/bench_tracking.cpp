@@ -79,9 +79,9 @@ struct PassCase {
     QList<SkyPoint> points;
 };
 
-sky::Station station()
+sky::Site station()
 {
-    sky::Station s;
+    sky::Site s;
     s.latitudeDeg = 55.6875; // JO65hq
     s.longitudeDeg = 12.625;
     return s;

@@ -13,35 +13,36 @@
 
 namespace slew::sky {
 
-struct Station {
+struct Site {
     double latitudeDeg = 0;
     double longitudeDeg = 0;
     double heightM = 0;
-    QString locator; // as given, when the station came from one
+    QString locator; // as given, when the site came from one
     // What hides the sky here (horizonmask.h); none: a flat horizon. Every
-    // pass predicted for the station rises and sets on it.
+    // pass predicted for the site rises and sets on it.
     std::shared_ptr<const HorizonMask> horizon;
 };
 
-// Where the window keeps the station (QSettings key), as the text typed;
-// the command line falls back to it when --qth is not given.
-inline constexpr char kStationSettingsKey[] = "sky/station";
-// Where the window keeps the path of the station's horizon mask file
-// (horizonmask.h); the sky commands fall back to it as to the station.
+// Where the window keeps the site (QSettings key: its name stays as saved
+// settings have it), as the text typed; the command line falls back to it
+// when --qth is not given.
+inline constexpr char kSiteSettingsKey[] = "sky/station";
+// Where the window keeps the path of the site's horizon mask file
+// (horizonmask.h); the sky commands fall back to it as to the site.
 inline constexpr char kHorizonSettingsKey[] = "sky/horizonFile";
 
 // "LAT,LON", "LAT,LON,HEIGHT_M" or a 4, 6 or 8 character locator
 // ("JO65", "JO65hq", "JO65hq42"). On refusal, *error says why.
-bool parseStation(const QString &text, Station *out, QString *error);
+bool parseSite(const QString &text, Site *out, QString *error);
 
 // The centre of a Maidenhead square; false (and *error) for a malformed one.
-bool locatorToStation(const QString &locator, Station *out, QString *error);
+bool locatorToSite(const QString &locator, Site *out, QString *error);
 
 // The 6-character locator of a position.
-QString stationLocator(double latitudeDeg, double longitudeDeg);
+QString siteLocator(double latitudeDeg, double longitudeDeg);
 
 // "55.6875° N, 12.6250° E, 20 m above the ellipsoid — locator JO65hq",
 // for the window and the station service's log.
-QString describeStation(const Station &station);
+QString describeSite(const Site &site);
 
 } // namespace slew::sky

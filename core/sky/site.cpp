@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "station.h"
+#include "site.h"
 
 #include "input/finitenumber.h"
 #include "input/logtext.h"
@@ -34,7 +34,7 @@ const LocatorLevel kLevels[] = {
 
 } // namespace
 
-bool locatorToStation(const QString &text, Station *out, QString *error)
+bool locatorToSite(const QString &text, Site *out, QString *error)
 {
     const QString locator = text.trimmed();
     if (locator.size() != 4 && locator.size() != 6 && locator.size() != 8) {
@@ -65,7 +65,7 @@ bool locatorToStation(const QString &text, Station *out, QString *error)
         lonSize = l.lonSize;
         latSize = l.latSize;
     }
-    Station s;
+    Site s;
     s.longitudeDeg = lon + lonSize / 2.0;
     s.latitudeDeg = lat + latSize / 2.0;
     s.locator = locator.left(2).toUpper() + locator.mid(2, 2) + locator.mid(4, 2).toLower() + locator.mid(6);
@@ -73,7 +73,7 @@ bool locatorToStation(const QString &text, Station *out, QString *error)
     return true;
 }
 
-QString stationLocator(double latitudeDeg, double longitudeDeg)
+QString siteLocator(double latitudeDeg, double longitudeDeg)
 {
     double lon = std::clamp(longitudeDeg + 180.0, 0.0, 359.999999);
     double lat = std::clamp(latitudeDeg + 90.0, 0.0, 179.999999);
@@ -91,7 +91,7 @@ QString stationLocator(double latitudeDeg, double longitudeDeg)
     return result;
 }
 
-bool parseStation(const QString &text, Station *out, QString *error)
+bool parseSite(const QString &text, Site *out, QString *error)
 {
     const QString t = text.trimmed();
     if (t.isEmpty()) {
@@ -99,14 +99,14 @@ bool parseStation(const QString &text, Station *out, QString *error)
         return false;
     }
     if (!t.contains(u','))
-        return locatorToStation(t, out, error);
+        return locatorToSite(t, out, error);
 
     const QStringList parts = t.split(u',');
     if (parts.size() != 2 && parts.size() != 3) {
         *error = QStringLiteral("\"%1\": a station is LAT,LON or LAT,LON,HEIGHT_M").arg(input::loggableText(t, 80));
         return false;
     }
-    // Finite numbers only: a station saved as "nan,0" would make every later
+    // Finite numbers only: a site saved as "nan,0" would make every later
     // pass search loop without end.
     const std::optional<double> lat = input::finiteNumber(parts[0]);
     const std::optional<double> lon = input::finiteNumber(parts[1]);
@@ -117,7 +117,7 @@ bool parseStation(const QString &text, Station *out, QString *error)
                      .arg(input::loggableText(t, 80));
         return false;
     }
-    Station s;
+    Site s;
     s.latitudeDeg = *lat;
     s.longitudeDeg = *lon;
     s.heightM = *height;
@@ -139,7 +139,7 @@ bool parseStation(const QString &text, Station *out, QString *error)
     return true;
 }
 
-QString describeStation(const Station &s)
+QString describeSite(const Site &s)
 {
     return QStringLiteral("%1° %2, %3° %4, %5 m above the ellipsoid — locator %6")
         .arg(std::fabs(s.latitudeDeg), 0, 'f', 4)
@@ -147,7 +147,7 @@ QString describeStation(const Station &s)
         .arg(std::fabs(s.longitudeDeg), 0, 'f', 4)
         .arg(s.longitudeDeg >= 0 ? QStringLiteral("E") : QStringLiteral("W"))
         .arg(s.heightM, 0, 'f', 0)
-        .arg(stationLocator(s.latitudeDeg, s.longitudeDeg));
+        .arg(siteLocator(s.latitudeDeg, s.longitudeDeg));
 }
 
 } // namespace slew::sky
