@@ -3,13 +3,13 @@
 
 #include "input/logtext.h"
 #include "radiolimits.h"
+#include "session/controllerradiocommands.h"
 #include "session/rotatorsession.h"
-#include "session/stationradio.h"
 
 namespace slew::radio {
 
+using session::ControllerRadioCommands;
 using session::RotatorSession;
-using session::StationRadio;
 
 namespace {
 
@@ -17,13 +17,13 @@ namespace {
 // session's own reply timeout and retries are well inside it.
 constexpr int kReadTimeoutMs = 3000;
 
-// What the Easycomm tables' lines carry (StationRadio::kHighestHz,
-// kLongestMode) is narrower than the shared limits. StationRadio refuses
-// the same on the line; checked here too so the refusal comes when the
-// value is given (the pacer may send it much later), in the words every
-// radio link uses.
-constexpr double kLineHighestHz = StationRadio::kHighestHz;
-constexpr qsizetype kLineModeChars = StationRadio::kLongestMode;
+// What the Easycomm tables' lines carry (kHighestHz and kLongestMode in
+// ControllerRadioCommands) is narrower than the shared limits.
+// ControllerRadioCommands refuses the same on the line; checked here too so
+// the refusal comes when the value is given (the pacer may send it much
+// later), in the words every radio link uses.
+constexpr double kLineHighestHz = ControllerRadioCommands::kHighestHz;
+constexpr qsizetype kLineModeChars = ControllerRadioCommands::kLongestMode;
 
 } // namespace
 
@@ -35,8 +35,8 @@ ControllerRadioLink::ControllerRadioLink(RotatorSession *session, QObject *paren
     m_readTimeout.setInterval(kReadTimeoutMs);
     connect(&m_readTimeout, &QTimer::timeout, this,
             [this] { finishRead(false, tr("the controller did not answer UP/DN")); });
-    connect(session->stationRadio(), &StationRadio::frequencyReported, this,
-            [this](StationRadio::Path path, double hz) { onReported(int(path), hz); });
+    connect(session->radioCommands(), &ControllerRadioCommands::frequencyReported, this,
+            [this](ControllerRadioCommands::Path path, double hz) { onReported(int(path), hz); });
     connect(session, &RotatorSession::stateChanged, this, [this](RotatorSession::State s, const QString &detail) {
         if (s != RotatorSession::State::Connected && m_state != State::Closed)
             setState(State::Closed, tr("the rotator's link: %1").arg(detail));
@@ -60,7 +60,7 @@ void ControllerRadioLink::open()
         setState(State::Closed, tr("connect the rotator first: the radio is behind its controller"));
         return;
     }
-    if (!m_session->stationRadio()->isSupported()) {
+    if (!m_session->radioCommands()->isSupported()) {
         setState(State::Closed, tr("the controller's dialect has no station radio commands (UP, DN)"));
         return;
     }
@@ -147,27 +147,28 @@ void ControllerRadioLink::readFrequencies()
 {
     // Refused while closed, as every command is; open, Easycomm I answers
     // nothing (it takes settings blind), so there is nothing to ask.
-    if (m_state == State::Open && !m_session->stationRadio()->canRead())
+    if (m_state == State::Open && !m_session->radioCommands()->canRead())
         return;
     submit({CommandKind::Read, QStringLiteral("DN UP")});
 }
 
 void ControllerRadioLink::send(const PacedCommand &command)
 {
-    StationRadio *radio = m_session->stationRadio();
+    ControllerRadioCommands *radio = m_session->radioCommands();
     session::CommandResult result;
     switch (command.kind) {
     case CommandKind::ReceiveFrequency:
-        result = radio->setFrequency(StationRadio::Path::Downlink, command.hz); // the newest: it replaced any older
+        // The newest: it replaced any older.
+        result = radio->setFrequency(ControllerRadioCommands::Path::Downlink, command.hz);
         break;
     case CommandKind::TransmitFrequency:
-        result = radio->setFrequency(StationRadio::Path::Uplink, command.hz);
+        result = radio->setFrequency(ControllerRadioCommands::Path::Uplink, command.hz);
         break;
     case CommandKind::Mode:
-        result = radio->setMode(StationRadio::Path::Downlink, command.mode);
+        result = radio->setMode(ControllerRadioCommands::Path::Downlink, command.mode);
         break;
     case CommandKind::TransmitMode:
-        result = radio->setMode(StationRadio::Path::Uplink, command.mode);
+        result = radio->setMode(ControllerRadioCommands::Path::Uplink, command.mode);
         break;
     case CommandKind::Split:
         break;
@@ -176,9 +177,9 @@ void ControllerRadioLink::send(const PacedCommand &command)
         m_readInFlight = true;
         m_readSince.start();
         m_readTimeout.start();
-        result = radio->readFrequency(StationRadio::Path::Downlink);
+        result = radio->readFrequency(ControllerRadioCommands::Path::Downlink);
         if (result)
-            result = radio->readFrequency(StationRadio::Path::Uplink);
+            result = radio->readFrequency(ControllerRadioCommands::Path::Uplink);
         if (!result) {
             finishRead(false, result.refusal);
             return;
@@ -197,7 +198,7 @@ void ControllerRadioLink::onReported(int path, double hz)
 {
     if (!m_readInFlight)
         return;
-    if (path == int(StationRadio::Path::Downlink))
+    if (path == int(ControllerRadioCommands::Path::Downlink))
         m_reading.receiveHz = hz;
     else
         m_reading.transmitHz = hz;

@@ -3,7 +3,8 @@
 // The radio behind the rotator controller: a station controller that drives
 // the radios itself takes Doppler-corrected frequencies on the rotator's own
 // link, as the Easycomm tables' station commands (`DN` receive, `UP`
-// transmit, `DM`/`UM` modes; session/stationradio.h). URI: `controller`.
+// transmit, `DM`/`UM` modes; session/controllerradiocommands.h).
+// URI: `controller`.
 //
 // It goes through the rotator session's queue, so a frequency never delays
 // a poll's answer or a stop, and through a CommandPacer like every radio

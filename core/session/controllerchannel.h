@@ -2,11 +2,11 @@
 #pragma once
 // What a helper of the session may do on the controller's link, and no
 // more: the parts of the one conversation with a controller that live in
-// classes of their own (stationradio.h: the radios' UP/DN; micro2gcalibration.h)
-// write and ask through this narrow face of their RotatorSession, never
-// through its insides. The session is the only implementation; a helper's
-// requests go through the session's queue and are refused as the
-// session's own are.
+// classes of their own (controllerradiocommands.h: the radios' UP/DN;
+// micro2gcalibration.h) write and ask through this narrow face of their
+// RotatorSession, never through its insides. The session is the only
+// implementation; a helper's requests go through the session's queue and
+// are refused as the session's own are.
 
 #include "requestqueue.h"
 #include "sessiontypes.h"

@@ -8,9 +8,9 @@
 
 #include "rotatorsession.h"
 
-#include "micro2gcalibration.h"
 #include "connectionplan.h"
-#include "stationradio.h"
+#include "controllerradiocommands.h"
+#include "micro2gcalibration.h"
 
 #include "input/logtext.h"
 #include "protocol/operations.h"
@@ -43,7 +43,7 @@ RotatorSession::RotatorSession(QObject *parent)
     m_clock.start();
     ControllerChannel *channel = this; // the helpers' narrow face of the session
     m_micro2g = std::make_unique<Micro2gCalibration>(channel);
-    m_stationRadio = std::make_unique<StationRadio>(channel);
+    m_radioCommands = std::make_unique<ControllerRadioCommands>(channel);
 
     m_replyTimer.setSingleShot(true);
     connect(&m_replyTimer, &LinkTimer::timeout, this, &RotatorSession::onReplyTimeout);

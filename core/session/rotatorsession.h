@@ -42,11 +42,11 @@ class Link;
 
 namespace slew::session {
 
+class ControllerRadioCommands;
 class Micro2gCalibration;
-class StationRadio;
 
-// Private ControllerChannel: the narrow face its helpers (the station
-// radio, the Micro-2g calibration) get, with no access to the rest.
+// Private ControllerChannel: the narrow face its helpers (the radio
+// commands, the Micro-2g calibration) get, with no access to the rest.
 class RotatorSession : public QObject, private ControllerChannel {
     Q_OBJECT
 public:
@@ -222,8 +222,8 @@ public:
     // (micro2gcalibration.h).
     Micro2gCalibration *micro2g() const { return m_micro2g.get(); }
     // The Easycomm station commands for the radios (UP, DN, UM, DM) on this
-    // link (stationradio.h).
-    StationRadio *stationRadio() const { return m_stationRadio.get(); }
+    // link (controllerradiocommands.h).
+    ControllerRadioCommands *radioCommands() const { return m_radioCommands.get(); }
 
 public slots:
     // Someone wants the rotator watched closely (a tracker steers, even
@@ -483,7 +483,7 @@ private:
     UnreadableReplies m_unreadable;
     std::function<bool(const protocol::Message &)> m_listingReader;
     std::unique_ptr<Micro2gCalibration> m_micro2g;
-    std::unique_ptr<StationRadio> m_stationRadio;
+    std::unique_ptr<ControllerRadioCommands> m_radioCommands;
     qint64 m_unreadableReplies = 0;
     int m_refusedRequests = 0;
 };

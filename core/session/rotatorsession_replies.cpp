@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // RotatorSession's replies: what comes back on the link, read by the codec
 // into messages and applied (position, status, alarms, registers, the
-// station radio's readings), the controller's refusals, and replies that do
+// radio commands' readings), the controller's refusals, and replies that do
 // not read.
 
 #include "rotatorsession.h"
 
+#include "controllerradiocommands.h"
 #include "micro2gcalibration.h"
-#include "stationradio.h"
 
 #include "input/logtext.h"
 #include "transport/link.h"
@@ -211,7 +211,7 @@ void RotatorSession::apply(const Message &m)
     case Op::DownlinkFreq:
     case Op::UplinkMode:
     case Op::DownlinkMode:
-        m_stationRadio->read(m);
+        m_radioCommands->read(m);
         break;
     default:
         break;

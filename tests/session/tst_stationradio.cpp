@@ -5,8 +5,8 @@
 
 #include "../common/simulatorpump.h"
 #include "linkschemes.h"
+#include "session/controllerradiocommands.h"
 #include "session/rotatorsession.h"
-#include "session/stationradio.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -14,11 +14,11 @@
 #include <cmath>
 
 using slew::protocol::Dialect;
+using slew::session::ControllerRadioCommands;
 using slew::session::RotatorSession;
-using slew::session::StationRadio;
-using Path = StationRadio::Path;
+using Path = ControllerRadioCommands::Path;
 
-class StationRadioTest : public QObject {
+class ControllerRadioCommandsTest : public QObject {
     Q_OBJECT
 private slots:
     void initTestCase() { slew::registerLinkSchemes(); }
@@ -27,11 +27,11 @@ private slots:
     {
         RotatorSession s;
         QVERIFY(open(s, Dialect::Easycomm2));
-        StationRadio *radio = s.stationRadio();
+        ControllerRadioCommands *radio = s.radioCommands();
         QVERIFY(radio->isSupported());
         QVERIFY(radio->canRead());
         QSignalSpy sent(&s, &RotatorSession::bytesSent);
-        QSignalSpy reported(radio, &StationRadio::frequencyReported);
+        QSignalSpy reported(radio, &ControllerRadioCommands::frequencyReported);
 
         QVERIFY(radio->setFrequency(Path::Uplink, 145900012.4));
         QVERIFY(radio->setFrequency(Path::Downlink, 435150000));
@@ -53,7 +53,7 @@ private slots:
     {
         RotatorSession s;
         QVERIFY(open(s, Dialect::Easycomm2));
-        StationRadio *radio = s.stationRadio();
+        ControllerRadioCommands *radio = s.radioCommands();
         QSignalSpy sent(&s, &RotatorSession::bytesSent);
         QSignalSpy refused(&s, &RotatorSession::commandRefused);
         QVERIFY(!radio->setFrequency(Path::Uplink, std::nan("")));
@@ -70,7 +70,7 @@ private slots:
     {
         RotatorSession s;
         QVERIFY(open(s, Dialect::Easycomm1));
-        StationRadio *radio = s.stationRadio();
+        ControllerRadioCommands *radio = s.radioCommands();
         QVERIFY(radio->isSupported());
         QVERIFY(!radio->canRead());
         QVERIFY(radio->setFrequency(Path::Downlink, 437800000));
@@ -81,8 +81,8 @@ private slots:
     {
         RotatorSession s;
         QVERIFY(open(s, Dialect::Gs232B));
-        QVERIFY(!s.stationRadio()->isSupported());
-        QVERIFY(!s.stationRadio()->setFrequency(Path::Uplink, 145.9e6));
+        QVERIFY(!s.radioCommands()->isSupported());
+        QVERIFY(!s.radioCommands()->setFrequency(Path::Uplink, 145.9e6));
     }
 
 private:
@@ -106,5 +106,5 @@ private:
     }
 };
 
-QTEST_GUILESS_MAIN(StationRadioTest)
+QTEST_GUILESS_MAIN(ControllerRadioCommandsTest)
 #include "tst_stationradio.moc"

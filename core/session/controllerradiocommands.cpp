@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "stationradio.h"
+#include "controllerradiocommands.h"
 
 #include "controllerchannel.h"
 
@@ -14,32 +14,32 @@ using protocol::Op;
 
 namespace {
 
-Op frequencyOp(StationRadio::Path path)
+Op frequencyOp(ControllerRadioCommands::Path path)
 {
-    return path == StationRadio::Path::Uplink ? Op::UplinkFreq : Op::DownlinkFreq;
+    return path == ControllerRadioCommands::Path::Uplink ? Op::UplinkFreq : Op::DownlinkFreq;
 }
 
-Op modeOp(StationRadio::Path path)
+Op modeOp(ControllerRadioCommands::Path path)
 {
-    return path == StationRadio::Path::Uplink ? Op::UplinkMode : Op::DownlinkMode;
+    return path == ControllerRadioCommands::Path::Uplink ? Op::UplinkMode : Op::DownlinkMode;
 }
 
 } // namespace
 
-StationRadio::StationRadio(ControllerChannel *channel) : m_channel(channel) {}
+ControllerRadioCommands::ControllerRadioCommands(ControllerChannel *channel) : m_channel(channel) {}
 
-bool StationRadio::isSupported() const
+bool ControllerRadioCommands::isSupported() const
 {
     return m_channel->codec().supports(Op::UplinkFreq);
 }
 
-bool StationRadio::canRead() const
+bool ControllerRadioCommands::canRead() const
 {
     // Easycomm I is one line out and nothing back.
     return isSupported() && m_channel->codec().answers();
 }
 
-CommandResult StationRadio::refuseUnlessSupported()
+CommandResult ControllerRadioCommands::refuseUnlessSupported()
 {
     if (auto linked = m_channel->requireLink(); !linked)
         return linked;
@@ -49,7 +49,7 @@ CommandResult StationRadio::refuseUnlessSupported()
     return {};
 }
 
-CommandResult StationRadio::setFrequency(Path path, double hz)
+CommandResult ControllerRadioCommands::setFrequency(Path path, double hz)
 {
     if (auto usable = refuseUnlessSupported(); !usable)
         return usable;
@@ -59,7 +59,7 @@ CommandResult StationRadio::setFrequency(Path path, double hz)
     return {};
 }
 
-CommandResult StationRadio::setMode(Path path, const QString &mode)
+CommandResult ControllerRadioCommands::setMode(Path path, const QString &mode)
 {
     if (auto usable = refuseUnlessSupported(); !usable)
         return usable;
@@ -73,7 +73,7 @@ CommandResult StationRadio::setMode(Path path, const QString &mode)
     return {};
 }
 
-CommandResult StationRadio::readFrequency(Path path)
+CommandResult ControllerRadioCommands::readFrequency(Path path)
 {
     if (auto usable = refuseUnlessSupported(); !usable)
         return usable;
@@ -88,7 +88,7 @@ CommandResult StationRadio::readFrequency(Path path)
     return m_channel->queueRequest(std::move(r), ControllerChannel::SameLine::Shared);
 }
 
-void StationRadio::read(const Message &m)
+void ControllerRadioCommands::read(const Message &m)
 {
     const Path path = (m.op == Op::UplinkFreq || m.op == Op::UplinkMode) ? Path::Uplink : Path::Downlink;
     if (m.op == Op::UplinkFreq || m.op == Op::DownlinkFreq) {

@@ -10,7 +10,7 @@
 // answer), a reading is a request in the queue like any query, so neither
 // ever cuts into a poll's answer. Easycomm I takes the settings but answers
 // nothing: canRead() says whether readings are possible. A session makes
-// its own (RotatorSession::stationRadio()).
+// its own (RotatorSession::radioCommands()).
 
 #include "sessiontypes.h"
 
@@ -22,7 +22,7 @@ namespace slew::session {
 
 class ControllerChannel;
 
-class StationRadio : public QObject {
+class ControllerRadioCommands : public QObject {
     Q_OBJECT
 public:
     enum class Path { Uplink, Downlink };
@@ -34,7 +34,7 @@ public:
     static constexpr qsizetype kLongestMode = 8;
 
     // The session owns this (and so outlives it) and speaks for it.
-    explicit StationRadio(ControllerChannel *channel);
+    explicit ControllerRadioCommands(ControllerChannel *channel);
 
     // The session's dialect has the station commands (UP, DN, UM, DM).
     bool isSupported() const;
@@ -49,8 +49,8 @@ public:
     CommandResult readFrequency(Path path);
 
 signals:
-    void frequencyReported(slew::session::StationRadio::Path path, double hz);
-    void modeReported(slew::session::StationRadio::Path path, const QString &mode);
+    void frequencyReported(slew::session::ControllerRadioCommands::Path path, double hz);
+    void modeReported(slew::session::ControllerRadioCommands::Path path, const QString &mode);
 
 public:
     // A UP, DN, UM or DM line the controller sent (the session hands each here).
