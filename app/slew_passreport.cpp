@@ -8,8 +8,8 @@
 #include "cli/slewcommandline.h"
 #include "slew_identity.h"
 
+#include "history/passreportpicture.h"
 #include "input/finitenumber.h"
-#include "passreportpicture.h"
 #include "records/passrecordstore.h"
 
 #include <QCommandLineParser>

@@ -5,7 +5,7 @@
 #include "cli/sharedoptions.h"
 #include "cli/slewcommandline.h"
 #include "operatortheme.h"
-#include "remoteopener.h"
+#include "remote/remoteopener.h"
 #include "windowsnapshot.h"
 
 #include "remote/brokeraddress.h"

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // `slew --remote mqtts://USER@HOST:8883[/NAME]`: a station that lives on a
-// broker, in a window (ui/remotestationwindow.h), or the station network
-// (ui/stationnetworkwindow.h). Argument parsing and wiring only.
+// broker, in a window (ui/remote/remotestationwindow.h), or the station network
+// (ui/remote/stationnetworkwindow.h). Argument parsing and wiring only.
 
 bool wantsRemote(int argc, char **argv);
 

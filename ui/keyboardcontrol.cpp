@@ -1,6 +1,6 @@
 #include "keyboardcontrol.h"
 
-#include "jogpad.h"
+#include "rotor/jogpad.h"
 #include "stopbutton.h"
 #include "textfieldfocus.h"
 

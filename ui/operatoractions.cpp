@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "operatoractions.h"
 
-#include "positionreadout.h"
+#include "rotor/positionreadout.h"
 
 namespace slew::ui {
 

@@ -7,12 +7,12 @@
 #include "windowfixture.h"
 
 #include "alarmbanner.h"
-#include "connectionbar.h"
-#include "elidinglabel.h"
-#include "parkhomepanel.h"
-#include "polarplotwidget.h"
+#include "rotor/connectionbar.h"
+#include "rotor/parkhomepanel.h"
+#include "rotor/polarplotwidget.h"
 #include "sim/simulator.h"
 #include "sim/simulatorscheme.h"
+#include "widgets/elidinglabel.h"
 
 #include <QLabel>
 #include <QProgressBar>

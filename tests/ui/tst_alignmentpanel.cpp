@@ -6,10 +6,10 @@
 // connects to it again through the connection bar, and Clear removes them.
 
 #include "../common/simulatorpump.h"
-#include "alignmentpanel.h"
-#include "connectionbar.h"
 #include "mainwindow.h"
 #include "model/savedcalibration.h"
+#include "rotor/alignmentpanel.h"
+#include "rotor/connectionbar.h"
 #include "session/rotatorsession.h"
 #include "sky/utctime.h"
 #include "tracking/skyalignment.h"

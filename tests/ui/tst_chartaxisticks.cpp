@@ -2,7 +2,7 @@
 // The value axis ticks of the telemetry charts, as a table: whole-number
 // steps only, no repeated label, a flat series still gets a range, and no
 // more ticks than the height allows.
-#include "chartaxisticks.h"
+#include "widgets/chartaxisticks.h"
 
 #include <QSet>
 #include <QTest>

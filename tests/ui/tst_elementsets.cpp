@@ -8,8 +8,8 @@
 #include "../common/tinyhttpserver.h"
 #include "windowfixture.h"
 
-#include "elementsetsdialog.h"
 #include "sky/elementsetsources.h"
+#include "tracking/elementsetsdialog.h"
 
 #include <QAction>
 #include <QDateTime>

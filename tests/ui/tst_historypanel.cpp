@@ -10,10 +10,10 @@
 #include "layoutfaults.h"
 #include "windowfixture.h"
 
-#include "historypanel.h"
+#include "history/historypanel.h"
+#include "history/passpicturedialog.h"
 #include "linkschemes.h"
 #include "operatortheme.h"
-#include "passpicturedialog.h"
 #include "records/passrecordstore.h"
 
 #include <QApplication>

@@ -6,15 +6,15 @@
 
 #include "windowfixture.h"
 
-#include "compassdial.h"
 #include "model/savedcalibration.h"
-#include "rotorspanel.h"
-#include "rotortile.h"
+#include "rotor/rotorspanel.h"
+#include "rotor/rotortile.h"
 #include "session/controllerrotors.h"
 #include "sim/simulator.h"
 #include "sim/simulatorscheme.h"
 #include "stopbutton.h"
 #include "transport/sharedline.h"
+#include "widgets/compassdial.h"
 
 #include <QLabel>
 #include <QSettings>

@@ -5,16 +5,16 @@
 #include "windowfixture.h"
 
 #include "alarmbanner.h"
-#include "configeditor.h"
-#include "connectionbar.h"
 #include "eventlog.h"
-#include "gotopanel.h"
-#include "polarplotwidget.h"
-#include "presetpanel.h"
-#include "statuslaneview.h"
-#include "targetconfirmation.h"
-#include "telemetrycharts.h"
-#include "trafficconsole.h"
+#include "rotor/configeditor.h"
+#include "rotor/connectionbar.h"
+#include "rotor/gotopanel.h"
+#include "rotor/polarplotwidget.h"
+#include "rotor/presetpanel.h"
+#include "rotor/targetconfirmation.h"
+#include "rotor/trafficconsole.h"
+#include "telemetry/statuslaneview.h"
+#include "telemetry/telemetrycharts.h"
 
 #include <QLabel>
 #include <QLineEdit>

@@ -8,7 +8,7 @@
 
 #include "windowfixture.h"
 
-#include "polarplotwidget.h"
+#include "rotor/polarplotwidget.h"
 
 #include <QLabel>
 #include <QPushButton>

@@ -18,18 +18,18 @@
 
 #include "linkschemes.h"
 #include "operatortheme.h"
-#include "radiolinkbox.h"
-#include "radiopanel.h"
-#include "radioplanform.h"
-#include "radiotransponderdialog.h"
+#include "radio/radiolinkbox.h"
+#include "radio/radiopanel.h"
+#include "radio/radioplanform.h"
+#include "radio/radiotransponderdialog.h"
 #include "radio/transpondersources.h"
 #include "sky/elementsetsources.h"
 #include "sky/utctime.h"
 #include "radio/dopplersteering.h"
 #include "station/dopplerradio.h"
-#include "telemetrycharts.h"
-#include "telemetryrecorder.h"
-#include "trackingpanel.h"
+#include "telemetry/telemetrycharts.h"
+#include "telemetry/telemetryrecorder.h"
+#include "tracking/trackingpanel.h"
 
 #include <QApplication>
 #include <QCheckBox>

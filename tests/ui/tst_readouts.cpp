@@ -5,7 +5,7 @@
 
 #include "eventlog.h"
 #include "operatortheme.h"
-#include "positionreadout.h"
+#include "rotor/positionreadout.h"
 
 #include "session/rotatorsession.h"
 #include "sky/utctime.h"

@@ -11,14 +11,14 @@
 
 #include "linkschemes.h"
 #include "operatortheme.h"
-#include "polarplotwidget.h"
-#include "schedulepanel.h"
-#include "scheduletimeline.h"
+#include "rotor/polarplotwidget.h"
+#include "tracking/schedulepanel.h"
+#include "tracking/scheduletimeline.h"
 #include "sky/horizonmask.h"
 #include "sky/elementsetsources.h"
 #include "sky/utctime.h"
 #include "station/schedulerunner.h"
-#include "stationdialog.h"
+#include "tracking/stationdialog.h"
 
 #include <QApplication>
 #include <QDialogButtonBox>

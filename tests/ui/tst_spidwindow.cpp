@@ -6,7 +6,7 @@
 
 #include "windowfixture.h"
 
-#include "telemetrycharts.h"
+#include "telemetry/telemetrycharts.h"
 
 #include <QDir>
 #include <QComboBox>

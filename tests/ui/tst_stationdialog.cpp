@@ -3,7 +3,7 @@
 // it is wrong, and an accepted station is kept in the settings, or the
 // dialog stays open saying why it could not be.
 
-#include "stationdialog.h"
+#include "tracking/stationdialog.h"
 
 #include <QDialogButtonBox>
 #include <QFile>

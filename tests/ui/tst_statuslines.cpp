@@ -11,13 +11,13 @@
 
 #include "windowfixture.h"
 
-#include "configeditor.h"
 #include "eventlog.h"
-#include "jogpad.h"
-#include "parkhomepanel.h"
-#include "presetpanel.h"
+#include "rotor/configeditor.h"
+#include "rotor/jogpad.h"
+#include "rotor/parkhomepanel.h"
+#include "rotor/presetpanel.h"
+#include "rotor/targetconfirmation.h"
 #include "stopbutton.h"
-#include "targetconfirmation.h"
 
 #include <QApplication>
 #include <QFileDialog>

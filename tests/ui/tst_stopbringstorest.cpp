@@ -10,7 +10,7 @@
 #include "windowfixture.h"
 
 #include "bridge/rotctldserver.h"
-#include "rotctldpanel.h"
+#include "rotor/rotctldpanel.h"
 
 #include <QPushButton>
 #include <QSignalSpy>

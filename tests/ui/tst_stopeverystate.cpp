@@ -7,8 +7,8 @@
 
 #include "windowfixture.h"
 
-#include "jogpad.h"
-#include "parkhomepanel.h"
+#include "rotor/jogpad.h"
+#include "rotor/parkhomepanel.h"
 #include "stopbutton.h"
 
 #include <QLineEdit>

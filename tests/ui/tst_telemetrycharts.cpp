@@ -6,16 +6,16 @@
 // with the values the controller sent; and during a rehearsal, the samples
 // and the time axis in the station clock's time, said above the charts.
 #include "mainwindow.h"
-#include "statuslaneview.h"
-#include "telemetrycharts.h"
-#include "telemetrycsv.h"
-#include "telemetryrecorder.h"
+#include "telemetry/statuslaneview.h"
+#include "telemetry/telemetrycharts.h"
+#include "telemetry/telemetrycsv.h"
+#include "telemetry/telemetryrecorder.h"
 #include "windowfixture.h"
 
 #include "sky/skyvector.h"
 #include "sky/utctime.h"
-#include "timecontroller.h"
 #include "tracking/stationclock.h"
+#include "tracking/timecontroller.h"
 
 #include <QCategoryAxis>
 #include <QChart>

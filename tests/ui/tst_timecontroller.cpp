@@ -14,15 +14,15 @@
 
 #include "windowfixture.h"
 
-#include "connectionbar.h"
+#include "rotor/connectionbar.h"
 #include "sim/simulator.h"
 #include "sim/simulatorscheme.h"
 #include "sky/skyvector.h"
 #include "sky/elementsetsources.h"
 #include "sky/utctime.h"
-#include "timecontroller.h"
-#include "utctimefield.h"
-#include "trackingpanel.h"
+#include "tracking/timecontroller.h"
+#include "widgets/utctimefield.h"
+#include "tracking/trackingpanel.h"
 
 #include <QAction>
 #include <QLabel>

@@ -5,7 +5,7 @@
 
 #include "bridge/rotctldserver.h"
 #include "eventlog.h"
-#include "rotctldpanel.h"
+#include "rotor/rotctldpanel.h"
 #include "windowfixture.h"
 #include "wizard/setupwizard.h"
 

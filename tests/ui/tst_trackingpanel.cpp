@@ -14,16 +14,16 @@
 #include "windowfixture.h"
 
 #include "bridge/rotctldserver.h"
-#include "elementsetages.h"
-#include "polarplotwidget.h"
-#include "trackingline.h"
-#include "upcomingpanel.h"
+#include "tracking/elementsetages.h"
+#include "rotor/polarplotwidget.h"
+#include "tracking/trackingline.h"
+#include "tracking/upcomingpanel.h"
 #include "sky/elementsetsources.h"
 #include "sky/utctime.h"
 #include "stopbutton.h"
-#include "targetpicker.h"
-#include "telemetrycharts.h"
-#include "trackingpanel.h"
+#include "tracking/targetpicker.h"
+#include "telemetry/telemetrycharts.h"
+#include "tracking/trackingpanel.h"
 
 #include <QFile>
 #include <QLabel>

@@ -15,9 +15,9 @@
 
 #include "alarmbanner.h"
 #include "linkschemes.h"
-#include "presetpanel.h"
-#include "targetconfirmation.h"
-#include "telemetrycharts.h"
+#include "rotor/presetpanel.h"
+#include "rotor/targetconfirmation.h"
+#include "telemetry/telemetrycharts.h"
 #include "operatortheme.h"
 #include "wizard/setupwizard.h"
 #include "wizard/tuningchart.h"

@@ -30,7 +30,7 @@
 
 #include "linkschemes.h"
 #include "remote/remotestation.h"
-#include "remotestationwindow.h"
+#include "remote/remotestationwindow.h"
 #include "sim/simulator.h"
 #include "sim/simulatoroptions.h"
 #include "sim/simulatortcpserver.h"

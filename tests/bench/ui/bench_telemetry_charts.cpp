@@ -6,8 +6,8 @@
 //   build-ui/tests/bench/ui/bench_telemetry_charts
 
 #include "model/telemetryhistory.h"
-#include "telemetrycharts.h"
-#include "telemetryrecorder.h"
+#include "telemetry/telemetrycharts.h"
+#include "telemetry/telemetryrecorder.h"
 
 #include <QApplication>
 #include <QDateTime>
