@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "calibrationpage.h"
+#include "wizard/calibrationpage.h"
 
-#include "pagebody.h"
-#include "setupwizard.h"
+#include "wizard/pagebody.h"
+#include "wizard/setupwizard.h"
 
 #include "protocol/operations.h"
 

@@ -1,7 +1,7 @@
-#include "connectpage.h"
+#include "wizard/connectpage.h"
 
-#include "pagebody.h"
-#include "setupwizard.h"
+#include "wizard/pagebody.h"
+#include "wizard/setupwizard.h"
 
 #include "protocol/dialect.h"
 #include "session/connectionplan.h"

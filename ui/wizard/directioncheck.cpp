@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "directioncheck.h"
+#include "wizard/directioncheck.h"
 
 #include "session/rotatorsession.h"
 

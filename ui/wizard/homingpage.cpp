@@ -1,7 +1,7 @@
-#include "homingpage.h"
+#include "wizard/homingpage.h"
 
-#include "pagebody.h"
-#include "setupwizard.h"
+#include "wizard/pagebody.h"
+#include "wizard/setupwizard.h"
 
 #include "protocol/dialect.h"
 

@@ -1,7 +1,7 @@
-#include "identifypage.h"
+#include "wizard/identifypage.h"
 
-#include "pagebody.h"
-#include "setupwizard.h"
+#include "wizard/pagebody.h"
+#include "wizard/setupwizard.h"
 
 #include "protocol/dialect.h"
 #include "session/rotatorsession.h"

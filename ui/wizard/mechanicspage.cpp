@@ -1,8 +1,8 @@
-#include "mechanicspage.h"
+#include "wizard/mechanicspage.h"
 
-#include "directioncheck.h"
-#include "pagebody.h"
-#include "setupwizard.h"
+#include "wizard/directioncheck.h"
+#include "wizard/pagebody.h"
+#include "wizard/setupwizard.h"
 
 #include "session/rotatorsession.h"
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "pagebody.h"
+#include "wizard/pagebody.h"
 
 #include <QScrollArea>
 #include <QVBoxLayout>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "registernames.h"
+#include "wizard/registernames.h"
 
 #include <QCoreApplication>
 

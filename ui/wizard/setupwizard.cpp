@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "setupwizard.h"
+#include "wizard/setupwizard.h"
 
-#include "calibrationpage.h"
-#include "connectpage.h"
-#include "homingpage.h"
-#include "identifypage.h"
-#include "mechanicspage.h"
-#include "parkpage.h"
-#include "summarypage.h"
-#include "tuningpage.h"
+#include "wizard/calibrationpage.h"
+#include "wizard/connectpage.h"
+#include "wizard/homingpage.h"
+#include "wizard/identifypage.h"
+#include "wizard/mechanicspage.h"
+#include "wizard/parkpage.h"
+#include "wizard/summarypage.h"
+#include "wizard/tuningpage.h"
 
 #include "stopbutton.h"
 

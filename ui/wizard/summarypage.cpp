@@ -1,8 +1,8 @@
-#include "summarypage.h"
+#include "wizard/summarypage.h"
 
-#include "pagebody.h"
-#include "registernames.h"
-#include "setupwizard.h"
+#include "wizard/pagebody.h"
+#include "wizard/registernames.h"
+#include "wizard/setupwizard.h"
 
 #include "protocol/dialect.h"
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "tuningchart.h"
+#include "wizard/tuningchart.h"
 
 #include <QChart>
 #include <QLineSeries>

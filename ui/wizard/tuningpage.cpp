@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "tuningpage.h"
+#include "wizard/tuningpage.h"
 
-#include "pagebody.h"
+#include "wizard/pagebody.h"
 #include "protocol/dialect.h"
 #include "session/rotatorsession.h"
-#include "setupwizard.h"
-#include "tuningchart.h"
+#include "wizard/setupwizard.h"
+#include "wizard/tuningchart.h"
 
 #include <QComboBox>
 #include <QGridLayout>
