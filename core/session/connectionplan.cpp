@@ -75,7 +75,7 @@ model::RotatorProfile windowConnectionProfile(const QString &uri, model::Rotator
     if (const transport::LinkHints hints = transport::linkHintsFor(uri); !hints.dialect.isEmpty())
         profile = profileWithHints(profile, hints);
     else
-        profile = commandLineConnectionProfile(profile, true);
+        takeFirmware(profile, hints);
     if (const auto saved = model::savedCalibration(uri)) {
         profile.azOffsetDeg = saved->azDeg;
         profile.elOffsetDeg = saved->elDeg;
