@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "configfile.h"
 
+#include "optionnames.h"
+
 #include "input/boundedfile.h"
 #include "input/logtext.h"
 
@@ -114,13 +116,14 @@ std::optional<ConfiguredArguments> readConfigFile(const QString &path, const Pro
 std::optional<ConfiguredArguments> withConfigFile(const QStringList &arguments, const ProgramMode &mode,
                                                   QString *error)
 {
+    const QString flag = QStringLiteral("--") + opt::config;
     QString path;
     for (qsizetype i = 1; i < arguments.size(); ++i) {
         const QString &a = arguments[i];
-        if (a == u"--config" && i + 1 < arguments.size())
+        if (a == flag && i + 1 < arguments.size())
             path = arguments[i + 1];
-        else if (a.startsWith(QLatin1String("--config=")))
-            path = a.mid(9);
+        else if (a.startsWith(flag + u'='))
+            path = a.mid(flag.size() + 1);
     }
     if (path.isEmpty())
         return ConfiguredArguments{arguments, {}};

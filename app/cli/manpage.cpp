@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "manpage.h"
 
+#include "optionnames.h"
+
 #include <QStringList>
 
 namespace slew::cli {
@@ -50,7 +52,7 @@ void writeOptions(QStringList &out, const ProgramMode &mode)
 {
     for (const ProgramOption &option : mode.options) {
         out << QStringLiteral(".TP") << optionTag(option) << escaped(option.description);
-        if (option.inConfigFile && mode.find(QStringLiteral("config")))
+        if (option.inConfigFile && mode.find(opt::config))
             out << QStringLiteral("May also be set in a \\fB\\-\\-config\\fR file as \\fB%1 =\\fR \\fI%2\\fR.")
                        .arg(escaped(option.longName()), escaped(option.valueName));
     }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "slewcommandline.h"
 
+#include "optionnames.h"
+
 #include "console/consolecommand.h"
 #include "console/radiocommand.h"
 #include "bridge/rotctldserver.h"
@@ -23,12 +25,12 @@ namespace {
 // Options that several modes share, written once.
 ProgramOption connectOption(const QString &description)
 {
-    return {{QStringLiteral("connect")}, QStringLiteral("URI"), description, true};
+    return {{opt::connect}, QStringLiteral("URI"), description, true};
 }
 
 ProgramOption dialectOption()
 {
-    return {{QStringLiteral("dialect")},
+    return {{opt::dialect},
             QStringLiteral("name"),
             QStringLiteral("The controller's command set: %1.").arg(protocol::dialectNameList()),
             true};
@@ -36,7 +38,7 @@ ProgramOption dialectOption()
 
 ProgramOption profileOption()
 {
-    return {{QStringLiteral("profile")},
+    return {{opt::profile},
             QStringLiteral("file"),
             QStringLiteral("A rotator profile (JSON, as the window exports it): limits, overlap, park, dialect."),
             true};
@@ -44,7 +46,7 @@ ProgramOption profileOption()
 
 ProgramOption rotctldListenOption()
 {
-    return {{QStringLiteral("rotctld-listen")},
+    return {{opt::rotctldListen},
             QStringLiteral("address:port"),
             QStringLiteral("Let trackers (Gpredict, the SatNOGS client, rotctl) steer through Slew: serve Hamlib's "
                            "rotctld protocol on ADDRESS:PORT. The address is 127.0.0.1 unless one is named."),
@@ -53,7 +55,7 @@ ProgramOption rotctldListenOption()
 
 ProgramOption limitsOption()
 {
-    return {{QStringLiteral("limits")},
+    return {{opt::limits},
             QStringLiteral("travel"),
             QStringLiteral("The rotator's travel for this run, AZMIN:AZMAX,ELMIN:ELMAX: 0:450,0:180 for an overlap and "
                            "flip rotator, -180:180,0:90 for a south stop. It replaces the profile's, and every move is "
@@ -63,13 +65,13 @@ ProgramOption limitsOption()
 
 ProgramOption clockStartOption(const QString &description)
 {
-    return {{QStringLiteral("clock-start")}, QStringLiteral("time"), description};
+    return {{opt::clockStart}, QStringLiteral("time"), description};
 }
 
 // `keepingPace` says how the rotator keeps up with a faster clock.
 ProgramOption clockRateOption(const QString &keepingPace)
 {
-    return {{QStringLiteral("clock-rate")},
+    return {{opt::clockRate},
             QStringLiteral("n"),
             QStringLiteral("With --clock-start: run the station clock n times faster, 1 to %1 (default 1). %2")
                 .arg(tracking::StationClock::kMaxRate)
@@ -78,12 +80,12 @@ ProgramOption clockRateOption(const QString &keepingPace)
 
 ProgramOption stationOption(const QString &description, bool inConfigFile = false)
 {
-    return {{QStringLiteral("qth")}, QStringLiteral("station"), description, inConfigFile};
+    return {{opt::qth}, QStringLiteral("station"), description, inConfigFile};
 }
 
 ProgramOption horizonOption(bool inConfigFile = false)
 {
-    return {{QStringLiteral("horizon")},
+    return {{opt::horizon},
             QStringLiteral("file"),
             QStringLiteral("The station's horizon mask: a line `azimuth elevation` (degrees) a point, # for comments; "
                            "the mask is read straight between the points and round through north, and a wall is "
@@ -93,7 +95,7 @@ ProgramOption horizonOption(bool inConfigFile = false)
 
 ProgramOption rotctldMaxClientsOption()
 {
-    return {{QStringLiteral("rotctld-max-clients")},
+    return {{opt::rotctldMaxClients},
             QStringLiteral("n"),
             QStringLiteral("How many trackers may be connected at once (default %1); one more reads RPRT -9 and is "
                            "closed.")
@@ -104,12 +106,12 @@ ProgramOption rotctldMaxClientsOption()
 // Where passes are recorded, for the window, the service and the report.
 ProgramOption passDbOption(const QString &description, bool inConfigFile = false)
 {
-    return {{QStringLiteral("pass-db")}, QStringLiteral("file"), description, inConfigFile};
+    return {{opt::passDb}, QStringLiteral("file"), description, inConfigFile};
 }
 
 ProgramOption passKeepDaysOption(bool inConfigFile = false)
 {
-    return {{QStringLiteral("pass-keep-days")},
+    return {{opt::passKeepDays},
             QStringLiteral("days"),
             QStringLiteral("How long the recorded passes' samples (the antenna's path, for the picture) are kept, 1 "
                            "to %1 days (default %2); the passes' figures stay.")
@@ -122,7 +124,7 @@ ProgramOption passKeepDaysOption(bool inConfigFile = false)
 // (sky/elementage.h); the window keeps its own under Sky → Element sets.
 ProgramOption maxElementAgeOption(bool inConfigFile = false)
 {
-    return {{QStringLiteral("max-element-age")},
+    return {{opt::maxElementAge},
             QStringLiteral("days"),
             QStringLiteral("A satellite is tracked only while its elements are at most this many days from their "
                            "epoch (either side: a rehearsal of an old pass with new elements is as far off), 0.5 to "
@@ -132,7 +134,7 @@ ProgramOption maxElementAgeOption(bool inConfigFile = false)
 
 ProgramOption tleOption(const QString &purpose)
 {
-    return {{QStringLiteral("tle")},
+    return {{opt::tle},
             QStringLiteral("file"),
             purpose + QStringLiteral(" Element sets in any form, told from the content: TLE or three-line sets "
                                      "(Alpha-5 numbers too), or GP data as CSV, OMM XML, JSON or OMM KVN with "
@@ -165,7 +167,7 @@ ProgramMode makeWindowMode()
         limitsOption(),
         rotctldListenOption(),
         rotctldMaxClientsOption(),
-        {{QStringLiteral("goto")}, QStringLiteral("az,el"), QStringLiteral("Once connected, move to this position.")},
+        {{opt::gotoAzEl}, QStringLiteral("az,el"), QStringLiteral("Once connected, move to this position.")},
         clockStartOption(QStringLiteral(
             "Start in rehearsal: the station clock starts at this UTC instant (ISO 8601) and runs; the passes, the "
             "plot and tracking follow it, and an orange line says so. Sky, Time controller changes it or goes back "
@@ -179,10 +181,10 @@ ProgramMode makeWindowMode()
                                     "When the station service records into it, the window shows it and records "
                                     "nothing.")),
         passKeepDaysOption(),
-        {{QStringLiteral("screenshot")},
+        {{opt::screenshot},
          QStringLiteral("FILE.png"),
          QStringLiteral("Render the window to a PNG after the settle time, then exit. Needs no display.")},
-        {{QStringLiteral("settle-ms")},
+        {{opt::settleMs},
          QStringLiteral("ms"),
          QStringLiteral("How long to run before the screenshot (default 3000).")},
     };
@@ -205,8 +207,8 @@ ProgramMode makeHeadlessMode()
         "standard output. On SIGTERM or SIGINT it stops the rotator, waits for the stop to leave the link, and "
         "exits.");
     mode.options = {
-        {{QStringLiteral("headless")}, {}, QStringLiteral("Run as a station service, without a window.")},
-        {{QStringLiteral("config")},
+        {{opt::headless}, {}, QStringLiteral("Run as a station service, without a window.")},
+        {{opt::config},
          QStringLiteral("file"),
          QStringLiteral("Read settings from FILE, one `name = value` a line, where name is one of connect, dialect, "
                         "profile, limits, rotctld-listen, rotctld-allow, rotctld-max-clients, rotors, qth, horizon, tle, track (a line a target), min-el, guard, max-element-age, and the radio's "
@@ -218,13 +220,13 @@ ProgramMode makeHeadlessMode()
         dialectOption(),
         profileOption(),
         rotctldListenOption(),
-        {{QStringLiteral("rotctld-allow")},
+        {{opt::rotctldAllow},
          QStringLiteral("addresses"),
          QStringLiteral("Comma-separated client addresses the rotctld server accepts (default: any)."),
          true},
         rotctldMaxClientsOption(),
         limitsOption(),
-        {{QStringLiteral("track")},
+        {{opt::track},
          QStringLiteral("target"),
          QStringLiteral("Track every pass of a satellite (a catalogue number, an AMSAT name or any part of a name, of --tle's sets or "
                         "else the cached ones of the window's sources), the sun "
@@ -240,7 +242,7 @@ ProgramMode makeHeadlessMode()
          true,
          true},
         horizonOption(true),
-        {{QStringLiteral("guard")},
+        {{opt::guard},
          QStringLiteral("seconds"),
          QStringLiteral("With --track given more than once: the least time between two passes of the schedule, "
                         "besides the rotator's move, 0 to 3600 (default 30)."),
@@ -252,7 +254,7 @@ ProgramMode makeHeadlessMode()
             tle.inConfigFile = true;
             return tle;
         }(),
-        {{QStringLiteral("min-el")},
+        {{opt::minEl},
          QStringLiteral("degrees"),
          QStringLiteral("With --track: passes must climb above this, -5 to 90 (default 0)."),
          true},
@@ -260,7 +262,7 @@ ProgramMode makeHeadlessMode()
                                         "let it run, to rehearse a pass on the simulator or on the rotator.")),
         clockRateOption(QStringLiteral("To keep pace, run the simulator at the same time scale (sim:?time_scale=n, "
                                        "slew-sim --time-scale n).")),
-        {{QStringLiteral("radio")},
+        {{opt::radio},
          QStringLiteral("uri"),
          QStringLiteral("With --track of a satellite: keep this radio on its Doppler-corrected frequencies while a "
                         "pass is tracked, and log the Doppler error at LOS. rigctld://HOST:PORT (Hamlib's rigctld, "
@@ -269,63 +271,63 @@ ProgramMode makeHeadlessMode()
                         "UP and DN: Easycomm II and III). The frequencies come from --downlink and --uplink or from "
                         "--transponders."),
          true},
-        {{QStringLiteral("downlink")},
+        {{opt::downlink},
          QStringLiteral("freq"),
          QStringLiteral("With --radio: what the satellite transmits, as 145.8M, 435.125 MHz, 1296200k or hertz."),
          true},
-        {{QStringLiteral("uplink")},
+        {{opt::uplink},
          QStringLiteral("freq"),
          QStringLiteral("With --radio: what the satellite listens on; the radio is put in split and transmits there, "
                         "Doppler-corrected."),
          true},
-        {{QStringLiteral("downlink-mode")},
+        {{opt::downlinkMode},
          QStringLiteral("mode"),
          QStringLiteral("With --radio: the receive mode at AOS (a Hamlib name: USB, LSB, CW, FM, AM, PKTUSB...)."),
          true},
-        {{QStringLiteral("uplink-mode")}, QStringLiteral("mode"), QStringLiteral("With --radio: the transmit mode at AOS."), true},
-        {{QStringLiteral("doppler")},
+        {{opt::uplinkMode}, QStringLiteral("mode"), QStringLiteral("With --radio: the transmit mode at AOS."), true},
+        {{opt::doppler},
          QStringLiteral("paths"),
          QStringLiteral("With --radio: correct both paths (the default), the downlink only or the uplink only "
                         "(both, downlink, uplink)."),
          true},
-        {{QStringLiteral("uplink-follows")},
+        {{opt::uplinkFollows},
          QStringLiteral("how"),
          QStringLiteral("With --radio: when the operator turns the receive dial, move the uplink the same way, the "
                         "opposite way (an inverting transponder) or not at all (same, opposite, no). A transponder "
                         "from --transponders sets this itself."),
          true},
-        {{QStringLiteral("transponder-invert")},
+        {{opt::transponderInvert},
          {},
          QStringLiteral("With --radio: the frequencies given are an inverting linear transponder's: the uplink follows "
                         "the operator's dial the opposite way (as --uplink-follows opposite)."),
          true},
-        {{QStringLiteral("radio-vfos")},
+        {{opt::radioVfos},
          QStringLiteral("layout"),
          QStringLiteral("With --radio: split (the default: receive on VFOA, transmit on VFOB with split on, as "
                         "Gpredict does) or main-sub (receive on Sub, transmit on Main, no split: the IC-9700 and "
                         "its kind in satellite mode, turned on at the radio; through rigctld it needs rigctld -o)."),
          true},
-        {{QStringLiteral("radio-restore")},
+        {{opt::radioRestore},
          {},
          QStringLiteral("With --radio: after each pass put the radio back on the frequency it was found on before AOS, "
                         "with split off again if Slew turned it on. Without it the radio is left where the pass ended."),
          true},
-        {{QStringLiteral("downlink-offset")},
+        {{opt::downlinkOffset},
          QStringLiteral("freq"),
          QStringLiteral("With --radio: a calibration offset added to the downlink (signed, as -1.2k; within 1 MHz)."),
          true},
-        {{QStringLiteral("uplink-offset")}, QStringLiteral("freq"), QStringLiteral("With --radio: the same for the uplink."), true},
-        {{QStringLiteral("transponders")},
+        {{opt::uplinkOffset}, QStringLiteral("freq"), QStringLiteral("With --radio: the same for the uplink."), true},
+        {{opt::transponders},
          QStringLiteral("file"),
          QStringLiteral("With --radio: the satellite's transponders from a SatNOGS DB transmitter list (.json) or a "
                         "Gpredict .trsp file; may be given more than once. Its first alive linear transponder is "
                         "tuned (else its first alive one) unless --transponder names another."),
          true},
-        {{QStringLiteral("transponder")},
+        {{opt::transponder},
          QStringLiteral("name"),
          QStringLiteral("With --transponders: the transponder to tune, by the start of its description."),
          true},
-        {{QStringLiteral("rotors")},
+        {{opt::rotors},
          QStringLiteral("list"),
          QStringLiteral("Serve these rotors of a multi-rotor controller (the Micro-2g's 1 to 4, as 1,2,4 or 1-4) over "
                         "the one link, each with a session and a rotctld port of its own: the first rotor on "
@@ -344,7 +346,7 @@ ProgramMode makeHeadlessMode()
                                     "service at start; the default one is skipped with a log line."),
                      true),
         passKeepDaysOption(true),
-        {{QStringLiteral("mqtt")},
+        {{opt::mqtt},
          QStringLiteral("url"),
          QStringLiteral("Publish the station on an MQTT broker and obey commands from it (docs/remote.md): "
                         "mqtts://USER@HOST:8883?cafile=CA.pem, TLS checked against the CA file (or the system's "
@@ -352,11 +354,11 @@ ProgramMode makeHeadlessMode()
                         "and online (retained), telemetry, command and reply. The broker's access list decides who "
                         "may watch and who may command. Needs --station-name."),
          true},
-        {{QStringLiteral("station-name")},
+        {{opt::stationName},
          QStringLiteral("name"),
          QStringLiteral("With --mqtt: the station's name on the broker, its topic level (letters, digits, -, _ and .)."),
          true},
-        {{QStringLiteral("mqtt-password-file")},
+        {{opt::mqttPasswordFile},
          QStringLiteral("file"),
          QStringLiteral("With --mqtt: the broker password is the first line of FILE, which other users may not "
                         "read. Without it, the environment variable SLEW_MQTT_PASSWORD; never on the command line."),
@@ -377,8 +379,8 @@ ProgramMode makePassReportMode()
         "number, as the window's History tab lists it. Nothing is written for a pass that is not recorded or "
         "whose samples are gone.");
     mode.options = {
-        {{QStringLiteral("pass-report")}, QStringLiteral("id"), QStringLiteral("The recorded pass to draw.")},
-        {{QStringLiteral("out")}, QStringLiteral("file"), QStringLiteral("The PNG to write.")},
+        {{opt::passReport}, QStringLiteral("id"), QStringLiteral("The recorded pass to draw.")},
+        {{opt::out}, QStringLiteral("file"), QStringLiteral("The PNG to write.")},
         passDbOption(QStringLiteral("The pass records to read (default: passes.sqlite in the data directory). "
                                     "Read only: a file the station service records into can be read meanwhile.")),
     };
@@ -396,14 +398,14 @@ ProgramMode makeTuneMode()
         "overshoot, settling time and steady-state error before and after. Without --apply the old gains are "
         "written back. Ctrl-C stops the rotator and restores the old gains.");
     mode.options = {
-        {{QStringLiteral("tune")}, QStringLiteral("URI"), QStringLiteral("The rotator's link URI.")},
-        {{QStringLiteral("axis")}, QStringLiteral("axis"), QStringLiteral("az, el or both (default both).")},
-        {{QStringLiteral("apply")}, {}, QStringLiteral("Keep the new gains on the controller.")},
-        {{QStringLiteral("dialect")},
+        {{opt::tune}, QStringLiteral("URI"), QStringLiteral("The rotator's link URI.")},
+        {{opt::axis}, QStringLiteral("axis"), QStringLiteral("az, el or both (default both).")},
+        {{opt::apply}, {}, QStringLiteral("Keep the new gains on the controller.")},
+        {{opt::dialect},
          QStringLiteral("name"),
          QStringLiteral("easycomm3 (default) or satnogs: the dialects with the CR and CW registers.")},
         profileOption(),
-        {{QStringLiteral("step")}, QStringLiteral("degrees"), QStringLiteral("Step size, 0.5 to 30 (default 2).")},
+        {{opt::step}, QStringLiteral("degrees"), QStringLiteral("Step size, 0.5 to 30 (default 2).")},
     };
     return mode;
 }
@@ -430,24 +432,24 @@ ProgramMode makePassesMode()
         "case; \"all\" predicts every satellite, "
         "sorted by AOS. For the sun and the moon it prints rise, culmination and set, and needs no --tle.");
     mode.options = {
-        {{QStringLiteral("passes")}, QStringLiteral("sat"), QStringLiteral("The satellite, \"all\", \"sun\" or \"moon\".")},
+        {{opt::passes}, QStringLiteral("sat"), QStringLiteral("The satellite, \"all\", \"sun\" or \"moon\".")},
         qthOption(),
         tleOption(QStringLiteral("The satellites.")),
-        {{QStringLiteral("hours")}, QStringLiteral("hours"), QStringLiteral("How far ahead to look, 0.1 to 720 (default 24).")},
-        {{QStringLiteral("min-el")},
+        {{opt::hours}, QStringLiteral("hours"), QStringLiteral("How far ahead to look, 0.1 to 720 (default 24).")},
+        {{opt::minEl},
          QStringLiteral("degrees"),
          QStringLiteral("Only passes whose highest point climbs to this elevation, -5 to 90 (default 10; "
                         "every rising for the sun and the moon). AOS and LOS stay where --aos-el puts them.")},
-        {{QStringLiteral("aos-el")},
+        {{opt::aosEl},
          QStringLiteral("degrees"),
          QStringLiteral("AOS and LOS where the elevation crosses this, -5 to 90 (default 0, the horizon, as the "
                         "window's pass table has them; the almanac's -0.833 for the sun and the moon).")},
         // --time too: --where's name for the same idea, so neither has to be
         // remembered for the right command.
-        {{QStringLiteral("start"), QStringLiteral("time")},
+        {{opt::start, opt::time},
          QStringLiteral("time"),
          QStringLiteral("Start of the search, ISO 8601 in UTC (default now); --time is the same.")},
-        {{QStringLiteral("json")}, {}, QStringLiteral("Print JSON instead of a table.")},
+        {{opt::json}, {}, QStringLiteral("Print JSON instead of a table.")},
         horizonOption(),
     };
     return mode;
@@ -468,8 +470,8 @@ ProgramMode makeScheduleMode()
         "default G-5500 class one; --limits sets its travel. The station and its horizon fall back to what the "
         "window keeps (Sky, Station), as --passes does.");
     mode.options = {
-        {{QStringLiteral("schedule")}, {}, QStringLiteral("Print a schedule.")},
-        {{QStringLiteral("track")},
+        {{opt::schedule}, {}, QStringLiteral("Print a schedule.")},
+        {{opt::track},
          QStringLiteral("target"),
          QStringLiteral("A target: a satellite (a catalogue number, an AMSAT name or any part of a name), sun, moon, "
                         "azel:AZ,EL or radec:RA,DEC. Once for each target, the first the highest priority."),
@@ -478,20 +480,20 @@ ProgramMode makeScheduleMode()
         qthOption(),
         tleOption(QStringLiteral("The satellites among the targets.")),
         horizonOption(),
-        {{QStringLiteral("start"), QStringLiteral("time")},
+        {{opt::start, opt::time},
          QStringLiteral("time"),
          QStringLiteral("Start of the plan, ISO 8601 in UTC (default now).")},
-        {{QStringLiteral("hours")}, QStringLiteral("hours"), QStringLiteral("How far ahead to plan, 0.1 to 168 (default 24).")},
-        {{QStringLiteral("min-el")},
+        {{opt::hours}, QStringLiteral("hours"), QStringLiteral("How far ahead to plan, 0.1 to 168 (default 24).")},
+        {{opt::minEl},
          QStringLiteral("degrees"),
          QStringLiteral("Passes must climb above this elevation, -5 to 90 (default 0).")},
-        {{QStringLiteral("guard")},
+        {{opt::guard},
          QStringLiteral("seconds"),
          QStringLiteral("The least time between two passes, besides the rotator's move, 0 to 3600 (default 30).")},
         maxElementAgeOption(),
         profileOption(),
         limitsOption(),
-        {{QStringLiteral("json")}, {}, QStringLiteral("Print JSON instead of a line a pass.")},
+        {{opt::json}, {}, QStringLiteral("Print JSON instead of a line a pass.")},
     };
     return mode;
 }
@@ -507,14 +509,14 @@ ProgramMode makeWhereMode()
         "degrees, range in km and range-rate in km/s (positive when receding), and for a satellite the point "
         "beneath it and whether it is in sunlight.");
     mode.options = {
-        {{QStringLiteral("where")}, QStringLiteral("sat"), QStringLiteral("The satellite, \"sun\" or \"moon\".")},
+        {{opt::where}, QStringLiteral("sat"), QStringLiteral("The satellite, \"sun\" or \"moon\".")},
         qthOption(),
         tleOption(QStringLiteral("The satellites; not read for the sun and the moon.")),
-        {{QStringLiteral("time"), QStringLiteral("start")},
+        {{opt::time, opt::start},
          QStringLiteral("time"),
          QStringLiteral("ISO 8601 in UTC (default now); --start is the same, as --passes takes it.")},
-        {{QStringLiteral("refraction")}, {}, QStringLiteral("Add standard atmospheric refraction to the elevation.")},
-        {{QStringLiteral("json")}, {}, QStringLiteral("Print JSON instead of text.")},
+        {{opt::refraction}, {}, QStringLiteral("Add standard atmospheric refraction to the elevation.")},
+        {{opt::json}, {}, QStringLiteral("Print JSON instead of text.")},
     };
     return mode;
 }
@@ -540,7 +542,7 @@ ProgramMode makeUpdateElementsMode()
             .arg(slew::input::byteSizeText(sky::kMaxElementSetBytes), sky::durationText(sky::kElementSetSilenceMs),
                  sky::durationText(sky::kElementSetTransferMs));
     mode.options = {
-        {{QStringLiteral("update-elements")},
+        {{opt::updateElements},
          {},
          QStringLiteral("Refresh the element sets from the URLs that follow, or from the window's sources.")},
     };
@@ -560,12 +562,12 @@ ProgramMode makeExportElementsMode()
         "above that, which no TLE can carry, is left out and named on the standard error. The other forms carry "
         "every set whole: CSV and JSON as CelesTrak writes them, XML and KVN as CCSDS OMMs.");
     mode.options = {
-        {{QStringLiteral("export-elements")}, {}, QStringLiteral("Write element sets.")},
-        {{QStringLiteral("format")},
+        {{opt::exportElements}, {}, QStringLiteral("Write element sets.")},
+        {{opt::format},
          QStringLiteral("form"),
          QStringLiteral("tle (the default; three lines a set), csv, json, xml (OMM XML) or kvn (OMM KVN).")},
         tleOption(QStringLiteral("The element sets to write from.")),
-        {{QStringLiteral("out")},
+        {{opt::out},
          QStringLiteral("file"),
          QStringLiteral("Write to this file (whole or not at all) rather than the standard output.")},
     };
@@ -591,7 +593,7 @@ ProgramMode makeUpdateTranspondersMode()
             .arg(QLatin1String(radio::kSatnogsTransmittersUrl), slew::input::byteSizeText(radio::kLargestTransmitterList),
                  sky::durationText(radio::kTransponderSilenceMs), sky::durationText(radio::kTransponderTransferMs));
     mode.options = {
-        {{QStringLiteral("update-transponders")},
+        {{opt::updateTransponders},
          {},
          QStringLiteral("Refresh the transponders from the URLs that follow, or from the kept sources.")},
     };
@@ -612,18 +614,18 @@ ProgramMode makeRemoteMode()
         "whether this account may command or only watch. The password comes from --mqtt-password-file or "
         "SLEW_MQTT_PASSWORD, never the command line. See docs/remote.md.");
     mode.options = {
-        {{QStringLiteral("remote")},
+        {{opt::remote},
          QStringLiteral("url"),
          QStringLiteral("The broker and, after a slash, the station: mqtts://USER@HOST:8883/NAME?cafile=CA.pem. Plain "
                         "mqtt:// only to a broker on this machine.")},
-        {{QStringLiteral("mqtt-password-file")},
+        {{opt::mqttPasswordFile},
          QStringLiteral("file"),
          QStringLiteral("The broker password is the first line of FILE, which other users may not read; without "
                         "it, SLEW_MQTT_PASSWORD.")},
-        {{QStringLiteral("screenshot")},
+        {{opt::screenshot},
          QStringLiteral("FILE.png"),
          QStringLiteral("Render the window to a PNG after the settle time, then exit. Needs no display.")},
-        {{QStringLiteral("settle-ms")},
+        {{opt::settleMs},
          QStringLiteral("ms"),
          QStringLiteral("How long to run before the screenshot (default 3000).")},
     };
@@ -642,18 +644,18 @@ ProgramMode makeSimMode()
         "rotctld) can be tried without hardware. It prints one ready line with the address and the terminal path, "
         "and exits on SIGTERM or SIGINT with a count of the lines it received.");
     mode.options = {
-        {{QStringLiteral("listen")},
+        {{opt::listen},
          QStringLiteral("address:port"),
          QStringLiteral("Serve TCP on ADDRESS:PORT; port 0 picks a free one (default 127.0.0.1:4533 when --pty is "
                         "not given).")},
-        {{QStringLiteral("pty")},
+        {{opt::pty},
          QStringLiteral("path"),
          QStringLiteral("Serve a pseudo-terminal, symlinked at PATH (open it as a serial port).")},
-        {{QStringLiteral("listen-dialect")},
+        {{opt::listenDialect},
          QStringLiteral("name"),
          QStringLiteral("Dialect of the TCP endpoint if not --dialect's.")},
-        {{QStringLiteral("log-received")}, QStringLiteral("file"), QStringLiteral("Write every line received to FILE.")},
-        {{QStringLiteral("max-clients")},
+        {{opt::logReceived}, QStringLiteral("file"), QStringLiteral("Write every line received to FILE.")},
+        {{opt::maxClients},
          QStringLiteral("n"),
          QStringLiteral("TCP clients at once (default %1); one more is refused and closed.")
              .arg(sim::SimulatorTcpServer::kDefaultMaxClients)},
@@ -924,13 +926,13 @@ const ProgramDescription &slewctlProgram()
             "prompt (or from standard input) until quit. It uses the same core as the Slew window: every move "
             "and every raw line is checked against the rotator's limits before a byte is sent.");
         mode.options = {
-            {{QStringLiteral("json")}, {}, QStringLiteral("Print one JSON object a line, for scripts.")},
+            {{opt::json}, {}, QStringLiteral("Print one JSON object a line, for scripts.")},
             dialectOption(),
             profileOption(),
-            {{QStringLiteral("timeout")},
+            {{opt::timeout},
              QStringLiteral("seconds"),
              QStringLiteral("How long --wait waits for the rotator to arrive (default 600).")},
-            {{QStringLiteral("radio")},
+            {{opt::radio},
              QStringLiteral("uri"),
              QStringLiteral("Speak to a radio instead of a rotator (rigctld://HOST:PORT, hamlib:MODEL?device=PATH&baud=N, "
                             "sim:): the words that follow are one radio command (see Radio commands), after which "
