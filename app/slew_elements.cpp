@@ -5,6 +5,8 @@
 
 #include "slew_elements.h"
 
+#include "cli/argvoptions.h"
+#include "cli/optionnames.h"
 #include "cli/slewcommandline.h"
 #include "slew_identity.h"
 
@@ -17,14 +19,11 @@
 #include <QCoreApplication>
 
 #include <cstdio>
-#include <cstring>
 
 using namespace slew::sky;
+namespace opt = slew::cli::opt;
 
 namespace {
-
-const char kOption[] = "--update-elements";
-const char kTranspondersOption[] = "--update-transponders";
 
 int refuse(const QString &message)
 {
@@ -51,10 +50,7 @@ bool readUrls(const QStringList &texts, QList<QUrl> *urls, QString *error)
 
 bool wantsUpdateElements(int argc, char **argv)
 {
-    for (int i = 1; i < argc; ++i)
-        if (std::strcmp(argv[i], kOption) == 0)
-            return true;
-    return false;
+    return slew::cli::argvHasSwitch(argc, argv, opt::updateElements);
 }
 
 int runUpdateElements(int argc, char **argv)
@@ -117,10 +113,7 @@ int runUpdateElements(int argc, char **argv)
 
 bool wantsUpdateTransponders(int argc, char **argv)
 {
-    for (int i = 1; i < argc; ++i)
-        if (std::strcmp(argv[i], kTranspondersOption) == 0)
-            return true;
-    return false;
+    return slew::cli::argvHasSwitch(argc, argv, opt::updateTransponders);
 }
 
 int runUpdateTransponders(int argc, char **argv)

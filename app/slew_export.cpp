@@ -4,7 +4,9 @@
 
 #include "slew_export.h"
 
+#include "cli/argvoptions.h"
 #include "cli/elementsetoption.h"
+#include "cli/optionnames.h"
 #include "cli/slewcommandline.h"
 #include "slew_identity.h"
 
@@ -16,9 +18,9 @@
 #include <QCoreApplication>
 
 #include <cstdio>
-#include <cstring>
 
 using namespace slew::sky;
+namespace opt = slew::cli::opt;
 
 namespace {
 
@@ -32,10 +34,7 @@ int fail(const QString &message, int status = 2)
 
 bool wantsExportElements(int argc, char **argv)
 {
-    for (int i = 1; i < argc; ++i)
-        if (std::strcmp(argv[i], "--export-elements") == 0)
-            return true;
-    return false;
+    return slew::cli::argvHasSwitch(argc, argv, opt::exportElements);
 }
 
 int runExportElements(int argc, char **argv)
@@ -49,11 +48,11 @@ int runExportElements(int argc, char **argv)
     parser.process(app);
 
     ElementSetForm form = ElementSetForm::Tle;
-    if (parser.isSet(QStringLiteral("format"))) {
-        const std::optional<ElementSetForm> named = formFromName(parser.value(QStringLiteral("format")));
+    if (parser.isSet(opt::format)) {
+        const std::optional<ElementSetForm> named = formFromName(parser.value(opt::format));
         if (!named)
             return fail(QStringLiteral("--format: '%1' is not tle, csv, json, xml or kvn")
-                            .arg(slew::input::loggableText(parser.value(QStringLiteral("format")), 20)));
+                            .arg(slew::input::loggableText(parser.value(opt::format), 20)));
         form = *named;
     }
     QString error;
@@ -82,7 +81,7 @@ int runExportElements(int argc, char **argv)
     for (const QString &left : written.left)
         std::fprintf(stderr, "slew: not written as %s: %s\n", qPrintable(formName(form)), qPrintable(left));
 
-    const QString out = parser.value(QStringLiteral("out"));
+    const QString out = parser.value(opt::out);
     if (out.isEmpty() || out == u"-") {
         std::fwrite(written.bytes.constData(), 1, size_t(written.bytes.size()), stdout);
         std::fflush(stdout);

@@ -4,8 +4,10 @@
 // options are described in cli/.
 
 #include "slew_identity.h"
+#include "cli/argvoptions.h"
 #include "cli/configfile.h"
 #include "cli/elementsetoption.h"
+#include "cli/optionnames.h"
 #include "cli/sharedoptions.h"
 #include "cli/trackoptions.h"
 #include "cli/slewcommandline.h"
@@ -33,9 +35,9 @@
 #include <QCoreApplication>
 
 #include <cstdio>
-#include <cstring>
 #include <functional>
-#include <string_view>
+
+namespace opt = slew::cli::opt;
 
 namespace {
 
@@ -64,34 +66,31 @@ std::optional<slew::station::ServiceConfig::Track> readTrack(const QCommandLineP
         return std::nullopt;
     track.targets = *targets;
     QString why;
-    const QString minEl = QStringLiteral("min-el");
-    if (parser.isSet(minEl)) {
-        const auto value = slew::input::numberIn(parser.value(minEl), {-5, 90, "°"}, &why);
+    if (parser.isSet(opt::minEl)) {
+        const auto value = slew::input::numberIn(parser.value(opt::minEl), {-5, 90, "°"}, &why);
         if (!value) {
-            *error = QStringLiteral("%1: %2 (degrees from -5 to 90)").arg(label(minEl), why);
+            *error = QStringLiteral("%1: %2 (degrees from -5 to 90)").arg(label(opt::minEl), why);
             return std::nullopt;
         }
         track.minElevationDeg = *value;
     }
-    const QString guard = QStringLiteral("guard");
-    if (parser.isSet(guard)) {
+    if (parser.isSet(opt::guard)) {
         if (track.targets.size() < 2) {
-            *error = QStringLiteral("%1 goes with a schedule: --track given more than once").arg(label(guard));
+            *error = QStringLiteral("%1 goes with a schedule: --track given more than once").arg(label(opt::guard));
             return std::nullopt;
         }
-        const auto value = slew::input::numberIn(parser.value(guard), {0, 3600, " s"}, &why);
+        const auto value = slew::input::numberIn(parser.value(opt::guard), {0, 3600, " s"}, &why);
         if (!value) {
-            *error = QStringLiteral("%1: %2 (seconds between two passes, 0 to 3600)").arg(label(guard), why);
+            *error = QStringLiteral("%1: %2 (seconds between two passes, 0 to 3600)").arg(label(opt::guard), why);
             return std::nullopt;
         }
         track.guardSeconds = *value;
     }
-    const QString maxAge = QStringLiteral("max-element-age");
-    if (parser.isSet(maxAge)) {
+    if (parser.isSet(opt::maxElementAge)) {
         const auto value = slew::input::numberIn(
-            parser.value(maxAge), {slew::sky::kLeastElementAgeLimitDays, slew::sky::kMostElementAgeLimitDays, " days"}, &why);
+            parser.value(opt::maxElementAge), {slew::sky::kLeastElementAgeLimitDays, slew::sky::kMostElementAgeLimitDays, " days"}, &why);
         if (!value) {
-            *error = QStringLiteral("%1: %2 (days from the elements' epoch)").arg(label(maxAge), why);
+            *error = QStringLiteral("%1: %2 (days from the elements' epoch)").arg(label(opt::maxElementAge), why);
             return std::nullopt;
         }
         track.maxElementAgeDays = *value;
@@ -110,11 +109,10 @@ std::optional<slew::station::RadioOptions> readRadio(const QCommandLineParser &p
 {
     using namespace slew::station;
     RadioOptions radio;
-    radio.uri = parser.value(QStringLiteral("radio")).trimmed();
+    radio.uri = parser.value(opt::radio).trimmed();
     QString why;
     // Each option's value through its parser; false with the message made.
-    auto read = [&](const char *name, auto parse, auto assign) {
-        const QString option = QString::fromLatin1(name);
+    auto read = [&](const QString &option, auto parse, auto assign) {
         if (!parser.isSet(option))
             return true;
         const auto value = parse(parser.value(option), &why);
@@ -125,39 +123,38 @@ std::optional<slew::station::RadioOptions> readRadio(const QCommandLineParser &p
         assign(*value);
         return true;
     };
-    if (!read("downlink", slew::radio::parseFrequency, [&](double hz) { radio.downlinkHz = hz; })
-        || !read("uplink", slew::radio::parseFrequency, [&](double hz) { radio.uplinkHz = hz; })
-        || !read("downlink-offset", slew::radio::parseFrequencyOffset, [&](double hz) { radio.downlinkOffsetHz = hz; })
-        || !read("uplink-offset", slew::radio::parseFrequencyOffset, [&](double hz) { radio.uplinkOffsetHz = hz; })
-        || !read("downlink-mode", slew::radio::parseModeName, [&](const QString &m) { radio.downlinkMode = m; })
-        || !read("uplink-mode", slew::radio::parseModeName, [&](const QString &m) { radio.uplinkMode = m; })
-        || !read("doppler", parseDopplerOn, [&](slew::radio::DopplerOn on) { radio.correct = on; })
-        || !read("radio-vfos", parseVfoLayout, [&](slew::radio::VfoLayout l) { radio.vfos = l; })
-        || !read("uplink-follows", parseUplinkFollows, [&](slew::radio::UplinkFollowsDial f) { radio.uplinkFollows = f; }))
+    if (!read(opt::downlink, slew::radio::parseFrequency, [&](double hz) { radio.downlinkHz = hz; })
+        || !read(opt::uplink, slew::radio::parseFrequency, [&](double hz) { radio.uplinkHz = hz; })
+        || !read(opt::downlinkOffset, slew::radio::parseFrequencyOffset, [&](double hz) { radio.downlinkOffsetHz = hz; })
+        || !read(opt::uplinkOffset, slew::radio::parseFrequencyOffset, [&](double hz) { radio.uplinkOffsetHz = hz; })
+        || !read(opt::downlinkMode, slew::radio::parseModeName, [&](const QString &m) { radio.downlinkMode = m; })
+        || !read(opt::uplinkMode, slew::radio::parseModeName, [&](const QString &m) { radio.uplinkMode = m; })
+        || !read(opt::doppler, parseDopplerOn, [&](slew::radio::DopplerOn on) { radio.correct = on; })
+        || !read(opt::radioVfos, parseVfoLayout, [&](slew::radio::VfoLayout l) { radio.vfos = l; })
+        || !read(opt::uplinkFollows, parseUplinkFollows, [&](slew::radio::UplinkFollowsDial f) { radio.uplinkFollows = f; }))
         return std::nullopt;
-    if (parser.isSet(QStringLiteral("transponder-invert"))) {
+    if (parser.isSet(opt::transponderInvert)) {
         if (radio.uplinkFollows && *radio.uplinkFollows != slew::radio::UplinkFollowsDial::OppositeWay) {
             *error = QStringLiteral("%1 and --uplink-follows say different things")
-                         .arg(label(QStringLiteral("transponder-invert")));
+                         .arg(label(opt::transponderInvert));
             return std::nullopt;
         }
         radio.uplinkFollows = slew::radio::UplinkFollowsDial::OppositeWay;
     }
-    radio.restoreAfterPass = parser.isSet(QStringLiteral("radio-restore"));
-    radio.transponderFiles = parser.values(QStringLiteral("transponders"));
-    radio.transponderName = parser.value(QStringLiteral("transponder"));
-    const QString transponders = QStringLiteral("transponders");
+    radio.restoreAfterPass = parser.isSet(opt::radioRestore);
+    radio.transponderFiles = parser.values(opt::transponders);
+    radio.transponderName = parser.value(opt::transponder);
     const bool byHand = radio.downlinkHz || radio.uplinkHz;
     if (byHand && !radio.transponderFiles.isEmpty()) {
-        *error = QStringLiteral("%1 and --downlink/--uplink: give the frequencies one way").arg(label(transponders));
+        *error = QStringLiteral("%1 and --downlink/--uplink: give the frequencies one way").arg(label(opt::transponders));
         return std::nullopt;
     }
     if (radio.uplinkHz && !radio.downlinkHz) {
-        *error = QStringLiteral("%1 needs --downlink too").arg(label(QStringLiteral("uplink")));
+        *error = QStringLiteral("%1 needs --downlink too").arg(label(opt::uplink));
         return std::nullopt;
     }
-    if (parser.isSet(QStringLiteral("transponder")) && radio.transponderFiles.isEmpty()) {
-        *error = QStringLiteral("%1 goes with --transponders").arg(label(QStringLiteral("transponder")));
+    if (parser.isSet(opt::transponder) && radio.transponderFiles.isEmpty()) {
+        *error = QStringLiteral("%1 goes with --transponders").arg(label(opt::transponder));
         return std::nullopt;
     }
     return radio;
@@ -169,40 +166,38 @@ std::optional<slew::station::RadioOptions> readRadio(const QCommandLineParser &p
 std::optional<slew::station::RemoteOptions> readRemote(const QCommandLineParser &parser, const OptionLabel &label,
                                                        QString *error)
 {
-    const QString mqtt = QStringLiteral("mqtt"), name = QStringLiteral("station-name"),
-                  passwordFile = QStringLiteral("mqtt-password-file"), tle = QStringLiteral("tle");
     slew::station::RemoteOptions remote;
     QString why;
-    const auto broker = slew::remote::parseBrokerAddress(parser.value(mqtt), &why);
+    const auto broker = slew::remote::parseBrokerAddress(parser.value(opt::mqtt), &why);
     if (!broker) {
-        *error = QStringLiteral("%1: %2").arg(label(mqtt), why);
+        *error = QStringLiteral("%1: %2").arg(label(opt::mqtt), why);
         return std::nullopt;
     }
     if (!broker->stationName.isEmpty()) {
         *error = QStringLiteral("%1: the station's name goes in --station-name, not in the broker's address")
-                     .arg(label(mqtt));
+                     .arg(label(opt::mqtt));
         return std::nullopt;
     }
     remote.broker = *broker;
-    if (!parser.isSet(name)) {
-        *error = QStringLiteral("%1 needs --station-name NAME: the station's topic level on the broker").arg(label(mqtt));
+    if (!parser.isSet(opt::stationName)) {
+        *error = QStringLiteral("%1 needs --station-name NAME: the station's topic level on the broker").arg(label(opt::mqtt));
         return std::nullopt;
     }
-    remote.stationName = parser.value(name).trimmed();
+    remote.stationName = parser.value(opt::stationName).trimmed();
     if (const QString bad = slew::remote::checkStationName(remote.stationName); !bad.isEmpty()) {
-        *error = QStringLiteral("%1: %2").arg(label(name), bad);
+        *error = QStringLiteral("%1: %2").arg(label(opt::stationName), bad);
         return std::nullopt;
     }
-    const auto password = slew::remote::brokerPassword(parser.value(passwordFile), &why);
+    const auto password = slew::remote::brokerPassword(parser.value(opt::mqttPasswordFile), &why);
     if (!password) {
-        *error = QStringLiteral("%1: %2").arg(label(passwordFile), why);
+        *error = QStringLiteral("%1: %2").arg(label(opt::mqttPasswordFile), why);
         return std::nullopt;
     }
     remote.password = *password;
     // The satellites a remote `track` may name: --tle's, else the cached
     // copies of the window's sources (none is no error: a remote may still
     // ask for the sun, the moon or a fixed point).
-    if (parser.isSet(tle)) {
+    if (parser.isSet(opt::tle)) {
         const auto sets = slew::cli::readElementSetOption(parser, label, error);
         if (!sets)
             return std::nullopt;
@@ -214,10 +209,13 @@ std::optional<slew::station::RemoteOptions> readRemote(const QCommandLineParser 
 }
 
 // The radio's options, each of which goes with --radio.
-const char *const kRadioOptions[] = {"downlink",        "uplink",         "downlink-mode", "uplink-mode",
-                                     "doppler",         "uplink-follows", "downlink-offset", "uplink-offset",
-                                     "transponders",    "transponder",    "transponder-invert", "radio-restore",
-                                     "radio-vfos"};
+QStringList radioOptions()
+{
+    return {opt::downlink,      opt::uplink,        opt::downlinkMode,      opt::uplinkMode,
+            opt::doppler,       opt::uplinkFollows, opt::downlinkOffset,    opt::uplinkOffset,
+            opt::transponders,  opt::transponder,   opt::transponderInvert, opt::radioRestore,
+            opt::radioVfos};
+}
 
 } // namespace
 
@@ -232,11 +230,7 @@ std::optional<int> parseMaxClients(const QString &text)
 
 bool wantsHeadless(int argc, char *argv[])
 {
-    for (int i = 1; i < argc; ++i) {
-        if (std::strcmp(argv[i], "--headless") == 0)
-            return true;
-    }
-    return false;
+    return slew::cli::argvHasSwitch(argc, argv, opt::headless);
 }
 
 int runHeadless(int argc, char *argv[])
@@ -257,67 +251,64 @@ int runHeadless(int argc, char *argv[])
     parser.process(configured->arguments);
     checkSettingsFile(); // saved calibrations are read from them
     checkSatelliteNames();
-    const QString connect = QStringLiteral("connect"), dialect = QStringLiteral("dialect"),
-                  profile = QStringLiteral("profile"), listen = QStringLiteral("rotctld-listen"),
-                  allow = QStringLiteral("rotctld-allow"), maxClients = QStringLiteral("rotctld-max-clients");
 
     slew::station::ServiceConfig config;
     if (!slew::cli::readProfileOptions(parser, label, &config.profile, &error))
         return fail(error);
-    if (parser.isSet(connect))
-        config.profile.uri = parser.value(connect);
-    if (parser.isSet(dialect)) {
-        const auto d = slew::protocol::dialectFromName(parser.value(dialect));
+    if (parser.isSet(opt::connect))
+        config.profile.uri = parser.value(opt::connect);
+    if (parser.isSet(opt::dialect)) {
+        const auto d = slew::protocol::dialectFromName(parser.value(opt::dialect));
         if (!d)
-            return fail(QStringLiteral("%1: unknown dialect '%2'").arg(label(dialect), shown(parser.value(dialect))));
+            return fail(QStringLiteral("%1: unknown dialect '%2'").arg(label(opt::dialect), shown(parser.value(opt::dialect))));
         config.profile.dialect = *d;
     }
     // Where neither names one, the link may (`dialect=`, a simulator's own),
     // as the window's connection bar takes it; and its `firmware=`.
-    config.profile = slew::session::commandLineConnectionProfile(config.profile, parser.isSet(dialect) || parser.isSet(profile));
-    if (parser.isSet(listen)) {
-        if (!slew::transport::parseHostPort(parser.value(listen), &config.rotctldAddress, &config.rotctldPort))
+    config.profile = slew::session::commandLineConnectionProfile(config.profile, parser.isSet(opt::dialect) || parser.isSet(opt::profile));
+    if (parser.isSet(opt::rotctldListen)) {
+        if (!slew::transport::parseHostPort(parser.value(opt::rotctldListen), &config.rotctldAddress, &config.rotctldPort))
             return fail(QStringLiteral("%1 %2: expected ADDRESS:PORT, with a port from 0 to 65535")
-                            .arg(label(listen), shown(parser.value(listen))));
+                            .arg(label(opt::rotctldListen), shown(parser.value(opt::rotctldListen))));
         config.rotctldEnabled = true;
     }
-    if (parser.isSet(allow)) {
-        for (const QString &a : parser.value(allow).split(u',', Qt::SkipEmptyParts)) {
+    if (parser.isSet(opt::rotctldAllow)) {
+        for (const QString &a : parser.value(opt::rotctldAllow).split(u',', Qt::SkipEmptyParts)) {
             const QHostAddress address(a.trimmed());
             if (address.isNull())
-                return fail(QStringLiteral("%1: '%2' is not an address").arg(label(allow), shown(a)));
+                return fail(QStringLiteral("%1: '%2' is not an address").arg(label(opt::rotctldAllow), shown(a)));
             config.allowedClients.append(address);
         }
     }
 
-    if (parser.isSet(maxClients)) {
-        const auto n = parseMaxClients(parser.value(maxClients));
+    if (parser.isSet(opt::rotctldMaxClients)) {
+        const auto n = parseMaxClients(parser.value(opt::rotctldMaxClients));
         if (!n)
             return fail(QStringLiteral("%1 %2: expected a number from 1 to 100000")
-                            .arg(label(maxClients), shown(parser.value(maxClients))));
+                            .arg(label(opt::rotctldMaxClients), shown(parser.value(opt::rotctldMaxClients))));
         config.rotctldMaxClients = *n;
     }
 
-    if (parser.isSet(QStringLiteral("rotors"))) {
-        const QString list = parser.value(QStringLiteral("rotors"));
+    if (parser.isSet(opt::rotors)) {
+        const QString list = parser.value(opt::rotors);
         const auto rotors = slew::station::parseRotorList(list, &error);
         if (!rotors)
-            return fail(QStringLiteral("%1 %2: %3").arg(label(QStringLiteral("rotors")), shown(list), error));
+            return fail(QStringLiteral("%1 %2: %3").arg(label(opt::rotors), shown(list), error));
         config.rotors = *rotors;
     }
 
-    if (parser.isSet(QStringLiteral("qth"))) {
+    if (parser.isSet(opt::qth)) {
         slew::sky::Site where;
-        if (!slew::sky::parseSite(parser.value(QStringLiteral("qth")), &where, &error))
-            return fail(QStringLiteral("%1: %2").arg(label(QStringLiteral("qth")), error));
+        if (!slew::sky::parseSite(parser.value(opt::qth), &where, &error))
+            return fail(QStringLiteral("%1: %2").arg(label(opt::qth), error));
         if (!slew::cli::readHorizonOption(parser, label, &where.horizon, &error))
             return fail(error);
         config.station = where;
-    } else if (parser.isSet(QStringLiteral("horizon"))) {
-        return fail(QStringLiteral("%1 goes with --qth: the horizon is the station's").arg(label(QStringLiteral("horizon"))));
+    } else if (parser.isSet(opt::horizon)) {
+        return fail(QStringLiteral("%1 goes with --qth: the horizon is the station's").arg(label(opt::horizon)));
     }
 
-    if (parser.isSet(QStringLiteral("track"))) {
+    if (parser.isSet(opt::track)) {
         auto track = readTrack(parser, label, &error);
         if (!track)
             return fail(error);
@@ -325,31 +316,30 @@ int runHeadless(int argc, char *argv[])
             return fail(QStringLiteral("--track needs --qth: where the antenna stands"));
         config.track = *track;
     } else {
-        for (const char *option : {"tle", "min-el", "guard", "max-element-age", "clock-start", "clock-rate"}) {
+        for (const QString &option : {opt::tle, opt::minEl, opt::guard, opt::maxElementAge, opt::clockStart, opt::clockRate}) {
             // With --mqtt, --tle names the satellites a remote `track` may ask for.
-            if (parser.isSet(QString::fromLatin1(option)) && !(option == std::string_view("tle") && parser.isSet(QStringLiteral("mqtt"))))
+            if (parser.isSet(option) && !(option == opt::tle && parser.isSet(opt::mqtt)))
                 return fail(QStringLiteral("%1 goes with --track%2")
-                                .arg(label(QString::fromLatin1(option)),
-                                     option == std::string_view("tle") ? QStringLiteral(" or --mqtt") : QString()));
+                                .arg(label(option), option == opt::tle ? QStringLiteral(" or --mqtt") : QString()));
         }
     }
 
-    if (parser.isSet(QStringLiteral("radio"))) {
+    if (parser.isSet(opt::radio)) {
         if (!config.track || config.track->target().kind != slew::tracking::TrackTarget::Kind::Satellite)
             return fail(QStringLiteral("%1 goes with --track of a satellite: Doppler is a satellite's")
-                            .arg(label(QStringLiteral("radio"))));
+                            .arg(label(opt::radio)));
         if (config.track->targets.size() > 1)
             return fail(QStringLiteral("%1 goes with one --track: the radio's frequencies are one satellite's (a "
                                        "schedule of several tunes no radio yet)")
-                            .arg(label(QStringLiteral("radio"))));
+                            .arg(label(opt::radio)));
         auto radio = readRadio(parser, label, &error);
         if (!radio)
             return fail(error);
         config.radio = *radio;
     } else {
-        for (const char *option : kRadioOptions) {
-            if (parser.isSet(QString::fromLatin1(option)))
-                return fail(QStringLiteral("%1 goes with --radio").arg(label(QString::fromLatin1(option))));
+        for (const QString &option : radioOptions()) {
+            if (parser.isSet(option))
+                return fail(QStringLiteral("%1 goes with --radio").arg(label(option)));
         }
     }
 
@@ -358,15 +348,15 @@ int runHeadless(int argc, char *argv[])
         return fail(error);
     config.passRecords = records->path;
     config.passKeepDays = records->keepDays;
-    if (parser.isSet(QStringLiteral("mqtt"))) {
+    if (parser.isSet(opt::mqtt)) {
         auto remote = readRemote(parser, label, &error);
         if (!remote)
             return fail(error);
         config.remote = *remote;
     } else {
-        for (const char *option : {"station-name", "mqtt-password-file"}) {
-            if (parser.isSet(QString::fromLatin1(option)))
-                return fail(QStringLiteral("%1 goes with --mqtt").arg(label(QString::fromLatin1(option))));
+        for (const QString &option : {opt::stationName, opt::mqttPasswordFile}) {
+            if (parser.isSet(option))
+                return fail(QStringLiteral("%1 goes with --mqtt").arg(label(option)));
         }
     }
 

@@ -3,6 +3,8 @@
 // else lives in slewui and slewcore. The options are described in cli/.
 
 #include "slew_identity.h"
+#include "cli/argvoptions.h"
+#include "cli/optionnames.h"
 #include "cli/sharedoptions.h"
 #include "cli/slewcommandline.h"
 #include "mainwindow.h"
@@ -36,6 +38,8 @@
 #include <cstdio>
 #include <cstring>
 
+namespace opt = slew::cli::opt;
+
 namespace {
 
 struct Arguments {
@@ -61,55 +65,51 @@ QString parse(QCommandLineParser &parser, const QStringList &argv, Arguments &ou
     slew::cli::describeTo(parser, slew::cli::slewWindowMode());
     parser.process(argv);
 
-    const QString connect = QStringLiteral("connect"), dialect = QStringLiteral("dialect"),
-                  gotoOption = QStringLiteral("goto"), rotctld = QStringLiteral("rotctld-listen"),
-                  screenshot = QStringLiteral("screenshot"), settle = QStringLiteral("settle-ms"),
-                  maxClients = QStringLiteral("rotctld-max-clients");
-    out.connectUri = parser.value(connect);
-    if (parser.isSet(dialect)) {
-        out.dialect = slew::protocol::dialectFromName(parser.value(dialect));
+    out.connectUri = parser.value(opt::connect);
+    if (parser.isSet(opt::dialect)) {
+        out.dialect = slew::protocol::dialectFromName(parser.value(opt::dialect));
         if (!out.dialect)
-            return QStringLiteral("unknown dialect '%1'").arg(parser.value(dialect));
+            return QStringLiteral("unknown dialect '%1'").arg(parser.value(opt::dialect));
     }
-    if (parser.isSet(gotoOption)) {
+    if (parser.isSet(opt::gotoAzEl)) {
         // Finite numbers only; the limits gate checks the range when the
         // move is made, against the connected rotator's travel.
-        const QStringList parts = parser.value(gotoOption).split(QLatin1Char(','));
+        const QStringList parts = parser.value(opt::gotoAzEl).split(QLatin1Char(','));
         const auto az = parts.size() == 2 ? slew::input::finiteNumber(parts[0]) : std::nullopt;
         const auto el = parts.size() == 2 ? slew::input::finiteNumber(parts[1]) : std::nullopt;
         if (!az || !el)
             return QStringLiteral("--goto wants az,el as two numbers (e.g. 210,35), not '%1'")
-                .arg(slew::input::loggableText(parser.value(gotoOption), 60));
+                .arg(slew::input::loggableText(parser.value(opt::gotoAzEl), 60));
         out.gotoAzEl = std::pair{*az, *el};
     }
-    if (parser.isSet(rotctld)) {
+    if (parser.isSet(opt::rotctldListen)) {
         QHostAddress address;
         quint16 port = 0;
-        if (!slew::transport::parseHostPort(parser.value(rotctld), &address, &port))
-            return QStringLiteral("--rotctld-listen %1: expected ADDRESS:PORT").arg(parser.value(rotctld));
+        if (!slew::transport::parseHostPort(parser.value(opt::rotctldListen), &address, &port))
+            return QStringLiteral("--rotctld-listen %1: expected ADDRESS:PORT").arg(parser.value(opt::rotctldListen));
         out.rotctldListen = std::pair{address, port};
     }
-    if (parser.isSet(maxClients)) {
-        out.rotctldMaxClients = parseMaxClients(parser.value(maxClients));
+    if (parser.isSet(opt::rotctldMaxClients)) {
+        out.rotctldMaxClients = parseMaxClients(parser.value(opt::rotctldMaxClients));
         if (!out.rotctldMaxClients)
             return QStringLiteral("--rotctld-max-clients %1: expected a number from 1 to 100000")
-                .arg(parser.value(maxClients));
+                .arg(parser.value(opt::rotctldMaxClients));
     }
-    if (parser.isSet(QStringLiteral("qth"))) {
+    if (parser.isSet(opt::qth)) {
         slew::sky::Site station;
         QString error;
-        if (!slew::sky::parseSite(parser.value(QStringLiteral("qth")), &station, &error))
+        if (!slew::sky::parseSite(parser.value(opt::qth), &station, &error))
             return QStringLiteral("--qth: %1").arg(error);
-        out.station = parser.value(QStringLiteral("qth")).trimmed();
+        out.station = parser.value(opt::qth).trimmed();
     }
     // As the station service reads them, in the same words.
     QString error;
-    if (parser.isSet(QStringLiteral("profile")) || parser.isSet(QStringLiteral("limits"))) {
+    if (parser.isSet(opt::profile) || parser.isSet(opt::limits)) {
         slew::model::RotatorProfile profile;
         if (!slew::cli::readProfileOptions(parser, slew::cli::commandLineLabel, &profile, &error))
             return error;
         out.profile = profile;
-        out.profileFile = parser.isSet(QStringLiteral("profile"));
+        out.profileFile = parser.isSet(opt::profile);
     }
     const auto clock = slew::cli::readStationClockOptions(parser, slew::cli::commandLineLabel, &error);
     if (!clock)
@@ -119,10 +119,10 @@ QString parse(QCommandLineParser &parser, const QStringList &argv, Arguments &ou
     if (!records)
         return error;
     out.passRecords = *records;
-    out.screenshot = parser.value(screenshot);
-    if (parser.isSet(settle)) {
+    out.screenshot = parser.value(opt::screenshot);
+    if (parser.isSet(opt::settleMs)) {
         bool ok = false;
-        out.settleMs = parser.value(settle).toInt(&ok);
+        out.settleMs = parser.value(opt::settleMs).toInt(&ok);
         if (!ok || out.settleMs < 0)
             return QStringLiteral("--settle-ms wants a number of milliseconds");
     }
@@ -161,13 +161,13 @@ int main(int argc, char *argv[])
         return runRemote(argc, argv);
     // A screenshot, --help and --version need no display: choose the
     // offscreen platform before the application object picks one.
-    for (int i = 1; i < argc; ++i) {
-        const bool noDisplay = std::strncmp(argv[i], "--screenshot", 12) == 0 || std::strcmp(argv[i], "--help") == 0
-                               || std::strcmp(argv[i], "-h") == 0 || std::strcmp(argv[i], "--version") == 0
-                               || std::strcmp(argv[i], "-v") == 0;
-        if (noDisplay && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
-            qputenv("QT_QPA_PLATFORM", "offscreen");
-    }
+    bool noDisplay = slew::cli::argvHasOption(argc, argv, opt::screenshot)
+                     || slew::cli::argvHasSwitch(argc, argv, opt::help)
+                     || slew::cli::argvHasSwitch(argc, argv, opt::version);
+    for (int i = 1; i < argc; ++i) // QCommandLineParser's short names for them
+        noDisplay = noDisplay || std::strcmp(argv[i], "-h") == 0 || std::strcmp(argv[i], "-v") == 0;
+    if (noDisplay && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);
     setUpSlewApplication();
     slew::ui::applyOperatorTheme(app);

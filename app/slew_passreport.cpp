@@ -5,6 +5,8 @@
 
 #include "slew_passreport.h"
 
+#include "cli/argvoptions.h"
+#include "cli/optionnames.h"
 #include "cli/slewcommandline.h"
 #include "slew_identity.h"
 
@@ -19,7 +21,8 @@
 
 #include <climits>
 #include <cstdio>
-#include <cstring>
+
+namespace opt = slew::cli::opt;
 
 namespace {
 
@@ -33,11 +36,7 @@ int fail(int status, const QString &message)
 
 bool wantsPassReport(int argc, char **argv)
 {
-    for (int i = 1; i < argc; ++i) {
-        if (std::strcmp(argv[i], "--pass-report") == 0 || std::strncmp(argv[i], "--pass-report=", 14) == 0)
-            return true;
-    }
-    return false;
+    return slew::cli::argvHasOption(argc, argv, opt::passReport);
 }
 
 int runPassReport(int argc, char **argv)
@@ -51,17 +50,16 @@ int runPassReport(int argc, char **argv)
     slew::cli::describeTo(parser, slew::cli::slewProgram(), slew::cli::slewPassReportMode());
     parser.process(app.arguments());
 
-    const QString idOption = QStringLiteral("pass-report"), outOption = QStringLiteral("out");
     QString why;
-    const auto id = slew::input::wholeNumberIn(parser.value(idOption), 1, INT_MAX, &why);
+    const auto id = slew::input::wholeNumberIn(parser.value(opt::passReport), 1, INT_MAX, &why);
     if (!id)
         return fail(2, QStringLiteral("--pass-report: %1 (a pass's number, as the History tab lists it)").arg(why));
-    const QString out = parser.value(outOption).trimmed();
+    const QString out = parser.value(opt::out).trimmed();
     if (out.isEmpty())
         return fail(2, QStringLiteral("--pass-report needs --out FILE.png"));
     QString error;
-    const QString named = parser.value(QStringLiteral("pass-db")).trimmed();
-    if (parser.isSet(QStringLiteral("pass-db")) && named.isEmpty())
+    const QString named = parser.value(opt::passDb).trimmed();
+    if (parser.isSet(opt::passDb) && named.isEmpty())
         return fail(2, QStringLiteral("--pass-db: name a file"));
     const QString path = named.isEmpty() ? slew::records::PassRecordStore::defaultPath() : named;
     if (!QFileInfo::exists(path))

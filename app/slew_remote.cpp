@@ -3,6 +3,8 @@
 
 #include "slew_identity.h"
 #include "cli/sharedoptions.h"
+#include "cli/argvoptions.h"
+#include "cli/optionnames.h"
 #include "cli/slewcommandline.h"
 #include "operatortheme.h"
 #include "remote/remoteopener.h"
@@ -16,7 +18,8 @@
 #include <QMainWindow>
 
 #include <cstdio>
-#include <cstring>
+
+namespace opt = slew::cli::opt;
 
 namespace {
 
@@ -30,22 +33,17 @@ int fail(const QString &message)
 
 bool wantsRemote(int argc, char **argv)
 {
-    for (int i = 1; i < argc; ++i) {
-        if (std::strcmp(argv[i], "--remote") == 0 || std::strncmp(argv[i], "--remote=", 9) == 0)
-            return true;
-    }
-    return false;
+    return slew::cli::argvHasOption(argc, argv, opt::remote);
 }
 
 int runRemote(int argc, char **argv)
 {
     // A screenshot, --help and --version need no display.
-    for (int i = 1; i < argc; ++i) {
-        const bool noDisplay = std::strncmp(argv[i], "--screenshot", 12) == 0 || std::strcmp(argv[i], "--help") == 0
-                               || std::strcmp(argv[i], "--version") == 0;
-        if (noDisplay && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
-            qputenv("QT_QPA_PLATFORM", "offscreen");
-    }
+    const bool noDisplay = slew::cli::argvHasOption(argc, argv, opt::screenshot)
+                           || slew::cli::argvHasSwitch(argc, argv, opt::help)
+                           || slew::cli::argvHasSwitch(argc, argv, opt::version);
+    if (noDisplay && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);
     setUpSlewApplication();
     slew::ui::applyOperatorTheme(app);
@@ -54,16 +52,16 @@ int runRemote(int argc, char **argv)
     parser.process(app.arguments());
 
     QString error;
-    const auto address = slew::remote::parseBrokerAddress(parser.value(QStringLiteral("remote")), &error);
+    const auto address = slew::remote::parseBrokerAddress(parser.value(opt::remote), &error);
     if (!address)
         return fail(QStringLiteral("--remote: %1").arg(error));
-    const auto password = slew::remote::brokerPassword(parser.value(QStringLiteral("mqtt-password-file")), &error);
+    const auto password = slew::remote::brokerPassword(parser.value(opt::mqttPasswordFile), &error);
     if (!password)
         return fail(QStringLiteral("--mqtt-password-file: %1").arg(error));
     int settleMs = 3000;
-    if (parser.isSet(QStringLiteral("settle-ms"))) {
+    if (parser.isSet(opt::settleMs)) {
         bool ok = false;
-        settleMs = parser.value(QStringLiteral("settle-ms")).toInt(&ok);
+        settleMs = parser.value(opt::settleMs).toInt(&ok);
         if (!ok || settleMs < 0 || settleMs > 3600000)
             return fail(QStringLiteral("--settle-ms wants a number of milliseconds up to an hour"));
     }
@@ -71,7 +69,7 @@ int runRemote(int argc, char **argv)
     QMainWindow *window = slew::ui::openRemoteWindow(*address, *password, &error);
     if (!window)
         return fail(QStringLiteral("--remote: %1").arg(error));
-    if (parser.isSet(QStringLiteral("screenshot")))
-        slew::ui::scheduleWindowSnapshot(window, parser.value(QStringLiteral("screenshot")), settleMs);
+    if (parser.isSet(opt::screenshot))
+        slew::ui::scheduleWindowSnapshot(window, parser.value(opt::screenshot), settleMs);
     return app.exec();
 }

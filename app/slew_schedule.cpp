@@ -4,6 +4,8 @@
 
 #include "slew_schedule.h"
 
+#include "cli/argvoptions.h"
+#include "cli/optionnames.h"
 #include "cli/sharedoptions.h"
 #include "cli/slewcommandline.h"
 #include "cli/trackoptions.h"
@@ -24,7 +26,8 @@
 #include <QJsonDocument>
 
 #include <cstdio>
-#include <cstring>
+
+namespace opt = slew::cli::opt;
 
 namespace {
 
@@ -38,10 +41,7 @@ int fail(const QString &message)
 
 bool wantsSchedule(int argc, char **argv)
 {
-    for (int i = 1; i < argc; ++i)
-        if (std::strcmp(argv[i], "--schedule") == 0)
-            return true;
-    return false;
+    return slew::cli::argvHasSwitch(argc, argv, opt::schedule);
 }
 
 int runSchedule(int argc, char **argv)
@@ -56,7 +56,7 @@ int runSchedule(int argc, char **argv)
     const slew::cli::OptionLabel label = slew::cli::commandLineLabel;
     QString error;
 
-    if (!parser.isSet(QStringLiteral("track")))
+    if (!parser.isSet(opt::track))
         return fail(QStringLiteral("--schedule needs --track, once for each target, the first the highest priority"));
     const auto targets = slew::cli::readTrackTargets(parser, label, &error);
     if (!targets)
@@ -71,15 +71,14 @@ int runSchedule(int argc, char **argv)
 
     slew::schedule::ScheduleSettings settings;
     settings.startJulian = slew::sky::julianNow();
-    if (parser.isSet(QStringLiteral("start"))) {
-        const auto start = slew::sky::julianFromIso(parser.value(QStringLiteral("start")));
+    if (parser.isSet(opt::start)) {
+        const auto start = slew::sky::julianFromIso(parser.value(opt::start));
         if (!start)
             return fail(QStringLiteral("--start wants an ISO 8601 time such as 2024-06-20T12:00:00Z, not '%1'")
-                            .arg(slew::cli::shownValue(parser.value(QStringLiteral("start")))));
+                            .arg(slew::cli::shownValue(parser.value(opt::start))));
         settings.startJulian = *start;
     }
-    auto number = [&](const char *name, slew::input::NumberRange range, double *out) {
-        const QString option = QString::fromLatin1(name);
+    auto number = [&](const QString &option, slew::input::NumberRange range, double *out) {
         if (!parser.isSet(option))
             return true;
         QString why;
@@ -91,17 +90,17 @@ int runSchedule(int argc, char **argv)
         *out = *value;
         return true;
     };
-    if (!number("hours", {0.1, 168, " hours"}, &settings.hours)
-        || !number("min-el", {-5, 90, "°"}, &settings.minElevationDeg)
-        || !number("guard", {0, 3600, " s"}, &settings.guardSeconds)
-        || !number("max-element-age",
+    if (!number(opt::hours, {0.1, 168, " hours"}, &settings.hours)
+        || !number(opt::minEl, {-5, 90, "°"}, &settings.minElevationDeg)
+        || !number(opt::guard, {0, 3600, " s"}, &settings.guardSeconds)
+        || !number(opt::maxElementAge,
                    {slew::sky::kLeastElementAgeLimitDays, slew::sky::kMostElementAgeLimitDays, " days"},
                    &settings.maxElementAgeDays))
         return fail(error);
 
     const slew::schedule::Schedule plan =
         slew::schedule::planSchedule(*targets, station, slew::tracking::reachOf(profile.limits, profile.motion), settings);
-    if (parser.isSet(QStringLiteral("json"))) {
+    if (parser.isSet(opt::json)) {
         QJsonObject json = slew::schedule::scheduleToJson(plan);
         json.insert(QStringLiteral("station"), slew::sky::describeSite(station));
         if (station.horizon)

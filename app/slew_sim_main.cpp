@@ -2,6 +2,7 @@
 // slew-sim: the simulated rotator as a server, on TCP and/or a
 // pseudo-terminal. Argument parsing and wiring only; everything else is in
 // core/sim, and the options are described in cli/.
+#include "cli/optionnames.h"
 #include "cli/slewcommandline.h"
 #include "transport/hostport.h"
 #include "sim/ptyendpoint.h"
@@ -20,6 +21,7 @@
 #include <memory>
 
 using namespace slew::sim;
+namespace opt = slew::cli::opt;
 
 namespace {
 
@@ -40,9 +42,6 @@ int main(int argc, char *argv[])
     QCommandLineParser parser;
     slew::cli::describeTo(parser, slew::cli::slewSimMode());
     parser.process(app);
-    const QString listen = QStringLiteral("listen"), pty = QStringLiteral("pty"),
-                  listenDialect = QStringLiteral("listen-dialect"), logReceived = QStringLiteral("log-received"),
-                  maxClients = QStringLiteral("max-clients");
 
     // The simulator's own options, the same as a sim: URI's (the clock is
     // not among slew-sim's: a server always runs on the wall clock).
@@ -60,7 +59,7 @@ int main(int argc, char *argv[])
         fail(error);
 
     ReceivedLog log;
-    if (parser.isSet(logReceived) && !log.open(parser.value(logReceived)))
+    if (parser.isSet(opt::logReceived) && !log.open(parser.value(opt::logReceived)))
         fail(log.error());
 
     Simulator simulator(options);
@@ -81,24 +80,24 @@ int main(int argc, char *argv[])
 
     QString ready = QStringLiteral("slew-sim ready");
     std::unique_ptr<SimulatorTcpServer> tcp;
-    if (parser.isSet(listen) || !parser.isSet(pty)) {
+    if (parser.isSet(opt::listen) || !parser.isSet(opt::pty)) {
         QHostAddress address(QHostAddress::LocalHost);
         quint16 port = 4533;
-        if (parser.isSet(listen) && !slew::transport::parseHostPort(parser.value(listen), &address, &port))
-            fail(QStringLiteral("--listen %1: expected ADDRESS:PORT").arg(parser.value(listen)));
+        if (parser.isSet(opt::listen) && !slew::transport::parseHostPort(parser.value(opt::listen), &address, &port))
+            fail(QStringLiteral("--listen %1: expected ADDRESS:PORT").arg(parser.value(opt::listen)));
         ConnectionSettings tcpSettings = settings;
-        if (parser.isSet(listenDialect)) {
-            const auto d = slew::protocol::dialectFromName(parser.value(listenDialect));
+        if (parser.isSet(opt::listenDialect)) {
+            const auto d = slew::protocol::dialectFromName(parser.value(opt::listenDialect));
             if (!d || *d == slew::protocol::Dialect::Rotctld) // a controller's dialect, not a network peer's
-                fail(QStringLiteral("--listen-dialect %1: unknown dialect").arg(parser.value(listenDialect)));
+                fail(QStringLiteral("--listen-dialect %1: unknown dialect").arg(parser.value(opt::listenDialect)));
             tcpSettings.dialect = *d;
         }
         tcp = std::make_unique<SimulatorTcpServer>(simulator, tcpSettings);
-        if (parser.isSet(maxClients)) {
+        if (parser.isSet(opt::maxClients)) {
             bool ok = false;
-            const int n = parser.value(maxClients).toInt(&ok);
+            const int n = parser.value(opt::maxClients).toInt(&ok);
             if (!ok || n < 1 || n > 100000)
-                fail(QStringLiteral("--max-clients %1: expected a number from 1 to 100000").arg(parser.value(maxClients)));
+                fail(QStringLiteral("--max-clients %1: expected a number from 1 to 100000").arg(parser.value(opt::maxClients)));
             tcp->setMaxClients(n);
         }
         QObject::connect(tcp.get(), &SimulatorTcpServer::notice, [](const QString &text) {
@@ -109,9 +108,9 @@ int main(int argc, char *argv[])
         ready += QStringLiteral(" tcp %1:%2").arg(tcp->serverAddress().toString()).arg(tcp->serverPort());
     }
     std::unique_ptr<PtyEndpoint> terminal;
-    if (parser.isSet(pty)) {
+    if (parser.isSet(opt::pty)) {
         terminal = std::make_unique<PtyEndpoint>(simulator, settings);
-        if (!terminal->open(parser.value(pty)))
+        if (!terminal->open(parser.value(opt::pty)))
             fail(terminal->errorString());
         ready += QStringLiteral(" pty %1 (%2)").arg(terminal->linkPath(), terminal->terminalPath());
     }

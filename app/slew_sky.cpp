@@ -4,7 +4,10 @@
 
 #include "slew_sky.h"
 
+#include "cli/argvoptions.h"
 #include "cli/elementsetoption.h"
+#include "cli/optionnames.h"
+#include "cli/sharedoptions.h"
 #include "cli/slewcommandline.h"
 #include "slew_identity.h"
 
@@ -28,10 +31,10 @@
 #include <QTimeZone>
 
 #include <cstdio>
-#include <cstring>
 #include <optional>
 
 using namespace slew::sky;
+namespace opt = slew::cli::opt;
 
 namespace {
 
@@ -44,15 +47,6 @@ int fail(const QString &message)
 void say(const QString &line)
 {
     std::fprintf(stdout, "%s\n", qPrintable(line));
-}
-
-bool hasOption(int argc, char **argv, const char *name)
-{
-    const size_t length = std::strlen(name);
-    for (int i = 1; i < argc; ++i)
-        if (std::strcmp(argv[i], name) == 0 || (std::strncmp(argv[i], name, length) == 0 && argv[i][length] == '='))
-            return true;
-    return false;
 }
 
 QDateTime fromJulian(double julian)
@@ -94,8 +88,8 @@ QString readSkyStation(const QCommandLineParser &parser, bool withHorizon, Site 
     // The station from --qth, else the one the window saved (Sky → Station…).
     QString error;
     bool saved = false;
-    if (parser.isSet(QStringLiteral("qth"))) {
-        if (!parseSite(parser.value(QStringLiteral("qth")), out, &error))
+    if (parser.isSet(opt::qth)) {
+        if (!parseSite(parser.value(opt::qth), out, &error))
             return QStringLiteral("--qth: %1").arg(error);
     } else {
         const QString text = QSettings().value(QLatin1String(kSiteSettingsKey)).toString();
@@ -110,9 +104,9 @@ QString readSkyStation(const QCommandLineParser &parser, bool withHorizon, Site 
         return {};
     // Its horizon: --horizon, else the one the window keeps with the saved
     // station (not with another named by --qth).
-    QString path = parser.value(QStringLiteral("horizon"));
-    QString from = QStringLiteral("--horizon");
-    if (!parser.isSet(QStringLiteral("horizon")) && saved) {
+    QString path = parser.value(opt::horizon);
+    QString from = slew::cli::commandLineLabel(opt::horizon);
+    if (!parser.isSet(opt::horizon) && saved) {
         path = QSettings().value(QLatin1String(kHorizonSettingsKey)).toString();
         from = QStringLiteral("the saved station's horizon mask");
     }
@@ -143,7 +137,7 @@ QString readCommon(const QCommandLineParser &parser, const QString &timeOption, 
         out->julian = *t;
     }
     // The sun and the moon need no element sets: the cache is not read for them.
-    if (!needTle && !parser.isSet(QStringLiteral("tle")))
+    if (!needTle && !parser.isSet(opt::tle))
         return {};
     const auto sets = slew::cli::readElementSetOption(parser, slew::cli::commandLineLabel, &error);
     if (!sets)
@@ -258,19 +252,19 @@ int runPasses(QCoreApplication &app)
     QCommandLineParser parser;
     slew::cli::describeTo(parser, slew::cli::slewPassesMode());
     parser.process(app);
-    const QString target = parser.value(QStringLiteral("passes")).trimmed();
+    const QString target = parser.value(opt::passes).trimmed();
     if (target.isEmpty())
         return fail(QStringLiteral("--passes needs a satellite, \"all\", \"sun\" or \"moon\""));
     const std::optional<SkyBody> body = bodyNamed(target);
 
     Common common;
-    const QString error = readCommon(parser, QStringLiteral("start"), !body, &common, true);
+    const QString error = readCommon(parser, opt::start, !body, &common, true);
     if (!error.isEmpty())
         return fail(error);
     QString why;
     double hours = 24.0;
-    if (parser.isSet(QStringLiteral("hours"))) {
-        const auto value = slew::input::numberIn(parser.value(QStringLiteral("hours")), {0.1, 720, " hours"}, &why);
+    if (parser.isSet(opt::hours)) {
+        const auto value = slew::input::numberIn(parser.value(opt::hours), {0.1, 720, " hours"}, &why);
         if (!value)
             return fail(QStringLiteral("--hours: %1").arg(why));
         hours = *value;
@@ -280,16 +274,16 @@ int runPasses(QCoreApplication &app)
     // is listed when its highest point climbs to --min-el.
     double aosEl = body ? kRiseSetElevationDeg : 0.0;
     double minEl = body ? kRiseSetElevationDeg : 10.0;
-    for (const auto &[option, out] : {std::pair{"aos-el", &aosEl}, std::pair{"min-el", &minEl}}) {
-        if (!parser.isSet(QLatin1String(option)))
+    for (const auto &[option, out] : {std::pair{opt::aosEl, &aosEl}, std::pair{opt::minEl, &minEl}}) {
+        if (!parser.isSet(option))
             continue;
-        const auto value = slew::input::numberIn(parser.value(QLatin1String(option)), {-5, 90, "°"}, &why);
+        const auto value = slew::input::numberIn(parser.value(option), {-5, 90, "°"}, &why);
         if (!value)
-            return fail(QStringLiteral("--%1: %2").arg(QLatin1String(option), why));
+            return fail(QStringLiteral("%1: %2").arg(slew::cli::commandLineLabel(option), why));
         *out = *value;
     }
     const PassWindow window{common.julian, common.julian + hours / 24.0, aosEl, nullptr, minEl};
-    const bool json = parser.isSet(QStringLiteral("json"));
+    const bool json = parser.isSet(opt::json);
 
     if (body) {
         printPasses(predictBodyPasses(*body, common.station, window), json, true);
@@ -334,15 +328,15 @@ int runWhere(QCoreApplication &app)
     QCommandLineParser parser;
     slew::cli::describeTo(parser, slew::cli::slewWhereMode());
     parser.process(app);
-    const QString target = parser.value(QStringLiteral("where")).trimmed();
+    const QString target = parser.value(opt::where).trimmed();
     if (target.isEmpty())
         return fail(QStringLiteral("--where needs a satellite, \"sun\" or \"moon\""));
     const std::optional<SkyBody> body = bodyNamed(target);
     Common common;
-    const QString error = readCommon(parser, QStringLiteral("time"), !body, &common, false);
+    const QString error = readCommon(parser, opt::time, !body, &common, false);
     if (!error.isEmpty())
         return fail(error);
-    const bool refraction = parser.isSet(QStringLiteral("refraction"));
+    const bool refraction = parser.isSet(opt::refraction);
 
     QJsonObject out{{QStringLiteral("time"), isoTime(common.julian)}};
     LookAngles look;
@@ -407,7 +401,7 @@ int runWhere(QCoreApplication &app)
     out.insert(QStringLiteral("range_rate_km_s"), look.rangeRateKmS);
     out.insert(QStringLiteral("refraction"), refraction);
 
-    if (parser.isSet(QStringLiteral("json"))) {
+    if (parser.isSet(opt::json)) {
         std::fputs(QJsonDocument(out).toJson(QJsonDocument::Indented).constData(), stdout);
         return 0;
     }
@@ -432,7 +426,7 @@ int runWhere(QCoreApplication &app)
 
 bool wantsSky(int argc, char **argv)
 {
-    return hasOption(argc, argv, "--passes") || hasOption(argc, argv, "--where");
+    return slew::cli::argvHasOption(argc, argv, opt::passes) || slew::cli::argvHasOption(argc, argv, opt::where);
 }
 
 int runSky(int argc, char **argv)
@@ -441,5 +435,5 @@ int runSky(int argc, char **argv)
     setUpSlewApplication();
     checkSettingsFile(); // the saved station is read from them
     checkSatelliteNames();
-    return hasOption(argc, argv, "--passes") ? runPasses(app) : runWhere(app);
+    return slew::cli::argvHasOption(argc, argv, opt::passes) ? runPasses(app) : runWhere(app);
 }

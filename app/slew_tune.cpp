@@ -5,6 +5,8 @@
 #include "slew_identity.h"
 
 #include "input/finitenumber.h"
+#include "cli/argvoptions.h"
+#include "cli/optionnames.h"
 #include "cli/slewcommandline.h"
 #include "slew_tune.h"
 
@@ -17,7 +19,8 @@
 #include <QCoreApplication>
 
 #include <cstdio>
-#include <cstring>
+
+namespace opt = slew::cli::opt;
 
 namespace {
 
@@ -37,11 +40,7 @@ void say(const QString &line)
 
 bool wantsTune(int argc, char **argv)
 {
-    for (int i = 1; i < argc; ++i) {
-        if (std::strcmp(argv[i], "--tune") == 0 || std::strncmp(argv[i], "--tune=", 7) == 0)
-            return true;
-    }
-    return false;
+    return slew::cli::argvHasOption(argc, argv, opt::tune);
 }
 
 int runTune(int argc, char **argv)
@@ -54,15 +53,12 @@ int runTune(int argc, char **argv)
     QCommandLineParser parser;
     slew::cli::describeTo(parser, slew::cli::slewTuneMode());
     parser.process(app);
-    const QString tune = QStringLiteral("tune"), axis = QStringLiteral("axis"), apply = QStringLiteral("apply"),
-                  dialect = QStringLiteral("dialect"), profile = QStringLiteral("profile"),
-                  step = QStringLiteral("step");
 
-    const QString uri = parser.value(tune).trimmed();
+    const QString uri = parser.value(opt::tune).trimmed();
     if (uri.isEmpty() || uri.startsWith(QLatin1String("--")))
         return fail(QStringLiteral("--tune needs the rotator's URI, e.g. --tune serial:/dev/ttyUSB0?baud=19200"));
     QList<Axis> axes;
-    const QString which = parser.isSet(axis) ? parser.value(axis).toLower() : QStringLiteral("both");
+    const QString which = parser.isSet(opt::axis) ? parser.value(opt::axis).toLower() : QStringLiteral("both");
     if (which == u"az" || which == u"azimuth")
         axes = {Axis::Azimuth};
     else if (which == u"el" || which == u"elevation")
@@ -70,33 +66,33 @@ int runTune(int argc, char **argv)
     else if (which == u"both")
         axes = {Axis::Azimuth, Axis::Elevation};
     else
-        return fail(QStringLiteral("--axis must be az, el or both, not '%1'").arg(parser.value(axis)));
+        return fail(QStringLiteral("--axis must be az, el or both, not '%1'").arg(parser.value(opt::axis)));
     double stepDegrees = slew::tuning::TuningSettings{}.amplitude;
-    if (parser.isSet(step)) {
+    if (parser.isSet(opt::step)) {
         QString why;
-        const auto value = slew::input::numberIn(parser.value(step), {0.5, 30, "°"}, &why);
+        const auto value = slew::input::numberIn(parser.value(opt::step), {0.5, 30, "°"}, &why);
         if (!value)
             return fail(QStringLiteral("--step: %1 (0.5 to 30 degrees)").arg(why));
         stepDegrees = *value;
     }
 
     slew::tuning::TuningRun::Options options;
-    if (parser.isSet(profile)) {
+    if (parser.isSet(opt::profile)) {
         QString error;
-        const auto loaded = slew::model::RotatorProfile::load(parser.value(profile), &error);
+        const auto loaded = slew::model::RotatorProfile::load(parser.value(opt::profile), &error);
         if (!loaded)
             return fail(error);
         options.profile = *loaded;
     }
-    if (parser.isSet(dialect)) {
-        const auto d = slew::protocol::dialectFromName(parser.value(dialect));
+    if (parser.isSet(opt::dialect)) {
+        const auto d = slew::protocol::dialectFromName(parser.value(opt::dialect));
         if (!d)
-            return fail(QStringLiteral("unknown dialect '%1'").arg(parser.value(dialect)));
+            return fail(QStringLiteral("unknown dialect '%1'").arg(parser.value(opt::dialect)));
         options.profile.dialect = *d;
     }
     options.profile.uri = uri;
     options.axes = axes;
-    options.apply = parser.isSet(apply);
+    options.apply = parser.isSet(opt::apply);
     options.stepDegrees = stepDegrees;
 
     slew::tuning::TuningRun run(options);

@@ -3,6 +3,7 @@
 // parsing and wiring only; the commands are carried out by core/console and
 // the options are described in cli/.
 
+#include "cli/optionnames.h"
 #include "cli/slewcommandline.h"
 #include "console/consolecommand.h"
 #include "console/consolerunner.h"
@@ -27,6 +28,8 @@
 using slew::console::ConsoleCommand;
 using slew::console::ConsoleRunner;
 using slew::console::ExitCode;
+
+namespace opt = slew::cli::opt;
 
 namespace {
 
@@ -147,39 +150,39 @@ int main(int argc, char *argv[])
     parser.setOptionsAfterPositionalArgumentsMode(QCommandLineParser::ParseAsPositionalArguments);
     if (!parser.parse(app.arguments()))
         return badArgument(parser.errorText());
-    if (parser.isSet(QStringLiteral("help")))
+    if (parser.isSet(opt::help))
         parser.showHelp(0);
-    if (parser.isSet(QStringLiteral("version")))
+    if (parser.isSet(opt::version))
         parser.showVersion();
 
     const QStringList positional = parser.positionalArguments();
-    if (parser.isSet(QStringLiteral("radio")))
-        return runRadio(app, parser.value(QStringLiteral("radio")), positional, parser.isSet(QStringLiteral("json")));
+    if (parser.isSet(opt::radio))
+        return runRadio(app, parser.value(opt::radio), positional, parser.isSet(opt::json));
     if (positional.isEmpty())
         return badArgument(QStringLiteral("which rotator? e.g. slewctl sim: get"));
     slew::model::RotatorProfile profile;
-    if (parser.isSet(QStringLiteral("profile"))) {
+    if (parser.isSet(opt::profile)) {
         QString error;
-        const auto loaded = slew::model::RotatorProfile::load(parser.value(QStringLiteral("profile")), &error);
+        const auto loaded = slew::model::RotatorProfile::load(parser.value(opt::profile), &error);
         if (!loaded)
             return badArgument(error);
         profile = *loaded;
     }
-    if (parser.isSet(QStringLiteral("dialect"))) {
-        const auto dialect = slew::protocol::dialectFromName(parser.value(QStringLiteral("dialect")));
+    if (parser.isSet(opt::dialect)) {
+        const auto dialect = slew::protocol::dialectFromName(parser.value(opt::dialect));
         if (!dialect)
-            return badArgument(QStringLiteral("unknown dialect '%1'").arg(parser.value(QStringLiteral("dialect"))));
+            return badArgument(QStringLiteral("unknown dialect '%1'").arg(parser.value(opt::dialect)));
         profile.dialect = *dialect;
     }
     profile.uri = positional.first();
     // What the URI names (`dialect=`, `firmware=`, a simulator's own, a
     // rotctld:// peer) where --dialect and --profile do not say otherwise.
     profile = slew::session::commandLineConnectionProfile(
-        profile, parser.isSet(QStringLiteral("dialect")) || parser.isSet(QStringLiteral("profile")));
+        profile, parser.isSet(opt::dialect) || parser.isSet(opt::profile));
     int timeoutSeconds = 600;
-    if (parser.isSet(QStringLiteral("timeout"))) {
+    if (parser.isSet(opt::timeout)) {
         bool ok = false;
-        timeoutSeconds = parser.value(QStringLiteral("timeout")).toInt(&ok);
+        timeoutSeconds = parser.value(opt::timeout).toInt(&ok);
         if (!ok || timeoutSeconds < 1 || timeoutSeconds > 86400)
             return badArgument(QStringLiteral("--timeout wants 1 to 86400 seconds"));
     }
@@ -200,10 +203,10 @@ int main(int argc, char *argv[])
 
     slew::session::RotatorSession session;
     session.setProfile(profile);
-    ConsoleRunner runner(&session, parser.isSet(QStringLiteral("json")));
+    ConsoleRunner runner(&session, parser.isSet(opt::json));
     runner.setArrivalTimeout(timeoutSeconds * 1000);
     QObject::connect(&runner, &ConsoleRunner::output, &app, [](const QString &l) { say(stdout, l); });
-    const bool json = parser.isSet(QStringLiteral("json"));
+    const bool json = parser.isSet(opt::json);
     QObject::connect(&runner, &ConsoleRunner::problem, &app,
                      [json](const QString &l) { say(stderr, json ? l : QStringLiteral("slewctl: ") + l); });
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "elementsetoption.h"
 
+#include "optionnames.h"
+
 #include "sky/elementsetcache.h"
 #include "sky/elementsetformat.h"
 #include "sky/elementsetsources.h"
@@ -51,8 +53,7 @@ ElementSetOption cachedElementSets()
 std::optional<ElementSetOption> readElementSetOption(const QCommandLineParser &parser, const OptionLabel &label,
                                                      QString *error)
 {
-    const QString option = QStringLiteral("tle");
-    if (!parser.isSet(option)) {
+    if (!parser.isSet(opt::tle)) {
         ElementSetOption cached = cachedElementSets();
         if (cached.sets.isEmpty()) {
             *error = QStringLiteral("no element sets: give --tle FILE, or refresh the window's sources with "
@@ -62,10 +63,10 @@ std::optional<ElementSetOption> readElementSetOption(const QCommandLineParser &p
         }
         return cached;
     }
-    const QString path = parser.value(option);
+    const QString path = parser.value(opt::tle);
     const sky::ElementSetFile file = sky::readElementSetFile(path);
     if (!file.error.isEmpty()) {
-        *error = QStringLiteral("%1: %2").arg(label(option), file.error);
+        *error = QStringLiteral("%1: %2").arg(label(opt::tle), file.error);
         return std::nullopt;
     }
     ElementSetOption out;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "sharedoptions.h"
 
+#include "optionnames.h"
+
 #include "station/serviceconfig.h"
 #include "input/finitenumber.h"
 #include "input/logtext.h"
@@ -25,22 +27,21 @@ QString shownValue(const QString &text)
 bool readProfileOptions(const QCommandLineParser &parser, const OptionLabel &label, model::RotatorProfile *profile,
                         QString *error)
 {
-    const QString profileOption = QStringLiteral("profile"), limitsOption = QStringLiteral("limits");
-    if (parser.isSet(profileOption)) {
+    if (parser.isSet(opt::profile)) {
         QString why;
-        auto loaded = model::RotatorProfile::load(parser.value(profileOption), &why);
+        auto loaded = model::RotatorProfile::load(parser.value(opt::profile), &why);
         if (!loaded) {
-            *error = QStringLiteral("%1: %2").arg(label(profileOption), why);
+            *error = QStringLiteral("%1: %2").arg(label(opt::profile), why);
             return false;
         }
         *profile = *loaded;
     }
-    if (parser.isSet(limitsOption)) {
-        const QString text = parser.value(limitsOption);
+    if (parser.isSet(opt::limits)) {
+        const QString text = parser.value(opt::limits);
         QString why;
         const auto limits = station::parseLimits(text, &why);
         if (!limits) {
-            *error = QStringLiteral("%1 %2: %3").arg(label(limitsOption), shownValue(text), why);
+            *error = QStringLiteral("%1 %2: %3").arg(label(opt::limits), shownValue(text), why);
             return false;
         }
         profile->limits = *limits;
@@ -51,22 +52,21 @@ bool readProfileOptions(const QCommandLineParser &parser, const OptionLabel &lab
 std::optional<StationClockOptions> readStationClockOptions(const QCommandLineParser &parser,
                                                            const OptionLabel &label, QString *error)
 {
-    const QString clockStart = QStringLiteral("clock-start"), clockRate = QStringLiteral("clock-rate");
     StationClockOptions clock;
-    if (parser.isSet(clockStart)) {
-        clock.startJulian = sky::julianFromIso(parser.value(clockStart));
+    if (parser.isSet(opt::clockStart)) {
+        clock.startJulian = sky::julianFromIso(parser.value(opt::clockStart));
         if (!clock.startJulian) {
             *error = QStringLiteral("%1 %2: expected an ISO 8601 time, as 2024-06-20T12:00:00Z")
-                         .arg(label(clockStart), shownValue(parser.value(clockStart)));
+                         .arg(label(opt::clockStart), shownValue(parser.value(opt::clockStart)));
             return std::nullopt;
         }
     }
-    if (parser.isSet(clockRate)) {
+    if (parser.isSet(opt::clockRate)) {
         QString why;
-        const auto value = input::numberIn(parser.value(clockRate), {1, tracking::StationClock::kMaxRate, ""}, &why);
+        const auto value = input::numberIn(parser.value(opt::clockRate), {1, tracking::StationClock::kMaxRate, ""}, &why);
         if (!value || !clock.startJulian) {
-            *error = QStringLiteral("%1: %2").arg(label(clockRate), value ? QStringLiteral("needs --clock-start")
-                                                                          : why + QStringLiteral(" (1 to %1)").arg(tracking::StationClock::kMaxRate));
+            *error = QStringLiteral("%1: %2").arg(label(opt::clockRate), value ? QStringLiteral("needs --clock-start")
+                                                                               : why + QStringLiteral(" (1 to %1)").arg(tracking::StationClock::kMaxRate));
             return std::nullopt;
         }
         clock.rate = *value;
@@ -77,21 +77,20 @@ std::optional<StationClockOptions> readStationClockOptions(const QCommandLinePar
 std::optional<PassRecordOptions> readPassRecordOptions(const QCommandLineParser &parser, const OptionLabel &label,
                                                        QString *error)
 {
-    const QString db = QStringLiteral("pass-db"), keep = QStringLiteral("pass-keep-days");
     PassRecordOptions options;
     options.keepDays = records::PassRecordStore::kDefaultKeepDays;
-    if (parser.isSet(db)) {
-        options.path = parser.value(db).trimmed();
+    if (parser.isSet(opt::passDb)) {
+        options.path = parser.value(opt::passDb).trimmed();
         if (options.path.isEmpty()) {
-            *error = QStringLiteral("%1: name a file").arg(label(db));
+            *error = QStringLiteral("%1: name a file").arg(label(opt::passDb));
             return std::nullopt;
         }
     }
-    if (parser.isSet(keep)) {
+    if (parser.isSet(opt::passKeepDays)) {
         QString why;
-        const auto days = input::wholeNumberIn(parser.value(keep), 1, records::PassRecordStore::kMaxKeepDays, &why);
+        const auto days = input::wholeNumberIn(parser.value(opt::passKeepDays), 1, records::PassRecordStore::kMaxKeepDays, &why);
         if (!days) {
-            *error = QStringLiteral("%1: %2 (days, 1 to %3)").arg(label(keep), why).arg(records::PassRecordStore::kMaxKeepDays);
+            *error = QStringLiteral("%1: %2 (days, 1 to %3)").arg(label(opt::passKeepDays), why).arg(records::PassRecordStore::kMaxKeepDays);
             return std::nullopt;
         }
         options.keepDays = *days;

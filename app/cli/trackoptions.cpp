@@ -2,6 +2,7 @@
 #include "trackoptions.h"
 
 #include "elementsetoption.h"
+#include "optionnames.h"
 
 #include "sky/elementset.h"
 
@@ -24,17 +25,16 @@ QString identity(const TrackTarget &t)
 std::optional<QList<TrackTarget>> readTrackTargets(const QCommandLineParser &parser, const OptionLabel &label,
                                                    QString *error)
 {
-    const QString trackOption = QStringLiteral("track");
     std::optional<ElementSetOption> sets; // read at the first satellite, once
     QList<TrackTarget> targets;
-    for (const QString &given : parser.values(trackOption)) {
+    for (const QString &given : parser.values(opt::track)) {
         const QString what = given.trimmed();
         TrackTarget target;
         QString badFixed;
         if (const auto fixed = TrackTarget::parseFixedOrCelestial(what, &badFixed)) {
             target = *fixed;
         } else if (!badFixed.isEmpty()) {
-            *error = QStringLiteral("%1 %2").arg(label(trackOption), badFixed);
+            *error = QStringLiteral("%1 %2").arg(label(opt::track), badFixed);
             return std::nullopt;
         } else if (what.compare(QLatin1String("sun"), Qt::CaseInsensitive) == 0) {
             target.kind = TrackTarget::Kind::Sun;
@@ -45,7 +45,7 @@ std::optional<QList<TrackTarget>> readTrackTargets(const QCommandLineParser &par
                 QString why;
                 sets = readElementSetOption(parser, label, &why);
                 if (!sets) {
-                    *error = QStringLiteral("%1 %2: %3").arg(label(trackOption), shownValue(what), why);
+                    *error = QStringLiteral("%1 %2: %3").arg(label(opt::track), shownValue(what), why);
                     return std::nullopt;
                 }
             }
@@ -54,7 +54,7 @@ std::optional<QList<TrackTarget>> readTrackTargets(const QCommandLineParser &par
             if (!found) {
                 // The sets that could not be read may be the one meant: say
                 // why they were skipped, as --passes does.
-                *error = QStringLiteral("%1: %2 in %3").arg(label(trackOption), why, sets->origin);
+                *error = QStringLiteral("%1: %2 in %3").arg(label(opt::track), why, sets->origin);
                 for (const QString &skipped : sets->skipped.mid(0, 5))
                     *error += QStringLiteral("\n  ") + skipped;
                 if (sets->skipped.size() > 5)
@@ -66,7 +66,7 @@ std::optional<QList<TrackTarget>> readTrackTargets(const QCommandLineParser &par
         for (const TrackTarget &earlier : std::as_const(targets)) {
             if (earlier.kind == target.kind && identity(earlier) == identity(target)) {
                 *error = QStringLiteral("%1 %2: %3 is given twice; a schedule takes each target once")
-                             .arg(label(trackOption), shownValue(what), target.name());
+                             .arg(label(opt::track), shownValue(what), target.name());
                 return std::nullopt;
             }
         }
@@ -78,13 +78,12 @@ std::optional<QList<TrackTarget>> readTrackTargets(const QCommandLineParser &par
 bool readHorizonOption(const QCommandLineParser &parser, const OptionLabel &label,
                        std::shared_ptr<const sky::HorizonMask> *mask, QString *error)
 {
-    const QString horizonOption = QStringLiteral("horizon");
     mask->reset();
-    if (!parser.isSet(horizonOption))
+    if (!parser.isSet(opt::horizon))
         return true;
-    const sky::HorizonFile read = sky::readHorizonFile(parser.value(horizonOption));
+    const sky::HorizonFile read = sky::readHorizonFile(parser.value(opt::horizon));
     if (!read.mask) {
-        *error = QStringLiteral("%1: %2").arg(label(horizonOption), read.error);
+        *error = QStringLiteral("%1: %2").arg(label(opt::horizon), read.error);
         return false;
     }
     *mask = read.mask;
