@@ -9,7 +9,7 @@
 namespace slew::remote {
 
 RemoteStation::RemoteStation(const MqttSettings &settings, const QString &stationName, QObject *parent)
-    : QObject(parent), m_name(stationName), m_client(std::make_unique<MqttClient>(settings))
+    : face::StationFace(parent), m_name(stationName), m_client(std::make_unique<MqttClient>(settings))
 {
     // Ids of our own on a reply topic every window of this station shares.
     m_idPrefix = QStringLiteral("w%1-").arg(QRandomGenerator::global()->generate() & 0xffffff, 6, 16, QLatin1Char('0'));
@@ -23,8 +23,8 @@ RemoteStation::RemoteStation(const MqttSettings &settings, const QString &statio
     connect(m_client.get(), &MqttClient::publishRefused, this, [this](int mid, const QString &reason) {
         const QString id = m_publishes.take(mid);
         const Pending pending = m_pending.take(id);
-        emit commandFailed(pending.command.isEmpty() ? tr("a command") : pending.command,
-                           tr("the broker refused it (%1): this account may only watch").arg(reason));
+        fail(id, pending.command.isEmpty() ? tr("a command") : pending.command,
+             tr("the broker refused it (%1): this account may only watch").arg(reason));
     });
     connect(m_client.get(), &MqttClient::subscriptionRefused, this, [this](const QString &filter, const QString &why) {
         refuse(tr("the broker refused to let this account read %1 (%2)").arg(filter, why));
@@ -122,7 +122,7 @@ void RemoteStation::onMessage(const QString &topic, const QByteArray &payload)
         updateLive();
         return;
     case StationTopic::State: {
-        std::optional<StationState> state = parseStationState(payload, &why);
+        std::optional<face::StationState> state = parseStationState(payload, &why);
         if (!state) {
             refuse(tr("%1 dropped: %2").arg(topic, why));
             return;
@@ -135,7 +135,7 @@ void RemoteStation::onMessage(const QString &topic, const QByteArray &payload)
         return;
     }
     case StationTopic::Telemetry: {
-        const std::optional<TelemetrySample> sample = parseTelemetry(payload, &why);
+        const std::optional<face::TelemetrySample> sample = parseTelemetry(payload, &why);
         if (!sample) {
             refuse(tr("%1 dropped: %2").arg(topic, why));
             return;
@@ -153,10 +153,11 @@ void RemoteStation::onMessage(const QString &topic, const QByteArray &payload)
             return; // another window's
         const Pending pending = m_pending.take(reply->id);
         emit replied(reply->id, pending.command, reply->ok, reply->error);
+        emit answered(reply->id, reply->ok ? face::Outcome::done() : face::Outcome::refused(reply->error));
         return;
     }
     case StationTopic::Plan: {
-        std::optional<StationPlan> plan = parseStationPlan(payload, &why);
+        std::optional<face::StationPlan> plan = parseStationPlan(payload, &why);
         if (!plan) {
             refuse(tr("%1 dropped: %2").arg(topic, why));
             return;
@@ -166,7 +167,7 @@ void RemoteStation::onMessage(const QString &topic, const QByteArray &payload)
         return;
     }
     case StationTopic::Schedule: {
-        std::optional<StationSchedule> schedule = parseStationSchedule(payload, &why);
+        std::optional<face::StationSchedule> schedule = parseStationSchedule(payload, &why);
         if (!schedule) {
             refuse(tr("%1 dropped: %2").arg(topic, why));
             return;
@@ -180,18 +181,16 @@ void RemoteStation::onMessage(const QString &topic, const QByteArray &payload)
     }
 }
 
-QString RemoteStation::send(RemoteCommand command, QString *why)
+face::Outcome RemoteStation::send(RemoteCommand command)
 {
     command.id = m_idPrefix + QString::number(m_nextId++);
     int mid = 0;
     const MqttMessage message{stationTopic(m_name, StationTopic::Command), encodeRemoteCommand(command), 1, false};
     if (!m_client->publish(message, &mid)) {
         const QString reason = tr("not connected to the broker");
-        if (why)
-            *why = reason;
         if (command.kind != RemoteCommand::Kind::Jog)
             emit commandFailed(commandName(command.kind), reason);
-        return {};
+        return face::Outcome::refused(reason);
     }
     m_publishes.insert(mid, command.id);
     // A jog's renewals are answered too, but nobody waits for them.
@@ -200,56 +199,57 @@ QString RemoteStation::send(RemoteCommand command, QString *why)
         pending.sent.start();
         m_pending.insert(command.id, pending);
     }
-    return command.id;
+    return face::Outcome::awaiting(command.id);
 }
 
-QString RemoteStation::gotoPosition(double az, double el, QString *why)
+face::Outcome RemoteStation::gotoPosition(double az, double el)
 {
     RemoteCommand c;
     c.kind = RemoteCommand::Kind::Goto;
     c.azimuth = az;
     c.elevation = el;
-    return send(c, why);
+    return send(c);
 }
 
-QString RemoteStation::stop(QString *why)
+face::Outcome RemoteStation::stop(const QString &)
 {
     m_jogRenew.stop();
     RemoteCommand c;
     c.kind = RemoteCommand::Kind::Stop;
-    return send(c, why);
+    return send(c);
 }
 
-QString RemoteStation::park(QString *why)
+face::Outcome RemoteStation::park()
 {
     RemoteCommand c;
     c.kind = RemoteCommand::Kind::Park;
-    return send(c, why);
+    return send(c);
 }
 
-QString RemoteStation::home(QString *why)
+face::Outcome RemoteStation::home()
 {
     RemoteCommand c;
     c.kind = RemoteCommand::Kind::Home;
-    return send(c, why);
+    return send(c);
 }
 
-QString RemoteStation::track(const QString &target, QString *why)
+face::Outcome RemoteStation::track(const QString &target, double minElevationDeg)
 {
     RemoteCommand c;
     c.kind = RemoteCommand::Kind::Track;
     c.target = target.trimmed().left(kLongestTrackTarget);
-    return send(c, why);
+    c.minElevation = minElevationDeg;
+    return send(c);
 }
 
-QString RemoteStation::untrack(QString *why)
+face::Outcome RemoteStation::untrack()
 {
     RemoteCommand c;
     c.kind = RemoteCommand::Kind::Untrack;
-    return send(c, why);
+    return send(c);
 }
 
-void RemoteStation::startJog(double azSpeed, double elSpeed)
+face::Outcome RemoteStation::startJog(double azSpeed, double elSpeed)
 {
     m_jog = RemoteCommand{};
     m_jog.kind = RemoteCommand::Kind::Jog;
@@ -257,8 +257,10 @@ void RemoteStation::startJog(double azSpeed, double elSpeed)
     m_jog.elSpeed = std::clamp(elSpeed, -kFastestJog, kFastestJog);
     m_jog.leaseMs = kJogLeaseMs;
     m_jogRenew.stop();
-    send(m_jog);
-    m_jogRenew.start();
+    const face::Outcome sent = send(m_jog);
+    if (sent.isAccepted())
+        m_jogRenew.start();
+    return sent;
 }
 
 void RemoteStation::renewJog()
@@ -266,7 +268,7 @@ void RemoteStation::renewJog()
     send(m_jog);
 }
 
-void RemoteStation::endJog()
+void RemoteStation::endJog(const QString &)
 {
     if (!m_jogRenew.isActive())
         return;
@@ -282,8 +284,9 @@ void RemoteStation::expireReplies()
 {
     for (auto it = m_pending.begin(); it != m_pending.end();) {
         if (it->sent.elapsed() > kReplyWaitMs) {
-            emit commandFailed(it->command, tr("no reply from station %1 within %2 s").arg(m_name).arg(kReplyWaitMs / 1000));
+            const QString id = it.key(), command = it->command;
             it = m_pending.erase(it);
+            fail(id, command, tr("no reply from station %1 within %2 s").arg(m_name).arg(kReplyWaitMs / 1000));
         } else {
             ++it;
         }
@@ -292,6 +295,13 @@ void RemoteStation::expireReplies()
     // refusal names one, within a round trip).
     if (m_publishes.size() > 1000)
         m_publishes.clear();
+}
+
+void RemoteStation::fail(const QString &id, const QString &command, const QString &why)
+{
+    emit commandFailed(command, why);
+    if (!id.isEmpty())
+        emit answered(id, face::Outcome::refused(why));
 }
 
 } // namespace slew::remote

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// A station that lives on a broker, as a window sees it: what it last said
-// (its retained state, its telemetry, whether it is online) and how old
-// that is, and the operator's intent sent to it as commands
-// (remotecommand.h), each answered on its reply topic. It carries the
-// surfaces a window's widgets need — position, target, travel, park,
-// alarms, tracking, telemetry — as values.
+// A station that lives on a broker, as a window sees it (the station's
+// face, face/stationface.h, over MQTT): what it last said (its retained
+// state, plan and schedule, its telemetry, whether it is online) and how
+// old that is, and the operator's intent sent to it as commands
+// (remotecommand.h). Each intent is Awaiting once sent, and answered (by
+// the station on its reply topic, or by its silence) as `answered`.
 //
 // A jog is a lease renewed here every kJogRenewMs for kJogLeaseMs while the
 // operator holds the button; if this window, its machine or the network
@@ -15,7 +15,6 @@
 // dropped whole and said (a few a minute at most), and the last good state
 // stays.
 
-#include "model/movegate.h"
 #include "mqttclient.h"
 #include "remotecommand.h"
 #include "stationplan.h"
@@ -23,6 +22,7 @@
 #include "stationstate.h"
 #include "stationtelemetry.h"
 
+#include "face/stationface.h"
 #include "input/logtext.h"
 
 #include <QElapsedTimer>
@@ -34,7 +34,7 @@
 
 namespace slew::remote {
 
-class RemoteStation : public QObject {
+class RemoteStation : public face::StationFace {
     Q_OBJECT
 public:
     static constexpr int kJogRenewMs = 300;
@@ -54,11 +54,13 @@ public:
     QString brokerDisplay() const { return m_client->settings().broker.display(); }
     MqttClient *client() const { return m_client.get(); }
 
-    const std::optional<StationState> &state() const { return m_state; }
-    // The plan of the pass ahead and the schedule, as the station last
-    // published them; none before the first.
-    const std::optional<StationPlan> &plan() const { return m_plan; }
-    const std::optional<StationSchedule> &schedule() const { return m_schedule; }
+    // The face: the state, the plan of the pass ahead and the schedule, as
+    // the station last published them; none before the first.
+    QString title() const override { return m_name; }
+    bool isLocal() const override { return false; }
+    std::optional<face::StationState> state() const override { return m_state; }
+    std::optional<face::StationPlan> plan() const override { return m_plan; }
+    std::optional<face::StationSchedule> schedule() const override { return m_schedule; }
     bool isOnline() const { return m_online; }
     // The station's clock now, in Unix milliseconds: the wall clock, or a
     // rehearsal's time carried on from its last state at its rate. None
@@ -68,40 +70,39 @@ public:
     qint64 stateAgeMs() const { return m_stateAge.isValid() ? m_stateAge.elapsed() : -1; }
     // Connected to the broker, the station online, and a state not older
     // than kStaleAfterMs: what is shown is the station as it is now.
-    bool isLive() const { return m_live; }
+    bool isLive() const override { return m_live; }
     // Why it is not live, in words; empty when it is.
     QString whyNotLive() const;
 
     // What the station's gate would say to a go-to, from the travel it
     // published: for go-to fields checked as the operator types. The
     // station's own gate has the last word.
-    model::MoveCheck previewPointing(double az, double el) const;
+    model::MoveCheck previewPointing(double az, double el) const override;
 
-    // Intent. Each sends a command and returns its id, or empty (with
-    // *why) when it could not be sent (no broker). Replies come as replied().
-    QString send(RemoteCommand command, QString *why = nullptr);
-    QString gotoPosition(double az, double el, QString *why = nullptr);
-    QString stop(QString *why = nullptr);
-    QString park(QString *why = nullptr);
-    QString home(QString *why = nullptr);
-    QString track(const QString &target, QString *why = nullptr);
-    QString untrack(QString *why = nullptr);
+    // Intent. Each sends a command: Awaiting its id, or refused when it
+    // could not be sent (no broker). The answer comes as answered(), and
+    // as replied() with the command's name.
+    face::Outcome send(RemoteCommand command);
+    face::Outcome gotoPosition(double az, double el) override;
+    // The station logs its own cause ("a stop over MQTT").
+    face::Outcome stop(const QString &cause = {}) override;
+    face::Outcome park() override;
+    face::Outcome home() override;
+    face::Outcome track(const QString &target, double minElevationDeg = 0) override;
+    face::Outcome untrack() override;
     // Turns at these speeds (°/s, signed) until endJog(), renewing the lease.
-    void startJog(double azSpeed, double elSpeed);
-    void endJog();
+    face::Outcome startJog(double azSpeed, double elSpeed) override;
+    // The station logs its own cause.
+    void endJog(const QString &cause = {}) override;
     bool isJogging() const { return m_jogRenew.isActive(); }
 
     int statesReceived() const { return m_statesReceived; }
     int messagesRefused() const { return m_refused; }
 
 signals:
-    void stateChanged(const slew::remote::StationState &state);
-    void telemetryReceived(const slew::remote::TelemetrySample &sample);
-    void planChanged(const slew::remote::StationPlan &plan);
-    void scheduleChanged(const slew::remote::StationSchedule &schedule);
     void onlineChanged(bool online);
-    void liveChanged(bool live);
-    // The station's answer to a command this window sent.
+    // The station's answer to a command this window sent, with the
+    // command's name (answered() carries the same answer by id).
     void replied(const QString &id, const QString &command, bool ok, const QString &error);
     // The broker would not pass a command on (the account may only watch),
     // or none came back in time.
@@ -116,12 +117,13 @@ private:
     void updateLive();
     void renewJog();
     void expireReplies();
+    void fail(const QString &id, const QString &command, const QString &why);
 
     QString m_name;
     std::unique_ptr<MqttClient> m_client;
-    std::optional<StationState> m_state;
-    std::optional<StationPlan> m_plan;
-    std::optional<StationSchedule> m_schedule;
+    std::optional<face::StationState> m_state;
+    std::optional<face::StationPlan> m_plan;
+    std::optional<face::StationSchedule> m_schedule;
     bool m_online = false;
     bool m_live = false;
     QElapsedTimer m_stateAge;

@@ -71,7 +71,7 @@ void StationDirectory::onMessage(const QString &topic, const QByteArray &payload
         e->online = payload == "true";
         emit stationChanged(parsed->stationName);
     } else if (parsed->topic == StationTopic::State) {
-        std::optional<StationState> state = parseStationState(payload, &why);
+        std::optional<face::StationState> state = parseStationState(payload, &why);
         if (!state) {
             if (m_refusals.take(QDateTime::currentMSecsSinceEpoch()))
                 emit messageRefused(tr("%1 dropped: %2").arg(topic, why));

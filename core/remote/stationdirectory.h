@@ -26,7 +26,7 @@ public:
 
     struct Entry {
         bool online = false;
-        std::optional<StationState> state;
+        std::optional<face::StationState> state;
         QElapsedTimer sinceState; // invalid before the first
     };
 

@@ -35,7 +35,7 @@ QList<QPointF> thinPoints(const QList<QPointF> &points, int most)
     return out;
 }
 
-QByteArray encodeStationPlan(const StationPlan &p)
+QByteArray encodeStationPlan(const face::StationPlan &p)
 {
     QJsonObject o;
     o.insert(QStringLiteral("unix_ms"), double(p.unixMs));
@@ -64,12 +64,12 @@ QByteArray encodeStationPlan(const StationPlan &p)
     return QJsonDocument(o).toJson(QJsonDocument::Compact);
 }
 
-std::optional<StationPlan> parseStationPlan(const QByteArray &payload, QString *error)
+std::optional<face::StationPlan> parseStationPlan(const QByteArray &payload, QString *error)
 {
     std::optional<JsonFields> f = JsonFields::parse(payload, kLargestPlanMessage, error);
     if (!f)
         return std::nullopt;
-    StationPlan p;
+    face::StationPlan p;
     p.unixMs = f->whole(QStringLiteral("unix_ms"), 0, kLatestMs, true).value_or(0);
     p.target = f->text(QStringLiteral("target"), 100).value_or(QString());
     if (f->has(QStringLiteral("target")) && p.target.isEmpty())

@@ -14,6 +14,8 @@
 // No target: no pass ahead (tracking stopped). The reader checks every
 // field (jsonfields.h) and takes a message whole or not at all. Pure code.
 
+#include "face/stationplan.h"
+
 #include <QByteArray>
 #include <QList>
 #include <QPointF>
@@ -23,29 +25,13 @@
 
 namespace slew::remote {
 
-struct StationPlan {
-    qint64 unixMs = 0;
-    QString target; // empty: no pass ahead
-    int norad = 0;  // 0 for the sun, the moon, a fixed direction
-    std::optional<qint64> aosMs, tcaMs, losMs;
-    std::optional<double> maxElevation;
-    std::optional<double> plannedWorstDeg;
-    bool flipped = false;
-    bool overTheTop = false;
-    int unwinds = 0;
-    double azimuthTurnStart = 0;  // the rotator's azimuth stop
-    double azimuthTurnEnd = 360;  // past this, the overlap
-    QList<QPointF> sky;  // the target's az, el, AOS to LOS
-    QList<QPointF> path; // the plan's mechanical az, el (el past 90°: the flip)
-};
-
 // A pass sampled every second for a quarter of an hour is 900 points: the
 // encoder keeps every n-th (and the last) so each list has at most this.
 inline constexpr int kMostPlanPoints = 400;
 inline constexpr int kLargestPlanMessage = 64 * 1024;
 
-QByteArray encodeStationPlan(const StationPlan &plan);
-std::optional<StationPlan> parseStationPlan(const QByteArray &payload, QString *error);
+QByteArray encodeStationPlan(const face::StationPlan &plan);
+std::optional<face::StationPlan> parseStationPlan(const QByteArray &payload, QString *error);
 
 // Every n-th point of `points` and the last, at most `most` in all.
 QList<QPointF> thinPoints(const QList<QPointF> &points, int most);

@@ -142,8 +142,7 @@ QByteArray encodeStationSchedule(qint64 now, qint64 clockMs, double clockRate, b
             const schedule::ScheduledPass &p = s.passes[i];
             if (p.priority >= kMostScheduleTargets)
                 continue;
-            if (current && p.taken && p.target == current->target
-                && std::abs(p.startJulian - current->startJulian) * 86400.0 < 1.0)
+            if (current && face::isFollowedPass(p, *current))
                 o.insert(QStringLiteral("current"), int(passes.size()));
             passes.append(passObject(p));
         }
@@ -152,12 +151,12 @@ QByteArray encodeStationSchedule(qint64 now, qint64 clockMs, double clockRate, b
     return QJsonDocument(o).toJson(QJsonDocument::Compact);
 }
 
-std::optional<StationSchedule> parseStationSchedule(const QByteArray &payload, QString *error)
+std::optional<face::StationSchedule> parseStationSchedule(const QByteArray &payload, QString *error)
 {
     std::optional<JsonFields> f = JsonFields::parse(payload, kLargestScheduleMessage, error);
     if (!f)
         return std::nullopt;
-    StationSchedule out;
+    face::StationSchedule out;
     out.unixMs = f->whole(QStringLiteral("unix_ms"), 0, kLatestMs, true).value_or(0);
     out.clockMs = f->whole(QStringLiteral("clock_ms"), 0, kLatestMs).value_or(out.unixMs);
     out.clockRate = f->number(QStringLiteral("clock_rate"), {0, 10000, "x"}).value_or(1);

@@ -21,6 +21,8 @@
 // window and no passes yet. The reader checks every field (jsonfields.h) and
 // takes a message whole or not at all. Pure code.
 
+#include "face/stationschedule.h"
+
 #include "schedule/schedule.h"
 
 #include <QByteArray>
@@ -28,16 +30,6 @@
 #include <optional>
 
 namespace slew::remote {
-
-struct StationSchedule {
-    qint64 unixMs = 0;
-    qint64 clockMs = 0;     // the station clock then
-    double clockRate = 1;   // its seconds a real second
-    bool running = false;
-    bool planned = false;        // running, and its first plan made
-    schedule::Schedule schedule; // what a view draws: no sky points or plans
-    std::optional<int> current;  // the index in schedule.passes being followed
-};
 
 // A day of a dozen satellites is a few hundred passes.
 inline constexpr int kMostScheduledPasses = 500;
@@ -47,6 +39,6 @@ inline constexpr int kLargestScheduleMessage = 512 * 1024;
 // `current` is matched to a pass of `schedule` by target and start.
 QByteArray encodeStationSchedule(qint64 unixMs, qint64 clockMs, double clockRate, bool running, const schedule::Schedule &schedule,
                                  const std::optional<schedule::ScheduledPass> &current);
-std::optional<StationSchedule> parseStationSchedule(const QByteArray &payload, QString *error);
+std::optional<face::StationSchedule> parseStationSchedule(const QByteArray &payload, QString *error);
 
 } // namespace slew::remote

@@ -49,7 +49,7 @@ bool isTrackingStateName(const QString &name)
     return name == u"off" || name == u"planning" || name == u"waiting" || name == u"tracking" || name == u"done";
 }
 
-QByteArray encodeStationState(const StationState &s)
+QByteArray encodeStationState(const face::StationState &s)
 {
     QJsonObject o;
     o.insert(QStringLiteral("unix_ms"), double(s.unixMs));
@@ -68,6 +68,12 @@ QByteArray encodeStationState(const StationState &s)
     o.insert(QStringLiteral("el_max"), s.limits.elMax);
     putPoint(o, "park_az", "park_el", s.park);
     o.insert(QStringLiteral("azimuth_only"), s.azimuthOnly);
+    if (!s.dialect.isEmpty())
+        o.insert(QStringLiteral("dialect"), s.dialect);
+    o.insert(QStringLiteral("probed"), s.probed);
+    o.insert(QStringLiteral("jog_speed"), s.jogSpeed);
+    o.insert(QStringLiteral("can_home"), s.canHome);
+    o.insert(QStringLiteral("park_command"), s.parkCommand);
     o.insert(QStringLiteral("tracking"), s.tracking);
     if (!s.trackingTarget.isEmpty())
         o.insert(QStringLiteral("tracking_target"), s.trackingTarget);
@@ -83,7 +89,7 @@ QByteArray encodeStationState(const StationState &s)
         o.insert(QStringLiteral("pass_los_ms"), double(*s.passLosMs));
     if (s.passMaxElevation)
         o.insert(QStringLiteral("pass_max_el"), *s.passMaxElevation);
-    o.insert(QStringLiteral("alarms"), QJsonArray::fromStringList(s.alarms.mid(0, kMostAlarms)));
+    o.insert(QStringLiteral("alarms"), QJsonArray::fromStringList(s.alarms.mid(0, face::kMostAlarms)));
     o.insert(QStringLiteral("severe"), s.severe);
     o.insert(QStringLiteral("operator_hold"), s.operatorHold);
     if (!s.controllerVersion.isEmpty())
@@ -92,13 +98,13 @@ QByteArray encodeStationState(const StationState &s)
     return QJsonDocument(o).toJson(QJsonDocument::Compact);
 }
 
-std::optional<StationState> parseStationState(const QByteArray &payload, QString *error)
+std::optional<face::StationState> parseStationState(const QByteArray &payload, QString *error)
 {
     auto parsed = JsonFields::parse(payload, kLargestStateMessage, error);
     if (!parsed)
         return std::nullopt;
     JsonFields &f = *parsed;
-    StationState s;
+    face::StationState s;
     s.unixMs = f.whole(QStringLiteral("unix_ms"), 0, kLatestMs, true).value_or(0);
     f.text(QStringLiteral("time"), 40); // for people; unix_ms is the one read
     s.link = f.text(QStringLiteral("link"), 20, true).value_or(QString());
@@ -119,6 +125,12 @@ std::optional<StationState> parseStationState(const QByteArray &payload, QString
     }
     s.park = takePoint(f, "park_az", "park_el");
     s.azimuthOnly = f.flag(QStringLiteral("azimuth_only")).value_or(false);
+    // A station older than these fields says none of them: what most can.
+    s.dialect = f.text(QStringLiteral("dialect"), 60).value_or(QString());
+    s.probed = f.flag(QStringLiteral("probed")).value_or(false);
+    s.jogSpeed = f.flag(QStringLiteral("jog_speed")).value_or(true);
+    s.canHome = f.flag(QStringLiteral("can_home")).value_or(true);
+    s.parkCommand = f.flag(QStringLiteral("park_command")).value_or(true);
     s.tracking = f.text(QStringLiteral("tracking"), 20).value_or(QStringLiteral("off"));
     if (f.ok() && !isTrackingStateName(s.tracking))
         f.fail(QStringLiteral("'tracking' is not off, planning, waiting, tracking or done"));
@@ -130,7 +142,7 @@ std::optional<StationState> parseStationState(const QByteArray &payload, QString
     s.passAosMs = f.whole(QStringLiteral("pass_aos_ms"), 0, kLatestMs);
     s.passLosMs = f.whole(QStringLiteral("pass_los_ms"), 0, kLatestMs);
     s.passMaxElevation = f.number(QStringLiteral("pass_max_el"), {-90, 90, "°"});
-    s.alarms = f.texts(QStringLiteral("alarms"), kMostAlarms, 400).value_or(QStringList());
+    s.alarms = f.texts(QStringLiteral("alarms"), face::kMostAlarms, 400).value_or(QStringList());
     s.severe = f.flag(QStringLiteral("severe")).value_or(false);
     s.operatorHold = f.flag(QStringLiteral("operator_hold")).value_or(false);
     s.controllerVersion = f.text(QStringLiteral("controller"), 100).value_or(QString());

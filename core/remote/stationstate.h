@@ -8,6 +8,8 @@
 //    "az":120.0, "el":30.0, "stale":false, "target_az":…, "target_el":…,
 //    "moving":true, "az_min":0, "az_max":450, "el_min":0, "el_max":180,
 //    "park_az":…, "park_el":…, "azimuth_only":false,
+//    "dialect":"Easycomm III", "probed":true, "jog_speed":true,
+//    "can_home":true, "park_command":true,
 //    "tracking":"tracking", "tracking_target":"ISS (ZARYA)", "tracking_norad":25544,
 //    "pass_aos_ms":…, "pass_los_ms":…, "pass_max_el":56.1,
 //    "alarms":["…"], "severe":false, "operator_hold":false,
@@ -15,6 +17,8 @@
 //
 // Unknown values are left out (JSON has no NaN). The reader checks every
 // field (jsonfields.h) and takes a message whole or not at all. Pure code.
+
+#include "face/stationstate.h"
 
 #include "model/rotatorlimits.h"
 
@@ -26,42 +30,11 @@
 
 namespace slew::remote {
 
-struct StationState {
-    qint64 unixMs = 0;
-    // The station's own clock at unixMs, when it is not the wall clock (a
-    // rehearsal), and how fast it runs (0 while paused): the pass times
-    // below are in its time, and a viewer counts down by it.
-    std::optional<qint64> clockMs;
-    double clockRate = 1.0;
-    // disconnected, connecting, connected, reconnecting: the rotator's link.
-    QString link = QStringLiteral("disconnected");
-    QString linkDetail; // why it failed, when it did
-    std::optional<QPointF> position; // az, el in the pointing frame
-    bool stale = true;
-    std::optional<QPointF> target;
-    bool moving = false;
-    model::RotatorLimits limits;
-    std::optional<QPointF> park;
-    bool azimuthOnly = false;
-    // off, planning, waiting, tracking, done.
-    QString tracking = QStringLiteral("off");
-    QString trackingTarget;
-    std::optional<int> trackingNorad; // a satellite's catalogue number, up to nine digits
-    std::optional<qint64> passAosMs, passLosMs;
-    std::optional<double> passMaxElevation;
-    QStringList alarms;
-    bool severe = false;
-    bool operatorHold = false;
-    QString controllerVersion;
-    QString slewVersion;
-};
-
 inline constexpr int kLargestStateMessage = 16 * 1024;
-inline constexpr int kMostAlarms = 32;
 inline constexpr double kMostClockRate = 100.0; // above any rehearsal's (StationClock::kMaxRate)
 
-QByteArray encodeStationState(const StationState &state);
-std::optional<StationState> parseStationState(const QByteArray &payload, QString *error);
+QByteArray encodeStationState(const face::StationState &state);
+std::optional<face::StationState> parseStationState(const QByteArray &payload, QString *error);
 
 // The link states' names, for the JSON and for people.
 bool isLinkStateName(const QString &name);

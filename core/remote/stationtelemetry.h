@@ -12,6 +12,8 @@
 // Speeds in degrees a second, temperature in °C, errors in degrees and
 // hertz; GS and GE as the controller's raw registers. Pure code.
 
+#include "face/telemetrysample.h"
+
 #include <QByteArray>
 #include <QMetaType>
 
@@ -19,19 +21,10 @@
 
 namespace slew::remote {
 
-struct TelemetrySample {
-    qint64 unixMs = 0;
-    std::optional<double> az, el, commandedAz, commandedEl;
-    std::optional<double> azSpeed, elSpeed, azLoad, elLoad, temperature;
-    std::optional<int> gs, ge;
-    std::optional<double> pointingError, dopplerRxError, dopplerTxError;
-};
-
 inline constexpr int kLargestTelemetryMessage = 4096;
 
-QByteArray encodeTelemetry(const TelemetrySample &sample);
-std::optional<TelemetrySample> parseTelemetry(const QByteArray &payload, QString *error);
+QByteArray encodeTelemetry(const face::TelemetrySample &sample);
+std::optional<face::TelemetrySample> parseTelemetry(const QByteArray &payload, QString *error);
 
 } // namespace slew::remote
 
-Q_DECLARE_METATYPE(slew::remote::TelemetrySample)

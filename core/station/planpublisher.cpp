@@ -3,13 +3,12 @@
 
 #include "schedulerunner.h"
 #include "station.h"
+#include "stationplanreader.h"
 
 #include "remote/stationplan.h"
 #include "remote/stationschedule.h"
 #include "remote/stationtopics.h"
-#include "session/rotatorsession.h"
 #include "tracking/passrunner.h"
-#include "tracking/stationclock.h"
 
 #include <QDateTime>
 
@@ -17,44 +16,6 @@
 
 namespace slew::station {
 namespace {
-
-qint64 unixMs(double julian)
-{
-    return qint64(std::llround((julian - 2440587.5) * 86400000.0));
-}
-
-remote::StationPlan planNow(const Station &station, qint64 now)
-{
-    remote::StationPlan out;
-    out.unixMs = now;
-    const tracking::PassRunner *runner = station.passRunner();
-    if (!runner || !runner->isRunning() || !runner->pass())
-        return out;
-    const tracking::Tracker &tracker = runner->tracker();
-    if (tracker.state() != tracking::Tracker::State::Waiting && tracker.state() != tracking::Tracker::State::Tracking)
-        return out;
-    const sky::Pass &pass = *runner->pass();
-    out.target = runner->target().name().left(100);
-    out.norad = pass.catalogueNumber;
-    out.aosMs = unixMs(pass.aos.julian);
-    out.tcaMs = unixMs(pass.tca.julian);
-    out.losMs = unixMs(pass.los.julian);
-    out.maxElevation = pass.maxElevationDeg();
-    const tracking::PassPlan &plan = tracker.plan();
-    if (plan.isValid())
-        out.plannedWorstDeg = plan.predictedWorstDeg;
-    out.flipped = plan.flipped;
-    out.overTheTop = plan.overTheTop;
-    out.unwinds = plan.unwinds;
-    const model::RotatorLimits limits = station.session()->moveGate().limits();
-    out.azimuthTurnStart = limits.azMin;
-    out.azimuthTurnEnd = limits.azMin + 360.0;
-    for (const tracking::SkyPoint &p : tracker.skyPoints())
-        out.sky.append(QPointF(p.azimuthDeg, p.elevationDeg));
-    for (const tracking::PathPoint &p : plan.path)
-        out.path.append(QPointF(p.azimuth, p.elevation));
-    return out;
-}
 
 // The message without a field of it (a number): what says whether anything
 // else changed.
@@ -115,19 +76,15 @@ void PlanPublisher::publishNow()
 
 QByteArray PlanPublisher::planMessage() const
 {
-    return remote::encodeStationPlan(planNow(*m_station, QDateTime::currentMSecsSinceEpoch()));
+    return remote::encodeStationPlan(planNow(*m_station));
 }
 
 QByteArray PlanPublisher::scheduleMessage() const
 {
+    const face::StationSchedule now = scheduleNow(*m_station);
     const ScheduleRunner *runner = m_station->scheduleRunner();
-    static const schedule::Schedule none;
-    const bool running = runner && runner->isRunning();
-    const tracking::StationClock *clock = m_station->clock();
-    return remote::encodeStationSchedule(QDateTime::currentMSecsSinceEpoch(), unixMs(clock->nowJulian()), clock->rate(),
-                                         running,
-                                         running ? runner->schedule() : none,
-                                         running ? runner->current() : std::nullopt);
+    return remote::encodeStationSchedule(now.unixMs, now.clockMs, now.clockRate, now.running, now.schedule,
+                                         now.running ? runner->current() : std::nullopt);
 }
 
 void PlanPublisher::publishChanged(bool always)

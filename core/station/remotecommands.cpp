@@ -3,9 +3,9 @@
 
 #include "remotejog.h"
 #include "station.h"
+#include "targetbyname.h"
 
 #include "session/rotatorsession.h"
-#include "sky/elementsetsources.h"
 #include "tracking/passrunner.h"
 #include "tracking/tracktarget.h"
 
@@ -132,10 +132,7 @@ CommandResult RemoteCommands::obey(const RemoteCommand &c)
     if (c.kind == RemoteCommand::Kind::Untrack) {
         if (!m_refusing.isEmpty())
             return CommandResult{m_refusing};
-        if (!m_station->passRunner()->isRunning())
-            return CommandResult{tr("Slew is not tracking")};
-        m_station->untrack(tr("untracked from the broker"));
-        return {};
+        return CommandResult{m_station->untrack(tr("untracked from the broker")).reason()};
     }
     if (const QString hold = holdOnMoves(); !hold.isEmpty()) {
         if (c.kind == RemoteCommand::Kind::Jog)
@@ -163,34 +160,11 @@ CommandResult RemoteCommands::obey(const RemoteCommand &c)
 
 CommandResult RemoteCommands::track(const RemoteCommand &c)
 {
-    tracking::TrackTarget target;
-    QString bad;
-    if (const auto fixed = tracking::TrackTarget::parseFixedOrCelestial(c.target, &bad)) {
-        target = *fixed;
-    } else if (!bad.isEmpty()) {
-        return CommandResult{bad};
-    } else if (c.target.compare(QLatin1String("sun"), Qt::CaseInsensitive) == 0) {
-        target.kind = tracking::TrackTarget::Kind::Sun;
-    } else if (c.target.compare(QLatin1String("moon"), Qt::CaseInsensitive) == 0) {
-        target.kind = tracking::TrackTarget::Kind::Moon;
-    } else {
-        // The sets the service was given first, then the cache's.
-        QList<sky::ElementSet> sets = m_elementSets;
-        for (const sky::ElementSet &tle : m_station->elementSets()->sets()) {
-            bool known = false;
-            for (const sky::ElementSet &given : std::as_const(m_elementSets))
-                known = known || given.catalogueNumber == tle.catalogueNumber;
-            if (!known)
-                sets.append(tle);
-        }
-        QString why;
-        const sky::ElementSet *tle = sky::findOneSatellite(sets, c.target, &why);
-        if (!tle)
-            return CommandResult{tr("%1 among the station's element sets").arg(why)};
-        target.elements = *tle;
-    }
-    const QString refused = m_station->track(target, c.minElevation.value_or(0.0));
-    return CommandResult{refused};
+    QString why;
+    const std::optional<tracking::TrackTarget> target = targetByName(*m_station, m_elementSets, c.target, &why);
+    if (!target)
+        return CommandResult{why};
+    return CommandResult{m_station->track(*target, c.minElevation.value_or(0.0)).reason()};
 }
 
 } // namespace slew::station

@@ -6,8 +6,8 @@
 // (remote/stationtelemetry.h) at most at the rotator's poll rate. Changes
 // that come together go out as one message. While the antenna only moves,
 // the state follows once a second: the telemetry carries the position at
-// the poll rate, and every message costs the station a wake-up or two. It reads the Station's parts
-// (the first rotor's session and alarms, the pass runner, the radio) and
+// the poll rate, and every message costs the station a wake-up or two. It
+// reads the Station as the window's face does (stationstatereader.h) and
 // hands each message to `publish`.
 
 #include "remote/mqttsettings.h"
@@ -23,6 +23,7 @@
 namespace slew::station {
 
 class Station;
+class StationStateReader;
 
 class StatePublisher : public QObject {
     Q_OBJECT
@@ -35,7 +36,7 @@ public:
     StatePublisher(Station *station, const QString &stationName, Publish publish, QObject *parent = nullptr);
 
     // The state as it is now.
-    remote::StationState state() const;
+    face::StationState state() const;
     // Publishes the state now (a new connection, a goodbye).
     void publishState();
     void setEnabled(bool on);
@@ -51,14 +52,11 @@ private:
     void follow();
 
     Station *m_station;
+    StationStateReader *m_reader; // what the state and telemetry say
     QString m_name;
     Publish m_publish;
     bool m_enabled = false;
-    std::optional<QPointF> m_target; // the target shown; cleared as the window clears it
-    QString m_linkDetail;            // why the link is down, when it is
-    bool m_moving = false;           // as the last status said
-    std::optional<remote::StationState> m_published; // the last state sent
-    remote::TelemetrySample m_sample;
+    std::optional<face::StationState> m_published; // the last state sent
     QTimer m_stateDue, m_telemetryDue, m_heartbeat;
     QElapsedTimer m_sinceState, m_sinceTelemetry;
     int m_states = 0, m_samples = 0;

@@ -3,6 +3,7 @@
 
 #include "alarmmonitor.h"
 #include "dopplerradio.h"
+#include "localstationface.h"
 #include "schedulerunner.h"
 #include "passrecorder.h"
 #include "remoteoperation.h"
@@ -88,10 +89,12 @@ Station::Station(const StationOptions &options, QObject *parent) : QObject(paren
             m_recorder->recordDropped(*target, p.pass, p.why);
     });
     wireTracking();
+    m_face = std::make_unique<LocalStationFace>(this);
 }
 
 Station::~Station()
 {
+    m_face.reset(); // it follows every other part
     if (m_schedule)
         m_schedule->stop(tr("the station is closing"));
     m_remote.reset(); // it follows every other part
@@ -246,27 +249,39 @@ QString Station::otherSteering() const
     return peer.isEmpty() ? peer : tr("remote tracker %1").arg(peer);
 }
 
-QString Station::track(const tracking::TrackTarget &target, double minElevationDeg)
+face::StationFace *Station::face() const
+{
+    return m_face.get();
+}
+
+QString Station::othersSteeringRefusal(QString other)
+{
+    other[0] = other[0].toUpper();
+    return tr("%1 is steering the rotator: stop it (or Stop, which holds remote trackers off) "
+              "before Slew tracks, or the two will fight")
+        .arg(other);
+}
+
+face::Outcome Station::track(const tracking::TrackTarget &target, double minElevationDeg)
 {
     if (!m_runner)
-        return m_error;
+        return face::Outcome::refused(m_error);
     if (!m_place)
-        return tr("tracking needs the station's place");
+        return face::Outcome::refused(tr("tracking needs the station's place"));
     if (target.kind == tracking::TrackTarget::Kind::Satellite) {
         const QString old = sky::elementsTooOld(target.elements, m_clock->nowJulian(), m_runner->elementAgeLimitDays(),
                                                 tr("now"));
         if (!old.isEmpty())
-            return tr("%1 is not tracked: %2; refresh the element sets or raise the limit").arg(target.name(), old);
+            return face::Outcome::refused(
+                tr("%1 is not tracked: %2; refresh the element sets or raise the limit").arg(target.name(), old));
     }
     if (QString other = otherSteering(); !other.isEmpty()) {
         other[0] = other[0].toUpper();
-        return tr("%1 is steering the rotator: stop it (or Stop, which holds remote trackers off) "
-                  "before Slew tracks, or the two will fight")
-            .arg(other);
+        return face::Outcome::refused(othersSteeringRefusal(other));
     }
     m_schedule->stop(tr("one target is tracked instead"));
     m_runner->start(target, *m_place, minElevationDeg, m_clock.get());
-    return {};
+    return face::Outcome::done();
 }
 
 void Station::setElementAgeLimitDays(double days)
@@ -280,32 +295,30 @@ double Station::elementAgeLimitDays() const
     return m_runner ? m_runner->elementAgeLimitDays() : sky::kElementAgeLimitDays;
 }
 
-QString Station::runSchedule(const QList<tracking::TrackTarget> &targets, const ScheduleOptions &options)
+face::Outcome Station::runSchedule(const QList<tracking::TrackTarget> &targets, const ScheduleOptions &options)
 {
     if (!m_runner)
-        return m_error;
+        return face::Outcome::refused(m_error);
     if (!m_place)
-        return tr("a schedule needs the station's place");
+        return face::Outcome::refused(tr("a schedule needs the station's place"));
     if (targets.isEmpty())
-        return tr("a schedule needs at least one target");
-    if (QString other = otherSteering(); !other.isEmpty()) {
-        other[0] = other[0].toUpper();
-        return tr("%1 is steering the rotator: stop it (or Stop, which holds remote trackers off) "
-                  "before Slew tracks, or the two will fight")
-            .arg(other);
-    }
+        return face::Outcome::refused(tr("a schedule needs at least one target"));
+    if (const QString other = otherSteering(); !other.isEmpty())
+        return face::Outcome::refused(othersSteeringRefusal(other));
     if (m_runner->isRunning())
         m_runner->stop(tr("a schedule is run instead"));
     m_schedule->start(targets, *m_place, options);
-    return {};
+    return face::Outcome::done();
 }
 
-void Station::untrack(const QString &why)
+face::Outcome Station::untrack(const QString &why)
 {
+    const bool tracking = (m_schedule && m_schedule->isRunning()) || (m_runner && m_runner->isRunning());
     if (m_schedule)
         m_schedule->stop(why);
     if (m_runner)
         m_runner->stop(why);
+    return tracking ? face::Outcome::done() : face::Outcome::refused(tr("Slew is not tracking"));
 }
 
 QString Station::openPassRecords(const QString &path, int keepDays, bool readWhenTaken)

@@ -29,6 +29,7 @@
 // targets, plans, alarms, states. A face that needs more reaches the parts
 // through the accessors below, and never makes one of its own.
 
+#include "face/outcome.h"
 #include "model/rotatorprofile.h"
 #include "session/sessiontypes.h"
 #include "sky/site.h"
@@ -41,6 +42,9 @@
 #include <optional>
 #include <vector>
 
+namespace slew::face {
+class StationFace;
+}
 namespace slew::session {
 class ControllerRotors;
 class MoveWatch;
@@ -71,6 +75,7 @@ struct TrackTarget;
 namespace slew::station {
 
 class AlarmMonitor;
+class LocalStationFace;
 class DopplerRadio;
 class ScheduleRunner;
 struct ScheduleOptions;
@@ -142,6 +147,11 @@ public:
     // has made it (remoteoperation.h); null before.
     RemoteOperation *remote() const { return m_remote.get(); }
 
+    // The station as every face shows it and asks of it, the operator at
+    // the station's standing (localstationface.h); null for a station with
+    // no rotor.
+    face::StationFace *face() const;
+
     // --- Intent -------------------------------------------------------------
     // Opens every rotor's link (rotorUri()).
     void connectRotators();
@@ -163,9 +173,9 @@ public:
     // False, with *error, when it cannot start; said again, it does nothing.
     bool startRemote(const RemoteOptions &options, QString *error);
     // Follows every pass of `target` above `minElevationDeg` with the first
-    // rotor, by the station's clock. Empty when started, else why not: the
-    // place is not set, or a remote tracker steers the rotator.
-    QString track(const tracking::TrackTarget &target, double minElevationDeg);
+    // rotor, by the station's clock. Refused, saying why, when the place is
+    // not set, the elements are too old, or a remote tracker steers the rotator.
+    face::Outcome track(const tracking::TrackTarget &target, double minElevationDeg);
     // How far from its elements' epoch a satellite is tracked, by one target
     // and the schedule alike (sky/elementage.h); track() refuses a satellite
     // already past it, and a pass past it is not tracked.
@@ -173,10 +183,12 @@ public:
     double elementAgeLimitDays() const;
     // Follows the passes of several targets, taken by priority (the first
     // highest) where they overlap and only where the rotator can get from
-    // one to the next: the schedule (schedulerunner.h). Empty when started,
-    // else why not, as track(). A single track() ends it, as untrack() does.
-    QString runSchedule(const QList<tracking::TrackTarget> &targets, const ScheduleOptions &options);
-    void untrack(const QString &why);
+    // one to the next: the schedule (schedulerunner.h). Refused as track()
+    // is. A single track() ends it, as untrack() does.
+    face::Outcome runSchedule(const QList<tracking::TrackTarget> &targets, const ScheduleOptions &options);
+    // Ends one target's tracking and the schedule alike; refused when
+    // neither runs.
+    face::Outcome untrack(const QString &why);
     // Who steers the first rotor from outside now ("remote tracker
     // 127.0.0.1:5533"), or empty.
     QString otherSteering() const;
@@ -223,6 +235,8 @@ private:
     void addRotor(int number, const StationOptions &options);
     void wireTracking();
     QList<session::RotatorSession *> everySession() const;
+    // Why Slew does not track while `other` steers the rotator.
+    static QString othersSteeringRefusal(QString other);
 
     QString m_error;
     std::unique_ptr<transport::SharedLine> m_line; // with several rotors: the one link they share
@@ -239,6 +253,7 @@ private:
     std::unique_ptr<records::PassRecordStore> m_records;
     std::unique_ptr<PassRecorder> m_recorder; // after the store it writes to and the parts it follows
     std::unique_ptr<RemoteOperation> m_remote; // after every part it publishes
+    std::unique_ptr<LocalStationFace> m_face;  // after every part it shows
     std::optional<sky::Site> m_place;
     bool m_shuttingDown = false;
     bool m_operatorHolds = false;

@@ -108,12 +108,12 @@ bool StationService::start(const ServiceConfig &config, QString *error)
         m_station->setElementAgeLimitDays(config.track->maxElementAgeDays);
         QString refused;
         if (config.track->targets.size() == 1) {
-            refused = m_station->track(config.track->target(), config.track->minElevationDeg);
+            refused = m_station->track(config.track->target(), config.track->minElevationDeg).reason();
         } else {
             ScheduleOptions schedule;
             schedule.minElevationDeg = config.track->minElevationDeg;
             schedule.guardSeconds = config.track->guardSeconds;
-            refused = m_station->runSchedule(config.track->targets, schedule);
+            refused = m_station->runSchedule(config.track->targets, schedule).reason();
         }
         if (!refused.isEmpty()) {
             *error = refused;

@@ -26,15 +26,18 @@ set(allowed_tracking "session;model;protocol;transport;sky;input")
 set(allowed_radio "tracking;session;sky;model;protocol;transport;input")
 # records: the pass records' database; made of values the station hands it.
 set(allowed_records "input")
+# face: what a face shows of a station and asks of it, as values (state,
+# plan, schedule, telemetry, outcomes), below both kinds of station.
+set(allowed_face "schedule;model;sky;input")
 # remote: MQTT (the broker, the client, the messages) and the remote station a
 # window shows; it knows values (positions, limits), never the Station, which
 # sits above it and publishes itself through it (station/remoteoperation.h).
 # A schedule is a value too: the remote one is the local one's.
-set(allowed_remote "schedule;session;model;protocol;transport;sky;input")
+set(allowed_remote "face;schedule;session;model;protocol;transport;sky;input")
 set(allowed_schedule "tracking;sky;model;input")
 # station: one ground station's parts and their rules; the faces (ui, app) sit on it.
-set(allowed_station "schedule;records;remote;radio;bridge;tracking;session;sky;model;protocol;transport;input")
-set(areas input protocol transport sky model session sim tuning bridge console tracking radio records schedule remote station)
+set(allowed_station "face;schedule;records;remote;radio;bridge;tracking;session;sky;model;protocol;transport;input")
+set(areas input protocol transport sky model session sim tuning bridge console tracking radio records schedule face remote station)
 
 file(GLOB_RECURSE files RELATIVE ${CORE} ${CORE}/*.h ${CORE}/*.cpp)
 set(faults "")

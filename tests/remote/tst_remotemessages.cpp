@@ -19,6 +19,7 @@
 #include <QTest>
 
 using namespace slew::remote;
+using namespace slew::face;
 
 class RemoteMessagesTest : public QObject {
     Q_OBJECT

@@ -42,7 +42,7 @@ QJsonObject json(const QByteArray &payload)
 }
 
 // The last state the subscriber has seen, parsed.
-std::optional<slew::remote::StationState> lastState(MosquittoSubscriber &sub)
+std::optional<slew::face::StationState> lastState(MosquittoSubscriber &sub)
 {
     const QList<QByteArray> all = sub.payloads(QStringLiteral("slew/mast/state"));
     if (all.isEmpty())
@@ -282,7 +282,7 @@ private slots:
 
         // The schedule: both targets in their order, every pass with its
         // decision, and FLOCK 2P-1's pass the one being followed.
-        std::optional<slew::remote::StationSchedule> schedule;
+        std::optional<slew::face::StationSchedule> schedule;
         QVERIFY2(watcher.waitFor(QStringLiteral("slew/mast/schedule"),
                                  [&](const QByteArray &p) {
                                      QString e;
@@ -305,7 +305,7 @@ private slots:
 
         // The plan of that pass: its sky and the antenna's path, at most
         // kMostPlanPoints of each, the AOS point first.
-        std::optional<slew::remote::StationPlan> plan;
+        std::optional<slew::face::StationPlan> plan;
         QVERIFY2(watcher.waitFor(QStringLiteral("slew/mast/plan"),
                                  [&](const QByteArray &p) {
                                      QString e;

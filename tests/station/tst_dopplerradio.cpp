@@ -55,7 +55,7 @@ bool trackFlock(Station &station, const QString &iso, double rate, slew::trackin
         return false;
     slew::tracking::TrackTarget target;
     target.elements = flock();
-    if (target.elements.catalogueNumber == 0 || !station.track(target, 0.0).isEmpty())
+    if (target.elements.catalogueNumber == 0 || station.track(target, 0.0).isRefused())
         return false;
     return QTest::qWaitFor([&] { return station.passRunner()->tracker().state() == state; }, 20000);
 }

@@ -72,7 +72,7 @@ bool track(Station &station, const QString &iso, const QString &name = QStringLi
     target.elements = satellite(name);
     if (renumberTo > 0 && target.elements.catalogueNumber > 0)
         target.elements.catalogueNumber = renumberTo;
-    if (target.elements.catalogueNumber == 0 || !station.track(target, 0.0).isEmpty())
+    if (target.elements.catalogueNumber == 0 || station.track(target, 0.0).isRefused())
         return false;
     return QTest::qWaitFor([&] { return station.passRunner()->tracker().state() == Tracker::State::Tracking; }, 20000);
 }

@@ -85,7 +85,7 @@ private slots:
         ScheduleRunner *runner = station.scheduleRunner();
         QSignalSpy lines(runner, &ScheduleRunner::logLine);
         QSignalSpy dropped(runner, &ScheduleRunner::passDropped);
-        QCOMPARE(station.runSchedule({flock, perseus, envisat}, slew::station::ScheduleOptions{}), QString());
+        QCOMPARE(station.runSchedule({flock, perseus, envisat}, slew::station::ScheduleOptions{}).reason(), QString());
         QVERIFY(runner->isRunning());
         QTRY_VERIFY_WITH_TIMEOUT(!runner->schedule().passes.isEmpty(), 20000);
         auto said = [&] {
@@ -147,7 +147,7 @@ private slots:
     void refusedWithoutAPlace()
     {
         Station station;
-        QCOMPARE(station.runSchedule({satellite("FLOCK 2P-1")}, slew::station::ScheduleOptions{}),
+        QCOMPARE(station.runSchedule({satellite("FLOCK 2P-1")}, slew::station::ScheduleOptions{}).reason(),
                  QStringLiteral("a schedule needs the station's place"));
         QVERIFY(!station.scheduleRunner()->isRunning());
     }

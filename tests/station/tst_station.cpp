@@ -125,9 +125,9 @@ private slots:
         // While that tracker steers, Slew's own tracking is refused, saying who.
         const auto fixed = slew::tracking::TrackTarget::parseFixedOrCelestial(QStringLiteral("azel:200,40"), nullptr);
         QVERIFY(fixed);
-        QCOMPARE(station.track(*fixed, 0.0), QStringLiteral("tracking needs the station's place"));
+        QCOMPARE(station.track(*fixed, 0.0).reason(), QStringLiteral("tracking needs the station's place"));
         station.setPlace(kPlace);
-        const QString refused = station.track(*fixed, 0.0);
+        const QString refused = station.track(*fixed, 0.0).reason();
         QVERIFY2(refused.startsWith(QStringLiteral("Remote tracker 127.0.0.1:")) && refused.contains(QStringLiteral("is steering")),
                  qPrintable(refused));
         QVERIFY(!station.passRunner()->isRunning());
@@ -145,7 +145,7 @@ private slots:
         station.setPlace(kPlace);
         QSignalSpy tracking(&station, &Station::trackingChanged);
         const auto fixed = slew::tracking::TrackTarget::parseFixedOrCelestial(QStringLiteral("azel:200,40"), nullptr);
-        QCOMPARE(station.track(*fixed, 0.0), QString());
+        QCOMPARE(station.track(*fixed, 0.0).reason(), QString());
         QVERIFY(runEventLoopUntil([&] { return station.passRunner()->holdsRotator(); }, 10000));
         QCOMPARE(tracking.count(), 1);
         QVERIFY(tracking.last().at(0).toBool());

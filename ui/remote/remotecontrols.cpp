@@ -96,11 +96,11 @@ RemoteControls::RemoteControls(RemoteStation *station, QWidget *parent) : QWidge
     connect(m_el, &QLineEdit::returnPressed, this, &RemoteControls::go);
     connect(m_go, &QPushButton::clicked, this, &RemoteControls::go);
     connect(m_park, &QPushButton::clicked, this, [this] {
-        if (!m_station->park().isEmpty())
+        if (m_station->park().isAccepted())
             showMessage(tr("park: sent"), false);
     });
     connect(m_home, &QPushButton::clicked, this, [this] {
-        if (!m_station->home().isEmpty())
+        if (m_station->home().isAccepted())
             showMessage(tr("home: sent"), false);
     });
     connect(m_track, &QPushButton::clicked, this, [this] {
@@ -108,7 +108,7 @@ RemoteControls::RemoteControls(RemoteStation *station, QWidget *parent) : QWidge
             showMessage(tr("name a target to track"), true);
             return;
         }
-        if (!m_station->track(m_target->text()).isEmpty())
+        if (m_station->track(m_target->text(), 0).isAccepted())
             showMessage(tr("track %1: sent").arg(m_target->text().trimmed()), false);
     });
     connect(m_untrack, &QPushButton::clicked, this, [this] { m_station->untrack(); });
@@ -131,7 +131,7 @@ QPushButton *RemoteControls::jogButton(const QString &text, const QString &name,
     connect(b, &QPushButton::pressed, this, [this, az, el] {
         m_station->startJog(az * m_speed->value(), el * m_speed->value());
     });
-    connect(b, &QPushButton::released, this, [this] { m_station->endJog(); });
+    connect(b, &QPushButton::released, this, [this] { m_station->endJog({}); });
     m_jog << b;
     return b;
 }
@@ -176,7 +176,7 @@ bool RemoteControls::go()
         showMessage(tr("go to: %1").arg(check.refusal), true);
         return false;
     }
-    if (m_station->gotoPosition(*az, *el).isEmpty())
+    if (m_station->gotoPosition(*az, *el).isRefused())
         return false;
     showMessage(tr("go to az %1°, el %2°: sent").arg(*az, 0, 'f', 1).arg(*el, 0, 'f', 1), false);
     return true;

@@ -55,7 +55,7 @@ RemoteReadout::RemoteReadout(QWidget *parent) : QWidget(parent)
     m_link->setText(tr("Waiting for the station's state"));
 }
 
-QString RemoteReadout::trackingText(const remote::StationState &s)
+QString RemoteReadout::trackingText(const face::StationState &s)
 {
     // What tracking does now is the line beside STOP (trackingline.h);
     // here, the pass it is about.
@@ -75,7 +75,7 @@ void RemoteReadout::showPosition(double az, double el)
     m_el->setText(m_azimuthOnly ? QString() : tr("El %1°").arg(el, 0, 'f', 1));
 }
 
-void RemoteReadout::showState(const remote::StationState &s)
+void RemoteReadout::showState(const face::StationState &s)
 {
     m_azimuthOnly = s.azimuthOnly;
     if (s.position) {

@@ -21,10 +21,10 @@ public:
 
     // "Pass of ISS (ZARYA) (NORAD 25544): 12:03:10–12:13:40 UTC, highest
     // 56.1°"; empty when no pass is followed or waited for.
-    static QString trackingText(const remote::StationState &state);
+    static QString trackingText(const face::StationState &state);
 
 public slots:
-    void showState(const slew::remote::StationState &state);
+    void showState(const slew::face::StationState &state);
     // Where the antenna points now, from the telemetry (between states).
     void showPosition(double az, double el);
     void setLive(bool live);

@@ -37,7 +37,7 @@ RemoteScheduleView::RemoteScheduleView(QWidget *parent) : QWidget(parent)
     layout->addStretch(1);
 }
 
-void RemoteScheduleView::showSchedule(const remote::StationSchedule &s, qint64 receivedUnixMs)
+void RemoteScheduleView::showSchedule(const face::StationSchedule &s, qint64 receivedUnixMs)
 {
     m_running = s.running;
     m_clockMs = s.clockMs;

@@ -10,7 +10,7 @@
 
 class QLabel;
 
-namespace slew::remote {
+namespace slew::face {
 struct StationSchedule;
 }
 
@@ -23,7 +23,7 @@ class RemoteScheduleView : public QWidget {
 public:
     explicit RemoteScheduleView(QWidget *parent = nullptr);
 
-    void showSchedule(const remote::StationSchedule &schedule, qint64 receivedUnixMs);
+    void showSchedule(const face::StationSchedule &schedule, qint64 receivedUnixMs);
     // Moves the time line's "now" on by the wall clock since the schedule
     // came, at the station clock's rate (a rehearsal runs faster).
     void showTime(qint64 unixMs);

@@ -77,7 +77,7 @@ RemoteStationWindow::RemoteStationWindow(RemoteStation *station, QWidget *parent
     m_controls = new RemoteControls(station);
     // Stop always sends, live or not: a broker that is back takes it at once.
     // The station logs "a stop over MQTT": the cause stays here.
-    m_stop = new StopButton([station](const QString &) { return !station->stop().isEmpty(); });
+    m_stop = new StopButton([station](const QString &cause) { return station->stop(cause).isAccepted(); });
     m_trackingLine = new TrackingLine([station] { return remoteReading(*station); });
     m_recorder = new TelemetryRecorder(nullptr, this);
     m_charts = new TelemetryCharts(&m_recorder->history());
@@ -130,7 +130,7 @@ RemoteStationWindow::RemoteStationWindow(RemoteStation *station, QWidget *parent
     connect(station, &RemoteStation::telemetryReceived, m_recorder, &TelemetryRecorder::recordRemote);
     // The telemetry carries the position at the poll rate; the state, while
     // the antenna only moves, once a second.
-    connect(station, &RemoteStation::telemetryReceived, m_plot, [this](const remote::TelemetrySample &s) {
+    connect(station, &RemoteStation::telemetryReceived, m_plot, [this](const face::TelemetrySample &s) {
         if (s.commandedAz && s.commandedEl)
             m_plot->setCommanded(*s.commandedAz, *s.commandedEl);
         if (s.az && s.el) {
@@ -141,14 +141,14 @@ RemoteStationWindow::RemoteStationWindow(RemoteStation *station, QWidget *parent
     });
     connect(m_plot, &PolarPlotWidget::targetPicked, m_controls, &RemoteControls::setFields);
     connect(station, &RemoteStation::planChanged, this, &RemoteStationWindow::showPlan);
-    connect(station, &RemoteStation::scheduleChanged, this, [this](const remote::StationSchedule &s) {
+    connect(station, &RemoteStation::scheduleChanged, this, [this](const face::StationSchedule &s) {
         m_schedule->showSchedule(s, QDateTime::currentMSecsSinceEpoch());
     });
     // The time line's now moves with every state (at least every 5 s): no
     // timer of its own.
     connect(station, &RemoteStation::stateChanged, this,
             [this] { m_schedule->showTime(QDateTime::currentMSecsSinceEpoch()); });
-    connect(m_stop, &StopButton::stopped, station, &RemoteStation::endJog);
+    connect(m_stop, &StopButton::stopped, station, [station] { station->endJog({}); });
     connect(m_stop, &StopButton::stopped, this, [this] { log(false, tr("Stop sent")); });
     connect(station, &RemoteStation::replied, this, [this](const QString &, const QString &command, bool ok, const QString &error) {
         if (command != u"jog" || !ok)
@@ -187,7 +187,7 @@ void RemoteStationWindow::log(bool problem, const QString &text)
     statusBar()->showMessage(text, problem ? 30000 : 8000);
 }
 
-void RemoteStationWindow::showPlan(const remote::StationPlan &plan)
+void RemoteStationWindow::showPlan(const face::StationPlan &plan)
 {
     // The pass ahead on the plot, as the local window's Tracking tab draws it.
     if (plan.target.isEmpty() || plan.sky.isEmpty()) {
@@ -205,7 +205,7 @@ void RemoteStationWindow::showPlan(const remote::StationPlan &plan)
     m_plot->setPassOverlay(overlay);
 }
 
-void RemoteStationWindow::showState(const remote::StationState &s)
+void RemoteStationWindow::showState(const face::StationState &s)
 {
     m_plot->setLimits(s.limits);
     m_plot->setPark(s.park);

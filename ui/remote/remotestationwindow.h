@@ -16,6 +16,8 @@ class QTabWidget;
 
 namespace slew::remote {
 class RemoteStation;
+}
+namespace slew::face {
 struct StationPlan;
 struct StationState;
 }
@@ -53,8 +55,8 @@ public:
     RemoteScheduleView *scheduleView() const { return m_schedule; }
 
 private:
-    void showState(const remote::StationState &state);
-    void showPlan(const remote::StationPlan &plan);
+    void showState(const face::StationState &state);
+    void showPlan(const face::StationPlan &plan);
     void showLive(bool live);
     void log(bool problem, const QString &text);
 

@@ -52,7 +52,7 @@ QString StationTile::statusText() const
     return m_status->text();
 }
 
-void StationTile::show(bool live, bool online, const std::optional<remote::StationState> &state, qint64 ageMs)
+void StationTile::show(bool live, bool online, const std::optional<face::StationState> &state, qint64 ageMs)
 {
     QString status;
     // The plot is drawn again only when what it shows has changed: the

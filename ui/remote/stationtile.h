@@ -32,7 +32,7 @@ public:
 
 public slots:
     // `state` may be none (only `online` heard so far); ageMs since it came.
-    void show(bool live, bool online, const std::optional<slew::remote::StationState> &state, qint64 ageMs);
+    void show(bool live, bool online, const std::optional<slew::face::StationState> &state, qint64 ageMs);
 
 signals:
     void openRequested(const QString &name);

@@ -156,7 +156,7 @@ void TelemetryRecorder::onTelemetry(const session::Telemetry &t)
 
 namespace slew::ui {
 
-void TelemetryRecorder::recordRemote(const remote::TelemetrySample &s)
+void TelemetryRecorder::recordRemote(const face::TelemetrySample &s)
 {
     const qint64 now = nowMs();
     const auto put = [&](Series series, const std::optional<double> &value, bool onlyOnChange = false) {

@@ -69,7 +69,7 @@ public slots:
     void recordDopplerError(double receiveHz, double transmitHz);
     // One sample a station published on the broker, at the time it arrived
     // (the charts' clock is this machine's).
-    void recordRemote(const slew::remote::TelemetrySample &sample);
+    void recordRemote(const slew::face::TelemetrySample &sample);
 
 signals:
     void recorded(); // something was added

@@ -377,7 +377,7 @@ void SchedulePanel::runOrStop()
         emit message(tr("schedule: it needs a rotator: connect first"));
         return;
     }
-    if (const QString refused = m_station->runSchedule(list, station::ScheduleOptions{}); !refused.isEmpty())
+    if (const QString refused = m_station->runSchedule(list, station::ScheduleOptions{}).reason(); !refused.isEmpty())
         emit message(tr("schedule: %1").arg(refused));
 }
 

@@ -315,7 +315,7 @@ void TrackingPanel::startTracking()
         emit message(tr("tracking needs a rotator: connect first"));
         return;
     }
-    if (const QString refused = m_station->track(*target, 0.0); !refused.isEmpty()) {
+    if (const QString refused = m_station->track(*target, 0.0).reason(); !refused.isEmpty()) {
         emit message(refused);
         return;
     }

@@ -240,7 +240,7 @@ void benchStop(int trials)
 
 QByteArray stateLine(int sequence)
 {
-    slew::remote::StationState s;
+    slew::face::StationState s;
     s.unixMs = QDateTime::currentMSecsSinceEpoch();
     s.link = QStringLiteral("connected");
     s.position = QPointF(double(sequence % 3600) / 10.0, 30.0 + double(sequence % 300) / 10.0);
@@ -268,7 +268,7 @@ void benchUpdates(double seconds)
     // The station says it is online, retained, as a station does.
     broker.publish(QStringLiteral("station-mast"), QStringLiteral("slew/mast/online"), "true", true);
     std::vector<double> lags;
-    QObject::connect(remote.get(), &RemoteStation::stateChanged, [&](const slew::remote::StationState &s) {
+    QObject::connect(remote.get(), &RemoteStation::stateChanged, [&](const slew::face::StationState &s) {
         lags.push_back(double(QDateTime::currentMSecsSinceEpoch() - s.unixMs));
     });
     std::printf("%8s %10s %10s %9s %9s %9s %s\n", "rate/s", "sent", "received", "lag p50", "lag p99", "lag max",

@@ -1,0 +1,157 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "localstationface.h"
+
+#include "schedulerunner.h"
+#include "station.h"
+#include "stationplanreader.h"
+#include "stationstatereader.h"
+#include "targetbyname.h"
+
+#include "session/rotatorsession.h"
+#include "tracking/passrunner.h"
+
+namespace slew::station {
+
+using face::Outcome;
+
+namespace {
+
+void coalesce(QTimer &due)
+{
+    if (!due.isActive())
+        due.start();
+}
+
+} // namespace
+
+LocalStationFace::LocalStationFace(Station *station, QObject *parent)
+    : face::StationFace(parent), m_station(station), m_reader(new StationStateReader(station, this))
+{
+    for (QTimer *due : {&m_stateDue, &m_telemetryDue, &m_planDue}) {
+        due->setSingleShot(true);
+        due->setInterval(0);
+    }
+    connect(&m_stateDue, &QTimer::timeout, this, [this] { emit stateChanged(m_reader->state()); });
+    connect(&m_telemetryDue, &QTimer::timeout, this, [this] {
+        emit telemetryReceived(m_reader->sample());
+        m_reader->forgetMeasurements();
+    });
+    connect(&m_planDue, &QTimer::timeout, this, [this] {
+        emit planChanged(planNow(*m_station));
+        emit scheduleChanged(scheduleNow(*m_station));
+    });
+    connect(m_reader, &StationStateReader::stateChanged, this, [this] { coalesce(m_stateDue); });
+    connect(m_reader, &StationStateReader::telemetryChanged, this, [this] { coalesce(m_telemetryDue); });
+    const auto plans = [this] { coalesce(m_planDue); };
+    if (tracking::PassRunner *runner = m_station->passRunner()) {
+        connect(&runner->tracker(), &tracking::Tracker::stateChanged, this, plans);
+        connect(runner, &tracking::PassRunner::activeChanged, this, plans);
+    }
+    if (ScheduleRunner *schedule = m_station->scheduleRunner()) {
+        connect(schedule, &ScheduleRunner::scheduleChanged, this, plans);
+        connect(schedule, &ScheduleRunner::currentChanged, this, plans);
+        connect(schedule, &ScheduleRunner::runningChanged, this, plans);
+    }
+}
+
+LocalStationFace::~LocalStationFace() = default;
+
+QString LocalStationFace::title() const
+{
+    return m_station->session()->uri();
+}
+
+std::optional<face::StationState> LocalStationFace::state() const
+{
+    return m_reader->state();
+}
+
+std::optional<face::StationPlan> LocalStationFace::plan() const
+{
+    return planNow(*m_station);
+}
+
+std::optional<face::StationSchedule> LocalStationFace::schedule() const
+{
+    return scheduleNow(*m_station);
+}
+
+model::MoveCheck LocalStationFace::previewPointing(double az, double el) const
+{
+    return m_station->session()->previewPointing(az, el);
+}
+
+Outcome LocalStationFace::gotoPosition(double az, double el)
+{
+    return Outcome::refusedIf(m_station->session()->gotoPosition(az, el).refusal);
+}
+
+Outcome LocalStationFace::stop(const QString &cause)
+{
+    m_jogAz = m_jogEl = 0;
+    return Outcome::refusedIf(m_station->stop(cause).refusal);
+}
+
+Outcome LocalStationFace::park()
+{
+    return Outcome::refusedIf(m_station->session()->park().refusal);
+}
+
+Outcome LocalStationFace::home()
+{
+    return Outcome::refusedIf(m_station->session()->home().refusal);
+}
+
+Outcome LocalStationFace::track(const QString &target, double minElevationDeg)
+{
+    QString why;
+    const std::optional<tracking::TrackTarget> found = targetByName(*m_station, {}, target.trimmed(), &why);
+    if (!found)
+        return Outcome::refused(why);
+    return m_station->track(*found, minElevationDeg);
+}
+
+Outcome LocalStationFace::untrack()
+{
+    return m_station->untrack(tr("untracked by the operator"));
+}
+
+Outcome LocalStationFace::startJog(double azSpeed, double elSpeed)
+{
+    session::RotatorSession *s = m_station->session();
+    // Each axis turns at its speed; an axis this jog turned and now given
+    // 0 stops, the other goes on (the opposite arrow let go of). A speed
+    // said again is sent again: a Stop from elsewhere may have ended it.
+    const auto turn = [this, s](session::Axis axis, double speed, double &turning) -> Outcome {
+        if (speed == 0 && turning == 0)
+            return Outcome::done();
+        if (speed == 0) {
+            turning = 0;
+            s->stop(tr("jog released"), axis == session::Axis::Azimuth ? session::Axes::Azimuth : session::Axes::Elevation);
+            return Outcome::done();
+        }
+        const session::CommandResult sent = s->moveAxis(axis, speed);
+        if (!sent) {
+            endJog(tr("jog refused: %1").arg(sent.refusal));
+            return Outcome::refused(sent.refusal);
+        }
+        turning = speed;
+        return Outcome::done();
+    };
+    if (const Outcome az = turn(session::Axis::Azimuth, azSpeed, m_jogAz); az.isRefused())
+        return az;
+    return turn(session::Axis::Elevation, elSpeed, m_jogEl);
+}
+
+void LocalStationFace::endJog(const QString &cause)
+{
+    if (m_jogAz == 0 && m_jogEl == 0)
+        return;
+    const session::Axes axes = m_jogAz != 0 && m_jogEl != 0 ? session::Axes::Both
+                               : m_jogAz != 0              ? session::Axes::Azimuth
+                                                           : session::Axes::Elevation;
+    m_jogAz = m_jogEl = 0;
+    m_station->session()->stop(cause, axes);
+}
+
+} // namespace slew::station

@@ -1,0 +1,182 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "stationstatereader.h"
+
+#include "alarmmonitor.h"
+#include "dopplerradio.h"
+#include "station.h"
+#include "trackingnow.h"
+
+#include "protocol/dialect.h"
+#include "session/rotatorsession.h"
+#include "tracking/passrunner.h"
+#include "tracking/stationclock.h"
+
+#include <QCoreApplication>
+#include <QDateTime>
+
+#include <cmath>
+
+namespace slew::station {
+
+using session::RotatorSession;
+
+namespace {
+
+QString linkName(RotatorSession::State state)
+{
+    switch (state) {
+    case RotatorSession::State::Connecting:
+        return QStringLiteral("connecting");
+    case RotatorSession::State::Connected:
+        return QStringLiteral("connected");
+    case RotatorSession::State::Reconnecting:
+        return QStringLiteral("reconnecting");
+    default:
+        return QStringLiteral("disconnected");
+    }
+}
+
+qint64 julianToUnixMs(double julian)
+{
+    return qint64(std::llround((julian - 2440587.5) * 86400000.0));
+}
+
+std::optional<double> known(double value)
+{
+    return std::isfinite(value) ? std::optional<double>(value) : std::nullopt;
+}
+
+} // namespace
+
+StationStateReader::StationStateReader(Station *station, QObject *parent) : QObject(parent), m_station(station)
+{
+    RotatorSession *s = m_station->session();
+    const auto state = [this] { emit stateChanged(false); };
+    connect(s, &RotatorSession::stateChanged, this, state);
+    connect(s, &RotatorSession::profileChanged, this, state);
+    connect(s, &RotatorSession::parkChanged, this, state);
+    connect(s, &RotatorSession::versionChanged, this, state);
+    connect(s, &RotatorSession::capabilitiesChanged, this, state);
+    connect(s, &RotatorSession::targetChanged, this, [this](double az, double el) {
+        m_target = QPointF(az, el);
+        emit stateChanged(false);
+    });
+    connect(s, &RotatorSession::targetCleared, this, [this] {
+        m_target.reset();
+        emit stateChanged(false);
+    });
+    connect(s, &RotatorSession::stateChanged, this, [this](RotatorSession::State st, const QString &detail) {
+        if (st == RotatorSession::State::Connecting)
+            m_target.reset();
+        m_linkDetail = st == RotatorSession::State::Connected ? QString() : detail;
+    });
+    connect(s, &RotatorSession::positionChanged, this, [this](double az, double el) {
+        m_sample.az = known(az);
+        m_sample.el = known(el);
+        emit stateChanged(true);
+        emit telemetryChanged();
+    });
+    connect(s, &RotatorSession::statusChanged, this, [this](session::StatusWord w) {
+        if (w.valid)
+            m_sample.gs = w.raw;
+        if (w.anyMoving() != m_moving) {
+            m_moving = w.anyMoving();
+            emit stateChanged(false);
+        }
+        emit telemetryChanged();
+    });
+    connect(s, &RotatorSession::errorFlagsChanged, this, [this](int flags) {
+        m_sample.ge = flags;
+        emit telemetryChanged();
+    });
+    connect(s, &RotatorSession::commandedChanged, this, [this](double az, double el) {
+        m_sample.commandedAz = known(az);
+        m_sample.commandedEl = known(el);
+        emit telemetryChanged();
+    });
+    connect(s, &RotatorSession::telemetryChanged, this, [this](const session::Telemetry &t) {
+        m_sample.azSpeed = known(t.azVelocity);
+        m_sample.elSpeed = known(t.elVelocity);
+        m_sample.azLoad = known(t.azLoad);
+        m_sample.elLoad = known(t.elLoad);
+        m_sample.temperature = known(t.temperature);
+        emit telemetryChanged();
+    });
+    connect(m_station->alarms(), &AlarmMonitor::alarmsChanged, this, state);
+    connect(m_station, &Station::trackingChanged, this, state);
+    connect(m_station, &Station::operatorHoldChanged, this, state);
+    // A rehearsal started, paused, stepped or ended: viewers count by it.
+    const tracking::StationClock *clock = m_station->clock();
+    connect(clock, &tracking::StationClock::changed, this, state);
+    connect(clock, &tracking::StationClock::pausedChanged, this, state);
+    connect(clock, &tracking::StationClock::stepped, this, state);
+    if (tracking::PassRunner *runner = m_station->passRunner()) {
+        connect(&runner->tracker(), &tracking::Tracker::stateChanged, this, state);
+        connect(&runner->tracker(), &tracking::Tracker::pointingError, this, [this](double degrees) {
+            m_sample.pointingError = known(degrees);
+            emit telemetryChanged();
+        });
+    }
+    if (DopplerRadio *radio = m_station->radio()) {
+        connect(radio, &DopplerRadio::measured, this, [this](double rx, double tx) {
+            m_sample.dopplerRxError = known(rx);
+            m_sample.dopplerTxError = known(tx);
+            emit telemetryChanged();
+        });
+    }
+}
+
+void StationStateReader::forgetMeasurements()
+{
+    m_sample.pointingError.reset();
+    m_sample.dopplerRxError.reset();
+    m_sample.dopplerTxError.reset();
+}
+
+face::StationState StationStateReader::state() const
+{
+    const RotatorSession *s = m_station->session();
+    face::StationState out;
+    out.unixMs = QDateTime::currentMSecsSinceEpoch();
+    if (const tracking::StationClock *clock = m_station->clock(); clock->isRehearsal()) {
+        out.clockMs = julianToUnixMs(clock->nowJulian());
+        out.clockRate = clock->isPaused() ? 0.0 : clock->rate();
+    }
+    out.link = linkName(s->state());
+    out.linkDetail = m_linkDetail.left(400);
+    if (s->hasPosition())
+        out.position = QPointF(s->azimuth(), s->elevation());
+    out.stale = s->positionStale() || !s->isConnected();
+    out.target = m_target;
+    out.moving = s->status().anyMoving();
+    out.limits = s->moveGate().limits();
+    if (s->parkKnown())
+        out.park = QPointF(s->parkAzimuth(), s->parkElevation());
+    out.azimuthOnly = s->isAzimuthOnly();
+    const protocol::Dialect dialect = s->profile().dialect;
+    out.dialect = protocol::dialectName(dialect).left(60);
+    const session::Capabilities &caps = s->capabilities();
+    out.probed = caps.probed;
+    out.jogSpeed = !caps.probed || caps.velocity;
+    out.canHome = !caps.probed || caps.reset;
+    out.parkCommand = protocol::dialectSupports(dialect, protocol::Op::Park);
+    if (const TrackingNow followed = trackingNow(m_station->passRunner()); followed.phase != TrackingNow::Phase::Off) {
+        out.tracking = phaseWord(followed.phase);
+        out.trackingTarget = followed.target.left(100);
+        out.trackingNorad = followed.norad;
+        if (followed.pass) {
+            out.passAosMs = julianToUnixMs(followed.pass->aos.julian);
+            out.passLosMs = julianToUnixMs(followed.pass->los.julian);
+            out.passMaxElevation = followed.pass->maxElevationDeg();
+        }
+    }
+    for (const QString &alarm : m_station->alarms()->activeAlarms().mid(0, face::kMostAlarms))
+        out.alarms << alarm.left(400);
+    out.severe = m_station->alarms()->anySevere();
+    out.operatorHold = m_station->operatorHolds();
+    out.controllerVersion = s->version().left(100);
+    out.slewVersion = QCoreApplication::applicationVersion().left(40);
+    return out;
+}
+
+} // namespace slew::station

@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The state and telemetry of the Station in this process, as the values a
+// face shows (face/stationstate.h, face/telemetrysample.h): read off the
+// first rotor's session and alarms, the pass runner, the clock and the
+// radio, and said to have changed whenever one of them says so. The window's
+// face (localstationface.h) and what the station publishes on a broker
+// (statepublisher.h) both read the station through this, so the two say the
+// same thing in the same words.
+
+#include "face/stationstate.h"
+#include "face/telemetrysample.h"
+
+#include <QObject>
+
+namespace slew::station {
+
+class Station;
+
+class StationStateReader : public QObject {
+    Q_OBJECT
+public:
+    explicit StationStateReader(Station *station, QObject *parent = nullptr);
+
+    // The state as it is now.
+    face::StationState state() const;
+    // The telemetry as last known.
+    const face::TelemetrySample &sample() const { return m_sample; }
+    // The pointing and Doppler errors are measured now and then: one who
+    // passes a sample on forgets them, so each is passed on once, not
+    // repeated as if measured again.
+    void forgetMeasurements();
+
+signals:
+    // `positionOnly`: nothing but where the antenna points has changed (each
+    // poll says so, moved or not).
+    void stateChanged(bool positionOnly);
+    void telemetryChanged();
+
+private:
+    Station *m_station;
+    std::optional<QPointF> m_target; // the target shown; cleared as the window clears it
+    QString m_linkDetail;            // why the link is down, when it is
+    bool m_moving = false;           // as the last status said
+    face::TelemetrySample m_sample;
+};
+
+} // namespace slew::station

@@ -1,0 +1,200 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// One script of an operator's intents through the station's face
+// (face/stationface.h), once as the window's face of a station in this
+// process and once as a remote window's face of the same kind of station
+// on a real Mosquitto (TLS, accounts, its access list): the same outcomes,
+// refusals in the same words, and the same state seen after each step.
+// Both stations run the built-in simulator on its manual clock.
+
+#include "../common/mosquittobroker.h"
+#include "../common/simulatorpump.h"
+#include "linkschemes.h"
+
+#include "face/stationface.h"
+#include "remote/brokeraddress.h"
+#include "remote/remotestation.h"
+#include "session/rotatorsession.h"
+#include "station/localstationface.h"
+#include "station/remoteoperation.h"
+#include "station/station.h"
+
+#include <QStandardPaths>
+#include <QTest>
+
+#include <cmath>
+#include <memory>
+
+using slew::face::Outcome;
+using slew::face::StationFace;
+using slew::station::Station;
+
+namespace {
+
+Station *newSimulatedStation(QObject *parent)
+{
+    slew::station::StationOptions options;
+    slew::model::RotatorProfile profile;
+    profile.uri = QStringLiteral("sim:?model=satnogs&clock=manual&start_az=10&start_el=10");
+    options.profile = profile;
+    auto *station = new Station(options, parent);
+    station->setPlace(slew::sky::Site{55.7, 12.6, 10, {}, {}});
+    return station;
+}
+
+// The final outcome of an intent: at once, or the station's answer by id.
+Outcome settled(StationFace &face, const Outcome &outcome)
+{
+    if (!outcome.isAwaiting())
+        return outcome;
+    std::optional<Outcome> answer;
+    const auto connection = QObject::connect(&face, &StationFace::answered, &face,
+                                             [&](const QString &id, const Outcome &o) {
+                                                 if (id == outcome.id())
+                                                     answer = o;
+                                             });
+    runEventLoopUntil([&] { return answer.has_value(); }, 15000);
+    QObject::disconnect(connection);
+    return answer.value_or(Outcome::refused(QStringLiteral("no answer within 15 s")));
+}
+
+bool near(const std::optional<QPointF> &p, double az, double el)
+{
+    return p && std::abs(p->x() - az) < 0.5 && std::abs(p->y() - el) < 0.5;
+}
+
+// What a face saw, step by step: each intent's outcome, and the state
+// the step waits for.
+struct Transcript {
+    QStringList lines;
+    void add(const QString &step, const Outcome &o)
+    {
+        lines << QStringLiteral("%1: %2").arg(step, o.isDone() ? QStringLiteral("done") : QStringLiteral("refused: ") + o.reason());
+    }
+};
+
+// The script, through any face. False (with the transcript so far) when
+// a state it waits for does not come.
+bool runScript(StationFace &face, Transcript &t)
+{
+    const auto state = [&face] { return face.state().value_or(slew::face::StationState{}); };
+    if (!runEventLoopUntil([&] { return state().link == u"connected" && state().position; }, 20000)) {
+        t.lines << QStringLiteral("never connected");
+        return false;
+    }
+    const QString gate = face.previewPointing(999, 30).refusal;
+    t.lines << QStringLiteral("preview 999,30: ") + gate;
+    t.add(QStringLiteral("go to 999,30"), settled(face, face.gotoPosition(999, 30)));
+    t.add(QStringLiteral("go to 40,20"), settled(face, face.gotoPosition(40, 20)));
+    if (!runEventLoopUntil([&] { return near(state().position, 40, 20); }, 30000)) {
+        t.lines << QStringLiteral("never arrived at 40,20");
+        return false;
+    }
+    t.lines << QStringLiteral("target %1,%2").arg(state().target.value_or(QPointF()).x()).arg(state().target.value_or(QPointF()).y());
+    t.add(QStringLiteral("track a satellite no one has"), settled(face, face.track(QStringLiteral("NO SUCH SATELLITE"), 0)));
+    t.add(QStringLiteral("track azel:200,40"), settled(face, face.track(QStringLiteral("azel:200,40"), 0)));
+    if (!runEventLoopUntil([&] { return state().tracking == u"tracking" && near(state().position, 200, 40); }, 30000)) {
+        t.lines << QStringLiteral("never tracked: ") + state().tracking;
+        return false;
+    }
+    t.lines << QStringLiteral("tracking %1").arg(state().trackingTarget);
+    t.add(QStringLiteral("untrack"), settled(face, face.untrack()));
+    if (!runEventLoopUntil([&] { return state().tracking == u"off"; }, 15000)) {
+        t.lines << QStringLiteral("never stopped tracking: ") + state().tracking;
+        return false;
+    }
+    t.add(QStringLiteral("untrack again"), settled(face, face.untrack()));
+    t.add(QStringLiteral("go to 100,30"), settled(face, face.gotoPosition(100, 30)));
+    if (!runEventLoopUntil([&] { return near(state().position, 100, 30); }, 30000)) {
+        t.lines << QStringLiteral("never arrived at 100,30");
+        return false;
+    }
+    // (The simulator is paced far faster than real time here: that a Stop
+    // stops a move short is the remote window's test, on the wall clock.)
+    t.add(QStringLiteral("stop"), settled(face, face.stop(QStringLiteral("the script"))));
+    if (!runEventLoopUntil([&] { return !state().moving; }, 15000)) {
+        t.lines << QStringLiteral("never came to rest");
+        return false;
+    }
+    t.add(QStringLiteral("park"), settled(face, face.park()));
+    return true;
+}
+
+} // namespace
+
+class StationFaceTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        slew::registerLinkSchemes();
+        QString error;
+        if (!m_broker.start(&error))
+            QSKIP(qPrintable(error));
+    }
+
+    void oneScriptThroughBothFaces()
+    {
+        QObject owner;
+        SimulatorPump pump;
+
+        // The station in this process, through the window's face.
+        Station *here = newSimulatedStation(&owner);
+        pump.follow(here->session());
+        here->connectRotators();
+        slew::station::LocalStationFace local(here);
+        QVERIFY(local.isLocal());
+        Transcript localSaw;
+        const bool localRan = runScript(local, localSaw);
+        QVERIFY2(localRan, qPrintable(localSaw.lines.join(u'\n')));
+
+        // The same kind of station on the broker, through a remote window's face.
+        Station *there = newSimulatedStation(&owner);
+        pump.follow(there->session());
+        there->connectRotators();
+        QString error;
+        const auto stationAddress = slew::remote::parseBrokerAddress(m_broker.url(QStringLiteral("station-mast")), &error);
+        QVERIFY2(stationAddress, qPrintable(error));
+        slew::station::RemoteOptions options;
+        options.broker = *stationAddress;
+        options.password = MosquittoBroker::password(QStringLiteral("station-mast"));
+        options.stationName = QStringLiteral("mast");
+        QVERIFY2(there->startRemote(options, &error), qPrintable(error));
+        const auto operatorAddress = slew::remote::parseBrokerAddress(m_broker.url(QStringLiteral("operator"), QStringLiteral("mast")), &error);
+        QVERIFY2(operatorAddress, qPrintable(error));
+        slew::remote::MqttSettings settings;
+        settings.broker = *operatorAddress;
+        settings.password = MosquittoBroker::password(QStringLiteral("operator"));
+        slew::remote::RemoteStation remote(settings, QStringLiteral("mast"));
+        QVERIFY2(remote.open(&error), qPrintable(error));
+        QVERIFY(!remote.isLocal());
+        TRY_VERIFY_WITH_TIMEOUT(remote.isLive(), 20000);
+        Transcript remoteSaw;
+        const bool remoteRan = runScript(remote, remoteSaw);
+        QVERIFY2(remoteRan, qPrintable(remoteSaw.lines.join(u'\n')));
+
+        QCOMPARE(remoteSaw.lines, localSaw.lines);
+        // The script saw refusals, not only successes: the gate's, the
+        // name's and an untrack with nothing tracked.
+        QCOMPARE(localSaw.lines.filter(QStringLiteral("refused: ")).size(), 3);
+        QVERIFY2(localSaw.lines.at(1).endsWith(localSaw.lines.at(0).section(QStringLiteral(": "), 1)),
+                 qPrintable(localSaw.lines.join(u'\n')));
+    }
+
+    void aRemoteIntentWithNoBrokerIsRefusedAtOnce()
+    {
+        slew::remote::MqttSettings settings;
+        QString error;
+        settings.broker = *slew::remote::parseBrokerAddress(m_broker.url(QStringLiteral("operator"), QStringLiteral("mast")), &error);
+        slew::remote::RemoteStation remote(settings, QStringLiteral("mast"));
+        const Outcome sent = remote.gotoPosition(40, 20); // never opened
+        QVERIFY(sent.isRefused());
+        QCOMPARE(sent.reason(), QStringLiteral("not connected to the broker"));
+    }
+
+private:
+    MosquittoBroker m_broker;
+};
+
+QTEST_GUILESS_MAIN(StationFaceTest)
+#include "tst_stationface.moc"
