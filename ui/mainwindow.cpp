@@ -86,8 +86,8 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     m_plot = new PolarPlotWidget;
     m_confirm = new TargetConfirmation;
     m_readout = new PositionReadout(session);
-    m_goto = new GotoPanel(session);
-    m_jog = new JogPad(session);
+    m_goto = new GotoPanel(station->face());
+    m_jog = new JogPad(station->face());
     m_stop = new StopButton([station](const QString &cause) { return bool(station->stop(cause)); });
     m_trackingLine = new TrackingLine(station);
     m_parkHome = new ParkHomePanel(session);

@@ -40,7 +40,7 @@ set(part_users
     # the window and what every page shares
     mainwindow.h mainwindow.cpp operatoractions.h eventlog.h stopbutton.h
     rotor/alignmentpanel.cpp rotor/configeditor.h rotor/connectionbar.h rotor/connectionbar.cpp
-    rotor/gotopanel.h rotor/jogpad.h rotor/parkhomepanel.h rotor/positionreadout.h
+    rotor/parkhomepanel.h rotor/positionreadout.h
     rotor/presetpanel.h rotor/rotorspanel.cpp rotor/rotortile.cpp rotor/trafficconsole.h
     tracking/schedulepanel.cpp tracking/timecontroller.cpp tracking/trackingline.h
     tracking/trackingline.cpp tracking/trackingpanel.h tracking/trackingpanel.cpp
@@ -49,7 +49,7 @@ set(part_users
     radio/radiolinkbox.h radio/radiolinkbox.cpp radio/radiopanel.cpp radio/radiopassbandtuner.cpp
     radio/radioplanform.cpp radio/radioreadout.cpp radio/radiovfochoice.cpp
     telemetry/statuslanes.cpp telemetry/telemetryrecorder.h
-    remote/remotebanner.cpp remote/remotecontrols.cpp remote/remoteopener.cpp
+    remote/remotebanner.cpp remote/remoteopener.cpp
     remote/remotestationwindow.cpp remote/stationnetworkwindow.cpp
     # the setup wizard talks to the controller's session itself
     wizard/calibrationpage.h wizard/connectpage.cpp wizard/directioncheck.h wizard/directioncheck.cpp

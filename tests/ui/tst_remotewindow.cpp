@@ -25,6 +25,8 @@
 #include "remote/remotescheduleview.h"
 #include "tracking/scheduletimeline.h"
 #include "remote/remotestationwindow.h"
+#include "rotor/gotopanel.h"
+#include "rotor/jogpad.h"
 #include "tracking/trackingline.h"
 #include "remote/stationnetworkwindow.h"
 #include "remote/stationtile.h"
@@ -99,16 +101,17 @@ private slots:
 
         // Out of the travel: refused here in the station's gate's words, and
         // not sent.
-        window->controls()->setFields(999, 30);
-        QVERIFY(!window->controls()->findChild<QPushButton *>(QStringLiteral("remoteGo"))->isEnabled());
-        QVERIFY(!window->controls()->go());
+        // The same go-to panel as the local window's, on the station's face.
+        window->gotoPanel()->setFields(999, 30);
+        QVERIFY(!window->gotoPanel()->findChild<QPushButton *>(QStringLiteral("gotoButton"))->isEnabled());
+        QVERIFY(!window->gotoPanel()->go());
         const QString gate = slew::model::MoveGate(slew::model::RotatorLimits{0, 450, 0, 180}).pointing(999, 30, 200).refusal;
-        QCOMPARE(window->controls()->message(), QStringLiteral("go to: %1").arg(gate));
+        QCOMPARE(gotoMessage(window), gate);
 
         // A go-to moves the station's rotator; its reply comes back.
         QSignalSpy replies(remote, &RemoteStation::replied);
-        window->controls()->setFields(215, 25);
-        QVERIFY(window->controls()->go());
+        window->gotoPanel()->setFields(215, 25);
+        QVERIFY(window->gotoPanel()->go());
         QTRY_VERIFY_WITH_TIMEOUT(!replies.isEmpty(), 10000);
         QCOMPARE(replies.first().at(2).toBool(), true);
         QTRY_VERIFY_WITH_TIMEOUT(remote->state()->position && std::abs(remote->state()->position->x() - 215) < 1
@@ -116,8 +119,8 @@ private slots:
                                  30000);
 
         // Stop, while it moves: it stops short.
-        window->controls()->setFields(300, 45);
-        QVERIFY(window->controls()->go());
+        window->gotoPanel()->setFields(300, 45);
+        QVERIFY(window->gotoPanel()->go());
         QTRY_VERIFY_WITH_TIMEOUT(remote->state()->moving, 10000);
         if (onX11()) // on its way, with the target shown: README's picture
             checkLayoutAndPicture(window, QStringLiteral("remote-window.png"));
@@ -126,7 +129,7 @@ private slots:
         QVERIFY2(remote->state()->position->x() < 290, qPrintable(QString::number(remote->state()->position->x())));
 
         // A jog turns while the button is held, and stops on release.
-        auto *right = window->controls()->findChild<QPushButton *>(QStringLiteral("remoteJogRight"));
+        auto *right = window->jogPad()->findChild<QPushButton *>(QStringLiteral("jogRight"));
         const double before = remote->state()->position->x();
         QTest::mousePress(right, Qt::LeftButton);
         QTRY_VERIFY_WITH_TIMEOUT(remote->state()->moving && remote->state()->position->x() > before + 1, 10000);
@@ -142,16 +145,16 @@ private slots:
         RemoteStation *remote = window->station();
         QTRY_VERIFY_WITH_TIMEOUT(remote->isLive(), 20000);
         const double az = remote->state()->position->x();
-        window->controls()->setFields(az + 20, 30);
-        QVERIFY(window->controls()->go());
-        QTRY_VERIFY_WITH_TIMEOUT(window->controls()->message().contains(QStringLiteral("this account may only watch")), 10000);
-        QVERIFY2(window->controls()->message().contains(QStringLiteral("Not authorized")), qPrintable(window->controls()->message()));
+        window->gotoPanel()->setFields(az + 20, 30);
+        QVERIFY(window->gotoPanel()->go());
+        QTRY_VERIFY_WITH_TIMEOUT(gotoMessage(window).contains(QStringLiteral("this account may only watch")), 10000);
+        QVERIFY2(gotoMessage(window).contains(QStringLiteral("Not authorized")), qPrintable(gotoMessage(window)));
         // Nothing moved: the station never heard it. Three samples later it
         // is where it was.
         QSignalSpy samples(remote, &RemoteStation::telemetryReceived);
         QTRY_VERIFY_WITH_TIMEOUT(samples.size() >= 3, 20000);
         for (const QList<QVariant> &sample : std::as_const(samples))
-            QVERIFY(std::abs(*sample.at(0).value<slew::remote::TelemetrySample>().az - az) < 0.2);
+            QVERIFY(std::abs(*sample.at(0).value<slew::face::TelemetrySample>().az - az) < 0.2);
         QVERIFY(!remote->state()->moving);
         delete window;
     }
@@ -336,6 +339,11 @@ private:
         return {QStringLiteral("--connect"), uri, QStringLiteral("--limits"), QStringLiteral("0:450,0:180"),
                 QStringLiteral("--mqtt"), m_broker.url(QStringLiteral("station-") + name), QStringLiteral("--station-name"),
                 name, QStringLiteral("--mqtt-password-file"), m_broker.passwordFile(QStringLiteral("station-") + name)};
+    }
+
+    static QString gotoMessage(RemoteStationWindow *window)
+    {
+        return window->gotoPanel()->findChild<QLabel *>(QStringLiteral("gotoMessage"))->text();
     }
 
     RemoteStationWindow *open(const QString &user, const QString &name)

@@ -1,22 +1,23 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The operator's controls for a remote station: go-to fields checked
-// against the travel it published as the operator types, a jog pad whose
-// buttons hold a lease while pressed (remote/remotestation.h), Park, Home,
-// and a target to track. What each command came to (the station's reply,
-// in the gate's own words, or the broker's refusal) shows under them.
-// Everything but Stop (which is elsewhere, and always works) is off while
-// the station is not live.
+// Park, Home and a target to track by name, for a station seen from afar,
+// through its face (face/stationface.h): what each came to (done, the
+// station's answer in its own words, or the broker's refusal) shows under
+// them. Go-to and jog are the local window's own panels (rotor/gotopanel.h,
+// rotor/jogpad.h). Everything but Stop (which is elsewhere, and always
+// works) is off while the station is not live.
 
+#include "face/outcome.h"
+
+#include <QHash>
 #include <QWidget>
 
-class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
 class QPushButton;
 
-namespace slew::remote {
-class RemoteStation;
+namespace slew::face {
+class StationFace;
 }
 
 namespace slew::ui {
@@ -24,32 +25,26 @@ namespace slew::ui {
 class RemoteControls : public QWidget {
     Q_OBJECT
 public:
-    explicit RemoteControls(remote::RemoteStation *station, QWidget *parent = nullptr);
+    explicit RemoteControls(face::StationFace *station, QWidget *parent = nullptr);
 
     QString message() const;
 
 public slots:
-    void setFields(double az, double el);
-    bool go();
     void setLive(bool live);
     void showMessage(const QString &text, bool problem);
 
 private:
-    QPushButton *jogButton(const QString &text, const QString &name, double az, double el);
-    void revalidate();
+    // What an intent came to; an answer still to come is waited for by id.
+    void said(const QString &what, const face::Outcome &outcome);
 
-    remote::RemoteStation *m_station;
-    QLineEdit *m_az;
-    QLineEdit *m_el;
-    QPushButton *m_go;
-    QDoubleSpinBox *m_speed;
-    QList<QPushButton *> m_jog;
+    face::StationFace *m_station;
     QPushButton *m_park;
     QPushButton *m_home;
     QLineEdit *m_target;
     QPushButton *m_track;
     QPushButton *m_untrack;
     QLabel *m_message;
+    QHash<QString, QString> m_awaiting; // id -> what was asked
 };
 
 } // namespace slew::ui

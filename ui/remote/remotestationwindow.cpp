@@ -9,6 +9,8 @@
 #include "rotor/passoverlay.h"
 #include "remote/remotereadout.h"
 #include "remote/remotescheduleview.h"
+#include "rotor/gotopanel.h"
+#include "rotor/jogpad.h"
 #include "stopbutton.h"
 #include "telemetry/telemetrycharts.h"
 #include "widgets/titledgroup.h"
@@ -74,6 +76,9 @@ RemoteStationWindow::RemoteStationWindow(RemoteStation *station, QWidget *parent
     m_alarms = new AlarmBanner;
     m_plot = new PolarPlotWidget;
     m_readout = new RemoteReadout;
+    // Go-to and jog are the local window's own panels, on the station's face.
+    m_goto = new GotoPanel(station);
+    m_jog = new JogPad(station);
     m_controls = new RemoteControls(station);
     // Stop always sends, live or not: a broker that is back takes it at once.
     // The station logs "a stop over MQTT": the cause stays here.
@@ -97,6 +102,8 @@ RemoteStationWindow::RemoteStationWindow(RemoteStation *station, QWidget *parent
     auto *columnLayout = new QVBoxLayout(column);
     columnLayout->setContentsMargins(4, 0, 4, 0);
     columnLayout->addWidget(titledGroup(tr("Position"), m_readout));
+    columnLayout->addWidget(titledGroup(tr("Go to"), m_goto));
+    columnLayout->addWidget(titledGroup(tr("Jog (hold)"), m_jog));
     columnLayout->addWidget(titledGroup(tr("Control"), m_controls));
     // As in the local window: what the station's tracking does, beside STOP.
     auto *stopRow = new QHBoxLayout;
@@ -139,7 +146,7 @@ RemoteStationWindow::RemoteStationWindow(RemoteStation *station, QWidget *parent
             m_readout->showPosition(*s.az, *s.el);
         }
     });
-    connect(m_plot, &PolarPlotWidget::targetPicked, m_controls, &RemoteControls::setFields);
+    connect(m_plot, &PolarPlotWidget::targetPicked, m_goto, &GotoPanel::setFields);
     connect(station, &RemoteStation::planChanged, this, &RemoteStationWindow::showPlan);
     connect(station, &RemoteStation::scheduleChanged, this, [this](const face::StationSchedule &s) {
         m_schedule->showSchedule(s, QDateTime::currentMSecsSinceEpoch());
@@ -148,6 +155,7 @@ RemoteStationWindow::RemoteStationWindow(RemoteStation *station, QWidget *parent
     // timer of its own.
     connect(station, &RemoteStation::stateChanged, this,
             [this] { m_schedule->showTime(QDateTime::currentMSecsSinceEpoch()); });
+    connect(m_stop, &StopButton::stopped, m_jog, &JogPad::releaseAll);
     connect(m_stop, &StopButton::stopped, station, [station] { station->endJog({}); });
     connect(m_stop, &StopButton::stopped, this, [this] { log(false, tr("Stop sent")); });
     connect(station, &RemoteStation::replied, this, [this](const QString &, const QString &command, bool ok, const QString &error) {
@@ -231,6 +239,9 @@ void RemoteStationWindow::showLive(bool live)
 {
     m_readout->setLive(live);
     m_controls->setLive(live);
+    m_jog->setEnabled(live);
+    if (!live)
+        m_jog->releaseAll();
     if (const auto &s = m_station->state(); s && s->position)
         m_plot->setActual(s->position->x(), s->position->y(), s->stale || !live);
     if (!live) {

@@ -26,6 +26,8 @@ namespace slew::ui {
 
 class AlarmBanner;
 class EventLog;
+class GotoPanel;
+class JogPad;
 class PolarPlotWidget;
 class RemoteBanner;
 class RemoteControls;
@@ -47,6 +49,8 @@ public:
     AlarmBanner *alarmBanner() const { return m_alarms; }
     PolarPlotWidget *polarPlot() const { return m_plot; }
     RemoteReadout *readout() const { return m_readout; }
+    GotoPanel *gotoPanel() const { return m_goto; }
+    JogPad *jogPad() const { return m_jog; }
     RemoteControls *controls() const { return m_controls; }
     StopButton *stopButton() const { return m_stop; }
     TrackingLine *trackingLine() const { return m_trackingLine; }
@@ -65,6 +69,8 @@ private:
     AlarmBanner *m_alarms;
     PolarPlotWidget *m_plot;
     RemoteReadout *m_readout;
+    GotoPanel *m_goto;
+    JogPad *m_jog;
     RemoteControls *m_controls;
     StopButton *m_stop;
     TrackingLine *m_trackingLine;

@@ -36,7 +36,7 @@ void markField(QLineEdit *field, bool bad)
 
 } // namespace
 
-GotoPanel::GotoPanel(session::RotatorSession *session, QWidget *parent) : QWidget(parent), m_session(session)
+GotoPanel::GotoPanel(face::StationFace *station, QWidget *parent) : QWidget(parent), m_station(station)
 {
     setObjectName(QStringLiteral("gotoPanel"));
     m_az = new QLineEdit;
@@ -72,15 +72,34 @@ GotoPanel::GotoPanel(session::RotatorSession *session, QWidget *parent) : QWidge
         });
     }
     connect(m_go, &QPushButton::clicked, this, &GotoPanel::go);
-    connect(session, &session::RotatorSession::stateChanged, this, &GotoPanel::revalidate);
-    connect(session, &session::RotatorSession::profileChanged, this, &GotoPanel::followAxes);
+    connect(station, &face::StationFace::stateChanged, this, [this](const face::StationState &s) {
+        if (s.azimuthOnly != m_azimuthOnly)
+            followAxes();
+        else
+            revalidate();
+    });
+    connect(station, &face::StationFace::liveChanged, this, &GotoPanel::revalidate);
+    connect(station, &face::StationFace::answered, this, [this](const QString &id, const face::Outcome &outcome) {
+        if (id != m_awaiting)
+            return;
+        m_awaiting.clear();
+        if (outcome.isRefused())
+            showRefusal(outcome.reason());
+    });
     followAxes();
+}
+
+void GotoPanel::showRefusal(const QString &why)
+{
+    m_message->setText(why);
+    m_message->setStyleSheet(refusedText());
 }
 
 void GotoPanel::followAxes()
 {
     // An azimuth-only rotator: elevation is 0 and not the operator's to set.
-    const bool azimuthOnly = m_session->isAzimuthOnly();
+    const std::optional<face::StationState> state = m_station->state();
+    const bool azimuthOnly = m_azimuthOnly = state && state->azimuthOnly;
     if (azimuthOnly)
         m_el->setText(QStringLiteral("0"));
     m_el->setEnabled(!azimuthOnly);
@@ -103,10 +122,11 @@ GotoPanel::Checked GotoPanel::check() const
         c.message = !az ? tr("Azimuth is not a number.") : tr("Elevation is not a number.");
         return c;
     }
-    // The session's gate, as it will decide when Go is pressed.
-    const model::MoveCheck check = m_session->previewPointing(*az, *el);
+    // The station's gate, as it will decide when Go is pressed.
+    const model::MoveCheck check = m_station->previewPointing(*az, *el);
     if (!check.allowed()) {
-        c.elevationBad = !m_session->moveGate().elevation(*el).allowed();
+        const std::optional<face::StationState> state = m_station->state();
+        c.elevationBad = state && !model::MoveGate(state->limits).elevation(*el).allowed();
         c.azimuthBad = !c.elevationBad;
         c.message = check.refusal;
         return c;
@@ -127,7 +147,8 @@ void GotoPanel::revalidate()
     markField(m_el, c.elevationBad);
     m_message->setText(filled ? c.message : QString());
     m_message->setStyleSheet(ok ? QString() : refusedText());
-    m_go->setEnabled(ok && m_session->isConnected());
+    const std::optional<face::StationState> state = m_station->state();
+    m_go->setEnabled(ok && m_station->isLive() && state && state->link == u"connected");
 }
 
 void GotoPanel::setFields(double az, double el)
@@ -146,13 +167,16 @@ bool GotoPanel::go()
     }
     // The bearing as typed: the gate decides again at sending time, from
     // where the rotator is then, as the preview did from where it was.
-    const session::CommandResult sent = m_session->gotoPosition(*parseAngle(m_az->text()), *c.elevation);
-    if (!sent) {
-        m_message->setText(sent.refusal);
-        m_message->setStyleSheet(refusedText());
+    const face::Outcome sent = m_station->gotoPosition(*parseAngle(m_az->text()), *c.elevation);
+    if (sent.isRefused()) {
+        showRefusal(sent.reason());
         return false;
     }
-    const QPointF target(m_session->targetAzimuth(), m_session->targetElevation());
+    m_awaiting = sent.id();
+    // Where it goes: the station's target once it has one, else the
+    // position its gate previewed.
+    const std::optional<face::StationState> state = m_station->state();
+    const QPointF target = sent.isDone() && state && state->target ? *state->target : QPointF(*c.azimuth, *c.elevation);
     emit moveSent(tr("go to %1").arg(describePosition(target)), target);
     return true;
 }

@@ -1,9 +1,11 @@
 #pragma once
-// Azimuth and elevation fields checked against the profile's limits while the
-// operator types. A position outside them is shown as such and the Go button
-// stays off, so nothing out of range is ever sent.
+// Azimuth and elevation fields checked against the station's travel while
+// the operator types, by the station's own gate as its face previews it
+// (face/stationface.h), here or on a broker alike. A position outside it
+// is shown as such and the Go button stays off, so nothing out of range is
+// ever sent; what the station answers shows under the fields.
 
-#include "session/rotatorsession.h"
+#include "face/stationface.h"
 
 #include <QPointF>
 #include <QWidget>
@@ -19,7 +21,7 @@ namespace slew::ui {
 class GotoPanel : public QWidget {
     Q_OBJECT
 public:
-    explicit GotoPanel(session::RotatorSession *session, QWidget *parent = nullptr);
+    explicit GotoPanel(face::StationFace *station, QWidget *parent = nullptr);
 
     struct Checked {
         std::optional<double> azimuth; // the position the rotator would be sent to
@@ -45,8 +47,11 @@ public slots:
 private:
     void followAxes(); // an azimuth-only rotator fixes elevation at 0
     void revalidate();
+    void showRefusal(const QString &why);
 
-    session::RotatorSession *m_session;
+    face::StationFace *m_station;
+    bool m_azimuthOnly = false;
+    QString m_awaiting; // the id of the go-to the station has yet to answer
     QLineEdit *m_az;
     QLineEdit *m_el;
     QPushButton *m_go;

@@ -1,21 +1,16 @@
 #include "rotor/jogpad.h"
 
-#include "protocol/dialect.h"
-
 #include <QDoubleSpinBox>
 #include <QGridLayout>
 #include <QPushButton>
 
 namespace slew::ui {
 
-using session::Axes;
-using session::Axis;
-
 namespace {
 
-Axis axisOf(JogPad::Direction d)
+bool isAzimuth(JogPad::Direction d)
 {
-    return d == JogPad::Left || d == JogPad::Right ? Axis::Azimuth : Axis::Elevation;
+    return d == JogPad::Left || d == JogPad::Right;
 }
 
 QString directionName(JogPad::Direction d)
@@ -33,14 +28,9 @@ QString directionName(JogPad::Direction d)
     return JogPad::tr("elevation down");
 }
 
-double signOf(JogPad::Direction d)
-{
-    return d == JogPad::Right || d == JogPad::Up ? 1.0 : -1.0;
-}
-
 } // namespace
 
-JogPad::JogPad(session::RotatorSession *session, QWidget *parent) : QWidget(parent), m_session(session)
+JogPad::JogPad(face::StationFace *station, QWidget *parent) : QWidget(parent), m_station(station)
 {
     setObjectName(QStringLiteral("jogPad"));
     m_speed = new QDoubleSpinBox;
@@ -61,29 +51,31 @@ JogPad::JogPad(session::RotatorSession *session, QWidget *parent) : QWidget(pare
     grid->addWidget(makeButton(Down, QStringLiteral("▼"), QStringLiteral("jogDown")), 2, 1);
     // How to jog is said in the group's title (the window's): a line of its
     // own here cost the height a 720-pixel screen does not have.
-    connect(session, &session::RotatorSession::profileChanged, this, &JogPad::followAxes);
-    connect(session, &session::RotatorSession::profileChanged, this, &JogPad::followSpeed);
-    connect(session, &session::RotatorSession::capabilitiesChanged, this, &JogPad::followSpeed);
-    followAxes();
-    followSpeed();
+    connect(station, &face::StationFace::stateChanged, this, &JogPad::follow);
+    follow(station->state().value_or(face::StationState{}));
 }
 
-void JogPad::followSpeed()
+void JogPad::follow(const face::StationState &state)
+{
+    if (state.azimuthOnly != m_azimuthOnly)
+        followAxes(state.azimuthOnly);
+    followSpeed(state);
+}
+
+void JogPad::followSpeed(const face::StationState &state)
 {
     // Until the probe has answered the box stays usable: most dialects take
     // a speed, and greying it out on every connect would only flicker.
-    const auto &caps = m_session->capabilities();
-    const bool ownSpeed = caps.probed && !caps.velocity;
+    const bool ownSpeed = !state.jogSpeed;
     m_speed->setEnabled(!ownSpeed);
-    m_speed->setToolTip(ownSpeed ? tr("%1 has no speed command: the controller jogs at its own speed.")
-                                       .arg(protocol::dialectName(m_session->profile().dialect))
+    m_speed->setToolTip(ownSpeed ? tr("%1 has no speed command: the controller jogs at its own speed.").arg(state.dialect)
                                  : tr("Jog speed"));
 }
 
-void JogPad::followAxes()
+void JogPad::followAxes(bool azimuthOnly)
 {
     // An azimuth-only rotator has nothing to jog up or down.
-    const bool azimuthOnly = m_session->isAzimuthOnly();
+    m_azimuthOnly = azimuthOnly;
     for (Direction d : {Up, Down}) {
         if (azimuthOnly)
             release(d);
@@ -113,14 +105,23 @@ double JogPad::speed() const
     return m_speed->value();
 }
 
+double JogPad::axisSpeed(Direction negative, Direction positive) const
+{
+    const int axis = isAzimuth(negative) ? 0 : 1;
+    const bool forward = m_held[positive] && (!m_held[negative] || m_lastPressed[axis] == positive);
+    const bool back = m_held[negative] && !forward;
+    return forward ? speed() : back ? -speed() : 0.0;
+}
+
 void JogPad::press(Direction d)
 {
     if (m_held[d] || !m_buttons[d]->isEnabled()) // the arrow keys come here too
         return;
     m_held[d] = true;
+    m_lastPressed[isAzimuth(d) ? 0 : 1] = d;
     m_buttons[d]->setDown(true);
-    m_sent[d] = bool(m_session->moveAxis(axisOf(d), signOf(d) * speed()));
-    if (m_sent[d])
+    const face::Outcome sent = m_station->startJog(axisSpeed(Left, Right), axisSpeed(Down, Up));
+    if (sent.isAccepted())
         emit jogStarted(tr("jog %1 at %2°/s").arg(directionName(d)).arg(speed(), 0, 'f', 1));
 }
 
@@ -130,15 +131,14 @@ void JogPad::release(Direction d)
         return;
     m_held[d] = false;
     m_buttons[d]->setDown(false);
-    m_sent[d] = false;
-    // The opposite direction on the same axis may still be held: resume it.
-    const Direction opposite = Direction(d ^ 1);
-    if (m_held[opposite]) {
-        m_session->moveAxis(axisOf(opposite), signOf(opposite) * speed());
+    // The opposite direction on the same axis, or the other axis, may still
+    // be held: they go on.
+    const double az = axisSpeed(Left, Right), el = axisSpeed(Down, Up);
+    if (az != 0 || el != 0) {
+        m_station->startJog(az, el);
         return;
     }
-    m_session->stop(tr("jog %1 released").arg(directionName(d)),
-                    axisOf(d) == Axis::Azimuth ? Axes::Azimuth : Axes::Elevation);
+    m_station->endJog(tr("jog %1 released").arg(directionName(d)));
 }
 
 void JogPad::releaseAll()
