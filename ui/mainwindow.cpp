@@ -85,11 +85,11 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     m_recorder = new TelemetryRecorder(session, this);
     m_plot = new PolarPlotWidget;
     m_confirm = new TargetConfirmation;
-    m_readout = new PositionReadout(session);
+    m_readout = new PositionReadout(station->face());
     m_goto = new GotoPanel(station->face());
     m_jog = new JogPad(station->face());
     m_stop = new StopButton([station](const QString &cause) { return bool(station->stop(cause)); });
-    m_trackingLine = new TrackingLine(station);
+    m_trackingLine = new TrackingLine(station->face());
     m_parkHome = new ParkHomePanel(session);
     m_presets = new PresetPanel(session);
     m_charts = new TelemetryCharts(&m_recorder->history());

@@ -46,6 +46,10 @@ public:
     virtual std::optional<StationState> state() const = 0;
     virtual std::optional<StationPlan> plan() const = 0;
     virtual std::optional<StationSchedule> schedule() const = 0;
+    // The station's clock now, in Unix milliseconds: the wall clock, or a
+    // rehearsal's time. A face counts down by it. None before a remote
+    // station's first state.
+    virtual std::optional<qint64> stationClockMs() const = 0;
     // What the station's gate would say to a go-to, for fields checked as
     // the operator types. The station's own gate has the last word.
     virtual model::MoveCheck previewPointing(double az, double el) const = 0;

@@ -30,6 +30,11 @@ struct StationState {
     bool stale = true;
     std::optional<QPointF> target;
     bool moving = false;
+    // What the controller says each axis is doing, in words ("moving,
+    // pointing"): none from a controller that reports no status, and no
+    // elevation from one whose status is not per axis (the azimuth's then
+    // stands for both).
+    std::optional<QString> azimuthStatus, elevationStatus;
     model::RotatorLimits limits;
     std::optional<QPointF> park;
     bool azimuthOnly = false;

@@ -65,7 +65,7 @@ public:
     // The station's clock now, in Unix milliseconds: the wall clock, or a
     // rehearsal's time carried on from its last state at its rate. None
     // before the first state.
-    std::optional<qint64> stationClockMs() const;
+    std::optional<qint64> stationClockMs() const override;
     // Milliseconds since the last state arrived; -1 before the first.
     qint64 stateAgeMs() const { return m_stateAge.isValid() ? m_stateAge.elapsed() : -1; }
     // Connected to the broker, the station online, and a state not older

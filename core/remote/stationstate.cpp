@@ -62,6 +62,10 @@ QByteArray encodeStationState(const face::StationState &s)
     o.insert(QStringLiteral("stale"), s.stale);
     putPoint(o, "target_az", "target_el", s.target);
     o.insert(QStringLiteral("moving"), s.moving);
+    if (s.azimuthStatus)
+        o.insert(QStringLiteral("az_status"), *s.azimuthStatus);
+    if (s.elevationStatus)
+        o.insert(QStringLiteral("el_status"), *s.elevationStatus);
     o.insert(QStringLiteral("az_min"), s.limits.azMin);
     o.insert(QStringLiteral("az_max"), s.limits.azMax);
     o.insert(QStringLiteral("el_min"), s.limits.elMin);
@@ -115,6 +119,8 @@ std::optional<face::StationState> parseStationState(const QByteArray &payload, Q
     s.stale = f.flag(QStringLiteral("stale")).value_or(true);
     s.target = takePoint(f, "target_az", "target_el");
     s.moving = f.flag(QStringLiteral("moving")).value_or(false);
+    s.azimuthStatus = f.text(QStringLiteral("az_status"), 100);
+    s.elevationStatus = f.text(QStringLiteral("el_status"), 100);
     s.limits.azMin = f.number(QStringLiteral("az_min"), kAzimuth, true).value_or(0);
     s.limits.azMax = f.number(QStringLiteral("az_max"), kAzimuth, true).value_or(360);
     s.limits.elMin = f.number(QStringLiteral("el_min"), kElevation, true).value_or(0);

@@ -7,8 +7,10 @@
 #include "stationstatereader.h"
 #include "targetbyname.h"
 
+#include "face/trackingnow.h"
 #include "session/rotatorsession.h"
 #include "tracking/passrunner.h"
+#include "tracking/stationclock.h"
 
 namespace slew::station {
 
@@ -27,11 +29,10 @@ void coalesce(QTimer &due)
 LocalStationFace::LocalStationFace(Station *station, QObject *parent)
     : face::StationFace(parent), m_station(station), m_reader(new StationStateReader(station, this))
 {
-    for (QTimer *due : {&m_stateDue, &m_telemetryDue, &m_planDue}) {
+    for (QTimer *due : {&m_telemetryDue, &m_planDue}) {
         due->setSingleShot(true);
         due->setInterval(0);
     }
-    connect(&m_stateDue, &QTimer::timeout, this, [this] { emit stateChanged(m_reader->state()); });
     connect(&m_telemetryDue, &QTimer::timeout, this, [this] {
         emit telemetryReceived(m_reader->sample());
         m_reader->forgetMeasurements();
@@ -40,7 +41,9 @@ LocalStationFace::LocalStationFace(Station *station, QObject *parent)
         emit planChanged(planNow(*m_station));
         emit scheduleChanged(scheduleNow(*m_station));
     });
-    connect(m_reader, &StationStateReader::stateChanged, this, [this] { coalesce(m_stateDue); });
+    // The state is said at once: a widget shows what the operator just did
+    // (a target set, a Stop) before the next key.
+    connect(m_reader, &StationStateReader::stateChanged, this, [this] { emit stateChanged(m_reader->state()); });
     connect(m_reader, &StationStateReader::telemetryChanged, this, [this] { coalesce(m_telemetryDue); });
     const auto plans = [this] { coalesce(m_planDue); };
     if (tracking::PassRunner *runner = m_station->passRunner()) {
@@ -74,6 +77,11 @@ std::optional<face::StationPlan> LocalStationFace::plan() const
 std::optional<face::StationSchedule> LocalStationFace::schedule() const
 {
     return scheduleNow(*m_station);
+}
+
+std::optional<qint64> LocalStationFace::stationClockMs() const
+{
+    return face::unixMsOfJulian(m_station->clock()->nowJulian());
 }
 
 model::MoveCheck LocalStationFace::previewPointing(double az, double el) const

@@ -2,8 +2,9 @@
 #pragma once
 // The Station in this process as a face sees it (face/stationface.h): the
 // operator at the station. Its state is read as the broker's is
-// (stationstatereader.h, stationplanreader.h), and said once per turn of
-// the event loop however many parts changed in it; its intents go to the
+// (stationstatereader.h, stationplanreader.h) and said as it changes (the
+// plan, schedule and telemetry once per turn of the event loop however
+// many parts changed in it); its intents go to the
 // Station and its first rotor's session, through the same gate and the same
 // rules as every other path to the wire, and are answered at once.
 //
@@ -32,6 +33,7 @@ public:
     std::optional<face::StationState> state() const override;
     std::optional<face::StationPlan> plan() const override;
     std::optional<face::StationSchedule> schedule() const override;
+    std::optional<qint64> stationClockMs() const override;
     model::MoveCheck previewPointing(double az, double el) const override;
 
     face::Outcome gotoPosition(double az, double el) override;
@@ -48,7 +50,7 @@ private:
     StationStateReader *m_reader;
     double m_jogAz = 0, m_jogEl = 0; // what a jog turns each axis at; 0: not
     // Changes that come in one turn of the event loop are said once.
-    QTimer m_stateDue, m_telemetryDue, m_planDue;
+    QTimer m_telemetryDue, m_planDue;
 };
 
 } // namespace slew::station

@@ -4,6 +4,7 @@
 #include "schedulerunner.h"
 #include "station.h"
 
+#include "face/trackingnow.h"
 #include "session/rotatorsession.h"
 #include "tracking/passrunner.h"
 #include "tracking/stationclock.h"
@@ -13,15 +14,6 @@
 #include <cmath>
 
 namespace slew::station {
-namespace {
-
-qint64 unixMs(double julian)
-{
-    return qint64(std::llround((julian - 2440587.5) * 86400000.0));
-}
-
-} // namespace
-
 face::StationPlan planNow(const Station &station)
 {
     face::StationPlan out;
@@ -35,9 +27,9 @@ face::StationPlan planNow(const Station &station)
     const sky::Pass &pass = *runner->pass();
     out.target = runner->target().name().left(100);
     out.norad = pass.catalogueNumber;
-    out.aosMs = unixMs(pass.aos.julian);
-    out.tcaMs = unixMs(pass.tca.julian);
-    out.losMs = unixMs(pass.los.julian);
+    out.aosMs = face::unixMsOfJulian(pass.aos.julian);
+    out.tcaMs = face::unixMsOfJulian(pass.tca.julian);
+    out.losMs = face::unixMsOfJulian(pass.los.julian);
     out.maxElevation = pass.maxElevationDeg();
     const tracking::PassPlan &plan = tracker.plan();
     if (plan.isValid())
@@ -60,7 +52,7 @@ face::StationSchedule scheduleNow(const Station &station)
     face::StationSchedule out;
     out.unixMs = QDateTime::currentMSecsSinceEpoch();
     const tracking::StationClock *clock = station.clock();
-    out.clockMs = unixMs(clock->nowJulian());
+    out.clockMs = face::unixMsOfJulian(clock->nowJulian());
     out.clockRate = clock->rate();
     const ScheduleRunner *runner = station.scheduleRunner();
     if (!runner || !runner->isRunning())

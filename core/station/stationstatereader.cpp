@@ -36,11 +36,6 @@ QString linkName(RotatorSession::State state)
     }
 }
 
-qint64 julianToUnixMs(double julian)
-{
-    return qint64(std::llround((julian - 2440587.5) * 86400000.0));
-}
-
 std::optional<double> known(double value)
 {
     return std::isfinite(value) ? std::optional<double>(value) : std::nullopt;
@@ -79,8 +74,11 @@ StationStateReader::StationStateReader(Station *station, QObject *parent) : QObj
     connect(s, &RotatorSession::statusChanged, this, [this](session::StatusWord w) {
         if (w.valid)
             m_sample.gs = w.raw;
-        if (w.anyMoving() != m_moving) {
-            m_moving = w.anyMoving();
+        // The state carries each axis' status in words: a change of any bit
+        // is a change of the state (moving, pointing, an error).
+        const std::optional<quint16> status = w.valid ? std::optional<quint16>(w.raw) : std::nullopt;
+        if (status != m_status) {
+            m_status = status;
             emit stateChanged(false);
         }
         emit telemetryChanged();
@@ -139,7 +137,7 @@ face::StationState StationStateReader::state() const
     face::StationState out;
     out.unixMs = QDateTime::currentMSecsSinceEpoch();
     if (const tracking::StationClock *clock = m_station->clock(); clock->isRehearsal()) {
-        out.clockMs = julianToUnixMs(clock->nowJulian());
+        out.clockMs = face::unixMsOfJulian(clock->nowJulian());
         out.clockRate = clock->isPaused() ? 0.0 : clock->rate();
     }
     out.link = linkName(s->state());
@@ -149,6 +147,11 @@ face::StationState StationStateReader::state() const
     out.stale = s->positionStale() || !s->isConnected();
     out.target = m_target;
     out.moving = s->status().anyMoving();
+    if (const session::StatusWord status = s->status(); status.valid && s->isConnected()) {
+        out.azimuthStatus = session::describeAxisStatus(status.azimuth());
+        if (status.isPerAxis())
+            out.elevationStatus = session::describeAxisStatus(status.elevation());
+    }
     out.limits = s->moveGate().limits();
     if (s->parkKnown())
         out.park = QPointF(s->parkAzimuth(), s->parkElevation());
@@ -160,13 +163,14 @@ face::StationState StationStateReader::state() const
     out.jogSpeed = !caps.probed || caps.velocity;
     out.canHome = !caps.probed || caps.reset;
     out.parkCommand = protocol::dialectSupports(dialect, protocol::Op::Park);
-    if (const TrackingNow followed = trackingNow(m_station->passRunner()); followed.phase != TrackingNow::Phase::Off) {
-        out.tracking = phaseWord(followed.phase);
+    if (const face::TrackingNow followed = trackingNow(m_station->passRunner());
+        followed.phase != face::TrackingNow::Phase::Off) {
+        out.tracking = face::phaseWord(followed.phase);
         out.trackingTarget = followed.target.left(100);
         out.trackingNorad = followed.norad;
         if (followed.pass) {
-            out.passAosMs = julianToUnixMs(followed.pass->aos.julian);
-            out.passLosMs = julianToUnixMs(followed.pass->los.julian);
+            out.passAosMs = face::unixMsOfJulian(followed.pass->aos.julian);
+            out.passLosMs = face::unixMsOfJulian(followed.pass->los.julian);
             out.passMaxElevation = followed.pass->maxElevationDeg();
         }
     }

@@ -41,7 +41,7 @@ private:
     Station *m_station;
     std::optional<QPointF> m_target; // the target shown; cleared as the window clears it
     QString m_linkDetail;            // why the link is down, when it is
-    bool m_moving = false;           // as the last status said
+    std::optional<quint16> m_status; // the last status word, when valid
     face::TelemetrySample m_sample;
 };
 

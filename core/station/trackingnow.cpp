@@ -5,8 +5,9 @@
 
 namespace slew::station {
 
-TrackingNow trackingNow(const tracking::PassRunner *runner)
+face::TrackingNow trackingNow(const tracking::PassRunner *runner)
 {
+    using face::TrackingNow;
     TrackingNow now;
     if (!runner || !runner->isRunning())
         return now;
@@ -28,33 +29,6 @@ TrackingNow trackingNow(const tracking::PassRunner *runner)
         now.norad = runner->target().elements.catalogueNumber;
     now.pass = runner->pass();
     return now;
-}
-
-QString phaseWord(TrackingNow::Phase phase)
-{
-    switch (phase) {
-    case TrackingNow::Phase::Planning:
-        return QStringLiteral("planning");
-    case TrackingNow::Phase::Waiting:
-        return QStringLiteral("waiting");
-    case TrackingNow::Phase::Tracking:
-        return QStringLiteral("tracking");
-    case TrackingNow::Phase::Done:
-        return QStringLiteral("done");
-    case TrackingNow::Phase::Off:
-        break;
-    }
-    return QStringLiteral("off");
-}
-
-std::optional<TrackingNow::Phase> phaseFromWord(const QString &word)
-{
-    using Phase = TrackingNow::Phase;
-    for (const Phase phase : {Phase::Off, Phase::Planning, Phase::Waiting, Phase::Tracking, Phase::Done}) {
-        if (phaseWord(phase) == word)
-            return phase;
-    }
-    return std::nullopt;
 }
 
 } // namespace slew::station

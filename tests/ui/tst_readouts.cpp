@@ -3,6 +3,7 @@
 // keeps its time column in view however long a line is, and check boxes and
 // radio buttons can be seen on the dark theme.
 
+#include "../common/fakestationface.h"
 #include "eventlog.h"
 #include "operatortheme.h"
 #include "rotor/positionreadout.h"
@@ -60,9 +61,13 @@ private slots:
         QCOMPARE(ui::shownTenths(-0.05), -0.1);
         QCOMPARE(ui::shownTenths(12.34), 12.3);
 
-        session::RotatorSession session;
-        ui::PositionReadout readout(&session);
-        emit session.positionChanged(-0.03, -0.04, false);
+        FakeStationFace station;
+        ui::PositionReadout readout(&station);
+        face::StationState state;
+        state.link = QStringLiteral("connected");
+        state.position = QPointF(-0.03, -0.04);
+        state.stale = false;
+        station.setState(state);
         const auto *az = readout.findChild<QLabel *>(QStringLiteral("readoutAzimuth"));
         const auto *el = readout.findChild<QLabel *>(QStringLiteral("readoutElevation"));
         QVERIFY(az && el);

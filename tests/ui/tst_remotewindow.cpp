@@ -21,12 +21,12 @@
 #include "remote/remoteconnectdialog.h"
 #include "remote/remotecontrols.h"
 #include "remote/remoteopener.h"
-#include "remote/remotereadout.h"
 #include "remote/remotescheduleview.h"
 #include "tracking/scheduletimeline.h"
 #include "remote/remotestationwindow.h"
 #include "rotor/gotopanel.h"
 #include "rotor/jogpad.h"
+#include "rotor/positionreadout.h"
 #include "tracking/trackingline.h"
 #include "remote/stationnetworkwindow.h"
 #include "remote/stationtile.h"
@@ -95,7 +95,8 @@ private slots:
         QVERIFY2(banner.startsWith(QStringLiteral("REMOTE: station mast on mqtts://operator@localhost:")), qPrintable(banner));
         QVERIFY2(banner.contains(QStringLiteral("s old")), qPrintable(banner));
         QVERIFY(window->windowTitle().contains(QStringLiteral("REMOTE")));
-        QTRY_VERIFY(window->readout()->findChild<QLabel *>(QStringLiteral("remoteAzimuth"))->text() == QStringLiteral("Az 200.0°"));
+        // The local window's readout, on the station's face.
+        QTRY_VERIFY(window->readout()->findChild<QLabel *>(QStringLiteral("readoutAzimuth"))->text().trimmed() == QStringLiteral("200.0°"));
         QVERIFY(window->polarPlot()->actual());
         QVERIFY(!window->polarPlot()->isStale());
 
@@ -275,7 +276,7 @@ private slots:
             QVERIFY2(seconds > 0 && seconds <= 8 * 60 + 10, qPrintable(line)); // LOS 09:27:10, clock from 09:19:00
             // The readout says the pass itself, not the phase again: as it
             // rose, though the schedule joined it at 09:19.
-            const QString pass = window->findChild<QLabel *>(QStringLiteral("remoteTracking"))->text();
+            const QString pass = window->findChild<QLabel *>(QStringLiteral("readoutPass"))->text();
             QCOMPARE(pass, QStringLiteral("Pass of FLOCK 2P-1 (NORAD 41617): 09:15:45–09:27:10 UTC, highest 56.4°"));
         }
 

@@ -631,7 +631,7 @@ private slots:
     {
         // Each phase of the station's tracking, as the line words it, at
         // 2018-01-22 07:40:00 UTC for a pass 07:42:56-07:51:04.
-        using slew::station::TrackingNow;
+        using slew::face::TrackingNow;
         const double now = *slew::sky::julianFromIso(QStringLiteral("2018-01-22T07:40:00Z"));
         TrackingNow followed;
         QCOMPARE(TrackingLine::textFor(followed, now), QStringLiteral("Not tracking"));

@@ -7,10 +7,10 @@
 #include "remote/remotebanner.h"
 #include "remote/remotecontrols.h"
 #include "rotor/passoverlay.h"
-#include "remote/remotereadout.h"
 #include "remote/remotescheduleview.h"
 #include "rotor/gotopanel.h"
 #include "rotor/jogpad.h"
+#include "rotor/positionreadout.h"
 #include "stopbutton.h"
 #include "telemetry/telemetrycharts.h"
 #include "widgets/titledgroup.h"
@@ -18,8 +18,6 @@
 #include "tracking/trackingline.h"
 
 #include "remote/remotestation.h"
-#include "sky/skyvector.h"
-#include "station/trackingnow.h"
 
 #include <QDateTime>
 #include <QGuiApplication>
@@ -36,37 +34,6 @@ namespace slew::ui {
 using remote::RemoteStation;
 using station::AlarmMonitor;
 
-namespace {
-
-double julianOfUnixMs(qint64 ms)
-{
-    return sky::julianFromUnixSeconds(double(ms) / 1000.0);
-}
-
-// What the station's tracking does, from its last state, counted by its own
-// clock (a rehearsal's, during one).
-TrackingLine::Reading remoteReading(const RemoteStation &station)
-{
-    TrackingLine::Reading reading;
-    const std::optional<qint64> now = station.stationClockMs();
-    const auto &state = station.state();
-    if (!state || !now)
-        return reading;
-    reading.nowJulian = julianOfUnixMs(*now);
-    reading.followed.phase = station::phaseFromWord(state->tracking).value_or(station::TrackingNow::Phase::Off);
-    reading.followed.target = state->trackingTarget;
-    reading.followed.norad = state->trackingNorad;
-    if (state->passAosMs && state->passLosMs) {
-        sky::Pass pass;
-        pass.aos.julian = julianOfUnixMs(*state->passAosMs);
-        pass.los.julian = julianOfUnixMs(*state->passLosMs);
-        reading.followed.pass = pass;
-    }
-    return reading;
-}
-
-} // namespace
-
 RemoteStationWindow::RemoteStationWindow(RemoteStation *station, QWidget *parent)
     : QMainWindow(parent), m_station(station)
 {
@@ -75,7 +42,7 @@ RemoteStationWindow::RemoteStationWindow(RemoteStation *station, QWidget *parent
     m_remoteBanner = new RemoteBanner(station);
     m_alarms = new AlarmBanner;
     m_plot = new PolarPlotWidget;
-    m_readout = new RemoteReadout;
+    m_readout = new PositionReadout(station);
     // Go-to and jog are the local window's own panels, on the station's face.
     m_goto = new GotoPanel(station);
     m_jog = new JogPad(station);
@@ -83,7 +50,7 @@ RemoteStationWindow::RemoteStationWindow(RemoteStation *station, QWidget *parent
     // Stop always sends, live or not: a broker that is back takes it at once.
     // The station logs "a stop over MQTT": the cause stays here.
     m_stop = new StopButton([station](const QString &cause) { return station->stop(cause).isAccepted(); });
-    m_trackingLine = new TrackingLine([station] { return remoteReading(*station); });
+    m_trackingLine = new TrackingLine(station);
     m_recorder = new TelemetryRecorder(nullptr, this);
     m_charts = new TelemetryCharts(&m_recorder->history());
     m_log = new EventLog;
@@ -132,7 +99,6 @@ RemoteStationWindow::RemoteStationWindow(RemoteStation *station, QWidget *parent
     setCentralWidget(central);
 
     connect(station, &RemoteStation::stateChanged, this, &RemoteStationWindow::showState);
-    connect(station, &RemoteStation::stateChanged, m_trackingLine, &TrackingLine::refresh);
     connect(station, &RemoteStation::liveChanged, this, &RemoteStationWindow::showLive);
     connect(station, &RemoteStation::telemetryReceived, m_recorder, &TelemetryRecorder::recordRemote);
     // The telemetry carries the position at the poll rate; the state, while
@@ -143,7 +109,6 @@ RemoteStationWindow::RemoteStationWindow(RemoteStation *station, QWidget *parent
         if (s.az && s.el) {
             const bool stale = !m_station->isLive() || (m_station->state() && m_station->state()->stale);
             m_plot->setActual(*s.az, *s.el, stale);
-            m_readout->showPosition(*s.az, *s.el);
         }
     });
     connect(m_plot, &PolarPlotWidget::targetPicked, m_goto, &GotoPanel::setFields);
@@ -224,7 +189,6 @@ void RemoteStationWindow::showState(const face::StationState &s)
     else
         m_plot->clearTarget();
     m_charts->setElevationShown(!s.azimuthOnly);
-    m_readout->showState(s);
     m_alarms->showAlarms(s.alarms, s.severe);
     if (s.alarms != m_lastAlarms) {
         for (const QString &a : s.alarms) {
@@ -237,7 +201,6 @@ void RemoteStationWindow::showState(const face::StationState &s)
 
 void RemoteStationWindow::showLive(bool live)
 {
-    m_readout->setLive(live);
     m_controls->setLive(live);
     m_jog->setEnabled(live);
     if (!live)

@@ -28,10 +28,10 @@ class AlarmBanner;
 class EventLog;
 class GotoPanel;
 class JogPad;
+class PositionReadout;
 class PolarPlotWidget;
 class RemoteBanner;
 class RemoteControls;
-class RemoteReadout;
 class RemoteScheduleView;
 class StopButton;
 class TrackingLine;
@@ -48,7 +48,7 @@ public:
     RemoteBanner *remoteBanner() const { return m_remoteBanner; }
     AlarmBanner *alarmBanner() const { return m_alarms; }
     PolarPlotWidget *polarPlot() const { return m_plot; }
-    RemoteReadout *readout() const { return m_readout; }
+    PositionReadout *readout() const { return m_readout; }
     GotoPanel *gotoPanel() const { return m_goto; }
     JogPad *jogPad() const { return m_jog; }
     RemoteControls *controls() const { return m_controls; }
@@ -68,7 +68,7 @@ private:
     RemoteBanner *m_remoteBanner;
     AlarmBanner *m_alarms;
     PolarPlotWidget *m_plot;
-    RemoteReadout *m_readout;
+    PositionReadout *m_readout;
     GotoPanel *m_goto;
     JogPad *m_jog;
     RemoteControls *m_controls;

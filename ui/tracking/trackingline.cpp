@@ -1,10 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "tracking/trackingline.h"
 
+#include "face/stationface.h"
 #include "sky/utctime.h"
-#include "station/station.h"
-#include "tracking/passrunner.h"
-#include "tracking/stationclock.h"
 
 #include <algorithm>
 #include <cmath>
@@ -20,28 +18,16 @@ QString utcClock(double julian)
 
 } // namespace
 
-TrackingLine::TrackingLine(std::function<Reading()> read, QWidget *parent) : QLabel(parent), m_read(std::move(read))
+TrackingLine::TrackingLine(face::StationFace *station, QWidget *parent) : QLabel(parent), m_station(station)
 {
     setObjectName(QStringLiteral("trackingLine"));
     setTextFormat(Qt::PlainText);
     setWordWrap(true);
     setAlignment(Qt::AlignLeft | Qt::AlignVCenter);
     connect(&m_tick, &QTimer::timeout, this, &TrackingLine::refresh);
+    connect(station, &face::StationFace::stateChanged, this, &TrackingLine::refresh);
     m_tick.start(1000);
     refresh();
-}
-
-TrackingLine::TrackingLine(station::Station *station, QWidget *parent)
-    : TrackingLine(
-          [station] {
-              return Reading{station::trackingNow(station->passRunner()), station->clock()->nowJulian()};
-          },
-          parent)
-{
-    tracking::PassRunner *runner = station->passRunner();
-    connect(&runner->tracker(), &tracking::Tracker::stateChanged, this, &TrackingLine::refresh);
-    connect(runner, &tracking::PassRunner::logLine, this, &TrackingLine::refresh); // planned, started, stopped
-    connect(station->clock(), &tracking::StationClock::changed, this, &TrackingLine::refresh);
 }
 
 QString TrackingLine::countdown(double seconds)
@@ -52,9 +38,9 @@ QString TrackingLine::countdown(double seconds)
     return QStringLiteral("%1:%2:%3").arg(s / 3600).arg((s / 60) % 60, 2, 10, QLatin1Char('0')).arg(s % 60, 2, 10, QLatin1Char('0'));
 }
 
-QString TrackingLine::textFor(const station::TrackingNow &followed, double nowJulian)
+QString TrackingLine::textFor(const face::TrackingNow &followed, double nowJulian)
 {
-    using Phase = station::TrackingNow::Phase;
+    using Phase = face::TrackingNow::Phase;
     const QString &name = followed.target;
     const auto secondsTo = [nowJulian](double julian) { return (julian - nowJulian) * sky::kSecondsPerDay; };
     switch (followed.phase) {
@@ -82,11 +68,13 @@ QString TrackingLine::textFor(const station::TrackingNow &followed, double nowJu
 
 void TrackingLine::refresh()
 {
-    const Reading now = m_read();
-    const QString text = textFor(now.followed, now.nowJulian);
+    const std::optional<face::StationState> state = m_station->state();
+    const std::optional<qint64> nowMs = m_station->stationClockMs();
+    const face::TrackingNow followed = state ? face::trackingOf(*state) : face::TrackingNow{};
+    const QString text = textFor(followed, nowMs ? face::julianOfUnixMs(*nowMs) : 0.0);
     if (text != this->text()) // a label's new text lays its column out again
         setText(text);
-    setEnabled(now.followed.phase != station::TrackingNow::Phase::Off); // greyed when there is nothing to say
+    setEnabled(followed.phase != face::TrackingNow::Phase::Off); // greyed when there is nothing to say
 }
 
 } // namespace slew::ui
