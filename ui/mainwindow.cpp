@@ -90,8 +90,8 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     m_jog = new JogPad(station->face());
     m_stop = new StopButton([station](const QString &cause) { return bool(station->stop(cause)); });
     m_trackingLine = new TrackingLine(station->face());
-    m_parkHome = new ParkHomePanel(session);
-    m_presets = new PresetPanel(session);
+    m_parkHome = new ParkHomePanel(station->face());
+    m_presets = new PresetPanel(station->face());
     m_charts = new TelemetryCharts(&m_recorder->history());
     // The charts in the station clock's time: a rehearsal's own.
     m_recorder->followClock(station->clock());

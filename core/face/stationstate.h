@@ -35,7 +35,15 @@ struct StationState {
     // elevation from one whose status is not per axis (the azimuth's then
     // stands for both).
     std::optional<QString> azimuthStatus, elevationStatus;
-    model::RotatorLimits limits;
+    // An axis' status reports an error; the controller's error register
+    // says its homing (RESET) failed, and what it says, in words.
+    bool axisError = false;
+    bool homingFailed = false;
+    QString controllerErrors;
+    model::RotatorLimits limits; // the travel in force: the profile's, narrowed by the controller's
+    // The profile's own travel, which a controller's narrower report does
+    // not change: a preset is stored against it, for the day the report widens.
+    model::RotatorLimits profileLimits;
     std::optional<QPointF> park;
     bool azimuthOnly = false;
     // What the controller can do, once it has said (before that, what most

@@ -19,6 +19,8 @@ struct RotatorLimits {
     bool hasOverlap() const { return azMax > 360.0; }
     // Empty when the limits make sense, else why not.
     QString validate() const;
+
+    friend bool operator==(const RotatorLimits &, const RotatorLimits &) = default;
 };
 
 struct AzimuthChoice {

@@ -66,10 +66,20 @@ QByteArray encodeStationState(const face::StationState &s)
         o.insert(QStringLiteral("az_status"), *s.azimuthStatus);
     if (s.elevationStatus)
         o.insert(QStringLiteral("el_status"), *s.elevationStatus);
+    o.insert(QStringLiteral("axis_error"), s.axisError);
+    o.insert(QStringLiteral("homing_failed"), s.homingFailed);
+    if (!s.controllerErrors.isEmpty())
+        o.insert(QStringLiteral("controller_errors"), s.controllerErrors);
     o.insert(QStringLiteral("az_min"), s.limits.azMin);
     o.insert(QStringLiteral("az_max"), s.limits.azMax);
     o.insert(QStringLiteral("el_min"), s.limits.elMin);
     o.insert(QStringLiteral("el_max"), s.limits.elMax);
+    if (!(s.profileLimits == s.limits)) {
+        o.insert(QStringLiteral("profile_az_min"), s.profileLimits.azMin);
+        o.insert(QStringLiteral("profile_az_max"), s.profileLimits.azMax);
+        o.insert(QStringLiteral("profile_el_min"), s.profileLimits.elMin);
+        o.insert(QStringLiteral("profile_el_max"), s.profileLimits.elMax);
+    }
     putPoint(o, "park_az", "park_el", s.park);
     o.insert(QStringLiteral("azimuth_only"), s.azimuthOnly);
     if (!s.dialect.isEmpty())
@@ -121,13 +131,23 @@ std::optional<face::StationState> parseStationState(const QByteArray &payload, Q
     s.moving = f.flag(QStringLiteral("moving")).value_or(false);
     s.azimuthStatus = f.text(QStringLiteral("az_status"), 100);
     s.elevationStatus = f.text(QStringLiteral("el_status"), 100);
+    s.axisError = f.flag(QStringLiteral("axis_error")).value_or(false);
+    s.homingFailed = f.flag(QStringLiteral("homing_failed")).value_or(false);
+    s.controllerErrors = f.text(QStringLiteral("controller_errors"), 400).value_or(QString());
     s.limits.azMin = f.number(QStringLiteral("az_min"), kAzimuth, true).value_or(0);
     s.limits.azMax = f.number(QStringLiteral("az_max"), kAzimuth, true).value_or(360);
     s.limits.elMin = f.number(QStringLiteral("el_min"), kElevation, true).value_or(0);
     s.limits.elMax = f.number(QStringLiteral("el_max"), kElevation, true).value_or(90);
+    // Only when it differs from the travel in force.
+    s.profileLimits.azMin = f.number(QStringLiteral("profile_az_min"), kAzimuth).value_or(s.limits.azMin);
+    s.profileLimits.azMax = f.number(QStringLiteral("profile_az_max"), kAzimuth).value_or(s.limits.azMax);
+    s.profileLimits.elMin = f.number(QStringLiteral("profile_el_min"), kElevation).value_or(s.limits.elMin);
+    s.profileLimits.elMax = f.number(QStringLiteral("profile_el_max"), kElevation).value_or(s.limits.elMax);
     if (f.ok()) {
         if (const QString why = s.limits.validate(); !why.isEmpty())
             f.fail(QStringLiteral("the travel: %1").arg(why));
+        else if (const QString bad = s.profileLimits.validate(); !bad.isEmpty())
+            f.fail(QStringLiteral("the profile's travel: %1").arg(bad));
     }
     s.park = takePoint(f, "park_az", "park_el");
     s.azimuthOnly = f.flag(QStringLiteral("azimuth_only")).value_or(false);

@@ -6,7 +6,8 @@
 //
 //   {"unix_ms":…, "time":"2026-11-26T10:00:00.123Z", "link":"connected",
 //    "az":120.0, "el":30.0, "stale":false, "target_az":…, "target_el":…,
-//    "moving":true, "az_status":"moving, pointing", "el_status":"at rest", "az_min":0, "az_max":450, "el_min":0, "el_max":180,
+//    "moving":true, "az_status":"moving, pointing", "el_status":"at rest",
+//    "axis_error":false, "homing_failed":false, "controller_errors":"…", "az_min":0, "az_max":450, "el_min":0, "el_max":180,
 //    "park_az":…, "park_el":…, "azimuth_only":false,
 //    "dialect":"Easycomm III", "probed":true, "jog_speed":true,
 //    "can_home":true, "park_command":true,

@@ -85,6 +85,7 @@ StationStateReader::StationStateReader(Station *station, QObject *parent) : QObj
     });
     connect(s, &RotatorSession::errorFlagsChanged, this, [this](int flags) {
         m_sample.ge = flags;
+        emit stateChanged(false); // homing_failed
         emit telemetryChanged();
     });
     connect(s, &RotatorSession::commandedChanged, this, [this](double az, double el) {
@@ -151,8 +152,14 @@ face::StationState StationStateReader::state() const
         out.azimuthStatus = session::describeAxisStatus(status.azimuth());
         if (status.isPerAxis())
             out.elevationStatus = session::describeAxisStatus(status.elevation());
+        out.axisError = status.anyError();
     }
+    const int errors = s->errorFlags();
+    out.homingFailed = s->isConnected() && errors > 1 && (errors & session::ErrorHoming);
+    if (s->isConnected() && errors > 1)
+        out.controllerErrors = session::describeErrorFlags(errors).left(400);
     out.limits = s->moveGate().limits();
+    out.profileLimits = s->moveGate().profileLimits();
     if (s->parkKnown())
         out.park = QPointF(s->parkAzimuth(), s->parkElevation());
     out.azimuthOnly = s->isAzimuthOnly();

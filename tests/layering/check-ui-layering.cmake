@@ -40,8 +40,7 @@ set(part_users
     # the window and what every page shares
     mainwindow.h mainwindow.cpp operatoractions.h eventlog.h stopbutton.h
     rotor/alignmentpanel.cpp rotor/configeditor.h rotor/connectionbar.h rotor/connectionbar.cpp
-    rotor/parkhomepanel.h
-    rotor/presetpanel.h rotor/rotorspanel.cpp rotor/rotortile.cpp rotor/trafficconsole.h
+    rotor/rotorspanel.cpp rotor/rotortile.cpp rotor/trafficconsole.h
     tracking/schedulepanel.cpp tracking/timecontroller.cpp
     tracking/trackingpanel.h tracking/trackingpanel.cpp
     tracking/upcomingpanel.cpp

@@ -200,10 +200,33 @@ private slots:
         s.operatorHold = true;
         s.controllerVersion = QStringLiteral("SatNOGS 1.2");
         s.slewVersion = QStringLiteral("0.1.0");
+        // What a face shows besides: each axis' status, the controller's
+        // errors and what it can do, the profile's own travel.
+        s.azimuthStatus = QStringLiteral("moving, pointing");
+        s.elevationStatus = QStringLiteral("at rest");
+        s.axisError = true;
+        s.homingFailed = true;
+        s.controllerErrors = QStringLiteral("homing error");
+        s.dialect = QStringLiteral("easycomm3");
+        s.probed = true;
+        s.jogSpeed = false;
+        s.canHome = false;
+        s.parkCommand = false;
+        s.profileLimits = {0, 450, 0, 90};
         QString error;
         const auto back = parseStationState(encodeStationState(s), &error);
         QVERIFY2(back, qPrintable(error));
         QCOMPARE(encodeStationState(*back), encodeStationState(s));
+        QCOMPARE(back->elevationStatus, s.elevationStatus);
+        QCOMPARE(back->profileLimits.elMax, 90.0);
+        QVERIFY(!back->jogSpeed && !back->canHome && !back->parkCommand && back->homingFailed);
+        // A station that says none of these: what most controllers can, and
+        // the travel in force for the profile's.
+        const QByteArray older = R"j({"unix_ms":1,"link":"connected","az_min":0,"az_max":360,"el_min":0,"el_max":90})j";
+        const auto old = parseStationState(older, &error);
+        QVERIFY2(old, qPrintable(error));
+        QVERIFY(old->jogSpeed && old->canHome && old->parkCommand && !old->probed && !old->azimuthStatus);
+        QCOMPARE(old->profileLimits, old->limits);
         QCOMPARE(back->clockMs, s.clockMs);
         QCOMPARE(back->clockRate, 2.0);
         // On the wall clock: neither is sent, and the rate reads 1.
@@ -228,6 +251,9 @@ private slots:
         QTest::newRow("ten-digit norad") << "{" + base + R"j(,"tracking_norad":1000000000})j" << "'tracking_norad'";
         QTest::newRow("clock too fast") << "{" + base + R"j(,"clock_ms":1,"clock_rate":1000})j" << "'clock_rate'";
         QTest::newRow("clock backwards") << "{" + base + R"j(,"clock_ms":1,"clock_rate":-1})j" << "'clock_rate'";
+        QTest::newRow("profile travel backwards") << "{" + base + R"j(,"profile_az_min":300,"profile_az_max":10})j" << "profile's travel";
+        QTest::newRow("status not words") << "{" + base + R"j(,"az_status":5})j" << "'az_status'";
+        QTest::newRow("homing failed not a flag") << "{" + base + R"j(,"homing_failed":"yes"})j" << "'homing_failed'";
         QTest::newRow("negative time") << QByteArray(R"j({"unix_ms":-5,"link":"connected","az_min":0,"az_max":360,"el_min":0,"el_max":90})j") << "'unix_ms'";
     }
     void badStates()

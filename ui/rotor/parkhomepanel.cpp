@@ -2,7 +2,6 @@
 #include "rotor/parkhomepanel.h"
 
 #include "operatortheme.h"
-#include "protocol/dialect.h"
 
 #include <QGridLayout>
 #include <QLabel>
@@ -13,9 +12,7 @@
 
 namespace slew::ui {
 
-using session::RotatorSession;
-
-ParkHomePanel::ParkHomePanel(RotatorSession *session, QWidget *parent) : QWidget(parent), m_session(session)
+ParkHomePanel::ParkHomePanel(face::StationFace *station, QWidget *parent) : QWidget(parent), m_station(station)
 {
     setObjectName(QStringLiteral("parkHomePanel"));
     m_park = new QPushButton(tr("Park"));
@@ -54,76 +51,96 @@ ParkHomePanel::ParkHomePanel(RotatorSession *session, QWidget *parent) : QWidget
     connect(m_park, &QPushButton::clicked, this, &ParkHomePanel::park);
     connect(m_home, &QPushButton::clicked, this, &ParkHomePanel::home);
     connect(m_cancel, &QPushButton::clicked, this, &ParkHomePanel::cancelHoming);
-    connect(session, &RotatorSession::statusChanged, this, &ParkHomePanel::onStatus);
-    connect(session, &RotatorSession::positionChanged, this, &ParkHomePanel::onPosition);
-    connect(session, &RotatorSession::errorFlagsChanged, this, [this](int ge) {
-        if (m_homing && ge > 1 && (ge & session::ErrorHoming))
-            finish(false, tr("Homing failed: %1.").arg(session::describeErrorFlags(ge)));
+    connect(station, &face::StationFace::stateChanged, this, &ParkHomePanel::follow);
+    connect(station, &face::StationFace::liveChanged, this, &ParkHomePanel::updateEnabled);
+    connect(station, &face::StationFace::answered, this, [this](const QString &id, const face::Outcome &outcome) {
+        if (id != m_awaiting)
+            return;
+        m_awaiting.clear();
+        if (outcome.isRefused())
+            refused(m_awaitingWhat, outcome.reason());
     });
-    connect(session, &RotatorSession::stateChanged, this, [this](RotatorSession::State s) {
-        if (m_homing && s != RotatorSession::State::Connected)
-            finish(false, tr("Homing interrupted: the link went down."));
-        updateEnabled();
-    });
-    connect(session, &RotatorSession::capabilitiesChanged, this, &ParkHomePanel::updateEnabled);
-    connect(session, &RotatorSession::profileChanged, this, &ParkHomePanel::updateEnabled);
-    connect(session, &RotatorSession::parkChanged, this, &ParkHomePanel::updateEnabled); // the tooltip
+    follow(station->state().value_or(face::StationState{}));
+}
+
+void ParkHomePanel::follow(const face::StationState &state)
+{
+    // A new status (GS) reading, not only a new position.
+    const bool statusChanged = state.azimuthStatus != m_state.azimuthStatus
+                               || state.elevationStatus != m_state.elevationStatus || state.moving != m_state.moving
+                               || state.axisError != m_state.axisError;
+    // The error register says so now, not from an earlier homing.
+    const bool homingFailedNow = state.homingFailed && !m_state.homingFailed;
+    m_state = state;
+    if (m_homing && state.link != u"connected")
+        finish(false, tr("Homing interrupted: the link went down."));
+    followHoming(state, statusChanged, homingFailedNow);
     updateEnabled();
 }
 
 void ParkHomePanel::updateEnabled()
 {
-    const bool connected = m_session->isConnected();
+    const bool connected = m_state.link == u"connected" && m_station->isLive();
     m_park->setEnabled(connected && !m_homing);
-    const auto &caps = m_session->capabilities();
     // Without a park command the session parks by a go-to (RotatorSession::park).
-    const bool parksByGoto = !protocol::dialectSupports(m_session->profile().dialect, protocol::Op::Park);
+    const bool parksByGoto = !m_state.parkCommand;
     m_park->setToolTip(parksByGoto ? tr("Move to the park position, by a go-to: this controller has no park command")
                                    : tr("Move to the park position (%1)").arg(parkText()));
-    const bool noHoming = caps.probed && !caps.reset;
+    const bool noHoming = !m_state.canHome;
     m_home->setEnabled(connected && !m_homing && !noHoming);
     // A greyed-out Home says why, so it is not taken for a fault.
     m_home->setToolTip(noHoming ? tr("%1 has no homing command: this controller cannot find its end stops.")
-                                      .arg(protocol::dialectName(m_session->profile().dialect))
+                                      .arg(m_state.dialect)
                                 : tr("Find the end stops and re-zero (RESET)"));
 }
 
 bool ParkHomePanel::park()
 {
-    const session::CommandResult sent = m_session->park();
+    const face::Outcome sent = m_station->park();
+    if (sent.isRefused()) {
+        refused(tr("Not parking"), sent.reason());
+        return false;
+    }
+    m_awaiting = sent.id();
+    m_awaitingWhat = tr("Not parking");
     // PARK goes where the controller's registers say even before Slew has
     // read them; only the text waits for them.
-    m_message->setText(sent ? m_session->parkKnown() ? tr("Parking at %1.").arg(parkText())
-                                                     : tr("Parking where the controller says (%1).").arg(parkText())
-                            : tr("Not parking: %1").arg(sent.refusal));
-    m_message->setStyleSheet(sent ? QString() : refusedText());
-    m_parking = bool(sent);
-    if (sent)
-        emit moveSent(tr("park (%1)").arg(parkText()),
-                      m_session->parkKnown()
-                          ? std::optional<QPointF>(QPointF(m_session->parkAzimuth(), m_session->parkElevation()))
-                          : std::nullopt);
-    return bool(sent);
+    m_message->setText(m_state.park ? tr("Parking at %1.").arg(parkText())
+                                    : tr("Parking where the controller says (%1).").arg(parkText()));
+    m_message->setStyleSheet(QString());
+    m_parking = true;
+    emit moveSent(tr("park (%1)").arg(parkText()), m_state.park);
+    return true;
+}
+
+void ParkHomePanel::refused(const QString &what, const QString &why)
+{
+    if (m_homing)
+        finish(false, tr("%1: %2").arg(what, why));
+    m_message->setText(tr("%1: %2").arg(what, why));
+    m_message->setStyleSheet(refusedText());
+    m_parking = false;
 }
 
 QString ParkHomePanel::parkText() const
 {
     // Where the antenna will point, as the plot's P shows it.
-    if (!m_session->parkKnown())
+    if (!m_state.park)
         return tr("park not read yet");
-    return tr("%1°, %2°").arg(m_session->parkAzimuth(), 0, 'f', 1).arg(m_session->parkElevation(), 0, 'f', 1);
+    return tr("%1°, %2°").arg(m_state.park->x(), 0, 'f', 1).arg(m_state.park->y(), 0, 'f', 1);
 }
 
 bool ParkHomePanel::home()
 {
     if (m_homing)
         return false;
-    if (const session::CommandResult sent = m_session->home(); !sent) {
-        m_message->setText(tr("Not homing: %1").arg(sent.refusal));
-        m_message->setStyleSheet(refusedText());
-        m_parking = false;
+    const face::Outcome sent = m_station->home();
+    if (sent.isRefused()) {
+        refused(tr("Not homing"), sent.reason());
         return false;
     }
+    m_awaiting = sent.id();
+    m_awaitingWhat = tr("Not homing");
     m_homing = true;
     m_sawMoving = false;
     m_hasStart = false;
@@ -145,33 +162,37 @@ void ParkHomePanel::moveEnded()
     m_parking = false;
 }
 
-void ParkHomePanel::onStatus(session::StatusWord status)
+void ParkHomePanel::followHoming(const face::StationState &state, bool statusChanged, bool homingFailed)
 {
-    if (!m_homing || !status.valid)
+    if (!m_homing)
         return;
-    if (status.anyError()) {
+    if (homingFailed) {
+        finish(false, tr("Homing failed: %1.").arg(state.controllerErrors));
+        return;
+    }
+    if (statusChanged && state.axisError) {
         finish(false, tr("Homing failed: the controller reports an axis error."));
         return;
     }
-    if (status.anyMoving())
-        m_sawMoving = true;
-    else if (m_sawMoving)
-        finish(true, tr("Homed."));
-}
-
-void ParkHomePanel::onPosition(double az, double el, bool stale)
-{
-    if (!m_homing || stale || m_sawMoving)
+    if (statusChanged && state.azimuthStatus) {
+        if (state.moving) {
+            m_sawMoving = true;
+        } else if (m_sawMoving) { // GS says both axes are idle again
+            finish(true, tr("Homed."));
+            return;
+        }
+    }
+    if (m_sawMoving || state.stale || !state.position)
         return;
     if (!m_hasStart) {
         m_hasStart = true;
-        m_startAz = az;
-        m_startEl = el;
+        m_startAz = state.position->x();
+        m_startEl = state.position->y();
         return;
     }
     // More than a reading's jitter: the rotator is on its way.
     constexpr double kMovedDeg = 0.2;
-    if (std::abs(az - m_startAz) > kMovedDeg || std::abs(el - m_startEl) > kMovedDeg)
+    if (std::abs(state.position->x() - m_startAz) > kMovedDeg || std::abs(state.position->y() - m_startEl) > kMovedDeg)
         m_sawMoving = true;
 }
 
@@ -179,7 +200,7 @@ void ParkHomePanel::cancelHoming()
 {
     if (!m_homing)
         return;
-    m_session->stop(tr("homing was cancelled"));
+    m_station->stop(tr("homing was cancelled"));
     finish(false, tr("Homing cancelled; the rotator was stopped."));
 }
 

@@ -9,8 +9,11 @@
 // can start and end between two GS answers, more so on a loaded machine; the
 // position, polled ten times as often, moving away from where it was when
 // Home was pressed counts as moving too.
+//
+// It asks and watches through the station's face (face/stationface.h), here
+// or on a broker alike: a station's answer that comes later shows as any.
 
-#include "session/rotatorsession.h"
+#include "face/stationface.h"
 
 #include <QPointF>
 #include <QTimer>
@@ -29,7 +32,7 @@ class ParkHomePanel : public QWidget {
 public:
     static constexpr int kHomingTimeoutMs = 180000;
 
-    explicit ParkHomePanel(session::RotatorSession *session, QWidget *parent = nullptr);
+    explicit ParkHomePanel(face::StationFace *station, QWidget *parent = nullptr);
 
     bool isHoming() const { return m_homing; }
 
@@ -46,13 +49,19 @@ signals:
     void homingFinished(bool ok, const QString &message);
 
 private:
-    void onStatus(session::StatusWord status);
-    void onPosition(double az, double el, bool stale);
+    void follow(const face::StationState &state);
+    // `statusChanged`: the state brings a new GS reading; `homingFailed`:
+    // the error register has just said homing failed.
+    void followHoming(const face::StationState &state, bool statusChanged, bool homingFailed);
     void finish(bool ok, const QString &message);
     void updateEnabled();
     QString parkText() const; // where PARK goes, or that it is not read yet
+    void refused(const QString &what, const QString &why);
 
-    session::RotatorSession *m_session;
+    face::StationFace *m_station;
+    face::StationState m_state; // as last said
+    QString m_awaiting;         // the id of a park or home the station has yet to answer
+    QString m_awaitingWhat;     // "Not parking", "Not homing"
     QPushButton *m_park;
     QPushButton *m_home;
     QPushButton *m_cancel;

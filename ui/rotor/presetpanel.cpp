@@ -17,7 +17,7 @@ namespace {
 const char *kSettingsKey = "presets/list";
 }
 
-PresetPanel::PresetPanel(session::RotatorSession *session, QWidget *parent) : QWidget(parent), m_session(session)
+PresetPanel::PresetPanel(face::StationFace *station, QWidget *parent) : QWidget(parent), m_station(station)
 {
     setObjectName(QStringLiteral("presetPanel"));
     m_list = new QListWidget;
@@ -49,6 +49,15 @@ PresetPanel::PresetPanel(session::RotatorSession *session, QWidget *parent) : QW
     connect(m_store, &QPushButton::clicked, this, [this] { storeCurrent(m_name->text()); });
     connect(m_name, &QLineEdit::returnPressed, this, [this] { storeCurrent(m_name->text()); });
     connect(m_remove, &QPushButton::clicked, this, &PresetPanel::removeSelected);
+    connect(station, &face::StationFace::answered, this, [this](const QString &id, const face::Outcome &outcome) {
+        if (id != m_awaiting)
+            return;
+        m_awaiting.clear();
+        if (outcome.isRefused()) {
+            m_going = false;
+            say(outcome.reason(), true);
+        }
+    });
 
     const QJsonDocument doc = QJsonDocument::fromJson(QSettings().value(QLatin1String(kSettingsKey)).toByteArray());
     QString error;
@@ -99,25 +108,30 @@ bool PresetPanel::recall(int index)
         say(tr("There is no preset %1.").arg(index + 1), true);
         return false;
     }
-    if (!m_session->gotoPosition(p->azimuth, p->elevation)) {
-        say(tr("Preset '%1' was not sent.").arg(p->name), true);
+    const face::Outcome sent = m_station->gotoPosition(p->azimuth, p->elevation);
+    if (sent.isRefused()) {
+        say(tr("Preset '%1' was not sent: %2").arg(p->name, sent.reason()), true);
         return false;
     }
+    m_awaiting = sent.id();
     say(tr("Going to '%1'.").arg(p->name), false);
     m_going = true;
-    const QPointF target(m_session->targetAzimuth(), m_session->targetElevation());
+    // Where it goes: the station's target once it has one, else the preset.
+    const std::optional<face::StationState> state = m_station->state();
+    const QPointF target = sent.isDone() && state && state->target ? *state->target : QPointF(p->azimuth, p->elevation);
     emit moveSent(tr("preset '%1' (%2)").arg(p->name, describePosition(target)), target);
     return true;
 }
 
 bool PresetPanel::storeCurrent(const QString &name)
 {
-    if (!m_session->hasPosition() || m_session->positionStale()) {
+    const std::optional<face::StationState> state = m_station->state();
+    if (!state || !state->position || state->stale) {
         say(tr("No current position to store."), true);
         return false;
     }
     const QString error =
-        m_presets.store(model::Preset{name, m_session->azimuth(), m_session->elevation()}, m_session->moveGate().profileLimits());
+        m_presets.store(model::Preset{name, state->position->x(), state->position->y()}, state->profileLimits);
     if (!error.isEmpty()) {
         say(error, true);
         return false;

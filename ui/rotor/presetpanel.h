@@ -2,10 +2,11 @@
 // Named positions: stored from where the rotator is now, recalled with one
 // click or Alt and the number shown beside each (KeyboardControl, which the
 // window asks first while "Ask before moving" is on). Kept in QSettings, so
-// they survive a restart.
+// they survive a restart. Recalled and stored through the station's face
+// (face/stationface.h), here or on a broker alike.
 
 #include "model/presets.h"
-#include "session/rotatorsession.h"
+#include "face/stationface.h"
 
 #include <QPointF>
 #include <QWidget>
@@ -22,7 +23,7 @@ namespace slew::ui {
 class PresetPanel : public QWidget {
     Q_OBJECT
 public:
-    explicit PresetPanel(session::RotatorSession *session, QWidget *parent = nullptr);
+    explicit PresetPanel(face::StationFace *station, QWidget *parent = nullptr);
 
     const model::PresetList &presets() const { return m_presets; }
 
@@ -40,7 +41,8 @@ private:
     void save() const;
     void say(const QString &text, bool error);
 
-    session::RotatorSession *m_session;
+    face::StationFace *m_station;
+    QString m_awaiting; // the id of a recall the station has yet to answer
     model::PresetList m_presets;
     QListWidget *m_list;
     QLineEdit *m_name;
