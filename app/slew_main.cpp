@@ -7,7 +7,7 @@
 #include "cli/optionnames.h"
 #include "cli/sharedoptions.h"
 #include "cli/slewcommandline.h"
-#include "mainwindow.h"
+#include "stationwindow.h"
 #include "operatortheme.h"
 #include "slew_elements.h"
 #include "slew_export.h"
@@ -196,7 +196,7 @@ int main(int argc, char *argv[])
     // service records into is shown, and this window records nothing.
     const QString recordsProblem =
         station.openPassRecords(args.passRecords.path, args.passRecords.keepDays, /*readWhenTaken=*/true);
-    slew::ui::MainWindow window(&station);
+    slew::ui::StationWindow window(&station);
     if (args.clock.startJulian)
         window.timeController()->rehearse(*args.clock.startJulian, args.clock.rate);
     window.show();

@@ -33,7 +33,7 @@ KeyboardControl::KeyboardControl(QWidget *window, StopButton *stop, JogPad *jog,
         m_release[d].setInterval(kRepeatGraceMs);
         connect(&m_release[d], &QTimer::timeout, this, [this, d] { m_jog->release(JogPad::Direction(d)); });
     }
-    // A Stop releases every jog (MainWindow); a release still waiting must
+    // A Stop releases every jog (StationWindow); a release still waiting must
     // not be taken for the start of a repeat afterwards.
     connect(m_stop, &StopButton::stopped, this, [this] {
         for (QTimer &t : m_release)

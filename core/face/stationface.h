@@ -42,6 +42,8 @@ public:
     // from afar, while the broker and the station are there and the last
     // state is recent. A face greys its controls (not Stop) when it is not.
     virtual bool isLive() const = 0;
+    // Why it is not live, in words; empty when it is.
+    virtual QString whyNotLive() const = 0;
     // What is known now; none before the first word from a remote station.
     virtual std::optional<StationState> state() const = 0;
     virtual std::optional<StationPlan> plan() const = 0;

@@ -72,7 +72,7 @@ public:
     // than kStaleAfterMs: what is shown is the station as it is now.
     bool isLive() const override { return m_live; }
     // Why it is not live, in words; empty when it is.
-    QString whyNotLive() const;
+    QString whyNotLive() const override;
 
     // What the station's gate would say to a go-to, from the travel it
     // published: for go-to fields checked as the operator types. The

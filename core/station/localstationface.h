@@ -30,6 +30,7 @@ public:
     QString title() const override;
     bool isLocal() const override { return true; }
     bool isLive() const override { return true; }
+    QString whyNotLive() const override { return {}; }
     std::optional<face::StationState> state() const override;
     std::optional<face::StationPlan> plan() const override;
     std::optional<face::StationSchedule> schedule() const override;

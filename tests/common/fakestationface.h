@@ -20,6 +20,7 @@ public:
     QString title() const override { return QStringLiteral("fake"); }
     bool isLocal() const override { return true; }
     bool isLive() const override { return true; }
+    QString whyNotLive() const override { return {}; }
     std::optional<slew::face::StationState> state() const override { return m_state; }
     std::optional<slew::face::StationPlan> plan() const override { return std::nullopt; }
     std::optional<slew::face::StationSchedule> schedule() const override { return std::nullopt; }

@@ -38,7 +38,7 @@ set(debt_telemetry_tracking "the charts mark a rehearsal as the status bar does 
 # The files (under ui/) that include a station part's header today.
 set(part_users
     # the window and what every page shares
-    mainwindow.h mainwindow.cpp operatoractions.h eventlog.h stopbutton.h
+    stationwindow.h stationwindow.cpp stationwindow_local.cpp operatoractions.h eventlog.h stopbutton.h
     rotor/alignmentpanel.cpp rotor/configeditor.h rotor/connectionbar.h rotor/connectionbar.cpp
     rotor/rotorspanel.cpp rotor/rotortile.cpp rotor/trafficconsole.h
     tracking/schedulepanel.cpp tracking/timecontroller.cpp
@@ -49,7 +49,7 @@ set(part_users
     radio/radioplanform.cpp radio/radioreadout.cpp radio/radiovfochoice.cpp
     telemetry/statuslanes.cpp telemetry/telemetryrecorder.h
     remote/remotebanner.cpp remote/remoteopener.cpp
-    remote/remotestationwindow.cpp remote/stationnetworkwindow.cpp
+    remote/stationwindow_remote.cpp remote/stationnetworkwindow.cpp
     # the setup wizard talks to the controller's session itself
     wizard/calibrationpage.h wizard/connectpage.cpp wizard/directioncheck.h wizard/directioncheck.cpp
     wizard/identifypage.cpp wizard/mechanicspage.h wizard/mechanicspage.cpp wizard/parkpage.cpp

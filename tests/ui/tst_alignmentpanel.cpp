@@ -6,7 +6,7 @@
 // connects to it again through the connection bar, and Clear removes them.
 
 #include "../common/simulatorpump.h"
-#include "mainwindow.h"
+#include "stationwindow.h"
 #include "model/savedcalibration.h"
 #include "rotor/alignmentpanel.h"
 #include "rotor/connectionbar.h"
@@ -37,7 +37,7 @@ private slots:
 
     void alignsOnTheSunAndRemembersIt()
     {
-        ui::MainWindow &w = *m_fixture->window;
+        ui::StationWindow &w = *m_fixture->window;
         session::RotatorSession &s = m_fixture->session;
         ui::AlignmentPanel *panel = w.alignmentPanel();
         const double jd = *sky::julianFromIso(QStringLiteral("2026-06-21T10:00:00Z"));
@@ -75,7 +75,7 @@ private slots:
 
     void refusesAtNightAndChangesNothing()
     {
-        ui::MainWindow &w = *m_fixture->window;
+        ui::StationWindow &w = *m_fixture->window;
         session::RotatorSession &s = m_fixture->session;
         ui::AlignmentPanel *panel = w.alignmentPanel();
         const double night = *sky::julianFromIso(QStringLiteral("2026-12-21T23:00:00Z"));

@@ -26,7 +26,7 @@
 #include "console/consolerunner.h"
 #include "rotor/gotopanel.h"
 #include "rotor/jogpad.h"
-#include "mainwindow.h"
+#include "stationwindow.h"
 #include "station/station.h"
 #include "rotor/parkhomepanel.h"
 #include "rotor/polarplotwidget.h"
@@ -71,7 +71,7 @@ private slots:
         m_session = m_station->session();
         slew::model::RotatorProfile profile; // 0..360, 0..90, park at 0/90
         m_session->setProfile(profile);
-        m_window = std::make_unique<slew::ui::MainWindow>(m_station.get());
+        m_window = std::make_unique<slew::ui::StationWindow>(m_station.get());
         m_window->show();
         m_session->connectTo(QStringLiteral("scripted:"));
         QTRY_VERIFY(lastScriptedLink());
@@ -382,7 +382,7 @@ private:
 
     std::unique_ptr<slew::station::Station> m_station;
     RotatorSession *m_session = nullptr;
-    std::unique_ptr<slew::ui::MainWindow> m_window;
+    std::unique_ptr<slew::ui::StationWindow> m_window;
     ScriptedDevice *m_device = nullptr;
 };
 

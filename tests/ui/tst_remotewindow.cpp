@@ -23,7 +23,7 @@
 #include "remote/remoteopener.h"
 #include "remote/remotescheduleview.h"
 #include "tracking/scheduletimeline.h"
-#include "remote/remotestationwindow.h"
+#include "stationwindow.h"
 #include "rotor/gotopanel.h"
 #include "rotor/jogpad.h"
 #include "rotor/positionreadout.h"
@@ -53,7 +53,7 @@
 #include <memory>
 
 using slew::remote::RemoteStation;
-using slew::ui::RemoteStationWindow;
+using slew::ui::StationWindow;
 
 namespace {
 
@@ -85,10 +85,10 @@ private slots:
 
     void showsTheStationAndMovesIt()
     {
-        RemoteStationWindow *window = open(QStringLiteral("operator"), QStringLiteral("mast"));
+        StationWindow *window = open(QStringLiteral("operator"), QStringLiteral("mast"));
         QVERIFY(window);
-        QPointer<RemoteStationWindow> guard(window);
-        RemoteStation *remote = window->station();
+        QPointer<StationWindow> guard(window);
+        RemoteStation *remote = window->remoteStation();
         QTRY_VERIFY_WITH_TIMEOUT(remote->isLive(), 20000);
         // It says plainly that it is remote, which station, and how old.
         const QString banner = window->remoteBanner()->text();
@@ -141,9 +141,9 @@ private slots:
 
     void aWatcherMayOnlyWatch()
     {
-        RemoteStationWindow *window = open(QStringLiteral("watcher"), QStringLiteral("mast"));
+        StationWindow *window = open(QStringLiteral("watcher"), QStringLiteral("mast"));
         QVERIFY(window);
-        RemoteStation *remote = window->station();
+        RemoteStation *remote = window->remoteStation();
         QTRY_VERIFY_WITH_TIMEOUT(remote->isLive(), 20000);
         const double az = remote->state()->position->x();
         window->gotoPanel()->setFields(az + 20, 30);
@@ -162,9 +162,9 @@ private slots:
 
     void aLostBrokerGreysTheWindowUntilItIsBack()
     {
-        RemoteStationWindow *window = open(QStringLiteral("operator"), QStringLiteral("mast"));
+        StationWindow *window = open(QStringLiteral("operator"), QStringLiteral("mast"));
         QVERIFY(window);
-        RemoteStation *remote = window->station();
+        RemoteStation *remote = window->remoteStation();
         QTRY_VERIFY_WITH_TIMEOUT(remote->isLive(), 20000);
         m_broker.stop();
         QTRY_VERIFY_WITH_TIMEOUT(!remote->isLive(), 20000);
@@ -189,9 +189,9 @@ private slots:
     // threshold, so the two never give two different ages.
     void aSilentStationIsToldWithOneAge()
     {
-        RemoteStationWindow *window = open(QStringLiteral("operator"), QStringLiteral("dish2"));
+        StationWindow *window = open(QStringLiteral("operator"), QStringLiteral("dish2"));
         QVERIFY(window);
-        RemoteStation *remote = window->station();
+        RemoteStation *remote = window->remoteStation();
         QTRY_VERIFY_WITH_TIMEOUT(remote->isLive(), 20000);
         ::kill(pid_t(m_dish->process.processId()), SIGSTOP);
         QTRY_VERIFY_WITH_TIMEOUT(!remote->isLive(), 20000);
@@ -229,10 +229,10 @@ private slots:
         }
         // Open: the station's own window, on a connection of its own.
         QWidget *station = network->openStation(QStringLiteral("dish2"));
-        auto *window = qobject_cast<RemoteStationWindow *>(station);
+        auto *window = qobject_cast<StationWindow *>(station);
         QVERIFY(window);
-        QTRY_VERIFY_WITH_TIMEOUT(window->station()->isLive(), 20000);
-        QCOMPARE(window->station()->name(), QStringLiteral("dish2"));
+        QTRY_VERIFY_WITH_TIMEOUT(window->remoteStation()->isLive(), 20000);
+        QCOMPARE(window->remoteStation()->name(), QStringLiteral("dish2"));
         delete window;
         delete network;
     }
@@ -247,9 +247,9 @@ private slots:
                                           QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"), "--track",
                                           "FLOCK 2P-1", "--track", "PERSEUS-M1", "--clock-start", "2018-01-22T09:19:00Z"});
         QVERIFY2(roof.logged("remote: connected to"), roof.said().constData());
-        RemoteStationWindow *window = open(QStringLiteral("watcher"), QStringLiteral("roof"));
+        StationWindow *window = open(QStringLiteral("watcher"), QStringLiteral("roof"));
         QVERIFY(window);
-        RemoteStation *remote = window->station();
+        RemoteStation *remote = window->remoteStation();
         QTRY_VERIFY_WITH_TIMEOUT(remote->isLive(), 20000);
 
         // The Schedule tab: the targets by priority, the time line, the pass
@@ -285,8 +285,7 @@ private slots:
         QVERIFY(window->polarPlot()->passOverlay()->sky.size() > 50);
         QVERIFY(window->polarPlot()->passOverlay()->planned.size() > 50);
         if (onX11()) {
-            auto *tabs = window->findChild<QTabWidget *>(QStringLiteral("remoteTabs"));
-            tabs->setCurrentWidget(view);
+            window->bringToFront(view);
             // On the track, for the picture: the antenna where the target is.
             QTRY_VERIFY_WITH_TIMEOUT(remote->state() && remote->state()->tracking == u"tracking" && remote->state()->position
                                          && remote->state()->target
@@ -313,13 +312,13 @@ private slots:
         dialog.addressField()->setText(m_broker.url(QStringLiteral("operator"), QStringLiteral("mast")));
         dialog.passwordField()->setText(MosquittoBroker::password(QStringLiteral("operator")));
         QVERIFY2(dialog.openRemote(), qPrintable(dialog.problem()));
-        RemoteStationWindow *opened = nullptr;
+        StationWindow *opened = nullptr;
         for (QWidget *w : QApplication::topLevelWidgets()) {
-            if (auto *r = qobject_cast<RemoteStationWindow *>(w))
+            if (auto *r = qobject_cast<StationWindow *>(w))
                 opened = r;
         }
         QVERIFY(opened);
-        QTRY_VERIFY_WITH_TIMEOUT(opened->station()->isLive(), 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(opened->remoteStation()->isLive(), 20000);
         QCOMPARE(QSettings().value(QLatin1String(slew::ui::RemoteConnectDialog::kAddressKey)).toString(),
                  m_broker.url(QStringLiteral("operator"), QStringLiteral("mast")));
         for (const QString &key : QSettings().allKeys())
@@ -342,12 +341,12 @@ private:
                 name, QStringLiteral("--mqtt-password-file"), m_broker.passwordFile(QStringLiteral("station-") + name)};
     }
 
-    static QString gotoMessage(RemoteStationWindow *window)
+    static QString gotoMessage(StationWindow *window)
     {
         return window->gotoPanel()->findChild<QLabel *>(QStringLiteral("gotoMessage"))->text();
     }
 
-    RemoteStationWindow *open(const QString &user, const QString &name)
+    StationWindow *open(const QString &user, const QString &name)
     {
         QString error;
         const auto address = slew::remote::parseBrokerAddress(m_broker.url(user, name), &error);
@@ -356,13 +355,13 @@ private:
         QMainWindow *window = slew::ui::openRemoteWindow(*address, MosquittoBroker::password(user), &error);
         if (!window)
             qWarning("%s", qPrintable(error));
-        return qobject_cast<RemoteStationWindow *>(window);
+        return qobject_cast<StationWindow *>(window);
     }
 
     // The layout at 1280x720 as it is, and with the alarm banner up (a
     // station's alarm, or "Not live" when its state is late, as on a busy
     // machine): nothing squeezed either way.
-    void checkLayoutAndPicture(RemoteStationWindow *window, const QString &file)
+    void checkLayoutAndPicture(StationWindow *window, const QString &file)
     {
         window->resize(1280, 720);
         QTRY_COMPARE(window->size(), QSize(1280, 720));

@@ -5,7 +5,7 @@
 // states; the CSV export a spreadsheet takes as it is, one row per time
 // with the values the controller sent; and during a rehearsal, the samples
 // and the time axis in the station clock's time, said above the charts.
-#include "mainwindow.h"
+#include "stationwindow.h"
 #include "telemetry/statuslaneview.h"
 #include "telemetry/telemetrycharts.h"
 #include "telemetry/telemetrycsv.h"

@@ -37,7 +37,7 @@
 #include <QToolButton>
 #include <QTest>
 
-using slew::ui::MainWindow;
+using slew::ui::StationWindow;
 
 namespace {
 
@@ -51,7 +51,7 @@ void settle()
 
 // Every page checked, and its picture kept for the eye in
 // screenshots/WxH/ (the pictures in docs/screenshots come from here).
-QString faultsOnEveryTab(MainWindow &window)
+QString faultsOnEveryTab(StationWindow &window)
 {
     QStringList all;
     QTabWidget *tabs = window.tabs();

@@ -34,7 +34,7 @@ void WindowFixture::prepareApplication()
 }
 
 WindowFixture::WindowFixture(const QString &uri_)
-    : session(*station.session()), window(std::make_unique<slew::ui::MainWindow>(&station)), uri(uri_)
+    : session(*station.session()), window(std::make_unique<slew::ui::StationWindow>(&station)), uri(uri_)
 {
     QObject::connect(&session, &slew::session::RotatorSession::bytesSent, &session,
                      [this](const QByteArray &bytes) { sent << QString::fromLatin1(bytes).trimmed(); });

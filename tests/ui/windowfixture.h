@@ -12,7 +12,7 @@
 // passing moment is caught with holdClockWhen().
 
 #include "../common/simulatorpump.h"
-#include "mainwindow.h"
+#include "stationwindow.h"
 #include "session/rotatorsession.h"
 #include "station/station.h"
 
@@ -87,7 +87,7 @@ public:
     slew::station::Station station;
     slew::session::RotatorSession &session;
     SimulatorPump pump;
-    std::unique_ptr<slew::ui::MainWindow> window;
+    std::unique_ptr<slew::ui::StationWindow> window;
     QString uri;
     QStringList sent;
     std::deque<QPointF> recent; // az, el of the latest fresh positions

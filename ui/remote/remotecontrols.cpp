@@ -16,14 +16,6 @@ namespace slew::ui {
 
 RemoteControls::RemoteControls(face::StationFace *station, QWidget *parent) : QWidget(parent), m_station(station)
 {
-    m_park = new QPushButton(tr("Park"));
-    m_park->setObjectName(QStringLiteral("remotePark"));
-    m_home = new QPushButton(tr("Home"));
-    m_home->setObjectName(QStringLiteral("remoteHome"));
-    auto *parkRow = new QHBoxLayout;
-    parkRow->addWidget(m_park);
-    parkRow->addWidget(m_home);
-
     m_target = new QLineEdit;
     m_target->setObjectName(QStringLiteral("remoteTrackTarget"));
     m_target->setPlaceholderText(tr("satellite, sun, moon, azel:AZ,EL"));
@@ -32,8 +24,8 @@ RemoteControls::RemoteControls(face::StationFace *station, QWidget *parent) : QW
     m_track->setObjectName(QStringLiteral("remoteTrack"));
     m_untrack = new QPushButton(tr("Stop tracking"));
     m_untrack->setObjectName(QStringLiteral("remoteUntrack"));
+    // The name on a row of its own: the control column is narrow.
     auto *trackRow = new QHBoxLayout;
-    trackRow->addWidget(m_target, 1);
     trackRow->addWidget(m_track);
     trackRow->addWidget(m_untrack);
 
@@ -44,12 +36,10 @@ RemoteControls::RemoteControls(face::StationFace *station, QWidget *parent) : QW
 
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    layout->addLayout(parkRow);
+    layout->addWidget(m_target);
     layout->addLayout(trackRow);
     layout->addWidget(m_message);
 
-    connect(m_park, &QPushButton::clicked, this, [this] { said(tr("park"), m_station->park()); });
-    connect(m_home, &QPushButton::clicked, this, [this] { said(tr("home"), m_station->home()); });
     connect(m_track, &QPushButton::clicked, this, [this] {
         const QString target = m_target->text().trimmed();
         if (target.isEmpty()) {
@@ -94,7 +84,7 @@ void RemoteControls::showMessage(const QString &text, bool problem)
 
 void RemoteControls::setLive(bool live)
 {
-    for (QWidget *w : std::initializer_list<QWidget *>{m_park, m_home, m_target, m_track, m_untrack})
+    for (QWidget *w : std::initializer_list<QWidget *>{m_target, m_track, m_untrack})
         w->setEnabled(live);
 }
 

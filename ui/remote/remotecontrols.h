@@ -1,11 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Park, Home and a target to track by name, for a station seen from afar,
-// through its face (face/stationface.h): what each came to (done, the
-// station's answer in its own words, or the broker's refusal) shows under
-// them. Go-to and jog are the local window's own panels (rotor/gotopanel.h,
-// rotor/jogpad.h). Everything but Stop (which is elsewhere, and always
-// works) is off while the station is not live.
+// A target to track by name, for a station seen from afar, through its
+// face (face/stationface.h): what it came to (done, the station's answer
+// in its own words, or the broker's refusal) shows under it. Everything
+// else in the control column is the station window's own (go-to, jog,
+// Park and Home, presets). Off while the station is not live.
 
 #include "face/outcome.h"
 
@@ -38,8 +37,6 @@ private:
     void said(const QString &what, const face::Outcome &outcome);
 
     face::StationFace *m_station;
-    QPushButton *m_park;
-    QPushButton *m_home;
     QLineEdit *m_target;
     QPushButton *m_track;
     QPushButton *m_untrack;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "remote/remoteopener.h"
 
-#include "remote/remotestationwindow.h"
+#include "stationwindow.h"
 #include "remote/stationnetworkwindow.h"
 
 #include "remote/remotestation.h"
@@ -21,7 +21,7 @@ QMainWindow *openRemoteWindow(const remote::BrokerAddress &address, const QStrin
     QMainWindow *window = nullptr;
     if (!address.stationName.isEmpty()) {
         auto *station = new remote::RemoteStation(settings, address.stationName);
-        window = new RemoteStationWindow(station);
+        window = new StationWindow(station);
         station->setParent(window);
         if (!station->open(error)) {
             delete window;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "remote/stationnetworkwindow.h"
 
-#include "remote/remotestationwindow.h"
+#include "stationwindow.h"
 #include "remote/stationtile.h"
 
 #include "remote/remotestation.h"
@@ -131,7 +131,7 @@ void StationNetworkWindow::updateHeader()
 QWidget *StationNetworkWindow::openStation(const QString &name)
 {
     auto *station = new remote::RemoteStation(m_settings, name);
-    auto *window = new RemoteStationWindow(station);
+    auto *window = new StationWindow(station);
     station->setParent(window);
     window->setAttribute(Qt::WA_DeleteOnClose);
     QString error;

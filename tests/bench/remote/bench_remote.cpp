@@ -11,7 +11,7 @@
 //             behind a tap that stamps the stop's arrival on the same clock.
 //   updates   State updates a second a remote window keeps up with: a
 //             publisher (mosquitto_pub -l, fed lines at a paced rate) sends
-//             states to a RemoteStationWindow drawn offscreen in this
+//             states to a StationWindow drawn offscreen in this
 //             process; at each rate for S seconds (5): received a second,
 //             dropped, and the lag from sending to the window having it.
 //   watchers  A station's CPU (utime + stime from /proc) over S seconds
@@ -30,7 +30,7 @@
 
 #include "linkschemes.h"
 #include "remote/remotestation.h"
-#include "remote/remotestationwindow.h"
+#include "stationwindow.h"
 #include "sim/simulator.h"
 #include "sim/simulatoroptions.h"
 #include "sim/simulatortcpserver.h"
@@ -263,7 +263,7 @@ void benchUpdates(double seconds)
         return;
     }
     auto remote = operatorStation(broker, QStringLiteral("mast"));
-    auto *window = new slew::ui::RemoteStationWindow(remote.get());
+    auto *window = new slew::ui::StationWindow(remote.get());
     window->show();
     // The station says it is online, retained, as a station does.
     broker.publish(QStringLiteral("station-mast"), QStringLiteral("slew/mast/online"), "true", true);

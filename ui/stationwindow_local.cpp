@@ -1,5 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "mainwindow.h"
+// The station window's local-only door (stationwindow.h): what only a
+// station in this process has. The connection bar and the setup wizard; the
+// Tracking tab (one target, upcoming passes, the schedule, the history),
+// the Radio tab and the calibration, still built on the Station's parts
+// until they are on the face; the register editor, the raw traffic and the
+// rotctld trackers, which only a local link has; the other rotors of a
+// multi-rotor controller; the alarm monitor's and the operator's lines in
+// the event log; the menus; the window's saved layout.
+
+#include "stationwindow.h"
 
 #include "operatortheme.h"
 #include "alarmbanner.h"
@@ -41,6 +50,7 @@
 #include "remote/remoteconnectdialog.h"
 
 #include "bridge/rotctldserver.h"
+#include "face/stationface.h"
 #include "station/alarmmonitor.h"
 #include "station/dopplerradio.h"
 #include "station/passrecorder.h"
@@ -71,28 +81,12 @@ namespace slew::ui {
 
 using session::RotatorSession;
 
-MainWindow::MainWindow(station::Station *station, QWidget *parent)
-    : QMainWindow(parent), m_station(station), m_session(station->session())
+void StationWindow::openLocalDoor()
 {
-    setObjectName(QStringLiteral("mainWindow"));
-    setWindowTitle(tr("Slew"));
-    // The operator's limit, kept with the element sets' settings.
-    station->setElementAgeLimitDays(ElementSetsDialog::savedAgeLimitDays());
+    station::Station *station = m_station;
     RotatorSession *session = m_session;
     m_connection = new ConnectionBar(session);
-    m_banner = new AlarmBanner;
     m_alarms = station->alarms();
-    m_recorder = new TelemetryRecorder(session, this);
-    m_plot = new PolarPlotWidget;
-    m_confirm = new TargetConfirmation;
-    m_readout = new PositionReadout(station->face());
-    m_goto = new GotoPanel(station->face());
-    m_jog = new JogPad(station->face());
-    m_stop = new StopButton([station](const QString &cause) { return bool(station->stop(cause)); });
-    m_trackingLine = new TrackingLine(station->face());
-    m_parkHome = new ParkHomePanel(station->face());
-    m_presets = new PresetPanel(station->face());
-    m_charts = new TelemetryCharts(&m_recorder->history());
     // The charts in the station clock's time: a rehearsal's own.
     m_recorder->followClock(station->clock());
     m_charts->followClock(station->clock());
@@ -102,7 +96,6 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     });
     m_config = new ConfigEditor(session);
     m_traffic = new TrafficConsole(session);
-    m_log = new EventLog;
     m_log->setClock(station->clock()); // a rehearsal's lines in its time
     m_rotctld = station->server();
     m_trackers = new RotctldPanel(m_rotctld);
@@ -171,53 +164,16 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
     // live lines do not fit beside the passes on a 720-pixel screen.
     m_radio = new RadioPanel(station);
 
-    m_tabs = new QTabWidget;
-    m_tabs->setObjectName(QStringLiteral("mainTabs"));
-    // Each page scrolls where a small screen has less room than it needs.
-    m_tabs->addTab(scrollablePage(m_charts), tr("Telemetry"));
+    // Between the Telemetry and the Events (layOut): the pages only a
+    // station in this process has.
     m_tabs->addTab(m_trackingTabs, tr("Tracking"));
     m_tabs->addTab(scrollablePage(m_radio), tr("Radio"));
     m_tabs->addTab(scrollablePage(m_config), tr("Configuration"));
     m_tabs->addTab(scrollablePage(m_traffic), tr("Traffic"));
     m_tabs->addTab(scrollablePage(m_trackers), tr("Trackers"));
-    m_tabs->addTab(m_log, tr("Events"));
+    layOut(m_connection, m_rotorsPanel, nullptr);
 
-    auto *plotColumn = new QWidget;
-    auto *plotLayout = new QVBoxLayout(plotColumn);
-    plotLayout->setContentsMargins(0, 0, 0, 0);
-    plotLayout->addWidget(m_plot, 1);
-    plotLayout->addWidget(m_confirm);
-    plotLayout->addWidget(m_rotorsPanel);
 
-    auto *splitter = new QSplitter(Qt::Horizontal);
-    splitter->setObjectName(QStringLiteral("mainSplitter"));
-    splitter->addWidget(plotColumn);
-    // The controls scroll up and down on a short screen, never sideways: the
-    // scroll area keeps the column's width, and room for its bar.
-    QWidget *column = buildControlColumn();
-    ScrollablePage *controls = scrollablePage(column);
-    controls->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    const int bar = controls->style()->pixelMetric(QStyle::PM_ScrollBarExtent);
-    controls->setMinimumWidth(column->minimumWidth() + bar);
-    controls->setMaximumWidth(column->maximumWidth() + bar);
-    splitter->addWidget(controls);
-    splitter->addWidget(m_tabs);
-    // A wider window widens the plot and the tabs; the controls keep their width.
-    splitter->setStretchFactor(0, 5);
-    splitter->setStretchFactor(1, 0);
-    splitter->setStretchFactor(2, 6);
-    splitter->setChildrenCollapsible(false);
-
-    auto *central = new QWidget;
-    auto *layout = new QVBoxLayout(central);
-    layout->setContentsMargins(6, 0, 6, 6);
-    layout->setSpacing(4);
-    layout->addWidget(m_connection);
-    layout->addWidget(m_banner);
-    layout->addWidget(splitter, 1);
-    setCentralWidget(central);
-
-    connect(m_alarms, &station::AlarmMonitor::alarmsChanged, m_banner, &AlarmBanner::showAlarms);
     // Resting on a limit switch is a state: a quiet line at the foot of the
     // window, not the banner.
     auto *resting = new ElidingLabel;
@@ -238,19 +194,16 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
                     return;
                 statusBar()->showMessage(text, 8000);
             });
-    connect(m_stop, &StopButton::stopped, m_jog, &JogPad::releaseAll);
-    connect(m_stop, &StopButton::stopped, m_parkHome, &ParkHomePanel::abandonHoming);
-    connect(m_stop, &StopButton::stopped, m_confirm, &TargetConfirmation::cancel);
     wireOperatorActions();
-    connect(m_trackers, &RotctldPanel::message, this, &MainWindow::logInfo);
-    connect(m_tracking, &TrackingPanel::message, this, &MainWindow::logInfo);
-    connect(m_radio, &RadioPanel::message, this, &MainWindow::logInfo);
-    connect(m_schedule, &SchedulePanel::message, this, &MainWindow::logInfo);
-    connect(m_alignment, &AlignmentPanel::message, this, &MainWindow::logInfo);
-    connect(m_history, &HistoryPanel::message, this, &MainWindow::logInfo);
+    connect(m_trackers, &RotctldPanel::message, this, &StationWindow::logInfo);
+    connect(m_tracking, &TrackingPanel::message, this, &StationWindow::logInfo);
+    connect(m_radio, &RadioPanel::message, this, &StationWindow::logInfo);
+    connect(m_schedule, &SchedulePanel::message, this, &StationWindow::logInfo);
+    connect(m_alignment, &AlignmentPanel::message, this, &StationWindow::logInfo);
+    connect(m_history, &HistoryPanel::message, this, &StationWindow::logInfo);
     // Each pass's record, begun and finished, in the event log.
     if (station::PassRecorder *recorder = station->passRecorder())
-        connect(recorder, &station::PassRecorder::logLine, this, &MainWindow::logInfo);
+        connect(recorder, &station::PassRecorder::logLine, this, &StationWindow::logInfo);
     connect(station->passRecords(), &records::PassRecordStore::writeFailed, this,
             [this](const QString &error) { reportProblem(tr("pass records: %1").arg(error)); });
     m_time = new TimeController(station, this);
@@ -298,26 +251,12 @@ MainWindow::MainWindow(station::Station *station, QWidget *parent)
         setWindowTitle(s == RotatorSession::State::Disconnected ? tr("Slew")
                                                                 : tr("Slew — %1").arg(m_session->uri()));
     });
-    connect(m_config, &ConfigEditor::profileChanged, this, &MainWindow::showProfile);
-    connect(session, &RotatorSession::profileChanged, this, &MainWindow::showProfile);
-    wirePlot();
-    showProfile();
-    m_keys = new KeyboardControl(this, m_stop, m_jog, this);
-    connect(m_keys, &KeyboardControl::presetKey, this, &MainWindow::onPresetKey);
-    // The plot takes no typing: the focus rests there after a go-to sent
-    // with Enter and after a click beside a text field.
-    new TextFieldFocus(this, m_plot, this);
-    connect(m_goto, &GotoPanel::sentByEnter, m_plot, [this] { m_plot->setFocus(Qt::OtherFocusReason); });
     buildMenus();
     const QScreen *screen = QGuiApplication::primaryScreen();
-    new WindowState(this, splitter, m_tabs, screen ? screen->availableGeometry() : QRect(0, 0, 1440, 900));
-    // Whenever the splitter is laid out again: the tabs their pages' width.
-    m_splitter = splitter;
-    splitter->installEventFilter(this);
-    QMetaObject::invokeMethod(this, &MainWindow::giveTheTabsTheirWidth, Qt::QueuedConnection);
+    new WindowState(this, m_splitter, m_tabs, screen ? screen->availableGeometry() : QRect(0, 0, 1440, 900));
 }
 
-void MainWindow::buildMenus()
+void StationWindow::buildMenus()
 {
     // A station that lives on a broker opens in a window of its own.
     QMenu *file = menuBar()->addMenu(tr("&File"));
@@ -331,7 +270,7 @@ void MainWindow::buildMenus()
     QMenu *rotator = menuBar()->addMenu(tr("&Rotator"));
     QAction *wizard = rotator->addAction(tr("Setup and tuning &wizard…"));
     wizard->setObjectName(QStringLiteral("actionSetupWizard"));
-    connect(wizard, &QAction::triggered, this, &MainWindow::openSetupWizard);
+    connect(wizard, &QAction::triggered, this, &StationWindow::openSetupWizard);
     rotator->addSeparator();
     // Quit stops the rotator first and closes once the stop has left the
     // link, as SIGTERM does: leaving never leaves the antenna moving.
@@ -361,7 +300,7 @@ void MainWindow::buildMenus()
     });
     QAction *sets = sky->addAction(tr("&Element sets…"));
     sets->setObjectName(QStringLiteral("actionElementSets"));
-    connect(sets, &QAction::triggered, this, &MainWindow::openElementSets);
+    connect(sets, &QAction::triggered, this, &StationWindow::openElementSets);
     QAction *time = sky->addAction(tr("&Time controller…"));
     time->setObjectName(QStringLiteral("actionTimeController"));
     connect(time, &QAction::triggered, m_time, &TimeController::showController);
@@ -392,17 +331,8 @@ void MainWindow::buildMenus()
     });
 }
 
-void MainWindow::showNote(const QString &title, const QString &html)
-{
-    // Window-modal and opened, not exec()'d: the event loop, and Stop, keep
-    // running while it is up.
-    auto *box = new QMessageBox(QMessageBox::Information, title, html, QMessageBox::Close, this);
-    box->setTextFormat(Qt::RichText);
-    box->setAttribute(Qt::WA_DeleteOnClose);
-    box->open();
-}
 
-void MainWindow::openElementSets()
+void StationWindow::openElementSets()
 {
     auto *dialog = new ElementSetsDialog(m_elementSets, this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
@@ -410,158 +340,20 @@ void MainWindow::openElementSets()
     dialog->open();
 }
 
-void MainWindow::openSetupWizard()
+void StationWindow::openSetupWizard()
 {
     auto *wizard = new SetupWizard(m_session, this);
     wizard->setObjectName(QStringLiteral("setupWizard"));
     wizard->setAttribute(Qt::WA_DeleteOnClose);
     connect(wizard, &SetupWizard::profileSaved, this, [this](const QString &path) {
         logInfo(tr("setup wizard saved the rotator profile to %1").arg(path));
-        showProfile();
+        if (const std::optional<face::StationState> state = m_face->state())
+            showState(*state); // the travel and park it may have changed
     });
     wizard->open(); // window-modal, never from a timer: the event loop keeps running
 }
 
-void MainWindow::bringToFront(QWidget *page)
-{
-    // Every tab widget on the way up shows the page that holds it.
-    for (QWidget *child = page; child && child != this; child = child->parentWidget()) {
-        QWidget *stack = child->parentWidget();
-        auto *tabs = stack ? qobject_cast<QTabWidget *>(stack->parentWidget()) : nullptr;
-        if (tabs && tabs->indexOf(child) >= 0)
-            tabs->setCurrentWidget(child);
-    }
-}
-
-void MainWindow::giveTheTabsTheirWidth()
-{
-    // The pages scroll on a screen too narrow for them (1024x600); where
-    // the plot can spare the width, they get what their widest page needs
-    // not to scroll sideways, and the plot (a square, and the first to
-    // grow) what is left, never below its least.
-    int need = 0;
-    for (const ScrollablePage *page : m_tabs->findChildren<ScrollablePage *>())
-        need = std::max(need, page->pageLeastWidth());
-    need += m_tabs->width() - m_tabs->currentWidget()->width(); // the tab widget's own frame
-    QList<int> sizes = m_splitter->sizes();
-    const int plotLeast = m_splitter->widget(0)->minimumSizeHint().width();
-    if (sizes.size() != 3 || sizes[2] >= need || sizes[0] <= plotLeast)
-        return;
-    const int give = std::min(need - sizes[2], sizes[0] - plotLeast);
-    sizes[0] -= give;
-    sizes[2] += give;
-    m_splitter->setSizes(sizes);
-}
-
-bool MainWindow::eventFilter(QObject *watched, QEvent *event)
-{
-    if (watched == m_splitter && event->type() == QEvent::Resize)
-        QMetaObject::invokeMethod(this, &MainWindow::giveTheTabsTheirWidth, Qt::QueuedConnection);
-    return QMainWindow::eventFilter(watched, event);
-}
-
-void MainWindow::logInfo(const QString &text)
-{
-    m_log->addEvent(station::AlarmMonitor::Severity::Info, text);
-    statusBar()->showMessage(text, 8000);
-}
-
-void MainWindow::reportProblem(const QString &text)
-{
-    m_log->addEvent(station::AlarmMonitor::Severity::Warning, text);
-    statusBar()->showMessage(text, 30000);
-}
-
-QWidget *MainWindow::buildControlColumn()
-{
-    auto *column = new QWidget;
-    column->setObjectName(QStringLiteral("controlColumn"));
-    column->setMinimumWidth(300);
-    column->setMaximumWidth(380);
-    auto *l = new QVBoxLayout(column);
-    l->setContentsMargins(4, 0, 4, 0);
-    l->setSpacing(4);
-    l->addWidget(titledGroup(tr("Position"), m_readout));
-    l->addWidget(titledGroup(tr("Go to"), m_goto));
-    l->addWidget(titledGroup(tr("Jog: hold, or arrow keys"), m_jog));
-    // STOP, and beside it what Slew's tracking is doing: one row.
-    auto *stopRow = new QHBoxLayout;
-    stopRow->addWidget(m_stop, 1);
-    stopRow->addWidget(m_trackingLine, 1);
-    l->addLayout(stopRow);
-    l->addWidget(m_parkHome);
-    l->addWidget(titledGroup(tr("Presets"), m_presets), 1);
-    return column;
-}
-
-void MainWindow::wirePlot()
-{
-    connect(m_session, &RotatorSession::positionChanged, m_plot, &PolarPlotWidget::setActual);
-    connect(m_session, &RotatorSession::targetChanged, m_plot, &PolarPlotWidget::setTarget);
-    connect(m_session, &RotatorSession::targetCleared, m_plot, &PolarPlotWidget::clearTarget);
-    connect(m_session, &RotatorSession::commandedChanged, m_plot, &PolarPlotWidget::setCommanded);
-    connect(m_session, &RotatorSession::stateChanged, m_plot, [this](RotatorSession::State s) {
-        if (s == RotatorSession::State::Connecting)
-            m_plot->clearPositions();
-    });
-    connect(m_session, &RotatorSession::parkChanged, this, &MainWindow::showPark);
-    connect(m_plot, &PolarPlotWidget::targetPicked, this, &MainWindow::onTargetPicked);
-    connect(m_confirm, &TargetConfirmation::pendingChanged, m_plot, &PolarPlotWidget::setPendingTarget);
-    connect(m_confirm, &TargetConfirmation::accepted, this, &MainWindow::sendPickedTarget);
-}
-
-void MainWindow::onPresetKey(int index)
-{
-    // Alt+1..9. Without "Ask before moving" it goes at once, as a click on
-    // the preset list does; with it, the strip under the plot asks first,
-    // as for a click on the plot.
-    const model::Preset *preset = m_presets->presets().at(index);
-    if (!preset || !m_confirm->confirmationWanted()) {
-        m_presets->recall(index); // says "There is no preset 4." where there is none
-        return;
-    }
-    if (const model::MoveCheck check = m_session->previewPointing(preset->azimuth, preset->elevation); !check.allowed()) {
-        m_confirm->showProblem(check.refusal);
-        return;
-    }
-    m_askedPreset = index;
-    m_confirm->ask(preset->azimuth, preset->elevation, tr("preset '%1'").arg(preset->name));
-}
-
-void MainWindow::onTargetPicked(double az, double el)
-{
-    m_askedPreset.reset();
-    if (const model::MoveCheck check = m_session->previewPointing(az, el); !check.allowed()) {
-        m_confirm->showProblem(check.refusal);
-        return;
-    }
-    m_goto->setFields(az, el);
-    if (m_confirm->confirmationWanted())
-        m_confirm->ask(az, el);
-    else
-        sendPickedTarget(az, el);
-}
-
-void MainWindow::sendPickedTarget(double az, double el)
-{
-    // A preset asked for by its key goes as the preset (its name in the log).
-    if (const std::optional<int> preset = std::exchange(m_askedPreset, std::nullopt)) {
-        if (m_presets->recall(*preset))
-            m_confirm->showGoing(m_session->targetAzimuth(), m_session->targetElevation());
-        else
-            m_confirm->cancel();
-        return;
-    }
-    if (const session::CommandResult sent = m_session->gotoPosition(az, el); !sent) {
-        m_confirm->showProblem(sent.refusal);
-        return;
-    }
-    const QPointF target(m_session->targetAzimuth(), m_session->targetElevation());
-    m_actions->moveStarted(tr("go to %1 (picked on the plot)").arg(describePosition(target)), target);
-    m_confirm->showGoing(target.x(), target.y());
-}
-
-void MainWindow::wireOperatorActions()
+void StationWindow::wireOperatorActions()
 {
     m_actions = new OperatorActions(m_station->moveWatch(), this);
     connect(m_actions, &OperatorActions::logged, this, [this](station::AlarmMonitor::Severity severity, const QString &text) {
@@ -586,24 +378,8 @@ void MainWindow::wireOperatorActions()
     connect(m_jog, &JogPad::jogStarted, m_actions, &OperatorActions::action); // its release is a stop
 }
 
-void MainWindow::showProfile()
-{
-    // Both in the pointing frame, as the position is.
-    m_plot->setLimits(m_session->moveGate().limits());
-    showPark();
-    m_charts->setElevationShown(!m_session->isAzimuthOnly());
-}
 
-void MainWindow::showPark()
-{
-    // In the pointing frame, as the position is; nothing until the
-    // controller's registers have said where it parks.
-    m_plot->setPark(m_session->parkKnown()
-                        ? std::optional<QPointF>(QPointF(m_session->parkAzimuth(), m_session->parkElevation()))
-                        : std::nullopt);
-}
-
-void MainWindow::connectTo(const QString &uri, std::optional<protocol::Dialect> dialect)
+void StationWindow::connectTo(const QString &uri, std::optional<protocol::Dialect> dialect)
 {
     m_connection->setUri(uri);
     if (dialect)
