@@ -9,6 +9,8 @@
 #include "remoteoperation.h"
 
 #include "bridge/rotctldserver.h"
+#include "face/schedulerequest.h"
+#include "input/finitenumber.h"
 #include "radio/transpondersources.h"
 #include "records/passrecordstore.h"
 #include "session/controllerrotors.h"
@@ -38,6 +40,21 @@ StationOptions windowOptions()
     StationOptions options;
     options.followControllerRotors = true;
     return options;
+}
+
+// Why a schedule may not be run with these options, or empty: the ranges
+// every face takes (face/schedulerequest.h), so one in this process is
+// held to what the broker's commands are.
+QString scheduleOptionsFault(const ScheduleOptions &options)
+{
+    QString why;
+    if (!input::checkNumber(options.hours, face::kScheduleHours, &why))
+        return Station::tr("a schedule's hours: %1").arg(why);
+    if (!input::checkNumber(options.minElevationDeg, face::kScheduleMinElevation, &why))
+        return Station::tr("a schedule's minimum elevation: %1").arg(why);
+    if (!input::checkNumber(options.guardSeconds, face::kScheduleGuard, &why))
+        return Station::tr("a schedule's guard time: %1").arg(why);
+    return {};
 }
 
 } // namespace
@@ -303,6 +320,8 @@ face::Outcome Station::runSchedule(const QList<tracking::TrackTarget> &targets, 
         return face::Outcome::refused(tr("a schedule needs the station's place"));
     if (targets.isEmpty())
         return face::Outcome::refused(tr("a schedule needs at least one target"));
+    if (const QString fault = scheduleOptionsFault(options); !fault.isEmpty())
+        return face::Outcome::refused(fault);
     if (const QString other = otherSteering(); !other.isEmpty())
         return face::Outcome::refused(othersSteeringRefusal(other));
     if (m_runner->isRunning())
@@ -319,6 +338,22 @@ face::Outcome Station::untrack(const QString &why)
     if (m_runner)
         m_runner->stop(why);
     return tracking ? face::Outcome::done() : face::Outcome::refused(tr("Slew is not tracking"));
+}
+
+face::Outcome Station::stopSchedule(const QString &why)
+{
+    if (!m_schedule || !m_schedule->isRunning())
+        return face::Outcome::refused(tr("no schedule is running"));
+    m_schedule->stop(why);
+    return face::Outcome::done();
+}
+
+face::Outcome Station::holdRadio(bool held)
+{
+    if (!m_radio)
+        return face::Outcome::refused(m_error);
+    m_radio->holdControl(held);
+    return face::Outcome::done();
 }
 
 QString Station::openPassRecords(const QString &path, int keepDays, bool readWhenTaken)

@@ -185,10 +185,22 @@ public:
     // highest) where they overlap and only where the rotator can get from
     // one to the next: the schedule (schedulerunner.h). Refused as track()
     // is. A single track() ends it, as untrack() does.
+    // Refused too when an option is outside the ranges every face takes
+    // (face/schedulerequest.h).
     face::Outcome runSchedule(const QList<tracking::TrackTarget> &targets, const ScheduleOptions &options);
     // Ends one target's tracking and the schedule alike; refused when
     // neither runs.
     face::Outcome untrack(const QString &why);
+    // Ends the schedule, and the pass of it being followed; refused when no
+    // schedule runs. One target tracked on its own is left alone: that is
+    // untrack()'s, and an operator who ends a schedule has not asked for it.
+    face::Outcome stopSchedule(const QString &why);
+    // The operator takes the radio's dial (held) from the Doppler steering,
+    // or hands it back (dopplerradio.h, holdControl). Never refused for want
+    // of a radio: a hold is kept and applies to a radio set later, as the
+    // radio part keeps it; refused only by a station with no rotor, which
+    // has no radio part at all.
+    face::Outcome holdRadio(bool held);
     // Who steers the first rotor from outside now ("remote tracker
     // 127.0.0.1:5533"), or empty.
     QString otherSteering() const;

@@ -45,4 +45,17 @@ std::optional<tracking::TrackTarget> targetByName(const Station &station, const 
     return target;
 }
 
+std::optional<QList<tracking::TrackTarget>> targetsByName(const Station &station, const QList<sky::ElementSet> &given,
+                                                          const QStringList &texts, QString *why)
+{
+    QList<tracking::TrackTarget> targets;
+    for (const QString &text : texts) {
+        const std::optional<tracking::TrackTarget> found = targetByName(station, given, text.trimmed(), why);
+        if (!found)
+            return std::nullopt;
+        targets.append(*found);
+    }
+    return targets;
+}
+
 } // namespace slew::station

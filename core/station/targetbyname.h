@@ -12,6 +12,7 @@
 
 #include <QList>
 #include <QString>
+#include <QStringList>
 
 #include <optional>
 
@@ -23,5 +24,11 @@ class Station;
 // or more than one satellite.
 std::optional<tracking::TrackTarget> targetByName(const Station &station, const QList<sky::ElementSet> &given,
                                                   const QString &text, QString *why);
+
+// A schedule's targets, each found as above, in the order given; none, with
+// the first one's *why, when any names no target or more than one satellite
+// (the why names it).
+std::optional<QList<tracking::TrackTarget>> targetsByName(const Station &station, const QList<sky::ElementSet> &given,
+                                                          const QStringList &texts, QString *why);
 
 } // namespace slew::station

@@ -5,7 +5,8 @@
 // reverse hold (trackers held off while it tracks, its tracking refused
 // while a tracker steers), the operator's Stop holding trackers off until
 // control is handed back, an alarm raised and cleared and written to the
-// service's log in the banner's words, and every rotor stopped before exit.
+// service's log in the banner's words, every rotor stopped before exit, and
+// the rules for a schedule's numbers and end and for the radio's hold.
 
 #include "../common/simulatorpump.h"
 #include "linkschemes.h"
@@ -13,6 +14,8 @@
 #include "bridge/rotctldserver.h"
 #include "session/rotatorsession.h"
 #include "station/alarmmonitor.h"
+#include "station/dopplerradio.h"
+#include "station/schedulerunner.h"
 #include "station/station.h"
 #include "station/stationlog.h"
 #include "tracking/passrunner.h"
@@ -250,6 +253,49 @@ private slots:
         QVERIFY2(sent.join(u' ').contains(QStringLiteral("SA")), qPrintable(sent.join(u'|')));
         station.shutdown(QStringLiteral("again")); // said twice: nothing more
         QCOMPARE(stopSent.count(), 1);
+    }
+
+    // The Station's rules for a schedule, whichever face asks: its numbers
+    // within the ranges every face takes, its end only its own (one target
+    // tracked on its own is untrack's); and the radio's hold kept with no
+    // radio set, refused only by a station with no radio part at all.
+    void aSchedulesRulesAndTheRadiosHold()
+    {
+        Station station(onTheSimulator(QStringLiteral("sim:?model=satnogs&clock=manual")));
+        SimulatorPump pump;
+        QVERIFY(connectAndWait(station, pump));
+        station.setPlace(kPlace);
+        const auto fixed = slew::tracking::TrackTarget::parseFixedOrCelestial(QStringLiteral("azel:200,40"), nullptr);
+        slew::station::ScheduleOptions options;
+        options.hours = 0;
+        QCOMPARE(station.runSchedule({*fixed}, options).reason(), QStringLiteral("a schedule's hours: 0 hours is outside 0.1..168 hours"));
+        options = {};
+        options.minElevationDeg = std::nan("");
+        QVERIFY(station.runSchedule({*fixed}, options).reason().startsWith(QStringLiteral("a schedule's minimum elevation: ")));
+        options = {};
+        options.guardSeconds = -1;
+        QVERIFY(station.runSchedule({*fixed}, options).reason().startsWith(QStringLiteral("a schedule's guard time: ")));
+        QVERIFY(!station.scheduleRunner()->isRunning());
+
+        QCOMPARE(station.stopSchedule(QStringLiteral("test")).reason(), QStringLiteral("no schedule is running"));
+        QVERIFY(station.track(*fixed, 0).isDone());
+        QCOMPARE(station.stopSchedule(QStringLiteral("test")).reason(), QStringLiteral("no schedule is running"));
+        QVERIFY(station.passRunner()->isRunning());
+        QVERIFY(station.runSchedule({*fixed}, slew::station::ScheduleOptions{}).isDone());
+        QVERIFY(station.stopSchedule(QStringLiteral("test")).isDone());
+        QVERIFY(!station.scheduleRunner()->isRunning());
+
+        QVERIFY(station.radio()->linkUri().isEmpty());
+        QVERIFY(station.holdRadio(true).isDone());
+        QVERIFY(station.radio()->isControlHeld());
+        QVERIFY(station.holdRadio(false).isDone());
+        QVERIFY(!station.radio()->isControlHeld());
+
+        StationOptions bad;
+        bad.rotors = {1, 2};
+        bad.sharedLineUri = QStringLiteral("nosuchscheme://x");
+        Station none(bad);
+        QCOMPARE(none.holdRadio(true).reason(), none.error());
     }
 
     void aBadSharedLineMakesNoRotors()
