@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// What a face shows of a station's rotator and tracking now, as values:
-// the link, where the antenna points and where it is sent, its travel and
-// park, what Slew tracks and the pass, the alarms and the holds. A station
-// in this process fills it from its parts (station/stationstatereader.h);
-// one on a broker publishes it as JSON (remote/stationstate.h).
+// What a face shows of a station's rotator, tracking and radio now, as
+// values: the link, where the antenna points and where it is sent, its
+// travel and park, what Slew tracks and the pass, the alarms and the holds,
+// the radio's link and hold and where it is tuned. A station in this
+// process fills it from its parts (station/stationstatereader.h); one on a
+// broker publishes it as JSON (remote/stationstate.h).
 
 #include "model/rotatorlimits.h"
 
@@ -67,6 +68,16 @@ struct StationState {
     bool operatorHold = false;
     QString controllerVersion;
     QString slewVersion;
+    // The radio (station/dopplerradio.h): its link, named as the rotator's,
+    // or "none" when the station has no radio set; empty when not said (a
+    // station older than these fields). Whether the operator holds its
+    // dial (the Doppler steering tunes nothing then), whether the steering
+    // tunes it now, and the frequencies Slew last set on it or read from it
+    // (Hz), when known.
+    QString radioLink;
+    bool radioHeld = false;
+    bool radioSteering = false;
+    std::optional<double> radioReceiveHz, radioTransmitHz;
 };
 
 // A state carries at most this many alarms.

@@ -17,6 +17,8 @@ namespace {
 constexpr input::NumberRange kAzimuth{-360, 720, "°"};
 constexpr input::NumberRange kElevation{-90, 190, "°"};
 constexpr qint64 kLatestMs = 32503680000000LL; // the year 3000
+// What any radio link takes (radio/radiolimits.h's kFrequencyRange).
+constexpr input::NumberRange kRadioHz{1, 1e12, " Hz"};
 
 void putPoint(QJsonObject &o, const char *az, const char *el, const std::optional<QPointF> &p)
 {
@@ -42,6 +44,11 @@ std::optional<QPointF> takePoint(JsonFields &f, const char *az, const char *el)
 bool isLinkStateName(const QString &name)
 {
     return name == u"disconnected" || name == u"connecting" || name == u"connected" || name == u"reconnecting";
+}
+
+bool isRadioLinkName(const QString &name)
+{
+    return name == u"none" || isLinkStateName(name);
 }
 
 bool isTrackingStateName(const QString &name)
@@ -109,6 +116,15 @@ QByteArray encodeStationState(const face::StationState &s)
     if (!s.controllerVersion.isEmpty())
         o.insert(QStringLiteral("controller"), s.controllerVersion);
     o.insert(QStringLiteral("slew"), s.slewVersion);
+    if (!s.radioLink.isEmpty()) {
+        o.insert(QStringLiteral("radio_link"), s.radioLink);
+        o.insert(QStringLiteral("radio_held"), s.radioHeld);
+        o.insert(QStringLiteral("radio_steering"), s.radioSteering);
+        if (s.radioReceiveHz)
+            o.insert(QStringLiteral("radio_rx_hz"), *s.radioReceiveHz);
+        if (s.radioTransmitHz)
+            o.insert(QStringLiteral("radio_tx_hz"), *s.radioTransmitHz);
+    }
     return QJsonDocument(o).toJson(QJsonDocument::Compact);
 }
 
@@ -173,6 +189,20 @@ std::optional<face::StationState> parseStationState(const QByteArray &payload, Q
     s.operatorHold = f.flag(QStringLiteral("operator_hold")).value_or(false);
     s.controllerVersion = f.text(QStringLiteral("controller"), 100).value_or(QString());
     s.slewVersion = f.text(QStringLiteral("slew"), 40).value_or(QString());
+    // A station older than the radio's fields says none of them.
+    s.radioLink = f.text(QStringLiteral("radio_link"), 20).value_or(QString());
+    if (f.ok() && f.has(QStringLiteral("radio_link")) && !isRadioLinkName(s.radioLink))
+        f.fail(QStringLiteral("'radio_link' is not none, disconnected, connecting, connected or reconnecting"));
+    s.radioHeld = f.flag(QStringLiteral("radio_held")).value_or(false);
+    s.radioSteering = f.flag(QStringLiteral("radio_steering")).value_or(false);
+    s.radioReceiveHz = f.number(QStringLiteral("radio_rx_hz"), kRadioHz);
+    s.radioTransmitHz = f.number(QStringLiteral("radio_tx_hz"), kRadioHz);
+    if (f.ok() && s.radioLink.isEmpty()) {
+        for (const char *key : {"radio_held", "radio_steering", "radio_rx_hz", "radio_tx_hz"}) {
+            if (f.has(QLatin1String(key)))
+                f.fail(QStringLiteral("'%1' comes with 'radio_link'").arg(QLatin1String(key)));
+        }
+    }
     if (!f.noOthers()) {
         *error = f.error();
         return std::nullopt;

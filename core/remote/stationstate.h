@@ -14,7 +14,12 @@
 //    "tracking":"tracking", "tracking_target":"ISS (ZARYA)", "tracking_norad":25544,
 //    "pass_aos_ms":…, "pass_los_ms":…, "pass_max_el":56.1,
 //    "alarms":["…"], "severe":false, "operator_hold":false,
-//    "controller":"…", "slew":"0.1.0"}
+//    "controller":"…", "slew":"0.1.0",
+//    "radio_link":"connected", "radio_held":false, "radio_steering":true,
+//    "radio_rx_hz":435123456, "radio_tx_hz":145912345}
+//
+// The radio's fields come together, from radio_link on ("none": no radio
+// set); a station older than them leaves them all out.
 //
 // Unknown values are left out (JSON has no NaN). The reader checks every
 // field (jsonfields.h) and takes a message whole or not at all. Pure code.
@@ -39,6 +44,8 @@ std::optional<face::StationState> parseStationState(const QByteArray &payload, Q
 
 // The link states' names, for the JSON and for people.
 bool isLinkStateName(const QString &name);
+// A link state's name, or "none" (the station has no radio).
+bool isRadioLinkName(const QString &name);
 bool isTrackingStateName(const QString &name);
 
 } // namespace slew::remote

@@ -90,6 +90,9 @@ bool DopplerRadio::setLink(const QString &uri, QString *error)
         m_link->close();
     m_link = std::move(link);
     m_foundReceiveHz.reset();
+    m_frequencies = {};
+    emit linkChanged();
+    emit frequenciesChanged();
     if (!m_link)
         return true;
     m_steering = std::make_unique<radio::DopplerSteering>(m_link.get());
@@ -99,6 +102,10 @@ bool DopplerRadio::setLink(const QString &uri, QString *error)
             tr("radio: the operator's dial moved the downlink by %1; followed").arg(radio::signedHertz(offsetHz)));
     });
     connect(m_link.get(), &RadioLink::stateChanged, this, &DopplerRadio::onLinkState);
+    connect(m_steering.get(), &radio::DopplerSteering::tuned, this,
+            [this](const radio::RadioTuning &t) { noteFrequencies(t.receiveHz, t.transmitHz); });
+    connect(m_link.get(), &RadioLink::frequenciesRead, this,
+            [this](const radio::RadioFrequencies &f) { noteFrequencies(f.receiveHz, f.transmitHz); });
     connect(m_link.get(), &RadioLink::frequenciesRead, this, [this](const radio::RadioFrequencies &f) {
         // What the radio was on before Slew tuned it, to put back after
         // LOS: the answer to readFound()'s read. A pass waits for it (see
@@ -348,8 +355,21 @@ void DopplerRadio::putBack()
         m_link->setSplit(false);
         m_splitTurnedOn = false;
     }
-    if (m_foundReceiveHz)
+    if (m_foundReceiveHz) {
         m_link->setReceiveHz(*m_foundReceiveHz);
+        noteFrequencies(m_foundReceiveHz, std::nullopt);
+    }
+}
+
+void DopplerRadio::noteFrequencies(std::optional<double> receiveHz, std::optional<double> transmitHz)
+{
+    const radio::RadioFrequencies before = m_frequencies;
+    if (receiveHz && std::isfinite(*receiveHz))
+        m_frequencies.receiveHz = receiveHz;
+    if (transmitHz && std::isfinite(*transmitHz))
+        m_frequencies.transmitHz = transmitHz;
+    if (m_frequencies.receiveHz != before.receiveHz || m_frequencies.transmitHz != before.transmitHz)
+        emit frequenciesChanged();
 }
 
 void DopplerRadio::setPlan(const std::optional<RadioPlan> &plan)

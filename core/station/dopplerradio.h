@@ -110,6 +110,11 @@ public:
     // radio's dial moves. Empty when it moved, else why not, in words.
     QString tuneBy(double hz);
 
+    // Where Slew last tuned the radio or last read it to be, each path
+    // when known (Hz): what a face shows beside the link. A new radio
+    // (setLink) starts with none.
+    const radio::RadioFrequencies &frequencies() const { return m_frequencies; }
+
     // Figures of the pass being tuned, or of the last one.
     bool isSteering() const { return m_steering && m_steering->isSteering(); }
     radio::DopplerFigures figures() const;
@@ -118,6 +123,8 @@ public:
     static constexpr int kMeasuredIntervalMs = 200;
 
 signals:
+    // setLink() made another radio (or none) the station's.
+    void linkChanged();
     void linkStateChanged(slew::radio::RadioLink::State state, const QString &detail);
     // A lost link is opened again in `seconds`: try number `attempt` since it was last open.
     void reopenScheduled(int attempt, int seconds);
@@ -127,6 +134,8 @@ signals:
     // since the last one said, with its sign; and the transmit path's (NaN
     // when not tuned).
     void measured(double receiveErrorHz, double transmitErrorHz);
+    // frequencies() changed: a frequency set or read back.
+    void frequenciesChanged();
     void logLine(const QString &line);
 
 private:
@@ -168,6 +177,9 @@ private:
     int m_failuresNotSaid = 0;
     // measured(), thinned to kMeasuredIntervalMs: the largest of each path since the last.
     void onMeasured(double receiveErrorHz, double transmitErrorHz);
+    // A frequency set or read: each path known replaces the one held.
+    void noteFrequencies(std::optional<double> receiveHz, std::optional<double> transmitHz);
+    radio::RadioFrequencies m_frequencies;
     QElapsedTimer m_sinceMeasured;
     double m_worstReceive, m_worstTransmit;
 };

@@ -43,16 +43,18 @@ StatePublisher::StatePublisher(Station *station, const QString &stationName, Pub
 
 void StatePublisher::follow()
 {
-    connect(m_reader, &StationStateReader::stateChanged, this, [this](bool positionOnly) {
+    connect(m_reader, &StationStateReader::stateChanged, this, [this](bool readingsOnly) {
         // Each poll says where the antenna is, moved or not: at rest the
         // heartbeat is enough for the state.
-        if (positionOnly && m_published && m_published->position) {
+        if (readingsOnly && m_published && m_published->position) {
             const face::StationState now = m_reader->state();
             if (now.position && std::abs(now.position->x() - m_published->position->x()) < 0.005
-                && std::abs(now.position->y() - m_published->position->y()) < 0.005 && now.stale == m_published->stale)
+                && std::abs(now.position->y() - m_published->position->y()) < 0.005 && now.stale == m_published->stale
+                && now.radioReceiveHz == m_published->radioReceiveHz
+                && now.radioTransmitHz == m_published->radioTransmitHz)
                 return;
         }
-        stateChanged(positionOnly);
+        stateChanged(readingsOnly);
     });
     connect(m_reader, &StationStateReader::telemetryChanged, this, &StatePublisher::telemetryChanged);
 }
@@ -69,10 +71,10 @@ void StatePublisher::setEnabled(bool on)
     }
 }
 
-void StatePublisher::stateChanged(bool positionOnly)
+void StatePublisher::stateChanged(bool readingsOnly)
 {
     if (m_enabled)
-        schedule(m_stateDue, m_sinceState, positionOnly ? kPositionStateIntervalMs : kMinStateIntervalMs);
+        schedule(m_stateDue, m_sinceState, readingsOnly ? kPositionStateIntervalMs : kMinStateIntervalMs);
 }
 
 void StatePublisher::telemetryChanged()

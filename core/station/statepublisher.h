@@ -5,8 +5,9 @@
 // times a second and at least every kHeartbeatMs, and its telemetry
 // (remote/stationtelemetry.h) at most at the rotator's poll rate. Changes
 // that come together go out as one message. While the antenna only moves,
-// the state follows once a second: the telemetry carries the position at
-// the poll rate, and every message costs the station a wake-up or two. It
+// or the radio is only tuned (a pass's Doppler), the state follows once a
+// second: the telemetry carries the position at the poll rate, and every
+// message costs the station a wake-up or two. It
 // reads the Station as the window's face does (stationstatereader.h) and
 // hands each message to `publish`.
 
@@ -45,8 +46,9 @@ public:
     int telemetryPublished() const { return m_samples; }
 
 private:
-    // `positionOnly`: nothing but where the antenna points has changed.
-    void stateChanged(bool positionOnly = false);
+    // `readingsOnly`: nothing but where the antenna points or the radio's
+    // frequencies have changed.
+    void stateChanged(bool readingsOnly = false);
     void telemetryChanged();
     void publishTelemetry();
     void follow();

@@ -36,6 +36,23 @@ QString linkName(RotatorSession::State state)
     }
 }
 
+// The radio's link in the rotator's words: a lost link being opened again
+// is reconnecting, as the rotator's is.
+QString radioLinkName(const DopplerRadio &radio)
+{
+    if (!radio.link())
+        return QStringLiteral("none");
+    const bool again = radio.isWanted() && radio.reopenAttempts() > 0;
+    switch (radio.link()->state()) {
+    case radio::RadioLink::State::Open:
+        return QStringLiteral("connected");
+    case radio::RadioLink::State::Opening:
+        return again ? QStringLiteral("reconnecting") : QStringLiteral("connecting");
+    default:
+        return again ? QStringLiteral("reconnecting") : QStringLiteral("disconnected");
+    }
+}
+
 std::optional<double> known(double value)
 {
     return std::isfinite(value) ? std::optional<double>(value) : std::nullopt;
@@ -122,6 +139,14 @@ StationStateReader::StationStateReader(Station *station, QObject *parent) : QObj
             m_sample.dopplerTxError = known(tx);
             emit telemetryChanged();
         });
+        connect(radio, &DopplerRadio::linkChanged, this, state);
+        connect(radio, &DopplerRadio::linkStateChanged, this, state);
+        connect(radio, &DopplerRadio::reopenScheduled, this, state);
+        connect(radio, &DopplerRadio::controlHeldChanged, this, state);
+        connect(radio, &DopplerRadio::steeringChanged, this, state);
+        // During a pass the frequencies change many times a second, as the
+        // position does while the antenna moves: a reading, not an event.
+        connect(radio, &DopplerRadio::frequenciesChanged, this, [this] { emit stateChanged(true); });
     }
 }
 
@@ -187,6 +212,13 @@ face::StationState StationStateReader::state() const
     out.operatorHold = m_station->operatorHolds();
     out.controllerVersion = s->version().left(100);
     out.slewVersion = QCoreApplication::applicationVersion().left(40);
+    if (const DopplerRadio *radio = m_station->radio()) {
+        out.radioLink = radioLinkName(*radio);
+        out.radioHeld = radio->isControlHeld();
+        out.radioSteering = radio->isSteering();
+        out.radioReceiveHz = radio->frequencies().receiveHz;
+        out.radioTransmitHz = radio->frequencies().transmitHz;
+    }
     return out;
 }
 

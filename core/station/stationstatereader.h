@@ -32,9 +32,10 @@ public:
     void forgetMeasurements();
 
 signals:
-    // `positionOnly`: nothing but where the antenna points has changed (each
-    // poll says so, moved or not).
-    void stateChanged(bool positionOnly);
+    // `readingsOnly`: nothing but readings that change all the time have
+    // changed: where the antenna points (each poll says so, moved or not),
+    // the radio's frequencies (many times a second during a pass).
+    void stateChanged(bool readingsOnly);
     void telemetryChanged();
 
 private:

@@ -94,6 +94,9 @@ void states(const QByteArray &bytes)
     for (const auto &p : {s->position, s->target, s->park})
         check(!p || (finiteIn(p->x(), -360, 720) && finiteIn(p->y(), -90, 190)), "a state's position out of range");
     check(isLinkStateName(s->link) && isTrackingStateName(s->tracking), "a state with an unknown link or tracking state");
+    check(s->radioLink.isEmpty() || isRadioLinkName(s->radioLink), "a state with an unknown radio link state");
+    for (const auto &hz : {s->radioReceiveHz, s->radioTransmitHz})
+        check(!hz || finiteIn(*hz, 1, 1e12), "a state's radio frequency out of range");
     check(s->alarms.size() <= slew::face::kMostAlarms, "a state with too many alarms");
     for (const QString &text : s->alarms + QStringList{s->linkDetail, s->trackingTarget, s->controllerVersion})
         check(JsonFields::isShowable(text, 400), "a state with text that cannot be shown");

@@ -213,6 +213,11 @@ private slots:
         s.canHome = false;
         s.parkCommand = false;
         s.profileLimits = {0, 450, 0, 90};
+        s.radioLink = QStringLiteral("reconnecting");
+        s.radioHeld = true;
+        s.radioSteering = true;
+        s.radioReceiveHz = 435123456.5;
+        s.radioTransmitHz = 145912345;
         QString error;
         const auto back = parseStationState(encodeStationState(s), &error);
         QVERIFY2(back, qPrintable(error));
@@ -229,6 +234,19 @@ private slots:
         QCOMPARE(old->profileLimits, old->limits);
         QCOMPARE(back->clockMs, s.clockMs);
         QCOMPARE(back->clockRate, 2.0);
+        QCOMPARE(back->radioLink, s.radioLink);
+        QVERIFY(back->radioHeld && back->radioSteering);
+        QCOMPARE(back->radioReceiveHz, s.radioReceiveHz);
+        QCOMPARE(back->radioTransmitHz, s.radioTransmitHz);
+        // A station with no radio says so; one that has not read it yet
+        // says no frequency.
+        s.radioLink = QStringLiteral("none");
+        s.radioHeld = s.radioSteering = false;
+        s.radioReceiveHz.reset();
+        s.radioTransmitHz.reset();
+        const QByteArray none = encodeStationState(s);
+        QVERIFY(!none.contains("radio_rx_hz") && !none.contains("radio_tx_hz"));
+        QCOMPARE(parseStationState(none, &error)->radioLink, QStringLiteral("none"));
         // On the wall clock: neither is sent, and the rate reads 1.
         s.clockMs.reset();
         const QByteArray wall = encodeStationState(s);
@@ -255,6 +273,16 @@ private slots:
         QTest::newRow("status not words") << "{" + base + R"j(,"az_status":5})j" << "'az_status'";
         QTest::newRow("homing failed not a flag") << "{" + base + R"j(,"homing_failed":"yes"})j" << "'homing_failed'";
         QTest::newRow("negative time") << QByteArray(R"j({"unix_ms":-5,"link":"connected","az_min":0,"az_max":360,"el_min":0,"el_max":90})j") << "'unix_ms'";
+        QTest::newRow("radio") << "{" + base + R"j(,"radio_link":"connected","radio_held":false,"radio_steering":true,"radio_rx_hz":145800000})j" << "";
+        QTest::newRow("no radio") << "{" + base + R"j(,"radio_link":"none","radio_held":true,"radio_steering":false})j" << "";
+        QTest::newRow("radio link unknown") << "{" + base + R"j(,"radio_link":"up"})j" << "'radio_link'";
+        QTest::newRow("radio link a flag") << "{" + base + R"j(,"radio_link":true})j" << "'radio_link' is not text";
+        QTest::newRow("radio held as text") << "{" + base + R"j(,"radio_link":"connected","radio_held":"yes"})j" << "'radio_held'";
+        QTest::newRow("radio steering a number") << "{" + base + R"j(,"radio_link":"connected","radio_steering":1})j" << "'radio_steering'";
+        QTest::newRow("radio below 1 Hz") << "{" + base + R"j(,"radio_link":"connected","radio_rx_hz":-145800000})j" << "'radio_rx_hz'";
+        QTest::newRow("radio past a terahertz") << "{" + base + R"j(,"radio_link":"connected","radio_tx_hz":1e13})j" << "'radio_tx_hz'";
+        QTest::newRow("radio frequency as text") << "{" + base + R"j(,"radio_link":"connected","radio_rx_hz":"145.8 MHz"})j" << "'radio_rx_hz'";
+        QTest::newRow("radio hold without its link") << "{" + base + R"j(,"radio_held":true})j" << "'radio_held' comes with 'radio_link'";
     }
     void badStates()
     {
@@ -262,9 +290,22 @@ private slots:
         QFETCH(QString, error);
         QString why;
         const auto s = parseStationState(json, &why);
-        QCOMPARE(s.has_value(), error.isEmpty());
+        QVERIFY2(s.has_value() == error.isEmpty(), qPrintable(why));
         if (!error.isEmpty())
             QVERIFY2(why.contains(error), qPrintable(why));
+    }
+
+    // A station older than the radio's fields says none of them: its state
+    // still reads, with the radio not said (not "none": it may have one).
+    void aStateWithoutTheRadioStillReads()
+    {
+        const QByteArray older = R"j({"unix_ms":1790000000123,"time":"2026-09-21T12:53:20.123Z","link":"connected","az":120,"el":30,"stale":false,"moving":false,"az_min":0,"az_max":450,"el_min":0,"el_max":180,"azimuth_only":false,"tracking":"off","alarms":[],"severe":false,"operator_hold":false,"slew":"0.1.0"})j";
+        QString error;
+        const auto s = parseStationState(older, &error);
+        QVERIFY2(s, qPrintable(error));
+        QVERIFY(s->radioLink.isEmpty());
+        QVERIFY(!s->radioHeld && !s->radioSteering && !s->radioReceiveHz && !s->radioTransmitHz);
+        QVERIFY(!encodeStationState(*s).contains("radio"));
     }
 
     void telemetry()

@@ -5,13 +5,15 @@
 // reverse hold (trackers held off while it tracks, its tracking refused
 // while a tracker steers), the operator's Stop holding trackers off until
 // control is handed back, an alarm raised and cleared and written to the
-// service's log in the banner's words, every rotor stopped before exit, and
-// the rules for a schedule's numbers and end and for the radio's hold.
+// service's log in the banner's words, every rotor stopped before exit, the
+// rules for a schedule's numbers and end and for the radio's hold, and the
+// radio as the face's state says it.
 
 #include "../common/simulatorpump.h"
 #include "linkschemes.h"
 
 #include "bridge/rotctldserver.h"
+#include "face/stationface.h"
 #include "session/rotatorsession.h"
 #include "station/alarmmonitor.h"
 #include "station/dopplerradio.h"
@@ -28,6 +30,7 @@
 #include <cstdio>
 
 using slew::station::AlarmMonitor;
+using slew::station::DopplerRadio;
 using slew::station::Station;
 using slew::station::StationOptions;
 
@@ -296,6 +299,37 @@ private slots:
         bad.sharedLineUri = QStringLiteral("nosuchscheme://x");
         Station none(bad);
         QCOMPARE(none.holdRadio(true).reason(), none.error());
+    }
+
+    // The radio as every face sees it: its link in the rotator's words (or
+    // none), where it was read to be, and the operator's hold.
+    void theRadioIsInTheFacesState()
+    {
+        Station station(onTheSimulator(QStringLiteral("sim:?model=satnogs&clock=manual")));
+        slew::face::StationFace *face = station.face();
+        const auto state = [face] { return face->state().value_or(slew::face::StationState{}); };
+        QCOMPARE(state().radioLink, QStringLiteral("none"));
+        QVERIFY(!state().radioReceiveHz);
+        DopplerRadio *radio = station.radio();
+        QSignalSpy said(face, &slew::face::StationFace::stateChanged);
+        QString error;
+        QVERIFY2(radio->setLink(QStringLiteral("sim:"), &error), qPrintable(error)); // Hamlib's dummy rig
+        QCOMPARE(state().radioLink, QStringLiteral("disconnected"));
+        QVERIFY(runEventLoopUntil([&] { return !said.isEmpty(); }, 5000)); // a new radio is news
+        radio->connectRadio();
+        QVERIFY(runEventLoopUntil([&] { return state().radioLink == u"connected"; }, 10000));
+        // Where the radio was found, read as it opened.
+        QVERIFY(runEventLoopUntil([&] { return state().radioReceiveHz.has_value(); }, 10000));
+        QCOMPARE(state().radioReceiveHz, radio->frequencies().receiveHz);
+        QVERIFY(*state().radioReceiveHz > 0);
+        QVERIFY(!state().radioSteering);
+        QVERIFY(station.holdRadio(true).isDone());
+        QVERIFY(state().radioHeld);
+        // Another radio (here none) starts with nothing known of it.
+        QVERIFY(radio->setLink(QString(), &error));
+        QCOMPARE(state().radioLink, QStringLiteral("none"));
+        QVERIFY(!state().radioReceiveHz && !state().radioTransmitHz);
+        QVERIFY(state().radioHeld); // the hold is the station's, kept for the next radio
     }
 
     void aBadSharedLineMakesNoRotors()
