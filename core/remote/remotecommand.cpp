@@ -3,6 +3,7 @@
 
 #include "jsonfields.h"
 
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 
@@ -16,7 +17,7 @@ struct KindName {
     const char *name;
 };
 
-constexpr std::array<KindName, 7> kKinds{{
+constexpr std::array<KindName, 10> kKinds{{
     {RemoteCommand::Kind::Goto, "goto"},
     {RemoteCommand::Kind::Stop, "stop"},
     {RemoteCommand::Kind::Park, "park"},
@@ -24,7 +25,20 @@ constexpr std::array<KindName, 7> kKinds{{
     {RemoteCommand::Kind::Track, "track"},
     {RemoteCommand::Kind::Untrack, "untrack"},
     {RemoteCommand::Kind::Jog, "jog"},
+    {RemoteCommand::Kind::Schedule, "schedule"},
+    {RemoteCommand::Kind::Unschedule, "unschedule"},
+    {RemoteCommand::Kind::RadioHold, "radio_hold"},
 }};
+
+// "goto, stop, … or radio_hold", for a command of no known kind.
+QString everyKind()
+{
+    QStringList names;
+    for (const KindName &k : kKinds)
+        names << QLatin1String(k.name);
+    const QString last = names.takeLast();
+    return QStringLiteral("%1 or %2").arg(names.join(QStringLiteral(", ")), last);
+}
 
 // A position the gate then judges: any finite angle within a turn or two,
 // so the gate's own words say what is out of the rotator's travel.
@@ -81,7 +95,7 @@ ParsedCommand parseRemoteCommand(const QByteArray &payload)
         }
     }
     if (!known) {
-        out.error = QStringLiteral("unknown command '%1': goto, stop, park, home, track, untrack or jog").arg(*name);
+        out.error = QStringLiteral("unknown command '%1': %2").arg(*name, everyKind());
         return out;
     }
     switch (c.kind) {
@@ -104,6 +118,24 @@ ParsedCommand parseRemoteCommand(const QByteArray &payload)
                 f.fail(QStringLiteral("'target' is empty"));
         }
         c.minElevation = f.number(QStringLiteral("min_el"), {-5, 90, "°"});
+        break;
+    case RemoteCommand::Kind::Schedule: {
+        // An empty list is the station's to refuse, in the words every face hears.
+        const auto targets = f.texts(QStringLiteral("targets"), kMostScheduleTargets, kLongestTrackTarget, true);
+        for (qsizetype i = 0; targets && i < targets->size(); ++i) {
+            c.targets << targets->at(i).trimmed();
+            if (c.targets.last().isEmpty())
+                f.fail(QStringLiteral("'targets' item %1 is empty").arg(i + 1));
+        }
+        const face::ScheduleRequest defaults;
+        c.schedule.hours = f.number(QStringLiteral("hours"), face::kScheduleHours).value_or(defaults.hours);
+        c.schedule.minElevationDeg =
+            f.number(QStringLiteral("min_el"), face::kScheduleMinElevation).value_or(defaults.minElevationDeg);
+        c.schedule.guardSeconds = f.number(QStringLiteral("guard_s"), face::kScheduleGuard).value_or(defaults.guardSeconds);
+        break;
+    }
+    case RemoteCommand::Kind::RadioHold:
+        c.held = f.flag(QStringLiteral("held"), true).value_or(false);
         break;
     default:
         break;
@@ -136,6 +168,15 @@ QByteArray encodeRemoteCommand(const RemoteCommand &c)
         o.insert(QStringLiteral("target"), c.target);
         if (c.minElevation)
             o.insert(QStringLiteral("min_el"), *c.minElevation);
+        break;
+    case RemoteCommand::Kind::Schedule:
+        o.insert(QStringLiteral("targets"), QJsonArray::fromStringList(c.targets));
+        o.insert(QStringLiteral("hours"), c.schedule.hours);
+        o.insert(QStringLiteral("min_el"), c.schedule.minElevationDeg);
+        o.insert(QStringLiteral("guard_s"), c.schedule.guardSeconds);
+        break;
+    case RemoteCommand::Kind::RadioHold:
+        o.insert(QStringLiteral("held"), c.held);
         break;
     default:
         break;

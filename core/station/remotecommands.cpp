@@ -2,6 +2,7 @@
 #include "remotecommands.h"
 
 #include "remotejog.h"
+#include "schedulerequestoptions.h"
 #include "station.h"
 #include "targetbyname.h"
 
@@ -94,6 +95,10 @@ QString RemoteCommands::describe(const RemoteCommand &c) const
         return tr("jog az %1°/s, el %2°/s for %3 ms").arg(c.azSpeed, 0, 'f', 1).arg(c.elSpeed, 0, 'f', 1).arg(c.leaseMs);
     case RemoteCommand::Kind::Track:
         return tr("track %1").arg(c.target);
+    case RemoteCommand::Kind::Schedule:
+        return tr("schedule %1 for %2 h").arg(c.targets.join(QStringLiteral(", "))).arg(c.schedule.hours);
+    case RemoteCommand::Kind::RadioHold:
+        return c.held ? tr("hold the radio") : tr("hand the radio back to Doppler steering");
     default:
         return remote::commandName(c.kind);
     }
@@ -134,6 +139,15 @@ CommandResult RemoteCommands::obey(const RemoteCommand &c)
             return CommandResult{m_refusing};
         return CommandResult{m_station->untrack(tr("untracked from the broker")).reason()};
     }
+    // Ending a schedule takes a hand off the rotator, as untrack does: no
+    // hold stands in its way.
+    if (c.kind == RemoteCommand::Kind::Unschedule) {
+        if (!m_refusing.isEmpty())
+            return CommandResult{m_refusing};
+        return CommandResult{m_station->stopSchedule(tr("schedule ended from the broker")).reason()};
+    }
+    if (c.kind == RemoteCommand::Kind::RadioHold)
+        return holdRadio(c.held);
     if (const QString hold = holdOnMoves(); !hold.isEmpty()) {
         if (c.kind == RemoteCommand::Kind::Jog)
             m_jog->release();
@@ -153,6 +167,8 @@ CommandResult RemoteCommands::obey(const RemoteCommand &c)
         return m_jog->jog(c.azSpeed, c.elSpeed, c.leaseMs);
     case RemoteCommand::Kind::Track:
         return track(c);
+    case RemoteCommand::Kind::Schedule:
+        return schedule(c);
     default:
         return CommandResult{tr("not a command")};
     }
@@ -165,6 +181,31 @@ CommandResult RemoteCommands::track(const RemoteCommand &c)
     if (!target)
         return CommandResult{why};
     return CommandResult{m_station->track(*target, c.minElevation.value_or(0.0)).reason()};
+}
+
+CommandResult RemoteCommands::schedule(const RemoteCommand &c)
+{
+    QString why;
+    const std::optional<QList<tracking::TrackTarget>> targets = targetsByName(*m_station, m_elementSets, c.targets, &why);
+    if (!targets)
+        return CommandResult{why};
+    return CommandResult{m_station->runSchedule(*targets, scheduleOptions(c.schedule)).reason()};
+}
+
+CommandResult RemoteCommands::holdRadio(bool held)
+{
+    // Not a move: the holds on remote moves keep a second hand off the
+    // rotator, and the radio's hold neither turns the antenna nor fights
+    // Slew's tracking (it is what one asks during a pass). Taking the dial
+    // is always obeyed, as a stop is; handing it back to the steering,
+    // which then tunes (and may key an uplink on) the station's radio, is
+    // not while the operator at the station holds remote control.
+    if (!m_refusing.isEmpty())
+        return CommandResult{m_refusing};
+    if (!held && m_station->operatorHolds())
+        return CommandResult{tr("the operator at the station pressed Stop and holds remote control: the radio is "
+                                "not handed back to Doppler steering from afar until control is handed back")};
+    return CommandResult{m_station->holdRadio(held).reason()};
 }
 
 } // namespace slew::station

@@ -10,6 +10,11 @@
 //   - while Slew's own tracking has the rotator, remote moves are refused
 //     (as rotctld trackers are): untrack first;
 //   - a jog is a lease (remotejog.h);
+//   - a schedule is a move, held off as track is; ending one (unschedule)
+//     is not, as untrack is not;
+//   - the radio's hold is not a move: taken under any hold, handed back
+//     to Doppler steering only when the operator at the station does not
+//     hold remote control;
 //   - Stop is always obeyed, hold or flood or not: every rotor stops.
 //
 // Commands arrive at most kPerSecond a second after a burst of kBurst;
@@ -61,6 +66,8 @@ private:
     QString holdOnMoves() const; // why a remote move may not go now, or empty
     QString describe(const remote::RemoteCommand &command) const;
     session::CommandResult track(const remote::RemoteCommand &command);
+    session::CommandResult schedule(const remote::RemoteCommand &command);
+    session::CommandResult holdRadio(bool held);
     void endFlood();
 
     Station *m_station;

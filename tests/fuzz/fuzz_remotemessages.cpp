@@ -73,12 +73,22 @@ void commands(const QByteArray &bytes)
     check(c.leaseMs >= kShortestJogLeaseMs && c.leaseMs <= kLongestJogLeaseMs, "a lease out of bounds");
     check(JsonFields::isShowable(c.target, kLongestTrackTarget), "a track target too long or with control characters");
     check(!c.minElevation || finiteIn(*c.minElevation, -5, 90), "a minimum elevation out of range");
+    check(c.targets.size() <= kMostScheduleTargets, "a schedule of too many targets");
+    for (const QString &t : c.targets)
+        check(!t.isEmpty() && JsonFields::isShowable(t, kLongestTrackTarget),
+              "a schedule's target empty, too long or with control characters");
+    check(slew::face::kScheduleHours.contains(c.schedule.hours)
+              && slew::face::kScheduleMinElevation.contains(c.schedule.minElevationDeg)
+              && slew::face::kScheduleGuard.contains(c.schedule.guardSeconds),
+          "a schedule's numbers out of range");
     const ParsedCommand again = parseRemoteCommand(encodeRemoteCommand(c));
     check(again.command.has_value(), "a command written out does not read back");
     const RemoteCommand &b = *again.command;
     check(b.kind == c.kind && b.id == c.id && b.azimuth == c.azimuth && b.elevation == c.elevation
               && b.azSpeed == c.azSpeed && b.elSpeed == c.elSpeed && b.leaseMs == c.leaseMs && b.target == c.target
-              && b.minElevation == c.minElevation,
+              && b.minElevation == c.minElevation && b.targets == c.targets && b.held == c.held
+              && b.schedule.hours == c.schedule.hours && b.schedule.minElevationDeg == c.schedule.minElevationDeg
+              && b.schedule.guardSeconds == c.schedule.guardSeconds,
           "a command reads back different");
 }
 

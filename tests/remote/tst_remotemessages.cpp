@@ -136,7 +136,49 @@ private slots:
         QTest::newRow("extra field") << QByteArray(R"j({"id":"1","cmd":"stop","force":true})j") << "unknown field 'force'" << "1";
         QTest::newRow("escape in target") << QByteArray("{\"cmd\":\"track\",\"target\":\"a\\u001b[2Jb\"}") << "control characters" << "";
         QTest::newRow("long id") << (QByteArray("{\"id\":\"") + QByteArray(100, 'x') + "\",\"cmd\":\"stop\"}") << "'id'" << "";
-        QTest::newRow("too large") << (QByteArray("{\"cmd\":\"stop\",\"pad\":\"") + QByteArray(2000, ' ') + "\"}") << "over the" << "";
+        QTest::newRow("too large") << (QByteArray("{\"cmd\":\"stop\",\"pad\":\"") + QByteArray(40000, ' ') + "\"}") << "over the" << "";
+        QTest::newRow("schedule") << QByteArray(R"j({"id":"s","cmd":"schedule","targets":["FLOCK 2P-1","43218"],"hours":12,"min_el":5,"guard_s":60})j") << "" << "s";
+        QTest::newRow("schedule with defaults") << QByteArray(R"j({"cmd":"schedule","targets":["sun"]})j") << "" << "";
+        QTest::newRow("schedule of nothing is the station's to refuse") << QByteArray(R"j({"cmd":"schedule","targets":[]})j") << "" << "";
+        QTest::newRow("unschedule") << QByteArray(R"j({"id":"u","cmd":"unschedule"})j") << "" << "u";
+        QTest::newRow("radio hold") << QByteArray(R"j({"id":"r","cmd":"radio_hold","held":true})j") << "" << "r";
+        QTest::newRow("radio release") << QByteArray(R"j({"cmd":"radio_hold","held":false})j") << "" << "";
+        QTest::newRow("schedule without targets") << QByteArray(R"j({"id":"1","cmd":"schedule"})j") << "'targets' is missing" << "1";
+        QTest::newRow("schedule of a number") << QByteArray(R"j({"id":"1","cmd":"schedule","targets":["sun",25544]})j") << "'targets' holds an item that is not text" << "1";
+        QTest::newRow("schedule of one text") << QByteArray(R"j({"cmd":"schedule","targets":"sun"})j") << "'targets' is not a list" << "";
+        QTest::newRow("schedule of an empty name") << QByteArray(R"j({"cmd":"schedule","targets":["sun"," "]})j") << "'targets' item 2 is empty" << "";
+        QTest::newRow("schedule with a long name") << (QByteArray(R"j({"cmd":"schedule","targets":[")j") + QByteArray(101, 'x') + "\"]}") << "'targets' holds an item" << "";
+        QTest::newRow("schedule with an escape") << QByteArray("{\"cmd\":\"schedule\",\"targets\":[\"a\\u001b[2Jb\"]}") << "control characters" << "";
+        QTest::newRow("schedule for negative hours") << QByteArray(R"j({"id":"2","cmd":"schedule","targets":["sun"],"hours":-1})j") << "'hours'" << "2";
+        QTest::newRow("schedule for a month") << QByteArray(R"j({"cmd":"schedule","targets":["sun"],"hours":720})j") << "'hours'" << "";
+        QTest::newRow("schedule below the ground") << QByteArray(R"j({"cmd":"schedule","targets":["sun"],"min_el":-30})j") << "'min_el'" << "";
+        QTest::newRow("schedule with a guard of a day") << QByteArray(R"j({"cmd":"schedule","targets":["sun"],"guard_s":86400})j") << "'guard_s'" << "";
+        QTest::newRow("schedule with text hours") << QByteArray(R"j({"cmd":"schedule","targets":["sun"],"hours":"24"})j") << "'hours' is not a number" << "";
+        QTest::newRow("schedule with a lease") << QByteArray(R"j({"cmd":"schedule","targets":["sun"],"lease_ms":100})j") << "unknown field 'lease_ms'" << "";
+        QTest::newRow("unschedule with targets") << QByteArray(R"j({"cmd":"unschedule","targets":["sun"]})j") << "unknown field 'targets'" << "";
+        QTest::newRow("radio hold not a flag") << QByteArray(R"j({"id":"3","cmd":"radio_hold","held":1})j") << "'held' is not true or false" << "3";
+        QTest::newRow("radio hold as text") << QByteArray(R"j({"cmd":"radio_hold","held":"true"})j") << "'held' is not true or false" << "";
+        QTest::newRow("radio hold unsaid") << QByteArray(R"j({"cmd":"radio_hold"})j") << "'held' is missing" << "";
+        QTest::newRow("radio hold with a frequency") << QByteArray(R"j({"cmd":"radio_hold","held":true,"hz":145800000})j") << "unknown field 'hz'" << "";
+        QByteArray many = R"j({"cmd":"schedule","targets":[)j";
+        for (int i = 0; i <= kMostScheduleTargets; ++i)
+            many += (i ? ",\"" : "\"") + QByteArray::number(40000 + i) + "\"";
+        QTest::newRow("schedule of too many") << many + "]}" << QStringLiteral("'targets' has %1 items, over the %2").arg(kMostScheduleTargets + 1).arg(kMostScheduleTargets) << "";
+    }
+
+    // The largest schedule a station takes, every name as long as it may
+    // be in three-byte characters, is a command it reads.
+    void theLargestScheduleFits()
+    {
+        RemoteCommand c;
+        c.id = QString(kLongestCommandId, QLatin1Char('i'));
+        c.kind = RemoteCommand::Kind::Schedule;
+        for (int i = 0; i < kMostScheduleTargets; ++i)
+            c.targets << QString(kLongestTrackTarget, QChar(0x20ac)); // €, three bytes in UTF-8
+        c.schedule = {168.0 - 1.0 / 3.0, -4.123456789, 3599.987654321};
+        const ParsedCommand parsed = parseRemoteCommand(encodeRemoteCommand(c));
+        QVERIFY2(parsed.command, qPrintable(parsed.error));
+        QCOMPARE(parsed.command->targets, c.targets);
     }
     void commands()
     {
@@ -155,6 +197,11 @@ private slots:
             QCOMPARE(again.command->azSpeed, parsed.command->azSpeed);
             QCOMPARE(again.command->leaseMs, parsed.command->leaseMs);
             QCOMPARE(again.command->target, parsed.command->target);
+            QCOMPARE(again.command->targets, parsed.command->targets);
+            QCOMPARE(again.command->schedule.hours, parsed.command->schedule.hours);
+            QCOMPARE(again.command->schedule.minElevationDeg, parsed.command->schedule.minElevationDeg);
+            QCOMPARE(again.command->schedule.guardSeconds, parsed.command->schedule.guardSeconds);
+            QCOMPARE(again.command->held, parsed.command->held);
         } else {
             QVERIFY(!parsed.command);
             QVERIFY2(parsed.error.contains(error), qPrintable(parsed.error));

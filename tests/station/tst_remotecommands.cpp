@@ -5,15 +5,19 @@
 // operator's Stop holding remote moves off until control is handed back;
 // Slew's own tracking holding them off too; Stop always obeyed, over the
 // flood limit too; a jog that stops by itself when its lease is not renewed,
-// and a renewal that sends nothing new to the rotator.
+// and a renewal that sends nothing new to the rotator; a schedule held off
+// as a track is, its end and the radio's hold not.
 
 #include "../common/simulatorpump.h"
 #include "linkschemes.h"
 
 #include "remote/remotecommand.h"
 #include "session/rotatorsession.h"
+#include "sky/elementsetformat.h"
+#include "station/dopplerradio.h"
 #include "station/remotecommands.h"
 #include "station/remotejog.h"
+#include "station/schedulerunner.h"
 #include "station/station.h"
 #include "tracking/passrunner.h"
 #include "tracking/tracktarget.h"
@@ -125,6 +129,127 @@ private slots:
         const RemoteReply unknown = answer(commands, R"j({"id":"s","cmd":"track","target":"NO SUCH SAT"})j");
         QVERIFY(!unknown.ok);
         QVERIFY2(unknown.error.contains(QStringLiteral("NO SUCH SAT")), qPrintable(unknown.error));
+    }
+
+    void aScheduleIsAMoveAndEndingOneIsNot()
+    {
+        Station station(onTheSimulator());
+        SimulatorPump pump;
+        QVERIFY(connectAndWait(station, pump));
+        station.setPlace(slew::sky::Site{55.7, 12.6, 10, {}, {}});
+        // Satellites the station was given (the service's --tle).
+        const slew::sky::ElementSetFile given =
+            slew::sky::readElementSetFile(QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"));
+        QVERIFY(!given.sets.isEmpty());
+        RemoteCommands commands(&station, given.sets);
+        slew::station::ScheduleRunner *schedule = station.scheduleRunner();
+
+        // A name that finds nothing refuses the whole schedule, naming it.
+        const RemoteReply unknown = answer(commands, R"j({"id":"1","cmd":"schedule","targets":["FLOCK 2P-1","NO SUCH SAT"]})j");
+        QVERIFY(!unknown.ok);
+        QVERIFY2(unknown.error.contains(QStringLiteral("NO SUCH SAT")), qPrintable(unknown.error));
+        QVERIFY(!schedule->isRunning());
+        // So does one that finds several.
+        const RemoteReply several = answer(commands, R"j({"id":"2","cmd":"schedule","targets":["FLOCK 2P"]})j");
+        QVERIFY(!several.ok);
+        QVERIFY2(several.error.contains(QStringLiteral("'FLOCK 2P' matches")), qPrintable(several.error));
+        // An empty list is the station's to refuse, in its own words.
+        QCOMPARE(answer(commands, R"j({"id":"3","cmd":"schedule","targets":[]})j").error,
+                 QStringLiteral("a schedule needs at least one target"));
+
+        // Two satellites, by name and by catalogue number, with the
+        // operator's numbers: run, and planned with them.
+        const RemoteReply ran = answer(
+            commands, R"j({"id":"4","cmd":"schedule","targets":["FLOCK 2P-1","40039"],"hours":12,"min_el":5,"guard_s":60})j");
+        QVERIFY2(ran.ok, qPrintable(ran.error));
+        QVERIFY(schedule->isRunning());
+        QCOMPARE(schedule->targets().size(), 2);
+        QCOMPARE(schedule->targets().at(1).name(), QStringLiteral("PERSEUS-M1"));
+        TRY_VERIFY_WITH_TIMEOUT(schedule->schedule().settings.startJulian > 0, 20000);
+        QCOMPARE(schedule->schedule().settings.hours, 12.0);
+        QCOMPARE(schedule->schedule().settings.minElevationDeg, 5.0);
+        QCOMPARE(schedule->schedule().settings.guardSeconds, 60.0);
+
+        // Ended from afar; a second time there is none to end.
+        QVERIFY(answer(commands, R"j({"id":"5","cmd":"unschedule"})j").ok);
+        QVERIFY(!schedule->isRunning());
+        QCOMPARE(answer(commands, R"j({"id":"6","cmd":"unschedule"})j").error, QStringLiteral("no schedule is running"));
+
+        // The operator's hold refuses a schedule as it refuses a track...
+        QVERIFY(station.stop(QStringLiteral("the test")));
+        const RemoteReply held = answer(commands, R"j({"id":"7","cmd":"schedule","targets":["FLOCK 2P-1"]})j");
+        QVERIFY(!held.ok);
+        QVERIFY2(held.error.contains(QStringLiteral("holds remote control")), qPrintable(held.error));
+        QVERIFY(!schedule->isRunning());
+        // ...but not its end: the operator's own schedule may be ended from afar.
+        QVERIFY(station.runSchedule({schedule->targets().first()}, slew::station::ScheduleOptions{}).isDone());
+        QVERIFY(answer(commands, R"j({"id":"8","cmd":"unschedule"})j").ok);
+        QVERIFY(!schedule->isRunning());
+        station.handControlBack();
+
+        // Slew's own tracking holds a schedule off as it holds a go-to off.
+        QVERIFY(answer(commands, R"j({"id":"9","cmd":"track","target":"azel:200,40"})j").ok);
+        TRY_VERIFY_WITH_TIMEOUT(station.passRunner()->holdsRotator(), 20000);
+        const RemoteReply tracking = answer(commands, R"j({"id":"10","cmd":"schedule","targets":["FLOCK 2P-1"]})j");
+        QVERIFY(!tracking.ok);
+        QVERIFY2(tracking.error.contains(QStringLiteral("Slew's own tracking")), qPrintable(tracking.error));
+        // Unschedule ends a schedule only: one target tracked is untrack's.
+        QCOMPARE(answer(commands, R"j({"id":"11","cmd":"unschedule"})j").error, QStringLiteral("no schedule is running"));
+        QVERIFY(station.passRunner()->isRunning());
+        QVERIFY(answer(commands, R"j({"id":"12","cmd":"untrack"})j").ok);
+
+        // A station that is closing starts nothing, and ends nothing either
+        // but by Stop.
+        commands.refuseFromNow(QStringLiteral("the station is shutting down"));
+        QCOMPARE(answer(commands, R"j({"id":"13","cmd":"schedule","targets":["FLOCK 2P-1"]})j").error,
+                 QStringLiteral("the station is shutting down"));
+        QCOMPARE(answer(commands, R"j({"id":"14","cmd":"unschedule"})j").error,
+                 QStringLiteral("the station is shutting down"));
+    }
+
+    // The radio's hold is no move of the rotator: Slew's tracking does not
+    // hold it off (one takes the dial during a pass), and taking the dial
+    // is always obeyed, as a stop is; handing it back to the Doppler
+    // steering waits for the operator at the station to hand control back.
+    void theRadiosHoldIsNotAMove()
+    {
+        Station station(onTheSimulator());
+        SimulatorPump pump;
+        QVERIFY(connectAndWait(station, pump));
+        station.setPlace(slew::sky::Site{55.7, 12.6, 10, {}, {}});
+        RemoteCommands commands(&station, {});
+        slew::station::DopplerRadio *radio = station.radio();
+        QVERIFY(radio->linkUri().isEmpty()); // no radio set: the hold is kept for one set later
+        QSignalSpy held(radio, &slew::station::DopplerRadio::controlHeldChanged);
+        QVERIFY(answer(commands, R"j({"id":"1","cmd":"radio_hold","held":true})j").ok);
+        QVERIFY(radio->isControlHeld());
+        QCOMPARE(held.size(), 1);
+        QVERIFY(answer(commands, R"j({"id":"2","cmd":"radio_hold","held":false})j").ok);
+        QVERIFY(!radio->isControlHeld());
+
+        QVERIFY(answer(commands, R"j({"id":"3","cmd":"track","target":"azel:200,40"})j").ok);
+        TRY_VERIFY_WITH_TIMEOUT(station.passRunner()->holdsRotator(), 20000);
+        QVERIFY(answer(commands, R"j({"id":"4","cmd":"radio_hold","held":true})j").ok);
+        QVERIFY(radio->isControlHeld());
+        QVERIFY(answer(commands, R"j({"id":"5","cmd":"radio_hold","held":false})j").ok);
+        QVERIFY(!radio->isControlHeld());
+        QVERIFY(station.passRunner()->isRunning()); // the tracking went on
+
+        QVERIFY(station.stop(QStringLiteral("the test")));
+        QVERIFY(answer(commands, R"j({"id":"6","cmd":"radio_hold","held":true})j").ok);
+        QVERIFY(radio->isControlHeld());
+        const RemoteReply back = answer(commands, R"j({"id":"7","cmd":"radio_hold","held":false})j");
+        QVERIFY(!back.ok);
+        QVERIFY2(back.error.contains(QStringLiteral("holds remote control")), qPrintable(back.error));
+        QVERIFY(radio->isControlHeld());
+        station.handControlBack();
+        QVERIFY(answer(commands, R"j({"id":"8","cmd":"radio_hold","held":false})j").ok);
+        QVERIFY(!radio->isControlHeld());
+
+        commands.refuseFromNow(QStringLiteral("the station is shutting down"));
+        QCOMPARE(answer(commands, R"j({"id":"9","cmd":"radio_hold","held":true})j").error,
+                 QStringLiteral("the station is shutting down"));
+        QVERIFY(!radio->isControlHeld());
     }
 
     void aJogIsALease()
