@@ -15,6 +15,7 @@
 // both, since the station's own parts judge it in both cases.
 
 #include "face/outcome.h"
+#include "face/schedulerequest.h"
 #include "face/stationplan.h"
 #include "face/stationschedule.h"
 #include "face/stationstate.h"
@@ -23,6 +24,7 @@
 #include "model/movegate.h"
 
 #include <QObject>
+#include <QStringList>
 
 #include <optional>
 
@@ -66,7 +68,19 @@ public:
     // Follows every pass of a target above `minElevationDeg`: a satellite
     // by its name or catalogue number, "sun", "moon", or "az,el".
     virtual Outcome track(const QString &target, double minElevationDeg) = 0;
+    // Ends the schedule and one target's tracking alike.
     virtual Outcome untrack() = 0;
+    // Follows the passes of several targets, each named as track() names
+    // one, taken by priority (the first highest) where they overlap: the
+    // station's schedule, seen in schedule(). Refused, naming it, when a
+    // name finds no target or several; a single track() ends it.
+    virtual Outcome runSchedule(const QStringList &targets, const ScheduleRequest &request) = 0;
+    // Ends the schedule (and the pass of it followed), and only that;
+    // refused when none runs.
+    virtual Outcome stopSchedule() = 0;
+    // The operator takes the radio's dial from the Doppler steering
+    // (held), or hands it back; seen in the state's radioHeld.
+    virtual Outcome holdRadio(bool held) = 0;
     // Turns at these speeds (°/s, signed: + clockwise and up) until
     // endJog(). Said again, each axis takes its new speed (0 stops an axis
     // the jog turned). A jog from afar is a lease the face renews while it

@@ -249,6 +249,33 @@ face::Outcome RemoteStation::untrack()
     return send(c);
 }
 
+face::Outcome RemoteStation::runSchedule(const QStringList &targets, const face::ScheduleRequest &request)
+{
+    RemoteCommand c;
+    c.kind = RemoteCommand::Kind::Schedule;
+    // Each name cut to what a command carries, as track's is; too many is
+    // the station's to refuse, as every fault of a command is.
+    for (const QString &target : targets)
+        c.targets << target.trimmed().left(kLongestTrackTarget);
+    c.schedule = request;
+    return send(c);
+}
+
+face::Outcome RemoteStation::stopSchedule()
+{
+    RemoteCommand c;
+    c.kind = RemoteCommand::Kind::Unschedule;
+    return send(c);
+}
+
+face::Outcome RemoteStation::holdRadio(bool held)
+{
+    RemoteCommand c;
+    c.kind = RemoteCommand::Kind::RadioHold;
+    c.held = held;
+    return send(c);
+}
+
 face::Outcome RemoteStation::startJog(double azSpeed, double elSpeed)
 {
     m_jog = RemoteCommand{};

@@ -90,6 +90,9 @@ public:
     face::Outcome home() override;
     face::Outcome track(const QString &target, double minElevationDeg = 0) override;
     face::Outcome untrack() override;
+    face::Outcome runSchedule(const QStringList &targets, const face::ScheduleRequest &request) override;
+    face::Outcome stopSchedule() override;
+    face::Outcome holdRadio(bool held) override;
     // Turns at these speeds (°/s, signed) until endJog(), renewing the lease.
     face::Outcome startJog(double azSpeed, double elSpeed) override;
     // The station logs its own cause.

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "localstationface.h"
 
+#include "schedulerequestoptions.h"
 #include "schedulerunner.h"
 #include "station.h"
 #include "stationplanreader.h"
@@ -122,6 +123,25 @@ Outcome LocalStationFace::track(const QString &target, double minElevationDeg)
 Outcome LocalStationFace::untrack()
 {
     return m_station->untrack(tr("untracked by the operator"));
+}
+
+Outcome LocalStationFace::runSchedule(const QStringList &targets, const face::ScheduleRequest &request)
+{
+    QString why;
+    const std::optional<QList<tracking::TrackTarget>> found = targetsByName(*m_station, {}, targets, &why);
+    if (!found)
+        return Outcome::refused(why);
+    return m_station->runSchedule(*found, scheduleOptions(request));
+}
+
+Outcome LocalStationFace::stopSchedule()
+{
+    return m_station->stopSchedule(tr("schedule ended by the operator"));
+}
+
+Outcome LocalStationFace::holdRadio(bool held)
+{
+    return m_station->holdRadio(held);
 }
 
 Outcome LocalStationFace::startJog(double azSpeed, double elSpeed)

@@ -43,6 +43,9 @@ public:
     face::Outcome home() override;
     face::Outcome track(const QString &target, double minElevationDeg) override;
     face::Outcome untrack() override;
+    face::Outcome runSchedule(const QStringList &targets, const face::ScheduleRequest &request) override;
+    face::Outcome stopSchedule() override;
+    face::Outcome holdRadio(bool held) override;
     face::Outcome startJog(double azSpeed, double elSpeed) override;
     void endJog(const QString &cause) override;
 

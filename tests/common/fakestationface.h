@@ -32,6 +32,9 @@ public:
     Outcome home() override { return refuse(); }
     Outcome track(const QString &, double) override { return refuse(); }
     Outcome untrack() override { return refuse(); }
+    Outcome runSchedule(const QStringList &, const slew::face::ScheduleRequest &) override { return refuse(); }
+    Outcome stopSchedule() override { return refuse(); }
+    Outcome holdRadio(bool) override { return refuse(); }
     Outcome startJog(double, double) override { return refuse(); }
     void endJog(const QString &) override { ++intents; }
 

@@ -3,8 +3,9 @@
 // (face/stationface.h), once as the window's face of a station in this
 // process and once as a remote window's face of the same kind of station
 // on a real Mosquitto (TLS, accounts, its access list): the same outcomes,
-// refusals in the same words, and the same state seen after each step.
-// Both stations run the built-in simulator on its manual clock.
+// refusals in the same words, and the same state seen after each step:
+// go-to, track, a schedule run and ended, the radio held and handed back,
+// stop, park. Both stations run the built-in simulator on its manual clock.
 
 #include "../common/mosquittobroker.h"
 #include "../common/simulatorpump.h"
@@ -14,11 +15,13 @@
 #include "remote/brokeraddress.h"
 #include "remote/remotestation.h"
 #include "session/rotatorsession.h"
+#include "sky/elementsetsources.h"
 #include "station/localstationface.h"
 #include "station/remoteoperation.h"
 #include "station/station.h"
 
 #include <QStandardPaths>
+#include <QUrl>
 #include <QTest>
 
 #include <cmath>
@@ -29,6 +32,19 @@ using slew::face::StationFace;
 using slew::station::Station;
 
 namespace {
+
+// The station's element-set cache holds the test's satellites: what a
+// name or a catalogue number finds, as on a station that has fetched them.
+bool loadTestElements(Station &station)
+{
+    slew::sky::ElementSetSources *sets = station.elementSets();
+    sets->setUrls({QUrl::fromLocalFile(QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle"))});
+    bool loaded = false;
+    QObject::connect(sets, &slew::sky::ElementSetSources::loaded, sets, [&loaded] { loaded = true; },
+                     Qt::SingleShotConnection);
+    sets->loadFromCache(true);
+    return runEventLoopUntil([&] { return loaded; }, 20000) && !sets->sets().isEmpty();
+}
 
 Station *newSimulatedStation(QObject *parent)
 {
@@ -103,6 +119,50 @@ bool runScript(StationFace &face, Transcript &t)
         return false;
     }
     t.add(QStringLiteral("untrack again"), settled(face, face.untrack()));
+
+    // A schedule edited: two satellites of the element-set cache, one by
+    // its name and one by its catalogue number, with the operator's
+    // numbers; seen as the face says the schedule changed; ended.
+    std::optional<slew::face::StationSchedule> said;
+    const auto follow = QObject::connect(&face, &StationFace::scheduleChanged, &face,
+                                         [&said](const slew::face::StationSchedule &s) { said = s; });
+    t.add(QStringLiteral("schedule FLOCK 2P-1, NO SUCH SATELLITE"),
+          settled(face, face.runSchedule({QStringLiteral("FLOCK 2P-1"), QStringLiteral("NO SUCH SATELLITE")}, {})));
+    t.add(QStringLiteral("schedule FLOCK 2P-1, 40039"),
+          settled(face, face.runSchedule({QStringLiteral("FLOCK 2P-1"), QStringLiteral("40039")}, {12, 5, 60})));
+    if (!runEventLoopUntil([&] { return said && said->running && said->planned; }, 20000)) {
+        t.lines << QStringLiteral("the schedule was never said to be planned");
+        return false;
+    }
+    const slew::schedule::ScheduleSettings &plan = face.schedule().value_or(*said).schedule.settings;
+    t.lines << QStringLiteral("schedule of %1: %2 h, above %3°, %4 s apart")
+                   .arg(said->schedule.targets.join(QStringLiteral(", ")))
+                   .arg(plan.hours, 0, 'f', 1)
+                   .arg(plan.minElevationDeg, 0, 'f', 1)
+                   .arg(plan.guardSeconds, 0, 'f', 0);
+    t.add(QStringLiteral("unschedule"), settled(face, face.stopSchedule()));
+    if (!runEventLoopUntil([&] { return said && !said->running && face.schedule() && !face.schedule()->running; }, 15000)) {
+        t.lines << QStringLiteral("the schedule was never said to end");
+        return false;
+    }
+    QObject::disconnect(follow);
+    t.add(QStringLiteral("unschedule again"), settled(face, face.stopSchedule()));
+
+    // The radio's dial taken and handed back to Doppler steering, the
+    // state's hold following. (These stations have no radio set: the hold
+    // is kept for one set later.)
+    t.lines << QStringLiteral("radio %1, %2").arg(state().radioLink, state().radioHeld ? u"held" : u"not held");
+    t.add(QStringLiteral("hold the radio"), settled(face, face.holdRadio(true)));
+    if (!runEventLoopUntil([&] { return state().radioHeld; }, 15000)) {
+        t.lines << QStringLiteral("the radio was never said to be held");
+        return false;
+    }
+    t.lines << QStringLiteral("radio %1, held").arg(state().radioLink);
+    t.add(QStringLiteral("hand the radio back"), settled(face, face.holdRadio(false)));
+    if (!runEventLoopUntil([&] { return !state().radioHeld; }, 15000)) {
+        t.lines << QStringLiteral("the radio was never said to be handed back");
+        return false;
+    }
     t.add(QStringLiteral("go to 100,30"), settled(face, face.gotoPosition(100, 30)));
     if (!runEventLoopUntil([&] { return near(state().position, 100, 30); }, 30000)) {
         t.lines << QStringLiteral("never arrived at 100,30");
@@ -140,6 +200,7 @@ private slots:
 
         // The station in this process, through the window's face.
         Station *here = newSimulatedStation(&owner);
+        QVERIFY(loadTestElements(*here));
         pump.follow(here->session());
         here->connectRotators();
         slew::station::LocalStationFace local(here);
@@ -150,6 +211,7 @@ private slots:
 
         // The same kind of station on the broker, through a remote window's face.
         Station *there = newSimulatedStation(&owner);
+        QVERIFY(loadTestElements(*there));
         pump.follow(there->session());
         there->connectRotators();
         QString error;
@@ -175,8 +237,9 @@ private slots:
 
         QCOMPARE(remoteSaw.lines, localSaw.lines);
         // The script saw refusals, not only successes: the gate's, the
-        // name's and an untrack with nothing tracked.
-        QCOMPARE(localSaw.lines.filter(QStringLiteral("refused: ")).size(), 3);
+        // name's, an untrack with nothing tracked, the schedule's name and
+        // an unschedule with no schedule.
+        QCOMPARE(localSaw.lines.filter(QStringLiteral("refused: ")).size(), 5);
         QVERIFY2(localSaw.lines.at(1).endsWith(localSaw.lines.at(0).section(QStringLiteral(": "), 1)),
                  qPrintable(localSaw.lines.join(u'\n')));
     }
