@@ -17,6 +17,7 @@
 #include <cerrno>
 #include <chrono>
 #include <cstring>
+#include <mutex>
 #include <vector>
 
 namespace slew::remote {
@@ -25,6 +26,18 @@ namespace {
 // How long one turn of the loop waits for the socket: also how soon a
 // close() with no last message is acted on.
 constexpr int kLoopWaitMs = 200;
+
+// libmosquitto sets up a part of its TLS state (the method that would ask
+// for a key's password) the first time a client connects, and not
+// thread-safely: two clients of one process connecting at once (a station
+// publishing itself and a window on another station) each make one, and
+// one is lost. Their connects start one at a time; this is only the
+// asynchronous start (and a name lookup), not the handshake.
+std::timed_mutex &connectTurn()
+{
+    static std::timed_mutex turn;
+    return turn;
+}
 
 void initialiseLibraryOnce()
 {
@@ -266,8 +279,14 @@ int MosquittoThread::connectOnce(const QByteArray &host, const char *bindAddress
     // Asynchronous: the TCP connect and the TLS handshake go on in the
     // loop below, which can give up on them; only a name lookup waits here.
     m_failureErrno = 0;
+    std::unique_lock turn(connectTurn(), std::defer_lock);
+    while (!turn.try_lock_for(std::chrono::milliseconds(kLoopWaitMs))) {
+        if (stopping())
+            return MOSQ_ERR_CONN_LOST; // the caller sees it is stopping
+    }
     int rc = mosquitto_connect_bind_async(m_mosq, host.constData(), m_settings.broker.port,
                                           m_settings.keepAliveSeconds, bindAddress);
+    turn.unlock();
     if (rc != MOSQ_ERR_SUCCESS) {
         m_failureErrno = errno;
         return rc;
