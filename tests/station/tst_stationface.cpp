@@ -8,6 +8,7 @@
 // stop, park. Both stations run the built-in simulator on its manual clock.
 
 #include "../common/mosquittobroker.h"
+#include "../common/settledoutcome.h"
 #include "../common/simulatorpump.h"
 #include "linkschemes.h"
 
@@ -57,22 +58,6 @@ Station *newSimulatedStation(QObject *parent)
     return station;
 }
 
-// The final outcome of an intent: at once, or the station's answer by id.
-Outcome settled(StationFace &face, const Outcome &outcome)
-{
-    if (!outcome.isAwaiting())
-        return outcome;
-    std::optional<Outcome> answer;
-    const auto connection = QObject::connect(&face, &StationFace::answered, &face,
-                                             [&](const QString &id, const Outcome &o) {
-                                                 if (id == outcome.id())
-                                                     answer = o;
-                                             });
-    runEventLoopUntil([&] { return answer.has_value(); }, 15000);
-    QObject::disconnect(connection);
-    return answer.value_or(Outcome::refused(QStringLiteral("no answer within 15 s")));
-}
-
 bool near(const std::optional<QPointF> &p, double az, double el)
 {
     return p && std::abs(p->x() - az) < 0.5 && std::abs(p->y() - el) < 0.5;
@@ -99,26 +84,26 @@ bool runScript(StationFace &face, Transcript &t)
     }
     const QString gate = face.previewPointing(999, 30).refusal;
     t.lines << QStringLiteral("preview 999,30: ") + gate;
-    t.add(QStringLiteral("go to 999,30"), settled(face, face.gotoPosition(999, 30)));
-    t.add(QStringLiteral("go to 40,20"), settled(face, face.gotoPosition(40, 20)));
+    t.add(QStringLiteral("go to 999,30"), settledOutcome(face, face.gotoPosition(999, 30)));
+    t.add(QStringLiteral("go to 40,20"), settledOutcome(face, face.gotoPosition(40, 20)));
     if (!runEventLoopUntil([&] { return near(state().position, 40, 20); }, 30000)) {
         t.lines << QStringLiteral("never arrived at 40,20");
         return false;
     }
     t.lines << QStringLiteral("target %1,%2").arg(state().target.value_or(QPointF()).x()).arg(state().target.value_or(QPointF()).y());
-    t.add(QStringLiteral("track a satellite no one has"), settled(face, face.track(QStringLiteral("NO SUCH SATELLITE"), 0)));
-    t.add(QStringLiteral("track azel:200,40"), settled(face, face.track(QStringLiteral("azel:200,40"), 0)));
+    t.add(QStringLiteral("track a satellite no one has"), settledOutcome(face, face.track(QStringLiteral("NO SUCH SATELLITE"), 0)));
+    t.add(QStringLiteral("track azel:200,40"), settledOutcome(face, face.track(QStringLiteral("azel:200,40"), 0)));
     if (!runEventLoopUntil([&] { return state().tracking == u"tracking" && near(state().position, 200, 40); }, 30000)) {
         t.lines << QStringLiteral("never tracked: ") + state().tracking;
         return false;
     }
     t.lines << QStringLiteral("tracking %1").arg(state().trackingTarget);
-    t.add(QStringLiteral("untrack"), settled(face, face.untrack()));
+    t.add(QStringLiteral("untrack"), settledOutcome(face, face.untrack()));
     if (!runEventLoopUntil([&] { return state().tracking == u"off"; }, 15000)) {
         t.lines << QStringLiteral("never stopped tracking: ") + state().tracking;
         return false;
     }
-    t.add(QStringLiteral("untrack again"), settled(face, face.untrack()));
+    t.add(QStringLiteral("untrack again"), settledOutcome(face, face.untrack()));
 
     // A schedule edited: two satellites of the element-set cache, one by
     // its name and one by its catalogue number, with the operator's
@@ -127,9 +112,9 @@ bool runScript(StationFace &face, Transcript &t)
     const auto follow = QObject::connect(&face, &StationFace::scheduleChanged, &face,
                                          [&said](const slew::face::StationSchedule &s) { said = s; });
     t.add(QStringLiteral("schedule FLOCK 2P-1, NO SUCH SATELLITE"),
-          settled(face, face.runSchedule({QStringLiteral("FLOCK 2P-1"), QStringLiteral("NO SUCH SATELLITE")}, {})));
+          settledOutcome(face, face.runSchedule({QStringLiteral("FLOCK 2P-1"), QStringLiteral("NO SUCH SATELLITE")}, {})));
     t.add(QStringLiteral("schedule FLOCK 2P-1, 40039"),
-          settled(face, face.runSchedule({QStringLiteral("FLOCK 2P-1"), QStringLiteral("40039")}, {12, 5, 60})));
+          settledOutcome(face, face.runSchedule({QStringLiteral("FLOCK 2P-1"), QStringLiteral("40039")}, {12, 5, 60})));
     if (!runEventLoopUntil([&] { return said && said->running && said->planned; }, 20000)) {
         t.lines << QStringLiteral("the schedule was never said to be planned");
         return false;
@@ -140,42 +125,42 @@ bool runScript(StationFace &face, Transcript &t)
                    .arg(plan.hours, 0, 'f', 1)
                    .arg(plan.minElevationDeg, 0, 'f', 1)
                    .arg(plan.guardSeconds, 0, 'f', 0);
-    t.add(QStringLiteral("unschedule"), settled(face, face.stopSchedule()));
+    t.add(QStringLiteral("unschedule"), settledOutcome(face, face.stopSchedule()));
     if (!runEventLoopUntil([&] { return said && !said->running && face.schedule() && !face.schedule()->running; }, 15000)) {
         t.lines << QStringLiteral("the schedule was never said to end");
         return false;
     }
     QObject::disconnect(follow);
-    t.add(QStringLiteral("unschedule again"), settled(face, face.stopSchedule()));
+    t.add(QStringLiteral("unschedule again"), settledOutcome(face, face.stopSchedule()));
 
     // The radio's dial taken and handed back to Doppler steering, the
     // state's hold following. (These stations have no radio set: the hold
     // is kept for one set later.)
     t.lines << QStringLiteral("radio %1, %2").arg(state().radioLink, state().radioHeld ? u"held" : u"not held");
-    t.add(QStringLiteral("hold the radio"), settled(face, face.holdRadio(true)));
+    t.add(QStringLiteral("hold the radio"), settledOutcome(face, face.holdRadio(true)));
     if (!runEventLoopUntil([&] { return state().radioHeld; }, 15000)) {
         t.lines << QStringLiteral("the radio was never said to be held");
         return false;
     }
     t.lines << QStringLiteral("radio %1, held").arg(state().radioLink);
-    t.add(QStringLiteral("hand the radio back"), settled(face, face.holdRadio(false)));
+    t.add(QStringLiteral("hand the radio back"), settledOutcome(face, face.holdRadio(false)));
     if (!runEventLoopUntil([&] { return !state().radioHeld; }, 15000)) {
         t.lines << QStringLiteral("the radio was never said to be handed back");
         return false;
     }
-    t.add(QStringLiteral("go to 100,30"), settled(face, face.gotoPosition(100, 30)));
+    t.add(QStringLiteral("go to 100,30"), settledOutcome(face, face.gotoPosition(100, 30)));
     if (!runEventLoopUntil([&] { return near(state().position, 100, 30); }, 30000)) {
         t.lines << QStringLiteral("never arrived at 100,30");
         return false;
     }
     // (The simulator is paced far faster than real time here: that a Stop
     // stops a move short is the remote window's test, on the wall clock.)
-    t.add(QStringLiteral("stop"), settled(face, face.stop(QStringLiteral("the script"))));
+    t.add(QStringLiteral("stop"), settledOutcome(face, face.stop(QStringLiteral("the script"))));
     if (!runEventLoopUntil([&] { return !state().moving; }, 15000)) {
         t.lines << QStringLiteral("never came to rest");
         return false;
     }
-    t.add(QStringLiteral("park"), settled(face, face.park()));
+    t.add(QStringLiteral("park"), settledOutcome(face, face.park()));
     return true;
 }
 

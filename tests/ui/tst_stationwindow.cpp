@@ -8,6 +8,7 @@
 // shows (messages, the readout, the tracking line) must read the same.
 
 #include "../common/mosquittobroker.h"
+#include "../common/settledoutcome.h"
 #include "windowfixture.h"
 
 #include "rotor/gotopanel.h"
@@ -44,21 +45,6 @@ bool near(const std::optional<QPointF> &p, double az, double el)
         return false;
     const double turn = std::fmod(std::abs(p->x() - az), 360.0);
     return std::min(turn, 360.0 - turn) < 0.5 && std::abs(p->y() - el) < 0.5;
-}
-
-// The final outcome of an intent: at once, or the station's answer by id.
-Outcome settled(StationFace &face, const Outcome &outcome)
-{
-    if (!outcome.isAwaiting())
-        return outcome;
-    std::optional<Outcome> answer;
-    const auto connection = QObject::connect(&face, &StationFace::answered, &face, [&](const QString &id, const Outcome &o) {
-        if (id == outcome.id())
-            answer = o;
-    });
-    runEventLoopUntil([&] { return answer.has_value(); }, 15000);
-    QObject::disconnect(connection);
-    return answer.value_or(Outcome::refused(QStringLiteral("no answer within 15 s")));
 }
 
 QString said(const Outcome &o)
@@ -123,13 +109,13 @@ QStringList runScript(StationWindow &w)
     if (!waitFor("back at 'Mast'", [&] { return near(state().position, 40, 20) && !state().moving; }))
         return t;
 
-    t << QStringLiteral("track an unknown name: ") + said(settled(face, face.track(QStringLiteral("NO SUCH SATELLITE"), 0)));
-    t << QStringLiteral("track azel:200,40: ") + said(settled(face, face.track(QStringLiteral("azel:200,40"), 0)));
+    t << QStringLiteral("track an unknown name: ") + said(settledOutcome(face, face.track(QStringLiteral("NO SUCH SATELLITE"), 0)));
+    t << QStringLiteral("track azel:200,40: ") + said(settledOutcome(face, face.track(QStringLiteral("azel:200,40"), 0)));
     if (!waitFor("tracking", [&] { return w.trackingLine()->text().startsWith(u"Tracking"); }))
         return t;
     // Up to the times, which are the clock's.
     t << QStringLiteral("tracking line: ") + w.trackingLine()->text().section(QStringLiteral(" until "), 0, 0);
-    t << QStringLiteral("untrack: ") + said(settled(face, face.untrack()));
+    t << QStringLiteral("untrack: ") + said(settledOutcome(face, face.untrack()));
     if (!waitFor("tracking ended", [&] { return w.trackingLine()->text() == u"Not tracking"; }))
         return t;
 
