@@ -13,6 +13,8 @@
 #include "tracking/passrunner.h"
 #include "tracking/stationclock.h"
 
+#include <QMetaMethod>
+
 namespace slew::station {
 
 using face::Outcome;
@@ -43,10 +45,21 @@ LocalStationFace::LocalStationFace(Station *station, QObject *parent)
         emit scheduleChanged(scheduleNow(*m_station));
     });
     // The state is said at once: a widget shows what the operator just did
-    // (a target set, a Stop) before the next key.
-    connect(m_reader, &StationStateReader::stateChanged, this, [this] { emit stateChanged(m_reader->state()); });
-    connect(m_reader, &StationStateReader::telemetryChanged, this, [this] { coalesce(m_telemetryDue); });
-    const auto plans = [this] { coalesce(m_planDue); };
+    // (a target set, a Stop) before the next key. Nothing is read for a face
+    // nobody watches (the station service's).
+    connect(m_reader, &StationStateReader::stateChanged, this, [this] {
+        if (isSignalConnected(QMetaMethod::fromSignal(&face::StationFace::stateChanged)))
+            emit stateChanged(m_reader->state());
+    });
+    connect(m_reader, &StationStateReader::telemetryChanged, this, [this] {
+        if (isSignalConnected(QMetaMethod::fromSignal(&face::StationFace::telemetryReceived)))
+            coalesce(m_telemetryDue);
+    });
+    const auto plans = [this] {
+        if (isSignalConnected(QMetaMethod::fromSignal(&face::StationFace::planChanged))
+            || isSignalConnected(QMetaMethod::fromSignal(&face::StationFace::scheduleChanged)))
+            coalesce(m_planDue);
+    };
     if (tracking::PassRunner *runner = m_station->passRunner()) {
         connect(&runner->tracker(), &tracking::Tracker::stateChanged, this, plans);
         connect(runner, &tracking::PassRunner::activeChanged, this, plans);
