@@ -19,6 +19,7 @@
 #include "telemetry/telemetryrecorder.h"
 #include "textfieldfocus.h"
 #include "tracking/elementsetsdialog.h"
+#include "tracking/schedulepanel.h"
 #include "tracking/trackingline.h"
 #include "widgets/scrollablepage.h"
 #include "widgets/titledgroup.h"
@@ -77,6 +78,8 @@ void StationWindow::makeSharedParts()
     m_trackingLine = new TrackingLine(station);
     m_parkHome = new ParkHomePanel(station);
     m_presets = new PresetPanel(station);
+    // The Tracking tab's Schedule page, placed by each door.
+    m_schedule = new SchedulePanel(station);
     m_charts = new TelemetryCharts(&m_recorder->history());
     m_log = new EventLog;
     m_tabs = new QTabWidget;
@@ -105,6 +108,7 @@ void StationWindow::makeSharedParts()
     // The plot takes no typing: the focus rests there after a go-to sent
     // with Enter and after a click beside a text field.
     new TextFieldFocus(this, m_plot, this);
+    connect(m_schedule, &SchedulePanel::message, this, &StationWindow::logInfo);
     connect(m_goto, &GotoPanel::sentByEnter, m_plot, [this] { m_plot->setFocus(Qt::OtherFocusReason); });
     if (const std::optional<face::StationState> state = station->state())
         showState(*state);

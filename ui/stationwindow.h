@@ -58,7 +58,6 @@ class OperatorActions;
 class ParkHomePanel;
 class RemoteBanner;
 class RemoteControls;
-class RemoteScheduleView;
 class PolarPlotWidget;
 class PositionReadout;
 class PresetPanel;
@@ -144,7 +143,6 @@ public:
     // From afar: the banner, tracking by name, the published schedule.
     RemoteBanner *remoteBanner() const { return m_remoteBanner; }
     RemoteControls *controls() const { return m_controls; }
-    RemoteScheduleView *scheduleView() const { return m_scheduleView; }
 
 public slots:
     // Fills the connection bar with this URI (and dialect) and connects.
@@ -235,7 +233,6 @@ private:
     // The remote door's.
     RemoteBanner *m_remoteBanner = nullptr;
     RemoteControls *m_controls = nullptr;
-    RemoteScheduleView *m_scheduleView = nullptr;
     QStringList m_lastAlarms;
 };
 

@@ -54,6 +54,7 @@
 #include "station/alarmmonitor.h"
 #include "station/dopplerradio.h"
 #include "station/passrecorder.h"
+#include "station/schedulerunner.h"
 #include "records/passrecordstore.h"
 #include "station/station.h"
 #include "session/controllerrotors.h"
@@ -144,7 +145,6 @@ void StationWindow::openLocalDoor()
     auto *trackingLayout = new QVBoxLayout(oneTarget);
     trackingLayout->addWidget(m_tracking, 1);
     trackingLayout->addWidget(m_alignment);
-    m_schedule = new SchedulePanel(station);
     m_trackingTabs = new QTabWidget;
     m_trackingTabs->setObjectName(QStringLiteral("trackingTabs"));
     m_trackingTabs->setDocumentMode(true);
@@ -198,7 +198,10 @@ void StationWindow::openLocalDoor()
     connect(m_trackers, &RotctldPanel::message, this, &StationWindow::logInfo);
     connect(m_tracking, &TrackingPanel::message, this, &StationWindow::logInfo);
     connect(m_radio, &RadioPanel::message, this, &StationWindow::logInfo);
-    connect(m_schedule, &SchedulePanel::message, this, &StationWindow::logInfo);
+    // The schedule's decisions, as it makes them (a station on a broker
+    // logs its own).
+    if (station::ScheduleRunner *schedule = station->scheduleRunner())
+        connect(schedule, &station::ScheduleRunner::logLine, this, &StationWindow::logInfo);
     connect(m_alignment, &AlignmentPanel::message, this, &StationWindow::logInfo);
     connect(m_history, &HistoryPanel::message, this, &StationWindow::logInfo);
     // Each pass's record, begun and finished, in the event log.

@@ -15,6 +15,7 @@
 // both, since the station's own parts judge it in both cases.
 
 #include "face/outcome.h"
+#include "face/schedulepreview.h"
 #include "face/schedulerequest.h"
 #include "face/stationplan.h"
 #include "face/stationschedule.h"
@@ -78,6 +79,12 @@ public:
     // Ends the schedule (and the pass of it followed), and only that;
     // refused when none runs.
     virtual Outcome stopSchedule() = 0;
+    // What runSchedule would plan now for these targets, each named as
+    // track() names one, moving nothing: Awaiting (planning takes a while,
+    // here too) and answered by schedulePreviewed, then `answered` done;
+    // or `answered` refused (no place yet; a newer preview was asked).
+    // A name that finds nothing is said in the preview, not refused.
+    virtual Outcome previewSchedule(const QStringList &targets, const ScheduleRequest &request) = 0;
     // The operator takes the radio's dial from the Doppler steering
     // (held), or hands it back; seen in the state's radioHeld.
     virtual Outcome holdRadio(bool held) = 0;
@@ -94,6 +101,11 @@ signals:
     void scheduleChanged(const slew::face::StationSchedule &schedule);
     void telemetryReceived(const slew::face::TelemetrySample &sample);
     void liveChanged(bool live);
+    // What a prediction is made from has changed (the station's place, its
+    // element sets, its clock set or started): a preview is out of date.
+    void skyChanged();
+    // The answer to previewSchedule, by its id, before `answered`.
+    void schedulePreviewed(const QString &id, const slew::face::SchedulePreview &preview);
     // The station's answer to an intent that was Awaiting, by its id; or
     // no answer in time (refused, saying so).
     void answered(const QString &id, const slew::face::Outcome &outcome);

@@ -169,6 +169,18 @@ bool JsonFields::noOthers()
     return ok();
 }
 
+std::optional<QJsonObject> JsonFields::object(const QString &key, bool required)
+{
+    const QJsonValue value = take(key, required);
+    if (value.isUndefined())
+        return std::nullopt;
+    if (!value.isObject()) {
+        fail(QStringLiteral("'%1' is not an object").arg(key));
+        return std::nullopt;
+    }
+    return value.toObject();
+}
+
 std::optional<QList<QJsonObject>> JsonFields::objects(const QString &key, int maxItems, bool required)
 {
     const std::optional<QJsonArray> list = takeList(key, maxItems, required);

@@ -34,6 +34,9 @@ public:
     std::optional<bool> flag(const QString &key, bool required = false);
     // An array of texts, at most maxItems of at most maxChars each.
     std::optional<QStringList> texts(const QString &key, int maxItems, int maxChars, bool required = false);
+    // An object of its own, to be read with JsonFields of its own (a
+    // reply's preview).
+    std::optional<QJsonObject> object(const QString &key, bool required = false);
     // A list of at most maxItems objects, each to be read with JsonFields
     // of its own (a schedule's passes).
     std::optional<QList<QJsonObject>> objects(const QString &key, int maxItems, bool required = false);

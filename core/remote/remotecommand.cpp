@@ -17,7 +17,7 @@ struct KindName {
     const char *name;
 };
 
-constexpr std::array<KindName, 10> kKinds{{
+constexpr std::array<KindName, 11> kKinds{{
     {RemoteCommand::Kind::Goto, "goto"},
     {RemoteCommand::Kind::Stop, "stop"},
     {RemoteCommand::Kind::Park, "park"},
@@ -26,6 +26,7 @@ constexpr std::array<KindName, 10> kKinds{{
     {RemoteCommand::Kind::Untrack, "untrack"},
     {RemoteCommand::Kind::Jog, "jog"},
     {RemoteCommand::Kind::Schedule, "schedule"},
+    {RemoteCommand::Kind::SchedulePreview, "schedule_preview"},
     {RemoteCommand::Kind::Unschedule, "unschedule"},
     {RemoteCommand::Kind::RadioHold, "radio_hold"},
 }};
@@ -119,7 +120,11 @@ ParsedCommand parseRemoteCommand(const QByteArray &payload)
         }
         c.minElevation = f.number(QStringLiteral("min_el"), {-5, 90, "°"});
         break;
-    case RemoteCommand::Kind::Schedule: {
+    case RemoteCommand::Kind::Schedule:
+    case RemoteCommand::Kind::SchedulePreview: {
+        // A preview is asked for its answer.
+        if (c.kind == RemoteCommand::Kind::SchedulePreview && c.id.isEmpty())
+            f.fail(QStringLiteral("a schedule_preview needs an 'id' to be answered by"));
         // An empty list is the station's to refuse, in the words every face hears.
         const auto targets = f.texts(QStringLiteral("targets"), kMostScheduleTargets, kLongestTrackTarget, true);
         for (qsizetype i = 0; targets && i < targets->size(); ++i) {
@@ -170,6 +175,7 @@ QByteArray encodeRemoteCommand(const RemoteCommand &c)
             o.insert(QStringLiteral("min_el"), *c.minElevation);
         break;
     case RemoteCommand::Kind::Schedule:
+    case RemoteCommand::Kind::SchedulePreview:
         o.insert(QStringLiteral("targets"), QJsonArray::fromStringList(c.targets));
         o.insert(QStringLiteral("hours"), c.schedule.hours);
         o.insert(QStringLiteral("min_el"), c.schedule.minElevationDeg);
@@ -191,12 +197,14 @@ QByteArray encodeRemoteReply(const RemoteReply &r)
     o.insert(QStringLiteral("ok"), r.ok);
     if (!r.ok)
         o.insert(QStringLiteral("error"), r.error.left(kLongestReplyError));
+    if (r.ok && r.preview)
+        o.insert(QStringLiteral("preview"), schedulePreviewObject(*r.preview));
     return QJsonDocument(o).toJson(QJsonDocument::Compact);
 }
 
 std::optional<RemoteReply> parseRemoteReply(const QByteArray &payload, QString *error)
 {
-    auto parsed = JsonFields::parse(payload, 4096, error);
+    auto parsed = JsonFields::parse(payload, kLargestReply, error);
     if (!parsed)
         return std::nullopt;
     JsonFields &f = *parsed;
@@ -206,6 +214,14 @@ std::optional<RemoteReply> parseRemoteReply(const QByteArray &payload, QString *
     r.error = f.text(QStringLiteral("error"), kLongestReplyError, !r.ok && f.ok()).value_or(QString());
     if (f.ok() && !r.ok && r.error.trimmed().isEmpty())
         f.fail(QStringLiteral("a refusal without its reason ('error' is empty)"));
+    if (const auto preview = f.object(QStringLiteral("preview")); preview && f.ok()) {
+        QString why;
+        r.preview = readSchedulePreview(*preview, &why);
+        if (!r.preview)
+            f.fail(QStringLiteral("'preview': %1").arg(why));
+        else if (!r.ok)
+            f.fail(QStringLiteral("a refusal with a preview"));
+    }
     if (!f.noOthers()) {
         *error = f.error();
         return std::nullopt;

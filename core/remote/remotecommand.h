@@ -9,21 +9,25 @@
 //   {"id":"11","cmd":"schedule","targets":["FLOCK 2P-1","43218"],"hours":24,"min_el":0,"guard_s":30}
 //   {"id":"12","cmd":"unschedule"}
 //   {"id":"13","cmd":"radio_hold","held":true}
+//   {"id":"14","cmd":"schedule_preview","targets":["AO-91","sun"],"hours":24}
 //
 //   {"id":"7","ok":true}
 //   {"id":"7","ok":false,"error":"azimuth 999.0° is outside …"}
+//   {"id":"14","ok":true,"preview":{"targets":[…],"start_ms":…,"passes":[…]}}
 //
 // A jog is a lease: speeds in degrees a second (signed: + is clockwise and
 // up), held for lease_ms (at most a second) and stopped by the station
 // unless renewed. A schedule's targets are named as track's, in priority
 // order, its numbers as face/schedulerequest.h takes them (each left out
-// takes its default). Every field is checked (jsonfields.h); a command with
+// takes its default); a preview (stationschedule.h) is a schedule's plan
+// made and not run, answered with the plan. Every field is checked (jsonfields.h); a command with
 // a fault is refused whole and does nothing. Pure code.
 
 #include "face/schedulerequest.h"
 #include "stationschedule.h"
 
 #include <QByteArray>
+#include <QMetaType>
 #include <QString>
 #include <QStringList>
 
@@ -42,7 +46,7 @@ inline constexpr int kShortestJogLeaseMs = 100;
 inline constexpr double kFastestJog = 90.0;      // degrees a second, either sign
 
 struct RemoteCommand {
-    enum class Kind { Goto, Stop, Park, Home, Track, Untrack, Jog, Schedule, Unschedule, RadioHold };
+    enum class Kind { Goto, Stop, Park, Home, Track, Untrack, Jog, Schedule, SchedulePreview, Unschedule, RadioHold };
     QString id; // empty: no reply wanted
     Kind kind = Kind::Stop;
     double azimuth = 0, elevation = 0;           // Goto
@@ -50,8 +54,8 @@ struct RemoteCommand {
     int leaseMs = kLongestJogLeaseMs;            // Jog
     QString target;                              // Track
     std::optional<double> minElevation;          // Track
-    QStringList targets;                         // Schedule, by priority
-    face::ScheduleRequest schedule;              // Schedule
+    QStringList targets;                         // Schedule(Preview), by priority
+    face::ScheduleRequest schedule;              // Schedule(Preview)
     bool held = false;                           // RadioHold
 };
 
@@ -70,9 +74,14 @@ struct RemoteReply {
     QString id;
     bool ok = false;
     QString error;
+    std::optional<face::SchedulePreview> preview; // the answer to a schedule_preview
 };
 inline constexpr int kLongestReplyError = 400;
+// A reply is a line, or a preview's plan: as large as a published schedule.
+inline constexpr int kLargestReply = kLargestScheduleMessage + 64 * 1024;
 QByteArray encodeRemoteReply(const RemoteReply &reply);
 std::optional<RemoteReply> parseRemoteReply(const QByteArray &payload, QString *error);
 
 } // namespace slew::remote
+
+Q_DECLARE_METATYPE(slew::remote::RemoteReply)

@@ -6,6 +6,8 @@
 #include <QDateTime>
 #include <QRandomGenerator>
 
+#include <cmath>
+
 namespace slew::remote {
 
 RemoteStation::RemoteStation(const MqttSettings &settings, const QString &stationName, QObject *parent)
@@ -74,6 +76,20 @@ std::optional<qint64> RemoteStation::stationClockMs() const
     return *m_state->clockMs + qint64(double(stateAgeMs()) * m_state->clockRate);
 }
 
+bool RemoteStation::clockJumped(const face::StationState &next) const
+{
+    if (!m_state)
+        return true;
+    if (next.clockMs.has_value() != m_state->clockMs.has_value() || next.clockRate != m_state->clockRate)
+        return true;
+    if (!next.clockMs)
+        return false; // the wall clock, on both
+    // Carried on from the last state at its rate, a rehearsal's clock is
+    // where the next says within a few seconds of delivery.
+    const qint64 carried = *m_state->clockMs + qint64(double(next.unixMs - m_state->unixMs) * m_state->clockRate);
+    return std::abs(*next.clockMs - carried) > 5000;
+}
+
 void RemoteStation::updateLive()
 {
     const bool live = whyNotLive().isEmpty();
@@ -127,11 +143,14 @@ void RemoteStation::onMessage(const QString &topic, const QByteArray &payload)
             refuse(tr("%1 dropped: %2").arg(topic, why));
             return;
         }
+        const bool jumped = clockJumped(*state);
         m_state = std::move(state);
         m_stateAge.start();
         ++m_statesReceived;
         updateLive();
         emit stateChanged(*m_state);
+        if (jumped)
+            emit skyChanged();
         return;
     }
     case StationTopic::Telemetry: {
@@ -152,6 +171,8 @@ void RemoteStation::onMessage(const QString &topic, const QByteArray &payload)
         if (!m_pending.contains(reply->id))
             return; // another window's
         const Pending pending = m_pending.take(reply->id);
+        if (reply->preview)
+            emit schedulePreviewed(reply->id, *reply->preview);
         emit replied(reply->id, pending.command, reply->ok, reply->error);
         emit answered(reply->id, reply->ok ? face::Outcome::done() : face::Outcome::refused(reply->error));
         return;
@@ -249,16 +270,31 @@ face::Outcome RemoteStation::untrack()
     return send(c);
 }
 
-face::Outcome RemoteStation::runSchedule(const QStringList &targets, const face::ScheduleRequest &request)
+namespace {
+
+// A schedule's command, run or previewed. Each name cut to what a command
+// carries, as track's is; too many is the station's to refuse, as every
+// fault of a command is.
+RemoteCommand scheduleCommand(RemoteCommand::Kind kind, const QStringList &targets, const face::ScheduleRequest &request)
 {
     RemoteCommand c;
-    c.kind = RemoteCommand::Kind::Schedule;
-    // Each name cut to what a command carries, as track's is; too many is
-    // the station's to refuse, as every fault of a command is.
+    c.kind = kind;
     for (const QString &target : targets)
         c.targets << target.trimmed().left(kLongestTrackTarget);
     c.schedule = request;
-    return send(c);
+    return c;
+}
+
+} // namespace
+
+face::Outcome RemoteStation::runSchedule(const QStringList &targets, const face::ScheduleRequest &request)
+{
+    return send(scheduleCommand(RemoteCommand::Kind::Schedule, targets, request));
+}
+
+face::Outcome RemoteStation::previewSchedule(const QStringList &targets, const face::ScheduleRequest &request)
+{
+    return send(scheduleCommand(RemoteCommand::Kind::SchedulePreview, targets, request));
 }
 
 face::Outcome RemoteStation::stopSchedule()

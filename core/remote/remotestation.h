@@ -92,6 +92,7 @@ public:
     face::Outcome untrack() override;
     face::Outcome runSchedule(const QStringList &targets, const face::ScheduleRequest &request) override;
     face::Outcome stopSchedule() override;
+    face::Outcome previewSchedule(const QStringList &targets, const face::ScheduleRequest &request) override;
     face::Outcome holdRadio(bool held) override;
     // Turns at these speeds (°/s, signed) until endJog(), renewing the lease.
     face::Outcome startJog(double azSpeed, double elSpeed) override;
@@ -118,6 +119,9 @@ private:
     void onMessage(const QString &topic, const QByteArray &payload);
     void refuse(const QString &what);
     void updateLive();
+    // A new state whose clock is not the one carried on (a rehearsal set,
+    // started or paused; the first state): predictions are out of date.
+    bool clockJumped(const face::StationState &next) const;
     void renewJog();
     void expireReplies();
     void fail(const QString &id, const QString &command, const QString &why);

@@ -113,6 +113,70 @@ std::optional<schedule::ScheduledPass> readPass(const QJsonObject &object, int t
     return p;
 }
 
+// The plan's window, targets, notes and passes, into a schedule's object
+// (`current` marked) or a preview's.
+void insertPlan(QJsonObject &o, const schedule::Schedule &s, const std::optional<schedule::ScheduledPass> &current)
+{
+    if (s.settings.startJulian <= 0)
+        return; // nothing planned: no window
+    o.insert(QStringLiteral("start_ms"), double(unixMs(s.settings.startJulian)));
+    o.insert(QStringLiteral("end_ms"), double(unixMs(s.settings.startJulian + s.settings.hours / 24.0)));
+    o.insert(QStringLiteral("min_el"), s.settings.minElevationDeg);
+    o.insert(QStringLiteral("guard_s"), s.settings.guardSeconds);
+    QJsonArray targets;
+    for (const QString &t : s.targets.mid(0, kMostScheduleTargets))
+        targets.append(t.left(100));
+    o.insert(QStringLiteral("targets"), targets);
+    QJsonArray notes;
+    for (const QString &n : s.notes.mid(0, 20))
+        notes.append(n.left(400));
+    o.insert(QStringLiteral("notes"), notes);
+    QJsonArray passes;
+    for (qsizetype i = 0; i < s.passes.size() && i < kMostScheduledPasses; ++i) {
+        const schedule::ScheduledPass &p = s.passes[i];
+        if (p.priority >= kMostScheduleTargets)
+            continue;
+        if (current && face::isFollowedPass(p, *current))
+            o.insert(QStringLiteral("current"), int(passes.size()));
+        passes.append(passObject(p));
+    }
+    o.insert(QStringLiteral("passes"), passes);
+}
+
+// Reads what insertPlan wrote, checking it; says whether there was a window.
+// A plan with passes has a window.
+bool readPlan(JsonFields &f, schedule::Schedule &s)
+{
+    const bool planned = f.has(QStringLiteral("passes"));
+    const auto start = f.whole(QStringLiteral("start_ms"), 0, kLatestMs, planned);
+    const auto end = f.whole(QStringLiteral("end_ms"), 0, kLatestMs, planned);
+    if (start.has_value() != end.has_value())
+        f.fail(QStringLiteral("'start_ms' and 'end_ms' come together"));
+    if (start && end) {
+        if (*end <= *start || *end - *start > 14LL * 86400000)
+            f.fail(QStringLiteral("'end_ms' is not within 14 days after 'start_ms'"));
+        s.settings.startJulian = julianOf(*start);
+        s.settings.hours = double(*end - *start) / 3600000.0;
+    }
+    s.settings.minElevationDeg = f.number(QStringLiteral("min_el"), {-5, 90, "°"}).value_or(0);
+    s.settings.guardSeconds = f.number(QStringLiteral("guard_s"), {0, 3600, " s"}).value_or(30);
+    s.targets = f.texts(QStringLiteral("targets"), kMostScheduleTargets, 100).value_or(QStringList());
+    s.notes = f.texts(QStringLiteral("notes"), 20, 400).value_or(QStringList());
+    const auto passes = f.objects(QStringLiteral("passes"), kMostScheduledPasses);
+    if (f.ok() && passes) {
+        for (qsizetype i = 0; i < passes->size(); ++i) {
+            QString why;
+            const auto pass = readPass(passes->at(i), int(s.targets.size()), &why);
+            if (!pass) {
+                f.fail(QStringLiteral("pass %1: %2").arg(i + 1).arg(why));
+                break;
+            }
+            s.passes.append(*pass);
+        }
+    }
+    return start.has_value();
+}
+
 } // namespace
 
 QByteArray encodeStationSchedule(qint64 now, qint64 clockMs, double clockRate, bool running, const schedule::Schedule &s,
@@ -124,31 +188,63 @@ QByteArray encodeStationSchedule(qint64 now, qint64 clockMs, double clockRate, b
     o.insert(QStringLiteral("clock_rate"), clockRate);
     o.insert(QStringLiteral("running"), running);
     // Running but not planned yet (the first plan is being made): no window.
-    if (running && s.settings.startJulian > 0) {
-        o.insert(QStringLiteral("start_ms"), double(unixMs(s.settings.startJulian)));
-        o.insert(QStringLiteral("end_ms"), double(unixMs(s.settings.startJulian + s.settings.hours / 24.0)));
-        o.insert(QStringLiteral("min_el"), s.settings.minElevationDeg);
-        o.insert(QStringLiteral("guard_s"), s.settings.guardSeconds);
-        QJsonArray targets;
-        for (const QString &t : s.targets.mid(0, kMostScheduleTargets))
-            targets.append(t.left(100));
-        o.insert(QStringLiteral("targets"), targets);
-        QJsonArray notes;
-        for (const QString &n : s.notes.mid(0, 20))
-            notes.append(n.left(400));
-        o.insert(QStringLiteral("notes"), notes);
-        QJsonArray passes;
-        for (qsizetype i = 0; i < s.passes.size() && i < kMostScheduledPasses; ++i) {
-            const schedule::ScheduledPass &p = s.passes[i];
-            if (p.priority >= kMostScheduleTargets)
-                continue;
-            if (current && face::isFollowedPass(p, *current))
-                o.insert(QStringLiteral("current"), int(passes.size()));
-            passes.append(passObject(p));
-        }
-        o.insert(QStringLiteral("passes"), passes);
-    }
+    if (running && s.settings.startJulian > 0)
+        insertPlan(o, s, current);
     return QJsonDocument(o).toJson(QJsonDocument::Compact);
+}
+
+QJsonObject schedulePreviewObject(const face::SchedulePreview &preview)
+{
+    QJsonObject o;
+    QJsonArray named;
+    for (const face::NamedTarget &t : preview.targets.mid(0, kMostScheduleTargets)) {
+        QJsonObject n{{QStringLiteral("asked"), t.asked.left(100)}};
+        if (t.isFound()) {
+            n.insert(QStringLiteral("name"), t.name.left(100));
+            if (t.norad > 0)
+                n.insert(QStringLiteral("norad"), t.norad);
+        } else {
+            n.insert(QStringLiteral("problem"), t.problem.left(400));
+        }
+        named.append(n);
+    }
+    o.insert(QStringLiteral("named"), named);
+    if (!preview.notPlanned.isEmpty())
+        o.insert(QStringLiteral("not_planned"), preview.notPlanned.left(400));
+    insertPlan(o, preview.schedule, std::nullopt);
+    return o;
+}
+
+std::optional<face::SchedulePreview> readSchedulePreview(const QJsonObject &object, QString *error)
+{
+    JsonFields f(object);
+    face::SchedulePreview out;
+    const auto named = f.objects(QStringLiteral("named"), kMostScheduleTargets, true);
+    for (qsizetype i = 0; named && f.ok() && i < named->size(); ++i) {
+        JsonFields n(named->at(i));
+        face::NamedTarget t;
+        t.asked = n.text(QStringLiteral("asked"), 100, true).value_or(QString());
+        t.name = n.text(QStringLiteral("name"), 100).value_or(QString());
+        t.norad = int(n.whole(QStringLiteral("norad"), 1, 999999999).value_or(0));
+        t.problem = n.text(QStringLiteral("problem"), 400).value_or(QString());
+        if (n.ok() && t.name.isEmpty() == t.problem.isEmpty())
+            n.fail(QStringLiteral("a target has a name or a problem, one of the two"));
+        if (n.ok() && !t.problem.isEmpty() && t.norad > 0)
+            n.fail(QStringLiteral("a target not found has no catalogue number"));
+        if (!n.noOthers() || !n.ok()) {
+            f.fail(QStringLiteral("'named' item %1: %2").arg(i + 1).arg(n.error()));
+            break;
+        }
+        out.targets.append(t);
+    }
+    out.notPlanned = f.text(QStringLiteral("not_planned"), 400).value_or(QString());
+    if (readPlan(f, out.schedule) && !out.notPlanned.isEmpty())
+        f.fail(QStringLiteral("a plan, and 'not_planned' too"));
+    if (!f.noOthers() || !f.ok()) {
+        *error = f.error();
+        return std::nullopt;
+    }
+    return out;
 }
 
 std::optional<face::StationSchedule> parseStationSchedule(const QByteArray &payload, QString *error)
@@ -162,38 +258,12 @@ std::optional<face::StationSchedule> parseStationSchedule(const QByteArray &payl
     out.clockRate = f->number(QStringLiteral("clock_rate"), {0, 10000, "x"}).value_or(1);
     out.running = f->flag(QStringLiteral("running"), true).value_or(false);
     schedule::Schedule &s = out.schedule;
-    // A schedule still being planned has no window yet; one with passes has.
-    const bool planned = f->has(QStringLiteral("passes"));
-    const auto start = f->whole(QStringLiteral("start_ms"), 0, kLatestMs, planned);
-    const auto end = f->whole(QStringLiteral("end_ms"), 0, kLatestMs, planned);
-    if (start.has_value() != end.has_value())
-        f->fail(QStringLiteral("'start_ms' and 'end_ms' come together"));
-    out.planned = out.running && start.has_value();
-    if (start && end) {
-        if (*end <= *start || *end - *start > 14LL * 86400000)
-            f->fail(QStringLiteral("'end_ms' is not within 14 days after 'start_ms'"));
-        s.settings.startJulian = julianOf(*start);
-        s.settings.hours = double(*end - *start) / 3600000.0;
-    }
-    s.settings.minElevationDeg = f->number(QStringLiteral("min_el"), {-5, 90, "°"}).value_or(0);
-    s.settings.guardSeconds = f->number(QStringLiteral("guard_s"), {0, 3600, " s"}).value_or(30);
-    s.targets = f->texts(QStringLiteral("targets"), kMostScheduleTargets, 100).value_or(QStringList());
-    s.notes = f->texts(QStringLiteral("notes"), 20, 400).value_or(QStringList());
     const auto current = f->whole(QStringLiteral("current"), 0, kMostScheduledPasses - 1);
-    const auto passes = f->objects(QStringLiteral("passes"), kMostScheduledPasses);
-    if (!out.running && (passes || start || !s.targets.isEmpty()))
+    // A schedule still being planned has no window yet; one with passes has.
+    const bool window = readPlan(*f, s);
+    out.planned = out.running && window;
+    if (!out.running && (window || !s.passes.isEmpty() || !s.targets.isEmpty()))
         f->fail(QStringLiteral("passes in a schedule that is not running"));
-    if (f->ok() && passes) {
-        for (qsizetype i = 0; i < passes->size(); ++i) {
-            QString why;
-            const auto pass = readPass(passes->at(i), int(s.targets.size()), &why);
-            if (!pass) {
-                f->fail(QStringLiteral("pass %1: %2").arg(i + 1).arg(why));
-                break;
-            }
-            s.passes.append(*pass);
-        }
-    }
     if (f->ok() && current) {
         if (*current >= s.passes.size() || !s.passes.at(int(*current)).taken)
             f->fail(QStringLiteral("'current' is not a taken pass of the list"));

@@ -21,11 +21,13 @@
 // window and no passes yet. The reader checks every field (jsonfields.h) and
 // takes a message whole or not at all. Pure code.
 
+#include "face/schedulepreview.h"
 #include "face/stationschedule.h"
 
 #include "schedule/schedule.h"
 
 #include <QByteArray>
+#include <QJsonObject>
 
 #include <optional>
 
@@ -40,5 +42,14 @@ inline constexpr int kLargestScheduleMessage = 512 * 1024;
 QByteArray encodeStationSchedule(qint64 unixMs, qint64 clockMs, double clockRate, bool running, const schedule::Schedule &schedule,
                                  const std::optional<schedule::ScheduledPass> &current);
 std::optional<face::StationSchedule> parseStationSchedule(const QByteArray &payload, QString *error);
+
+// A schedule's preview (a reply's "preview"): the targets as the station
+// named them, then the plan's window, targets, notes and passes as above:
+//   {"named":[{"asked":"AO-91","name":"FOX-1B (AO-91)","norad":43017},
+//             {"asked":"NO SUCH","problem":"no satellite 'NO SUCH' …"}],
+//    "start_ms":…, "end_ms":…, "targets":["FOX-1B (AO-91)"], "passes":[…]}
+// or, with no plan made, "not_planned":"a schedule needs the station's place".
+QJsonObject schedulePreviewObject(const face::SchedulePreview &preview);
+std::optional<face::SchedulePreview> readSchedulePreview(const QJsonObject &object, QString *error);
 
 } // namespace slew::remote

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "localstationface.h"
 
+#include "schedulepreviewer.h"
 #include "schedulerequestoptions.h"
 #include "schedulerunner.h"
 #include "station.h"
@@ -10,6 +11,7 @@
 
 #include "face/trackingnow.h"
 #include "session/rotatorsession.h"
+#include "sky/elementsetsources.h"
 #include "tracking/passrunner.h"
 #include "tracking/stationclock.h"
 
@@ -30,8 +32,18 @@ void coalesce(QTimer &due)
 } // namespace
 
 LocalStationFace::LocalStationFace(Station *station, QObject *parent)
-    : face::StationFace(parent), m_station(station), m_reader(new StationStateReader(station, this))
+    : face::StationFace(parent), m_station(station), m_reader(new StationStateReader(station, this)),
+      m_previewer(new SchedulePreviewer(station, {}, this))
 {
+    connect(m_previewer, &SchedulePreviewer::previewed, this, [this](const QString &id, const face::SchedulePreview &p) {
+        emit schedulePreviewed(id, p);
+        emit answered(id, Outcome::done());
+    });
+    connect(m_previewer, &SchedulePreviewer::refused, this,
+            [this](const QString &id, const QString &why) { emit answered(id, Outcome::refused(why)); });
+    connect(m_station, &Station::placeChanged, this, &face::StationFace::skyChanged);
+    connect(m_station->elementSets(), &sky::ElementSetSources::setsChanged, this, &face::StationFace::skyChanged);
+    connect(m_station->clock(), &tracking::StationClock::changed, this, &face::StationFace::skyChanged);
     for (QTimer *due : {&m_telemetryDue, &m_planDue}) {
         due->setSingleShot(true);
         due->setInterval(0);
@@ -150,6 +162,16 @@ Outcome LocalStationFace::runSchedule(const QStringList &targets, const face::Sc
 Outcome LocalStationFace::stopSchedule()
 {
     return m_station->stopSchedule(tr("schedule ended by the operator"));
+}
+
+Outcome LocalStationFace::previewSchedule(const QStringList &targets, const face::ScheduleRequest &request)
+{
+    const QString id = QStringLiteral("preview-%1").arg(++m_lastPreview);
+    // Answered after this returns, even when refused at once: the asker
+    // knows the id before the answer comes.
+    QMetaObject::invokeMethod(
+        m_previewer, [this, id, targets, request] { m_previewer->preview(id, targets, request); }, Qt::QueuedConnection);
+    return Outcome::awaiting(id);
 }
 
 Outcome LocalStationFace::holdRadio(bool held)

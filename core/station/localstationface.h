@@ -6,7 +6,8 @@
 // plan, schedule and telemetry once per turn of the event loop however
 // many parts changed in it); its intents go to the
 // Station and its first rotor's session, through the same gate and the same
-// rules as every other path to the wire, and are answered at once.
+// rules as every other path to the wire, and are answered at once (but a
+// schedule's preview, which is planned on a worker thread).
 //
 // The operator at the station stands above remote control: the holds that
 // refuse a remote move (the operator's Stop, Slew's own tracking) do not
@@ -18,6 +19,7 @@
 
 namespace slew::station {
 
+class SchedulePreviewer;
 class Station;
 class StationStateReader;
 
@@ -45,6 +47,7 @@ public:
     face::Outcome untrack() override;
     face::Outcome runSchedule(const QStringList &targets, const face::ScheduleRequest &request) override;
     face::Outcome stopSchedule() override;
+    face::Outcome previewSchedule(const QStringList &targets, const face::ScheduleRequest &request) override;
     face::Outcome holdRadio(bool held) override;
     face::Outcome startJog(double azSpeed, double elSpeed) override;
     void endJog(const QString &cause) override;
@@ -52,6 +55,8 @@ public:
 private:
     Station *m_station;
     StationStateReader *m_reader;
+    SchedulePreviewer *m_previewer;
+    int m_lastPreview = 0; // a preview's id is its number
     double m_jogAz = 0, m_jogEl = 0; // what a jog turns each axis at; 0: not
     // Changes that come in one turn of the event loop are said once.
     QTimer m_telemetryDue, m_planDue;

@@ -2,6 +2,7 @@
 #include "remotecommands.h"
 
 #include "remotejog.h"
+#include "schedulepreviewer.h"
 #include "schedulerequestoptions.h"
 #include "station.h"
 #include "targetbyname.h"
@@ -27,8 +28,16 @@ qint64 nowMs()
 } // namespace
 
 RemoteCommands::RemoteCommands(Station *station, const QList<sky::ElementSet> &elementSets, QObject *parent)
-    : QObject(parent), m_station(station), m_elementSets(elementSets), m_jog(new RemoteJog(station->session(), this))
+    : QObject(parent), m_station(station), m_elementSets(elementSets), m_jog(new RemoteJog(station->session(), this)),
+      m_previewer(new SchedulePreviewer(station, elementSets, this))
 {
+    connect(m_previewer, &SchedulePreviewer::previewed, this, [this](const QString &id, const face::SchedulePreview &p) {
+        emit lateReply(remote::RemoteReply{id, true, {}, p});
+    });
+    connect(m_previewer, &SchedulePreviewer::refused, this, [this](const QString &id, const QString &why) {
+        emit logLine(tr("remote: schedule preview (id %1) refused: %2").arg(id, why));
+        emit lateReply(remote::RemoteReply{id, false, why, std::nullopt});
+    });
     m_floodEnd.setSingleShot(true);
     m_floodEnd.setInterval(1000);
     connect(&m_floodEnd, &QTimer::timeout, this, &RemoteCommands::endFlood);
@@ -63,9 +72,16 @@ std::optional<remote::RemoteReply> RemoteCommands::handle(const QByteArray &payl
             emit logLine(tr("remote: command refused: %1").arg(input::loggableText(parsed.error)));
         if (parsed.id.isEmpty())
             return std::nullopt;
-        return remote::RemoteReply{parsed.id, false, parsed.error};
+        return remote::RemoteReply{parsed.id, false, parsed.error, std::nullopt};
     }
     const RemoteCommand &command = *parsed.command;
+    if (command.kind == RemoteCommand::Kind::SchedulePreview && m_refusing.isEmpty()) {
+        // Moves nothing, under any hold; answered when planned.
+        if (m_logAllowance.take(now))
+            emit logLine(tr("remote: %1 (id %2)").arg(describe(command), command.id));
+        m_previewer->preview(command.id, command.targets, command.schedule);
+        return std::nullopt;
+    }
     const CommandResult result = obey(command);
     if (m_logAllowance.take(now)) {
         const QString id = command.id.isEmpty() ? QString() : tr(" (id %1)").arg(command.id);
@@ -77,7 +93,7 @@ std::optional<remote::RemoteReply> RemoteCommands::handle(const QByteArray &payl
     }
     if (command.id.isEmpty())
         return std::nullopt;
-    return remote::RemoteReply{command.id, bool(result), result.refusal};
+    return remote::RemoteReply{command.id, bool(result), result.refusal, std::nullopt};
 }
 
 void RemoteCommands::endFlood()
@@ -97,6 +113,8 @@ QString RemoteCommands::describe(const RemoteCommand &c) const
         return tr("track %1").arg(c.target);
     case RemoteCommand::Kind::Schedule:
         return tr("schedule %1 for %2 h").arg(c.targets.join(QStringLiteral(", "))).arg(c.schedule.hours);
+    case RemoteCommand::Kind::SchedulePreview:
+        return tr("preview a schedule of %1 for %2 h").arg(c.targets.join(QStringLiteral(", "))).arg(c.schedule.hours);
     case RemoteCommand::Kind::RadioHold:
         return c.held ? tr("hold the radio") : tr("hand the radio back to Doppler steering");
     default:

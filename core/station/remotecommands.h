@@ -12,6 +12,8 @@
 //   - a jog is a lease (remotejog.h);
 //   - a schedule is a move, held off as track is; ending one (unschedule)
 //     is not, as untrack is not;
+//   - a schedule's preview moves nothing and is answered later, with the
+//     plan (one at a time: a newer one lets the one being planned go);
 //   - the radio's hold is not a move: taken under any hold, handed back
 //     to Doppler steering only when the operator at the station does not
 //     hold remote control;
@@ -34,6 +36,7 @@
 namespace slew::station {
 
 class RemoteJog;
+class SchedulePreviewer;
 class Station;
 
 class RemoteCommands : public QObject {
@@ -59,6 +62,8 @@ public:
 
 signals:
     void logLine(const QString &line);
+    // A reply that comes after handle() returned (a schedule's preview).
+    void lateReply(const slew::remote::RemoteReply &reply);
 
 private:
     session::CommandResult obey(const remote::RemoteCommand &command);
@@ -73,6 +78,7 @@ private:
     Station *m_station;
     QList<sky::ElementSet> m_elementSets;
     RemoteJog *m_jog;
+    SchedulePreviewer *m_previewer;
     input::LogAllowance m_allowance{kBurst, kPerSecond}; // commands, not lines
     input::LogAllowance m_logAllowance;                  // what is logged of them
     QTimer m_floodEnd;    // quiet for a second: the flood has ended

@@ -45,6 +45,10 @@ RemoteOperation::RemoteOperation(Station *station, const RemoteOptions &options,
     m_commands = std::make_unique<RemoteCommands>(station, options.elementSets);
     m_commandTopic = remote::stationTopic(options.stationName, StationTopic::Command);
     connect(m_commands.get(), &RemoteCommands::logLine, this, &RemoteOperation::logLine);
+    connect(m_commands.get(), &RemoteCommands::lateReply, this, [this](const remote::RemoteReply &reply) {
+        publish({remote::stationTopic(m_options.stationName, StationTopic::Reply), remote::encodeRemoteReply(reply), 1,
+                 false});
+    });
     connect(m_client.get(), &MqttClient::connected, this, &RemoteOperation::onConnected);
     connect(m_client.get(), &MqttClient::connectionLost, this, [this](const QString &why, int retry) {
         m_publisher->setEnabled(false);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "schedulerunner.h"
 
+#include "face/schedulerequest.h"
+#include "input/finitenumber.h"
 #include "schedule/scheduletext.h"
 #include "session/rotatorsession.h"
 #include "sky/utctime.h"
@@ -27,6 +29,32 @@ constexpr double kStayBetweenSeconds = 600.0;
 constexpr double kEmptyPlanAgainDays = 1.0 / 24.0;
 
 } // namespace
+
+QString scheduleOptionsFault(const ScheduleOptions &options)
+{
+    QString why;
+    if (!input::checkNumber(options.hours, face::kScheduleHours, &why))
+        return ScheduleRunner::tr("a schedule's hours: %1").arg(why);
+    if (!input::checkNumber(options.minElevationDeg, face::kScheduleMinElevation, &why))
+        return ScheduleRunner::tr("a schedule's minimum elevation: %1").arg(why);
+    if (!input::checkNumber(options.guardSeconds, face::kScheduleGuard, &why))
+        return ScheduleRunner::tr("a schedule's guard time: %1").arg(why);
+    return {};
+}
+
+schedule::ScheduleSettings scheduleSettingsNow(const session::RotatorSession &session, const PassRunner &runner,
+                                               const tracking::StationClock &clock, const ScheduleOptions &options)
+{
+    schedule::ScheduleSettings settings;
+    settings.startJulian = clock.nowJulian();
+    settings.hours = options.hours;
+    settings.minElevationDeg = options.minElevationDeg;
+    settings.guardSeconds = options.guardSeconds;
+    settings.maxElementAgeDays = runner.elementAgeLimitDays();
+    if (session.hasPosition())
+        settings.antennaAt = schedule::AntennaPoint{session.azimuth(), session.elevation()};
+    return settings;
+}
 
 ScheduleRunner::ScheduleRunner(session::RotatorSession *session, PassRunner *runner,
                                const tracking::StationClock *clock, QObject *parent)
@@ -166,14 +194,7 @@ void ScheduleRunner::plan(const QString &why)
         return;
     }
     m_wake.stop();
-    schedule::ScheduleSettings settings;
-    settings.startJulian = m_clock->nowJulian();
-    settings.hours = m_options.hours;
-    settings.minElevationDeg = m_options.minElevationDeg;
-    settings.guardSeconds = m_options.guardSeconds;
-    settings.maxElementAgeDays = m_runner->elementAgeLimitDays();
-    if (m_session->hasPosition())
-        settings.antennaAt = schedule::AntennaPoint{m_session->azimuth(), m_session->elevation()};
+    const schedule::ScheduleSettings settings = scheduleSettingsNow(*m_session, *m_runner, *m_clock, m_options);
     // The pass the rotator is on (or moving to) is not taken away from it.
     QList<ScheduledPass> pinned;
     if (m_current && m_runner->holdsRotator())

@@ -50,7 +50,22 @@ struct ScheduleOptions {
     double guardSeconds = 30;
     // The elements' age limit is the pass runner's, one for one target and
     // the schedule (PassRunner::setElementAgeLimitDays).
+
+    friend bool operator==(const ScheduleOptions &, const ScheduleOptions &) = default;
 };
+
+// Why a schedule may not be run (or previewed) with these options, or
+// empty: the ranges every face takes (face/schedulerequest.h), so one in
+// this process is held to what the broker's commands are.
+QString scheduleOptionsFault(const ScheduleOptions &options);
+
+// The settings a plan made now is made with: from the station's clock, the
+// options, the pass runner's element age limit, and where the antenna
+// stands. One for the schedule run and its preview, so a preview is the
+// plan the run would make.
+schedule::ScheduleSettings scheduleSettingsNow(const session::RotatorSession &session,
+                                               const tracking::PassRunner &runner,
+                                               const tracking::StationClock &clock, const ScheduleOptions &options);
 
 class ScheduleRunner : public QObject {
     Q_OBJECT
@@ -68,6 +83,7 @@ public:
     // A new list (an added target, a new order): planned again at once.
     void setTargets(const QList<tracking::TrackTarget> &targets);
     const QList<tracking::TrackTarget> &targets() const { return m_targets; }
+    const ScheduleOptions &options() const { return m_options; }
     // The target of that name in the list, if it is still there.
     std::optional<tracking::TrackTarget> targetNamed(const QString &name) const;
     // Refreshed element sets: each satellite target takes its newest set

@@ -42,21 +42,6 @@ StationOptions windowOptions()
     return options;
 }
 
-// Why a schedule may not be run with these options, or empty: the ranges
-// every face takes (face/schedulerequest.h), so one in this process is
-// held to what the broker's commands are.
-QString scheduleOptionsFault(const ScheduleOptions &options)
-{
-    QString why;
-    if (!input::checkNumber(options.hours, face::kScheduleHours, &why))
-        return Station::tr("a schedule's hours: %1").arg(why);
-    if (!input::checkNumber(options.minElevationDeg, face::kScheduleMinElevation, &why))
-        return Station::tr("a schedule's minimum elevation: %1").arg(why);
-    if (!input::checkNumber(options.guardSeconds, face::kScheduleGuard, &why))
-        return Station::tr("a schedule's guard time: %1").arg(why);
-    return {};
-}
-
 } // namespace
 
 Station::Station(QObject *parent) : Station(windowOptions(), parent) {}
@@ -324,6 +309,12 @@ face::Outcome Station::runSchedule(const QList<tracking::TrackTarget> &targets, 
         return face::Outcome::refused(fault);
     if (const QString other = otherSteering(); !other.isEmpty())
         return face::Outcome::refused(othersSteeringRefusal(other));
+    // The same schedule with other targets (one added, the order changed)
+    // is planned again with them: a pass in progress is kept.
+    if (m_schedule->isRunning() && m_schedule->options() == options) {
+        m_schedule->setTargets(targets);
+        return face::Outcome::done();
+    }
     if (m_runner->isRunning())
         m_runner->stop(tr("a schedule is run instead"));
     m_schedule->start(targets, *m_place, options);

@@ -34,6 +34,7 @@ public:
     Outcome untrack() override { return refuse(); }
     Outcome runSchedule(const QStringList &, const slew::face::ScheduleRequest &) override { return refuse(); }
     Outcome stopSchedule() override { return refuse(); }
+    Outcome previewSchedule(const QStringList &, const slew::face::ScheduleRequest &) override { return refuse(); }
     Outcome holdRadio(bool) override { return refuse(); }
     Outcome startJog(double, double) override { return refuse(); }
     void endJog(const QString &) override { ++intents; }

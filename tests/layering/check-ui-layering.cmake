@@ -30,18 +30,16 @@ set(part_header "^(session/.*|station/.*|tracking/passrunner[.]h|radio/[^/]*link
 
 # One feature's header in another's: debt_<from>_<to> says why.
 set(debt_remote_rotor "the remote window and its tile show the polar plot (rotor/polarplotwidget.h) and its pass")
-set(debt_remote_tracking "the remote window shows the tracking line and the schedule's timeline")
-set(debt_remote_telemetry "the remote window charts the remote station's telemetry")
 set(debt_tracking_rotor "the tracking panel hands the polar plot the pass it draws (rotor/passoverlay.h)")
 set(debt_telemetry_tracking "the charts mark a rehearsal as the status bar does (tracking/rehearsalmarker.h)")
 
 # The files (under ui/) that include a station part's header today.
 set(part_users
     # the window and what every page shares
-    stationwindow.h stationwindow.cpp stationwindow_local.cpp operatoractions.h eventlog.h stopbutton.h
+    stationwindow.h stationwindow.cpp stationwindow_local.cpp stationwindow_remote.cpp operatoractions.h eventlog.h stopbutton.h
     rotor/alignmentpanel.cpp rotor/configeditor.h rotor/connectionbar.h rotor/connectionbar.cpp
     rotor/rotorspanel.cpp rotor/rotortile.cpp rotor/trafficconsole.h
-    tracking/schedulepanel.cpp tracking/timecontroller.cpp
+    tracking/timecontroller.cpp
     tracking/trackingpanel.h tracking/trackingpanel.cpp
     tracking/upcomingpanel.cpp
     history/historypanel.cpp
@@ -49,7 +47,7 @@ set(part_users
     radio/radioplanform.cpp radio/radioreadout.cpp radio/radiovfochoice.cpp
     telemetry/statuslanes.cpp telemetry/telemetryrecorder.h
     remote/remotebanner.cpp remote/remoteopener.cpp
-    remote/stationwindow_remote.cpp remote/stationnetworkwindow.cpp
+    remote/stationnetworkwindow.cpp
     # the setup wizard talks to the controller's session itself
     wizard/calibrationpage.h wizard/connectpage.cpp wizard/directioncheck.h wizard/directioncheck.cpp
     wizard/identifypage.cpp wizard/mechanicspage.h wizard/mechanicspage.cpp wizard/parkpage.cpp

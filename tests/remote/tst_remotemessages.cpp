@@ -141,6 +141,7 @@ private slots:
         QTest::newRow("schedule with defaults") << QByteArray(R"j({"cmd":"schedule","targets":["sun"]})j") << "" << "";
         QTest::newRow("schedule of nothing is the station's to refuse") << QByteArray(R"j({"cmd":"schedule","targets":[]})j") << "" << "";
         QTest::newRow("unschedule") << QByteArray(R"j({"id":"u","cmd":"unschedule"})j") << "" << "u";
+        QTest::newRow("schedule preview") << QByteArray(R"j({"id":"p","cmd":"schedule_preview","targets":["AO-91","sun"],"hours":12})j") << "" << "p";
         QTest::newRow("radio hold") << QByteArray(R"j({"id":"r","cmd":"radio_hold","held":true})j") << "" << "r";
         QTest::newRow("radio release") << QByteArray(R"j({"cmd":"radio_hold","held":false})j") << "" << "";
         QTest::newRow("schedule without targets") << QByteArray(R"j({"id":"1","cmd":"schedule"})j") << "'targets' is missing" << "1";
@@ -155,6 +156,8 @@ private slots:
         QTest::newRow("schedule with a guard of a day") << QByteArray(R"j({"cmd":"schedule","targets":["sun"],"guard_s":86400})j") << "'guard_s'" << "";
         QTest::newRow("schedule with text hours") << QByteArray(R"j({"cmd":"schedule","targets":["sun"],"hours":"24"})j") << "'hours' is not a number" << "";
         QTest::newRow("schedule with a lease") << QByteArray(R"j({"cmd":"schedule","targets":["sun"],"lease_ms":100})j") << "unknown field 'lease_ms'" << "";
+        QTest::newRow("schedule preview with no id to answer by") << QByteArray(R"j({"cmd":"schedule_preview","targets":["sun"]})j") << "needs an 'id'" << "";
+        QTest::newRow("schedule preview for a month") << QByteArray(R"j({"id":"q","cmd":"schedule_preview","targets":["sun"],"hours":720})j") << "'hours'" << "q";
         QTest::newRow("unschedule with targets") << QByteArray(R"j({"cmd":"unschedule","targets":["sun"]})j") << "unknown field 'targets'" << "";
         QTest::newRow("radio hold not a flag") << QByteArray(R"j({"id":"3","cmd":"radio_hold","held":1})j") << "'held' is not true or false" << "3";
         QTest::newRow("radio hold as text") << QByteArray(R"j({"cmd":"radio_hold","held":"true"})j") << "'held' is not true or false" << "";
@@ -211,7 +214,7 @@ private slots:
     void replies()
     {
         QString error;
-        const auto ok = parseRemoteReply(encodeRemoteReply({QStringLiteral("7"), true, {}}), &error);
+        const auto ok = parseRemoteReply(encodeRemoteReply({QStringLiteral("7"), true, {}, std::nullopt}), &error);
         QVERIFY(ok && ok->ok && ok->id == QStringLiteral("7"));
         const auto no = parseRemoteReply(R"j({"id":"7","ok":false,"error":"azimuth 999.0° is outside 0..360°"})j", &error);
         QVERIFY(no && !no->ok);
@@ -221,6 +224,64 @@ private slots:
         QVERIFY(!parseRemoteReply(R"j({"id":"7","ok":false,"error":""})j", &error));
         QVERIFY2(error.contains(QStringLiteral("without its reason")), qPrintable(error));
         QVERIFY(!parseRemoteReply(R"j({"id":"7","ok":"yes"})j", &error));
+    }
+
+    // The answer to a schedule_preview: each target as the station named
+    // it, and the plan of those found, or why none was made.
+    void previewReplies()
+    {
+        slew::face::SchedulePreview p;
+        p.targets = {{QStringLiteral("ao-91"), QStringLiteral("FOX-1B (AO-91)"), 43017, {}},
+                     {QStringLiteral("NO SUCH"), {}, 0, QStringLiteral("no satellite 'NO SUCH' among the station's element sets")},
+                     {QStringLiteral("sun"), QStringLiteral("Sun"), 0, {}}};
+        p.schedule.settings.startJulian = 2458140.5;
+        p.schedule.settings.hours = 12;
+        p.schedule.targets = {QStringLiteral("FOX-1B (AO-91)"), QStringLiteral("Sun")};
+        slew::schedule::ScheduledPass pass;
+        pass.target = p.schedule.targets[0];
+        pass.norad = 43017;
+        pass.pass.aos.julian = pass.startJulian = 2458140.6;
+        pass.pass.tca.julian = 2458140.603;
+        pass.pass.los.julian = pass.endJulian = 2458140.606;
+        pass.pass.tca.elevationDeg = 33;
+        pass.taken = true;
+        p.schedule.passes = {pass};
+        QString error;
+        const auto back = parseRemoteReply(encodeRemoteReply({QStringLiteral("9"), true, {}, p}), &error);
+        QVERIFY2(back && back->preview, qPrintable(error));
+        QCOMPARE(back->preview->targets.size(), 3);
+        QCOMPARE(back->preview->targets[0].name, QStringLiteral("FOX-1B (AO-91)"));
+        QCOMPARE(back->preview->targets[0].spec(), QStringLiteral("43017"));
+        QCOMPARE(back->preview->targets[1].problem, p.targets[1].problem);
+        QCOMPARE(back->preview->targets[2].spec(), QStringLiteral("sun"));
+        QCOMPARE(back->preview->schedule.targets, p.schedule.targets);
+        QCOMPARE(back->preview->schedule.passes.size(), 1);
+        QCOMPARE(back->preview->schedule.settings.hours, 12.0);
+        // Named, not planned.
+        slew::face::SchedulePreview unplanned;
+        unplanned.targets = {p.targets[2]};
+        unplanned.notPlanned = QStringLiteral("a schedule needs the station's place");
+        const auto named = parseRemoteReply(encodeRemoteReply({QStringLiteral("10"), true, {}, unplanned}), &error);
+        QVERIFY2(named && named->preview, qPrintable(error));
+        QCOMPARE(named->preview->notPlanned, unplanned.notPlanned);
+        QVERIFY(named->preview->schedule.passes.isEmpty());
+        // A refusal carries no preview.
+        QVERIFY(!encodeRemoteReply({QStringLiteral("11"), false, QStringLiteral("no"), p}).contains("preview"));
+        // Bad ones, refused whole.
+        const char *bad[][2] = {
+            {R"j({"id":"1","ok":true,"preview":{"named":[{"asked":"x"}]}})j", "a name or a problem"},
+            {R"j({"id":"1","ok":true,"preview":{"named":[{"asked":"x","name":"X","problem":"no"}]}})j", "a name or a problem"},
+            {R"j({"id":"1","ok":true,"preview":{"named":[{"asked":"x","problem":"no","norad":5}]}})j", "no catalogue number"},
+            {R"j({"id":"1","ok":true,"preview":{}})j", "'named' is missing"},
+            {R"j({"id":"1","ok":true,"preview":[]})j", "not an object"},
+            {R"j({"id":"1","ok":false,"error":"no","preview":{"named":[]}})j", "a refusal with a preview"},
+            {R"j({"id":"1","ok":true,"preview":{"named":[],"not_planned":"no place","start_ms":1000,"end_ms":2000,"passes":[]}})j", "not_planned"},
+            {R"j({"id":"1","ok":true,"preview":{"named":[],"current":0}})j", "unknown field 'current'"},
+        };
+        for (const auto &b : bad) {
+            QVERIFY2(!parseRemoteReply(b[0], &error), b[0]);
+            QVERIFY2(error.contains(QString::fromUtf8(b[1])), qPrintable(error));
+        }
     }
 
     void stateRoundTrip()

@@ -56,7 +56,7 @@ bool connectAndWait(Station &station, SimulatorPump &pump)
 
 RemoteReply answer(RemoteCommands &commands, const QByteArray &json)
 {
-    return commands.handle(json).value_or(RemoteReply{QStringLiteral("none"), false, QStringLiteral("no reply")});
+    return commands.handle(json).value_or(RemoteReply{QStringLiteral("none"), false, QStringLiteral("no reply"), std::nullopt});
 }
 
 } // namespace
@@ -64,7 +64,11 @@ RemoteReply answer(RemoteCommands &commands, const QByteArray &json)
 class RemoteCommandsTest : public QObject {
     Q_OBJECT
 private slots:
-    void initTestCase() { slew::registerLinkSchemes(); }
+    void initTestCase()
+    {
+        slew::registerLinkSchemes();
+        qRegisterMetaType<RemoteReply>();
+    }
 
     void movesPassTheGateInItsOwnWords()
     {
@@ -108,6 +112,34 @@ private slots:
         QCOMPARE(stops.first().at(0).toString(), QStringLiteral("a stop over MQTT")); // what the logs say asked
         station.handControlBack();
         QVERIFY(answer(commands, R"j({"id":"5","cmd":"goto","az":40,"el":20})j").ok);
+    }
+
+    // A schedule's preview moves nothing, so no hold refuses it; it is
+    // answered later, when planned, with each target named.
+    void aPreviewIsAnsweredWhenPlannedUnderAnyHold()
+    {
+        Station station(onTheSimulator());
+        SimulatorPump pump;
+        QVERIFY(connectAndWait(station, pump));
+        station.setPlace(slew::sky::Site{55.7, 12.6, 10, {}, {}});
+        RemoteCommands commands(&station, {});
+        QVERIFY(station.stop(QStringLiteral("the test")));
+        QVERIFY(station.operatorHolds());
+        QSignalSpy late(&commands, &RemoteCommands::lateReply);
+        QSignalSpy moves(station.session(), &slew::session::RotatorSession::moveSent);
+        QVERIFY(!commands.handle(R"j({"id":"p1","cmd":"schedule_preview","targets":["sun","NO SUCH SATELLITE"],"hours":6})j"));
+        TRY_VERIFY_WITH_TIMEOUT(late.size() == 1, 20000);
+        const RemoteReply reply = late.first().at(0).value<RemoteReply>();
+        QCOMPARE(reply.id, QStringLiteral("p1"));
+        QVERIFY2(reply.ok && reply.preview, qPrintable(reply.error));
+        QCOMPARE(reply.preview->targets.size(), 2);
+        QCOMPARE(reply.preview->targets[0].name, QStringLiteral("the sun"));
+        QVERIFY(!reply.preview->targets[1].isFound());
+        QCOMPARE(reply.preview->schedule.targets, QStringList{QStringLiteral("the sun")});
+        QCOMPARE(moves.size(), 0);
+        QVERIFY(!station.scheduleRunner()->isRunning());
+        // Without an id there is no one to answer: refused, said as a fault.
+        QVERIFY(!commands.handle(R"j({"cmd":"schedule_preview","targets":["sun"]})j"));
     }
 
     void slewsOwnTrackingHoldsRemoteMovesOff()

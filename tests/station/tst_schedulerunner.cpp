@@ -6,7 +6,7 @@
 // both). ENVISAT's pass is dropped for FLOCK's, and said at once (its time
 // has come); FLOCK's is followed to its LOS, then PERSEUS-M1's is waited
 // for; a change of the list plans again without taking the pass in
-// progress away; untrack ends it all.
+// progress away; untrack ends it all. A preview plans as the run does.
 
 #include "linkschemes.h"
 #include "schedule/scheduletext.h"
@@ -15,6 +15,7 @@
 #include "sky/elementsetformat.h"
 #include "sky/utctime.h"
 #include "records/passrecordstore.h"
+#include "station/schedulepreviewer.h"
 #include "station/schedulerunner.h"
 #include "station/station.h"
 #include "tracking/passrunner.h"
@@ -62,7 +63,11 @@ const ScheduledPass *passOf(const slew::schedule::Schedule &plan, const QString 
 class ScheduleRunnerTest : public QObject {
     Q_OBJECT
 private slots:
-    void initTestCase() { slew::registerLinkSchemes(); }
+    void initTestCase()
+    {
+        slew::registerLinkSchemes();
+        qRegisterMetaType<slew::face::SchedulePreview>();
+    }
 
     void followsTheTakenPassesAndSaysTheDroppedOnes()
     {
@@ -142,6 +147,94 @@ private slots:
         QVERIFY(!runner->isRunning());
         QVERIFY(!station.passRunner()->isRunning());
         QVERIFY(said().contains(QStringLiteral("schedule: ended: the test is over")));
+    }
+
+    // A preview is the plan a run would make, made by the same settings and
+    // moving nothing; one at a time; named even before the station has a
+    // place. A run asked again with other targets keeps its schedule going.
+    void previewsThePlanARunMakes()
+    {
+        const QList<slew::sky::ElementSet> sets =
+            slew::sky::readElementSetFile(QStringLiteral(SLEW_TEST_DATA_DIR "/gpredict-satellites-2018.tle")).sets;
+        const QStringList names{QStringLiteral("FLOCK 2P-1"), QStringLiteral("perseus-m1"), QStringLiteral("27386"),
+                                QStringLiteral("NO SUCH SATELLITE")};
+        Station station;
+        slew::station::SchedulePreviewer previewer(&station, sets);
+        QSignalSpy previewed(&previewer, &slew::station::SchedulePreviewer::previewed);
+        QSignalSpy refused(&previewer, &slew::station::SchedulePreviewer::refused);
+
+        // No place: each target named, no plan, and why.
+        previewer.preview(QStringLiteral("a"), names, {});
+        QCOMPARE(previewed.size(), 1);
+        auto named = previewed.takeFirst().at(1).value<slew::face::SchedulePreview>();
+        QCOMPARE(named.notPlanned, QStringLiteral("a schedule needs the station's place"));
+        QCOMPARE(named.targets.size(), 4);
+        QCOMPARE(named.targets[1].name, QStringLiteral("PERSEUS-M1"));
+        QCOMPARE(named.targets[2].name, QStringLiteral("ENVISAT"));
+        QCOMPARE(named.targets[2].spec(), QStringLiteral("27386"));
+        QCOMPARE(named.targets[3].problem, QStringLiteral("no satellite 'NO SUCH SATELLITE' among the station's element sets"));
+
+        slew::sky::Site place;
+        QString error;
+        QVERIFY(slew::sky::parseSite(QStringLiteral("JO65hq"), &place, &error));
+        station.setPlace(place);
+        station.clock()->rehearse(at("2018-01-22T09:25:40Z"), 1.0);
+        station.session()->connectTo(QStringLiteral("sim:"));
+        QTRY_VERIFY_WITH_TIMEOUT(station.session()->isConnected() && station.session()->hasPosition(), 10000);
+        // Two at once: the first let go, the second planned.
+        previewer.preview(QStringLiteral("b"), names, {1, 0, 30});
+        previewer.preview(QStringLiteral("c"), names, {});
+        QCOMPARE(refused.size(), 1);
+        QCOMPARE(refused.first().at(0).toString(), QStringLiteral("b"));
+        QCOMPARE(refused.first().at(1).toString(), QStringLiteral("a newer preview was asked"));
+        QTRY_COMPARE_WITH_TIMEOUT(previewed.size(), 1, 20000);
+        QCOMPARE(previewed.first().at(0).toString(), QStringLiteral("c"));
+        const auto preview = previewed.first().at(1).value<slew::face::SchedulePreview>();
+        QVERIFY(preview.notPlanned.isEmpty());
+        QCOMPARE(preview.schedule.targets, (QStringList{"FLOCK 2P-1", "PERSEUS-M1", "ENVISAT"}));
+        // Bad numbers are refused, as a run's are.
+        previewer.preview(QStringLiteral("d"), names, {500, 0, 30});
+        QVERIFY(refused.last().at(1).toString().startsWith(QStringLiteral("a schedule's hours: ")));
+        QVERIFY(!station.scheduleRunner()->isRunning()); // nothing run
+
+        // The run's plan takes and drops what the preview did.
+        ScheduleRunner *runner = station.scheduleRunner();
+        QCOMPARE(station.runSchedule({satellite("FLOCK 2P-1"), satellite("PERSEUS-M1"), satellite("ENVISAT")},
+                                     slew::station::ScheduleOptions{})
+                     .reason(),
+                 QString());
+        QTRY_VERIFY_WITH_TIMEOUT(!runner->schedule().passes.isEmpty(), 20000);
+        for (const char *iso : {"2018-01-22T09:26:00Z", "2018-01-22T09:30:00Z"}) {
+            for (const QString &target : preview.schedule.targets) {
+                const ScheduledPass *previewed = passOf(preview.schedule, target, at(iso));
+                const ScheduledPass *run = passOf(runner->schedule(), target, at(iso));
+                QCOMPARE(bool(previewed), bool(run));
+                if (previewed)
+                    QVERIFY2(previewed->taken == run->taken, qPrintable(target + QLatin1Char(' ') + QLatin1String(iso)));
+            }
+        }
+        // Asked again with the list in another order: the same schedule,
+        // planned again, not ended and begun anew.
+        QSignalSpy lines(runner, &ScheduleRunner::logLine);
+        QCOMPARE(station.runSchedule({satellite("PERSEUS-M1"), satellite("FLOCK 2P-1")}, slew::station::ScheduleOptions{})
+                     .reason(),
+                 QString());
+        const auto planned = [&lines] {
+            return std::any_of(lines.begin(), lines.end(), [](const QList<QVariant> &line) {
+                return line.at(0).toString().startsWith(QStringLiteral("schedule: planned (the targets changed): "));
+            });
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(planned(), 20000);
+        for (const QList<QVariant> &line : std::as_const(lines))
+            QVERIFY2(!line.at(0).toString().startsWith(QStringLiteral("schedule: ended")), qPrintable(line.at(0).toString()));
+        // Other numbers: a new schedule.
+        QCOMPARE(station.runSchedule({satellite("PERSEUS-M1")}, slew::station::ScheduleOptions{0, 12, 30}).reason(), QString());
+        QVERIFY(lines.size() >= 2);
+        bool ended = false;
+        for (const QList<QVariant> &line : std::as_const(lines))
+            ended |= line.at(0).toString().startsWith(QStringLiteral("schedule: ended: "));
+        QVERIFY(ended);
+        station.untrack(QStringLiteral("the test is over"));
     }
 
     void refusedWithoutAPlace()

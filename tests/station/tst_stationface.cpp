@@ -4,8 +4,8 @@
 // process and once as a remote window's face of the same kind of station
 // on a real Mosquitto (TLS, accounts, its access list): the same outcomes,
 // refusals in the same words, and the same state seen after each step:
-// go-to, track, a schedule run and ended, the radio held and handed back,
-// stop, park. Both stations run the built-in simulator on its manual clock.
+// go-to, track, a schedule run and ended, a schedule previewed, the radio
+// held and handed back, stop, park. Both stations run the built-in simulator on its manual clock.
 
 #include "../common/mosquittobroker.h"
 #include "../common/settledoutcome.h"
@@ -132,6 +132,28 @@ bool runScript(StationFace &face, Transcript &t)
     }
     QObject::disconnect(follow);
     t.add(QStringLiteral("unschedule again"), settledOutcome(face, face.stopSchedule()));
+
+    // A schedule previewed, nothing run: each name as the station found it
+    // (the AMSAT name, one it has not, the sun), and a plan of those found.
+    std::optional<slew::face::SchedulePreview> preview;
+    const auto previewed = QObject::connect(&face, &StationFace::schedulePreviewed, &face,
+                                            [&preview](const QString &, const slew::face::SchedulePreview &p) { preview = p; });
+    const Outcome asked = face.previewSchedule({QStringLiteral("ao-91"), QStringLiteral("NO SUCH SATELLITE"), QStringLiteral("sun")},
+                                               {12, 0, 30});
+    t.lines << QStringLiteral("preview asked: %1").arg(asked.isAwaiting() ? u"awaiting" : u"not awaiting");
+    t.add(QStringLiteral("preview"), settledOutcome(face, asked, 30000));
+    QObject::disconnect(previewed);
+    if (!preview) {
+        t.lines << QStringLiteral("no preview came");
+        return false;
+    }
+    for (const slew::face::NamedTarget &n : preview->targets)
+        t.lines << QStringLiteral("  %1 -> %2").arg(n.asked, n.isFound() ? QStringLiteral("%1 (%2)").arg(n.name).arg(n.norad) : n.problem);
+    t.lines << QStringLiteral("  planned %1 over %2 h, %3")
+                   .arg(preview->schedule.targets.join(QStringLiteral(", ")))
+                   .arg(preview->schedule.settings.hours, 0, 'f', 1)
+                   .arg(preview->schedule.passes.isEmpty() ? u"no pass" : u"passes");
+    t.lines << QStringLiteral("  still not running: %1").arg(face.schedule() && !face.schedule()->running ? u"yes" : u"no");
 
     // The radio's dial taken and handed back to Doppler steering, the
     // state's hold following. (These stations have no radio set: the hold

@@ -21,7 +21,7 @@
 #include "remote/remoteconnectdialog.h"
 #include "remote/remotecontrols.h"
 #include "remote/remoteopener.h"
-#include "remote/remotescheduleview.h"
+#include "tracking/schedulepanel.h"
 #include "tracking/scheduletimeline.h"
 #include "stationwindow.h"
 #include "rotor/gotopanel.h"
@@ -255,10 +255,11 @@ private slots:
         // The Schedule tab: the targets by priority, the time line, the pass
         // being followed.
         QTRY_VERIFY_WITH_TIMEOUT(remote->schedule() && remote->schedule()->current, 60000);
-        auto *view = window->scheduleView();
-        QVERIFY2(view->summary().contains(QStringLiteral("By priority: FLOCK 2P-1, PERSEUS-M1.")), qPrintable(view->summary()));
-        QVERIFY2(view->currentText().startsWith(QStringLiteral("Now: ")) && view->currentText().contains(QStringLiteral("FLOCK 2P-1")),
-                 qPrintable(view->currentText()));
+        auto *view = window->schedulePanel();
+        QTRY_VERIFY2(view->stateText().contains(QStringLiteral("By priority: FLOCK 2P-1, PERSEUS-M1 (")),
+                     qPrintable(view->stateText()));
+        QVERIFY2(view->stateText().startsWith(QStringLiteral("Running: ")) && view->stateText().contains(QStringLiteral("Now: FLOCK 2P-1")),
+                 qPrintable(view->stateText()));
         const auto &shown = view->timeline()->schedule();
         QCOMPARE(shown.passes.size(), remote->schedule()->schedule.passes.size());
         QVERIFY(!view->timeline()->barFor(shown.passes.at(*remote->schedule()->current)).isEmpty());

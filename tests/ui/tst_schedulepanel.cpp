@@ -64,6 +64,24 @@ bool waitForPreview(SchedulePanel *panel)
     return shown.wait(20000);
 }
 
+// Adds as the Add field does and waits for the station's word: the spec
+// listed, or empty with the refusal.
+QString add(SchedulePanel *panel, const QString &text, QString *refusal = nullptr)
+{
+    QSignalSpy added(panel, &SchedulePanel::targetAdded);
+    QSignalSpy refused(panel, &SchedulePanel::targetRefused);
+    if (panel->addTarget(text)) {
+        if (!added.wait(20000) && refused.isEmpty())
+            return {};
+    }
+    if (!refused.isEmpty()) {
+        if (refusal)
+            *refusal = refused.first().first().toString();
+        return {};
+    }
+    return added.isEmpty() ? QString() : added.first().first().toString();
+}
+
 } // namespace
 
 class SchedulePanelTest : public QObject {
@@ -98,18 +116,35 @@ private slots:
             // No target yet: the empty time line is headed with today.
             QCOMPARE(panel->timeline()->dayText(), QStringLiteral("UTC, 22 Jan"));
 
-            QVERIFY(panel->addTarget(QStringLiteral("FLOCK 2P-1")));
-            QVERIFY(panel->addTarget(QStringLiteral("ENVISAT")));
-            QVERIFY(waitForPreview(panel) || panel->isPreviewing());
+            QCOMPARE(add(panel, QStringLiteral("FLOCK 2P-1")), QStringLiteral("41617"));
+            QCOMPARE(add(panel, QStringLiteral("ENVISAT")), QStringLiteral("27386"));
+            // Two added at once, before the station has named the first.
+            QSignalSpy added(panel, &SchedulePanel::targetAdded);
             QVERIFY(panel->addTarget(QStringLiteral("perseus-m1")));
+            QVERIFY(panel->addTarget(QStringLiteral("sun")));
             QVERIFY(waitForPreview(panel));
+            QCOMPARE(added.size(), 2);
+            QCOMPARE(panel->targetSpecs(), (QStringList{"41617", "27386", "40039", "sun"}));
+            auto *list = f.find<QListWidget>(QStringLiteral("scheduleTargets"));
+            QCOMPARE(list->item(2)->text(), QStringLiteral("PERSEUS-M1"));
             // Refused, each saying why, and the list as it was.
-            QVERIFY(!panel->addTarget(QStringLiteral("NO SUCH SATELLITE")));
+            QString refusal;
+            QCOMPARE(add(panel, QStringLiteral("NO SUCH SATELLITE"), &refusal), QString());
+            QVERIFY2(refusal.contains(QStringLiteral("NO SUCH SATELLITE")), qPrintable(refusal));
             QVERIFY(f.find<QLabel>(QStringLiteral("scheduleRefusal"))->isVisible());
             QVERIFY(!panel->addTarget(QStringLiteral("41617")));
             QVERIFY2(f.find<QLabel>(QStringLiteral("scheduleRefusal"))->text().contains("in the list already"),
                      qPrintable(f.find<QLabel>(QStringLiteral("scheduleRefusal"))->text()));
-            QVERIFY(!panel->addTarget(QStringLiteral("azel:400,10")));
+            // The same satellite by another name: found, then refused.
+            QCOMPARE(add(panel, QStringLiteral("envisat"), &refusal), QString());
+            QCOMPARE(refusal, QStringLiteral("ENVISAT is in the list already: a target has one priority"));
+            QCOMPARE(add(panel, QStringLiteral("azel:400,10"), &refusal), QString());
+            QVERIFY2(!refusal.isEmpty(), "an azimuth out of range");
+            QCOMPARE(panel->targetSpecs().size(), 4);
+            // The sun leaves again, as the Remove button does.
+            list->setCurrentRow(3);
+            f.find<QPushButton>(QStringLiteral("scheduleRemove"))->click();
+            QVERIFY(waitForPreview(panel));
             QCOMPARE(panel->targetSpecs().size(), 3);
 
             // FLOCK's pass of 09:15:45 wins the overlap with ENVISAT's.
@@ -128,7 +163,6 @@ private slots:
             QVERIFY(f.find<QLabel>(QStringLiteral("scheduleState"))->text().startsWith(QStringLiteral("Preview: ")));
 
             // Dragged to the top, ENVISAT wins instead.
-            auto *list = f.find<QListWidget>(QStringLiteral("scheduleTargets"));
             QVERIFY(list->model()->moveRow(QModelIndex(), 1, QModelIndex(), 0));
             QVERIFY(waitForPreview(panel));
             envisat = passOf(panel->shownSchedule(), "ENVISAT", "2018-01-22T09:30:00Z");
@@ -147,15 +181,14 @@ private slots:
         // they have come in.
         WindowFixture f;
         auto *list = f.find<QListWidget>(QStringLiteral("scheduleTargets"));
-        QVERIFY(f.loadElementSets(kAllSets));
-        QCOMPARE(scheduleTab(f)->targetSpecs(), (QStringList{"norad:27386", "norad:41617", "norad:40039"}));
-        QCOMPARE(list->item(0)->text(), QStringLiteral("ENVISAT"));
-        // Added by the names operators use.
         SchedulePanel *panel = scheduleTab(f);
+        QVERIFY(f.loadElementSets(kAllSets));
+        QCOMPARE(panel->targetSpecs(), (QStringList{"27386", "41617", "40039"}));
+        QTRY_COMPARE(list->item(0)->text(), QStringLiteral("ENVISAT"));
+        // Added by the names operators use.
         for (const char *name : {"AO-91", "SO-50", "FO-29", "ZARYA"})
-            QVERIFY2(panel->addTarget(QString::fromLatin1(name)), name);
-        QCOMPARE(panel->targetSpecs().mid(3),
-                 (QStringList{"norad:43017", "norad:27607", "norad:24278", "norad:25544"}));
+            QVERIFY2(!add(panel, QString::fromLatin1(name)).isEmpty(), name);
+        QCOMPARE(panel->targetSpecs().mid(3), (QStringList{"43017", "27607", "24278", "25544"}));
         // Removed again, as the Remove button does, so the next test starts
         // from the three.
         auto *remove = f.find<QPushButton>(QStringLiteral("scheduleRemove"));
@@ -175,9 +208,10 @@ private slots:
         QVERIFY(f.loadElementSets(kAllSets));
         QVERIFY(f.rehearseAt(QStringLiteral("2018-01-22T09:25:40Z"), 20.0));
         SchedulePanel *panel = scheduleTab(f);
-        QVERIFY(panel->addTarget(QStringLiteral("FLOCK 2P-1")));
-        QVERIFY(panel->addTarget(QStringLiteral("PERSEUS-M1")));
-        QVERIFY(waitForPreview(panel));
+        QVERIFY(!add(panel, QStringLiteral("FLOCK 2P-1")).isEmpty());
+        QVERIFY(!add(panel, QStringLiteral("PERSEUS-M1")).isEmpty());
+        if (!panel->isPreviewing())
+            QVERIFY(waitForPreview(panel));
         auto *run = f.find<QPushButton>(QStringLiteral("scheduleRun"));
         QCOMPARE(run->text(), QStringLiteral("Run schedule"));
         QTest::mouseClick(run, Qt::LeftButton);

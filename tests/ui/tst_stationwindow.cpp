@@ -3,8 +3,9 @@
 // steps through the station window of a station in this process and
 // through the station window of the same kind of station on a real
 // Mosquitto (TLS, accounts). The steps go through the window's own widgets
-// (the go-to panel, the presets, Stop, Park) and, for tracking, which each
-// door still shows its own way, through the window's face. What each step
+// (the go-to panel, the presets, Stop, the Schedule page, the radio's
+// hold, Park) and, for tracking by one target, which each door still shows
+// its own way, through the window's face. What each step
 // shows (messages, the readout, the tracking line) must read the same.
 
 #include "../common/mosquittobroker.h"
@@ -17,6 +18,7 @@
 #include "rotor/presetpanel.h"
 #include "stationwindow.h"
 #include "stopbutton.h"
+#include "tracking/schedulepanel.h"
 #include "tracking/trackingline.h"
 
 #include "face/stationface.h"
@@ -27,7 +29,10 @@
 #include "station/station.h"
 
 #include <QLabel>
+#include <QLineEdit>
 #include <QPushButton>
+#include <QSettings>
+#include <QSignalSpy>
 #include <QTest>
 
 #include <cmath>
@@ -119,6 +124,54 @@ QStringList runScript(StationWindow &w)
     if (!waitFor("tracking ended", [&] { return w.trackingLine()->text() == u"Not tracking"; }))
         return t;
 
+    // The Schedule page, through its own widgets: targets added by name
+    // (one the station cannot find, refused in its words), the station's
+    // preview, Run and Stop.
+    slew::ui::SchedulePanel *schedule = w.schedulePanel();
+    auto *add = schedule->findChild<QLineEdit *>(QStringLiteral("scheduleAdd"));
+    for (const char *name : {"Sun", "NO SUCH SATELLITE", "moon"}) {
+        QSignalSpy added(schedule, &slew::ui::SchedulePanel::targetAdded);
+        QSignalSpy refused(schedule, &slew::ui::SchedulePanel::targetRefused);
+        add->setText(QString::fromLatin1(name));
+        schedule->findChild<QPushButton *>(QStringLiteral("scheduleAddButton"))->click();
+        if (!waitFor("the station's word on a target", [&] { return !added.isEmpty() || !refused.isEmpty(); }))
+            return t;
+        t << QStringLiteral("add %1: %2").arg(QString::fromLatin1(name),
+                                              added.isEmpty() ? refused.first().first().toString()
+                                                              : QStringLiteral("listed as ") + added.first().first().toString());
+    }
+    if (!waitFor("a preview", [&] { return schedule->isPreviewing(); }))
+        return t;
+    t << QStringLiteral("schedule: %1, targets %2")
+             .arg(schedule->stateText().section(u':', 0, 0), schedule->targetSpecs().join(QStringLiteral(", ")));
+    auto *run = schedule->findChild<QPushButton *>(QStringLiteral("scheduleRun"));
+    run->click();
+    if (!waitFor("the schedule running", [&] {
+            return face.schedule() && face.schedule()->running && face.schedule()->planned
+                   && schedule->stateText().startsWith(u"Running: ") && run->text() == u"Stop schedule";
+        }))
+        return t;
+    t << QStringLiteral("schedule: running %1").arg(face.schedule()->schedule.targets.join(QStringLiteral(", ")));
+    run->click();
+    if (!waitFor("the schedule ended", [&] {
+            return face.schedule() && !face.schedule()->running && run->text() == u"Run schedule" && schedule->isPreviewing();
+        }))
+        return t;
+    t << QStringLiteral("schedule: %1").arg(schedule->stateText().section(u':', 0, 0));
+
+    // The radio's dial taken and handed back, by the button every station
+    // window has, the line following. (No radio is set: the hold is kept.)
+    auto *hold = w.findChild<QPushButton *>(QStringLiteral("radioHold"));
+    t << QStringLiteral("radio: %1; %2").arg(label(w, "radioState"), hold->text());
+    hold->click();
+    if (!waitFor("the radio held", [&] { return state().radioHeld && hold->text() == u"Resume radio control"; }))
+        return t;
+    t << QStringLiteral("radio: %1").arg(label(w, "radioState"));
+    hold->click();
+    if (!waitFor("the radio handed back", [&] { return !state().radioHeld && hold->text() == u"Stop radio control"; }))
+        return t;
+    t << QStringLiteral("radio: %1").arg(label(w, "radioState"));
+
     t << QStringLiteral("park sent: %1, %2").arg(w.parkHomePanel()->park()).arg(label(w, "homeMessage"));
     if (!waitFor("parked", [&] { return state().park && near(state().position, state().park->x(), state().park->y()) && !state().moving; })) {
         const QPointF p = state().position.value_or(QPointF());
@@ -192,8 +245,11 @@ private slots:
             const QString a = local.value(i), b = remoteSaw.value(i);
             QVERIFY2(a == b, qPrintable(QStringLiteral("step %1\nhere:      %2\nfrom afar: %3").arg(i).arg(a, b)));
         }
-        // The script saw refusals as well as moves.
-        QVERIFY2(local.filter(QStringLiteral("refused: ")).size() == 1 && local.contains(QStringLiteral("go at 999,30 sent: 0")),
+        // The script saw refusals as well as moves: the gate's, the track's
+        // and the schedule's, each in the station's words.
+        QVERIFY2(local.filter(QStringLiteral("refused: ")).size() == 1 && local.contains(QStringLiteral("go at 999,30 sent: 0"))
+                     && local.contains(QStringLiteral("add NO SUCH SATELLITE: no satellite 'NO SUCH SATELLITE' among the "
+                                                      "station's element sets")),
                  qPrintable(local.join(u'\n')));
     }
 

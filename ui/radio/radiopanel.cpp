@@ -2,6 +2,7 @@
 #include "radio/radiopanel.h"
 
 #include "operatortheme.h"
+#include "radio/radiocontrol.h"
 #include "radio/radiolinkbox.h"
 #include "radio/radiopassbandtuner.h"
 #include "radio/radioplanform.h"
@@ -115,17 +116,16 @@ RadioPanel::RadioPanel(station::Station *station, QWidget *parent) : QWidget(par
     radioLayout->addWidget(vfos);
     layout->addWidget(box(tr("Radio"), radioBox, QStringLiteral("radioLinkGroup")));
     layout->addWidget(m_planBox);
-    // The operator's hand back on the radio at any moment; and off again.
-    m_hold = new QPushButton;
-    m_hold->setObjectName(QStringLiteral("radioHold"));
-    m_hold->setAutoDefault(false);
-    connect(m_hold, &QPushButton::clicked, this, [radio] { radio->holdControl(!radio->isControlHeld()); });
-    connect(radio, &station::DopplerRadio::controlHeldChanged, this, &RadioPanel::showHold);
-    showHold();
+    // The operator's hand back on the radio at any moment; and off again:
+    // through the station's face, as every station window has it.
+    auto *hold = new RadioControlButton(m_station->face());
+    connect(hold, &RadioControlButton::message, this, &RadioPanel::message);
+    connect(radio, &station::DopplerRadio::controlHeldChanged, m_readout, &RadioReadout::refresh);
     auto *during = new QWidget;
     auto *duringLayout = new QVBoxLayout(during);
     duringLayout->setContentsMargins(0, 0, 0, 0);
     duringLayout->setSpacing(4);
+    duringLayout->addWidget(new RadioStateLine(m_station->face()));
     duringLayout->addWidget(m_readout);
     // Across the passband, as the radio's dial; beside Stop radio control.
     auto *tuner = new RadioPassbandTuner(radio);
@@ -133,7 +133,7 @@ RadioPanel::RadioPanel(station::Station *station, QWidget *parent) : QWidget(par
     connect(tuner, &RadioPassbandTuner::tuned, m_readout, &RadioReadout::refresh);
     auto *controls = new QHBoxLayout;
     controls->setSpacing(8);
-    controls->addWidget(m_hold);
+    controls->addWidget(hold);
     controls->addWidget(tuner, 1);
     duringLayout->addLayout(controls);
     layout->addWidget(box(tr("During the pass"), during, QStringLiteral("radioReadoutGroup")));
@@ -188,15 +188,6 @@ RadioPanel::RadioPanel(station::Station *station, QWidget *parent) : QWidget(par
     }
     onTracking();
     showPlanState();
-}
-
-void RadioPanel::showHold()
-{
-    const bool held = m_station->radio()->isControlHeld();
-    m_hold->setText(held ? tr("Resume radio control") : tr("Stop radio control"));
-    m_hold->setToolTip(held ? tr("Tune the radio for Doppler again, from now on")
-                            : tr("Send the radio nothing more: it stays where it is, for your hands, until resumed"));
-    m_readout->refresh();
 }
 
 int RadioPanel::trackedNorad() const

@@ -73,7 +73,6 @@ private:
     void showRefreshResult();
     void showTransponderState(const QString &text, const QString &colour);
     void showPlanState();
-    void showHold(); // the Stop/Resume radio control button as the radio stands
 
     station::Station *m_station;
     RadioLinkBox *m_link;
@@ -81,7 +80,6 @@ private:
     RadioReadout *m_readout;
     QGroupBox *m_planBox;
     QPushButton *m_apply;
-    QPushButton *m_hold;
     QLabel *m_planState;
     QLabel *m_transponderState;
     RadioTransponderDialog *m_sourcesDialog = nullptr;

@@ -4,17 +4,12 @@
 #include "operatortheme.h"
 #include "tracking/scheduletimeline.h"
 
+#include "face/stationface.h"
+#include "face/trackingnow.h"
 #include "schedule/scheduletext.h"
-#include "session/rotatorsession.h"
-#include "sky/elementsetformat.h"
-#include "sky/elementsetsources.h"
 #include "sky/utctime.h"
-#include "station/schedulerunner.h"
-#include "station/station.h"
-#include "tracking/rotatorreach.h"
-#include "tracking/stationclock.h"
 
-#include <QFutureWatcher>
+#include <QDateTime>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -25,22 +20,21 @@
 #include <QSettings>
 #include <QTableWidget>
 #include <QVBoxLayout>
-#include <QtConcurrent/QtConcurrentRun>
 
 namespace slew::ui {
 
+using face::Outcome;
 using schedule::ScheduledPass;
-using tracking::TrackTarget;
 
 namespace {
 
-constexpr char kTargetsKey[] = "schedule/targets";
 constexpr int kSpecRole = Qt::UserRole;
 constexpr double kPreviewHours = 24.0;
+constexpr int kLongestName = 100; // as a track command takes it
 
 } // namespace
 
-SchedulePanel::SchedulePanel(station::Station *station, QWidget *parent) : QWidget(parent), m_station(station)
+SchedulePanel::SchedulePanel(face::StationFace *face, QWidget *parent) : QWidget(parent), m_face(face)
 {
     setObjectName(QStringLiteral("schedulePanel"));
     m_list = new QListWidget;
@@ -54,8 +48,9 @@ SchedulePanel::SchedulePanel(station::Station *station, QWidget *parent) : QWidg
     m_add->setPlaceholderText(tr("satellite, sun, moon, azel:…"));
     // What it takes, readable however narrow the window: the page scrolls instead.
     m_add->setMinimumWidth(m_add->fontMetrics().horizontalAdvance(m_add->placeholderText()) + 24);
-    m_add->setToolTip(tr("A satellite of the loaded element sets (by name or catalogue number), sun, moon, "
-                         "azel:AZ,EL (a fixed direction) or radec:RA,DEC (a radio source)"));
+    m_add->setMaxLength(kLongestName);
+    m_add->setToolTip(tr("A satellite of the station's element sets (by name, part of it or catalogue number), "
+                         "sun, moon, azel:AZ,EL (a fixed direction) or radec:RA,DEC (a radio source)"));
     auto *add = new QPushButton(tr("Add"));
     add->setObjectName(QStringLiteral("scheduleAddButton"));
     add->setAutoDefault(false);
@@ -67,7 +62,7 @@ SchedulePanel::SchedulePanel(station::Station *station, QWidget *parent) : QWidg
     m_refusal->setWordWrap(true);
     m_refusal->setStyleSheet(refusedText());
     m_refusal->hide();
-    m_run = new QPushButton;
+    m_run = new QPushButton(tr("Run schedule"));
     m_run->setObjectName(QStringLiteral("scheduleRun"));
     m_run->setAutoDefault(false);
     m_state = new QLabel;
@@ -120,82 +115,71 @@ SchedulePanel::SchedulePanel(station::Station *station, QWidget *parent) : QWidg
     connect(m_list->model(), &QAbstractItemModel::rowsMoved, this, &SchedulePanel::onTargetsChanged);
     connect(m_run, &QPushButton::clicked, this, &SchedulePanel::runOrStop);
 
-    station::ScheduleRunner *runner = m_station->scheduleRunner();
-    connect(runner, &station::ScheduleRunner::runningChanged, this, [this] {
-        if (m_station->scheduleRunner()->isRunning())
-            showRunning();
-        else
-            preview();
-    });
-    connect(runner, &station::ScheduleRunner::scheduleChanged, this, &SchedulePanel::showRunning);
-    connect(runner, &station::ScheduleRunner::currentChanged, this, &SchedulePanel::showRunning);
-    connect(runner, &station::ScheduleRunner::logLine, this, &SchedulePanel::message);
-    // What the preview depends on.
-    connect(m_station, &station::Station::placeChanged, this, &SchedulePanel::preview);
-    connect(m_station->elementSets(), &sky::ElementSetSources::setsChanged, this, &SchedulePanel::preview);
-    // The list names satellites by the loaded sets: at start they come after
-    // the list is restored, and a reload may rename one.
-    connect(m_station->elementSets(), &sky::ElementSetSources::setsChanged, this, [this] {
-        for (int i = 0; i < m_list->count(); ++i)
-            m_list->item(i)->setText(describeSpec(m_list->item(i)->data(kSpecRole).toString()));
-    });
-    connect(m_station->clock(), &tracking::StationClock::changed, this, &SchedulePanel::preview);
-    connect(&m_now, &QTimer::timeout, this, [this] { m_timeline->setNow(m_station->clock()->nowJulian()); });
+    connect(m_face, &face::StationFace::scheduleChanged, this, &SchedulePanel::showSchedule);
+    connect(m_face, &face::StationFace::schedulePreviewed, this, &SchedulePanel::onPreviewed);
+    connect(m_face, &face::StationFace::answered, this, &SchedulePanel::onAnswered);
+    // What the preview and the targets' names depend on.
+    connect(m_face, &face::StationFace::skyChanged, this, &SchedulePanel::askPreview);
+    connect(&m_now, &QTimer::timeout, this, [this] { m_timeline->setNow(nowJulian()); });
     m_now.start(5000);
 
     restoreTargets();
-    showRunning();
-    preview();
+    showSchedule();
+    if (!isRunning())
+        askPreview();
 }
 
-QString SchedulePanel::describeSpec(const QString &spec) const
+double SchedulePanel::nowJulian() const
 {
-    if (spec.startsWith(QLatin1String("norad:"))) {
-        const int norad = spec.mid(6).toInt();
-        for (const sky::ElementSet &t : m_station->elementSets()->sets())
-            if (t.catalogueNumber == norad)
-                return t.displayName();
-        return tr("NORAD %1 (not in the loaded element sets)").arg(norad);
-    }
-    if (spec == QLatin1String("sun"))
-        return tr("Sun");
-    if (spec == QLatin1String("moon"))
-        return tr("Moon");
-    return spec;
+    return face::julianOfUnixMs(m_face->stationClockMs().value_or(QDateTime::currentMSecsSinceEpoch()));
+}
+
+QString SchedulePanel::settingsKey() const
+{
+    // A station on a broker has a list of its own, by its name.
+    return m_face->isLocal() ? QStringLiteral("schedule/targets")
+                             : QStringLiteral("schedule/remote/%1/targets").arg(m_face->title());
+}
+
+bool SchedulePanel::isRunning() const
+{
+    const std::optional<face::StationSchedule> s = m_face->schedule();
+    return s && s->running;
+}
+
+QString SchedulePanel::stateText() const
+{
+    return m_state->text();
+}
+
+void SchedulePanel::refuse(const QString &why)
+{
+    m_refusal->setText(why);
+    m_refusal->show();
+    emit targetRefused(why);
 }
 
 bool SchedulePanel::addTarget(const QString &text)
 {
-    const QString what = text.trimmed();
-    QString spec;
+    QString what = text.trimmed();
+    if (what.compare(QLatin1String("sun"), Qt::CaseInsensitive) == 0
+        || what.compare(QLatin1String("moon"), Qt::CaseInsensitive) == 0)
+        what = what.toLower();
     QString error;
-    if (what.isEmpty()) {
+    if (what.isEmpty())
         error = tr("Name a target: a satellite, sun, moon, azel:AZ,EL or radec:RA,DEC");
-    } else if (what.compare(QLatin1String("sun"), Qt::CaseInsensitive) == 0) {
-        spec = QStringLiteral("sun");
-    } else if (what.compare(QLatin1String("moon"), Qt::CaseInsensitive) == 0) {
-        spec = QStringLiteral("moon");
-    } else if (const auto fixed = TrackTarget::parseFixedOrCelestial(what, &error)) {
-        spec = what;
-    } else if (error.isEmpty()) {
-        const QList<sky::ElementSet> sets = m_station->elementSets()->sets(); // the search's answer points into it
-        const sky::ElementSet *tle = sky::findOneSatellite(sets, what, &error);
-        if (tle)
-            spec = QStringLiteral("norad:%1").arg(tle->catalogueNumber);
-    }
-    if (!spec.isEmpty() && targetSpecs().contains(spec))
-        error = tr("%1 is in the list already: a target has one priority").arg(describeSpec(spec));
+    else if (what.size() > kLongestName)
+        error = tr("A target's name is at most %1 characters").arg(kLongestName);
+    else if (targetSpecs().contains(what, Qt::CaseInsensitive) || m_adding.contains(what, Qt::CaseInsensitive))
+        error = tr("%1 is in the list already: a target has one priority").arg(what);
     if (!error.isEmpty()) {
-        m_refusal->setText(error);
-        m_refusal->show();
+        refuse(error);
         return false;
     }
     m_refusal->hide();
-    auto *item = new QListWidgetItem(describeSpec(spec));
-    item->setData(kSpecRole, spec);
-    m_list->addItem(item);
+    m_adding << what;
     m_add->clear();
-    onTargetsChanged();
+    askPreview();
     return true;
 }
 
@@ -207,128 +191,209 @@ QStringList SchedulePanel::targetSpecs() const
     return specs;
 }
 
-QList<TrackTarget> SchedulePanel::targets(QStringList *missing) const
-{
-    QList<TrackTarget> out;
-    for (const QString &spec : targetSpecs()) {
-        TrackTarget t;
-        if (spec == QLatin1String("sun")) {
-            t.kind = TrackTarget::Kind::Sun;
-        } else if (spec == QLatin1String("moon")) {
-            t.kind = TrackTarget::Kind::Moon;
-        } else if (spec.startsWith(QLatin1String("norad:"))) {
-            const int norad = spec.mid(6).toInt();
-            bool found = false;
-            for (const sky::ElementSet &tle : m_station->elementSets()->sets()) {
-                if (tle.catalogueNumber == norad) {
-                    t.elements = tle;
-                    found = true;
-                    break;
-                }
-            }
-            if (!found) {
-                if (missing)
-                    *missing << describeSpec(spec);
-                continue;
-            }
-        } else if (const auto fixed = TrackTarget::parseFixedOrCelestial(spec, nullptr)) {
-            t = *fixed;
-        } else {
-            continue;
-        }
-        out.append(t);
-    }
-    return out;
-}
-
 void SchedulePanel::onTargetsChanged()
 {
     keepTargets();
-    station::ScheduleRunner *runner = m_station->scheduleRunner();
-    if (runner->isRunning()) {
-        QStringList missing;
-        const QList<TrackTarget> list = targets(&missing);
-        if (!list.isEmpty())
-            runner->setTargets(list);
+    if (!isRunning()) {
+        askPreview();
         return;
     }
-    preview();
+    // Run again with the new list and the running schedule's own numbers:
+    // the station plans again and keeps the pass in progress.
+    const QStringList specs = targetSpecs();
+    if (specs.isEmpty())
+        return;
+    const schedule::ScheduleSettings &now = m_face->schedule()->schedule.settings;
+    face::ScheduleRequest request;
+    if (now.startJulian > 0) {
+        request.hours = now.hours;
+        request.minElevationDeg = now.minElevationDeg;
+        request.guardSeconds = now.guardSeconds;
+    }
+    const Outcome sent = m_face->runSchedule(specs, request);
+    if (sent.isRefused())
+        emit message(tr("schedule: %1").arg(sent.reason()));
+    m_runId = sent.id();
 }
 
 void SchedulePanel::keepTargets()
 {
-    QSettings().setValue(QLatin1String(kTargetsKey), targetSpecs());
+    QSettings().setValue(settingsKey(), targetSpecs());
 }
 
 void SchedulePanel::restoreTargets()
 {
-    for (const QString &spec : QSettings().value(QLatin1String(kTargetsKey)).toStringList()) {
-        auto *item = new QListWidgetItem(describeSpec(spec));
+    for (QString spec : QSettings().value(settingsKey()).toStringList()) {
+        if (spec.startsWith(QLatin1String("norad:")))
+            spec = spec.mid(6); // as kept before the station named its targets
+        auto *item = new QListWidgetItem(spec);
         item->setData(kSpecRole, spec);
         m_list->addItem(item);
     }
 }
 
-void SchedulePanel::preview()
+void SchedulePanel::askPreview()
 {
-    m_run->setText(tr("Run schedule"));
-    if (m_station->scheduleRunner()->isRunning())
-        return;
-    QStringList missing;
-    const QList<TrackTarget> list = targets(&missing);
-    const std::optional<sky::Site> place = m_station->place();
-    if (list.isEmpty() || !place) {
+    const QStringList asked = targetSpecs() + m_adding;
+    const bool running = isRunning();
+    if (!running)
+        m_run->setText(tr("Run schedule"));
+    if (asked.isEmpty()) {
+        m_previewId.clear();
         m_previewing = false;
         show(schedule::Schedule{});
-        m_state->setText(!place ? tr("The schedule needs the station: Sky → Station…")
-                                : tr("Add targets: the first is followed first where passes overlap."));
+        m_state->setText(tr("Add targets: the first is followed first where passes overlap."));
         return;
     }
-    schedule::ScheduleSettings settings;
-    settings.startJulian = m_station->clock()->nowJulian();
-    settings.hours = kPreviewHours;
-    const session::RotatorSession *session = m_station->session();
-    if (session->hasPosition())
-        settings.antennaAt = schedule::AntennaPoint{session->azimuth(), session->elevation()};
-    const tracking::RotatorReach reach = tracking::reachOf(*session);
-    const int generation = ++m_generation;
-    m_state->setText(tr("Planning the next %1 hours…").arg(kPreviewHours, 0, 'f', 0));
-    auto *watcher = new QFutureWatcher<schedule::Schedule>(this);
-    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, generation, missing] {
-        watcher->deleteLater();
-        if (generation != m_generation || m_station->scheduleRunner()->isRunning())
-            return;
-        m_previewing = true;
-        show(watcher->result());
-        QString text = tr("Preview: %1.").arg(schedule::describeScheduleSummary(m_shown));
-        if (!missing.isEmpty())
-            text += tr(" Not in the loaded element sets: %1.").arg(missing.join(QStringLiteral(", ")));
-        m_state->setText(text);
-        emit previewShown();
-    });
-    watcher->setFuture(QtConcurrent::run([list, place = *place, reach, settings] {
-        return schedule::planSchedule(list, place, reach, settings);
-    }));
+    // While a schedule runs only an added target is asked after: its plan
+    // is the station's own.
+    if (running && m_adding.isEmpty())
+        return;
+    face::ScheduleRequest request;
+    request.hours = kPreviewHours;
+    const Outcome asking = m_face->previewSchedule(asked, request);
+    if (asking.isRefused()) {
+        m_previewId.clear();
+        onAnswered(QString(), asking);
+        return;
+    }
+    m_previewId = asking.id();
+    if (!running)
+        m_state->setText(tr("Planning the next %1 hours…").arg(kPreviewHours, 0, 'f', 0));
 }
 
-void SchedulePanel::showRunning()
+void SchedulePanel::onAnswered(const QString &id, const Outcome &outcome)
 {
-    station::ScheduleRunner *runner = m_station->scheduleRunner();
-    if (!runner->isRunning())
+    if (!m_runId.isEmpty() && id == m_runId) {
+        m_runId.clear();
+        if (outcome.isRefused())
+            emit message(tr("schedule: %1").arg(outcome.reason()));
         return;
-    ++m_generation; // a preview still being made is of no use now
+    }
+    if (id != m_previewId || !outcome.isRefused())
+        return;
+    m_previewId.clear();
+    // With no preview the targets added are listed as written; the station
+    // names them when it can preview again.
+    for (const QString &text : std::exchange(m_adding, {})) {
+        auto *item = new QListWidgetItem(text);
+        item->setData(kSpecRole, text);
+        m_list->addItem(item);
+        emit targetAdded(text);
+    }
+    keepTargets();
+    if (!isRunning()) {
+        m_previewing = false;
+        show(schedule::Schedule{});
+        m_state->setText(tr("No preview: %1.").arg(outcome.reason()));
+    }
+}
+
+void SchedulePanel::onPreviewed(const QString &id, const face::SchedulePreview &preview)
+{
+    if (id != m_previewId)
+        return; // asked before the list changed
+    m_previewId.clear();
+    QStringList notFound;
+    for (int i = 0; i < m_list->count() && i < preview.targets.size(); ++i) {
+        const face::NamedTarget &t = preview.targets.at(i);
+        QListWidgetItem *item = m_list->item(i);
+        item->setText(t.isFound() ? t.name : tr("%1 (not found)").arg(t.asked));
+        item->setToolTip(t.problem);
+        if (!t.isFound())
+            notFound << t.asked;
+    }
+    bool added = false;
+    if (!m_adding.isEmpty()) {
+        const int before = m_list->count();
+        if (!takeAdded(preview)) {
+            onTargetsChanged(); // a duplicate was planned too: ask again
+            return;
+        }
+        added = m_list->count() > before;
+        keepTargets();
+    }
+    if (isRunning()) {
+        if (added)
+            onTargetsChanged(); // run with the new list
+        return;
+    }
+    if (!preview.notPlanned.isEmpty()) {
+        m_previewing = false;
+        show(schedule::Schedule{});
+        m_state->setText(tr("No preview: %1.").arg(preview.notPlanned));
+        return;
+    }
+    m_previewing = true;
+    show(preview.schedule);
+    QString text = tr("Preview: %1.").arg(schedule::describeScheduleSummary(m_shown));
+    if (!notFound.isEmpty())
+        text += tr(" Not found by the station: %1.").arg(notFound.join(QStringLiteral(", ")));
+    m_state->setText(text);
+    emit previewShown();
+}
+
+bool SchedulePanel::takeAdded(const face::SchedulePreview &preview)
+{
+    const QStringList adding = std::exchange(m_adding, {});
+    const qsizetype first = preview.targets.size() - adding.size();
+    bool asPlanned = true;
+    for (qsizetype i = 0; i < adding.size() && first >= 0; ++i) {
+        const face::NamedTarget &t = preview.targets.at(first + i);
+        if (!t.isFound()) {
+            refuse(t.problem); // found nothing, so planned nothing
+            continue;
+        }
+        if (targetSpecs().contains(t.spec(), Qt::CaseInsensitive)) {
+            refuse(tr("%1 is in the list already: a target has one priority").arg(t.name));
+            asPlanned = false;
+            continue;
+        }
+        auto *item = new QListWidgetItem(t.name);
+        item->setData(kSpecRole, t.spec());
+        m_list->addItem(item);
+        emit targetAdded(t.spec());
+    }
+    return asPlanned;
+}
+
+void SchedulePanel::showSchedule()
+{
+    const std::optional<face::StationSchedule> s = m_face->schedule();
+    if (s && s->running) {
+        m_wasRunning = true;
+        showRunning(*s);
+    } else if (m_wasRunning) {
+        m_wasRunning = false;
+        askPreview();
+    }
+}
+
+void SchedulePanel::showRunning(const face::StationSchedule &running)
+{
     m_previewing = false;
     m_run->setText(tr("Stop schedule"));
-    show(runner->schedule());
-    m_timeline->setCurrent(runner->current());
+    show(running.schedule);
+    std::optional<ScheduledPass> now;
+    if (running.current && *running.current < running.schedule.passes.size())
+        now = running.schedule.passes.at(*running.current);
+    m_timeline->setCurrent(now);
     QString text;
-    if (runner->isPlanning() && runner->schedule().passes.isEmpty())
+    if (!running.planned)
         text = tr("Running: planning…");
     else
-        text = tr("Running: %1.").arg(schedule::describeScheduleSummary(runner->schedule()));
-    if (const std::optional<ScheduledPass> &now = runner->current())
+        text = tr("Running: %1.").arg(schedule::describeScheduleSummary(running.schedule));
+    if (now)
         text += tr(" Now: %1 until %2 UTC.")
                     .arg(now->target, sky::utcFromJulian(now->endJulian).toString(QStringLiteral("HH:mm:ss")));
+    // Started elsewhere (the service's --track, another window): said, as
+    // an edit here runs this list instead.
+    QStringList listed;
+    for (int i = 0; i < m_list->count(); ++i)
+        listed << m_list->item(i)->text();
+    if (running.planned && listed != running.schedule.targets)
+        text += tr(" By priority: %1 (a change to the list here runs it instead).")
+                    .arg(running.schedule.targets.join(QStringLiteral(", ")));
     m_state->setText(text);
 }
 
@@ -336,8 +401,8 @@ void SchedulePanel::show(const schedule::Schedule &plan)
 {
     m_shown = plan;
     m_timeline->setSchedule(plan);
-    m_timeline->setNow(m_station->clock()->nowJulian());
-    if (!m_station->scheduleRunner()->isRunning())
+    m_timeline->setNow(nowJulian());
+    if (!isRunning())
         m_timeline->setCurrent(std::nullopt);
     m_table->setRowCount(0);
     for (const ScheduledPass &p : plan.passes) {
@@ -362,23 +427,27 @@ void SchedulePanel::show(const schedule::Schedule &plan)
 
 void SchedulePanel::runOrStop()
 {
-    station::ScheduleRunner *runner = m_station->scheduleRunner();
-    if (runner->isRunning()) {
-        m_station->untrack(tr("stopped from the Schedule tab"));
+    if (isRunning()) {
+        const Outcome stopped = m_face->stopSchedule();
+        if (stopped.isRefused())
+            emit message(tr("schedule: %1").arg(stopped.reason()));
+        m_runId = stopped.id();
         return;
     }
-    QStringList missing;
-    const QList<TrackTarget> list = targets(&missing);
-    if (list.isEmpty()) {
+    const QStringList specs = targetSpecs();
+    if (specs.isEmpty()) {
         emit message(tr("schedule: no target to follow"));
         return;
     }
-    if (!m_station->session()->isConnected()) {
+    const std::optional<face::StationState> state = m_face->state();
+    if (!state || state->link != u"connected") {
         emit message(tr("schedule: it needs a rotator: connect first"));
         return;
     }
-    if (const QString refused = m_station->runSchedule(list, station::ScheduleOptions{}).reason(); !refused.isEmpty())
-        emit message(tr("schedule: %1").arg(refused));
+    const Outcome sent = m_face->runSchedule(specs, face::ScheduleRequest{});
+    if (sent.isRefused())
+        emit message(tr("schedule: %1").arg(sent.reason()));
+    m_runId = sent.id();
 }
 
 } // namespace slew::ui

@@ -10,13 +10,14 @@
 #include "stationwindow.h"
 
 #include "eventlog.h"
+#include "radio/radiocontrol.h"
 #include "remote/remotebanner.h"
 #include "remote/remotecontrols.h"
-#include "remote/remotescheduleview.h"
 #include "rotor/passoverlay.h"
 #include "rotor/polarplotwidget.h"
 #include "stopbutton.h"
 #include "telemetry/telemetryrecorder.h"
+#include "tracking/schedulepanel.h"
 #include "widgets/titledgroup.h"
 
 #include "remote/remotestation.h"
@@ -37,33 +38,41 @@ void StationWindow::openRemoteDoor()
     RemoteStation *station = m_remote;
     m_remoteBanner = new RemoteBanner(station);
     m_controls = new RemoteControls(station);
-    m_scheduleView = new RemoteScheduleView;
     // As the local window's Tracking tab: a target to track, and below it
     // the station's schedule.
     auto *tracking = new QWidget;
     tracking->setObjectName(QStringLiteral("remoteTrackingPage"));
     auto *trackingLayout = new QVBoxLayout(tracking);
     trackingLayout->addWidget(titledGroup(tr("One target"), m_controls));
-    trackingLayout->addWidget(titledGroup(tr("Schedule"), m_scheduleView), 1);
+    trackingLayout->addWidget(titledGroup(tr("Schedule"), m_schedule), 1);
     m_tabs->addTab(tracking, tr("Tracking"));
+    // The radio as the station's face has it: its link, who has its dial,
+    // where it is tuned, and the dial taken or handed back.
+    auto *radio = new QWidget;
+    radio->setObjectName(QStringLiteral("remoteRadioPage"));
+    auto *radioGroup = new QWidget;
+    auto *radioLayout = new QVBoxLayout(radioGroup);
+    radioLayout->setContentsMargins(0, 0, 0, 0);
+    radioLayout->addWidget(new RadioStateLine(station));
+    auto *hold = new RadioControlButton(station);
+    connect(hold, &RadioControlButton::message, this, [this](const QString &text) { remoteLog(true, text); });
+    radioLayout->addWidget(hold, 0, Qt::AlignLeft);
+    auto *radioPageLayout = new QVBoxLayout(radio);
+    radioPageLayout->addWidget(titledGroup(tr("Radio"), radioGroup));
+    radioPageLayout->addStretch(1);
+    m_tabs->addTab(radio, tr("Radio"));
     layOut(m_remoteBanner, nullptr, nullptr);
 
     connect(station, &RemoteStation::telemetryReceived, m_recorder, &TelemetryRecorder::recordRemote);
     connect(station, &RemoteStation::liveChanged, m_controls, &RemoteControls::setLive);
     connect(station, &RemoteStation::planChanged, this, &StationWindow::showPlan);
-    connect(station, &RemoteStation::scheduleChanged, this, [this](const face::StationSchedule &s) {
-        m_scheduleView->showSchedule(s, QDateTime::currentMSecsSinceEpoch());
-    });
-    // The time line's now moves with every state (at least every 5 s): no
-    // timer of its own.
-    connect(station, &RemoteStation::stateChanged, this, [this](const face::StationState &s) {
-        m_scheduleView->showTime(QDateTime::currentMSecsSinceEpoch());
-        logNewAlarms(s.alarms);
-    });
+    connect(station, &RemoteStation::stateChanged, this, [this](const face::StationState &s) { logNewAlarms(s.alarms); });
     connect(m_stop, &StopButton::stopped, station, [station] { station->endJog({}); });
     connect(m_stop, &StopButton::stopped, this, [this] { remoteLog(false, tr("Stop sent")); });
     connect(station, &RemoteStation::replied, this, [this](const QString &, const QString &command, bool ok, const QString &error) {
-        if (command != u"jog" || !ok)
+        // Jog renewals and previews are many and answered where they are
+        // shown: only a refusal is worth a line.
+        if ((command != u"jog" && command != u"schedule_preview") || !ok)
             remoteLog(!ok, ok ? tr("%1: accepted by the station").arg(command) : tr("%1 refused: %2").arg(command, error));
     });
     connect(station, &RemoteStation::commandFailed, this,
