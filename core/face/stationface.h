@@ -85,6 +85,9 @@ public:
     // or `answered` refused (no place yet; a newer preview was asked).
     // A name that finds nothing is said in the preview, not refused.
     virtual Outcome previewSchedule(const QStringList &targets, const ScheduleRequest &request) = 0;
+    // The operator has looked at what the motion guard stopped: the axes
+    // may be driven again. Refused when none is held.
+    virtual Outcome clearMotionFaults() = 0;
     // The operator takes the radio's dial from the Doppler steering
     // (held), or hands it back; seen in the state's radioHeld.
     virtual Outcome holdRadio(bool held) = 0;

@@ -66,6 +66,10 @@ struct StationState {
     QStringList alarms;
     bool severe = false;
     bool operatorHold = false;
+    // The motion guard stopped an axis (session/motionguard.h) and holds it
+    // until the operator clears it (StationFace::clearMotionFaults); what it
+    // saw is among the alarms.
+    bool motionHeld = false;
     QString controllerVersion;
     QString slewVersion;
     // The radio (station/dopplerradio.h): its link, named as the rotator's,

@@ -17,7 +17,7 @@ struct KindName {
     const char *name;
 };
 
-constexpr std::array<KindName, 11> kKinds{{
+constexpr std::array<KindName, 12> kKinds{{
     {RemoteCommand::Kind::Goto, "goto"},
     {RemoteCommand::Kind::Stop, "stop"},
     {RemoteCommand::Kind::Park, "park"},
@@ -29,6 +29,7 @@ constexpr std::array<KindName, 11> kKinds{{
     {RemoteCommand::Kind::SchedulePreview, "schedule_preview"},
     {RemoteCommand::Kind::Unschedule, "unschedule"},
     {RemoteCommand::Kind::RadioHold, "radio_hold"},
+    {RemoteCommand::Kind::ClearFault, "clear_fault"},
 }};
 
 // "goto, stop, … or radio_hold", for a command of no known kind.

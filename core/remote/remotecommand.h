@@ -10,6 +10,7 @@
 //   {"id":"12","cmd":"unschedule"}
 //   {"id":"13","cmd":"radio_hold","held":true}
 //   {"id":"14","cmd":"schedule_preview","targets":["AO-91","sun"],"hours":24}
+//   {"id":"15","cmd":"clear_fault"}
 //
 //   {"id":"7","ok":true}
 //   {"id":"7","ok":false,"error":"azimuth 999.0° is outside …"}
@@ -46,7 +47,7 @@ inline constexpr int kShortestJogLeaseMs = 100;
 inline constexpr double kFastestJog = 90.0;      // degrees a second, either sign
 
 struct RemoteCommand {
-    enum class Kind { Goto, Stop, Park, Home, Track, Untrack, Jog, Schedule, SchedulePreview, Unschedule, RadioHold };
+    enum class Kind { Goto, Stop, Park, Home, Track, Untrack, Jog, Schedule, SchedulePreview, Unschedule, RadioHold, ClearFault };
     QString id; // empty: no reply wanted
     Kind kind = Kind::Stop;
     double azimuth = 0, elevation = 0;           // Goto

@@ -297,6 +297,13 @@ face::Outcome RemoteStation::previewSchedule(const QStringList &targets, const f
     return send(scheduleCommand(RemoteCommand::Kind::SchedulePreview, targets, request));
 }
 
+face::Outcome RemoteStation::clearMotionFaults()
+{
+    RemoteCommand c;
+    c.kind = RemoteCommand::Kind::ClearFault;
+    return send(c);
+}
+
 face::Outcome RemoteStation::stopSchedule()
 {
     RemoteCommand c;

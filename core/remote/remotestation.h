@@ -94,6 +94,7 @@ public:
     face::Outcome stopSchedule() override;
     face::Outcome previewSchedule(const QStringList &targets, const face::ScheduleRequest &request) override;
     face::Outcome holdRadio(bool held) override;
+    face::Outcome clearMotionFaults() override;
     // Turns at these speeds (°/s, signed) until endJog(), renewing the lease.
     face::Outcome startJog(double azSpeed, double elSpeed) override;
     // The station logs its own cause.

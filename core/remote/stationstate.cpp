@@ -113,6 +113,8 @@ QByteArray encodeStationState(const face::StationState &s)
     o.insert(QStringLiteral("alarms"), QJsonArray::fromStringList(s.alarms.mid(0, face::kMostAlarms)));
     o.insert(QStringLiteral("severe"), s.severe);
     o.insert(QStringLiteral("operator_hold"), s.operatorHold);
+    if (s.motionHeld)
+        o.insert(QStringLiteral("motion_held"), true);
     if (!s.controllerVersion.isEmpty())
         o.insert(QStringLiteral("controller"), s.controllerVersion);
     o.insert(QStringLiteral("slew"), s.slewVersion);
@@ -187,6 +189,7 @@ std::optional<face::StationState> parseStationState(const QByteArray &payload, Q
     s.alarms = f.texts(QStringLiteral("alarms"), face::kMostAlarms, 400).value_or(QStringList());
     s.severe = f.flag(QStringLiteral("severe")).value_or(false);
     s.operatorHold = f.flag(QStringLiteral("operator_hold")).value_or(false);
+    s.motionHeld = f.flag(QStringLiteral("motion_held")).value_or(false);
     s.controllerVersion = f.text(QStringLiteral("controller"), 100).value_or(QString());
     s.slewVersion = f.text(QStringLiteral("slew"), 40).value_or(QString());
     // A station older than the radio's fields says none of them.

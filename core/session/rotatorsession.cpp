@@ -295,8 +295,11 @@ void RotatorSession::dropLink(const QString &reason)
     m_onWire = false;
     m_jogSpeed = {0.0, 0.0};
     // Whatever the rotator was doing, the session no longer knows: the next
-    // target, even one repeated, must go out on the new link.
+    // target, even one repeated, must go out on the new link. Nothing is
+    // driven any more; a held axis stays held until the operator clears it.
     m_activeTarget.reset();
+    for (AxisMotionGuard &g : m_guards)
+        g.release();
     clearBadFrames();
     clearUnreadable();
     // What the allowance held back is said now: the timer would not run

@@ -14,6 +14,7 @@
 #include "echofilter.h"
 #include "lineturnaround.h"
 #include "linktimer.h"
+#include "motionguard.h"
 #include "model/movegate.h"
 #include "model/rotatorprofile.h"
 #include "pollpace.h"
@@ -265,6 +266,17 @@ public slots:
     CommandResult stop(const QString &cause, slew::session::Axes axes = slew::session::Axes::Both);
     CommandResult park();
     CommandResult home();
+    // The motion guard (motionguard.h): an axis Slew drives that does not
+    // move, or runs the wrong way, is stopped and held: every move that
+    // would drive it is refused, saying why, until the operator clears it.
+    void setMotionGuard(const MotionGuardSettings &settings);
+    const MotionGuardSettings &motionGuard() const { return m_guards[0].settings(); }
+    // Why the axis is held, in words ("Azimuth did not move for 5.0 s …"); empty when not.
+    QString motionFault(slew::session::Axis axis) const { return m_motionFaults[axis == Axis::Azimuth ? 0 : 1]; }
+    bool hasMotionFault() const { return !m_motionFaults[0].isEmpty() || !m_motionFaults[1].isEmpty(); }
+    // The operator has looked: the axes may be driven again. `who` goes to
+    // the logs ("the window", "a command over MQTT"). False when none was held.
+    bool clearMotionFaults(const QString &who);
     CommandResult readConfig(int reg);
     CommandResult writeConfig(int reg, const QString &value);
     CommandResult sendRaw(const QString &line);
@@ -308,6 +320,10 @@ signals:
     // waiting. Also reported by moveRefused() for the operator.
     void controllerRefusedMove(const QString &reason);
     void requestFailed(const QString &request, const QString &reason);
+    // The motion guard stopped an axis (text: what was seen, as motionFault
+    // says it), or the operator cleared every fault (text empty, `who`).
+    void motionFaultChanged(slew::session::Axis axis, const QString &text);
+    void motionFaultsCleared(const QString &who);
     // kBadFramesAlarm received lines in a row failed their checksum (on),
     // or a good one has arrived since (off). Nothing from a refused line is
     // acted on; the alarm says the link itself is damaging what it carries.
@@ -474,6 +490,20 @@ private:
     CommandResult jogBySetPosition(Axis axis, double degreesPerSecond);
     JogLegs::Where jogWhere() const;
     JogLegs m_jogLegs;
+    std::array<AxisMotionGuard, 2> m_guards;  // azimuth, elevation
+    std::array<QString, 2> m_motionFaults;    // why each axis is held
+    // The guards told a move began (both axes to a target), a jog's
+    // direction, or a stop; each reading checked; a fault stops and holds.
+    void guardMove(std::optional<double> az, std::optional<double> el);
+    void guardJog();
+    void guardControllersOwnMove();
+    void guardAxis(Axis axis, double target);
+    double arrivedWithinDeg(size_t axis) const;
+    void checkMotion();
+    // Why a move that takes the axes to these positions (none: the axis is
+    // not driven) may not go, or empty.
+    QString motionHold(std::optional<double> az, std::optional<double> el) const;
+    QString axisHeld(Axis axis) const; // why a move that drives the axis may not go, or empty
     void updatePollPace();
     qint64 nowMs() const;  // the link's time where it is stepped, else m_clock's
     int m_replyTimeoutMs = 500;

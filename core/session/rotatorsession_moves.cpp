@@ -136,6 +136,8 @@ CommandResult RotatorSession::gotoAxis(Axis axis, double degrees, AzimuthIs mean
             return refuseMove(both.refusal);
         return sendSetPosition(a, e);
     }
+    if (const QString held = az ? motionHold(target, std::nullopt) : motionHold(std::nullopt, target); !held.isEmpty())
+        return refuseMove(held);
     const double wire = target - (az ? azimuthOffset() : elevationOffset());
     const protocol::Encoded set = m_codec->setAxis(az, wire);
     if (!set.ok())
@@ -147,6 +149,7 @@ CommandResult RotatorSession::gotoAxis(Axis axis, double degrees, AzimuthIs mean
     if (m_activeTarget)
         (az ? m_activeTarget->azimuth : m_activeTarget->elevation) = target;
     (az ? m_targetAz : m_targetEl) = target;
+    guardAxis(axis, target); // the other axis goes on as it was watched
     emit targetChanged(m_targetAz, m_targetEl);
     return {};
 }
@@ -193,6 +196,8 @@ double RotatorSession::setResolutionDeg() const
 
 CommandResult RotatorSession::sendSetPosition(double az, double el)
 {
+    if (const QString held = motionHold(az, isAzimuthOnly() ? std::nullopt : std::optional<double>(el)); !held.isEmpty())
+        return refuseMove(held);
     const double wireAz = az - azimuthOffset();
     const double wireEl = el - elevationOffset();
     const protocol::Encoded set = m_codec->setPosition(wireAz, wireEl);
@@ -205,6 +210,7 @@ CommandResult RotatorSession::sendSetPosition(double az, double el)
     m_activeTarget = PointingTarget{az, el};
     m_targetAz = az;
     m_targetEl = el;
+    guardMove(az, el);
     emit targetChanged(az, el);
     return {};
 }
@@ -224,6 +230,8 @@ CommandResult RotatorSession::moveAxis(Axis axis, double degreesPerSecond)
     const std::optional<double> at = hasPosition() ? std::optional<double>(az ? m_az : m_el) : std::nullopt;
     if (const model::MoveCheck check = m_gate.drive(az, positive, at); !check.allowed())
         return refuseMove(check.refusal);
+    if (const QString held = axisHeld(az ? Axis::Azimuth : Axis::Elevation); !held.isEmpty())
+        return refuseMove(held); // a jog drives it, wherever it goes
     if (!m_codec->jogsItself())
         return jogBySetPosition(axis, degreesPerSecond);
     std::array<double, 2> speeds = m_jogSpeed;
@@ -236,6 +244,7 @@ CommandResult RotatorSession::moveAxis(Axis axis, double degreesPerSecond)
     m_jogSpeed = speeds;
     writeMove(jog.bytes);
     m_activeTarget.reset(); // the axis runs at a speed now, towards no target
+    guardJog();
     return {};
 }
 
@@ -265,6 +274,7 @@ CommandResult RotatorSession::jogBySetPosition(Axis axis, double degreesPerSecon
     m_jogSpeed = jogging;     // sendSetPosition ended every jog; these go on
     m_jogLegs.started(*leg);
     m_activeTarget.reset();   // running to an end, towards no target of the operator's
+    guardJog();               // watched as a jog: the leg's end is no target
     return {};
 }
 
@@ -284,6 +294,10 @@ CommandResult RotatorSession::stop(const QString &cause, Axes axes)
     if (line.isEmpty())
         return refuse(tr("%1 has no stop command").arg(m_codec->name()));
     m_activeTarget.reset();
+    for (size_t i = 0; i < 2; ++i) {
+        if (m_codec->stopHaltsEveryAxis() || (i == 0 ? az : el))
+            m_guards[i].release(); // a jog the stop does not end is watched again as it is sent again
+    }
     write(line);
     m_refusals.noteCommand(line, nowMs());
     wakePolling(); // to see it come to rest
@@ -344,8 +358,11 @@ CommandResult RotatorSession::park()
     const model::MoveCheck check = m_gate.mechanical(parkAzimuth(), parkElevation());
     if (!check.allowed())
         return refuseMove(tr("the park position: %1").arg(check.refusal));
+    if (const QString held = motionHold(parkAzimuth(), parkElevation()); !held.isEmpty())
+        return refuseMove(held);
     m_jogSpeed = {0.0, 0.0};
     writeMove(m_codec->line({Message::query(Op::Park)}));
+    guardControllersOwnMove(); // it parks the way it chooses (0° may be 360°)
     m_activeTarget.reset();
     // A park not read yet is no target to show: the controller knows where
     // it goes, the session does not.
@@ -367,6 +384,14 @@ CommandResult RotatorSession::home()
         return linked;
     if (!m_codec->supports(Op::Reset))
         return refuse(tr("%1 has no RESET (homing) command").arg(m_codec->name()));
+    // Homing drives both axes to their switches: not while one is held.
+    for (const QString &held : m_motionFaults)
+        if (!held.isEmpty())
+            return refuseMove(tr("homing drives both axes, and one is held after the motion guard stopped it (%1): "
+                                 "clear the fault once it is looked at").arg(held));
+    // The controller's own run to its switches, which it ends itself: not
+    // watched (its speed and path are its own).
+    guardMove(std::nullopt, std::nullopt);
     // Homing runs each axis to its lower limit switch: the controller's own
     // move, bounded by the switches rather than by soft limits.
     m_jogSpeed = {0.0, 0.0};

@@ -277,6 +277,7 @@ void RotatorSession::applyPosition()
     if (m_state == State::Connected)
         m_staleTimer.start();
     emit positionChanged(m_az, m_el, false);
+    checkMotion();
     checkSoftLimits();
     // A jog by set-position legs: the next leg before this one runs out.
     if (!m_codec->jogsItself()) {

@@ -43,6 +43,17 @@ AlarmMonitor::AlarmMonitor(RotatorSession *session, QObject *parent) : QObject(p
     connect(session, &RotatorSession::unreadableRepliesAlarm, this, [this](bool on, const QString &text) {
         setAlarm(QStringLiteral("unreadable"), on, tr("Unreadable replies: %1").arg(text));
     });
+    // The motion guard stopped an axis and holds it: an alarm until the
+    // operator clears it, which is logged with who did.
+    connect(session, &RotatorSession::motionFaultChanged, this, [this](session::Axis axis, const QString &text) {
+        setAlarm(axis == session::Axis::Azimuth ? QStringLiteral("motion-az") : QStringLiteral("motion-el"), true,
+                 tr("%1; moves of it are held until the fault is cleared").arg(text));
+    });
+    connect(session, &RotatorSession::motionFaultsCleared, this, [this](const QString &who) {
+        setAlarm(QStringLiteral("motion-az"), false, {});
+        setAlarm(QStringLiteral("motion-el"), false, {});
+        log(Severity::Info, tr("Motion fault cleared by %1: the axes may be driven again").arg(who));
+    });
     connect(session, &RotatorSession::alarmReceived, this,
             [this](const QString &text) { log(Severity::Alarm, tr("Controller alarm: %1").arg(text)); });
     // A refused move goes on the banner (which logs it); other refusals, such

@@ -174,6 +174,13 @@ Outcome LocalStationFace::previewSchedule(const QStringList &targets, const face
     return Outcome::awaiting(id);
 }
 
+Outcome LocalStationFace::clearMotionFaults()
+{
+    return m_station->session()->clearMotionFaults(tr("the operator at the station"))
+               ? Outcome::done()
+               : Outcome::refused(tr("no axis is held by the motion guard"));
+}
+
 Outcome LocalStationFace::holdRadio(bool held)
 {
     return m_station->holdRadio(held);

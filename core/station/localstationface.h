@@ -49,6 +49,7 @@ public:
     face::Outcome stopSchedule() override;
     face::Outcome previewSchedule(const QStringList &targets, const face::ScheduleRequest &request) override;
     face::Outcome holdRadio(bool held) override;
+    face::Outcome clearMotionFaults() override;
     face::Outcome startJog(double azSpeed, double elSpeed) override;
     void endJog(const QString &cause) override;
 

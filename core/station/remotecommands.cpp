@@ -115,6 +115,8 @@ QString RemoteCommands::describe(const RemoteCommand &c) const
         return tr("schedule %1 for %2 h").arg(c.targets.join(QStringLiteral(", "))).arg(c.schedule.hours);
     case RemoteCommand::Kind::SchedulePreview:
         return tr("preview a schedule of %1 for %2 h").arg(c.targets.join(QStringLiteral(", "))).arg(c.schedule.hours);
+    case RemoteCommand::Kind::ClearFault:
+        return tr("clear the motion guard's fault");
     case RemoteCommand::Kind::RadioHold:
         return c.held ? tr("hold the radio") : tr("hand the radio back to Doppler steering");
     default:
@@ -166,6 +168,15 @@ CommandResult RemoteCommands::obey(const RemoteCommand &c)
     }
     if (c.kind == RemoteCommand::Kind::RadioHold)
         return holdRadio(c.held);
+    // Clearing what the motion guard holds moves nothing: an operator who
+    // has looked (a camera, someone at the mast) may do it from afar.
+    if (c.kind == RemoteCommand::Kind::ClearFault) {
+        if (!m_refusing.isEmpty())
+            return CommandResult{m_refusing};
+        return m_station->session()->clearMotionFaults(tr("a command over MQTT"))
+                   ? CommandResult{}
+                   : CommandResult{tr("no axis is held by the motion guard")};
+    }
     if (const QString hold = holdOnMoves(); !hold.isEmpty()) {
         if (c.kind == RemoteCommand::Kind::Jog)
             m_jog->release();

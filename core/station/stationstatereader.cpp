@@ -210,6 +210,7 @@ face::StationState StationStateReader::state() const
         out.alarms << alarm.left(400);
     out.severe = m_station->alarms()->anySevere();
     out.operatorHold = m_station->operatorHolds();
+    out.motionHeld = m_station->session()->hasMotionFault();
     out.controllerVersion = s->version().left(100);
     out.slewVersion = QCoreApplication::applicationVersion().left(40);
     if (const DopplerRadio *radio = m_station->radio()) {

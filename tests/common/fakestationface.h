@@ -36,6 +36,7 @@ public:
     Outcome stopSchedule() override { return refuse(); }
     Outcome previewSchedule(const QStringList &, const slew::face::ScheduleRequest &) override { return refuse(); }
     Outcome holdRadio(bool) override { return refuse(); }
+    Outcome clearMotionFaults() override { return refuse(); }
     Outcome startJog(double, double) override { return refuse(); }
     void endJog(const QString &) override { ++intents; }
 

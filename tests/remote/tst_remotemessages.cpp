@@ -141,6 +141,7 @@ private slots:
         QTest::newRow("schedule with defaults") << QByteArray(R"j({"cmd":"schedule","targets":["sun"]})j") << "" << "";
         QTest::newRow("schedule of nothing is the station's to refuse") << QByteArray(R"j({"cmd":"schedule","targets":[]})j") << "" << "";
         QTest::newRow("unschedule") << QByteArray(R"j({"id":"u","cmd":"unschedule"})j") << "" << "u";
+        QTest::newRow("clear the motion guard's fault") << QByteArray(R"j({"id":"c","cmd":"clear_fault"})j") << "" << "c";
         QTest::newRow("schedule preview") << QByteArray(R"j({"id":"p","cmd":"schedule_preview","targets":["AO-91","sun"],"hours":12})j") << "" << "p";
         QTest::newRow("radio hold") << QByteArray(R"j({"id":"r","cmd":"radio_hold","held":true})j") << "" << "r";
         QTest::newRow("radio release") << QByteArray(R"j({"cmd":"radio_hold","held":false})j") << "" << "";
@@ -158,6 +159,7 @@ private slots:
         QTest::newRow("schedule with a lease") << QByteArray(R"j({"cmd":"schedule","targets":["sun"],"lease_ms":100})j") << "unknown field 'lease_ms'" << "";
         QTest::newRow("schedule preview with no id to answer by") << QByteArray(R"j({"cmd":"schedule_preview","targets":["sun"]})j") << "needs an 'id'" << "";
         QTest::newRow("schedule preview for a month") << QByteArray(R"j({"id":"q","cmd":"schedule_preview","targets":["sun"],"hours":720})j") << "'hours'" << "q";
+        QTest::newRow("clear a fault with an axis") << QByteArray(R"j({"cmd":"clear_fault","axis":"az"})j") << "unknown field 'axis'" << "";
         QTest::newRow("unschedule with targets") << QByteArray(R"j({"cmd":"unschedule","targets":["sun"]})j") << "unknown field 'targets'" << "";
         QTest::newRow("radio hold not a flag") << QByteArray(R"j({"id":"3","cmd":"radio_hold","held":1})j") << "'held' is not true or false" << "3";
         QTest::newRow("radio hold as text") << QByteArray(R"j({"cmd":"radio_hold","held":"true"})j") << "'held' is not true or false" << "";
@@ -306,6 +308,7 @@ private slots:
         s.alarms = {QStringLiteral("GE: motor error")};
         s.severe = true;
         s.operatorHold = true;
+        s.motionHeld = true;
         s.controllerVersion = QStringLiteral("SatNOGS 1.2");
         s.slewVersion = QStringLiteral("0.1.0");
         // What a face shows besides: each axis' status, the controller's
@@ -331,6 +334,7 @@ private slots:
         QVERIFY2(back, qPrintable(error));
         QCOMPARE(encodeStationState(*back), encodeStationState(s));
         QCOMPARE(back->elevationStatus, s.elevationStatus);
+        QVERIFY(back->operatorHold && back->motionHeld);
         QCOMPARE(back->profileLimits.elMax, 90.0);
         QVERIFY(!back->jogSpeed && !back->canHome && !back->parkCommand && back->homingFailed);
         // A station that says none of these: what most controllers can, and

@@ -14,6 +14,8 @@
 #include "remote/remotecommand.h"
 #include "session/rotatorsession.h"
 #include "sky/elementsetformat.h"
+#include "face/stationface.h"
+#include "station/alarmmonitor.h"
 #include "station/dopplerradio.h"
 #include "station/remotecommands.h"
 #include "station/remotejog.h"
@@ -112,6 +114,40 @@ private slots:
         QCOMPARE(stops.first().at(0).toString(), QStringLiteral("a stop over MQTT")); // what the logs say asked
         station.handControlBack();
         QVERIFY(answer(commands, R"j({"id":"5","cmd":"goto","az":40,"el":20})j").ok);
+    }
+
+    // A jammed azimuth on a controller that reports nothing (GS-232B): the
+    // motion guard stops and holds it, the state says so and the alarm
+    // names it; a remote go-to is refused with why; clear_fault frees it.
+    void theMotionGuardsHoldIsClearedFromAfar()
+    {
+        slew::station::StationOptions options;
+        slew::model::RotatorProfile profile;
+        // The simulator's own motor error never comes: silent, as a GS-232 is.
+        profile.uri = QStringLiteral("sim:?clock=manual&dialect=gs232b&start_az=10&start_el=10&jam=az&jam_after=600");
+        profile.dialect = slew::protocol::Dialect::Gs232B;
+        options.profile = profile;
+        Station station(options);
+        SimulatorPump pump;
+        QVERIFY(connectAndWait(station, pump));
+        RemoteCommands commands(&station, {});
+        QCOMPARE(answer(commands, R"j({"id":"0","cmd":"clear_fault"})j").error, QStringLiteral("no axis is held by the motion guard"));
+        QCOMPARE(station.face()->clearMotionFaults().reason(), QStringLiteral("no axis is held by the motion guard"));
+        QVERIFY(answer(commands, R"j({"id":"1","cmd":"goto","az":120,"el":30})j").ok);
+        TRY_VERIFY_WITH_TIMEOUT(station.session()->hasMotionFault(), 20000);
+        QVERIFY(station.face()->state()->motionHeld);
+        const QStringList alarms = station.alarms()->activeAlarms();
+        QVERIFY2(alarms.size() == 1 && alarms.first().startsWith(QStringLiteral("Azimuth did not move for 5"))
+                     && alarms.first().endsWith(QStringLiteral("moves of it are held until the fault is cleared")),
+                 qPrintable(alarms.join(u'\n')));
+        const RemoteReply held = answer(commands, R"j({"id":"2","cmd":"goto","az":100,"el":30})j");
+        QVERIFY(!held.ok);
+        QVERIFY2(held.error.startsWith(QStringLiteral("the azimuth is held after the motion guard stopped it")), qPrintable(held.error));
+        QVERIFY(answer(commands, R"j({"id":"3","cmd":"clear_fault"})j").ok);
+        QVERIFY(!station.session()->hasMotionFault());
+        QVERIFY(!station.face()->state()->motionHeld);
+        // The guard's alarm is gone (the refused go-to's warning stays its 10 s).
+        QVERIFY(station.alarms()->activeAlarms().filter(QStringLiteral("until the fault is cleared")).isEmpty());
     }
 
     // A schedule's preview moves nothing, so no hold refuses it; it is

@@ -175,7 +175,13 @@ QStringList runScript(StationWindow &w)
     t << QStringLiteral("park sent: %1, %2").arg(w.parkHomePanel()->park()).arg(label(w, "homeMessage"));
     if (!waitFor("parked", [&] { return state().park && near(state().position, state().park->x(), state().park->y()) && !state().moving; })) {
         const QPointF p = state().position.value_or(QPointF());
-        t.last() += QStringLiteral(" (%1; at %2,%3, moving %4)").arg(label(w, "homeMessage")).arg(p.x()).arg(p.y()).arg(state().moving);
+        fprintf(stderr, "ALARMS %s\n", qPrintable(state().alarms.join(QStringLiteral("; "))));
+        t.last() += QStringLiteral(" (%1; at %2,%3, moving %4; alarms: %5)")
+                        .arg(label(w, "homeMessage"))
+                        .arg(p.x())
+                        .arg(p.y())
+                        .arg(state().moving)
+                        .arg(state().alarms.join(QStringLiteral("; ")));
         return t;
     }
     t << QStringLiteral("end");

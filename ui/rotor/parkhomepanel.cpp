@@ -22,6 +22,12 @@ ParkHomePanel::ParkHomePanel(face::StationFace *station, QWidget *parent) : QWid
     m_cancel = new QPushButton(tr("Cancel"));
     m_cancel->setObjectName(QStringLiteral("homeCancel"));
     m_cancel->setVisible(false);
+    // Shown while the motion guard holds an axis: the operator has looked.
+    m_clearFault = new QPushButton(tr("Clear motion fault"));
+    m_clearFault->setObjectName(QStringLiteral("clearMotionFault"));
+    m_clearFault->setToolTip(tr("The motion guard stopped an axis that did not move, or ran the wrong way, and holds "
+                                "it: clear it once the rotator has been looked at, to drive it again"));
+    m_clearFault->setVisible(false);
     m_progress = new QProgressBar;
     m_progress->setObjectName(QStringLiteral("homeProgress"));
     m_progress->setRange(0, 0); // how long homing takes is unknown: a busy bar
@@ -31,7 +37,7 @@ ParkHomePanel::ParkHomePanel(face::StationFace *station, QWidget *parent) : QWid
     m_message = new QLabel;
     m_message->setObjectName(QStringLiteral("homeMessage"));
     m_message->setWordWrap(true);
-    for (QPushButton *b : {m_park, m_home, m_cancel}) {
+    for (QPushButton *b : {m_park, m_home, m_cancel, m_clearFault}) {
         b->setAutoDefault(false);
         b->setFocusPolicy(Qt::NoFocus);
     }
@@ -43,6 +49,8 @@ ParkHomePanel::ParkHomePanel(face::StationFace *station, QWidget *parent) : QWid
     grid->addWidget(m_cancel, 0, 2);
     grid->addWidget(m_progress, 1, 0, 1, 3);
     grid->addWidget(m_message, 2, 0, 1, 3);
+    // In Home's place, which a held axis refuses anyway: no taller column.
+    grid->addWidget(m_clearFault, 0, 1, 1, 2);
 
     m_timeout.setSingleShot(true);
     m_timeout.setInterval(kHomingTimeoutMs);
@@ -51,6 +59,13 @@ ParkHomePanel::ParkHomePanel(face::StationFace *station, QWidget *parent) : QWid
     connect(m_park, &QPushButton::clicked, this, &ParkHomePanel::park);
     connect(m_home, &QPushButton::clicked, this, &ParkHomePanel::home);
     connect(m_cancel, &QPushButton::clicked, this, &ParkHomePanel::cancelHoming);
+    connect(m_clearFault, &QPushButton::clicked, this, [this] {
+        const face::Outcome cleared = m_station->clearMotionFaults();
+        if (cleared.isRefused())
+            refused(tr("Not cleared"), cleared.reason());
+        m_awaiting = cleared.id();
+        m_awaitingWhat = tr("Not cleared");
+    });
     connect(station, &face::StationFace::stateChanged, this, &ParkHomePanel::follow);
     connect(station, &face::StationFace::liveChanged, this, &ParkHomePanel::updateEnabled);
     connect(station, &face::StationFace::answered, this, [this](const QString &id, const face::Outcome &outcome) {
@@ -75,6 +90,8 @@ void ParkHomePanel::follow(const face::StationState &state)
     if (m_homing && state.link != u"connected")
         finish(false, tr("Homing interrupted: the link went down."));
     followHoming(state, statusChanged, homingFailedNow);
+    m_clearFault->setVisible(state.motionHeld);
+    m_home->setVisible(!state.motionHeld);
     updateEnabled();
 }
 

@@ -65,6 +65,7 @@ private:
     QPushButton *m_park;
     QPushButton *m_home;
     QPushButton *m_cancel;
+    QPushButton *m_clearFault;
     QProgressBar *m_progress;
     QLabel *m_message;
     QTimer m_timeout;

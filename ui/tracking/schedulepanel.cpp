@@ -203,7 +203,7 @@ void SchedulePanel::onTargetsChanged()
     const QStringList specs = targetSpecs();
     if (specs.isEmpty())
         return;
-    const schedule::ScheduleSettings &now = m_face->schedule()->schedule.settings;
+    const schedule::ScheduleSettings now = m_face->schedule().value_or(face::StationSchedule{}).schedule.settings;
     face::ScheduleRequest request;
     if (now.startJulian > 0) {
         request.hours = now.hours;
