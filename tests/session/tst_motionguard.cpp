@@ -178,17 +178,33 @@ private slots:
         QCOMPARE(faults.size(), 0);
     }
 
+    // SPID jogs by position legs, renewed while the key is held: at the end
+    // of the travel the session stops the jog (the soft limit), and nothing
+    // is driven into it. No stall is said.
+    void aJogHeldAtTheEndOfTheTravelSaysNothing()
+    {
+        RotatorSession s;
+        QVERIFY(open(s, QString(), QStringLiteral("rot2prog")));
+        QSignalSpy faults(&s, &RotatorSession::motionFaultChanged);
+        QVERIFY(s.moveAxis(Axis::Elevation, 10));
+        const double held = simSeconds(s);
+        QVERIFY(runEventLoopUntil([&] { return simSeconds(s) > held + 50; }, 60000));
+        QVERIFY2(s.elevation() > 85, qPrintable(QString::number(s.elevation())));
+        QCOMPARE(faults.size(), 0);
+        QVERIFY(s.stop(QStringLiteral("the test")));
+    }
+
 private:
     // The simulator's own time, which the session's guard runs by.
     static double simSeconds(const RotatorSession &s) { return slew::sim::simulatorBehind(s.link())->clock().now(); }
 
-    static bool open(RotatorSession &s, const QString &faults)
+    static bool open(RotatorSession &s, const QString &faults, const QString &dialect = QStringLiteral("gs232b"))
     {
         slew::model::RotatorProfile profile;
-        profile.dialect = *slew::protocol::dialectFromName(QStringLiteral("gs232b"));
+        profile.dialect = *slew::protocol::dialectFromName(dialect);
         s.setProfile(profile);
-        s.connectTo(QStringLiteral("sim:?clock=manual&dialect=gs232b&start_az=100&start_el=40%1")
-                        .arg(faults.isEmpty() ? QString() : QStringLiteral("&") + faults));
+        s.connectTo(QStringLiteral("sim:?clock=manual&dialect=%1&start_az=100&start_el=40%2")
+                        .arg(dialect, faults.isEmpty() ? QString() : QStringLiteral("&") + faults));
         (new SimulatorPump(0.005, &s))->follow(&s);
         return runEventLoopUntil([&] { return s.capabilities().probed && s.hasPosition(); }, 10000);
     }
